@@ -1,0 +1,34 @@
+// The two kinds of failure a user can meet, with the exit codes of DESIGN.md.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace ring {
+
+/// Bad input or usage (exit code 2). The message names the file, the key and
+/// what was expected; nothing has been written when it is thrown.
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, std::string key, const std::string& what)
+      : std::runtime_error(format(file, key, what)), file_(std::move(file)), key_(std::move(key)) {}
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+
+ private:
+  static std::string format(const std::string& file, const std::string& key, const std::string& what) {
+    std::string s = file.empty() ? std::string() : file + ": ";
+    if (!key.empty()) s += key + ": ";
+    return s + what;
+  }
+  std::string file_, key_;
+};
+
+/// A numerical failure (exit code 3): NaN, divergence, Newton not converging,
+/// constraint drift, an indefinite mass matrix. Never printed as a result.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace ring

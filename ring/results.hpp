@@ -1,0 +1,77 @@
+// Result types shared by all solvers, so that the driver can compare them.
+#pragma once
+
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace ring {
+
+/// Mode shapes are sampled at these common stations so that the driver can pair
+/// the modes of different solvers by MAC and plot them: kStations points at polar
+/// angles a_s = 360 * s / kStations degrees (every degree), counter-clockwise from +x.
+/// On a polygonal model with consecutive nodes at angles a_k < a_s < a_{k+1}, station s
+/// is the point at fraction (a_s - a_k) / (a_{k+1} - a_k) along that side, displaced
+/// by the model's own interpolation (linear along a rigid segment, the element's shape
+/// functions in FE). Radial and tangential are taken along the circle's unit vectors
+/// at a_s. Nodes coincide with stations whenever their angles are whole degrees.
+constexpr int kStations = 360;
+/// Polar angle of station s, degrees.
+inline double station_angle(int s) { return 360.0 * s / kStations; }
+
+/// One mode shape at the common stations: radial (outward) and tangential
+/// (counter-clockwise) displacement, scaled so that the largest |component| is 1 and
+/// its sign is positive.
+struct ModeShape {
+  std::vector<double> radial;
+  std::vector<double> tangential;
+};
+
+/// A value describing a model (JSON scalar).
+using ModelValue = std::variant<long long, double, bool, std::string>;
+
+/// Natural frequencies and mode shapes of one model.
+struct ModalResult {
+  std::string solver;                         ///< "multibody", "fem", "lumped"
+  std::map<std::string, ModelValue> model;    ///< the discretization (n, degree, ...)
+  int rigid_modes = 0;                        ///< zero modes found, excluded from numbering
+  std::vector<double> omega;                  ///< elastic modes, rad/s, ascending
+  std::vector<ModeShape> shapes;              ///< same order as omega
+  long long unknowns = 0;                     ///< size of the eigenproblem solved
+  double seconds = 0.0;                       ///< solver wall time (process-internal)
+  /// Largest relative eigen-residual ||K x - w^2 M x|| / (||K x|| + w^2 ||M x||) seen.
+  double max_residual = 0.0;
+  /// Estimated remaining relative error (reference runs only; 0 if not estimated).
+  double error_estimate = 0.0;
+};
+
+/// Displacement of a named point, ring-centred frame.
+struct PointDisplacement {
+  double angle = 0.0;  ///< degrees
+  double ux = 0.0, uy = 0.0;  ///< m
+};
+
+/// Nonlinear static equilibrium.
+struct StaticResult {
+  std::vector<PointDisplacement> displacements;  ///< at the recorded points
+  int steps = 0;
+  int newton_iterations = 0;
+  /// Deformed shape at every node (for figures), ring-centred frame, m.
+  std::vector<double> node_x, node_y;
+};
+
+/// Time history of a forced response; one entry per accepted step (t = 0 first).
+struct TimeHistory {
+  std::vector<double> record_angles;     ///< degrees
+  std::vector<double> t;                 ///< s
+  std::vector<std::vector<double>> ux;   ///< [point][step], m
+  std::vector<std::vector<double>> uy;   ///< [point][step], m
+  std::vector<double> kinetic, strain, work, energy_error, constraint_residual;
+  std::vector<int> newton_iterations;
+  /// Deformed node positions at selected instants (for the paper's Figure 5).
+  std::vector<double> snapshot_t;
+  std::vector<std::vector<double>> snapshot_x, snapshot_y;
+};
+
+}  // namespace ring

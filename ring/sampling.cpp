@@ -1,0 +1,53 @@
+#include "ring/sampling.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+#include "ring/spec.hpp"
+
+namespace ring {
+
+ModeShape sample_polygon(double anchor_deg, const std::vector<double>& ux,
+                         const std::vector<double>& uy) {
+  const int n = static_cast<int>(ux.size());
+  ModeShape s;
+  s.radial.resize(kStations);
+  s.tangential.resize(kStations);
+  for (int i = 0; i < kStations; ++i) {
+    const double a = station_angle(i);
+    const double steps = wrap_degrees(a - anchor_deg) * n / 360.0;
+    int k = static_cast<int>(std::floor(steps));
+    double f = steps - k;
+    if (k >= n) { k = n - 1; f = 1.0; }  // steps rounded up to n
+    const int k1 = (k + 1) % n;
+    const double x = (1.0 - f) * ux[k] + f * ux[k1];
+    const double y = (1.0 - f) * uy[k] + f * uy[k1];
+    const double c = std::cos(a * M_PI / 180.0), sn = std::sin(a * M_PI / 180.0);
+    s.radial[i] = c * x + sn * y;
+    s.tangential[i] = -sn * x + c * y;
+  }
+  normalize(s);
+  return s;
+}
+
+void normalize(ModeShape& shape) {
+  double big = 0.0;
+  for (const auto* v : {&shape.radial, &shape.tangential})
+    for (double x : *v)
+      if (std::abs(x) > std::abs(big)) big = x;
+  if (big == 0.0) return;
+  for (auto* v : {&shape.radial, &shape.tangential})
+    for (double& x : *v) x /= big;
+}
+
+double mac(const ModeShape& a, const ModeShape& b) {
+  double ab = 0.0, aa = 0.0, bb = 0.0;
+  for (std::size_t i = 0; i < a.radial.size(); ++i) {
+    ab += a.radial[i] * b.radial[i] + a.tangential[i] * b.tangential[i];
+    aa += a.radial[i] * a.radial[i] + a.tangential[i] * a.tangential[i];
+    bb += b.radial[i] * b.radial[i] + b.tangential[i] * b.tangential[i];
+  }
+  return (aa > 0.0 && bb > 0.0) ? ab * ab / (aa * bb) : 0.0;
+}
+
+}  // namespace ring

@@ -1,0 +1,608 @@
+// Scene parsing and validation. Every key is checked for type and range here, once;
+// solvers receive validated options and never re-check user input.
+#include "ring/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "ring/errors.hpp"
+
+namespace ring {
+namespace {
+
+std::string join(const std::vector<std::string>& v, const std::string& sep = ", ") {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  return s;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string fmt_num(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+/// Reads typed, range-checked values out of a TOML table and reports every problem
+/// as an InputError naming the file, the dotted key and (when known) the line.
+class Reader {
+ public:
+  Reader(std::string file, std::set<std::string> overridden)
+      : file_(std::move(file)), overridden_(std::move(overridden)) {}
+
+  [[noreturn]] void fail(const std::string& key, const toml::node* node, const std::string& what) const {
+    std::string k = key;
+    if (overridden_.count(key)) k += " (from --set)";
+    else if (node && node->source().begin) k += " (line " + std::to_string(node->source().begin.line) + ")";
+    throw InputError(file_, k, what);
+  }
+
+  /// Rejects keys of `t` that are not in `known`, suggesting the nearest known key.
+  void known_keys(const toml::table& t, const std::string& section, const std::vector<std::string>& known) const {
+    for (const auto& [k, node] : t) {
+      const std::string key(k.str());
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      std::string best;
+      std::size_t bd = 99;
+      for (const auto& c : known) {
+        const std::size_t d = edit_distance(key, c);
+        if (d < bd) { bd = d; best = c; }
+      }
+      std::string what = "unknown key";
+      if (bd <= std::max<std::size_t>(2, key.size() / 3)) what += "; did you mean '" + best + "'?";
+      else what += "; known keys: " + join(known);
+      fail(dotted(section, key), &node, what);
+    }
+  }
+
+  static std::string dotted(const std::string& section, const std::string& key) {
+    return section.empty() ? key : section + "." + key;
+  }
+
+  const toml::table* table(const toml::table& t, const std::string& section, const std::string& key) const {
+    const toml::node* n = t.get(key);
+    if (!n) return nullptr;
+    if (!n->is_table()) fail(dotted(section, key), n, "expected a table");
+    return n->as_table();
+  }
+
+  double number(const toml::table& t, const std::string& section, const std::string& key, double def,
+                double lo, double hi, bool lo_open = false) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    double v;
+    if (auto f = n->value_exact<double>()) v = *f;
+    else if (auto i = n->value_exact<int64_t>()) v = static_cast<double>(*i);
+    else fail(dotted(section, key), n, "expected a number, got " + type_name(*n));
+    check_range(dotted(section, key), n, v, lo, hi, lo_open);
+    return v;
+  }
+
+  void check_range(const std::string& key, const toml::node* n, double v, double lo, double hi, bool lo_open) const {
+    const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v <= hi;
+    if (ok) return;
+    std::string range;
+    if (hi == HUGE_VAL) range = (lo_open ? "> " : ">= ") + fmt_num(lo);
+    else range = "in " + std::string(lo_open ? "(" : "[") + fmt_num(lo) + ", " + fmt_num(hi) + "]";
+    fail(key, n, "expected a number " + range + ", got " + fmt_num(v));
+  }
+
+  long long integer(const toml::table& t, const std::string& section, const std::string& key, long long def,
+                    long long lo, long long hi) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    auto i = n->value_exact<int64_t>();
+    if (!i) fail(dotted(section, key), n, "expected an integer, got " + type_name(*n));
+    if (*i < lo || *i > hi)
+      fail(dotted(section, key), n,
+           "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(*i));
+    return *i;
+  }
+
+  bool boolean(const toml::table& t, const std::string& section, const std::string& key, bool def) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    auto b = n->value_exact<bool>();
+    if (!b) fail(dotted(section, key), n, "expected true or false, got " + type_name(*n));
+    return *b;
+  }
+
+  std::string choice(const toml::table& t, const std::string& section, const std::string& key,
+                     const std::string& def, const std::vector<std::string>& options) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    auto s = n->value_exact<std::string>();
+    if (!s) fail(dotted(section, key), n, "expected one of " + quoted(options) + ", got " + type_name(*n));
+    check_choice(dotted(section, key), n, *s, options);
+    return *s;
+  }
+
+  void check_choice(const std::string& key, const toml::node* n, const std::string& s,
+                    const std::vector<std::string>& options) const {
+    if (std::find(options.begin(), options.end(), s) == options.end())
+      fail(key, n, "expected one of " + quoted(options) + ", got \"" + s + "\"");
+  }
+
+  std::vector<double> numbers(const toml::table& t, const std::string& section, const std::string& key,
+                              std::vector<double> def, std::size_t exact_size = 0) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    const toml::array* a = n->as_array();
+    if (!a) fail(dotted(section, key), n, "expected an array of numbers, got " + type_name(*n));
+    std::vector<double> v;
+    for (const auto& e : *a) {
+      if (auto f = e.value_exact<double>()) v.push_back(*f);
+      else if (auto i = e.value_exact<int64_t>()) v.push_back(static_cast<double>(*i));
+      else fail(dotted(section, key), n, "expected an array of numbers, found " + type_name(e));
+      if (!std::isfinite(v.back())) fail(dotted(section, key), n, "expected finite numbers");
+    }
+    if (exact_size && v.size() != exact_size)
+      fail(dotted(section, key), n,
+           "expected " + std::to_string(exact_size) + " numbers, got " + std::to_string(v.size()));
+    return v;
+  }
+
+  std::vector<std::string> strings(const toml::table& t, const std::string& section, const std::string& key,
+                                   const std::vector<std::string>& options) const {
+    const toml::node* n = t.get(key);
+    std::vector<std::string> v;
+    if (!n) return v;
+    const toml::array* a = n->as_array();
+    if (!a) fail(dotted(section, key), n, "expected an array of strings from " + quoted(options));
+    for (const auto& e : *a) {
+      auto s = e.value_exact<std::string>();
+      if (!s) fail(dotted(section, key), n, "expected an array of strings from " + quoted(options));
+      check_choice(dotted(section, key), n, *s, options);
+      if (std::find(v.begin(), v.end(), *s) != v.end()) fail(dotted(section, key), n, "\"" + *s + "\" is listed twice");
+      v.push_back(*s);
+    }
+    return v;
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  static std::string quoted(const std::vector<std::string>& options) {
+    std::vector<std::string> q;
+    for (const auto& o : options) q.push_back("\"" + o + "\"");
+    return join(q);
+  }
+  static std::string type_name(const toml::node& n) {
+    switch (n.type()) {
+      case toml::node_type::string: return "a string";
+      case toml::node_type::integer: return "an integer";
+      case toml::node_type::floating_point: return "a floating-point number";
+      case toml::node_type::boolean: return "a boolean";
+      case toml::node_type::array: return "an array";
+      case toml::node_type::table: return "a table";
+      default: return "a date/time";
+    }
+  }
+
+  std::string file_;
+  std::set<std::string> overridden_;
+};
+
+const std::vector<std::string> kSolvers = {"multibody", "lumped", "fem"};
+
+Section read_section(const Reader& r, const toml::table& ring_t) {
+  Section s;
+  const toml::table* t = r.table(ring_t, "ring", "section");
+  if (!t) {  // the paper's ring: solid circle, 0.12 m
+    s.diameter = 0.12;
+    return s;
+  }
+  const std::string sec = "ring.section";
+  r.known_keys(*t, sec, {"shape", "diameter", "width", "height", "area", "inertia"});
+  std::string shape = r.choice(*t, sec, "shape", "", {"circle", "rectangle", "general"});
+  if (shape.empty()) shape = t->contains("area") || t->contains("inertia") ? "general"
+                            : t->contains("width") || t->contains("height") ? "rectangle" : "circle";
+  auto need = [&](const std::string& key, double& out) {
+    if (!t->contains(key))
+      r.fail(sec + "." + key, t, "a " + shape + " section needs '" + key + "' (m" +
+                                      (key == "area" ? "^2" : key == "inertia" ? "^4" : "") + ")");
+    out = r.number(*t, sec, key, 0.0, 0.0, HUGE_VAL, true);
+  };
+  auto forbid = [&](std::initializer_list<const char*> keys) {
+    for (const char* k : keys)
+      if (t->contains(k)) r.fail(sec + "." + k, t->get(k), "not used by a " + shape + " section");
+  };
+  if (shape == "circle") {
+    s.shape = Section::Shape::circle;
+    need("diameter", s.diameter);
+    forbid({"width", "height", "area", "inertia"});
+  } else if (shape == "rectangle") {
+    s.shape = Section::Shape::rectangle;
+    need("width", s.width);
+    need("height", s.height);
+    forbid({"diameter", "area", "inertia"});
+  } else {
+    s.shape = Section::Shape::general;
+    need("area", s.area_);
+    need("inertia", s.inertia_);
+    forbid({"diameter", "width", "height"});
+  }
+  return s;
+}
+
+PointLoad read_load(const Reader& r, const toml::table& t, const std::string& sec, bool with_history) {
+  PointLoad p;
+  if (!t.contains("at")) r.fail(sec + ".at", &t, "missing: the angle (degrees) of the loaded point");
+  if (!t.contains("force")) r.fail(sec + ".force", &t, "missing: the force [Fx, Fy] in N");
+  p.angle = wrap_degrees(r.number(t, sec, "at", 0.0, -360.0, 360.0));
+  const auto f = r.numbers(t, sec, "force", {}, 2);
+  p.force = {f[0], f[1]};
+  if (with_history) {
+    const std::string h = r.choice(t, sec, "history", "step", {"step", "ramp", "half-sine", "harmonic"});
+    p.history.kind = h == "ramp" ? LoadHistory::Kind::ramp
+                   : h == "half-sine" ? LoadHistory::Kind::half_sine
+                   : h == "harmonic" ? LoadHistory::Kind::harmonic : LoadHistory::Kind::step;
+    p.history.period = r.number(t, sec, "period", 1.0, 0.0, HUGE_VAL, true);
+  }
+  return p;
+}
+
+std::vector<double> read_record(const Reader& r, const toml::table& t, const std::string& sec) {
+  std::vector<double> rec = r.numbers(t, sec, "record", {0.0, 90.0, 180.0, 270.0});
+  for (double& a : rec) {
+    if (a < -360.0 || a > 360.0) r.fail(sec + ".record", t.get("record"), "angles must lie in [-360, 360] degrees");
+    a = wrap_degrees(a);
+  }
+  return rec;
+}
+
+void read_gates(const Reader& r, const toml::table& t, Scene& s) {
+  const std::vector<std::string> keys = {"multibody", "lumped", "fem"};
+  r.known_keys(t, "gates", keys);
+  for (const auto& [k, node] : t) {
+    const std::string solver(k.str());
+    const std::string key = "gates." + solver;
+    auto one = [&](const toml::node& n) {
+      Gate g;
+      g.solver = solver;
+      if (n.is_number()) {
+        g.max_pct = n.value<double>().value();
+        r.check_range(key, &n, g.max_pct, 0.0, HUGE_VAL, true);
+      } else if (const toml::table* gt = n.as_table()) {
+        r.known_keys(*gt, key, {"max", "modes", "against"});
+        if (!gt->contains("max")) r.fail(key + ".max", gt, "missing: the largest allowed |error| in percent");
+        g.max_pct = r.number(*gt, key, "max", 0.0, 0.0, HUGE_VAL, true);
+        std::vector<std::string> against = {"reference", "paper"};
+        for (const auto& o : kSolvers)
+          if (o != solver) against.push_back(o);
+        g.against = r.choice(*gt, key, "against", "reference", against);
+        const auto m = r.numbers(*gt, key, "modes", {1.0, 0.0}, 2);
+        g.first_mode = static_cast<int>(m[0]);
+        g.last_mode = static_cast<int>(m[1]);
+        if (m[0] != g.first_mode || m[1] != g.last_mode || g.first_mode < 1 ||
+            (g.last_mode != 0 && g.last_mode < g.first_mode) || g.last_mode > s.modes.count)
+          r.fail(key + ".modes", gt->get("modes"),
+                 "expected [first, last] mode numbers with 1 <= first <= last <= modes.count (" +
+                     std::to_string(s.modes.count) + ")");
+      } else {
+        r.fail(key, &n, "expected a number (max |error| in %) or a table {max, modes, against}");
+      }
+      s.gates.push_back(g);
+    };
+    if (const toml::array* a = node.as_array()) {
+      for (const auto& e : *a) one(e);
+    } else {
+      one(node);
+    }
+  }
+}
+
+/// Largest number of elastic modes each model has (DESIGN.md: count <= what the model has).
+long long max_modes(const Scene& s, const std::string& solver) {
+  const int rigid = s.ring.supports.rigid_modes();
+  const int pinned_dofs = s.ring.supports.pin ? 2 : 0;
+  const int roller_dofs = s.ring.supports.roller ? 1 : 0;
+  if (solver == "multibody") return s.multibody.n - 3;  // n angles - 2 closures (+2 free) - supports/rigid
+  if (solver == "lumped") {
+    const long long n = s.lumped.n;
+    switch (s.lumped.variant) {
+      case LumpedOptions::Variant::chain: return n - 3;
+      case LumpedOptions::Variant::frame: return 2 * n - pinned_dofs - roller_dofs - rigid;
+      case LumpedOptions::Variant::frame_consistent: return 3 * n - pinned_dofs - roller_dofs - rigid;
+    }
+  }
+  // C0 elements of degree p: p nodes per cell and two displacement components.
+  return 2LL * s.fem.elements * s.fem.degree - pinned_dofs - roller_dofs - rigid;
+}
+
+void check_nodes(const Reader& r, const Scene& s, const toml::table& root) {
+  struct Model { std::string name, key; int n; };
+  std::vector<Model> models;
+  for (const auto& name : kSolvers) {
+    const bool used = s.needs(name) || (name == "multibody" && (s.response || s.statics));
+    if (!used) continue;
+    if (name == "multibody") models.push_back({name, "multibody.n", s.multibody.n});
+    if (name == "lumped") models.push_back({name, "lumped.n", s.lumped.n});
+    if (name == "fem") models.push_back({name, "fem.elements", s.fem.elements});
+  }
+  const auto& sup = s.ring.supports;
+  double anchor = sup.pin.value_or(0.0);
+  if (!sup.pin) {
+    if (s.statics) anchor = s.statics->load.angle;
+    else if (s.response) anchor = s.response->load.angle;
+  }
+  struct Point { std::string key; double angle; };
+  std::vector<Point> points;
+  if (sup.roller) points.push_back({"supports.roller", *sup.roller});
+  if (s.response) {
+    points.push_back({"response.at", s.response->load.angle});
+    for (double a : s.response->record) points.push_back({"response.record", a});
+  }
+  if (s.statics) {
+    points.push_back({"static.at", s.statics->load.angle});
+    for (double a : s.statics->record) points.push_back({"static.record", a});
+  }
+  for (const auto& p : points) {
+    for (const auto& m : models) {
+      if (on_node(p.angle, anchor, m.n)) continue;
+      const bool opposite = std::abs(wrap_degrees(p.angle - anchor) - 180.0) < 1e-9;
+      std::string what = "angle " + fmt_num(p.angle) + " is not a node of the " + m.name + " model (" + m.key +
+                         " = " + std::to_string(m.n) + " puts nodes every " + fmt_num(360.0 / m.n) +
+                         " degrees from " + fmt_num(anchor) + ")";
+      if (opposite) what += "; " + m.key + " must be even so that a node lies opposite";
+      const auto dot = p.key.find('.');
+      const toml::node* n = root.at_path(p.key.substr(0, dot)).as_table()
+                                ? root.at_path(p.key).node() : nullptr;
+      r.fail(p.key, n, what);
+    }
+  }
+}
+
+Scene build(const toml::table& root, const Reader& r) {
+  Scene s;
+  r.known_keys(root, "", {"title", "ring", "supports", "multibody", "fem", "lumped", "modes", "table", "gates",
+                          "response", "static"});
+  if (const toml::node* n = root.get("title")) {
+    auto t = n->value_exact<std::string>();
+    if (!t) r.fail("title", n, "expected a string");
+    s.title = *t;
+  }
+
+  // [ring]
+  const toml::table* rt = r.table(root, "", "ring");
+  if (!rt) r.fail("ring", &root, "missing: the [ring] section (radius, E, rho, section)");
+  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section"});
+  s.ring.radius = r.number(*rt, "ring", "radius", 10.0, 0.0, HUGE_VAL, true);
+  s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
+  s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
+  s.ring.section = read_section(r, *rt);
+  const double depth_ratio = s.ring.section.depth() / s.ring.radius;
+  if (depth_ratio >= 1.0)
+    r.fail("ring.section", rt->get("section"),
+           "section depth " + fmt_num(s.ring.section.depth()) + " m is not small against the radius " +
+               fmt_num(s.ring.radius) + " m (a ring needs depth/radius < 1)");
+  if (depth_ratio > 0.1)
+    s.warnings.push_back("ring.section: depth/radius = " + fmt_num(depth_ratio) +
+                         " > 0.1 stretches the thin-ring (Euler-Bernoulli) assumption");
+
+  // [supports]
+  if (const toml::table* t = r.table(root, "", "supports")) {
+    r.known_keys(*t, "supports", {"pin", "roller"});
+    if (t->contains("pin")) s.ring.supports.pin = wrap_degrees(r.number(*t, "supports", "pin", 0.0, -360.0, 360.0));
+    if (t->contains("roller")) {
+      if (!s.ring.supports.pin) r.fail("supports.roller", t->get("roller"), "a roller needs a pin");
+      s.ring.supports.roller = wrap_degrees(r.number(*t, "supports", "roller", 0.0, -360.0, 360.0));
+      if (std::abs(*s.ring.supports.roller - *s.ring.supports.pin) < 1e-9)
+        r.fail("supports.roller", t->get("roller"), "the roller must be at a different angle from the pin");
+    }
+  }
+
+  // Solver sections: each optional, defaults as in DESIGN.md.
+  const toml::table* mt = r.table(root, "", "multibody");
+  if (mt) {
+    r.known_keys(*mt, "multibody", {"n", "rotary_inertia", "dependent", "method"});
+    s.multibody.n = static_cast<int>(r.integer(*mt, "multibody", "n", 40, 4, 100000000));
+    s.multibody.rotary_inertia = r.boolean(*mt, "multibody", "rotary_inertia", true);
+    s.multibody.dependent = r.choice(*mt, "multibody", "dependent", "robust", {"robust", "paper"}) == "paper"
+                                ? MultibodyOptions::Dependent::paper : MultibodyOptions::Dependent::robust;
+    const std::string m = r.choice(*mt, "multibody", "method", "auto", {"auto", "dense", "sparse"});
+    s.multibody.method = m == "dense" ? MultibodyOptions::Method::dense
+                       : m == "sparse" ? MultibodyOptions::Method::sparse : MultibodyOptions::Method::automatic;
+  }
+  const toml::table* ft = r.table(root, "", "fem");
+  if (ft) {
+    r.known_keys(*ft, "fem", {"elements", "degree", "geometry", "extensible", "rotary_inertia", "reference",
+                              "tolerance"});
+    s.fem.elements = static_cast<int>(r.integer(*ft, "fem", "elements", 40, 4, 10000000));
+    s.fem.degree = static_cast<int>(r.integer(*ft, "fem", "degree", 3, 2, 12));
+    s.fem.geometry = r.choice(*ft, "fem", "geometry", "curved", {"curved", "polygon"}) == "polygon"
+                         ? FemOptions::Geometry::polygon : FemOptions::Geometry::curved;
+    s.fem.extensible = r.boolean(*ft, "fem", "extensible", true);
+    s.fem.rotary_inertia = r.boolean(*ft, "fem", "rotary_inertia", false);
+    s.fem.reference = r.boolean(*ft, "fem", "reference", false);
+    s.fem.tolerance = r.number(*ft, "fem", "tolerance", 1e-9, 1e-14, 1e-2);
+  }
+  const toml::table* lt = r.table(root, "", "lumped");
+  if (lt) {
+    r.known_keys(*lt, "lumped", {"n", "variant"});
+    s.lumped.n = static_cast<int>(r.integer(*lt, "lumped", "n", 40, 4, 100000000));
+    const std::string v = r.choice(*lt, "lumped", "variant", "chain", {"chain", "frame", "frame-consistent"});
+    s.lumped.variant = v == "frame" ? LumpedOptions::Variant::frame
+                     : v == "frame-consistent" ? LumpedOptions::Variant::frame_consistent
+                                               : LumpedOptions::Variant::chain;
+  }
+
+  // [modes]: solvers default to those whose section the scene has (multibody if none).
+  if (const toml::table* t = r.table(root, "", "modes")) {
+    r.known_keys(*t, "modes", {"count", "solvers"});
+    s.modes.count = static_cast<int>(r.integer(*t, "modes", "count", 23, 1, 100000));
+    s.modes.solvers = r.strings(*t, "modes", "solvers", kSolvers);
+    if (t->contains("solvers") && s.modes.solvers.empty())
+      r.fail("modes.solvers", t->get("solvers"), "expected at least one solver");
+    if (!t->contains("solvers")) {
+      if (mt) s.modes.solvers.push_back("multibody");
+      if (lt) s.modes.solvers.push_back("lumped");
+      if (ft) s.modes.solvers.push_back("fem");
+      if (s.modes.solvers.empty()) s.modes.solvers.push_back("multibody");
+    }
+  }
+
+  // [table]
+  if (const toml::table* t = r.table(root, "", "table")) {
+    r.known_keys(*t, "table", {"base", "against", "reference"});
+    s.table.present = true;
+    s.table.base = r.choice(*t, "table", "base", "multibody", kSolvers);
+    s.table.against = r.strings(*t, "table", "against", kSolvers);
+    if (std::find(s.table.against.begin(), s.table.against.end(), s.table.base) != s.table.against.end())
+      r.fail("table.against", t->get("against"), "lists the base solver \"" + s.table.base + "\" again");
+    s.table.reference = r.boolean(*t, "table", "reference", false);
+    if (s.modes.solvers.empty()) s.modes.count = 23;  // a table without [modes]: the paper's 23
+  }
+
+  if (const toml::table* t = r.table(root, "", "gates")) read_gates(r, *t, s);
+
+  // [response], [static]: need a pin (a free ring under a dead load has no equilibrium).
+  if (const toml::table* t = r.table(root, "", "response")) {
+    const std::string sec = "response";
+    r.known_keys(*t, sec, {"at", "force", "history", "period", "dt", "t_end", "integrator", "rho_inf", "record",
+                           "rayleigh_mass", "rayleigh_stiffness", "hinge_damping"});
+    if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a forced response needs a pin (the ring is free)");
+    ResponseOptions o;
+    o.load = read_load(r, *t, sec, true);
+    o.dt = r.number(*t, sec, "dt", 0.01, 0.0, HUGE_VAL, true);
+    o.t_end = r.number(*t, sec, "t_end", 5.0, 0.0, HUGE_VAL, true);
+    if (o.t_end / o.dt > 1e8) r.fail("response.dt", t->get("dt"), "t_end/dt exceeds 1e8 steps");
+    o.integrator = r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha"}) == "newmark"
+                       ? ResponseOptions::Integrator::newmark : ResponseOptions::Integrator::generalized_alpha;
+    o.rho_inf = r.number(*t, sec, "rho_inf", 0.8, 0.0, 1.0);
+    o.record = read_record(r, *t, sec);
+    o.rayleigh_mass = r.number(*t, sec, "rayleigh_mass", 0.0, 0.0, HUGE_VAL);
+    o.rayleigh_stiffness = r.number(*t, sec, "rayleigh_stiffness", 0.0, 0.0, HUGE_VAL);
+    o.hinge_damping = r.number(*t, sec, "hinge_damping", 0.0, 0.0, HUGE_VAL);
+    s.response = o;
+  }
+  if (const toml::table* t = r.table(root, "", "static")) {
+    const std::string sec = "static";
+    r.known_keys(*t, sec, {"at", "force", "steps", "record"});
+    if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a static analysis needs a pin (the ring is free)");
+    StaticOptions o;
+    o.load = read_load(r, *t, sec, false);
+    o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
+    o.record = read_record(r, *t, sec);
+    s.statics = o;
+  }
+  for (const auto* opt : {s.response ? &s.response->load : nullptr, s.statics ? &s.statics->load : nullptr}) {
+    if (opt && s.ring.supports.pin && std::abs(wrap_degrees(opt->angle - *s.ring.supports.pin)) < 1e-9)
+      r.fail(opt == (s.response ? &s.response->load : nullptr) ? "response.at" : "static.at", &root,
+             "the load acts at the pin, where it does nothing; load another point");
+  }
+
+  // Cross checks: every solver used must have the modes asked for, and nodes at the points.
+  for (const auto& name : kSolvers) {
+    if (!s.needs(name)) continue;
+    const long long most = max_modes(s, name);
+    if (s.modes.count > most) {
+      const std::string key = name == "multibody" ? "multibody.n" : name == "lumped" ? "lumped.n" : "fem.elements";
+      r.fail("modes.count", root.at_path("modes.count").node(),
+             std::to_string(s.modes.count) + " modes asked, but the " + name + " model (" + key +
+                 ") has only " + std::to_string(most) + " elastic modes");
+    }
+  }
+  for (const auto& g : s.gates) {
+    if (!s.needs(g.solver))
+      r.fail("gates." + g.solver, root.at_path("gates").node(),
+             "gates a solver the scene does not run (add it to modes.solvers or table.against)");
+    if (g.against != "reference" && g.against != "paper" && !s.needs(g.against))
+      r.fail("gates." + g.solver + ".against", root.at_path("gates").node(),
+             "compares with \"" + g.against + "\", which the scene does not run");
+  }
+  check_nodes(r, s, root);
+  return s;
+}
+
+/// Applies one "a.b.c=value" override to the parsed document.
+std::string apply_override(toml::table& root, const std::string& spec, const std::string& file) {
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(file, "--set " + spec, "expected section.key=value");
+  const std::string path = spec.substr(0, eq), value = spec.substr(eq + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    // A bare word (--set lumped.variant=frame) is a string.
+    if (value.empty() || value.find_first_of("\"'[]{}=\n") != std::string::npos)
+      throw InputError(file, "--set " + path, "the value '" + value + "' is not valid TOML");
+    parsed.insert_or_assign("v", value);
+  }
+  std::vector<std::string> parts;
+  std::stringstream ps(path);
+  for (std::string p; std::getline(ps, p, '.');) parts.push_back(p);
+  toml::table* t = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* n = t->get(parts[i]);
+    if (!n) n = &t->insert_or_assign(parts[i], toml::table{}).first->second;
+    if (!n->is_table()) throw InputError(file, "--set " + path, "'" + parts[i] + "' is not a section");
+    t = n->as_table();
+  }
+  if (parts.empty() || parts.back().empty()) throw InputError(file, "--set " + spec, "expected section.key=value");
+  t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
+  return path;
+}
+
+}  // namespace
+
+bool Scene::needs(const std::string& solver) const {
+  auto in = [&](const std::vector<std::string>& v) { return std::find(v.begin(), v.end(), solver) != v.end(); };
+  if (in(modes.solvers)) return true;
+  if (table.present && (table.base == solver || in(table.against))) return true;
+  if (solver == "fem" && table.present && table.reference) return true;
+  for (const auto& g : gates)
+    if (g.solver == solver || g.against == solver || (solver == "fem" && g.against == "reference")) return true;
+  return false;
+}
+
+const std::vector<std::string>& solver_names() { return kSolvers; }
+
+Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, name);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw InputError(name, "line " + std::to_string(b.line) + ", column " + std::to_string(b.column),
+                     "malformed TOML: " + std::string(e.description()));
+  }
+  std::set<std::string> overridden;
+  for (const auto& o : overrides) overridden.insert(apply_override(root, o, name));
+  Reader r(name, overridden);
+  Scene s = build(root, r);
+  s.file = name;
+  std::ostringstream out;
+  out << root;
+  s.resolved_toml = out.str();
+  return s;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path, "", "cannot read the scene file (missing or unreadable)");
+  std::stringstream s;
+  s << f.rdbuf();
+  if (f.bad()) throw InputError(path, "", "cannot read the scene file");
+  return parse_scene(s.str(), path, overrides);
+}
+
+}  // namespace ring
