@@ -66,6 +66,8 @@ class Reader {
         if (d < bd) { bd = d; best = c; }
       }
       std::string what = "unknown key";
+      for (const auto& c : known)  // a truncated key ("rotary" for "rotary_inertia")
+        if (bd > 2 && key.size() >= 3 && c.rfind(key, 0) == 0) { best = c; bd = 0; }
       if (bd <= std::max<std::size_t>(2, key.size() / 3)) what += "; did you mean '" + best + "'?";
       else what += "; known keys: " + join(known);
       fail(dotted(section, key), &node, what);
@@ -110,9 +112,12 @@ class Reader {
     if (!n) return def;
     auto i = n->value_exact<int64_t>();
     if (!i) fail(dotted(section, key), n, "expected an integer, got " + type_name(*n));
-    if (*i < lo || *i > hi)
-      fail(dotted(section, key), n,
-           "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(*i));
+    if (*i < lo || *i > hi) {
+      const std::string range = hi >= 10000000 && *i >= lo ? "<= " + std::to_string(hi)
+                              : hi >= 10000000 ? ">= " + std::to_string(lo)
+                              : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+      fail(dotted(section, key), n, "expected an integer " + range + ", got " + std::to_string(*i));
+    }
     return *i;
   }
 
@@ -521,10 +526,10 @@ Scene build(const toml::table& root, const Reader& r) {
     }
   }
   for (const auto& g : s.gates) {
-    if (!s.needs(g.solver))
+    if (!s.column(g.solver))
       r.fail("gates." + g.solver, root.at_path("gates").node(),
              "gates a solver the scene does not run (add it to modes.solvers or table.against)");
-    if (g.against != "reference" && g.against != "paper" && !s.needs(g.against))
+    if (g.against != "reference" && g.against != "paper" && !s.column(g.against))
       r.fail("gates." + g.solver + ".against", root.at_path("gates").node(),
              "compares with \"" + g.against + "\", which the scene does not run");
   }
@@ -564,15 +569,24 @@ std::string apply_override(toml::table& root, const std::string& spec, const std
 
 }  // namespace
 
-bool Scene::needs(const std::string& solver) const {
+bool Scene::column(const std::string& solver) const {
   auto in = [&](const std::vector<std::string>& v) { return std::find(v.begin(), v.end(), solver) != v.end(); };
-  if (in(modes.solvers)) return true;
-  if (table.present && (table.base == solver || in(table.against))) return true;
-  if (solver == "fem" && table.present && table.reference) return true;
+  return in(modes.solvers) || (table.present && (table.base == solver || in(table.against)));
+}
+
+bool Scene::needs_reference() const {
+  if (table.present && table.reference) return true;
   for (const auto& g : gates)
-    if (g.solver == solver || g.against == solver || (solver == "fem" && g.against == "reference")) return true;
+    if (g.against == "reference") return true;
   return false;
 }
+
+bool Scene::needs(const std::string& solver) const {
+  if (column(solver)) return true;
+  if (solver == "fem" && needs_reference()) return true;
+  return false;
+}
+
 
 const std::vector<std::string>& solver_names() { return kSolvers; }
 

@@ -69,7 +69,13 @@ struct Scene {
   std::vector<std::string> warnings;   ///< e.g. the thin-ring assumption stretched
   std::string resolved_toml;           ///< the scene after --set overrides, as TOML
 
-  /// True when some requested output needs this solver ("multibody", "lumped", "fem").
+  /// True when the solver ("multibody", "lumped", "fem") is a column: in modes.solvers
+  /// or in the table.
+  bool column(const std::string& solver) const;
+  /// True when the converged FE reference is asked for (table.reference or a gate).
+  bool needs_reference() const;
+  /// True when some requested output needs this solver's modes (a column, or the FE
+  /// reference). Nothing else is built: a scene that doesn't need FE never loads it.
   bool needs(const std::string& solver) const;
 };
 

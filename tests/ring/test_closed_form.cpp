@@ -1,0 +1,87 @@
+// Closed forms against values computed or printed elsewhere.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ring/closed_form.hpp"
+#include "support/close.hpp"
+
+namespace {
+
+ring::RingSpec paper_ring() {
+  ring::RingSpec s;  // R = 10 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3
+  s.section.diameter = 0.12;
+  return s;
+}
+
+// Oracle: the formula evaluated by an independent implementation (Python 3.11, math
+// module, written from Soedel eq. 6.6.14 without this code), to 1e-15.
+TEST(ClosedForm, FreeRingInextensionalPaperRing) {
+  const auto s = paper_ring();
+  EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_inextensional(s, 2), 4.176859328030314, 1e-13));
+  EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_inextensional(s, 3), 11.813942219650084, 1e-13));
+  EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_inextensional(s, 13), 260.74246929512196, 1e-13));
+  EXPECT_THROW(ring::closed_form::free_ring_inextensional(s, 1), std::invalid_argument);
+}
+
+// Oracle: the 2x2 characteristic polynomial solved in Python (same source); the lower root
+// there loses ~5 digits to cancellation, hence 1e-9.
+TEST(ClosedForm, FreeRingExtensibleBranches) {
+  const auto s = paper_ring();
+  const auto w2 = ring::closed_form::free_ring_extensible(s, 2);
+  EXPECT_TRUE(ringtest::IsClose(w2[0], 4.176811210819966, 1e-9));
+  EXPECT_TRUE(ringtest::IsClose(w2[1], 1160.2520682767242, 1e-12));
+  const auto w5 = ring::closed_form::free_ring_extensible(s, 5);
+  EXPECT_TRUE(ringtest::IsClose(w5[0], 36.632869935188644, 1e-9));
+  EXPECT_TRUE(ringtest::IsClose(w5[1], 2645.795349765418, 1e-12));
+}
+
+// Oracle: the breathing mode of a ring is c/R with c = sqrt(E/rho) (Love, sec. 294);
+// k = 1 has a rigid translation.
+TEST(ClosedForm, BreathingAndTranslation) {
+  const auto s = paper_ring();
+  EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_extensible(s, 0)[1], std::sqrt(s.E / s.rho) / s.radius, 1e-14));
+  EXPECT_EQ(ring::closed_form::free_ring_extensible(s, 1)[0], 0.0);
+}
+
+// Oracle: making the ring axially rigid (A -> large at fixed I and rho A) must recover
+// the inextensional formula; the flexural branch is lower by O(I/(A R^2)).
+TEST(ClosedForm, ExtensibleTendsToInextensional) {
+  ring::RingSpec s = paper_ring();
+  s.section.shape = ring::Section::Shape::general;
+  s.section.area_ = 1e6;
+  s.section.inertia_ = 1.0e-5;
+  s.rho = 7.8e3 * 0.0113097 / 1e6;  // keep rho A near the paper's
+  for (int k = 2; k <= 8; ++k) {
+    const double inext = ring::closed_form::free_ring_inextensional(s, k);
+    const double ext = ring::closed_form::free_ring_extensible(s, k)[0];
+    EXPECT_LE(ext, inext);
+    EXPECT_TRUE(ringtest::IsClose(ext, inext, 1e-10));  // I/(A R^2) = 1e-13
+  }
+}
+
+// Oracle: Roark's Formulas for Stress and Strain, 7th ed., Table 9.2 case 1, prints the
+// coefficients 0.1488 and 0.1366 of P R^3 / EI (4 digits: 5e-4 relative).
+TEST(ClosedForm, DiametralLoadMatchesRoark) {
+  const auto s = paper_ring();
+  const double c = 1000.0 * std::pow(s.radius, 3) / s.EI();
+  const auto d = ring::closed_form::diametral_load(s, 1000.0);
+  EXPECT_TRUE(ringtest::IsClose(d.along / c, 0.1488, 5e-4));
+  EXPECT_TRUE(ringtest::IsClose(d.across / c, 0.1366, 5e-4));
+}
+
+// Oracle: section formulas, pi d^2/4 and pi d^4/64 (any handbook), b h^3/12.
+TEST(ClosedForm, SectionProperties) {
+  ring::Section c;
+  c.diameter = 0.12;
+  EXPECT_TRUE(ringtest::IsClose(c.area(), 0.011309733552923255, 1e-15));
+  EXPECT_TRUE(ringtest::IsClose(c.inertia(), 1.0178760197630929e-05, 1e-15));
+  ring::Section r;
+  r.shape = ring::Section::Shape::rectangle;
+  r.width = 0.2;
+  r.height = 0.1;
+  EXPECT_TRUE(ringtest::IsClose(r.inertia(), 0.2 * 0.001 / 12.0, 1e-15));
+  EXPECT_TRUE(ringtest::IsClose(r.depth(), 0.1, 1e-15));
+}
+
+}  // namespace

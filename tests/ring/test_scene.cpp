@@ -1,0 +1,183 @@
+// The scene parser: every rejected input gets an InputError that names the key, and
+// --set overrides go through the same validation. The oracle is the scene format of
+// DESIGN.md and README ("Scene reference").
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ring/errors.hpp"
+#include "ring/scene.hpp"
+
+namespace {
+
+const std::string kPaper = R"(
+title = "t"
+[ring]
+radius = 10.0
+E = 2.1e11
+rho = 7.8e3
+section = { shape = "circle", diameter = 0.12 }
+[supports]
+pin = 180.0
+[multibody]
+n = 40
+[lumped]
+n = 40
+[modes]
+count = 23
+solvers = ["multibody", "lumped"]
+)";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto p = s.find(from);
+  EXPECT_NE(p, std::string::npos) << from;
+  return s.replace(p, from.size(), to);
+}
+
+/// Parses and expects an InputError whose message names `key` (and contains `also`).
+void expect_rejected(const std::string& text, const std::string& key, const std::string& also = "",
+                     const std::vector<std::string>& overrides = {}) {
+  try {
+    ring::parse_scene(text, "bad.toml", overrides);
+    ADD_FAILURE() << "accepted a scene that should fail at " << key;
+  } catch (const ring::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("bad.toml"), std::string::npos) << m;
+    EXPECT_NE(m.find(key), std::string::npos) << "message does not name " << key << ": " << m;
+    if (!also.empty()) {
+      EXPECT_NE(m.find(also), std::string::npos) << m;
+    }
+  }
+}
+
+TEST(SceneParse, PaperSceneReadsAsWritten) {
+  const ring::Scene s = ring::parse_scene(kPaper, "paper.toml");
+  EXPECT_EQ(s.multibody.n, 40);
+  EXPECT_EQ(s.modes.count, 23);
+  ASSERT_TRUE(s.ring.supports.pin);
+  EXPECT_EQ(*s.ring.supports.pin, 180.0);
+  EXPECT_TRUE(s.needs("multibody"));
+  EXPECT_TRUE(s.needs("lumped"));
+  EXPECT_FALSE(s.needs("fem"));  // skip what a scene doesn't need
+  EXPECT_TRUE(s.warnings.empty());
+}
+
+TEST(SceneParse, ShippedScenesLoad) {
+  for (const char* f : {"paper1990.toml", "paper1990-as-printed.toml", "free-ring.toml", "paper1990-forced.toml"}) {
+    const std::string path = std::string(RINGVIB_SOURCE_DIR) + "/scenes/" + f;
+    EXPECT_NO_THROW(ring::load_scene(path)) << path;
+  }
+}
+
+// ---- Rejected inputs: one per rule of the foundation issue ----
+
+TEST(SceneReject, MissingFileNamesThePath) {
+  try {
+    ring::load_scene("/nonexistent/dir/scene.toml");
+    ADD_FAILURE();
+  } catch (const ring::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/scene.toml"), std::string::npos);
+  }
+}
+TEST(SceneReject, MalformedTomlReportsLineAndColumn) {
+  expect_rejected(kPaper + "\n[modes\ncount = 3\n", "line 18", "malformed TOML");
+}
+TEST(SceneReject, UnknownSectionSuggestsNearest) { expect_rejected(replace(kPaper, "[lumped]", "[lumpd]"), "lumpd", "did you mean 'lumped'"); }
+TEST(SceneReject, UnknownKeySuggestsNearest) {
+  expect_rejected(replace(kPaper, "n = 40\n[lumped]", "nn = 40\n[lumped]"), "multibody.nn", "did you mean 'n'");
+}
+TEST(SceneReject, NegativeRadius) { expect_rejected(replace(kPaper, "radius = 10.0", "radius = -1.0"), "ring.radius", "> 0"); }
+TEST(SceneReject, YoungsModulusAsString) { expect_rejected(replace(kPaper, "E = 2.1e11", "E = \"steel\""), "ring.E", "expected a number"); }
+TEST(SceneReject, ZeroDensity) { expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 0"), "ring.rho"); }
+TEST(SceneReject, ZeroDiameter) { expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 0.0"), "ring.section.diameter"); }
+TEST(SceneReject, SectionAsThickAsTheRing) {
+  expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 12.0"), "ring.section", "not small against the radius");
+}
+TEST(SceneWarn, ThickSectionWarns) {
+  const ring::Scene s = ring::parse_scene(replace(kPaper, "diameter = 0.12", "diameter = 1.5"), "thick.toml");
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("thin-ring"), std::string::npos);
+}
+TEST(SceneReject, RectangleWithoutHeight) {
+  expect_rejected(replace(kPaper, "{ shape = \"circle\", diameter = 0.12 }", "{ shape = \"rectangle\", width = 0.1 }"),
+                  "ring.section.height");
+}
+TEST(SceneReject, SectionMixesShapes) {
+  expect_rejected(replace(kPaper, "diameter = 0.12 }", "diameter = 0.12, width = 0.1 }"), "ring.section.width");
+}
+TEST(SceneReject, TooFewSegments) { expect_rejected(replace(kPaper, "n = 40\n[lumped]", "n = 3\n[lumped]"), "multibody.n", ">= 4"); }
+TEST(SceneReject, NonIntegerSegments) { expect_rejected(replace(kPaper, "n = 40\n[lumped]", "n = 40.5\n[lumped]"), "multibody.n", "integer"); }
+TEST(SceneReject, RollerOppositeNeedsEvenN) {
+  std::string t = replace(kPaper, "pin = 180.0", "pin = 180.0\nroller = 0.0");
+  t = replace(t, "n = 40\n[lumped]", "n = 41\n[lumped]");
+  expect_rejected(t, "supports.roller", "must be even");
+}
+TEST(SceneReject, RollerWithoutPin) { expect_rejected(replace(kPaper, "pin = 180.0", "roller = 0.0"), "supports.roller", "needs a pin"); }
+TEST(SceneReject, RollerAtThePin) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nroller = -180.0"), "supports.roller", "different angle");
+}
+TEST(SceneReject, UnknownSolverName) { expect_rejected(replace(kPaper, "\"lumped\"]", "\"sap5\"]"), "modes.solvers", "\"sap5\""); }
+TEST(SceneReject, SolverListedTwice) { expect_rejected(replace(kPaper, "\"lumped\"]", "\"multibody\"]"), "modes.solvers", "twice"); }
+TEST(SceneReject, UnknownVariant) { expect_rejected(replace(kPaper, "n = 40\n[modes]", "n = 40\nvariant = \"frames\"\n[modes]"), "lumped.variant"); }
+TEST(SceneReject, ZeroModes) { expect_rejected(replace(kPaper, "count = 23", "count = 0"), "modes.count"); }
+TEST(SceneReject, MoreModesThanTheModelHas) {
+  expect_rejected(replace(kPaper, "n = 40\n[lumped]", "n = 10\n[lumped]"), "modes.count", "only 7 elastic modes");
+}
+TEST(SceneReject, FemDegreeOne) { expect_rejected(kPaper + "[fem]\ndegree = 1\n", "fem.degree"); }
+TEST(SceneReject, TableComparesBaseWithItself) {
+  expect_rejected(kPaper + "[table]\nbase = \"multibody\"\nagainst = [\"multibody\"]\n", "table.against");
+}
+TEST(SceneReject, LoadNotOnANode) {
+  expect_rejected(kPaper + "[static]\nat = 5.0\nforce = [-1.0, 0.0]\n", "static.at", "not a node");
+}
+TEST(SceneReject, LoadAtThePin) { expect_rejected(kPaper + "[static]\nat = 180.0\nforce = [-1.0, 0.0]\n", "static.at", "at the pin"); }
+TEST(SceneReject, ForceWithThreeComponents) {
+  expect_rejected(kPaper + "[static]\nat = 0.0\nforce = [-1.0, 0.0, 2.0]\n", "static.force", "2 numbers");
+}
+TEST(SceneReject, StaticsOnAFreeRing) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "") + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\n", "supports.pin");
+}
+TEST(SceneReject, GateOnASolverNotRun) { expect_rejected(kPaper + "[gates]\nfem = 1.0\n", "gates.fem"); }
+TEST(SceneReject, GateModeRangeBeyondCount) {
+  expect_rejected(kPaper + "[gates]\nmultibody = { max = 1.0, modes = [1, 30] }\n", "gates.multibody.modes");
+}
+TEST(SceneReject, NegativeTimeStep) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nroller = 0.0") +
+                      "[response]\nat = 0.0\nforce = [-1.0, 0.0]\ndt = -0.01\n",
+                  "response.dt");
+}
+TEST(SceneReject, SpectralRadiusAboveOne) {
+  expect_rejected(kPaper + "[response]\nat = 0.0\nforce = [-1.0, 0.0]\nrho_inf = 1.5\n", "response.rho_inf", "[0, 1]");
+}
+
+// ---- --set overrides ----
+
+TEST(SceneSet, IntegerOverride) {
+  const ring::Scene s = ring::parse_scene(kPaper, "p.toml", {"multibody.n=160"});
+  EXPECT_EQ(s.multibody.n, 160);
+  EXPECT_EQ(s.lumped.n, 40);
+}
+TEST(SceneSet, ArrayOverrideCreatesSection) {
+  const ring::Scene s = ring::parse_scene(kPaper, "p.toml", {"static.at=0.0", "static.force=[-2e4,0.0]"});
+  ASSERT_TRUE(s.statics);
+  EXPECT_EQ(s.statics->load.force[0], -2e4);
+  EXPECT_EQ(s.statics->load.force[1], 0.0);
+}
+TEST(SceneSet, QuotedAndBareStrings) {
+  const ring::Scene a = ring::parse_scene(kPaper, "p.toml", {"lumped.variant=\"frame\""});
+  const ring::Scene b = ring::parse_scene(kPaper, "p.toml", {"lumped.variant=frame"});
+  EXPECT_EQ(a.lumped.variant, ring::LumpedOptions::Variant::frame);
+  EXPECT_EQ(b.lumped.variant, ring::LumpedOptions::Variant::frame);
+}
+TEST(SceneSet, ResolvedSceneRoundTrips) {
+  const ring::Scene a = ring::parse_scene(kPaper, "p.toml", {"multibody.n=80", "ring.radius=5.0"});
+  const ring::Scene b = ring::parse_scene(a.resolved_toml, "resolved.toml");
+  EXPECT_EQ(b.multibody.n, 80);
+  EXPECT_EQ(b.ring.radius, 5.0);
+  EXPECT_EQ(b.resolved_toml, a.resolved_toml);
+}
+TEST(SceneSet, OverrideIsValidatedAndNamed) { expect_rejected(kPaper, "multibody.n (from --set)", ">= 4", {"multibody.n=2"}); }
+TEST(SceneSet, OverrideWithoutEquals) { expect_rejected(kPaper, "--set multibody.n", "section.key=value", {"multibody.n"}); }
+TEST(SceneSet, OverrideUnknownKey) { expect_rejected(kPaper, "multibody.rotary", "did you mean 'rotary_inertia'", {"multibody.rotary=true"}); }
+
+}  // namespace
