@@ -1,0 +1,319 @@
+#include "multibody/chain.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace multibody {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+inline Eigen::Vector2d e(double a) { return {std::cos(a), std::sin(a)}; }
+inline Eigen::Vector2d eprime(double a) { return {-std::sin(a), std::cos(a)}; }
+std::string num(double x) {
+  std::string s = std::to_string(x);
+  return s;
+}
+}  // namespace
+
+Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+             std::optional<double> loaded_angle)
+    : n_(options.n), free_(spec.supports.free()) {
+  if (n_ < 4)
+    throw std::invalid_argument("multibody: n = " + std::to_string(n_) + " must be >= 4");
+  if (!(spec.radius > 0.0) || !(spec.A() > 0.0) || !(spec.I() > 0.0) || !(spec.E > 0.0) ||
+      !(spec.rho > 0.0))
+    throw std::invalid_argument("multibody: radius, A, I, E and rho must all be > 0");
+  l_ = 2.0 * kPi * spec.radius / n_;
+  m_ = spec.rhoA() * l_;
+  jr_ = options.rotary_inertia ? m_ * l_ * l_ / 12.0 : 0.0;
+  k_ = spec.EI() / l_;
+  rp_ = l_ / (2.0 * std::sin(kPi / n_));
+
+  const double fallback = loaded_angle.value_or(0.0);
+  anchor_deg_ = ring::wrap_degrees(spec.supports.pin.value_or(fallback));
+  angles_ = ring::node_angles(spec, n_, fallback);
+  if (loaded_angle && !ring::on_node(*loaded_angle, anchor_deg_, n_))
+    throw std::invalid_argument("multibody: loaded point at " + num(*loaded_angle) +
+                                " deg is not a hinge of the n = " + std::to_string(n_) +
+                                " chain anchored at " + num(anchor_deg_) +
+                                " deg (valid: anchor + 360 k / n)");
+  phi0_.resize(n_);
+  const double a0 = anchor_deg_ * kPi / 180.0;
+  for (int i = 0; i < n_; ++i) phi0_[i] = a0 + 2.0 * kPi * i / n_ + 0.5 * kPi + kPi / n_;
+
+  if (spec.supports.roller) {
+    if (free_) throw std::invalid_argument("multibody: a roller needs a pin");
+    const double r = *spec.supports.roller;
+    if (!ring::on_node(r, anchor_deg_, n_))
+      throw std::invalid_argument("multibody: roller at " + num(r) + " deg is not a hinge of the n = " +
+                                  std::to_string(n_) + " chain anchored at the pin " +
+                                  num(anchor_deg_) + " deg (valid: pin + 360 k / n)");
+    const int h = hinge_at(r);
+    if (h == 0) throw std::invalid_argument("multibody: roller coincides with the pin");
+    roller_ = h;
+    const Eigen::Vector2d d = (hinge_rest(h) - hinge_rest(0)).normalized();
+    roller_normal_ = {-d.y(), d.x()};
+  }
+}
+
+int Chain::hinge_at(double deg) const {
+  if (!ring::on_node(deg, anchor_deg_, n_))
+    throw std::invalid_argument("multibody: " + num(deg) + " deg is not a hinge (anchor " +
+                                num(anchor_deg_) + " deg, n = " + std::to_string(n_) + ")");
+  const double steps = ring::wrap_degrees(deg - anchor_deg_) * n_ / 360.0;
+  return static_cast<int>(std::lround(steps)) % n_;
+}
+
+Vector Chain::q0() const {
+  Vector q = Vector::Zero(dofs());
+  q.head(n_) = phi0_;
+  return q;
+}
+
+Eigen::Vector2d Chain::hinge_rest(int k) const {
+  const double a = anchor_deg_ * kPi / 180.0 + 2.0 * kPi * k / n_;
+  return rp_ * e(a);
+}
+
+void Chain::check(const Vector& q) const {
+  if (q.size() != dofs())
+    throw std::invalid_argument("multibody: coordinate vector has " + std::to_string(q.size()) +
+                                " entries, expected dofs() = " + std::to_string(dofs()));
+}
+
+Eigen::Vector2d Chain::base(const Vector& q) const {
+  Eigen::Vector2d p = hinge_rest(0);
+  if (free_) p += q.tail<2>();
+  return p;
+}
+
+Eigen::Vector2d Chain::hinge_position(const Vector& q, int k) const {
+  check(q);
+  if (k < 0 || k > n_)
+    throw std::invalid_argument("multibody: hinge " + std::to_string(k) + " out of range (0 .. " +
+                                std::to_string(n_) + ")");
+  Eigen::Vector2d p = base(q);
+  for (int j = 0; j < k; ++j) p += l_ * e(q[j]);
+  return p;
+}
+
+Eigen::Matrix2Xd Chain::hinge_positions(const Vector& q) const {
+  check(q);
+  Eigen::Matrix2Xd p(2, n_);
+  Eigen::Vector2d x = base(q);
+  for (int k = 0; k < n_; ++k) {
+    p.col(k) = x;
+    x += l_ * e(q[k]);
+  }
+  return p;
+}
+
+Eigen::Matrix2Xd Chain::midpoints(const Vector& q) const {
+  check(q);
+  Eigen::Matrix2Xd p(2, n_);
+  Eigen::Vector2d x = base(q);
+  for (int i = 0; i < n_; ++i) {
+    const Eigen::Vector2d t = e(q[i]);
+    p.col(i) = x + 0.5 * l_ * t;
+    x += l_ * t;
+  }
+  return p;
+}
+
+Matrix Chain::hinge_jacobian(const Vector& q, int k) const {
+  check(q);
+  if (k < 0 || k > n_)
+    throw std::invalid_argument("multibody: hinge " + std::to_string(k) + " out of range (0 .. " +
+                                std::to_string(n_) + ")");
+  Matrix J = Matrix::Zero(2, dofs());
+  for (int j = 0; j < k; ++j) J.col(j) = l_ * eprime(q[j]);
+  if (free_) J.rightCols<2>().setIdentity();
+  return J;
+}
+
+Matrix Chain::mass_matrix(const Vector& q) const {
+  check(q);
+  const int n = n_;
+  Matrix M(dofs(), dofs());
+  const double ml2 = m_ * l_ * l_;
+  Vector c = q.head(n).array().cos(), s = q.head(n).array().sin();
+  for (int k = 0; k < n; ++k) {
+    for (int j = k + 1; j < n; ++j) {
+      // (L^T L)_jk = n - 1 - max(j,k) + 1/2 for j != k (0-based)
+      const double v = ml2 * (n - 1 - j + 0.5) * (c[j] * c[k] + s[j] * s[k]);
+      M(j, k) = v;
+      M(k, j) = v;
+    }
+    M(k, k) = ml2 * (n - 1 - k + 0.25) + jr_;
+  }
+  if (free_) {
+    for (int j = 0; j < n; ++j) {
+      const double cj = m_ * l_ * (n - 1 - j + 0.5);  // m l sum_i L_ij
+      M(j, n) = M(n, j) = -cj * s[j];
+      M(j, n + 1) = M(n + 1, j) = cj * c[j];
+    }
+    M.bottomRightCorner<2, 2>() = n * m_ * Eigen::Matrix2d::Identity();
+  }
+  return M;
+}
+
+Vector Chain::mass_times(const Vector& q, const Vector& v) const {
+  check(q);
+  check(v);
+  const int n = n_;
+  // Midpoint velocities V_i = v_t + l sum_j L_ij e'(phi_j) v_j, then M v collects
+  // m V_i back through the same kinematics (L^T) plus the rotary inertia.
+  Eigen::Matrix2Xd V(2, n);
+  Eigen::Vector2d acc = free_ ? Eigen::Vector2d(v.tail<2>()) : Eigen::Vector2d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d t = l_ * v[i] * eprime(q[i]);
+    V.col(i) = acc + 0.5 * t;
+    acc += t;
+  }
+  Vector y(dofs());
+  Eigen::Vector2d back = Eigen::Vector2d::Zero();  // sum_{i>j} m V_i
+  for (int j = n - 1; j >= 0; --j) {
+    const Eigen::Vector2d w = back + 0.5 * m_ * V.col(j);
+    y[j] = l_ * eprime(q[j]).dot(w) + jr_ * v[j];
+    back += m_ * V.col(j);
+  }
+  if (free_) y.tail<2>() = back;
+  return y;
+}
+
+Vector Chain::quadratic_velocity(const Vector& q, const Vector& qd) const {
+  check(q);
+  check(qd);
+  const int n = n_;
+  // Centripetal midpoint accelerations a_i = -l sum_j L_ij e(phi_j) qd_j^2, projected
+  // back as in mass_times.
+  Eigen::Matrix2Xd a(2, n);
+  Eigen::Vector2d acc = Eigen::Vector2d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d t = -l_ * qd[i] * qd[i] * e(q[i]);
+    a.col(i) = acc + 0.5 * t;
+    acc += t;
+  }
+  Vector y(dofs());
+  Eigen::Vector2d back = Eigen::Vector2d::Zero();
+  for (int j = n - 1; j >= 0; --j) {
+    const Eigen::Vector2d w = back + 0.5 * m_ * a.col(j);
+    y[j] = l_ * eprime(q[j]).dot(w);
+    back += m_ * a.col(j);
+  }
+  if (free_) y.tail<2>() = back;
+  return y;
+}
+
+double Chain::kinetic_energy(const Vector& q, const Vector& qd) const {
+  check(q);
+  check(qd);
+  double T = 0.0;
+  Eigen::Vector2d acc = free_ ? Eigen::Vector2d(qd.tail<2>()) : Eigen::Vector2d::Zero();
+  for (int i = 0; i < n_; ++i) {
+    const Eigen::Vector2d t = l_ * qd[i] * eprime(q[i]);
+    T += m_ * (acc + 0.5 * t).squaredNorm() + jr_ * qd[i] * qd[i];
+    acc += t;
+  }
+  return 0.5 * T;
+}
+
+Vector Chain::hinge_rotations(const Vector& q) const {
+  check(q);
+  Vector r(n_);
+  for (int k = 0; k < n_; ++k) {
+    const int km = (k + n_ - 1) % n_;
+    r[k] = (q[k] - phi0_[k]) - (q[km] - phi0_[km]);
+  }
+  return r;
+}
+
+double Chain::spring_energy(const Vector& q) const {
+  return 0.5 * k_ * hinge_rotations(q).squaredNorm();
+}
+
+Vector Chain::spring_forces(const Vector& q) const {
+  const Vector r = hinge_rotations(q);
+  Vector f = Vector::Zero(dofs());
+  for (int k = 0; k < n_; ++k) f[k] = k_ * (r[k] - r[(k + 1) % n_]);
+  return f;
+}
+
+Matrix Chain::stiffness_matrix() const {
+  Matrix S = Matrix::Zero(dofs(), dofs());
+  for (int k = 0; k < n_; ++k) {
+    S(k, k) = 2.0 * k_;
+    S(k, (k + 1) % n_) -= k_;
+    S((k + 1) % n_, k) -= k_;
+  }
+  return S;
+}
+
+Vector Chain::point_load_forces(const Vector& q, int k, const Eigen::Vector2d& F) const {
+  return hinge_jacobian(q, k).transpose() * F;
+}
+
+Eigen::Vector2d Chain::closure(const Vector& q) const {
+  check(q);
+  Eigen::Vector2d g = Eigen::Vector2d::Zero();
+  for (int j = 0; j < n_; ++j) g += e(q[j]);
+  return l_ * g;
+}
+
+Matrix Chain::closure_jacobian(const Vector& q) const {
+  check(q);
+  Matrix J = Matrix::Zero(2, dofs());
+  for (int j = 0; j < n_; ++j) J.col(j) = l_ * eprime(q[j]);
+  return J;
+}
+
+Eigen::Vector2d Chain::closure_jdot_qdot(const Vector& q, const Vector& qd) const {
+  check(q);
+  check(qd);
+  Eigen::Vector2d g = Eigen::Vector2d::Zero();
+  for (int j = 0; j < n_; ++j) g -= qd[j] * qd[j] * e(q[j]);
+  return l_ * g;
+}
+
+double Chain::roller(const Vector& q) const {
+  if (!roller_) throw std::logic_error("multibody: roller() called on a chain without a roller");
+  return roller_normal_.dot(hinge_position(q, *roller_) - hinge_rest(0));
+}
+
+Vector Chain::roller_jacobian(const Vector& q) const {
+  if (!roller_) throw std::logic_error("multibody: roller_jacobian() without a roller");
+  return hinge_jacobian(q, *roller_).transpose() * roller_normal_;
+}
+
+double Chain::roller_jdot_qdot(const Vector& q, const Vector& qd) const {
+  if (!roller_) throw std::logic_error("multibody: roller_jdot_qdot() without a roller");
+  check(q);
+  check(qd);
+  double g = 0.0;
+  for (int j = 0; j < *roller_; ++j) g -= qd[j] * qd[j] * roller_normal_.dot(e(q[j]));
+  return l_ * g;
+}
+
+Vector Chain::constraints(const Vector& q) const {
+  Vector g(constraint_count());
+  g.head<2>() = closure(q);
+  if (roller_) g[2] = roller(q);
+  return g;
+}
+
+Matrix Chain::constraint_jacobian(const Vector& q) const {
+  Matrix J(constraint_count(), dofs());
+  J.topRows<2>() = closure_jacobian(q);
+  if (roller_) J.row(2) = roller_jacobian(q).transpose();
+  return J;
+}
+
+Vector Chain::constraint_jdot_qdot(const Vector& q, const Vector& qd) const {
+  Vector g(constraint_count());
+  g.head<2>() = closure_jdot_qdot(q, qd);
+  if (roller_) g[2] = roller_jdot_qdot(q, qd);
+  return g;
+}
+
+}  // namespace multibody
