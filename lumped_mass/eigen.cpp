@@ -1,0 +1,342 @@
+#include "lumped_mass/eigen.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "ring/errors.hpp"
+
+namespace lumped {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// Orthonormal selection T (N x Nr) with S T = 0: free translations and all rotations
+/// keep their unit columns; a node with one blocked direction d keeps the column
+/// along d rotated by +90 deg; a node with two blocked directions loses both.
+/// Each row of S acts on one node's (ux, uy) (model.hpp). O(N).
+struct Reduction {
+  SpMat T;
+  std::vector<char> massless;  // per reduced DOF
+};
+
+Reduction support_reduction(const Model& m) {
+  const int N = static_cast<int>(m.K.rows()), dpn = m.dofs_per_node;
+  std::vector<std::vector<std::array<double, 2>>> blocked(m.n);
+  const SpMat St = m.S.transpose();  // column r of St = row r of S
+  for (int r = 0; r < St.cols(); ++r) {
+    int node = -1;
+    std::array<double, 2> d{0.0, 0.0};
+    for (SpMat::InnerIterator it(St, r); it; ++it) {
+      node = static_cast<int>(it.row()) / dpn;
+      d[it.row() % dpn] = it.value();
+    }
+    blocked[node].push_back(d);
+  }
+  Reduction red;
+  Triplets t;
+  int col = 0;
+  for (int k = 0; k < m.n; ++k) {
+    if (blocked[k].empty()) {
+      t.emplace_back(dpn * k, col++, 1.0);
+      t.emplace_back(dpn * k + 1, col++, 1.0);
+      red.massless.push_back(m.massless[dpn * k]);
+      red.massless.push_back(m.massless[dpn * k + 1]);
+    } else if (blocked[k].size() == 1) {
+      const auto& d = blocked[k][0];
+      t.emplace_back(dpn * k, col, -d[1]);
+      t.emplace_back(dpn * k + 1, col++, d[0]);
+      red.massless.push_back(m.massless[dpn * k]);
+    }  // two blocked directions: pinned, no column
+    for (int r = 2; r < dpn; ++r) {
+      t.emplace_back(dpn * k + r, col++, 1.0);
+      red.massless.push_back(m.massless[dpn * k + r]);
+    }
+  }
+  red.T.resize(N, col);
+  red.T.setFromTriplets(t.begin(), t.end());
+  return red;
+}
+
+/// Selection E (Nr x Na) of the inertial (not massless) reduced DOFs.
+SpMat inertial_selection(const std::vector<char>& massless) {
+  Triplets t;
+  int col = 0;
+  for (std::size_t i = 0; i < massless.size(); ++i)
+    if (!massless[i]) t.emplace_back(static_cast<int>(i), col++, 1.0);
+  SpMat E(static_cast<int>(massless.size()), col);
+  E.setFromTriplets(t.begin(), t.end());
+  return E;
+}
+
+// ---------------------------------------------------------------- dense path
+
+Eigenpairs solve_dense(const Model& m, const Reduction& red, int count) {
+  const MatrixXd T = MatrixXd(red.T);
+  const MatrixXd Kt = T.transpose() * MatrixXd(m.K) * T;
+  const MatrixXd Mt = T.transpose() * MatrixXd(m.M) * T;
+  const MatrixXd Ct = MatrixXd(m.C) * T;
+  const int Nr = static_cast<int>(Kt.rows());
+  MatrixXd Kd, Md, lift;  // lift: reduced-problem vector -> model DOFs (N x Nd)
+  if (Ct.rows() > 0) {
+    Eigen::ColPivHouseholderQR<MatrixXd> qr(Ct.transpose());
+    if (qr.rank() != Ct.rows())
+      throw ring::NumericalError("lumped: link constraints are dependent (rank " +
+                                 std::to_string(qr.rank()) + " of " + std::to_string(Ct.rows()) + ")");
+    const MatrixXd Q = qr.householderQ();
+    const MatrixXd Z = Q.rightCols(Nr - Ct.rows());
+    Kd = Z.transpose() * Kt * Z;
+    Md = Z.transpose() * Mt * Z;
+    lift = T * Z;
+  } else if (std::count(red.massless.begin(), red.massless.end(), 1) > 0) {
+    std::vector<int> a, b;
+    for (int i = 0; i < Nr; ++i) (red.massless[i] ? b : a).push_back(i);
+    const MatrixXd Kaa = Kt(a, a), Kab = Kt(a, b), Kbb = Kt(b, b);
+    Eigen::LLT<MatrixXd> llt(Kbb);
+    if (llt.info() != Eigen::Success) throw ring::NumericalError("lumped: rotation stiffness not positive definite");
+    const MatrixXd G = -llt.solve(Kab.transpose());  // x_b = G x_a
+    Kd = Kaa + Kab * G;
+    Kd = 0.5 * (Kd + Kd.transpose()).eval();
+    Md = Mt(a, a);
+    MatrixXd L = MatrixXd::Zero(Nr, a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) L(a[i], i) = 1.0;
+    for (std::size_t i = 0; i < b.size(); ++i) L.row(b[i]) = G.row(i);
+    lift = T * L;
+  } else {
+    Kd = Kt;
+    Md = Mt;
+    lift = T;
+  }
+  // Jacobi scaling by diag(Md)^-1/2: translations and rotations (consistent mass) or
+  // the chain's null-space coordinates differ in mass by orders of magnitude, and the
+  // Cholesky-based reduction loses that many digits in the residual without it.
+  const VectorXd dscale = Md.diagonal().cwiseSqrt().cwiseInverse();
+  Kd = dscale.asDiagonal() * Kd * dscale.asDiagonal();
+  Md = dscale.asDiagonal() * Md * dscale.asDiagonal();
+  lift = lift * dscale.asDiagonal();
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(Kd, Md, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
+  if (es.info() != Eigen::Success)
+    throw ring::NumericalError("lumped: dense eigensolver failed (reduced mass not positive definite?)");
+  Eigenpairs p;
+  p.method = Method::dense;
+  p.unknowns = Kd.rows();
+  const int take = std::min<int>(static_cast<int>(Kd.rows()), count + m.expected_rigid);
+  p.lambda.assign(es.eigenvalues().data(), es.eigenvalues().data() + take);
+  p.X = lift * es.eigenvectors().leftCols(take);
+  return p;
+}
+
+// ---------------------------------------------------------------- sparse path
+
+/// y = (A - sigma B)^-1 x in the inertial DOFs, through the factorized sparse system
+/// described in eigen.hpp. Factor: SparseLU (saddle point) or SimplicialLDLT (SPD).
+template <class Factor>
+class ShiftInvertOp {
+ public:
+  using Scalar = double;
+  ShiftInvertOp(const SpMat& Kt, const SpMat& Mt, const SpMat& Ct, const SpMat& E)
+      : Kt_(Kt), Mt_(Mt), Ct_(Ct), E_(E), size_(Kt.rows() + Ct.rows()) {}
+  Eigen::Index rows() const { return E_.cols(); }
+  Eigen::Index cols() const { return E_.cols(); }
+
+  /// Assembles and factorizes [Kt - sigma Mt, Ct^T; Ct, 0]. O(n) for the banded-cyclic
+  /// pattern of the ring under a fill-reducing ordering.
+  void set_shift(double sigma) {
+    const SpMat D = Kt_ - sigma * Mt_;
+    const Eigen::Index nr = D.rows(), nc = Ct_.rows();
+    Triplets t;
+    t.reserve(D.nonZeros() + 2 * Ct_.nonZeros());
+    for (int j = 0; j < D.outerSize(); ++j)
+      for (SpMat::InnerIterator it(D, j); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+    for (int j = 0; j < Ct_.outerSize(); ++j)
+      for (SpMat::InnerIterator it(Ct_, j); it; ++it) {
+        t.emplace_back(nr + it.row(), it.col(), it.value());
+        t.emplace_back(it.col(), nr + it.row(), it.value());
+      }
+    SpMat A(nr + nc, nr + nc);
+    A.setFromTriplets(t.begin(), t.end());
+    A.makeCompressed();
+    factor_.compute(A);
+    if (factor_.info() != Eigen::Success)
+      throw ring::NumericalError("lumped: sparse factorization of K - sigma M failed (sigma = " +
+                                 std::to_string(sigma) + ")");
+  }
+  /// Full solution (reduced DOFs, then multipliers) for a right-hand side in the reduced DOFs.
+  VectorXd solve_reduced(const VectorXd& rhs) const {
+    VectorXd b = VectorXd::Zero(size_);
+    b.head(rhs.size()) = rhs;
+    return factor_.solve(b).head(rhs.size());
+  }
+  void perform_op(const double* x_in, double* y_out) const {
+    const Eigen::Map<const VectorXd> x(x_in, E_.cols());
+    Eigen::Map<VectorXd> y(y_out, E_.cols());
+    y = E_.transpose() * solve_reduced(E_ * x);
+  }
+  const Factor& factor() const { return factor_; }
+
+ private:
+  const SpMat &Kt_, &Mt_, &Ct_, &E_;
+  Eigen::Index size_;
+  Factor factor_;
+};
+
+/// y = B x with B = Maa + mass_scale * Ca^T Ca (eigen.hpp). O(n).
+class MassOp {
+ public:
+  using Scalar = double;
+  MassOp(const SpMat& Maa, const SpMat& Ca, double mass_scale) : Maa_(Maa), Ca_(Ca), c_(mass_scale) {}
+  Eigen::Index rows() const { return Maa_.rows(); }
+  Eigen::Index cols() const { return Maa_.rows(); }
+  void perform_op(const double* x_in, double* y_out) const {
+    const Eigen::Map<const VectorXd> x(x_in, Maa_.rows());
+    Eigen::Map<VectorXd> y(y_out, Maa_.rows());
+    y = Maa_ * x;
+    if (Ca_.rows() > 0) y += c_ * (Ca_.transpose() * (Ca_ * x));
+  }
+
+ private:
+  const SpMat &Maa_, &Ca_;
+  double c_;
+};
+
+template <class Factor>
+long long factor_nnz(const Factor& f);
+template <>
+long long factor_nnz(const Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>& f) {
+  return f.nnzL() + f.nnzU();
+}
+template <>
+long long factor_nnz(const Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>& f) {
+  return f.matrixL().nestedExpression().nonZeros() + f.vectorD().size();
+}
+
+template <class Factor>
+Eigenpairs solve_sparse_with(const Model& m, const Reduction& red, int count) {
+  const SpMat Kt = SpMat(red.T.transpose() * m.K * red.T);
+  const SpMat Mt = SpMat(red.T.transpose() * m.M * red.T);
+  const SpMat Ct = SpMat(m.C * red.T);
+  const SpMat E = inertial_selection(red.massless);
+  const SpMat Maa = SpMat(E.transpose() * Mt * E);
+  const SpMat Ca = SpMat(Ct * E);
+  const int Na = static_cast<int>(E.cols());
+  const int nev = count + m.expected_rigid;
+  const int ncv = std::min(Na, std::max(2 * nev + 1, nev + 20));
+  if (nev >= Na || ncv <= nev)
+    throw std::invalid_argument("lumped: sparse path needs count + rigid modes (=" + std::to_string(nev) +
+                                ") < " + std::to_string(Na) + " inertial DOFs; use the dense path");
+  // Typical mass of one inertial DOF, to make Ct^T Ct commensurate with Mt.
+  const double mass_scale = Maa.diagonal().mean();
+  const double sigma = -m.lambda_scale;
+
+  ShiftInvertOp<Factor> op(Kt, Mt, Ct, E);
+  MassOp bop(Maa, Ca, mass_scale);
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp<Factor>, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
+      op, bop, nev, ncv, sigma);
+  // Start in the admissible space (range of the operator): v0 = op(B r), fixed seed.
+  std::mt19937 gen(20261121);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  VectorXd r(Na), br(Na), v0(Na);
+  for (int i = 0; i < Na; ++i) r[i] = uni(gen);
+  bop.perform_op(r.data(), br.data());
+  op.perform_op(br.data(), v0.data());
+  eigs.init(v0.data());
+  // tol is Spectra's relative Ritz-residual bound on nu = 1/(lambda - sigma).
+  eigs.compute(Spectra::SortRule::LargestMagn, 2000, 1e-13);
+  if (eigs.info() != Spectra::CompInfo::Successful)
+    throw ring::NumericalError("lumped: shift-invert Lanczos did not converge (" + std::to_string(nev) +
+                               " modes, " + std::to_string(Na) + " DOFs)");
+  const VectorXd lam = eigs.eigenvalues();
+  const MatrixXd V = eigs.eigenvectors();
+  std::vector<int> order(lam.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lam[a] < lam[b]; });
+
+  Eigenpairs p;
+  p.method = Method::sparse;
+  p.unknowns = Kt.rows() + Ct.rows();
+  p.factor_nonzeros = factor_nnz(op.factor());
+  p.X.resize(m.K.rows(), nev);
+  for (int c = 0; c < nev; ++c) {
+    const int i = order[c];
+    p.lambda.push_back(lam[i]);
+    // Lift to all reduced DOFs: (Kt - sigma Mt) x = (lambda - sigma) Mt x (eigen.hpp).
+    const VectorXd xa = V.col(i);
+    const VectorXd xr = (lam[i] - sigma) * op.solve_reduced(E * (Maa * xa));
+    VectorXd x = red.T * xr;
+    const double norm = std::sqrt(x.dot(m.M * x));
+    p.X.col(c) = x / norm;
+  }
+  return p;
+}
+
+}  // namespace
+
+int elastic_dofs(const Model& m) {
+  const Reduction red = support_reduction(m);
+  const long long inertial = std::count(red.massless.begin(), red.massless.end(), 0);
+  return static_cast<int>(inertial - m.C.rows()) - m.expected_rigid;
+}
+
+Eigenpairs solve(const Model& m, int count, Method method) {
+  const int avail = elastic_dofs(m);
+  if (count < 1 || count > avail)
+    throw std::invalid_argument("lumped: count (=" + std::to_string(count) + ") must be in [1, " +
+                                std::to_string(avail) + "] for n = " + std::to_string(m.n));
+  const Reduction red = support_reduction(m);
+  const int nev = count + m.expected_rigid;
+  if (method == Method::automatic)
+    method = (m.n <= 96 || 3 * nev > avail) ? Method::dense : Method::sparse;
+  Eigenpairs p;
+  if (method == Method::dense)
+    p = solve_dense(m, red, count);
+  else if (m.C.rows() > 0)
+    p = solve_sparse_with<Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>>(m, red, count);
+  else
+    p = solve_sparse_with<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>(m, red, count);
+
+  const double threshold = kRigidThreshold * m.lambda_scale;
+  p.rigid = 0;
+  for (double l : p.lambda) {
+    if (!std::isfinite(l)) throw ring::NumericalError("lumped: non-finite eigenvalue");
+    if (l < threshold) ++p.rigid;
+  }
+  if (p.rigid != m.expected_rigid)
+    throw ring::NumericalError("lumped: found " + std::to_string(p.rigid) + " modes with omega^2 < " +
+                               std::to_string(kRigidThreshold) + " EI/(rho A R^4), the supports leave " +
+                               std::to_string(m.expected_rigid));
+  const std::vector<double> res = residuals(m, p);
+  for (std::size_t i = p.rigid; i < res.size(); ++i) p.max_residual = std::max(p.max_residual, res[i]);
+  return p;
+}
+
+std::vector<double> residuals(const Model& m, const Eigenpairs& p) {
+  const Reduction red = support_reduction(m);
+  const SpMat Ct = SpMat(m.C * red.T);
+  Eigen::SimplicialLDLT<SpMat> cct;
+  if (Ct.rows() > 0) {
+    cct.compute(SpMat(Ct * Ct.transpose()));
+    if (cct.info() != Eigen::Success) throw ring::NumericalError("lumped: C C^T not positive definite");
+  }
+  std::vector<double> out;
+  for (int c = 0; c < p.X.cols(); ++c) {
+    const VectorXd x = p.X.col(c);
+    const VectorXd kx = m.K * x, mx = m.M * x;
+    VectorXd r = red.T.transpose() * (kx - p.lambda[c] * mx);
+    if (Ct.rows() > 0) r -= Ct.transpose() * cct.solve(Ct * r);
+    const double rel = r.norm() / (kx.norm() + std::abs(p.lambda[c]) * mx.norm());
+    const double drift = std::max(m.C.rows() > 0 ? (m.C * x).norm() : 0.0, m.S.rows() > 0 ? (m.S * x).norm() : 0.0) / x.norm();
+    out.push_back(std::max(rel, drift));
+  }
+  return out;
+}
+
+}  // namespace lumped

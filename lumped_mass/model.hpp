@@ -1,0 +1,62 @@
+// Assembly of the lumped-mass models of a ring (issue 5), written independently of
+// multibody/: the three variants are built in CARTESIAN node coordinates on the
+// regular n-gon whose side is l = 2 pi R / n (perimeter = circumference).
+//
+// Geometry. Node k (k = 0..n-1) sits at polar angle a_k = anchor + 360 k / n degrees
+// (ring::node_angles), at distance rho = l / (2 sin(pi/n)) from the centre; side k
+// joins node k to node k+1 (mod n), counter-clockwise.
+//
+// DOF order (node-major), stated once for every matrix below:
+//   chain:  {ux_0, uy_0, ux_1, uy_1, ...}                 (2 per node, hinge displacements)
+//   frame:  {ux_0, uy_0, th_0, ux_1, uy_1, th_1, ...}     (3 per node, th = nodal rotation, ccw)
+// in the ring-centred frame, m and rad.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "ring/spec.hpp"
+
+namespace lumped {
+
+using SpMat = Eigen::SparseMatrix<double>;  // column-major, int indices
+
+/// The linearised model about the undeformed n-gon: K x = omega^2 M x subject to
+/// C x = 0 (internal constraints) and S x = 0 (supports).
+struct Model {
+  ring::LumpedOptions::Variant variant = ring::LumpedOptions::Variant::chain;
+  int n = 0;                 ///< nodes (= links / elements)
+  int dofs_per_node = 2;     ///< 2 (chain) or 3 (frame variants)
+  double anchor_deg = 0.0;   ///< polar angle of node 0 (the pin, or 0 for a free ring)
+  double side = 0.0;         ///< l = 2 pi R / n, m
+  double circumradius = 0.0; ///< rho = l / (2 sin(pi / n)), m
+  SpMat K;                   ///< stiffness, N x N (N = dofs_per_node * n), N/m
+  SpMat M;                   ///< mass, N x N, kg (singular for the chain, and the
+                             ///< lumped frame's rotation rows are zero)
+  SpMat C;                   ///< internal constraints: chain link lengths (n x N, rows
+                             ///< t_j . (u_{j+1} - u_j) = 0, t_j the unit side vector); empty (0 x N) for frames
+  SpMat S;                   ///< supports: one row per blocked direction (a unit vector on one
+                             ///< node's (ux, uy)): pin 2 rows, roller 1 row (normal to pin-roller line)
+  std::vector<char> massless;///< per DOF: 1 if it carries no mass and is condensed statically
+                             ///< (the lumped frame's rotations), else 0
+  int expected_rigid = 0;    ///< rigid modes the supports leave (3 free, 1 pin, 0 pin + roller)
+  double lambda_scale = 0.0; ///< EI / (rho A R^4), rad^2/s^2: scale of every bending omega^2
+};
+
+/// Builds the chosen variant. Checks (std::invalid_argument, naming the valid range):
+/// n >= 4; positive radius, E, rho, A, I; a roller needs a pin, must fall on a node
+/// (ring::on_node) and differ from the pin node. O(n) time and memory.
+///
+/// chain: point masses m = rho A l at the side midpoints, rigid massless links (rows of C),
+///   rotational springs k = EI/l at all n hinges. The spring angle at hinge j is the
+///   turning angle between sides j-1 and j, theta_j(P) = atan2(a x b, a . b) with
+///   a = P_j - P_{j-1}, b = P_{j+1} - P_j; K = k sum_j grad theta_j grad theta_j^T is its
+///   exact Hessian at the unstressed n-gon (the term with the Hessian of theta_j is
+///   multiplied by the spring moment, zero there; link forces are zero too).
+/// frame / frame_consistent: straight two-node Euler-Bernoulli elements on the sides,
+///   linear axial (EA), cubic Hermite bending (EI); masses rho A l / 2 per element end on
+///   the translations only (frame, rotations massless -> condensed) or the consistent
+///   mass matrix (frame_consistent).
+Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options);
+
+}  // namespace lumped

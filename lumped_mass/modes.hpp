@@ -1,0 +1,36 @@
+// Natural frequencies and mode shapes of the lumped-mass ring models (issue 5),
+// independent of multibody/: the only shared code is ring/.
+//
+// Usage:
+//   ring::RingSpec spec;                       // the paper's ring: R = 10, d = 0.12, steel
+//   spec.section.diameter = 0.12;
+//   spec.supports.pin = 180.0;
+//   ring::LumpedOptions opt;                    // n = 40, variant chain
+//   ring::ModalResult r = lumped::compute_modes(spec, opt, 9);
+//   // r.omega[0] ~ 2.47 rad/s, r.rigid_modes == 1
+#pragma once
+
+#include "lumped_mass/eigen.hpp"
+#include "lumped_mass/model.hpp"
+#include "ring/results.hpp"
+#include "ring/spec.hpp"
+
+namespace lumped {
+
+/// The `count` lowest elastic modes of the variant in `options` (model.hpp), solved as
+/// in eigen.hpp, reported as ring::ModalResult: solver = "lumped"; model = {n, variant,
+/// method ("dense" | "sparse"), and for sparse factor_nonzeros}; rigid_modes (counted
+/// with kRigidThreshold, not numbered); omega (rad/s, ascending, elastic only); shapes at
+/// the common stations (ring::sample_polygon of the node displacements, anchor = pin
+/// angle or 0 for a free ring); unknowns; seconds (wall time of this call);
+/// max_residual (largest relative residual of the elastic pairs, eigen.hpp residuals()).
+/// \param count 1 <= count <= elastic_dofs() (n - 3 for the chain, 2n - 3 for frame,
+///              3n - 3 for frame-consistent).
+/// Cost: dense O(n^3); sparse O(n (count + rigid)) per Lanczos restart, O(n) memory.
+ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count);
+
+/// The same with the eigen-solution path chosen explicitly (tests, benchmarks).
+ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count,
+                                Method method);
+
+}  // namespace lumped
