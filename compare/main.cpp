@@ -1,1 +1,87 @@
-int main(){return 0;}
+// ringvib: runs what a scene file asks for (DESIGN.md). main() parses, dispatches,
+// catches and maps failures to the documented exit codes.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "compare/commands.hpp"
+#include "ring/errors.hpp"
+
+namespace {
+
+void add_common(CLI::App* c, cmp::CommonArgs& a) {
+  c->add_option("scene", a.scene, "scene file (TOML)")->required();
+  c->add_option("--set", a.set, "override a scene key: section.key=value (value in TOML syntax)");
+  c->add_flag("-q,--quiet", a.quiet, "no progress messages on stderr");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ringvib: in-plane vibration of thin rings; three solvers cross-validated (Yin & Wang 1989/90)"};
+  app.set_version_flag("--version", std::string("ringvib ") + RINGVIB_VERSION);
+  app.require_subcommand(1);
+  cmp::CommonArgs a;
+  std::string out, junit, format = "text", solver, vtu, csv;
+  bool paper = false, json = false;
+  std::optional<int> count;
+
+  auto* run = app.add_subcommand("run", "every analysis the scene lists; --out DIR writes report.md, data and figures");
+  add_common(run, a);
+  run->add_option("--out", out, "folder for the report, CSV/JSON and figures");
+  run->add_option("--junit", junit, "write the gates as JUnit XML to this file");
+  run->add_flag("--paper", paper, "add the published Table 1 values and each column's deviation");
+
+  auto* table = app.add_subcommand("table", "the three-way frequency table with differences (and errors)");
+  add_common(table, a);
+  table->add_flag("--paper", paper, "add the published Table 1 values and each column's deviation");
+  table->add_option("--format", format, "text | md | csv | json")->check(CLI::IsMember({"text", "md", "csv", "json"}));
+
+  auto* modes = app.add_subcommand("modes", "natural frequencies of one solver");
+  add_common(modes, a);
+  modes->add_option("--solver", solver, "multibody | fem | lumped")
+      ->required()
+      ->check(CLI::IsMember({"multibody", "fem", "lumped"}));
+  modes->add_option("--count", count, "number of elastic modes (default: modes.count)")->check(CLI::PositiveNumber);
+  modes->add_flag("--json", json, "print JSON");
+  modes->add_option("--vtu", vtu, "FE only: write the mode shapes as VTU files into this folder");
+
+  auto* respond = app.add_subcommand("respond", "the forced nonlinear response of [response]");
+  add_common(respond, a);
+  respond->add_option("--csv", csv, "write the time history to this CSV file (default: stdout)");
+
+  auto* statics = app.add_subcommand("static", "nonlinear static equilibrium of [static]");
+  add_common(statics, a);
+  statics->add_flag("--json", json, "print JSON");
+
+  auto* converge = app.add_subcommand("converge", "error against refinement and observed orders, per solver");
+  add_common(converge, a);
+  converge->add_option("--out", out, "folder for the CSV and the log-log figure");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;  // --help/--version exit 0; usage errors exit 2
+  }
+
+  try {
+    if (*run) return cmp::cmd_run(a, out, junit, paper);
+    if (*table) return cmp::cmd_table(a, paper, format);
+    if (*modes) return cmp::cmd_modes(a, solver, count, json, vtu);
+    if (*respond) return cmp::cmd_respond(a, csv);
+    if (*statics) return cmp::cmd_static(a, json);
+    if (*converge) return cmp::cmd_converge(a, out);
+  } catch (const ring::InputError& e) {
+    std::cerr << "ringvib: error: " << e.what() << "\n";
+    return 2;
+  } catch (const ring::NumericalError& e) {
+    std::cerr << "ringvib: numerical failure: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "ringvib: failure: " << e.what() << "\n";
+    return 3;
+  }
+  return 2;
+}

@@ -1,0 +1,206 @@
+#include "compare/commands.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/gates.hpp"
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/converge.hpp"
+#include "compare/report.hpp"
+#include "compare/response.hpp"
+#include "compare/solvers.hpp"
+#include "compare/table.hpp"
+#include "ring/errors.hpp"
+#include "ring/scene.hpp"
+
+namespace cmp {
+namespace {
+
+/// Progress on stderr, only on a terminal and without --quiet.
+class Progress {
+ public:
+  explicit Progress(bool quiet) : on_(!quiet && isatty(STDERR_FILENO)) {}
+  void say(const std::string& what) const {
+    if (on_) std::cerr << "ringvib: " << what << "\n";
+  }
+  bool on() const { return on_; }
+
+ private:
+  bool on_;
+};
+
+ring::Scene load(const CommonArgs& a) {
+  ring::Scene s = ring::load_scene(a.scene, a.set);
+  for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
+  return s;
+}
+
+/// The solvers of the table in column order: the scene's [table], else modes.solvers.
+std::vector<std::string> table_solvers(const ring::Scene& s) {
+  std::vector<std::string> v;
+  if (s.table.present) {
+    v.push_back(s.table.base);
+    for (const auto& o : s.table.against) v.push_back(o);
+  } else {
+    v = s.modes.solvers;
+  }
+  return v;
+}
+
+/// Everything modal the scene needs, each solver computed once.
+struct ModalRun {
+  std::vector<ring::ModalResult> columns;   ///< in table order
+  std::optional<ring::ModalResult> reference;
+};
+
+ModalRun compute_modal(const ring::Scene& s, const Progress& p) {
+  ModalRun r;
+  for (const auto& name : table_solvers(s)) {
+    p.say("computing " + std::to_string(s.modes.count) + " modes with " + name);
+    r.columns.push_back(solve_modes(s, name, s.modes.count));
+  }
+  if (s.needs_reference()) {
+    p.say("computing the converged FE reference");
+    r.reference = reference_modes(s, s.modes.count);
+  }
+  return r;
+}
+
+std::string modes_text(const ring::ModalResult& m) {
+  std::ostringstream s;
+  s << m.solver << ":";
+  for (const auto& [k, v] : m.model) s << " " << k << "=" << model_value(v);
+  s << "\nrigid modes: " << m.rigid_modes << "\n\n  mode   omega rad/s        Hz\n";
+  for (std::size_t i = 0; i < m.omega.size(); ++i) {
+    char line[96];
+    std::snprintf(line, sizeof line, "  %4zu  %12s  %8s\n", i + 1, sig4(m.omega[i]).c_str(),
+                  sig4(m.omega[i] / (2 * M_PI)).c_str());
+    s << line;
+  }
+  char tail[128];
+  std::snprintf(tail, sizeof tail, "\n%lld unknowns, solved in %.3g s, max relative eigen-residual %.1e\n", m.unknowns,
+                m.seconds, m.max_residual);
+  s << tail;
+  return s.str();
+}
+
+Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
+  Table t = build_table(s.title, r.columns, r.reference ? &*r.reference : nullptr, s.modes.count);
+  bool gates_need_paper = false;
+  for (const auto& g : s.gates) gates_need_paper |= g.against == "paper";
+  if (paper || gates_need_paper) t.paper = paper_table();
+  return t;
+}
+
+}  // namespace
+
+int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
+              const std::string& vtu_dir) {
+  ring::Scene s = load(a);
+  const int k = count.value_or(s.modes.count);
+  if (!vtu_dir.empty() && solver != "fem")
+    throw ring::InputError(a.scene, "--vtu", "VTU output is for the FE solver (--solver fem)");
+  // --count is validated like modes.count.
+  if (count) s = ring::load_scene(a.scene, [&] { auto v = a.set; v.push_back("modes.count=" + std::to_string(k)); return v; }());
+  const ring::ModalResult m = solve_modes(s, solver, k);
+  if (!vtu_dir.empty()) {
+    make_dirs(vtu_dir);
+    write_fem_vtu(s, k, vtu_dir);
+  }
+  std::cout << (json ? modal_json(m, false) : modes_text(m));
+  return 0;
+}
+
+int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
+  const ring::Scene s = load(a);
+  const Progress p(a.quiet);
+  const Table t = make_table(s, compute_modal(s, p), paper);
+  if (format == "md") std::cout << format_markdown(t);
+  else if (format == "csv") std::cout << format_csv(t);
+  else if (format == "json") std::cout << format_json(t);
+  else std::cout << format_text(t);
+  return 0;
+}
+
+int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper) {
+  const ring::Scene s = load(a);
+  const Progress p(a.quiet);
+  if (!out_dir.empty()) make_dirs(out_dir);
+  RunReport rep;
+  rep.scene = &s;
+  int code = 0;
+
+  const bool modal = !s.modes.solvers.empty() || s.table.present;
+  if (modal) {
+    const ModalRun r = compute_modal(s, p);
+    rep.modal = r.columns;
+    rep.reference = r.reference;
+    rep.table = make_table(s, r, paper);
+    std::cout << format_text(*rep.table) << "\n";
+    rep.gates = evaluate_gates(s.gates, *rep.table);
+    for (const auto& g : rep.gates) {
+      std::cout << g.line() << "\n";
+      if (!g.pass) code = 1;
+    }
+  }
+  if (s.response) {
+    p.say("integrating the forced response");
+    rep.history = respond(s);
+    std::cout << "response: " << rep.history->t.size() - 1 << " steps to t = " << rep.history->t.back() << " s\n";
+  }
+  if (s.statics) {
+    p.say("solving the nonlinear statics");
+    rep.statics = solve_static(s);
+    std::cout << static_text(*rep.statics);
+  }
+  if (!junit.empty()) write_file(junit, junit_xml(s.title.empty() ? a.scene : s.title, rep.gates));
+  if (!out_dir.empty()) {
+    p.say("writing the report, data and figures to " + out_dir);
+    write_report(out_dir, rep);
+    std::cout << "wrote " << out_dir << "/report.md\n";
+  }
+  return code;
+}
+
+int cmd_respond(const CommonArgs& a, const std::string& csv) {
+  const ring::Scene s = load(a);
+  if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
+  const ring::TimeHistory h = respond(s);
+  if (csv.empty()) std::cout << history_csv(h);
+  else write_file(csv, history_csv(h));
+  return 0;
+}
+
+int cmd_static(const CommonArgs& a, bool json) {
+  const ring::Scene s = load(a);
+  if (!s.statics) throw ring::InputError(a.scene, "static", "the scene has no [static] section");
+  const ring::StaticResult r = solve_static(s);
+  std::cout << (json ? static_json(r) : static_text(r));
+  return 0;
+}
+
+int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
+  const ring::Scene s = load(a);
+  const Progress p(a.quiet);
+  if (!out_dir.empty()) make_dirs(out_dir);
+  p.say("computing the converged FE reference");
+  const ring::ModalResult ref = reference_modes(s, s.modes.count);
+  const ConvergenceStudy c = converge(s, ref, p.on() ? &std::cerr : nullptr);
+  std::cout << convergence_text(c);
+  if (!out_dir.empty()) {
+    write_convergence(out_dir, c);
+    std::cout << "wrote " << out_dir << "/convergence.csv and convergence.png\n";
+  }
+  return 0;
+}
+
+}  // namespace cmp

@@ -1,0 +1,26 @@
+// The subcommands of `ringvib` (DESIGN.md, "The command"). Each returns the process
+// exit code: 0 success, 1 a gate failed; bad input throws ring::InputError (2) and a
+// numerical failure ring::NumericalError (3), caught in main().
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cmp {
+
+struct CommonArgs {
+  std::string scene;
+  std::vector<std::string> set;  ///< --set section.key=value
+  bool quiet = false;            ///< no progress on stderr
+};
+
+int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper);
+int cmd_table(const CommonArgs& a, bool paper, const std::string& format);
+int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
+              const std::string& vtu_dir);
+int cmd_respond(const CommonArgs& a, const std::string& csv);
+int cmd_static(const CommonArgs& a, bool json);
+int cmd_converge(const CommonArgs& a, const std::string& out_dir);
+
+}  // namespace cmp

@@ -1,0 +1,148 @@
+#include "compare/converge.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/solvers.hpp"
+#include "compare/table.hpp"
+
+namespace cmp {
+namespace {
+
+/// Max and mean |error| in % of `r` against `ref`, modes paired by MAC.
+std::pair<double, double> errors(const ring::ModalResult& r, const ring::ModalResult& ref, int modes) {
+  const std::vector<int> pair = pair_by_mac(ref, r);
+  double mx = 0.0, sum = 0.0;
+  for (int i = 0; i < modes; ++i) {
+    const double e = pair[i] < 0 ? INFINITY : std::abs(r.omega[pair[i]] - ref.omega[i]) / ref.omega[i] * 100.0;
+    mx = std::max(mx, e);
+    sum += e;
+  }
+  return {mx, sum / modes};
+}
+
+ring::Scene refined(const ring::Scene& s, const std::string& solver, int factor_num, int factor_den) {
+  ring::Scene r = s;
+  if (solver == "multibody") r.multibody.n = s.multibody.n * factor_num / factor_den;
+  if (solver == "lumped") r.lumped.n = s.lumped.n * factor_num / factor_den;
+  if (solver == "fem") r.fem.elements = s.fem.elements * factor_num / factor_den;
+  return r;
+}
+
+}  // namespace
+
+double fitted_order(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<double> lx, ly;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (y[i] > 0 && std::isfinite(y[i])) {
+      lx.push_back(std::log(x[i]));
+      ly.push_back(std::log(y[i]));
+    }
+  const std::size_t n = lx.size();
+  if (n < 2) return NAN;
+  const double mx = std::accumulate(lx.begin(), lx.end(), 0.0) / n, my = std::accumulate(ly.begin(), ly.end(), 0.0) / n;
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxy += (lx[i] - mx) * (ly[i] - my);
+    sxx += (lx[i] - mx) * (lx[i] - mx);
+  }
+  return -sxy / sxx;
+}
+
+ConvergenceStudy converge(const ring::Scene& scene, const ring::ModalResult& reference, std::ostream* progress) {
+  ConvergenceStudy c;
+  c.modes = scene.modes.count;
+  c.reference_estimate = reference.error_estimate;
+  const double floor_pct = 100.0 * 100.0 * std::max(scene.fem.tolerance, reference.error_estimate);
+  std::vector<std::string> solvers;
+  for (const auto& name : ring::solver_names())
+    if (scene.column(name)) solvers.push_back(name);
+  for (const auto& name : solvers) {
+    ConvergenceSeries s;
+    s.name = name == "fem" ? "fem (p = " + std::to_string(scene.fem.degree) + ")"
+           : name == "lumped" ? "lumped (" + ring::to_string(scene.lumped.variant) + ")" : name;
+    s.parameter = name == "fem" ? "elements" : "n";
+    const int steps = name == "fem" ? 4 : 5;
+    std::vector<ring::ModalResult> results;
+    for (int k = 0; k < steps; ++k) {
+      const ring::Scene r = refined(scene, name, 1 << k, 1);
+      const double size = name == "multibody" ? r.multibody.n : name == "lumped" ? r.lumped.n : r.fem.elements;
+      if (progress) *progress << "ringvib: " << name << " at " << s.parameter << " = " << size << "\n";
+      results.push_back(solve_modes(r, name, c.modes));
+      const auto [mx, mean] = errors(results.back(), reference, c.modes);
+      s.size.push_back(size);
+      s.max_error.push_back(mx);
+      s.mean_error.push_back(mean);
+      s.seconds.push_back(results.back().seconds);
+    }
+    std::vector<double> fx, fy;
+    for (std::size_t i = 0; i < s.size.size(); ++i)
+      if (s.max_error[i] > floor_pct) { fx.push_back(s.size[i]); fy.push_back(s.max_error[i]); }
+    s.order = fitted_order(fx, fy);
+    c.series.push_back(s);
+    if (name == "multibody") {
+      // Richardson with the observed order 2: w = (4 w_2n - w_n) / 3, paired by MAC.
+      ConvergenceSeries rich{"multibody (Richardson)", "n", {}, {}, {}, {}, 0.0};
+      for (std::size_t k = 1; k < results.size(); ++k) {
+        ring::ModalResult x = results[k];
+        const std::vector<int> pf = pair_by_mac(reference, results[k]), pc = pair_by_mac(reference, results[k - 1]);
+        for (int i = 0; i < c.modes; ++i) x.omega[pf[i]] = (4.0 * results[k].omega[pf[i]] - results[k - 1].omega[pc[i]]) / 3.0;
+        const auto [mx, mean] = errors(x, reference, c.modes);
+        rich.size.push_back(s.size[k]);
+        rich.max_error.push_back(mx);
+        rich.mean_error.push_back(mean);
+        rich.seconds.push_back(results[k].seconds + results[k - 1].seconds);
+      }
+      std::vector<double> rx, ry;
+      for (std::size_t i = 0; i < rich.size.size(); ++i)
+        if (rich.max_error[i] > floor_pct) { rx.push_back(rich.size[i]); ry.push_back(rich.max_error[i]); }
+      rich.order = fitted_order(rx, ry);
+      c.series.push_back(rich);
+    }
+  }
+  return c;
+}
+
+std::string convergence_text(const ConvergenceStudy& c) {
+  std::ostringstream s;
+  s << "Max and mean |error| (%) over the " << c.modes
+    << " lowest modes against the converged FE reference (its own estimated error " << c.reference_estimate
+    << " relative)\n\n";
+  for (const auto& x : c.series) {
+    s << x.name << ": observed order " << (std::isfinite(x.order) ? pct2(x.order) : std::string("n/a")) << "\n";
+    char line[160];
+    std::snprintf(line, sizeof line, "  %10s  %12s  %12s  %10s\n", x.parameter.c_str(), "max |err| %", "mean |err| %",
+                  "seconds");
+    s << line;
+    for (std::size_t i = 0; i < x.size.size(); ++i) {
+      std::snprintf(line, sizeof line, "  %10.0f  %12.3e  %12.3e  %10.3e\n", x.size[i], x.max_error[i], x.mean_error[i],
+                    x.seconds[i]);
+      s << line;
+    }
+    s << "\n";
+  }
+  return s.str();
+}
+
+void write_convergence(const std::string& dir, const ConvergenceStudy& c) {
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "series,parameter,size,max_error_pct,mean_error_pct,seconds,fitted_order\n";
+  std::vector<Series> plot;
+  for (const auto& x : c.series) {
+    for (std::size_t i = 0; i < x.size.size(); ++i)
+      csv << '"' << x.name << "\"," << x.parameter << "," << x.size[i] << "," << x.max_error[i] << ","
+          << x.mean_error[i] << "," << x.seconds[i] << "," << x.order << "\n";
+    plot.push_back({x.name + " (order " + (std::isfinite(x.order) ? pct2(x.order) : std::string("n/a")) + ")", x.size,
+                    x.max_error});
+  }
+  write_file(dir + "/convergence.csv", csv.str());
+  plot_series(dir, "convergence",
+              "Convergence to the FE reference, " + std::to_string(c.modes) + " lowest modes",
+              "refinement (segments n, or FE elements)", "max |error| over the modes (%)", plot, true, true);
+}
+
+}  // namespace cmp

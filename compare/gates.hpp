@@ -1,0 +1,29 @@
+// CI accuracy gates: the largest |error| or |difference| a scene allows, per solver and
+// mode range. `ringvib run` exits 1 when one fails.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compare/table.hpp"
+#include "ring/scene.hpp"
+
+namespace cmp {
+
+struct GateResult {
+  ring::Gate gate;
+  bool pass = false;
+  int worst_mode = 0;     ///< 1-based
+  double worst_pct = 0;   ///< |value| at the worst mode, %
+  std::string name() const;  ///< "multibody vs reference, modes 1-23, max 6%"
+  std::string line() const;  ///< "PASS multibody vs reference ...: worst mode 23, 5.12 % <= 6 %"
+};
+
+/// Evaluates every gate of the scene on the table. A gate that cannot be evaluated
+/// (a NaN, a missing paper value for every mode) fails.
+std::vector<GateResult> evaluate_gates(const std::vector<ring::Gate>& gates, const Table& table);
+
+/// JUnit XML with one test case per gate.
+std::string junit_xml(const std::string& suite, const std::vector<GateResult>& results);
+
+}  // namespace cmp

@@ -1,0 +1,127 @@
+#include "compare/plot.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "compare/output.hpp"
+
+namespace cmp {
+namespace {
+
+std::string shell_quote(const std::string& s) {
+  std::string o = "'";
+  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return o + "'";
+}
+
+std::string gp_string(const std::string& s) {  // a gnuplot double-quoted string
+  std::string o = "\"";
+  for (char c : s) o += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return o + "\"";
+}
+
+const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+
+}  // namespace
+
+void render(const std::string& dir, const std::string& name, const std::string& script, const std::string& data,
+            int width, int height) {
+  write_file(dir + "/" + name + ".dat", data);
+  std::ostringstream gp;
+  gp << "# " << name << ": made by ringvib; re-run with `gnuplot " << name << ".gp` in this folder.\n"
+     << "set terminal pngcairo size " << width << "," << height << " enhanced font 'DejaVu Sans,11'\n"
+     << "set output '" << name << ".png'\n"
+     << "datafile = '" << name << ".dat'\n"
+     << script;
+  write_file(dir + "/" + name + ".gp", gp.str());
+  // gnuplot writes the PNG under a temporary name (the script on disk keeps its own
+  // output line; a piped copy is redirected), then the PNG is renamed into place.
+  const std::string tmp = name + ".png.tmp-" + std::to_string(getpid());
+  const std::string piped = "cd " + shell_quote(dir) + " && sed " +
+                            shell_quote("s|^set output '" + name + ".png'$|set output '" + tmp + "'|") + " " +
+                            shell_quote(name + ".gp") + " | gnuplot 2>&1";
+  FILE* p = popen(piped.c_str(), "r");
+  if (!p) throw std::runtime_error("cannot run gnuplot for " + name);
+  std::string out;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  const int status = pclose(p);
+  const std::string from = dir + "/" + tmp, to = dir + "/" + name + ".png";
+  if (status != 0 || std::rename(from.c_str(), to.c_str()) != 0) {
+    std::remove(from.c_str());
+    throw std::runtime_error("gnuplot failed for " + dir + "/" + name + ".gp: " + out);
+  }
+}
+
+void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius, int count) {
+  int modes = count;
+  for (const auto& r : results) modes = std::min<int>(modes, static_cast<int>(r.shapes.size()));
+  if (modes <= 0) return;
+  // Data blocks: index (mode * models + model), columns x y of the deformed ring (m),
+  // closed by repeating the first station. Amplitude: 15 % of the radius.
+  const double a = 0.15 * radius;
+  std::ostringstream d;
+  d.precision(8);
+  for (int k = 0; k < modes; ++k)
+    for (const auto& r : results) {
+      const auto& s = r.shapes[k];
+      d << "# mode " << k + 1 << " " << r.solver << "\n";
+      for (int i = 0; i <= ring::kStations; ++i) {
+        const int j = i % ring::kStations;
+        const double t = ring::station_angle(j) * M_PI / 180.0;
+        const double rr = radius + a * s.radial[j];
+        d << rr * std::cos(t) - a * s.tangential[j] * std::sin(t) << " "
+          << rr * std::sin(t) + a * s.tangential[j] * std::cos(t) << "\n";
+      }
+      d << "\n\n";
+    }
+  const int cols = modes <= 4 ? 2 : 3, rows = (modes + cols - 1) / cols;
+  std::ostringstream g;
+  g << "set multiplot layout " << rows << "," << cols
+    << " title 'First mode shapes (deformed ring over the undeformed circle, amplitude 15 % of R)'\n"
+    << "set size ratio -1\nunset key\nset xtics format ''\nset ytics format ''\nset parametric\nset trange [0:2*pi]\n"
+    << "set xrange [" << -1.3 * radius << ":" << 1.3 * radius << "]\nset yrange [" << -1.3 * radius << ":"
+    << 1.3 * radius << "]\n";
+  for (int k = 0; k < modes; ++k) {
+    g << "set title " << gp_string("mode " + std::to_string(k + 1) + ": " + sig4(results[0].omega[k]) + " rad/s") << "\n";
+    if (k == 0) g << "set key bottom right font ',9'\n";
+    g << "plot " << radius << "*cos(t), " << radius << "*sin(t) lc rgb '#aaaaaa' dt 2 notitle";
+    for (std::size_t m = 0; m < results.size(); ++m)
+      g << ", datafile index " << k * results.size() + m << " using 1:2 with lines lw " << (m == 0 ? 2.0 : 1.5)
+        << " dt " << (m == 0 ? 1 : 2) << " lc rgb '" << kColors[m % 6] << "' title " << gp_string(results[m].solver);
+    g << "\n";
+    if (k == 0) g << "unset key\n";
+  }
+  g << "unset multiplot\n";
+  render(dir, "mode_shapes", g.str(), d.str(), 1200, 400 * rows);
+}
+
+void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,
+                 const std::string& ylabel, const std::vector<Series>& series, bool logx, bool logy,
+                 bool equal_aspect) {
+  std::ostringstream d, g;
+  d.precision(12);
+  for (const auto& s : series) {
+    d << "# " << s.name << "\n";
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (std::isfinite(s.y[i]) && (!logy || s.y[i] > 0)) d << s.x[i] << " " << s.y[i] << "\n";
+    d << "\n\n";
+  }
+  g << "set title " << gp_string(title) << "\nset xlabel " << gp_string(xlabel) << "\nset ylabel " << gp_string(ylabel)
+    << "\nset grid\nset key outside right\n";
+  if (equal_aspect) g << "set size ratio -1\n";
+  if (logx) g << "set logscale x\n";
+  if (logy) g << "set logscale y\nset format y '10^{%L}'\n";
+  g << "plot ";
+  for (std::size_t i = 0; i < series.size(); ++i)
+    g << (i ? ", " : "") << "datafile index " << i << " using 1:2 with " << (equal_aspect ? "lines lw 2" : "linespoints lw 2 pt 7 ps 0.8") << " lc rgb '"
+      << kColors[i % 6] << "' title " << gp_string(series[i].name);
+  g << "\n";
+  render(dir, name, g.str(), d.str(), 1100, 650);
+}
+
+}  // namespace cmp

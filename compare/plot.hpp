@@ -1,0 +1,33 @@
+// Figures made with gnuplot (run as a program). Each figure NAME is written as
+// NAME.dat (the data), NAME.gp (the script, which a user can restyle and re-run with
+// `gnuplot NAME.gp` in the same folder) and NAME.png (pngcairo), atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ring/results.hpp"
+
+namespace cmp {
+
+/// Writes NAME.dat and NAME.gp into `dir` and runs gnuplot to make NAME.png.
+/// `script` is the plotting part; the terminal and output lines are added here.
+/// Throws std::runtime_error if gnuplot fails (its stderr is in the message).
+void render(const std::string& dir, const std::string& name, const std::string& script, const std::string& data,
+            int width = 1200, int height = 900);
+
+/// The first `count` (<= 9) mode shapes as in the paper's Figure 3: the deformed ring
+/// over the undeformed one, one panel per mode, every model of `results` overlaid.
+void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius,
+                      int count = 9);
+
+/// Lines y[k] against x for several named series, with labelled axes (log-log if asked).
+struct Series {
+  std::string name;
+  std::vector<double> x, y;
+};
+void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,
+                 const std::string& ylabel, const std::vector<Series>& series, bool logx = false, bool logy = false,
+                 bool equal_aspect = false);
+
+}  // namespace cmp

@@ -1,0 +1,161 @@
+#include "compare/report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/response.hpp"
+
+namespace cmp {
+namespace {
+
+nlohmann::json model_json(const ring::ModalResult& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [k, v] : m.model) std::visit([&, k = k](const auto& x) { j[k] = x; }, v);
+  return j;
+}
+
+nlohmann::json modes_json_value(const ring::ModalResult& m, bool with_shapes) {
+  nlohmann::json j;
+  j["solver"] = m.solver;
+  j["model"] = model_json(m);
+  j["rigid_modes"] = m.rigid_modes;
+  j["omega"] = m.omega;
+  j["seconds"] = m.seconds;
+  j["unknowns"] = m.unknowns;
+  j["max_residual"] = m.max_residual;
+  if (m.error_estimate > 0) j["error_estimate"] = m.error_estimate;
+  if (with_shapes) {
+    nlohmann::json shapes = nlohmann::json::array();
+    for (const auto& s : m.shapes) shapes.push_back({{"radial", s.radial}, {"tangential", s.tangential}});
+    j["stations_deg"] = [] {
+      std::vector<double> a;
+      for (int i = 0; i < ring::kStations; ++i) a.push_back(ring::station_angle(i));
+      return a;
+    }();
+    j["shapes"] = shapes;
+  }
+  return j;
+}
+
+}  // namespace
+
+std::string modal_json(const ring::ModalResult& m, bool with_shapes) { return modes_json_value(m, with_shapes).dump(2) + "\n"; }
+
+std::string modal_csv(const ring::ModalResult& m) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "mode,omega_rad_s,frequency_hz\n";
+  for (std::size_t i = 0; i < m.omega.size(); ++i) s << i + 1 << "," << m.omega[i] << "," << m.omega[i] / (2 * M_PI) << "\n";
+  return s.str();
+}
+
+std::string shapes_csv(const ring::ModalResult& m) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "angle_deg";
+  for (std::size_t k = 0; k < m.shapes.size(); ++k) s << ",radial_" << k + 1 << ",tangential_" << k + 1;
+  s << "\n";
+  for (int i = 0; i < ring::kStations; ++i) {
+    s << ring::station_angle(i);
+    for (const auto& sh : m.shapes) s << "," << sh.radial[i] << "," << sh.tangential[i];
+    s << "\n";
+  }
+  return s.str();
+}
+
+
+void write_report(const std::string& dir, const RunReport& r) {
+  const ring::Scene& s = *r.scene;
+  std::ostringstream md;
+  md << "# " << (s.title.empty() ? s.file : s.title) << "\n\n"
+     << "Made by `ringvib run " << s.file << "`. Frequencies are angular (rad/s).\n\n";
+  for (const auto& w : s.warnings) md << "> warning: " << w << "\n\n";
+  std::vector<std::string> files;
+  auto put = [&](const std::string& name, const std::string& content) {
+    write_file(dir + "/" + name, content);
+    files.push_back(name);
+  };
+  if (r.table) {
+    md << "## Natural frequencies\n\n" << format_markdown(*r.table) << "\n";
+    put("table.txt", format_text(*r.table));
+    put("table.md", format_markdown(*r.table));
+    put("table.csv", format_csv(*r.table));
+    put("table.json", format_json(*r.table));
+  }
+  if (!r.gates.empty()) {
+    md << "## Accuracy gates\n\n";
+    for (const auto& g : r.gates) md << "- " << g.line() << "\n";
+    md << "\n";
+  }
+  std::vector<ring::ModalResult> all = r.modal;
+  if (r.reference) all.push_back(*r.reference);
+  if (!all.empty()) {
+    md << "## Models\n\n| solver | model | rigid modes | unknowns | solve time (s) | max eigen-residual |\n"
+       << "|---|---|---:|---:|---:|---:|\n";
+    for (const auto& m : all) {
+      std::ostringstream model;
+      for (const auto& [k, v] : m.model) model << k << "=" << model_value(v) << " ";
+      char row[256];
+      std::snprintf(row, sizeof row, "| %s | %s| %d | %lld | %.3g | %.1e |\n", m.solver.c_str(), model.str().c_str(),
+                    m.rigid_modes, m.unknowns, m.seconds, m.max_residual);
+      md << row;
+      put("modes_" + m.solver + ".json", modal_json(m, true));
+      put("modes_" + m.solver + ".csv", modal_csv(m));
+      if (!m.shapes.empty()) put("shapes_" + m.solver + ".csv", shapes_csv(m));
+    }
+    md << "\n";
+  }
+  if (!r.modal.empty() && !r.modal.front().shapes.empty()) {
+    // The paper's Figure 3: base solver first, the others overlaid.
+    plot_mode_shapes(dir, r.modal, s.ring.radius, 9);
+    files.push_back("mode_shapes.png");
+    md << "## Mode shapes (the paper's Figure 3)\n\n![mode shapes](mode_shapes.png)\n\n";
+  }
+  if (r.table && r.table->columns.size() > 1) {
+    std::vector<Series> diff;
+    for (std::size_t c = 1; c < r.table->columns.size(); ++c) {
+      Series x{r.table->columns[0].solver + " vs " + r.table->columns[c].solver, {}, r.table->columns[c].diff_pct};
+      for (int i = 0; i < r.table->rows; ++i) x.x.push_back(i + 1);
+      diff.push_back(x);
+    }
+    plot_series(dir, "difference", "Difference between solvers, (base - other) / other", "mode number",
+                "difference (%)", diff);
+    files.push_back("difference.png");
+    md << "## Differences\n\n![differences](difference.png)\n\n";
+  }
+  if (r.table && r.table->reference) {
+    std::vector<Series> err;
+    for (const auto& c : r.table->columns) {
+      Series x{c.solver, {}, c.error_pct};
+      for (int i = 0; i < r.table->rows; ++i) x.x.push_back(i + 1);
+      err.push_back(x);
+    }
+    plot_series(dir, "error", "Error against the converged FE reference", "mode number", "error (%)", err);
+    files.push_back("error.png");
+    md << "## Errors against the converged reference\n\n![errors](error.png)\n\n";
+  }
+  if (r.history) {
+    put("response.csv", history_csv(*r.history));
+    plot_response(dir, *r.history, s.ring.radius);
+    files.push_back("response_history.png");
+    md << "## Forced response\n\n![time histories](response_history.png)\n\n";
+    if (!r.history->snapshot_t.empty()) {
+      files.push_back("response_shapes.png");
+      md << "![deformed ring](response_shapes.png)\n\n";
+    }
+  }
+  if (r.statics) {
+    put("static.json", static_json(*r.statics));
+    md << "## Nonlinear statics\n\n```\n" << static_text(*r.statics) << "```\n\n";
+  }
+  md << "## Scene (after --set overrides)\n\n```toml\n" << s.resolved_toml << "\n```\n\n## Files\n\n";
+  for (const auto& f : files) md << "- `" << f << "`\n";
+  md << "\nEach figure NAME.png has NAME.gp (gnuplot script) and NAME.dat (data) beside it.\n";
+  write_file(dir + "/report.md", md.str());
+}
+
+}  // namespace cmp

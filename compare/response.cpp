@@ -1,0 +1,105 @@
+#include "compare/response.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "ring/errors.hpp"
+
+#ifdef RINGVIB_HAVE_DYNAMICS
+#include "multibody/dynamics.hpp"
+#include "multibody/statics.hpp"
+#endif
+
+namespace cmp {
+
+ring::TimeHistory respond(const ring::Scene& scene) {
+#ifdef RINGVIB_HAVE_DYNAMICS
+  return multibody::respond(scene.ring, scene.multibody, *scene.response);
+#else
+  throw ring::InputError(scene.file, "response", "the nonlinear multibody dynamics is not built yet in this version");
+#endif
+}
+
+ring::StaticResult solve_static(const ring::Scene& scene) {
+#ifdef RINGVIB_HAVE_DYNAMICS
+  return multibody::solve_static(scene.ring, scene.multibody, *scene.statics);
+#else
+  throw ring::InputError(scene.file, "static", "the nonlinear multibody statics is not built yet in this version");
+#endif
+}
+
+namespace {
+std::string deg_label(double a) {
+  std::ostringstream s;
+  s << a;
+  return s.str();
+}
+}  // namespace
+
+std::string history_csv(const ring::TimeHistory& h) {
+  std::ostringstream s;
+  s.precision(12);
+  s << "t";
+  for (double a : h.record_angles) s << ",ux_" << deg_label(a) << ",uy_" << deg_label(a);
+  s << ",kinetic,strain,work,energy_error,constraint_residual,newton_iterations\n";
+  for (std::size_t k = 0; k < h.t.size(); ++k) {
+    s << h.t[k];
+    for (std::size_t p = 0; p < h.record_angles.size(); ++p) s << "," << h.ux[p][k] << "," << h.uy[p][k];
+    s << "," << h.kinetic[k] << "," << h.strain[k] << "," << h.work[k] << "," << h.energy_error[k] << ","
+      << h.constraint_residual[k] << "," << h.newton_iterations[k] << "\n";
+  }
+  return s.str();
+}
+
+std::string static_json(const ring::StaticResult& r) {
+  nlohmann::json j;
+  j["displacements"] = nlohmann::json::array();
+  for (const auto& d : r.displacements) j["displacements"].push_back({{"angle", d.angle}, {"ux", d.ux}, {"uy", d.uy}});
+  j["steps"] = r.steps;
+  j["newton_iterations"] = r.newton_iterations;
+  return j.dump(2) + "\n";
+}
+
+std::string static_text(const ring::StaticResult& r) {
+  std::ostringstream s;
+  s << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n"
+    << "   angle deg        ux m        uy m\n";
+  for (const auto& d : r.displacements) {
+    char line[96];
+    std::snprintf(line, sizeof line, "  %10.4g  %10.4e  %10.4e\n", d.angle, d.ux, d.uy);
+    s << line;
+  }
+  return s.str();
+}
+
+void plot_response(const std::string& dir, const ring::TimeHistory& h, double radius) {
+  std::vector<Series> series;
+  for (std::size_t p = 0; p < h.record_angles.size(); ++p) {
+    series.push_back({"u_x at " + deg_label(h.record_angles[p]) + " deg", h.t, h.ux[p]});
+    series.push_back({"u_y at " + deg_label(h.record_angles[p]) + " deg", h.t, h.uy[p]});
+  }
+  plot_series(dir, "response_history", "Forced response: displacements of the recorded points", "t (s)",
+              "displacement (m)", series);
+  if (h.snapshot_t.empty()) return;
+  // Deformed ring at the snapshots, node positions (the paper's Figure 5 shows one half;
+  // for its symmetric load the other half is the mirror image).
+  std::vector<Series> shapes;
+  for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
+    Series s{"t = " + sig4(h.snapshot_t[k]) + " s", {}, {}};
+    for (std::size_t i = 0; i <= h.snapshot_x[k].size(); ++i) {
+      const std::size_t j = i % h.snapshot_x[k].size();
+      s.x.push_back(h.snapshot_x[k][j]);
+      s.y.push_back(h.snapshot_y[k][j]);
+    }
+    shapes.push_back(s);
+  }
+  plot_series(dir, "response_shapes", "Deformed ring at several instants (node positions)", "x (m)", "y (m)", shapes,
+              false, false, true);
+  (void)radius;
+}
+
+}  // namespace cmp

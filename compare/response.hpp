@@ -1,0 +1,29 @@
+// The forced response and the statics of a scene, and their text/CSV/JSON forms.
+// Both run the multibody chain (the paper's section 5).
+#pragma once
+
+#include <string>
+
+#include "ring/results.hpp"
+#include "ring/scene.hpp"
+
+namespace cmp {
+
+/// Integrates the scene's [response]. Throws ring::InputError if the nonlinear
+/// multibody dynamics is not built, ring::NumericalError on failure.
+ring::TimeHistory respond(const ring::Scene& scene);
+/// Solves the scene's [static].
+ring::StaticResult solve_static(const ring::Scene& scene);
+
+/// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, work,
+/// energy_error, constraint_residual, newton_iterations (issue 7, DESIGN.md).
+std::string history_csv(const ring::TimeHistory& h);
+/// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations"}.
+std::string static_json(const ring::StaticResult& r);
+std::string static_text(const ring::StaticResult& r);
+
+/// Figures of a response: time histories of the recorded points, and the deformed
+/// ring at the snapshot instants (the paper's Figure 5).
+void plot_response(const std::string& dir, const ring::TimeHistory& h, double radius);
+
+}  // namespace cmp

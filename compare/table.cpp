@@ -1,0 +1,256 @@
+#include "compare/table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/output.hpp"
+#include "ring/sampling.hpp"
+
+extern "C" const char ringvib_table1_csv[];  // generated from compare/data/table1.csv
+
+namespace cmp {
+namespace {
+
+bool has_shapes(const ring::ModalResult& r) { return r.shapes.size() >= r.omega.size() && !r.omega.empty(); }
+
+Column pair_column(const ring::ModalResult& base, const ring::ModalResult& other, int rows) {
+  Column c;
+  c.solver = other.solver;
+  const bool by_mac = has_shapes(base) && has_shapes(other);
+  const std::vector<int> p = by_mac ? pair_by_mac(base, other) : std::vector<int>();
+  for (int i = 0; i < rows; ++i) {
+    const int j = by_mac ? p[i] : i;
+    if (j < 0 || j >= static_cast<int>(other.omega.size())) {
+      c.omega.push_back(NAN);
+      c.mode.push_back(0);
+      c.mac.push_back(NAN);
+      continue;
+    }
+    c.omega.push_back(other.omega[j]);
+    c.mode.push_back(j + 1);
+    c.mac.push_back(by_mac ? ring::mac(base.shapes[i], other.shapes[j]) : NAN);
+  }
+  return c;
+}
+
+std::string label(const std::string& solver) {
+  if (solver == "multibody") return "multibody";
+  if (solver == "lumped") return "lumped mass";
+  if (solver == "fem") return "FE";
+  return solver;
+}
+
+/// Rows of cells; the first row is the header.
+std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
+  std::vector<std::vector<std::string>> out;
+  std::vector<std::string> head = {"mode"};
+  for (std::size_t c = 0; c < t.columns.size(); ++c) {
+    head.push_back(label(t.columns[c].solver));
+    if (c > 0) head.push_back("diff %");
+    if (t.reference) head.push_back("error %");
+  }
+  if (t.reference) head.push_back("reference");
+  if (!t.paper.empty())
+    for (const auto& c : t.columns) {
+      head.push_back("paper " + label(c.solver));
+      head.push_back("vs paper %");
+    }
+  out.push_back(head);
+  for (int i = 0; i < t.rows; ++i) {
+    std::vector<std::string> r = {std::to_string(i + 1)};
+    for (std::size_t c = 0; c < t.columns.size(); ++c) {
+      const Column& col = t.columns[c];
+      std::string v = sig4(col.omega[i]);
+      if (with_flags && col.mode[i] != i + 1) v += "*";
+      r.push_back(v);
+      if (c > 0) r.push_back(pct2(col.diff_pct[i]));
+      if (t.reference) r.push_back(pct2(col.error_pct[i]));
+    }
+    if (t.reference) r.push_back(sig4(t.reference->omega[i]));
+    if (!t.paper.empty())
+      for (const auto& col : t.columns) {
+        const auto p = i < static_cast<int>(t.paper.size()) ? paper_value(t.paper[i], col.solver) : std::nullopt;
+        r.push_back(p ? sig4(*p) : "");
+        r.push_back(p ? pct2((col.omega[i] - *p) / *p * 100.0) : "");
+      }
+    out.push_back(r);
+  }
+  return out;
+}
+
+bool any_reordered(const Table& t) {
+  for (const auto& c : t.columns)
+    for (int i = 0; i < t.rows; ++i)
+      if (c.mode[i] != i + 1) return true;
+  return false;
+}
+
+std::string footnotes(const Table& t) {
+  std::ostringstream s;
+  s << "rad/s. diff % = (" << label(t.columns[0].solver) << " - other) / other * 100 (the paper's definition)";
+  if (t.reference) s << "; error % = (value - reference) / reference * 100, reference = converged FE";
+  s << ".\n";
+  if (any_reordered(t)) s << "* paired by MAC with a mode of another number in that solver's own order.\n";
+  if (!t.paper.empty()) s << "paper = Yin & Wang Table 1 (corrected values, README \"The paper\"); vs paper % = (computed - paper) / paper * 100.\n";
+  double worst = 1.0;
+  for (const auto& c : t.columns)
+    for (double m : c.mac)
+      if (std::isfinite(m)) worst = std::min(worst, m);
+  s << "Lowest MAC of any paired mode: " << sig4(worst) << ".\n";
+  return s.str();
+}
+
+}  // namespace
+
+std::vector<int> pair_by_mac(const ring::ModalResult& base, const ring::ModalResult& other) {
+  const int nb = static_cast<int>(base.omega.size()), no = static_cast<int>(other.omega.size());
+  struct Pair { double mac; int i, j; };
+  std::vector<Pair> pairs;
+  for (int i = 0; i < nb; ++i)
+    for (int j = 0; j < no; ++j) pairs.push_back({ring::mac(base.shapes[i], other.shapes[j]), i, j});
+  // Strongest first; ties broken by closeness in mode number, so that degenerate
+  // pairs (free ring) keep their order.
+  std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
+    if (std::abs(a.mac - b.mac) > 1e-6) return a.mac > b.mac;
+    return std::abs(a.i - a.j) < std::abs(b.i - b.j);
+  });
+  std::vector<int> of_base(nb, -1);
+  std::vector<bool> used(no, false);
+  for (const auto& p : pairs) {
+    if (of_base[p.i] >= 0 || used[p.j]) continue;
+    of_base[p.i] = p.j;
+    used[p.j] = true;
+  }
+  return of_base;
+}
+
+Table build_table(const std::string& title, const std::vector<ring::ModalResult>& results,
+                  const ring::ModalResult* reference, int rows) {
+  Table t;
+  t.title = title;
+  t.rows = rows;
+  const ring::ModalResult& base = results.front();
+  for (const auto& r : results) t.columns.push_back(pair_column(base, r, rows));
+  if (reference) t.reference = pair_column(base, *reference, rows);
+  const auto& b = t.columns.front().omega;
+  for (std::size_t c = 1; c < t.columns.size(); ++c)
+    for (int i = 0; i < rows; ++i) t.columns[c].diff_pct.push_back((b[i] - t.columns[c].omega[i]) / t.columns[c].omega[i] * 100.0);
+  if (reference)
+    for (auto& c : t.columns)
+      for (int i = 0; i < rows; ++i) c.error_pct.push_back((c.omega[i] - t.reference->omega[i]) / t.reference->omega[i] * 100.0);
+  return t;
+}
+
+std::optional<double> paper_value(const ring::PaperRow& row, const std::string& solver) {
+  if (solver == "multibody") return row.mb_corrected;
+  if (solver == "lumped") return row.lm_corrected;
+  if (solver == "fem") return row.fe_corrected;
+  return std::nullopt;
+}
+
+std::vector<ring::PaperRow> paper_table() { return ring::parse_paper_table(ringvib_table1_csv, "compare/data/table1.csv"); }
+
+std::string format_text(const Table& t) {
+  const auto c = cells(t, true);
+  std::vector<std::size_t> w(c[0].size(), 0);
+  for (const auto& r : c)
+    for (std::size_t k = 0; k < r.size(); ++k) w[k] = std::max(w[k], r[k].size());
+  std::ostringstream s;
+  if (!t.title.empty()) s << t.title << "\n\n";
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    for (std::size_t k = 0; k < c[i].size(); ++k)
+      s << (k ? "  " : "") << std::string(w[k] - c[i][k].size(), ' ') << c[i][k];
+    s << "\n";
+    if (i == 0) {
+      std::size_t total = 0;
+      for (std::size_t k = 0; k < w.size(); ++k) total += w[k] + (k ? 2 : 0);
+      s << std::string(total, '-') << "\n";
+    }
+  }
+  s << "\n" << footnotes(t);
+  return s.str();
+}
+
+std::string format_markdown(const Table& t) {
+  const auto c = cells(t, true);
+  std::ostringstream s;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    s << "|";
+    for (const auto& x : c[i]) s << " " << x << " |";
+    s << "\n";
+    if (i == 0) {
+      s << "|";
+      for (std::size_t k = 0; k < c[0].size(); ++k) s << "---:|";
+      s << "\n";
+    }
+  }
+  s << "\n" << footnotes(t);
+  return s.str();
+}
+
+std::string format_csv(const Table& t) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "mode";
+  for (std::size_t c = 0; c < t.columns.size(); ++c) {
+    const auto& n = t.columns[c].solver;
+    s << "," << n << "," << n << "_mode," << n << "_mac";
+    if (c > 0) s << "," << n << "_diff_pct";
+    if (t.reference) s << "," << n << "_error_pct";
+  }
+  if (t.reference) s << ",reference";
+  if (!t.paper.empty())
+    for (const auto& c : t.columns) s << ",paper_" << c.solver << "," << c.solver << "_vs_paper_pct";
+  s << "\n";
+  for (int i = 0; i < t.rows; ++i) {
+    s << i + 1;
+    for (std::size_t c = 0; c < t.columns.size(); ++c) {
+      const Column& col = t.columns[c];
+      s << "," << col.omega[i] << "," << col.mode[i] << "," << col.mac[i];
+      if (c > 0) s << "," << col.diff_pct[i];
+      if (t.reference) s << "," << col.error_pct[i];
+    }
+    if (t.reference) s << "," << t.reference->omega[i];
+    if (!t.paper.empty())
+      for (const auto& col : t.columns) {
+        const auto p = i < static_cast<int>(t.paper.size()) ? paper_value(t.paper[i], col.solver) : std::nullopt;
+        if (p) s << "," << *p << "," << (col.omega[i] - *p) / *p * 100.0;
+        else s << ",,";
+      }
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::string format_json(const Table& t) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < t.rows; ++i) {
+    nlohmann::json r;
+    r["mode"] = i + 1;
+    for (std::size_t c = 0; c < t.columns.size(); ++c) {
+      const Column& col = t.columns[c];
+      r[col.solver] = col.omega[i];
+      r[col.solver + "_mode"] = col.mode[i];
+      if (std::isfinite(col.mac[i])) r[col.solver + "_mac"] = col.mac[i];
+      if (c > 0) r[col.solver + "_diff_pct"] = col.diff_pct[i];
+      if (t.reference) r[col.solver + "_error_pct"] = col.error_pct[i];
+      if (!t.paper.empty() && i < static_cast<int>(t.paper.size()))
+        if (auto p = paper_value(t.paper[i], col.solver)) {
+          r["paper_" + col.solver] = *p;
+          r[col.solver + "_vs_paper_pct"] = (col.omega[i] - *p) / *p * 100.0;
+        }
+    }
+    if (t.reference) r["reference"] = t.reference->omega[i];
+    rows.push_back(r);
+  }
+  nlohmann::json j;
+  j["title"] = t.title;
+  j["base"] = t.columns.front().solver;
+  j["rows"] = rows;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace cmp

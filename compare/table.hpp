@@ -1,0 +1,56 @@
+// The paper's three-way table, regenerated: a base column, each other solver with its
+// difference (base - other) / other * 100 (the paper's definition), and optionally the
+// converged FE reference with every column's error (x - ref) / ref * 100.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ring/paper_table.hpp"
+#include "ring/results.hpp"
+#include "ring/scene.hpp"
+
+namespace cmp {
+
+/// One solver's column, its modes paired with the base solver's rows.
+struct Column {
+  std::string solver;
+  std::vector<double> omega;      ///< [row], rad/s (the paired mode of this solver)
+  std::vector<int> mode;          ///< [row], 1-based mode number in this solver's own order
+  std::vector<double> mac;        ///< [row], MAC with the base mode (1 for the base)
+  std::vector<double> diff_pct;   ///< [row], (base - this) / this * 100 (empty for the base)
+  std::vector<double> error_pct;  ///< [row], (this - reference) / reference * 100 (if a reference)
+};
+
+struct Table {
+  std::string title;
+  int rows = 0;
+  std::vector<Column> columns;              ///< base first
+  std::optional<Column> reference;          ///< paired with the base like any column
+  std::vector<ring::PaperRow> paper;        ///< with --paper: Table 1 as published
+};
+
+/// Pairs the modes of `other` with those of `base` by the modal assurance criterion on the
+/// common stations: each base mode takes the unpaired mode of `other` with the largest MAC,
+/// strongest pairs first (greedy assignment). Returns, per base mode, the index in `other`.
+/// O(k^2 kStations) for k modes.
+std::vector<int> pair_by_mac(const ring::ModalResult& base, const ring::ModalResult& other);
+
+/// Builds the table from computed results (the base first in `results`).
+Table build_table(const std::string& title, const std::vector<ring::ModalResult>& results,
+                  const ring::ModalResult* reference, int rows);
+
+/// Formats: aligned text, Markdown, CSV, JSON (DESIGN.md contract).
+std::string format_text(const Table& t);
+std::string format_markdown(const Table& t);
+std::string format_csv(const Table& t);
+std::string format_json(const Table& t);
+
+/// The paper's published value for a solver column (multibody -> mb_corrected, ...).
+std::optional<double> paper_value(const ring::PaperRow& row, const std::string& solver);
+
+/// Table 1 as shipped in compare/data/table1.csv (embedded in the program).
+std::vector<ring::PaperRow> paper_table();
+
+}  // namespace cmp
