@@ -80,13 +80,18 @@ SpMat inertial_selection(const std::vector<char>& massless) {
 
 // ---------------------------------------------------------------- dense path
 
+/// Dense path (eigen.hpp): the eigenvalues are the squared singular values of
+/// F = D^1/2 B Y L^-T, where Y spans the admissible DOFs (supports and links
+/// eliminated, massless DOFs condensed) and Y^T M Y = L L^T. Small singular values of F
+/// carry absolute error eps ||F||, so a low lambda has relative error eps sqrt(lambda_max /
+/// lambda) instead of the eps lambda_max / lambda of a symmetric eigensolver on Y^T K Y.
 Eigenpairs solve_dense(const Model& m, const Reduction& red, int count) {
   const MatrixXd T = MatrixXd(red.T);
-  const MatrixXd Kt = T.transpose() * MatrixXd(m.K) * T;
+  MatrixXd A = m.D.cwiseSqrt().asDiagonal() * (MatrixXd(m.B) * T);  // strains x Nr
   const MatrixXd Mt = T.transpose() * MatrixXd(m.M) * T;
   const MatrixXd Ct = MatrixXd(m.C) * T;
-  const int Nr = static_cast<int>(Kt.rows());
-  MatrixXd Kd, Md, lift;  // lift: reduced-problem vector -> model DOFs (N x Nd)
+  const int Nr = static_cast<int>(T.cols());
+  MatrixXd Md, lift;  // lift: reduced-problem vector -> model DOFs (N x Nd)
   if (Ct.rows() > 0) {
     Eigen::ColPivHouseholderQR<MatrixXd> qr(Ct.transpose());
     if (qr.rank() != Ct.rows())
@@ -94,97 +99,128 @@ Eigenpairs solve_dense(const Model& m, const Reduction& red, int count) {
                                  std::to_string(qr.rank()) + " of " + std::to_string(Ct.rows()) + ")");
     const MatrixXd Q = qr.householderQ();
     const MatrixXd Z = Q.rightCols(Nr - Ct.rows());
-    Kd = Z.transpose() * Kt * Z;
+    A = A * Z;
     Md = Z.transpose() * Mt * Z;
     lift = T * Z;
   } else if (std::count(red.massless.begin(), red.massless.end(), 1) > 0) {
+    // Static condensation in factored form: min over x_b of |A_a x_a + A_b x_b|^2 gives
+    // x_b = -R_b^-1 Q_b^T A_a x_a and the residual (I - Q_b Q_b^T) A_a x_a.
     std::vector<int> a, b;
     for (int i = 0; i < Nr; ++i) (red.massless[i] ? b : a).push_back(i);
-    const MatrixXd Kaa = Kt(a, a), Kab = Kt(a, b), Kbb = Kt(b, b);
-    Eigen::LLT<MatrixXd> llt(Kbb);
-    if (llt.info() != Eigen::Success) throw ring::NumericalError("lumped: rotation stiffness not positive definite");
-    const MatrixXd G = -llt.solve(Kab.transpose());  // x_b = G x_a
-    Kd = Kaa + Kab * G;
-    Kd = 0.5 * (Kd + Kd.transpose()).eval();
+    const MatrixXd Aa = A(Eigen::all, a), Ab = A(Eigen::all, b);
+    Eigen::HouseholderQR<MatrixXd> qr(Ab);
+    const MatrixXd Qb = qr.householderQ() * MatrixXd::Identity(Ab.rows(), Ab.cols());
+    const MatrixXd Rb = qr.matrixQR().topRows(Ab.cols()).triangularView<Eigen::Upper>();
+    const MatrixXd QtAa = Qb.transpose() * Aa;
+    const MatrixXd G = -Rb.triangularView<Eigen::Upper>().solve(QtAa);  // x_b = G x_a
+    A = Aa - Qb * QtAa;
     Md = Mt(a, a);
     MatrixXd L = MatrixXd::Zero(Nr, a.size());
     for (std::size_t i = 0; i < a.size(); ++i) L(a[i], i) = 1.0;
     for (std::size_t i = 0; i < b.size(); ++i) L.row(b[i]) = G.row(i);
     lift = T * L;
   } else {
-    Kd = Kt;
     Md = Mt;
     lift = T;
   }
-  // Jacobi scaling by diag(Md)^-1/2: translations and rotations (consistent mass) or
-  // the chain's null-space coordinates differ in mass by orders of magnitude, and the
-  // Cholesky-based reduction loses that many digits in the residual without it.
+  // Jacobi scaling by diag(Md)^-1/2 (translations and rotations differ in mass by
+  // orders of magnitude), then the Cholesky factor of the scaled mass.
   const VectorXd dscale = Md.diagonal().cwiseSqrt().cwiseInverse();
-  Kd = dscale.asDiagonal() * Kd * dscale.asDiagonal();
+  A = A * dscale.asDiagonal();
   Md = dscale.asDiagonal() * Md * dscale.asDiagonal();
   lift = lift * dscale.asDiagonal();
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(Kd, Md, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
-  if (es.info() != Eigen::Success)
-    throw ring::NumericalError("lumped: dense eigensolver failed (reduced mass not positive definite?)");
+  Eigen::LLT<MatrixXd> llt(Md);
+  if (llt.info() != Eigen::Success) throw ring::NumericalError("lumped: reduced mass matrix not positive definite");
+  const int Nd = static_cast<int>(Md.rows());
+  if (A.rows() < Nd) A.conservativeResizeLike(MatrixXd::Zero(Nd, Nd));  // zero rows keep the zero modes
+  const MatrixXd F = llt.matrixL().solve(A.transpose()).transpose();     // A L^-T
+  Eigen::BDCSVD<MatrixXd> svd(F, Eigen::ComputeThinV);
+  if (svd.info() != Eigen::Success) throw ring::NumericalError("lumped: dense SVD failed");
   Eigenpairs p;
   p.method = Method::dense;
-  p.unknowns = Kd.rows();
-  const int take = std::min<int>(static_cast<int>(Kd.rows()), count + m.expected_rigid);
-  p.lambda.assign(es.eigenvalues().data(), es.eigenvalues().data() + take);
-  p.X = lift * es.eigenvectors().leftCols(take);
+  p.unknowns = Nd;
+  const int take = std::min(Nd, count + m.expected_rigid);
+  p.X.resize(m.K.rows(), take);
+  for (int c = 0; c < take; ++c) {
+    const int i = Nd - 1 - c;  // singular values come in descending order
+    p.lambda.push_back(svd.singularValues()[i] * svd.singularValues()[i]);
+    const VectorXd w = llt.matrixU().solve(VectorXd(svd.matrixV().col(i)));  // L^-T v
+    const VectorXd x = lift * w;
+    p.X.col(c) = x / std::sqrt(x.dot(m.M * x));
+  }
   return p;
 }
 
 // ---------------------------------------------------------------- sparse path
 
-/// y = (A - sigma B)^-1 x in the inertial DOFs, through the factorized sparse system
-/// described in eigen.hpp. Factor: SparseLU (saddle point) or SimplicialLDLT (SPD).
-template <class Factor>
+/// y = (A - sigma B)^-1 x in the inertial DOFs through the factorized mixed system
+///   [ -sigma Mt   b Bt^T   g Ct^T ] [y]   [E x]
+///   [ b Bt      -b^2 D^-1   0     ] [s] = [ 0 ]      (s = D Bt y / b: scaled stresses)
+///   [ g Ct        0         0     ] [mu]  [ 0 ]
+/// whose Schur complement on y is Kt - sigma Mt restricted to C y = 0. The stiffness
+/// never appears assembled (eigen.hpp, model.hpp). b_i = sqrt(|sigma| m D_i) and g
+/// balance the blocks for pivoting. SparseLU (COLAMD), O(n) fill for the ring's
+/// cyclic-banded pattern.
 class ShiftInvertOp {
  public:
   using Scalar = double;
-  ShiftInvertOp(const SpMat& Kt, const SpMat& Mt, const SpMat& Ct, const SpMat& E)
-      : Kt_(Kt), Mt_(Mt), Ct_(Ct), E_(E), size_(Kt.rows() + Ct.rows()) {}
+  using Factor = Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>;
+  ShiftInvertOp(const SpMat& Bt, const VectorXd& D, const SpMat& Mt, const SpMat& Ct, const SpMat& E,
+                double mass_scale)
+      : Bt_(Bt), D_(D), Mt_(Mt), Ct_(Ct), E_(E), mass_(mass_scale),
+        size_(Mt.rows() + Bt.rows() + Ct.rows()) {}
   Eigen::Index rows() const { return E_.cols(); }
   Eigen::Index cols() const { return E_.cols(); }
 
-  /// Assembles and factorizes [Kt - sigma Mt, Ct^T; Ct, 0]. O(n) for the banded-cyclic
-  /// pattern of the ring under a fill-reducing ordering.
   void set_shift(double sigma) {
-    const SpMat D = Kt_ - sigma * Mt_;
-    const Eigen::Index nr = D.rows(), nc = Ct_.rows();
+    const Eigen::Index nr = Mt_.rows(), ns = Bt_.rows();
+    const VectorXd beta = (std::abs(sigma) * mass_ * D_).cwiseSqrt();
+    double gamma = 0.0;
     Triplets t;
-    t.reserve(D.nonZeros() + 2 * Ct_.nonZeros());
-    for (int j = 0; j < D.outerSize(); ++j)
-      for (SpMat::InnerIterator it(D, j); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+    t.reserve(Mt_.nonZeros() + 2 * Bt_.nonZeros() + ns + 2 * Ct_.nonZeros());
+    for (int j = 0; j < Mt_.outerSize(); ++j)
+      for (SpMat::InnerIterator it(Mt_, j); it; ++it) t.emplace_back(it.row(), it.col(), -sigma * it.value());
+    for (int j = 0; j < Bt_.outerSize(); ++j)
+      for (SpMat::InnerIterator it(Bt_, j); it; ++it) {
+        const double v = beta[it.row()] * it.value();
+        gamma = std::max(gamma, std::abs(v));
+        t.emplace_back(nr + it.row(), it.col(), v);
+        t.emplace_back(it.col(), nr + it.row(), v);
+      }
+    for (Eigen::Index i = 0; i < ns; ++i) t.emplace_back(nr + i, nr + i, -beta[i] * beta[i] / D_[i]);
     for (int j = 0; j < Ct_.outerSize(); ++j)
       for (SpMat::InnerIterator it(Ct_, j); it; ++it) {
-        t.emplace_back(nr + it.row(), it.col(), it.value());
-        t.emplace_back(it.col(), nr + it.row(), it.value());
+        t.emplace_back(nr + ns + it.row(), it.col(), gamma * it.value());
+        t.emplace_back(it.col(), nr + ns + it.row(), gamma * it.value());
       }
-    SpMat A(nr + nc, nr + nc);
+    SpMat A(size_, size_);
     A.setFromTriplets(t.begin(), t.end());
     A.makeCompressed();
     factor_.compute(A);
     if (factor_.info() != Eigen::Success)
-      throw ring::NumericalError("lumped: sparse factorization of K - sigma M failed (sigma = " +
-                                 std::to_string(sigma) + ")");
+      throw ring::NumericalError("lumped: sparse factorization of the shifted system failed (sigma = " +
+                                 std::to_string(sigma) + "): " + factor_.lastErrorMessage());
   }
-  /// Full solution (reduced DOFs, then multipliers) for a right-hand side in the reduced DOFs.
+  /// Reduced-DOF part of the solution for a right-hand side in the reduced DOFs.
   VectorXd solve_reduced(const VectorXd& rhs) const {
     VectorXd b = VectorXd::Zero(size_);
     b.head(rhs.size()) = rhs;
-    return factor_.solve(b).head(rhs.size());
+    const VectorXd z = const_cast<Factor&>(factor_).solve(b);
+    return z.head(rhs.size());
   }
   void perform_op(const double* x_in, double* y_out) const {
     const Eigen::Map<const VectorXd> x(x_in, E_.cols());
     Eigen::Map<VectorXd> y(y_out, E_.cols());
     y = E_.transpose() * solve_reduced(E_ * x);
   }
-  const Factor& factor() const { return factor_; }
+  long long factor_nonzeros() const { return const_cast<Factor&>(factor_).nnzL() + const_cast<Factor&>(factor_).nnzU(); }
+  Eigen::Index size() const { return size_; }
 
  private:
-  const SpMat &Kt_, &Mt_, &Ct_, &E_;
+  const SpMat& Bt_;
+  const VectorXd& D_;
+  const SpMat &Mt_, &Ct_, &E_;
+  double mass_;
   Eigen::Index size_;
   Factor factor_;
 };
@@ -208,20 +244,8 @@ class MassOp {
   double c_;
 };
 
-template <class Factor>
-long long factor_nnz(const Factor& f);
-template <>
-long long factor_nnz(const Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>& f) {
-  return f.nnzL() + f.nnzU();
-}
-template <>
-long long factor_nnz(const Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>& f) {
-  return f.matrixL().nestedExpression().nonZeros() + f.vectorD().size();
-}
-
-template <class Factor>
-Eigenpairs solve_sparse_with(const Model& m, const Reduction& red, int count) {
-  const SpMat Kt = SpMat(red.T.transpose() * m.K * red.T);
+Eigenpairs solve_sparse(const Model& m, const Reduction& red, int count) {
+  const SpMat Bt = SpMat(m.B * red.T);
   const SpMat Mt = SpMat(red.T.transpose() * m.M * red.T);
   const SpMat Ct = SpMat(m.C * red.T);
   const SpMat E = inertial_selection(red.massless);
@@ -237,10 +261,10 @@ Eigenpairs solve_sparse_with(const Model& m, const Reduction& red, int count) {
   const double mass_scale = Maa.diagonal().mean();
   const double sigma = -m.lambda_scale;
 
-  ShiftInvertOp<Factor> op(Kt, Mt, Ct, E);
+  ShiftInvertOp op(Bt, m.D, Mt, Ct, E, mass_scale);
   MassOp bop(Maa, Ca, mass_scale);
-  Spectra::SymGEigsShiftSolver<ShiftInvertOp<Factor>, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
-      op, bop, nev, ncv, sigma);
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv,
+                                                                                         sigma);
   // Start in the admissible space (range of the operator): v0 = op(B r), fixed seed.
   std::mt19937 gen(20261121);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
@@ -262,8 +286,8 @@ Eigenpairs solve_sparse_with(const Model& m, const Reduction& red, int count) {
 
   Eigenpairs p;
   p.method = Method::sparse;
-  p.unknowns = Kt.rows() + Ct.rows();
-  p.factor_nonzeros = factor_nnz(op.factor());
+  p.unknowns = op.size();
+  p.factor_nonzeros = op.factor_nonzeros();
   p.X.resize(m.K.rows(), nev);
   for (int c = 0; c < nev; ++c) {
     const int i = order[c];
@@ -271,9 +295,8 @@ Eigenpairs solve_sparse_with(const Model& m, const Reduction& red, int count) {
     // Lift to all reduced DOFs: (Kt - sigma Mt) x = (lambda - sigma) Mt x (eigen.hpp).
     const VectorXd xa = V.col(i);
     const VectorXd xr = (lam[i] - sigma) * op.solve_reduced(E * (Maa * xa));
-    VectorXd x = red.T * xr;
-    const double norm = std::sqrt(x.dot(m.M * x));
-    p.X.col(c) = x / norm;
+    const VectorXd x = red.T * xr;
+    p.X.col(c) = x / std::sqrt(x.dot(m.M * x));
   }
   return p;
 }
@@ -298,10 +321,8 @@ Eigenpairs solve(const Model& m, int count, Method method) {
   Eigenpairs p;
   if (method == Method::dense)
     p = solve_dense(m, red, count);
-  else if (m.C.rows() > 0)
-    p = solve_sparse_with<Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>>(m, red, count);
   else
-    p = solve_sparse_with<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>>>(m, red, count);
+    p = solve_sparse(m, red, count);
 
   const double threshold = kRigidThreshold * m.lambda_scale;
   p.rigid = 0;
@@ -329,7 +350,10 @@ std::vector<double> residuals(const Model& m, const Eigenpairs& p) {
   std::vector<double> out;
   for (int c = 0; c < p.X.cols(); ++c) {
     const VectorXd x = p.X.col(c);
-    const VectorXd kx = m.K * x, mx = m.M * x;
+    // K x through the factored form (model.hpp): the assembled K would add a roundoff
+    // floor of eps ||K|| ||x|| to a residual that is meant to measure the solver.
+    const VectorXd bx = m.B * x;
+    const VectorXd kx = m.B.transpose() * VectorXd(m.D.cwiseProduct(bx)), mx = m.M * x;
     VectorXd r = red.T.transpose() * (kx - p.lambda[c] * mx);
     if (Ct.rows() > 0) r -= Ct.transpose() * cct.solve(Ct * r);
     const double rel = r.norm() / (kx.norm() + std::abs(p.lambda[c]) * mx.norm());

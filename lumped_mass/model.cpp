@@ -95,7 +95,7 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   // Spring at hinge j: theta_j = atan2(a x b, a . b), a = P_j - P_{j-1} (side j-1),
   // b = P_{j+1} - P_j (side j). d theta_j = d phi(b) - d phi(a), and the direction
   // angle phi of a side vector v changes by d phi = (v x dv) / |v|^2 = nu . dv / l.
-  Triplets kt;
+  Triplets kt, bt;
   for (int j = 0; j < n; ++j) {
     const int jm = (j + n - 1) % n, jp = (j + 1) % n;
     // grad theta_j as (node, coefficient vector) pairs; nodes jm, j, jp.
@@ -107,6 +107,10 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
     // - nu_{j-1} . (u_j - u_{j-1}) / l
     g[1].x -= nu[jm].x / l; g[1].y -= nu[jm].y / l;
     g[0].x += nu[jm].x / l; g[0].y += nu[jm].y / l;
+    for (int r = 0; r < 3; ++r) {
+      bt.emplace_back(j, 2 * node[r], g[r].x);
+      bt.emplace_back(j, 2 * node[r] + 1, g[r].y);
+    }
     for (int r = 0; r < 3; ++r)
       for (int s = 0; s < 3; ++s) {
         const double gr[2] = {g[r].x, g[r].y}, gs[2] = {g[s].x, g[s].y};
@@ -116,6 +120,9 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   }
   m.K.resize(N, N);
   m.K.setFromTriplets(kt.begin(), kt.end());
+  m.B.resize(n, N);
+  m.B.setFromTriplets(bt.begin(), bt.end());
+  m.D = Eigen::VectorXd::Constant(n, k);
 
   // Point mass at the midpoint (P_j + P_{j+1}) / 2 of side j: T = m/2 |(u_j + u_{j+1})/2|'^2.
   Triplets mt;
@@ -164,8 +171,23 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   } else {
     for (int i : {0, 1, 3, 4}) ml(i, i) = rA * l / 2.0;  // isotropic, so rotation-invariant
   }
-  Triplets kt, mt;
+  // Strain rows in local DOFs: axial (u2 - u1)/l; curvature v'' of the Hermite cubic at
+  // the Gauss points, with N1'' = -6/l^2 + 12x/l^3, N2'' = -4/l + 6x/l^2,
+  // N3'' = 6/l^2 - 12x/l^3, N4'' = -2/l + 6x/l^2 on (v1, th1, v2, th2).
+  Eigen::Matrix<double, 3, 6> bl = Eigen::Matrix<double, 3, 6>::Zero();
+  bl(0, 0) = -1.0 / l;
+  bl(0, 3) = 1.0 / l;
+  for (int g = 0; g < 2; ++g) {
+    const double x = 0.5 * l * (1.0 + (g == 0 ? -1.0 : 1.0) / std::sqrt(3.0));
+    bl(1 + g, 1) = -6.0 / (l * l) + 12.0 * x / (l * l * l);
+    bl(1 + g, 2) = -4.0 / l + 6.0 * x / (l * l);
+    bl(1 + g, 4) = 6.0 / (l * l) - 12.0 * x / (l * l * l);
+    bl(1 + g, 5) = -2.0 / l + 6.0 * x / (l * l);
+  }
+  m.D.resize(3 * n);
+  Triplets kt, mt, bt;
   for (int j = 0; j < n; ++j) {
+    m.D.segment(3 * j, 3) << EA * l, EI * l / 2.0, EI * l / 2.0;
     const int a = j, b = (j + 1) % n;
     const double dx = p[b].x - p[a].x, dy = p[b].y - p[a].y, len = std::hypot(dx, dy);
     const double c = dx / len, s = dy / len;
@@ -176,7 +198,11 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
       R(o + 2, o + 2) = 1.0;
     }
     const Eigen::Matrix<double, 6, 6> kg = R.transpose() * kl * R, mg = R.transpose() * ml * R;
+    const Eigen::Matrix<double, 3, 6> bg = bl * R;
     const std::array<int, 6> dof{3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2};
+    for (int r = 0; r < 3; ++r)
+      for (int s2 = 0; s2 < 6; ++s2)
+        if (bg(r, s2) != 0.0) bt.emplace_back(3 * j + r, dof[s2], bg(r, s2));
     for (int r = 0; r < 6; ++r)
       for (int s2 = 0; s2 < 6; ++s2) {
         if (kg(r, s2) != 0.0) kt.emplace_back(dof[r], dof[s2], kg(r, s2));
@@ -187,6 +213,8 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   m.K.setFromTriplets(kt.begin(), kt.end());
   m.M.resize(N, N);
   m.M.setFromTriplets(mt.begin(), mt.end());
+  m.B.resize(3 * n, N);
+  m.B.setFromTriplets(bt.begin(), bt.end());
   m.C.resize(0, N);
   m.massless.assign(N, 0);
   if (!consistent)

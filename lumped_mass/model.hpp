@@ -12,6 +12,7 @@
 // in the ring-centred frame, m and rad.
 #pragma once
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <vector>
 
@@ -30,7 +31,17 @@ struct Model {
   double anchor_deg = 0.0;   ///< polar angle of node 0 (the pin, or 0 for a free ring)
   double side = 0.0;         ///< l = 2 pi R / n, m
   double circumradius = 0.0; ///< rho = l / (2 sin(pi / n)), m
-  SpMat K;                   ///< stiffness, N x N (N = dofs_per_node * n), N/m
+  SpMat K;                   ///< stiffness, N x N (N = dofs_per_node * n), N/m; K = B^T diag(D) B
+  /// The stiffness in factored form, strain energy = 1/2 sum_i D_i (B x)_i^2. Rows of B:
+  /// chain: the hinge turning angles theta_j (n rows, rad/m), D_j = EI/l;
+  /// frames: per element j, rows 3j = axial strain (u2 - u1) . t / l, D = EA l, and
+  /// 3j+1, 3j+2 = curvature at the two Gauss points x = l/2 (1 -+ 1/sqrt 3), D = EI l/2
+  /// (two-point Gauss integrates the linear curvature's energy exactly).
+  /// The solvers work with B and D, never with the assembled K: K's entries are of
+  /// order EI/l^3 while a smooth mode's K x is of order EI/R^4 |x|, so rounding K costs
+  /// eps (R/l)^4 relative accuracy in the low eigenvalues; through B it costs eps (R/l)^2.
+  SpMat B;
+  Eigen::VectorXd D;
   SpMat M;                   ///< mass, N x N, kg (singular for the chain, and the
                              ///< lumped frame's rotation rows are zero)
   SpMat C;                   ///< internal constraints: chain link lengths (n x N, rows

@@ -1,0 +1,185 @@
+// The lumped-mass solver's own guarantees: eigen-residuals and mass-orthonormality
+// (computed here with the assembled K, M, C, S, not with the solver's factored form),
+// dense and sparse paths agreeing, the two derivations of the frame stiffness agreeing,
+// rigid modes counted, invalid input rejected.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdio>
+
+#include "lumped_mass/modes.hpp"
+#include "ring/sampling.hpp"
+#include "common.hpp"
+#include "tests/support/close.hpp"
+
+namespace {
+
+using lumptest::kChain;
+using lumptest::kConsistent;
+using lumptest::kFrame;
+using ring::LumpedOptions;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+ring::RingSpec with_supports(const std::string& s) {
+  ring::RingSpec spec = lumptest::paper_ring();
+  if (s != "free") spec.supports.pin = 180.0;
+  if (s == "roller") spec.supports.roller = 0.0;
+  return spec;
+}
+
+std::string name(LumpedOptions::Variant v) {
+  return v == kChain ? "chain" : v == kFrame ? "frame" : "frame_consistent";
+}
+
+struct Case {
+  LumpedOptions::Variant variant;
+  const char* supports;
+  int n;
+};
+
+class LumpedSolver : public ::testing::TestWithParam<Case> {};
+
+// Normwise backward error of each pair, eta = ||P (K x - lambda M x)|| /
+// ((||K||_1 + lambda ||M||_1) ||x||) (Higham & Tisseur's backward error for the pencil,
+// restricted to the admissible space by the orthogonal projector P onto null([C; S])),
+// and ||X^T M X - I||_max. Both below 1e-10 (the bound): the dense and sparse
+// paths are backward stable, so eta is a few eps; orthonormality is limited by the
+// eigenvectors' rounding relative to the gaps (1e-12 measured for the free ring's
+// exact double eigenvalues, whose basis Lanczos orthogonalizes explicitly).
+TEST_P(LumpedSolver, ResidualsAndMassOrthonormality) {
+  const Case c = GetParam();
+  const ring::RingSpec spec = with_supports(c.supports);
+  const lumped::Model m = lumped::assemble(spec, lumptest::options(c.n, c.variant));
+  for (lumped::Method method : {lumped::Method::dense, lumped::Method::sparse}) {
+    const lumped::Eigenpairs p = lumped::solve(m, 12, method);
+    ASSERT_EQ(p.rigid, spec.supports.rigid_modes());
+    const MatrixXd K(m.K), M(m.M);
+    MatrixXd CS(m.C.rows() + m.S.rows(), m.K.cols());
+    CS << MatrixXd(m.C), MatrixXd(m.S);
+    // Orthonormal basis of the constraint rows' span: P = I - Q Q^T.
+    const MatrixXd Q = Eigen::HouseholderQR<MatrixXd>(CS.transpose()).householderQ() *
+                       MatrixXd::Identity(CS.cols(), CS.rows());
+    const double knorm = K.cwiseAbs().colwise().sum().maxCoeff(), mnorm = M.cwiseAbs().colwise().sum().maxCoeff();
+    double worst_eta = 0.0, worst_drift = 0.0;
+    for (int i = 0; i < p.X.cols(); ++i) {
+      const VectorXd x = p.X.col(i);
+      VectorXd r = K * x - p.lambda[i] * (M * x);
+      r -= Q * (Q.transpose() * r);
+      worst_eta = std::max(worst_eta, r.norm() / ((knorm + std::abs(p.lambda[i]) * mnorm) * x.norm()));
+      worst_drift = std::max(worst_drift, (CS * x).norm() / x.norm());
+    }
+    const MatrixXd G = p.X.transpose() * M * p.X - MatrixXd::Identity(p.X.cols(), p.X.cols());
+    std::printf("[lumped %s %s n=%d %s] backward error %.2e, constraint drift %.2e, |X^T M X - I| %.2e, "
+                "solver max_residual %.2e\n",
+                name(c.variant).c_str(), c.supports, c.n, method == lumped::Method::dense ? "dense" : "sparse",
+                worst_eta, worst_drift, G.cwiseAbs().maxCoeff(), p.max_residual);
+    EXPECT_LT(worst_eta, 1e-10);
+    EXPECT_LT(worst_drift, 1e-10);  // constraints hold to rounding
+    EXPECT_LT(G.cwiseAbs().maxCoeff(), 1e-10);
+  }
+}
+
+// Dense (SVD of the factored stiffness) and sparse (shift-invert Lanczos on the mixed
+// system) share only the model. 1e-10 relative: both are accurate to eps (R/l)^2 x a
+// few (eigen.hpp), 1e-12 at n = 160; the rigid counts must match the supports.
+TEST_P(LumpedSolver, DenseAndSparseAgree) {
+  const Case c = GetParam();
+  const ring::RingSpec spec = with_supports(c.supports);
+  const LumpedOptions o = lumptest::options(c.n, c.variant);
+  const ring::ModalResult d = lumped::compute_modes(spec, o, 12, lumped::Method::dense);
+  const ring::ModalResult s = lumped::compute_modes(spec, o, 12, lumped::Method::sparse);
+  EXPECT_EQ(std::get<std::string>(d.model.at("method")), "dense");
+  EXPECT_EQ(std::get<std::string>(s.model.at("method")), "sparse");
+  EXPECT_EQ(d.rigid_modes, spec.supports.rigid_modes());
+  EXPECT_EQ(s.rigid_modes, spec.supports.rigid_modes());
+  ASSERT_EQ(d.omega.size(), 12u);
+  ASSERT_EQ(s.omega.size(), 12u);
+  for (int i = 0; i < 12; ++i) {
+    EXPECT_TRUE(ringtest::IsClose(s.omega[i], d.omega[i], 1e-10)) << "mode " << i + 1;
+    EXPECT_EQ(d.shapes[i].radial.size(), static_cast<std::size_t>(ring::kStations));
+    // Supported rings have simple eigenvalues: the shapes must match too (MAC = cos^2
+    // of the angle between them; 1e-8 allows eigenvector rounding ~1e-10 / gap).
+    if (spec.supports.pin) EXPECT_GT(ring::mac(d.shapes[i], s.shapes[i]), 1.0 - 1e-8) << "mode " << i + 1;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, LumpedSolver,
+    ::testing::Values(Case{kChain, "free", 40}, Case{kChain, "pin", 40}, Case{kChain, "roller", 40},
+                      Case{kFrame, "free", 40}, Case{kFrame, "pin", 40}, Case{kFrame, "roller", 40},
+                      Case{kConsistent, "free", 40}, Case{kConsistent, "pin", 40}, Case{kConsistent, "roller", 40},
+                      Case{kChain, "free", 160}, Case{kChain, "pin", 160}, Case{kFrame, "free", 160},
+                      Case{kFrame, "pin", 160}, Case{kConsistent, "free", 160}, Case{kConsistent, "pin", 160}),
+    [](const ::testing::TestParamInfo<Case>& i) {
+      return name(i.param.variant) + "_" + i.param.supports + "_n" + std::to_string(i.param.n);
+    });
+
+// The frame stiffness two ways: the textbook element matrices (EA/l, EI/l^3 [12 6l ...])
+// assembled in K, and B^T diag(D) B from the Gauss-point curvatures the solvers use.
+// Equal to rounding (1e-12 of the largest entry): two-point Gauss is exact for the
+// linear curvature's quadratic energy.
+TEST(LumpedModel, FactoredStiffnessEqualsAssembled) {
+  for (auto v : {kChain, kFrame, kConsistent}) {
+    const lumped::Model m = lumped::assemble(lumptest::pinned_ring(), lumptest::options(12, v));
+    const MatrixXd K(m.K), F = MatrixXd(m.B).transpose() * m.D.asDiagonal() * MatrixXd(m.B);
+    EXPECT_LT((K - F).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff()) << name(v);
+  }
+}
+
+// Masses: every variant carries the ring's mass 2 pi R rho A in each direction
+// (rigid translation x: x^T M x = total mass). Oracle: the ring's mass.
+TEST(LumpedModel, TranslationCarriesRingMass) {
+  const ring::RingSpec spec = lumptest::paper_ring();
+  const double total = 2.0 * M_PI * spec.radius * spec.rhoA();
+  for (auto v : {kChain, kFrame, kConsistent}) {
+    const lumped::Model m = lumped::assemble(spec, lumptest::options(24, v));
+    VectorXd x = VectorXd::Zero(m.K.rows());
+    for (int k = 0; k < m.n; ++k) x[m.dofs_per_node * k] = 1.0;
+    EXPECT_TRUE(ringtest::IsClose(x.dot(m.M * x), total, 1e-13)) << name(v);  // rounding of a sum of n terms
+    // ... and rigid motions cost no strain: B x = 0 for a translation.
+    EXPECT_LT((m.B * x).norm(), 1e-12 * (m.B.cwiseAbs() * x).norm()) << name(v);
+  }
+}
+
+TEST(LumpedModel, RejectsWhatCanNeverWork) {
+  ring::RingSpec spec = lumptest::pinned_ring();
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(3, kChain), 1), std::invalid_argument);
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 0), std::invalid_argument);
+  // The chain has n - 3 elastic modes whatever the supports.
+  EXPECT_NO_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 37));
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 38), std::invalid_argument);
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kFrame), 78), std::invalid_argument);
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kConsistent), 118), std::invalid_argument);
+  spec.supports.roller = 181.0;  // not a node of the 40-gon anchored at 180
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 5), std::invalid_argument);
+  spec.supports.roller = 180.0;  // on the pin
+  EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 5), std::invalid_argument);
+  ring::RingSpec bad = lumptest::paper_ring();
+  bad.E = 0.0;
+  EXPECT_THROW(lumped::compute_modes(bad, lumptest::options(40, kFrame), 5), std::invalid_argument);
+}
+
+// The smallest n that works, against a hand derivation: the 4-link chain is a square of
+// side l = pi R / 2 with one mechanism, the rhombus mode (interior angles pi/2 +- delta).
+// Springs: V = 1/2 (4 k) delta^2. Midpoints of a rhombus sit at (+-d1/4, +-d2/4) in the
+// diagonal frame, d1,2 = 2 l cos, sin(alpha/2), so each moves at l delta'/4 about the
+// centre: free ring T = 1/2 (m l^2/4) delta'^2, omega^2 = 16 k / (m l^2) = 16 EI/(rho A l^4).
+// Pinned at a corner, roller at the opposite one: the centre moves at d1'/2 along the
+// diagonal, the midpoints' speeds^2 add up to 3 l^2 delta'^2 / 4, omega^2 = 16 EI/(3 rho A l^4).
+TEST(LumpedModel, SmallestChainIsTheRhombusMode) {
+  ring::RingSpec spec = lumptest::pinned_ring();
+  spec.supports.roller = 0.0;
+  const double l = M_PI * spec.radius / 2.0;
+  const double free_w2 = 16.0 * spec.EI() / (spec.rhoA() * std::pow(l, 4));
+  const ring::ModalResult r = lumped::compute_modes(spec, lumptest::options(4, kChain), 1);
+  EXPECT_EQ(r.rigid_modes, 0);
+  ASSERT_EQ(r.omega.size(), 1u);
+  EXPECT_TRUE(ringtest::IsClose(r.omega[0], std::sqrt(free_w2 / 3.0), 1e-12));  // rounding only
+  const ring::ModalResult f = lumped::compute_modes(lumptest::paper_ring(), lumptest::options(4, kChain), 1);
+  EXPECT_EQ(f.rigid_modes, 3);
+  EXPECT_TRUE(ringtest::IsClose(f.omega[0], std::sqrt(free_w2), 1e-12));
+}
+
+}  // namespace
