@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "compare/output.hpp"
+#include "compare/table.hpp"
 
 namespace cmp {
 namespace {
@@ -66,9 +67,23 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
   const double a = 0.15 * radius;
   std::ostringstream d;
   d.precision(8);
+  // Overlaid models are paired with the base by MAC and turned to the base's sign, so
+  // that the same mode is drawn the same way up whatever each solver's normalization.
+  std::vector<std::vector<int>> pairing;
+  for (const auto& r : results) pairing.push_back(pair_by_mac(results[0], r));
   for (int k = 0; k < modes; ++k)
-    for (const auto& r : results) {
-      const auto& s = r.shapes[k];
+    for (std::size_t m = 0; m < results.size(); ++m) {
+      const auto& r = results[m];
+      const int j = pairing[m][k] >= 0 ? pairing[m][k] : k;
+      ring::ModeShape s = r.shapes[j];
+      double dot = 0.0;
+      for (int i = 0; i < ring::kStations; ++i)
+        dot += s.radial[i] * results[0].shapes[k].radial[i] + s.tangential[i] * results[0].shapes[k].tangential[i];
+      if (dot < 0)
+        for (int i = 0; i < ring::kStations; ++i) {
+          s.radial[i] = -s.radial[i];
+          s.tangential[i] = -s.tangential[i];
+        }
       d << "# mode " << k + 1 << " " << r.solver << "\n";
       for (int i = 0; i <= ring::kStations; ++i) {
         const int j = i % ring::kStations;

@@ -17,6 +17,7 @@ packages=(
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev         # bench/
   gnuplot-nox              # figures (pngcairo terminal)
+  libxml2-utils            # xmllint: the tests check that JUnit output parses
 )
 
 missing=()

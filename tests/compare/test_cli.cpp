@@ -1,0 +1,125 @@
+// The ringvib command as a user meets it: exit codes, messages, nothing written on bad
+// input, the JSON contracts of DESIGN.md, and "skip what a scene doesn't need".
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+
+using ringtest::ringvib;
+using ringtest::source;
+
+namespace {
+
+const std::string kMultibodyOnly = R"(
+title = "multibody only"
+[ring]
+radius = 10.0
+E = 2.1e11
+rho = 7.8e3
+section = { shape = "circle", diameter = 0.12 }
+[supports]
+pin = 180.0
+[multibody]
+n = 40
+[modes]
+count = 9
+solvers = ["multibody"]
+)";
+
+TEST(Cli, HelpListsSubcommands) {
+  const auto r = ringvib("--help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* sub : {"run", "table", "modes", "respond", "static", "converge"})
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+  EXPECT_EQ(ringvib("--version").code, 0);
+  EXPECT_EQ(ringvib("modes --help").code, 0);
+}
+
+TEST(Cli, UsageErrorsExit2) {
+  EXPECT_EQ(ringvib("").code, 2);
+  EXPECT_EQ(ringvib("frobnicate").code, 2);
+  EXPECT_EQ(ringvib("modes " + source("scenes/free-ring.toml")).code, 2);  // --solver missing
+  EXPECT_EQ(ringvib("modes " + source("scenes/free-ring.toml") + " --solver sap5").code, 2);
+}
+
+// Every bad input: exit 2, one message naming the file and the key, no output written.
+TEST(Cli, BadScenesExit2AndWriteNothing) {
+  const std::string dir = ringtest::temp_dir();
+  struct Case { std::string from, to, key; };
+  const std::vector<Case> cases = {
+      {"radius = 10.0", "radius = -10.0", "ring.radius"},
+      {"n = 40", "n = 2", "multibody.n"},
+      {"count = 9", "count = 0", "modes.count"},
+      {"[modes]", "[modse]", "modse"},
+      {"solvers = [\"multibody\"]", "solvers = [\"sap5\"]", "modes.solvers"},
+      {"diameter = 0.12", "diameter = \"big\"", "ring.section.diameter"},
+      {"pin = 180.0", "pin = 180.0\nroller = 180.0", "supports.roller"},
+      {"[ring]", "[ring", "line"},
+  };
+  for (const auto& c : cases) {
+    std::string text = kMultibodyOnly;
+    text.replace(text.find(c.from), c.from.size(), c.to);
+    const std::string scene = dir + "/bad.toml";
+    ringtest::write(scene, text);
+    const std::string out = dir + "/out";
+    const auto r = ringvib("run " + scene + " --out " + out + " --junit " + dir + "/j.xml");
+    EXPECT_EQ(r.code, 2) << c.to << "\n" << r.err;
+    EXPECT_NE(r.err.find(scene), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << "message does not name " << c.key << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_NE(system(("test -e " + out).c_str()), 0) << "an output folder was created for " << c.to;
+    EXPECT_NE(system(("test -e " + dir + "/j.xml").c_str()), 0);
+  }
+  const auto missing = ringvib("table " + dir + "/nope.toml");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find(dir + "/nope.toml"), std::string::npos);
+  const auto set = ringvib("modes " + source("scenes/free-ring.toml") + " --solver multibody --set multibody.n=x y");
+  EXPECT_EQ(set.code, 2);
+}
+
+// DESIGN.md: {"solver", "model": {...}, "rigid_modes", "omega": [ascending], "seconds"};
+// modes.count = 9 computes 9 modes.
+TEST(Cli, ModesJsonContract) {
+  const std::string dir = ringtest::temp_dir();
+  ringtest::write(dir + "/mb.toml", kMultibodyOnly);
+  const auto r = ringvib("modes " + dir + "/mb.toml --solver multibody --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["solver"], "multibody");
+  EXPECT_EQ(j["rigid_modes"], 1);  // pinned: rotation about the pin (NOTES.md, check 2)
+  EXPECT_EQ(j["model"]["n"], 40);
+  ASSERT_EQ(j["omega"].size(), 9u);
+  for (std::size_t i = 1; i < 9; ++i) EXPECT_LE(j["omega"][i - 1].get<double>(), j["omega"][i].get<double>());
+  EXPECT_GE(j["seconds"].get<double>(), 0.0);
+  const auto k = nlohmann::json::parse(ringvib("modes " + dir + "/mb.toml --solver multibody --json --count 3").out);
+  EXPECT_EQ(k["omega"].size(), 3u);
+}
+
+// A multibody-only scene never loads the FE module: with the module path pointing at
+// nothing it still succeeds, while a scene that needs FE then fails with exit 2.
+TEST(Cli, MultibodyOnlySceneNeverLoadsFe) {
+  const std::string dir = ringtest::temp_dir();
+  ringtest::write(dir + "/mb.toml", kMultibodyOnly);
+  const std::string no_fe = "RINGVIB_FEM_MODULE=/nonexistent/libringvib_fem.so";
+  const auto ok = ringvib("run " + dir + "/mb.toml --out " + dir + "/out", no_fe);
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  const auto fe = ringvib("modes " + dir + "/mb.toml --solver fem", no_fe);
+  EXPECT_EQ(fe.code, 2);
+  EXPECT_NE(fe.err.find("/nonexistent/libringvib_fem.so"), std::string::npos) << fe.err;
+}
+
+TEST(Cli, RunWritesReportAndFigures) {
+  const std::string dir = ringtest::temp_dir();
+  ringtest::write(dir + "/mb.toml", kMultibodyOnly);
+  const auto r = ringvib("run " + dir + "/mb.toml --out " + dir + "/out --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"report.md", "table.csv", "table.json", "modes_multibody.json", "modes_multibody.csv",
+                        "shapes_multibody.csv", "mode_shapes.png", "mode_shapes.gp", "mode_shapes.dat"})
+    EXPECT_EQ(system(("test -s " + dir + "/out/" + f).c_str()), 0) << f;
+  // No temporary file is left behind.
+  EXPECT_NE(system(("ls " + dir + "/out | grep -q tmp-").c_str()), 0);
+}
+
+}  // namespace

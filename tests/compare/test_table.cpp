@@ -1,0 +1,109 @@
+// The table's arithmetic, MAC pairing and gates, on results constructed by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "compare/gates.hpp"
+#include "compare/output.hpp"
+#include "compare/table.hpp"
+
+namespace {
+
+/// A result whose mode k (1-based) has the radial shape cos((k+1) a), so that different
+/// modes are orthogonal at the stations (MAC 0) and equal modes have MAC 1.
+ring::ModalResult fake(const std::string& solver, const std::vector<double>& omega, const std::vector<int>& wave) {
+  ring::ModalResult r;
+  r.solver = solver;
+  r.omega = omega;
+  for (int w : wave) {
+    ring::ModeShape s;
+    for (int i = 0; i < ring::kStations; ++i) {
+      const double a = ring::station_angle(i) * M_PI / 180.0;
+      s.radial.push_back(std::cos(w * a));
+      s.tangential.push_back(-std::sin(w * a) / w);
+    }
+    r.shapes.push_back(s);
+  }
+  return r;
+}
+
+// Oracle: the paper's definition, difference = (base - other) / other * 100, and error
+// = (x - ref) / ref * 100, evaluated here by hand.
+TEST(Table, DifferencesFollowThePapersDefinition) {
+  const auto base = fake("multibody", {2.0, 4.0}, {2, 3});
+  const auto other = fake("lumped", {2.5, 3.0}, {2, 3});
+  const auto ref = fake("reference", {2.2, 3.5}, {2, 3});
+  const cmp::Table t = cmp::build_table("t", {base, other}, &ref, 2);
+  EXPECT_DOUBLE_EQ(t.columns[1].diff_pct[0], (2.0 - 2.5) / 2.5 * 100.0);
+  EXPECT_DOUBLE_EQ(t.columns[1].diff_pct[1], (4.0 - 3.0) / 3.0 * 100.0);
+  EXPECT_DOUBLE_EQ(t.columns[0].error_pct[1], (4.0 - 3.5) / 3.5 * 100.0);
+  EXPECT_DOUBLE_EQ(t.columns[1].error_pct[0], (2.5 - 2.2) / 2.2 * 100.0);
+}
+
+// Oracle: shapes built with known wave numbers; the other solver lists them in the
+// opposite order, so pairing by order would difference unlike modes.
+TEST(Table, PairsByMacNotByOrder) {
+  const auto base = fake("multibody", {2.0, 2.1}, {2, 3});
+  const auto other = fake("fem", {2.05, 2.02}, {3, 2});
+  const auto p = cmp::pair_by_mac(base, other);
+  EXPECT_EQ(p[0], 1);
+  EXPECT_EQ(p[1], 0);
+  const cmp::Table t = cmp::build_table("t", {base, other}, nullptr, 2);
+  EXPECT_EQ(t.columns[1].omega[0], 2.02);
+  EXPECT_EQ(t.columns[1].mode[0], 2);
+  EXPECT_NEAR(t.columns[1].mac[0], 1.0, 1e-12);
+  EXPECT_NE(cmp::format_text(t).find("2.020*"), std::string::npos) << cmp::format_text(t);
+}
+
+// Oracle: the paper prints 4 significant digits: 2.463, 11.30, 101.5, 232.5.
+TEST(Table, FourSignificantDigitsLikeThePaper) {
+  EXPECT_EQ(cmp::sig4(2.46312), "2.463");
+  EXPECT_EQ(cmp::sig4(11.3), "11.30");
+  EXPECT_EQ(cmp::sig4(101.54), "101.5");
+  EXPECT_EQ(cmp::sig4(9.99996), "10.00");
+  EXPECT_EQ(cmp::sig4(1234.6), "1235");
+  EXPECT_EQ(cmp::pct2(-0.004), "0.00");
+}
+
+// Oracle: a gate bounds |error|: a large negative error must fail (STYLE.md, "avoid").
+TEST(Gates, NegativeErrorsFailToo) {
+  const auto base = fake("multibody", {1.0, 2.0}, {2, 3});
+  const auto ref = fake("reference", {1.0, 2.5}, {2, 3});  // mode 2 is 20 % low
+  const cmp::Table t = cmp::build_table("t", {base}, &ref, 2);
+  ring::Gate g;
+  g.solver = "multibody";
+  g.max_pct = 5.0;
+  g.last_mode = 0;
+  const auto r = cmp::evaluate_gates({g}, t);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_FALSE(r[0].pass);
+  EXPECT_EQ(r[0].worst_mode, 2);
+  EXPECT_DOUBLE_EQ(r[0].worst_pct, 20.0);
+  g.last_mode = 1;
+  EXPECT_TRUE(cmp::evaluate_gates({g}, t)[0].pass);
+  const std::string xml = cmp::junit_xml("a <b> & \"c\"", cmp::evaluate_gates({g}, t));
+  EXPECT_NE(xml.find("a &lt;b&gt; &amp; &quot;c&quot;"), std::string::npos);
+}
+
+TEST(Gates, NanFails) {
+  const auto base = fake("multibody", {NAN}, {2});
+  const auto ref = fake("reference", {1.0}, {2});
+  const cmp::Table t = cmp::build_table("t", {base}, &ref, 1);
+  ring::Gate g;
+  g.solver = "multibody";
+  g.max_pct = 5.0;
+  EXPECT_FALSE(cmp::evaluate_gates({g}, t)[0].pass);
+}
+
+// Oracle: the shipped copy of Table 1 has the paper's 23 modes and the corrections of
+// NOTES.md ("Corrections"): mode 2 MB 3.798, mode 3 FE 8.967, mode 8 MB 35.75.
+TEST(Table, EmbeddedPaperTable) {
+  const auto rows = cmp::paper_table();
+  ASSERT_EQ(rows.size(), 23u);
+  EXPECT_EQ(*rows[1].mb_corrected, 3.798);
+  EXPECT_EQ(*rows[2].fe_corrected, 8.967);
+  EXPECT_EQ(*rows[7].mb_corrected, 35.75);
+  EXPECT_FALSE(rows[22].lm_corrected.has_value());
+}
+
+}  // namespace
