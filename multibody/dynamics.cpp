@@ -1,7 +1,10 @@
 #include "multibody/dynamics.hpp"
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -43,6 +46,7 @@ struct State {
 /// The whole problem, fixed for a run.
 struct Problem {
   const Chain& chain;
+  detail::Inertia inertia;
   DeadLoad load;
   ring::LoadHistory history;
   Matrix K;  ///< spring stiffness (constant)
@@ -55,21 +59,65 @@ struct Problem {
 void initial_acceleration(const Problem& p, State& s) {
   const Chain& ch = p.chain;
   const int n = ch.dofs(), c = ch.constraint_count();
-  const Kinematic k = detail::evaluate(ch, s.q);
-  Vector phi, dphi;
+  const Matrix G = ch.constraint_jacobian(s.q);
+  Vector phi, dphi, xi;
   detail::load_forces(ch, p.load, s.q, phi, dphi);
+  detail::inertia_terms(p.inertia, s.q, s.v, Vector::Zero(n), 0.0, 0.0, xi, nullptr);
   Matrix A = Matrix::Zero(n + c, n + c);
-  A.topLeftCorner(n, n) = k.M;
-  A.topRightCorner(n, c) = k.G.transpose();
-  A.bottomLeftCorner(c, n) = k.G;
+  A.topLeftCorner(n, n) = ch.mass_matrix(s.q);
+  A.topRightCorner(n, c) = G.transpose();
+  A.bottomLeftCorner(c, n) = G;
   Vector b(n + c);
-  b.head(n) = p.history.factor(s.t) * phi - detail::quadratic_velocity(k, s.v) - p.C * s.v -
-              ch.spring_forces(s.q);
+  b.head(n) = p.history.factor(s.t) * phi - xi - p.C * s.v - ch.spring_forces(s.q);
   b.tail(c) = -ch.constraint_jdot_qdot(s.q, s.v);
   const Vector x = A.partialPivLu().solve(b);
   s.qdd = x.head(n);
   s.lambda = x.tail(c);
   s.a = s.qdd;
+}
+
+/// Full residual r (without G^T lambda) and tangent T of the equations of motion at
+/// (q, v, qdd) for load factor f, with dqdd/dq = cm and dv/dq = cv along the
+/// integrator's formulas (without the constraint curvature). O(n^2).
+void residual_and_tangent(const Problem& p, const Vector& q, const Vector& v, const Vector& qdd, double f,
+                          double cm, double cv, Vector& r, Matrix* T) {
+  Vector phi, dphi;
+  detail::load_forces(p.chain, p.load, q, phi, dphi);
+  if (T) *T = p.K;
+  detail::inertia_terms(p.inertia, q, v, qdd, cm, cv, r, T);
+  r += p.chain.spring_forces(q) - f * phi;
+  if (p.damped) r += p.C * v;
+  if (!T) return;
+  if (p.damped) *T += cv * p.C;
+  T->diagonal() -= f * dphi;
+}
+
+/// Adds the constraint curvature sum_i lambda_i Hess g_i (diagonal) to T. O(n).
+void add_constraint_curvature(const detail::Kinematic& k, const Vector& lambda, Matrix& T) {
+  T.diagonal() += k.hess_g.transpose() * lambda;
+}
+
+/// Solves the scaled saddle-point system [T G^T; G 0] [dq; dl] = [-r; -g]: rows of g and
+/// columns of lambda multiplied by s = max|T_jj| / l so that both blocks have the size of T
+/// (Bottasso, Bauchau & Cardona 2007). Returns false on a non-finite result. O((n+c)^3).
+bool solve_saddle(const Matrix& T, const Matrix& G, const Vector& r, const Vector& g, double l,
+                  Vector& dq, Vector& dl) {
+  const Eigen::Index n = T.rows(), c = G.rows();
+  const double sc = T.diagonal().cwiseAbs().maxCoeff() / l;
+  Matrix A(n + c, n + c);
+  A.topLeftCorner(n, n) = T;
+  A.topRightCorner(n, c) = sc * G.transpose();
+  A.bottomLeftCorner(c, n) = sc * G;
+  A.bottomRightCorner(c, c).setZero();
+  Vector rhs(n + c);
+  rhs.head(n) = -r;
+  rhs.tail(c) = -sc * g;
+  if (!rhs.allFinite()) return false;
+  const Vector x = A.partialPivLu().solve(rhs);
+  if (!x.allFinite()) return false;
+  dq = x.head(n);
+  dl = sc * x.tail(c);
+  return true;
 }
 
 /// Result of one attempted step.
@@ -78,9 +126,10 @@ struct StepOutcome {
   int iterations = 0;
 };
 
-/// One step of size h from `s0`; on success writes `s1`. Newton on (q, lambda) with
-/// the analytic tangent of dynamics_model.hpp. O(n^3) per iteration.
-StepOutcome step(const Problem& p, const Coefficients& co, const State& s0, double h,
+/// One index-3 step of size h from `s0` (generalized-alpha, Arnold-Bruls form); on
+/// success writes `s1`. Newton on (q, lambda) with the analytic tangent of
+/// dynamics_model.hpp. O(n^3) per iteration.
+StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s0, double h,
                  const IntegrationControls& ctl, State& s1) {
   const Chain& ch = p.chain;
   const int n = ch.dofs(), c = ch.constraint_count();
@@ -97,41 +146,22 @@ StepOutcome step(const Problem& p, const Coefficients& co, const State& s0, doub
   Vector lambda = s0.lambda;
   Vector v, qdd;
   StepOutcome out;
-  Matrix A(n + c, n + c);
-  Vector rhs(n + c);
-  Vector phi, dphi;
-  Matrix dq, dv;
+  Vector r, dqv, dl;
+  Matrix T;
   for (int it = 1; it <= ctl.max_newton; ++it) {
     out.iterations = it;
     a1 = (q - q_hat) / bh2;
     v = v_hat + h * co.gamma * a1;
     qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
     const Kinematic k = detail::evaluate(ch, q);
-    detail::load_forces(ch, p.load, q, phi, dphi);
-    detail::inertia_tangent(k, v, qdd, dq, dv);
-    Vector r = k.M * qdd + detail::quadratic_velocity(k, v) + ch.spring_forces(q) +
-               k.G.transpose() * lambda - f1 * phi;
-    Matrix T = dqdd_dq * k.M + dv_dq * dv + dq + p.K;
-    if (p.damped) {
-      r += p.C * v;
-      T += dv_dq * p.C;
-    }
-    T.diagonal() += k.hess_g.transpose() * lambda - f1 * dphi;
-    // Scaled saddle-point system: rows of g and columns of lambda multiplied by
-    // s = max|T_jj| / l so that both blocks have the size of T (Bottasso et al. 2007).
-    const double sc = T.diagonal().cwiseAbs().maxCoeff() / ch.l();
-    A.setZero();
-    A.topLeftCorner(n, n) = T;
-    A.topRightCorner(n, c) = sc * k.G.transpose();
-    A.bottomLeftCorner(c, n) = sc * k.G;
-    rhs.head(n) = -r;
-    rhs.tail(c) = -sc * k.g;
-    if (!rhs.allFinite()) return out;
-    const Vector x = A.partialPivLu().solve(rhs);
-    if (!x.allFinite()) return out;
-    q += x.head(n);
-    lambda += sc * x.tail(c);
-    if (x.head(n).cwiseAbs().maxCoeff() <= ctl.tol_q) {
+    residual_and_tangent(p, q, v, qdd, f1, dqdd_dq, dv_dq, r, &T);
+    add_constraint_curvature(k, lambda, T);
+    r += k.G.transpose() * lambda;
+    if (!solve_saddle(T, k.G, r, k.g, ch.l(), dqv, dl)) return out;
+    if (dqv.cwiseAbs().maxCoeff() > 0.5) return out;  // left the basin: cut the step
+    q += dqv;
+    lambda += dl;
+    if (dqv.cwiseAbs().maxCoeff() <= ctl.tol_q) {
       out.converged = true;
       break;
     }
@@ -143,6 +173,126 @@ StepOutcome step(const Problem& p, const Coefficients& co, const State& s0, doub
   s1.v = v_hat + h * co.gamma * a1;
   s1.qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
   s1.a = a1;
+  s1.lambda = lambda;
+  return out;
+}
+
+/// Solves g(q) = 0 for the dependent angles `dep` with the others fixed (Newton on the
+/// c x c block G_y, from the current q). O(n) per iteration. False if it fails.
+bool solve_dependent(const Chain& ch, const std::vector<int>& dep, Vector& q) {
+  const int c = static_cast<int>(dep.size());
+  // |g| is in metres; 1e-15 R sqrt(n) is the round-off of the closure sum of n terms.
+  const double tol = 1e-15 * ch.circumradius() * std::sqrt(double(ch.n()));
+  Eigen::PartialPivLU<Matrix> lu;  // chord method: G_y from the first iteration
+  for (int it = 0; it < 30; ++it) {
+    const Vector g = ch.constraints(q);
+    if (!g.allFinite()) return false;
+    if (g.cwiseAbs().maxCoeff() <= tol) return true;
+    if (it == 0) {
+      const Matrix G = ch.constraint_jacobian(q);
+      Matrix Gy(c, c);
+      for (int i = 0; i < c; ++i) Gy.col(i) = G.col(dep[i]);
+      lu.compute(Gy);
+    }
+    const Vector dy = -lu.solve(g);
+    if (!dy.allFinite()) return false;
+    for (int i = 0; i < c; ++i) q[dep[i]] += dy[i];
+    if (dy.cwiseAbs().maxCoeff() <= 1e-15) return true;
+  }
+  return ch.constraints(q).cwiseAbs().maxCoeff() <= 1e3 * tol;
+}
+
+/// One Newmark step in the paper's reduced form (its eqs. 18-20, coordinate
+/// partitioning): the c dependent angles are the best-conditioned columns of G(q_n)
+/// (column-pivoted QR), the Newmark formulas act on the n - c independent angles z, and
+/// the dependent ones follow from g(q) = 0 at every iteration, their velocities and
+/// accelerations from G v = 0 and G qdd + Gdot v = 0. The equations are D^T r = 0 with
+/// D = [I; -G_y^{-1} G_z]; the Newton matrix is D^T T D with T the full tangent of
+/// step_index3 and lambda = -G_y^{-T} r_y (the terms d D/dz, of order v and h, are left
+/// out, so the convergence is fast-linear rather than quadratic). Constraints hold to
+/// round-off at the positions, velocities and accelerations; no multiplier oscillates,
+/// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
+/// is not: Cardona & Geradin 1989). O(n^3) per iteration.
+StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
+                             const IntegrationControls& ctl, State& s1) {
+  const Chain& ch = p.chain;
+  const int n = ch.dofs(), c = ch.constraint_count(), nz = n - c;
+  std::vector<int> dep(c), ind;
+  {
+    const Eigen::ColPivHouseholderQR<Matrix> qr(ch.constraint_jacobian(s0.q));
+    const auto& perm = qr.colsPermutation().indices();
+    std::vector<bool> is_dep(n, false);
+    for (int i = 0; i < c; ++i) {
+      dep[i] = perm[i];
+      is_dep[perm[i]] = true;
+    }
+    for (int j = 0; j < n; ++j)
+      if (!is_dep[j]) ind.push_back(j);
+  }
+  auto take = [&](const Vector& x, const std::vector<int>& idx) {
+    Vector y(idx.size());
+    for (size_t i = 0; i < idx.size(); ++i) y[i] = x[idx[i]];
+    return y;
+  };
+  const double bh2 = co.beta * h * h;
+  const double dv_dq = co.gamma / (co.beta * h);
+  const Vector z0 = take(s0.q, ind), zd0 = take(s0.v, ind), zdd0 = take(s0.qdd, ind);
+  const Vector z_hat = z0 + h * zd0 + h * h * (0.5 - co.beta) * zdd0;
+  const Vector zd_hat = zd0 + h * (1.0 - co.gamma) * zdd0;
+  const double t1 = s0.t + h;
+  const double f1 = p.history.factor(t1);
+  // Predictor: unchanged acceleration.
+  Vector q = s0.q + h * s0.v + 0.5 * h * h * s0.qdd;
+  Vector z = take(q, ind);
+  Vector v(n), qdd(n), lambda(c), r, dqv, dl;
+  Matrix T, Gy(c, c), Gz(c, nz);
+  StepOutcome out;
+  // Positions, velocities and accelerations of all angles from z (and the constraint
+  // kinematics there); false if the dependent angles cannot be found.
+  auto complete = [&](Kinematic& k) {
+    for (int i = 0; i < nz; ++i) q[ind[i]] = z[i];
+    if (!solve_dependent(ch, dep, q)) return false;
+    k = detail::evaluate(ch, q);
+    for (int i = 0; i < c; ++i) Gy.col(i) = k.G.col(dep[i]);
+    for (int i = 0; i < nz; ++i) Gz.col(i) = k.G.col(ind[i]);
+    const Eigen::PartialPivLU<Matrix> lu(Gy);
+    const Vector zdd = (z - z_hat) / bh2;
+    const Vector zd = zd_hat + h * co.gamma * zdd;
+    for (int i = 0; i < nz; ++i) v[ind[i]] = zd[i];
+    const Vector vy = -lu.solve(Gz * zd);
+    for (int i = 0; i < c; ++i) v[dep[i]] = vy[i];
+    const Vector ay = -lu.solve(Gz * zdd + ch.constraint_jdot_qdot(q, v));
+    for (int i = 0; i < nz; ++i) qdd[ind[i]] = zdd[i];
+    for (int i = 0; i < c; ++i) qdd[dep[i]] = ay[i];
+    return true;
+  };
+  Kinematic k;
+  for (int it = 1; it <= ctl.max_newton; ++it) {
+    out.iterations = it;
+    if (!complete(k)) return out;
+    // Multipliers that make the dependent rows of r + G^T lambda vanish; the rest is the
+    // reduced residual D^T r. The Newton correction restricted to G dq = 0 solves
+    // D^T T D dz = -D^T r, which is the saddle-point system with the full T.
+    residual_and_tangent(p, q, v, qdd, f1, 1.0 / bh2, dv_dq, r, &T);
+    lambda = -Gy.transpose().partialPivLu().solve(take(r, dep));
+    add_constraint_curvature(k, lambda, T);
+    r += k.G.transpose() * lambda;
+    if (!solve_saddle(T, k.G, r, Vector::Zero(c), ch.l(), dqv, dl)) return out;
+    const Vector dz = take(dqv, ind);
+    if (dz.cwiseAbs().maxCoeff() > 0.5) return out;  // left the basin: cut the step
+    z += dz;
+    if (std::getenv("RV_DEBUG")) std::fprintf(stderr, "t=%g it=%d dz=%.3e R=%.3e\n", t1, it, dz.cwiseAbs().maxCoeff(), r.cwiseAbs().maxCoeff());
+    if (dz.cwiseAbs().maxCoeff() <= ctl.tol_q) {
+      out.converged = complete(k);
+      break;
+    }
+  }
+  if (!out.converged) return out;
+  s1.t = t1;
+  s1.q = q;
+  s1.v = v;
+  s1.qdd = qdd;
+  s1.a = qdd;
   s1.lambda = lambda;
   return out;
 }
@@ -175,7 +325,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
 
   const Chain chain(spec, options, response.load.angle);
   const int n = chain.dofs();
-  Problem p{chain, {chain.hinge_at(response.load.angle),
+  Problem p{chain, detail::inertia_constants(chain), {chain.hinge_at(response.load.angle),
                     {response.load.force[0], response.load.force[1]}},
             response.load.history, chain.stiffness_matrix(), Matrix::Zero(n, n), false};
   if (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0) {
@@ -186,6 +336,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
           (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * p.K;
   }
   const Coefficients co = coefficients(response);
+  const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
 
   std::vector<int> rec;
   for (double a : response.record) rec.push_back(chain.hinge_at(a));
@@ -249,7 +400,8 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
       const bool last = remaining <= h * (1.0 + 1e-9);
       const double hs = last ? remaining : h;
       State s1;
-      const StepOutcome o = step(p, co, s, hs, controls, s1);
+      const StepOutcome o = partitioned ? step_partitioned(p, co, s, hs, controls, s1)
+                                        : step_index3(p, co, s, hs, controls, s1);
       iterations += o.iterations;
       if (!o.converged) {
         h = 0.5 * hs;
@@ -278,8 +430,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
         if (cp.distance < depth) {
           std::ostringstream m;
           m << "multibody::respond: the ring touches itself at t = " << describe(s.t)
-            << " s: segments " << cp.i << " and " << cp.j << " are " << cp.distance
-            << " m apart (section depth " << depth
+            << " s: " << detail::describe_contact(cp) << " (section depth " << depth
             << " m); the chain model does not include contact";
           fail(IntegrationFailure::Reason::self_contact, m.str());
         }

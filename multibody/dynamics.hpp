@@ -62,7 +62,7 @@ struct IntegrationControls {
   int max_newton = 12;          ///< Newton iterations before a step is rejected
   double min_dt_factor = 1e-6;  ///< smallest step, as a fraction of the requested dt
   /// Convergence: |increment| <= tol_q (rad) and |g| <= tol_g (m, scaled by the segment)
-  double tol_q = 1e-11;
+  double tol_q = 1e-9;
   int snapshots = 6;            ///< deformed shapes stored, evenly spaced in [0, t_end]
   bool check_contact = true;    ///< test non-adjacent segments for intersection each step
 };

@@ -6,28 +6,46 @@
 
 namespace multibody::detail {
 
-Kinematic evaluate(const Chain& chain, const Vector& q) {
-  const int n = chain.dofs();
-  Kinematic k;
-  k.M = chain.mass_matrix(q);
-  // xi(q, v) = sum_k S(:, k) v_k^2, so a unit velocity of segment k alone gives column k.
-  k.S.resize(n, n);
-  Vector e = Vector::Zero(n);
-  for (int c = 0; c < n; ++c) {
-    e[c] = 1.0;
-    k.S.col(c) = chain.quadratic_velocity(q, e);
-    e[c] = 0.0;
+Inertia inertia_constants(const Chain& chain) {
+  Inertia in;
+  in.C0 = chain.mass_matrix(Vector::Zero(chain.dofs()));
+  in.diag = in.C0.diagonal();
+  in.C0.diagonal().setZero();
+  return in;
+}
+
+void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Vector& qdd,
+                   double cm, double cv, Vector& r, Matrix* T) {
+  const Eigen::Index n = q.size();
+  const Eigen::ArrayXd c = q.array().cos(), s = q.array().sin();
+  r = in.diag.cwiseProduct(qdd);
+  Vector tdiag = cm * in.diag;
+  // Column j: M_ij = C0_ij cos(phi_i - phi_j), S_ij = C0_ij sin(phi_i - phi_j), i != j.
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double cj = c[j], sj = s[j], aj = qdd[j], wj = v[j] * v[j];
+    const double mcoef = cm - wj, scoef = aj + 2.0 * cv * v[j];
+    const double* C0j = in.C0.col(j).data();
+    double* Tj = T ? T->col(j).data() : nullptr;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double Mij = C0j[i] * (c[i] * cj + s[i] * sj);
+      const double Sij = C0j[i] * (s[i] * cj - c[i] * sj);
+      r[i] += Mij * aj + Sij * wj;
+      if (Tj) {
+        Tj[i] += Mij * mcoef + Sij * scoef;
+        tdiag[i] += Mij * wj - Sij * aj;
+      }
+    }
   }
+  if (T) T->diagonal() += tdiag;
+}
+
+Kinematic evaluate(const Chain& chain, const Vector& q) {
+  Kinematic k;
   k.G = chain.constraint_jacobian(q);
   k.g = chain.constraints(q);
-  // Jdot qd = sum_j (d^2 g / d phi_j^2) qd_j^2 when the Hessians are diagonal.
-  const int c_rows = chain.constraint_count();
-  k.hess_g.resize(c_rows, n);
-  for (int c = 0; c < n; ++c) {
-    e[c] = 1.0;
-    k.hess_g.col(c) = chain.constraint_jdot_qdot(q, e);
-    e[c] = 0.0;
-  }
+  // The constraints are sums of sinusoids l (a cos phi_j + b sin phi_j) of single angles,
+  // so d^2 g/d phi_j^2 = -(that term) = its derivative at phi_j + pi/2.
+  k.hess_g = chain.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
   return k;
 }
 
@@ -43,26 +61,6 @@ void load_forces(const Chain& chain, const DeadLoad& load, const Vector& q, Vect
     const Eigen::Vector2d d = p.col((j + 1) % n) - p.col(j);
     dphi_diag[j] = -d.dot(load.force);
   }
-}
-
-Vector quadratic_velocity(const Kinematic& k, const Vector& v) {
-  return k.S * v.cwiseAbs2();
-}
-
-void inertia_tangent(const Kinematic& k, const Vector& v, const Vector& qdd, Matrix& dq,
-                     Matrix& dv) {
-  // M_jk = C_jk cos(phi_j - phi_k) (+ Jr on the diagonal), S_jk = C_jk sin(phi_j - phi_k).
-  // d(M a)_j/dphi_i = -delta_ij (S a)_j + S_ji a_i;
-  // xi_j = sum_{k != j} S_jk v_k^2, d xi_j/dphi_i = delta_ij sum_{k!=j} M_jk v_k^2 - M_ji v_i^2
-  // (i != j), d xi_j / dv_i = 2 S_ji v_i.
-  const Vector v2 = v.cwiseAbs2();
-  Matrix Moff = k.M;
-  Moff.diagonal().setZero();
-  dq = k.S * qdd.asDiagonal();
-  dq.diagonal() -= k.S * qdd;
-  dq.noalias() -= Moff * v2.asDiagonal();
-  dq.diagonal() += Moff * v2;
-  dv = 2.0 * k.S * v.asDiagonal();
 }
 
 ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double reach) {
@@ -105,6 +103,12 @@ ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double r
     }
   }
   return best;
+}
+
+std::string describe_contact(const ClosestPair& cp) {
+  std::string s = "segments " + std::to_string(cp.i) + " and " + std::to_string(cp.j);
+  if (cp.distance == 0.0) return s + " cross (the ring has passed through itself)";
+  return s + " are " + std::to_string(cp.distance) + " m apart";
 }
 
 int contact_gap(const Chain& chain, double depth) {

@@ -7,16 +7,19 @@
 // Tangent pieces (derivations in the comments of dynamics_model.cpp, each one checked
 // against central differences of the Chain's own functions in test_dynamics_model.cpp):
 //   d(M qdd)/dq = S diag(qdd) - diag(S qdd),  S_jk = m l^2 (L^T L)_jk sin(phi_j - phi_k)
-//                                              (column k of S = quadratic_velocity(q, e_k))
+//     with m l^2 (L^T L)_jk (j != k) read once from mass_matrix at phi = 0 (where every
+//     cosine is 1): the structure mu_jk = m l^2 (L^T L)_jk cos(phi_j - phi_k) of chain.hpp
 //   d xi/dq     = diag(M' v^2) - M' diag(v^2),  M' = M with its diagonal removed
 //   d xi/dv     = 2 S diag(v)
-//   d(G^T lambda)/dq = diag_j(lambda . constraint_jdot_qdot(q, e_j))  (g is a sum of
-//                      functions of single angles, so its Hessians are diagonal)
+//   d(G^T lambda)/dq = diag_j(lambda . d^2 g/d phi_j^2): g is a sum of sinusoids
+//     l (a cos phi_j + b sin phi_j) of single angles, so its Hessians are diagonal and
+//     d^2 g / d phi_j^2 = (column j of G) evaluated at phi_j + pi/2
 //   d Phi/dq    = diag_j(-l e(phi_j) . F) for the segments before the loaded hinge.
 #pragma once
 
 #include <Eigen/Dense>
 #include <optional>
+#include <string>
 
 #include "multibody/chain.hpp"
 
@@ -28,28 +31,35 @@ struct DeadLoad {
   Eigen::Vector2d force{0.0, 0.0};
 };
 
-/// Everything that depends on q alone, evaluated once per Newton iteration. O(n^2).
+/// Constant parts of the inertia, read once from the chain's mass matrix at phi = 0
+/// (where every cosine is 1): M_jk = C0_jk cos(phi_j - phi_k) for j != k and
+/// M_jj = diag_j, the structure of chain.hpp (checked in the unit tests). O(n^2).
+struct Inertia {
+  Matrix C0;    ///< m l^2 (L^T L)_jk off the diagonal, zero on it
+  Vector diag;  ///< M_jj, constant
+};
+Inertia inertia_constants(const Chain& chain);
+
+/// Inertia force and its tangent in one pass over the n x n entries (no M or S formed):
+///   r = M(q) qdd + xi(q, v),
+///   T += cm M(q) + cv d xi/dv + d(M qdd + xi)/dq   (if T is given),
+/// with S_jk = C0_jk sin(phi_j - phi_k), xi = S v.^2, d xi/dv = 2 S diag(v),
+/// d(M qdd)/dq = S diag(qdd) - diag(S qdd), d xi/dq = diag(M' v.^2) - M' diag(v.^2)
+/// (M' = M off the diagonal). O(n^2).
+void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Vector& qdd,
+                   double cm, double cv, Vector& r, Matrix* T);
+
+/// Constraint values, Jacobian and Hessian diagonals at q. O(n).
 struct Kinematic {
-  Matrix M;       ///< mass matrix
-  Matrix S;       ///< S_jk = m l^2 (L^T L)_jk sin(phi_j - phi_k) (antisymmetric)
   Matrix G;       ///< constraint Jacobian (c x n)
   Vector g;       ///< constraints, m
   Matrix hess_g;  ///< row i, column j: d^2 g_i / d phi_j^2 (c x n; Hessians are diagonal)
 };
-
-/// Evaluates the Kinematic quantities of a pinned chain at q. O(n^2).
 Kinematic evaluate(const Chain& chain, const Vector& q);
 
 /// Generalized force of the dead load and the diagonal of its derivative dPhi/dq. O(n).
 void load_forces(const Chain& chain, const DeadLoad& load, const Vector& q, Vector& phi,
                  Vector& dphi_diag);
-
-/// Tangent of the inertia terms at (q, v, qdd): d(M qdd + xi)/dq and d xi/dv. O(n^2).
-void inertia_tangent(const Kinematic& k, const Vector& v, const Vector& qdd, Matrix& dq,
-                     Matrix& dv);
-
-/// Quadratic-velocity vector from S: xi = S v.^2. O(n^2).
-Vector quadratic_velocity(const Kinematic& k, const Vector& v);
 
 /// Shortest distance between the centre lines of two non-adjacent segments, over the
 /// pairs whose index gap (cyclic) is at least `min_gap`; returns {distance, i, j}. The
@@ -59,6 +69,8 @@ struct ClosestPair {
   double distance = 0.0;
   int i = -1, j = -1;
 };
+/// "segments i and j cross" or "segments i and j are d m apart".
+std::string describe_contact(const ClosestPair& cp);
 ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& hinges, int min_gap, double reach);
 
 /// Smallest index gap checked for self-contact so that the undeformed chain is clear of

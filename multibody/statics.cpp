@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ring/errors.hpp"
+
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 
@@ -28,13 +30,8 @@ NewtonOutcome newton(const Chain& ch, const detail::DeadLoad& load, const Matrix
   for (int it = 1; it <= 25; ++it) {
     out.iterations = it;
     const Matrix G = ch.constraint_jacobian(q);
-    Matrix hess(c, n);
-    Vector e = Vector::Zero(n);
-    for (int j = 0; j < n; ++j) {
-      e[j] = 1.0;
-      hess.col(j) = ch.constraint_jdot_qdot(q, e);
-      e[j] = 0.0;
-    }
+    // Diagonal constraint Hessians (dynamics_model.hpp): G at every angle + pi/2.
+    const Matrix hess = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
     detail::load_forces(ch, load, q, phi, dphi);
     const Vector r = ch.spring_forces(q) + G.transpose() * lambda - s * phi;
     Matrix T = K;
@@ -113,8 +110,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
     if (cp.distance < spec.section.depth()) {
       std::ostringstream m;
       m << "multibody::solve_static: the ring touches itself at load factor " << s
-        << ": segments " << cp.i << " and " << cp.j << " are " << cp.distance
-        << " m apart (section depth " << spec.section.depth()
+        << ": " << detail::describe_contact(cp) << " (section depth " << spec.section.depth()
         << " m); the chain model does not include contact";
       throw ring::NumericalError(m.str());
     }

@@ -15,6 +15,7 @@
 // ring::NumericalError. Kinematics from multibody/chain.hpp unchanged.
 #pragma once
 
+#include "ring/errors.hpp"
 #include "ring/results.hpp"
 #include "ring/scene.hpp"
 #include "ring/spec.hpp"

@@ -1,0 +1,179 @@
+// Nonlinear statics of the chain (multibody/statics.hpp) against an independent
+// reference: the inextensible elastica ring squeezed along a diameter, by shooting on
+// its ODE (tests/multibody/elastica.hpp), and its linear limit (Roark, Table 9.2 case 1,
+// ring::closed_form::diametral_load).
+//
+// The scene: the paper's ring pinned at A (180 deg), roller at C (0 deg) on the line AC,
+// a force P at C pointing at A. The pin's reaction is -P along AC, so this is the ring
+// squeezed by two opposite forces P along the diameter AC. The shortening of AC is
+// -ux(C); the lengthening of the perpendicular diameter is uy(90) - uy(270).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "multibody/statics.hpp"
+#include "ring/closed_form.hpp"
+#include "ring/errors.hpp"
+#include "tests/multibody/elastica.hpp"
+#include "tests/support/close.hpp"
+
+namespace {
+
+ring::RingSpec paper_ring() {
+  ring::RingSpec s;
+  s.radius = 10.0;
+  s.E = 2.1e11;
+  s.rho = 7.8e3;
+  s.section.shape = ring::Section::Shape::circle;
+  s.section.diameter = 0.12;
+  s.supports.pin = 180.0;
+  s.supports.roller = 0.0;
+  return s;
+}
+
+struct Diametral {
+  double along, across;
+};
+
+/// Chain result for p = P R^2 / EI with n segments, in units of R.
+Diametral chain_diametral(double p, int n, int steps = 20) {
+  const ring::RingSpec spec = paper_ring();
+  ring::MultibodyOptions o;
+  o.n = n;
+  ring::StaticOptions st;
+  st.load.angle = 0.0;
+  const double P = p * spec.EI() / (spec.radius * spec.radius);
+  st.load.force = {-P, 0.0};
+  st.steps = steps;
+  st.record = {0.0, 90.0, 180.0, 270.0};
+  const ring::StaticResult r = multibody::solve_static(spec, o, st);
+  return {-r.displacements[0].ux / spec.radius,
+          (r.displacements[1].uy - r.displacements[3].uy) / spec.radius};
+}
+
+/// Least-squares slope of log(err) against log(n), negated (the observed order in 1/n).
+double fitted_order(const std::vector<int>& n, const std::vector<double>& err) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double m = n.size();
+  for (size_t i = 0; i < n.size(); ++i) {
+    const double x = std::log(n[i]), y = std::log(err[i]);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+class MultibodyStaticsElastica : public ::testing::TestWithParam<double> {};
+
+// Second-order convergence in 1/n to the elastica at P R^2/EI = 0.5, 1, 2, 5. The chain
+// replaces the ring by an inscribed polygon of equal perimeter with concentrated hinge
+// springs: a midpoint-type discretization of the elastica, so its error is O(1/n^2).
+// The reference is converged to ~1e-14 (RK4 with 20000 steps, checked by doubling in
+// development), far below the chain's errors (>1e-5 at n = 320).
+TEST_P(MultibodyStaticsElastica, ConvergesAtSecondOrderInOneOverN) {
+  const double p = GetParam();
+  const elastica::DiametralResult ref = elastica::diametral(p);
+  const std::vector<int> ns{40, 80, 160, 320};
+  std::vector<double> e_along, e_across;
+  for (int n : ns) {
+    const Diametral d = chain_diametral(p, n);
+    e_along.push_back(std::abs(d.along - ref.along));
+    e_across.push_back(std::abs(d.across - ref.across));
+  }
+  const double o_along = fitted_order(ns, e_along), o_across = fitted_order(ns, e_across);
+  RecordProperty("order_along", std::to_string(o_along));
+  RecordProperty("order_across", std::to_string(o_across));
+  RecordProperty("err_along_n40", std::to_string(e_along.front() / ref.along));
+  RecordProperty("err_along_n320", std::to_string(e_along.back() / ref.along));
+  // Expected order 2; 0.2 is the band of the acceptance.
+  EXPECT_NEAR(o_along, 2.0, 0.2) << "along: errors " << e_along[0] << " .. " << e_along[3];
+  EXPECT_NEAR(o_across, 2.0, 0.2) << "across: errors " << e_across[0] << " .. " << e_across[3];
+  // Ceiling on the finest error: 1 % of the n = 40 error times (40/320)^2 margin 2, i.e.
+  // the finest run sits on the asymptote, not just the slope.
+  EXPECT_LT(e_along.back(), 2.0 * e_along.front() / 64.0);
+  EXPECT_LT(e_across.back(), 2.0 * e_across.front() / 64.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Loads, MultibodyStaticsElastica, ::testing::Values(0.5, 1.0, 2.0, 5.0));
+
+// The elastica reference itself, at small load, against the linear closed form (the
+// nonlinear correction is O(p): along/p changes by 0.0176 per unit p, so at p = 1e-4
+// the relative difference is ~1.2e-5; tolerance 3e-5).
+TEST(MultibodyStaticsElastica, ReferenceHasTheLinearLimit) {
+  const double p = 1e-4;
+  const auto ref = elastica::diametral(p);
+  EXPECT_TRUE(ringtest::IsClose(ref.along / p, M_PI / 4 - 2 / M_PI, 3e-5));
+  EXPECT_TRUE(ringtest::IsClose(ref.across / p, 2 / M_PI - 0.5, 3e-5));
+}
+
+// Linear limit of the chain: P = 20 N (p ~ 1e-3) at n = 320 against Roark. The chain's
+// discretization error at n = 320 is ~1e-5 relative (see the convergence test) and the
+// nonlinear correction ~1e-4 relative at this p; tolerance 5e-4.
+TEST(MultibodyStatics, SmallLoadGivesTheLinearRingFormulas) {
+  const ring::RingSpec spec = paper_ring();
+  const double P = 20.0;
+  const auto lin = ring::closed_form::diametral_load(spec, P);
+  const double p = P * spec.radius * spec.radius / spec.EI();
+  const Diametral d = chain_diametral(p, 320, 1);
+  EXPECT_TRUE(ringtest::IsClose(d.along * spec.radius, lin.along, 5e-4));
+  EXPECT_TRUE(ringtest::IsClose(d.across * spec.radius, lin.across, 5e-4));
+}
+
+// The loaded ring is symmetric about AC: the points at 90 and 270 deg mirror each other
+// (oracle: the geometry), and the pin does not move.
+TEST(MultibodyStatics, DeformedShapeIsSymmetricAboutTheLoadLine) {
+  const ring::RingSpec spec = paper_ring();
+  ring::MultibodyOptions o;
+  o.n = 40;
+  ring::StaticOptions st;
+  st.load.angle = 0.0;
+  st.load.force = {-20e3, 0.0};
+  st.record = {0.0, 90.0, 180.0, 270.0};
+  const auto r = multibody::solve_static(spec, o, st);
+  // Round-off of a Newton solution converged to 1e-12 rad on a 10 m ring: 1e-9 m.
+  EXPECT_NEAR(r.displacements[1].ux, r.displacements[3].ux, 1e-9);
+  EXPECT_NEAR(r.displacements[1].uy, -r.displacements[3].uy, 1e-9);
+  EXPECT_NEAR(r.displacements[0].uy, 0.0, 1e-9);  // the roller keeps C on AC
+  EXPECT_NEAR(r.displacements[2].ux, 0.0, 1e-12);  // the pin
+  EXPECT_NEAR(r.displacements[2].uy, 0.0, 1e-12);
+  EXPECT_EQ(r.steps, 20);
+  EXPECT_GT(r.newton_iterations, r.steps);
+  EXPECT_EQ(static_cast<int>(r.node_x.size()), 40);
+}
+
+TEST(MultibodyStatics, RejectsInputsThatCannotWork) {
+  ring::RingSpec spec = paper_ring();
+  ring::MultibodyOptions o;
+  ring::StaticOptions st;
+  st.load.force = {-1e3, 0.0};
+  st.steps = 0;
+  EXPECT_THROW(multibody::solve_static(spec, o, st), std::invalid_argument);
+  st.steps = 5;
+  st.load.angle = 4.0;  // not a hinge of the 40-gon anchored at 180 deg
+  EXPECT_THROW(multibody::solve_static(spec, o, st), std::invalid_argument);
+  st.load.angle = 0.0;
+  spec.supports.roller.reset();
+  EXPECT_THROW(multibody::solve_static(spec, o, st), std::invalid_argument);
+}
+
+// A load far beyond self-contact: the static path must stop with a clear report.
+TEST(MultibodyStatics, SelfContactIsReportedNotSolvedThrough) {
+  const ring::RingSpec spec = paper_ring();
+  ring::MultibodyOptions o;
+  ring::StaticOptions st;
+  st.load.angle = 0.0;
+  // p = 40: the elastica's C would pass through A (shortening > 2R) long before this.
+  st.load.force = {-40.0 * spec.EI() / (spec.radius * spec.radius), 0.0};
+  st.steps = 40;
+  try {
+    multibody::solve_static(spec, o, st);
+    FAIL() << "expected a NumericalError";
+  } catch (const ring::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("touches itself"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
