@@ -5,6 +5,8 @@
 // multibody/). Same n-gon, same masses m = rho A l at the midpoints, same springs EI/l.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <cmath>
 #include <cstdio>
 
 #include "lumped_mass/modes.hpp"
@@ -35,12 +37,23 @@ TEST_P(LumpedVsMultibody, AllElasticModesAgree) {
   const ring::ModalResult lm = lumped::compute_modes(spec, lumptest::options(c.n, lumptest::kChain), count);
   EXPECT_EQ(lm.rigid_modes, mb.rigid_modes);
   ASSERT_EQ(lm.omega.size(), mb.omega.size());
-  double worst = 0.0;
+  double worst23 = 0.0, worst = 0.0;
   for (std::size_t i = 0; i < lm.omega.size(); ++i) {
-    worst = std::max(worst, ringtest::rel(lm.omega[i], mb.omega[i]));
-    // 1e-9: the bound. Both are backward-stable solutions of the same pencil;
-    // the lumped solver's rounding is ~eps (R/l)^2 relative (eigen.hpp), ~1e-13 here.
-    EXPECT_TRUE(ringtest::IsClose(lm.omega[i], mb.omega[i], 1e-9)) << "mode " << i + 1;
+    const double d = ringtest::rel(lm.omega[i], mb.omega[i]);
+    worst = std::max(worst, d);
+    if (i < 23) {
+      worst23 = std::max(worst23, d);
+      // 1e-9: the bound, on the paper's 23 modes. Both solve the same pencil
+      // backward-stably; lumped's rounding is ~eps (R/l)^2 relative (eigen.hpp).
+      EXPECT_TRUE(ringtest::IsClose(lm.omega[i], mb.omega[i], 1e-9)) << "mode " << i + 1;
+    } else {
+      // Above them, multibody/modes.hpp documents that its inverse (shifted) problem loses
+      // the ratio mu_1/mu_k = (omega_k/omega_1)^2 in relative accuracy (measured: 6e-9 at
+      // mode 157 of n = 160; ExtendedPrecisionArbiter below shows the difference is
+      // there). Bound: max(1e-9, eps (omega_k / omega_1)^2).
+      const double r = lm.omega[i] / lm.omega[0];
+      EXPECT_TRUE(ringtest::IsClose(lm.omega[i], mb.omega[i], std::max(1e-9, 2.2e-16 * r * r))) << "mode " << i + 1;
+    }
   }
   double worst_mac = 1.0;
   if (std::string(c.supports) != "free") {
@@ -54,8 +67,9 @@ TEST_P(LumpedVsMultibody, AllElasticModesAgree) {
       EXPECT_GT(m, 1.0 - 1e-8) << "mode " << i + 1;
     }
   }
-  std::printf("[lumped vs multibody] n = %d, %s: %zu modes, max rel. diff %.2e, min MAC %.12f\n", c.n,
-              c.supports, lm.omega.size(), worst, worst_mac);
+  std::printf("[lumped vs multibody] n = %d, %s: %zu modes, max rel. diff modes 1-23 %.2e, all modes %.2e, "
+              "min MAC (modes 1-20) %.12f\n",
+              c.n, c.supports, lm.omega.size(), worst23, worst, worst_mac);
 }
 
 INSTANTIATE_TEST_SUITE_P(Chains, LumpedVsMultibody,
@@ -64,5 +78,31 @@ INSTANTIATE_TEST_SUITE_P(Chains, LumpedVsMultibody,
                          [](const ::testing::TestParamInfo<Case>& i) {
                            return std::string(i.param.supports) + "_n" + std::to_string(i.param.n);
                          });
+
+// Who is right where they differ (high modes at n = 160)? Multibody's own K0, M0 solved
+// by a Cholesky-based generalized eigensolver in long double (64-bit mantissa): an
+// oracle with ~2000x less rounding, exposing which solver carries the error. Lumped
+// must agree with it to 1e-10 for EVERY mode (its dense path: SVD, eps sqrt(kappa)).
+TEST(LumpedVsMultibodyArbiter, ExtendedPrecisionArbiter) {
+  const ring::RingSpec spec = lumptest::pinned_ring();
+  ring::MultibodyOptions mo;
+  mo.n = 160;
+  mo.rotary_inertia = false;
+  const multibody::ModalSolution sol = multibody::solve_modes(spec, mo, 157);
+  const ring::ModalResult lm = lumped::compute_modes(spec, lumptest::options(160, lumptest::kChain), 157);
+  using ML = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+  const ML K = sol.model.K0.cast<long double>(), M = sol.model.M0.cast<long double>();
+  Eigen::GeneralizedSelfAdjointEigenSolver<ML> es(K, M, Eigen::EigenvaluesOnly);
+  ASSERT_EQ(es.info(), Eigen::Success);
+  double worst_lm = 0.0, worst_mb = 0.0;
+  for (int i = 0; i < 157; ++i) {
+    const double w = static_cast<double>(std::sqrt(es.eigenvalues()[i + 1]));  // [0]: the rigid rotation
+    worst_lm = std::max(worst_lm, ringtest::rel(lm.omega[i], w));
+    worst_mb = std::max(worst_mb, ringtest::rel(sol.result.omega[i], w));
+    EXPECT_TRUE(ringtest::IsClose(lm.omega[i], w, 1e-10)) << "mode " << i + 1;
+  }
+  std::printf("[lumped vs long-double multibody pencil] n = 160 pinned: lumped max rel. %.2e, multibody max rel. %.2e\n",
+              worst_lm, worst_mb);
+}
 
 }  // namespace
