@@ -93,6 +93,13 @@ std::string modes_text(const ring::ModalResult& m) {
   return s.str();
 }
 
+/// Writes the history computed before a failure and reports where it went (exit 3).
+[[noreturn]] void keep_partial(const ResponseFailure& e, const std::string& path) {
+  write_file(path, history_csv(e.partial()));
+  const double t = e.partial().t.empty() ? 0.0 : e.partial().t.back();
+  throw ring::NumericalError(std::string(e.what()) + "; the history up to t = " + sig4(t) + " s was written to " + path);
+}
+
 Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
   Table t = build_table(s.title, r.columns, r.reference ? &*r.reference : nullptr, s.modes.count);
   bool gates_need_paper = false;
@@ -154,7 +161,13 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
   }
   if (s.response) {
     p.say("integrating the forced response");
-    rep.history = respond(s);
+    try {
+      rep.history = respond(s);
+    } catch (const ResponseFailure& e) {
+      // Keep what was computed: the partial history goes into the report folder.
+      if (out_dir.empty()) throw;
+      keep_partial(e, out_dir + "/response.csv");
+    }
     std::cout << "response: " << rep.history->t.size() - 1 << " steps to t = " << rep.history->t.back() << " s\n";
   }
   if (s.statics) {
@@ -174,9 +187,14 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
 int cmd_respond(const CommonArgs& a, const std::string& csv) {
   const ring::Scene s = load(a);
   if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
-  const ring::TimeHistory h = respond(s);
-  if (csv.empty()) std::cout << history_csv(h);
-  else write_file(csv, history_csv(h));
+  try {
+    const ring::TimeHistory h = respond(s);
+    if (csv.empty()) std::cout << history_csv(h);
+    else write_file(csv, history_csv(h));
+  } catch (const ResponseFailure& e) {
+    if (csv.empty()) throw;
+    keep_partial(e, csv);
+  }
   return 0;
 }
 

@@ -18,7 +18,11 @@ namespace cmp {
 
 ring::TimeHistory respond(const ring::Scene& scene) {
 #ifdef RINGVIB_HAVE_DYNAMICS
-  return multibody::respond(scene.ring, scene.multibody, *scene.response);
+  try {
+    return multibody::respond(scene.ring, scene.multibody, *scene.response);
+  } catch (const multibody::IntegrationFailure& e) {
+    throw ResponseFailure(e.what(), e.partial());
+  }
 #else
   throw ring::InputError(scene.file, "response", "the nonlinear multibody dynamics is not built yet in this version");
 #endif

@@ -4,13 +4,25 @@
 
 #include <string>
 
+#include "ring/errors.hpp"
 #include "ring/results.hpp"
 #include "ring/scene.hpp"
 
 namespace cmp {
 
+/// A forced response that stopped early: the history up to the last accepted step.
+class ResponseFailure : public ring::NumericalError {
+ public:
+  ResponseFailure(const std::string& what, ring::TimeHistory partial)
+      : ring::NumericalError(what), partial_(std::move(partial)) {}
+  const ring::TimeHistory& partial() const { return partial_; }
+
+ private:
+  ring::TimeHistory partial_;
+};
+
 /// Integrates the scene's [response]. Throws ring::InputError if the nonlinear
-/// multibody dynamics is not built, ring::NumericalError on failure.
+/// multibody dynamics is not built, ResponseFailure when the integration stops early.
 ring::TimeHistory respond(const ring::Scene& scene);
 /// Solves the scene's [static].
 ring::StaticResult solve_static(const ring::Scene& scene);
