@@ -25,7 +25,8 @@ std::string gp_string(const std::string& s) {  // a gnuplot double-quoted string
   return o + "\"";
 }
 
-const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+constexpr int kPalette = 8;
 
 }  // namespace
 
@@ -107,7 +108,7 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
     g << "plot " << radius << "*cos(t), " << radius << "*sin(t) lc rgb '#aaaaaa' dt 2 notitle";
     for (std::size_t m = 0; m < results.size(); ++m)
       g << ", datafile index " << k * results.size() + m << " using 1:2 with lines lw " << (m == 0 ? 2.0 : 1.5)
-        << " dt " << (m == 0 ? 1 : 2) << " lc rgb '" << kColors[m % 6] << "' title " << gp_string(results[m].solver);
+        << " dt " << (m == 0 ? 1 : 2) << " lc rgb '" << kColors[m % kPalette] << "' title " << gp_string(results[m].solver);
     g << "\n";
     if (k == 0) g << "unset key\n";
   }
@@ -132,9 +133,13 @@ void plot_series(const std::string& dir, const std::string& name, const std::str
   if (logx) g << "set logscale x\n";
   if (logy) g << "set logscale y\nset format y '10^{%L}'\n";
   g << "plot ";
-  for (std::size_t i = 0; i < series.size(); ++i)
-    g << (i ? ", " : "") << "datafile index " << i << " using 1:2 with " << (equal_aspect ? "lines lw 2" : "linespoints lw 2 pt 7 ps 0.8") << " lc rgb '"
-      << kColors[i % 6] << "' title " << gp_string(series[i].name);
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const Series& s = series[i];
+    const bool dense = equal_aspect || s.x.size() > 60;  // markers only where they can be told apart
+    g << (i ? ", " : "") << "datafile index " << i << " using 1:2 with "
+      << (dense ? "lines lw 2" : "linespoints lw 2 pt 7 ps 0.8") << " dt " << (s.dashed ? 2 : 1) << " lc rgb '"
+      << kColors[(s.color >= 0 ? s.color : static_cast<int>(i)) % kPalette] << "' title " << gp_string(s.name);
+  }
   g << "\n";
   render(dir, name, g.str(), d.str(), 1100, 650);
 }

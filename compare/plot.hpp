@@ -25,6 +25,8 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
 struct Series {
   std::string name;
   std::vector<double> x, y;
+  int color = -1;       ///< palette index; -1: the series' position
+  bool dashed = false;
 };
 void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,
                  const std::string& ylabel, const std::vector<Series>& series, bool logx = false, bool logy = false,
