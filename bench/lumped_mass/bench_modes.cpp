@@ -1,0 +1,66 @@
+// Time against n (40 .. 1e5) for each lumped-mass variant: the paper's ring pinned at
+// 180 deg, the 9 lowest elastic modes, path chosen automatically (dense for n <= 96,
+// sparse shift-invert Lanczos above). Repetitions give medians:
+//   bench_lumped_modes --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+// Counters: unknowns (order of the factorized system), factor_nnz and factor_nnz/unknown
+// (constant = O(n) memory for the factors), peak_rss_MB of the process so far (monotone;
+// the cases run in increasing n within a variant, so at each n it bounds that case's
+// peak), omega1 (convergence at a glance) and the solver's max_residual.
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <map>
+#include <string>
+
+#include "lumped_mass/modes.hpp"
+
+namespace {
+
+ring::RingSpec paper_ring() {
+  ring::RingSpec s;
+  s.section.diameter = 0.12;
+  s.supports.pin = 180.0;
+  return s;
+}
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // Linux: KB
+}
+
+void BM_LumpedModes(benchmark::State& state) {
+  ring::LumpedOptions o;
+  o.variant = static_cast<ring::LumpedOptions::Variant>(state.range(0));
+  o.n = static_cast<int>(state.range(1));
+  const auto method = static_cast<lumped::Method>(state.range(2));
+  const ring::RingSpec spec = paper_ring();
+  ring::ModalResult r;
+  for (auto _ : state) {
+    r = lumped::compute_modes(spec, o, 9, method);
+    benchmark::DoNotOptimize(r.omega.data());
+  }
+  state.counters["unknowns"] = static_cast<double>(r.unknowns);
+  const auto it = r.model.find("factor_nonzeros");
+  if (it != r.model.end()) {
+    const double nnz = static_cast<double>(std::get<long long>(it->second));
+    state.counters["factor_nnz"] = nnz;
+    state.counters["nnz_per_unknown"] = nnz / static_cast<double>(r.unknowns);
+  }
+  state.counters["peak_rss_MB"] = peak_rss_mb();
+  state.counters["omega1"] = r.omega[0];
+  state.counters["max_residual"] = r.max_residual;
+  state.SetLabel(ring::to_string(o.variant) + (std::get<std::string>(r.model.at("method")) == "dense" ? " dense" : " sparse"));
+}
+
+void Sizes(benchmark::internal::Benchmark* b) {
+  for (int v = 0; v < 3; ++v) {
+    b->Args({v, 40, static_cast<int>(lumped::Method::dense)});
+    b->Args({v, 40, static_cast<int>(lumped::Method::sparse)});
+    for (int n : {160, 640, 2560, 10240, 40960, 100000}) b->Args({v, n, static_cast<int>(lumped::Method::automatic)});
+  }
+}
+
+BENCHMARK(BM_LumpedModes)->Apply(Sizes)->ArgNames({"variant", "n", "method"})->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
