@@ -1,0 +1,57 @@
+// Time of the 23 lowest modes of the paper's ring (pinned, rotary inertia on) on the
+// dense path, n = 40, 160, 640, 2000; phases timed separately (assembly + reduction,
+// then the whole compute_modes). Run, Release build:
+//   build/bin/bench_multibody_modes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include "multibody/modes.hpp"
+
+namespace {
+
+ring::RingSpec paper_ring() {
+  ring::RingSpec s;  // Table 1: R = 10 m, d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3
+  s.radius = 10.0;
+  s.E = 2.1e11;
+  s.rho = 7.8e3;
+  s.section.diameter = 0.12;
+  s.supports.pin = 180.0;
+  return s;
+}
+
+void BM_ComputeModes23(benchmark::State& st) {
+  const ring::RingSpec s = paper_ring();
+  ring::MultibodyOptions o;
+  o.n = static_cast<int>(st.range(0));
+  o.rotary_inertia = st.range(1) != 0;
+  o.method = ring::MultibodyOptions::Method::dense;
+  double solver_seconds = 0;
+  ring::ModalResult r;
+  for (auto _ : st) {
+    r = multibody::compute_modes(s, o, 23);
+    benchmark::DoNotOptimize(r.omega.data());
+    solver_seconds += r.seconds;
+  }
+  st.counters["unknowns"] = static_cast<double>(r.unknowns);
+  st.counters["solver_s"] = benchmark::Counter(solver_seconds, benchmark::Counter::kAvgIterations);
+  st.counters["omega1"] = r.omega[0];
+}
+BENCHMARK(BM_ComputeModes23)
+    ->ArgsProduct({{40, 160, 640, 2000}, {1}})
+    ->Args({640, 0})
+    ->Args({2000, 0})
+    ->ArgNames({"n", "rot"})
+    ->Unit(benchmark::kMillisecond);
+
+void BM_Linearize(benchmark::State& st) {
+  const ring::RingSpec s = paper_ring();
+  ring::MultibodyOptions o;
+  o.n = static_cast<int>(st.range(0));
+  const multibody::Chain c(s, o);
+  for (auto _ : st) {
+    auto lm = multibody::linearize(c, o.dependent);
+    benchmark::DoNotOptimize(lm.K0.data());
+  }
+}
+BENCHMARK(BM_Linearize)->Arg(40)->Arg(160)->Arg(640)->Arg(2000)->ArgName("n")->Unit(benchmark::kMillisecond);
+
+}  // namespace
