@@ -1,0 +1,102 @@
+// Finite-element reference for the in-plane vibration of a thin ring: curved (or
+// polygonal) Euler-Bernoulli beam elements on deal.II. This header has NO deal.II
+// includes on purpose: the rest of ringvib (and the dlopen boundary in plugin.hpp)
+// sees only the shared result types, so that deal.II is compiled in one .cpp file.
+//
+// The model (issue 4). Mesh: a 1-D mesh in the polar angle theta, from the pin angle
+// theta0 to theta0 + 2 pi, closed periodically through AffineConstraints, with
+// `elements` equal pieces (vertex k at node_angles(spec, elements)[k]) each split into
+// `subdivisions` equal cells.
+//  - geometry `curved` (exact circle): fields are the polar components
+//    u (tangential, counter-clockwise) and w (radial, outward) as functions of theta;
+//    ds = R dtheta, centreline strain eps = (u' + w)/R, change of curvature
+//    kappa = (u' - w'')/R^2, rotation phi = (u - w')/R (' = d/dtheta), exactly the
+//    kinematics of ring/closed_form.hpp.
+//  - geometry `polygon`: straight chords between the vertices (the paper's SAP5 frame):
+//    the regular n-gon of side 2 pi R / n, i.e. perimeter = circumference, vertices at
+//    radius R (pi/n) / sin(pi/n) in the node directions (NOTES.md: what SAP5 computed);
+//    fields are the Cartesian components (ux, uy); on a chord with unit tangent t and
+//    outward normal n, eps = t.U_s, kappa = -n.U_ss, phi = -n.U_s (s: arc length).
+// Energies: strain EA/2 int eps^2 + EI/2 int kappa^2 ds, kinetic rho A/2 int |U|^2 ds
+// (consistent mass) plus, optionally, rho I/2 int phi^2 ds (cross-section rotary
+// inertia). No shear deformation.
+//
+// C1 continuity of the bending field (deal.II 9.4 has no C1 element) is imposed
+// weakly by a symmetric C0 interior penalty at every vertex (as step-47):
+//   a_h(U,V) = sum_cells int (EA eps eps + EI kappa kappa) ds
+//            + sum_vertices ( {M(U)} [[phi(V)]] + {M(V)} [[phi(U)]]
+//                             + sigma EI / h [[phi(U)]] [[phi(V)]] ),
+// M = EI kappa, [[phi]] = phi(right cell) - phi(left cell), {M} the average,
+// sigma = 2 (q+1)(q+2) with q the largest degree of kappa (above the trace-inverse
+// bound (q+1)^2 that makes a_h coercive), h the smaller neighbouring cell length.
+// The method is consistent (the exact solution satisfies it), so eigenvalues converge
+// like the square of the energy error: O(h^(2(p-1))) for degree p.
+//
+// Degrees: `degree` p (>= 2) is the degree of the bending field. On the exact circle
+// the tangential field u has degree p+1 so that u' and w live in the same space:
+// then the inextensional motions (u' = -w) are represented exactly and the thin ring
+// (R / radius of gyration = 333 for the paper's ring) shows no membrane locking.
+// On the polygon both Cartesian components have degree p (straight elements do not lock).
+//
+// Supports are AffineConstraints: pin (both components zero at vertex 0), roller
+// (the component normal to the line pin-roller zero at the roller's vertex, which
+// must be a vertex), free (three rigid modes). Rigid modes are counted, not numbered;
+// on the exact circle rigid translations are represented only approximately by the
+// polar fields, so their computed frequencies are small but not exactly zero.
+//
+// Inextensible limit (extensible = false): EA is replaced by beta EI / R^2 for two
+// large beta (1e6 and 2e6) and the squared frequencies are Richardson-extrapolated to
+// beta -> infinity (omega^2(beta) = omega^2_inext - c / beta + O(1/beta^2)); shapes
+// come from the larger beta.
+//
+// Eigen-solver: dense LAPACK (dsygv through LAPACKFullMatrix) up to 150 unknowns
+// (netlib BLAS makes O(N^3) slow beyond); above, ARPACK (Lanczos, shift-invert mode 3)
+// with a sparse UMFPACK factorization of K - sigma M, sigma = -(EI/(rho A R^4)) < 0 so
+// that rigid modes keep it regular; only the lowest modes (plus 8 guard modes).
+//
+// Round-off and refinement. The thin ring's membrane stiffness makes
+// lambda_max / lambda_1 ~ 1e9..1e10, so a double-precision eigen-solve returns the
+// lowest frequencies with relative errors ~ eps lambda_max / lambda ~ 1e-7. Every
+// solve is therefore refined: Rayleigh-Ritz on the computed span with Gram matrices
+// accumulated in long double from the strain fields (no cancellation against the stiff
+// entries), one subspace-iteration step q -= (K - sigma M)^{-1} r, Ritz again. The
+// reported max_residual is ||K q - lambda M q||_* / (||K q||_* + lambda ||M q||_*) in
+// the dual norm of K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm in which
+// the residual bounds the frequency error; the Euclidean norm of a double vector's
+// residual cannot drop below ~ eps lambda_max / lambda here.
+#pragma once
+
+#include <string>
+
+#include "ring/results.hpp"
+#include "ring/spec.hpp"
+
+namespace fem {
+
+/// Natural frequencies and mode shapes of the ring (see the file comment for the model).
+/// \param spec    ring, section, material, supports (pin/roller must fall on vertices:
+///                the pin is vertex 0; the roller must satisfy ring::on_node).
+/// \param options elements >= 4, degree 2..30; reference = true refines p (then h) until
+///                the `count` frequencies change by less than options.tolerance (relative,
+///                > 0) between successive refinements and reports error_estimate.
+/// \param count   elastic modes wanted, 1 <= count <= unknowns - rigid modes.
+/// \return solver "fem"; model {elements, cells, subdivisions, degree, geometry,
+///         extensible, rotary_inertia, reference, refinements} (the final discretization); rigid_modes; omega ascending
+///         (rad/s, elastic only); shapes at ring::kStations stations; unknowns (free
+///         unknowns after constraints); seconds; max_residual; error_estimate.
+/// \throws std::invalid_argument for options or count that can never work,
+///         ring::NumericalError for a failed factorization, eigen-solve or refinement.
+/// Cost: O(N (p+1)^2) assembly and, for N > 400, ARPACK with O(N p) work per
+/// Lanczos step after an O(N p^2) banded factorization; O(N^3) dense below.
+ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::FemOptions& options,
+                                int count);
+
+/// Writes the `count` lowest mode shapes to `dir`/fem_modes.vtu (deal.II DataOut) on
+/// the 1-D theta mesh: the x coordinate is the polar angle in radians; for each mode k
+/// (1-based) the fields `radial_k` and `tangential_k` (normalized: largest |component|
+/// is 1) and the field data `omega_k` in the point names. Returns the file written.
+/// Throws like compute_modes and ring::NumericalError if the file cannot be written.
+std::string write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count,
+                      const std::string& dir);
+
+}  // namespace fem
