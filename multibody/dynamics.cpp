@@ -3,8 +3,6 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -130,9 +128,8 @@ struct StepOutcome {
 /// success writes `s1`. Newton on (q, lambda) with the analytic tangent of
 /// dynamics_model.hpp. O(n^3) per iteration.
 StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s0, double h,
-                 const IntegrationControls& ctl, State& s1) {
+                        const IntegrationControls& ctl, State& s1) {
   const Chain& ch = p.chain;
-  const int n = ch.dofs(), c = ch.constraint_count();
   const double t1 = s0.t + h;
   const double f1 = p.history.factor(t1);
   const double bh2 = co.beta * h * h;
@@ -281,7 +278,6 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     const Vector dz = take(dqv, ind);
     if (dz.cwiseAbs().maxCoeff() > 0.5) return out;  // left the basin: cut the step
     z += dz;
-    if (std::getenv("RV_DEBUG")) std::fprintf(stderr, "t=%g it=%d dz=%.3e R=%.3e\n", t1, it, dz.cwiseAbs().maxCoeff(), r.cwiseAbs().maxCoeff());
     if (dz.cwiseAbs().maxCoeff() <= ctl.tol_q) {
       out.converged = complete(k);
       break;
@@ -414,12 +410,16 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
         continue;
       }
       // Work of the dead load (trapezoidal in time; exact for a constant force) and
-      // energy dissipated by damping (trapezoidal).
+      // energy dissipated by damping.
       const Eigen::Vector2d x1 = chain.hinge_position(s1.q, p.load.hinge);
       work += 0.5 * (p.history.factor(s.t) + p.history.factor(s1.t)) * F.dot(x1 - x_load);
       x_load = x1;
-      if (p.damped)
-        dissipated += 0.5 * hs * (s.v.dot(p.C * s.v) + s1.v.dot(p.C * s1.v));
+      if (p.damped) {
+        // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
+        // system this is exactly the energy the discrete damping force removes.
+        const Vector vm = s.v + s1.v;
+        dissipated += 0.25 * hs * vm.dot(p.C * vm);
+      }
       s = std::move(s1);
       if (last) s.t = t_target;  // no round-off drift of the sub-steps
       if (!s.q.allFinite() || !s.v.allFinite())
