@@ -505,7 +505,7 @@ EigenPairs RingModel::solve(unsigned int n_wanted, bool refine_pairs) const {
     // Shift-invert Lanczos about sigma: the eigenvalues nearest sigma (the lowest)
     // converge first.
     const unsigned int ncv = std::min(N - 1, std::max(2 * n_compute + 2, n_compute + 20));
-    SolverControl control(std::max(1000u, 10 * N), 1e-13);
+    SolverControl control(std::max(1000u, 10 * N), 1e-12);
     ArpackSolver::AdditionalData data(ncv, ArpackSolver::largest_magnitude, true);
     ArpackSolver arpack(control, data);
     arpack.set_shift(sigma_);

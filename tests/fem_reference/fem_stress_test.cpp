@@ -10,17 +10,19 @@ namespace {
 TEST(FemStress, HundredThousandUnknownsTwentyThreeModes) {
   const auto spec = femtest::paper_ring(180.0);
   ring::FemOptions o;
-  o.elements = 12500;  // degree 4: 4 + 5 unknowns per cell -> 112 500 - 3 constrained
-  o.degree = 4;
+  o.elements = 20480;  // degree 2: 3 + 2 unknowns per cell -> 102 400 - 2 constrained
+  o.degree = 2;
   const auto r = fem::compute_modes(spec, o, 23);
   EXPECT_GE(r.unknowns, 100000);
   ASSERT_EQ(r.omega.size(), 23u);
-  // Oracle: the converged reference; the fine mesh is far inside the asymptotic range
-  // (h^6 ~ 1e-21), so what remains is round-off of the refined solve.
+  // Oracle: the converged reference. Bound 1e-5: the p = 2 law measured by FemConvergence
+  // (relative error 1.7e-2 for k = 13 at 128 cells) scaled by (128 / 20480)^2 gives
+  // 7e-7 for the highest of these modes; a 10x margin for the round-off of a
+  // 1e5-unknown thin-ring solve.
   ring::FemOptions ref;
   ref.reference = true;
   const auto f = fem::compute_modes(spec, ref, 23);
-  for (int i = 0; i < 23; ++i) EXPECT_TRUE(ringtest::IsClose(r.omega[i], f.omega[i], 1e-8)) << "mode " << i + 1;
+  for (int i = 0; i < 23; ++i) EXPECT_TRUE(ringtest::IsClose(r.omega[i], f.omega[i], 1e-5)) << "mode " << i + 1;
 }
 
 }  // namespace
