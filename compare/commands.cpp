@@ -14,6 +14,7 @@
 #include "compare/gates.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/bench.hpp"
 #include "compare/converge.hpp"
 #include "compare/report.hpp"
 #include "compare/response.hpp"
@@ -210,13 +211,26 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
   const Progress p(a.quiet);
   if (!out_dir.empty()) make_dirs(out_dir);
-  p.say("computing the converged FE reference");
-  const ring::ModalResult ref = reference_modes(s, s.modes.count);
-  const ConvergenceStudy c = converge(s, ref, p.on() ? &std::cerr : nullptr);
+  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  const ConvergenceStudy c = converge(s, compute_references(s, progress), progress);
   std::cout << convergence_text(c);
   if (!out_dir.empty()) {
     write_convergence(out_dir, c);
     std::cout << "wrote " << out_dir << "/convergence.csv and convergence.png\n";
+  }
+  return 0;
+}
+
+int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
+  const ring::Scene s = load(a);
+  const Progress p(a.quiet);
+  if (!out_dir.empty()) make_dirs(out_dir);
+  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  const BenchStudy b = bench(s, compute_references(s, progress), progress);
+  std::cout << bench_text(b);
+  if (!out_dir.empty()) {
+    write_bench(out_dir, b);
+    std::cout << "wrote " << out_dir << "/bench.csv, bench.txt and bench.png\n";
   }
   return 0;
 }

@@ -22,5 +22,6 @@ int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int>
 int cmd_respond(const CommonArgs& a, const std::string& csv);
 int cmd_static(const CommonArgs& a, bool json);
 int cmd_converge(const CommonArgs& a, const std::string& out_dir);
+int cmd_bench(const CommonArgs& a, const std::string& out_dir);
 
 }  // namespace cmp

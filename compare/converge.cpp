@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 #include <sstream>
 
 #include "compare/output.hpp"
@@ -10,10 +11,8 @@
 #include "compare/table.hpp"
 
 namespace cmp {
-namespace {
 
-/// Max and mean |error| in % of `r` against `ref`, modes paired by MAC.
-std::pair<double, double> errors(const ring::ModalResult& r, const ring::ModalResult& ref, int modes) {
+std::pair<double, double> errors_against(const ring::ModalResult& r, const ring::ModalResult& ref, int modes) {
   const std::vector<int> pair = pair_by_mac(ref, r);
   double mx = 0.0, sum = 0.0;
   for (int i = 0; i < modes; ++i) {
@@ -24,15 +23,44 @@ std::pair<double, double> errors(const ring::ModalResult& r, const ring::ModalRe
   return {mx, sum / modes};
 }
 
-ring::Scene refined(const ring::Scene& s, const std::string& solver, int factor_num, int factor_den) {
-  ring::Scene r = s;
-  if (solver == "multibody") r.multibody.n = s.multibody.n * factor_num / factor_den;
-  if (solver == "lumped") r.lumped.n = s.lumped.n * factor_num / factor_den;
-  if (solver == "fem") r.fem.elements = s.fem.elements * factor_num / factor_den;
-  return r;
+bool inextensible_limit(const ring::Scene& scene, const std::string& solver) {
+  if (solver == "multibody") return true;
+  if (solver == "lumped") return scene.lumped.variant == ring::LumpedOptions::Variant::chain;
+  return !scene.fem.extensible;
 }
 
-}  // namespace
+const ring::ModalResult& References::of(const ring::Scene& scene, const std::string& solver) const {
+  const auto& r = inextensible_limit(scene, solver) ? inextensible : extensible;
+  if (!r) throw std::logic_error("References::of: the reference for " + solver + " was not computed");
+  return *r;
+}
+
+References compute_references(const ring::Scene& scene, std::ostream* progress) {
+  References refs;
+  for (const auto& name : ring::solver_names()) {
+    if (!scene.column(name)) continue;
+    const bool inext = inextensible_limit(scene, name);
+    auto& slot = inext ? refs.inextensible : refs.extensible;
+    if (slot) continue;
+    if (progress) *progress << "ringvib: computing the converged " << (inext ? "inextensible" : "extensible")
+                            << " FE reference\n";
+    ring::Scene s = scene;
+    s.fem.extensible = !inext;
+    slot = reference_modes(s, scene.modes.count);
+  }
+  return refs;
+}
+
+ring::Scene with_size(const ring::Scene& s, const std::string& solver, int size, int degree) {
+  ring::Scene r = s;
+  if (solver == "multibody") r.multibody.n = size;
+  if (solver == "lumped") r.lumped.n = size;
+  if (solver == "fem") {
+    r.fem.elements = size;
+    if (degree > 0) r.fem.degree = degree;
+  }
+  return r;
+}
 
 double fitted_order(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<double> lx, ly;
@@ -52,15 +80,17 @@ double fitted_order(const std::vector<double>& x, const std::vector<double>& y) 
   return -sxy / sxx;
 }
 
-ConvergenceStudy converge(const ring::Scene& scene, const ring::ModalResult& reference, std::ostream* progress) {
+ConvergenceStudy converge(const ring::Scene& scene, const References& references, std::ostream* progress) {
   ConvergenceStudy c;
   c.modes = scene.modes.count;
-  c.reference_estimate = reference.error_estimate;
-  const double floor_pct = 100.0 * 100.0 * std::max(scene.fem.tolerance, reference.error_estimate);
+  for (const auto* r : {&references.extensible, &references.inextensible})
+    if (*r) c.reference_estimate = std::max(c.reference_estimate, (*r)->error_estimate);
+  const double floor_pct = 100.0 * 100.0 * std::max(scene.fem.tolerance, c.reference_estimate);
   std::vector<std::string> solvers;
   for (const auto& name : ring::solver_names())
     if (scene.column(name)) solvers.push_back(name);
   for (const auto& name : solvers) {
+    const ring::ModalResult& reference = references.of(scene, name);
     ConvergenceSeries s;
     s.name = name == "fem" ? "fem (p = " + std::to_string(scene.fem.degree) + ")"
            : name == "lumped" ? "lumped (" + ring::to_string(scene.lumped.variant) + ")" : name;
@@ -68,11 +98,12 @@ ConvergenceStudy converge(const ring::Scene& scene, const ring::ModalResult& ref
     const int steps = name == "fem" ? 4 : 5;
     std::vector<ring::ModalResult> results;
     for (int k = 0; k < steps; ++k) {
-      const ring::Scene r = refined(scene, name, 1 << k, 1);
-      const double size = name == "multibody" ? r.multibody.n : name == "lumped" ? r.lumped.n : r.fem.elements;
+      const int base = name == "multibody" ? scene.multibody.n : name == "lumped" ? scene.lumped.n : scene.fem.elements;
+      const double size = base << k;
+      const ring::Scene r = with_size(scene, name, base << k);
       if (progress) *progress << "ringvib: " << name << " at " << s.parameter << " = " << size << "\n";
       results.push_back(solve_modes(r, name, c.modes));
-      const auto [mx, mean] = errors(results.back(), reference, c.modes);
+      const auto [mx, mean] = errors_against(results.back(), reference, c.modes);
       s.size.push_back(size);
       s.max_error.push_back(mx);
       s.mean_error.push_back(mean);
@@ -90,7 +121,7 @@ ConvergenceStudy converge(const ring::Scene& scene, const ring::ModalResult& ref
         ring::ModalResult x = results[k];
         const std::vector<int> pf = pair_by_mac(reference, results[k]), pc = pair_by_mac(reference, results[k - 1]);
         for (int i = 0; i < c.modes; ++i) x.omega[pf[i]] = (4.0 * results[k].omega[pf[i]] - results[k - 1].omega[pc[i]]) / 3.0;
-        const auto [mx, mean] = errors(x, reference, c.modes);
+        const auto [mx, mean] = errors_against(x, reference, c.modes);
         rich.size.push_back(s.size[k]);
         rich.max_error.push_back(mx);
         rich.mean_error.push_back(mean);
@@ -109,8 +140,9 @@ ConvergenceStudy converge(const ring::Scene& scene, const ring::ModalResult& ref
 std::string convergence_text(const ConvergenceStudy& c) {
   std::ostringstream s;
   s << "Max and mean |error| (%) over the " << c.modes
-    << " lowest modes against the converged FE reference (its own estimated error " << c.reference_estimate
-    << " relative)\n\n";
+    << " lowest modes, each model against the converged FE reference of its own continuum\n"
+    << "(inextensible for the rigid-link chains, extensible for frames and FE; estimated reference error "
+    << c.reference_estimate << " relative)\n\n";
   for (const auto& x : c.series) {
     s << x.name << ": observed order " << (std::isfinite(x.order) ? pct2(x.order) : std::string("n/a")) << "\n";
     char line[160];

@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
   add_common(converge, a);
   converge->add_option("--out", out, "folder for the CSV and the log-log figure");
 
+  auto* bench = app.add_subcommand("bench", "run time against error for every solver (Pareto front)");
+  add_common(bench, a);
+  bench->add_option("--out", out, "folder for bench.csv, bench.txt and the log-log figure");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +77,7 @@ int main(int argc, char** argv) {
     if (*respond) return cmp::cmd_respond(a, csv);
     if (*statics) return cmp::cmd_static(a, json);
     if (*converge) return cmp::cmd_converge(a, out);
+    if (*bench) return cmp::cmd_bench(a, out);
   } catch (const ring::InputError& e) {
     std::cerr << "ringvib: error: " << e.what() << "\n";
     return 2;

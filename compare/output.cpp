@@ -42,7 +42,7 @@ void make_dirs(const std::string& dir) {
   }
   struct stat st;
   if (stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-    throw ring::InputError("", "--out " + dir, "not a folder");
+    throw ring::InputError("", "--out " + dir, "exists and is not a folder");
 }
 
 std::string sig4(double v) {

@@ -128,7 +128,9 @@ void plot_series(const std::string& dir, const std::string& name, const std::str
     d << "\n\n";
   }
   g << "set title " << gp_string(title) << "\nset xlabel " << gp_string(xlabel) << "\nset ylabel " << gp_string(ylabel)
-    << "\nset grid\nset key outside right\n";
+    << "\nset grid\n";
+  // Error curves fall from the top left: their top right corner is free for the key.
+  g << (logy ? "set key top right opaque box\n" : "set key outside right\n");
   if (equal_aspect) g << "set size ratio -1\n";
   if (logx) g << "set logscale x\n";
   if (logy) g << "set logscale y\nset format y '10^{%L}'\n";

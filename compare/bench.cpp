@@ -1,0 +1,177 @@
+#include "compare/bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "compare/converge.hpp"
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/solvers.hpp"
+#include "compare/table.hpp"
+
+namespace cmp {
+namespace {
+
+struct Timed {
+  ring::ModalResult result;
+  double median = 0.0;
+  int repeats = 0;
+};
+
+/// Solves repeatedly; the median of the solvers' own wall times (process-internal).
+Timed timed_solve(const ring::Scene& s, const std::string& solver, int modes) {
+  Timed t;
+  std::vector<double> times;
+  double total = 0.0;
+  while (times.size() < 3 || (total < 0.3 && times.size() < 9)) {
+    t.result = solve_modes(s, solver, modes);
+    times.push_back(t.result.seconds);
+    total += t.result.seconds;
+  }
+  std::sort(times.begin(), times.end());
+  t.median = times[times.size() / 2];
+  t.repeats = static_cast<int>(times.size());
+  return t;
+}
+
+std::string fmt_seconds(double s) {
+  char b[32];
+  if (s < 1e-3) std::snprintf(b, sizeof b, "%.1f us", s * 1e6);
+  else if (s < 1.0) std::snprintf(b, sizeof b, "%.2f ms", s * 1e3);
+  else std::snprintf(b, sizeof b, "%.2f s", s);
+  return b;
+}
+
+}  // namespace
+
+BenchStudy bench(const ring::Scene& scene, const References& references, std::ostream* progress) {
+  BenchStudy b;
+  b.modes = scene.modes.count;
+  for (const auto* r : {&references.extensible, &references.inextensible})
+    if (*r) b.reference_seconds = std::max(b.reference_seconds, (*r)->seconds);
+  auto add = [&](const std::string& curve, const std::string& solver, int size, int degree) -> Timed {
+    if (progress) *progress << "ringvib: bench " << curve << " at " << size << "\n";
+    const Timed t = timed_solve(with_size(scene, solver, size, degree), solver, b.modes);
+    const auto [mx, mean] = errors_against(t.result, references.of(scene, solver), b.modes);
+    b.points.push_back({curve, size, t.result.unknowns, t.median, t.repeats, mx, mean});
+    return t;
+  };
+  for (const auto& solver : ring::solver_names()) {
+    if (!scene.column(solver)) continue;
+    if (solver == "fem") {
+      for (int p = 2; p <= 4; ++p)
+        for (int e : {10, 20, 40, 80, 160}) add("fem (p = " + std::to_string(p) + ")", solver, e, p);
+      continue;
+    }
+    const std::string curve = solver == "lumped" ? "lumped (" + ring::to_string(scene.lumped.variant) + ")" : solver;
+    const ring::ModalResult& reference = references.of(scene, solver);
+    std::optional<Timed> coarser;
+    for (int n = 40; n <= 2560; n *= 2) {
+      if (n < b.modes + 3) continue;
+      Timed t = add(curve, solver, n, 0);
+      if (solver == "multibody" && coarser) {
+        // Richardson with order 2 from n/2 and n: the cost of both solves.
+        ring::ModalResult x = t.result;
+        const auto pf = pair_by_mac(reference, t.result), pc = pair_by_mac(reference, coarser->result);
+        for (int i = 0; i < b.modes; ++i)
+          x.omega[pf[i]] = (4.0 * t.result.omega[pf[i]] - coarser->result.omega[pc[i]]) / 3.0;
+        const auto [mx, mean] = errors_against(x, reference, b.modes);
+        b.points.push_back({"multibody + Richardson", n, t.result.unknowns, t.median + coarser->median, t.repeats,
+                            mx, mean});
+      }
+      coarser = std::move(t);
+    }
+  }
+  return b;
+}
+
+std::optional<double> time_to_error(const BenchStudy& b, const std::string& curve, double error_pct) {
+  std::vector<const BenchPoint*> pts;
+  for (const auto& p : b.points)
+    if (p.curve == curve) pts.push_back(&p);
+  std::sort(pts.begin(), pts.end(), [](auto* a, auto* c) { return a->seconds < c->seconds; });
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (pts[i]->max_error > error_pct) continue;
+    if (i == 0) return pts[0]->seconds;
+    // Interpolate log(time) against log(error) between the last point above and this one.
+    const auto *a = pts[i - 1], *c = pts[i];
+    const double f = (std::log(error_pct) - std::log(a->max_error)) / (std::log(c->max_error) - std::log(a->max_error));
+    return std::exp(std::log(a->seconds) + f * (std::log(c->seconds) - std::log(a->seconds)));
+  }
+  return std::nullopt;
+}
+
+std::string bench_text(const BenchStudy& b) {
+  std::ostringstream s;
+  s << "Run time against error, " << b.modes << " lowest modes, error against the converged FE reference\n"
+    << "of each model's own continuum (inextensible for the rigid-link chains, extensible for frames and FE)\n"
+    << "(solver time inside this process, median of repeats; compare times as ratios)\n\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "%-24s %6s %9s %12s %8s %13s %13s\n", "curve", "size", "unknowns", "time",
+                "repeats", "max |err| %", "mean |err| %");
+  s << line;
+  for (const auto& p : b.points) {
+    std::snprintf(line, sizeof line, "%-24s %6d %9lld %12s %8d %13.3e %13.3e\n", p.curve.c_str(), p.size, p.unknowns,
+                  fmt_seconds(p.seconds).c_str(), p.repeats, p.max_error, p.mean_error);
+    s << line;
+  }
+  std::vector<std::string> curves;
+  for (const auto& p : b.points)
+    if (std::find(curves.begin(), curves.end(), p.curve) == curves.end()) curves.push_back(p.curve);
+  s << "\nTime to reach a max error of 1 % and of 0.01 % on the " << b.modes << " modes:\n";
+  for (const auto& c : curves) {
+    const auto t1 = time_to_error(b, c, 1.0), t2 = time_to_error(b, c, 0.01);
+    std::snprintf(line, sizeof line, "  %-24s 1 %%: %-12s 0.01 %%: %s\n", c.c_str(),
+                  t1 ? fmt_seconds(*t1).c_str() : "not reached", t2 ? fmt_seconds(*t2).c_str() : "not reached");
+    s << line;
+  }
+  // The paper's claim: multibody at n = 40 takes about 1/3 of the FE time.
+  const BenchPoint *mb40 = nullptr, *fe40 = nullptr;
+  for (const auto& p : b.points) {
+    if (p.curve == "multibody" && p.size == 40) mb40 = &p;
+    if (p.curve == "fem (p = 3)" && p.size == 40) fe40 = &p;
+  }
+  if (mb40 && fe40)
+    s << "\nMultibody / FE time at equal n = 40 (FE p = 3): " << sig4(mb40->seconds / fe40->seconds)
+      << " (the paper claims about 1/3 against its SAP5 run); their max errors " << sig4(mb40->max_error) << " % and "
+      << sig4(fe40->max_error) << " %.\n";
+  for (double e : {1.0, 0.01}) {
+    const auto m = time_to_error(b, "multibody", e), f = time_to_error(b, "fem (p = 3)", e);
+    if (m && f)
+      s << "Multibody / FE (p = 3) time at equal max error " << e << " %: " << sig4(*m / *f) << "\n";
+    else if (f)
+      s << "At equal max error " << e << " %: multibody does not reach it in the sweep; FE (p = 3) needs "
+        << fmt_seconds(*f) << "\n";
+  }
+  return s.str();
+}
+
+void write_bench(const std::string& dir, const BenchStudy& b) {
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "curve,size,unknowns,seconds_median,repeats,max_error_pct,mean_error_pct\n";
+  std::map<std::string, Series> curves;
+  std::vector<std::string> order;
+  for (const auto& p : b.points) {
+    csv << '"' << p.curve << "\"," << p.size << "," << p.unknowns << "," << p.seconds << "," << p.repeats << ","
+        << p.max_error << "," << p.mean_error << "\n";
+    if (!curves.count(p.curve)) {
+      order.push_back(p.curve);
+      curves[p.curve].name = p.curve;
+    }
+    curves[p.curve].x.push_back(p.seconds);
+    curves[p.curve].y.push_back(p.max_error);
+  }
+  write_file(dir + "/bench.csv", csv.str());
+  std::vector<Series> plot;
+  for (const auto& c : order) plot.push_back(curves[c]);
+  plot_series(dir, "bench", "Run time against error, " + std::to_string(b.modes) + " lowest modes (lower left is better)",
+              "solver time, median (s)", "max |error| against the reference (%)", plot, true, true);
+  write_file(dir + "/bench.txt", bench_text(b));
+}
+
+}  // namespace cmp
