@@ -205,7 +205,7 @@ class ShiftInvertOp {
   VectorXd solve_reduced(const VectorXd& rhs) const {
     VectorXd b = VectorXd::Zero(size_);
     b.head(rhs.size()) = rhs;
-    const VectorXd z = const_cast<Factor&>(factor_).solve(b);
+    const VectorXd z = factor_.solve(b);
     return z.head(rhs.size());
   }
   void perform_op(const double* x_in, double* y_out) const {
@@ -213,7 +213,7 @@ class ShiftInvertOp {
     Eigen::Map<VectorXd> y(y_out, E_.cols());
     y = E_.transpose() * solve_reduced(E_ * x);
   }
-  long long factor_nonzeros() const { return const_cast<Factor&>(factor_).nnzL() + const_cast<Factor&>(factor_).nnzU(); }
+  long long factor_nonzeros() const { return factor_.nnzL() + factor_.nnzU(); }
   Eigen::Index size() const { return size_; }
 
  private:
@@ -317,7 +317,7 @@ Eigenpairs solve(const Model& m, int count, Method method) {
   const Reduction red = support_reduction(m);
   const int nev = count + m.expected_rigid;
   if (method == Method::automatic)
-    method = (m.n <= 96 || 3 * nev > avail) ? Method::dense : Method::sparse;
+    method = (m.n <= 24 || 3 * nev > avail) ? Method::dense : Method::sparse;
   Eigenpairs p;
   if (method == Method::dense)
     p = solve_dense(m, red, count);

@@ -2,24 +2,34 @@
 //   K x = lambda M x,  C x = 0,  S x = 0,  lambda = omega^2,
 // with the massless DOFs condensed statically. Two paths that share only the model:
 //
+// Both paths use the stiffness only in factored form, K = B^T diag(D) B (model.hpp).
+// In Cartesian node coordinates the assembled K is a fourth difference: its entries are
+// ~(R/l)^4 times what a smooth mode's K x is, so any solver that factors or reduces the
+// assembled K loses eps (R/l)^4 relative accuracy in the low modes (1e-3 at n = 1e4,
+// everything at n = 1e5). Through B (a second difference) the loss is eps (R/l)^2.
+//
 // dense (O(N^3) time, O(N^2) memory; for small n): supports eliminated by an
 //   orthonormal selection T (S T = 0), link constraints by an orthonormal null-space
-//   basis Z of C T (Householder QR of (C T)^T), massless DOFs by Guyan condensation
-//   Kd = Kaa - Kab Kbb^-1 Kba; then Eigen's GeneralizedSelfAdjointEigenSolver
-//   (Cholesky of the reduced mass, which is positive definite).
-// sparse (O(n) time per operator application and O(n) memory): shift-invert Lanczos
+//   basis Z of C T (Householder QR of (C T)^T), massless DOFs by static (Guyan)
+//   condensation done as a least-squares projection of D^1/2 B; with Y the resulting
+//   basis and Y^T M Y = L L^T (after Jacobi scaling), lambda = sigma^2 for the singular
+//   values sigma of F = D^1/2 B Y L^-T (Eigen::BDCSVD): small singular values carry
+//   absolute error eps ||F||, i.e. relative error eps sqrt(lambda_max / lambda) in lambda.
+// sparse (O(n) memory, O(n) per operator application): shift-invert Lanczos
 //   (Spectra::SymGEigsShiftSolver) in the space of the inertial DOFs. The operator
-//   (A - sigma B)^-1 x solves the sparse system
-//       [ Kt - sigma Mt   Ct^T ] [y]   [E x]
-//       [ Ct              0    ] [z] = [ 0 ]
-//   and returns the inertial part E^T y: this is exactly the constrained inverse
-//   Z (Z^T (Kt - sigma Mt) Z)^-1 Z^T of the link constraints and the Schur complement
-//   of the massless DOFs, without forming either. Factorization: SparseLU (COLAMD) for
-//   the indefinite saddle-point matrix of the chain, SimplicialLDLT (AMD) for the
-//   frames, which is positive definite because sigma < 0. The chain's midpoint mass
-//   matrix is singular on the whole space (the zig-zag u_k = (-1)^k v moves no
-//   midpoint), so the Lanczos inner product uses B = Mt + m Ct^T Ct, positive definite,
-//   and equal to Mt on the admissible vectors the operator produces.
+//   (A - sigma B)^-1 x solves the sparse mixed (stress) system
+//       [ -sigma Mt   Bt^T    Ct^T ] [y ]   [E x]
+//       [ Bt         -D^-1    0    ] [s ] = [ 0 ]     (s = D Bt y: strain resultants)
+//       [ Ct          0       0    ] [mu]   [ 0 ]
+//   (rows and columns scaled for pivoting) and returns the inertial part E^T y. Its
+//   Schur complement on y is Kt - sigma Mt restricted to C y = 0 with the massless DOFs
+//   condensed: the constrained inverse Z (Z^T (Kt - sigma Mt) Z)^-1 Z^T and the Guyan
+//   condensation without forming either. Factorization: SparseLU with COLAMD (the
+//   system is indefinite); fill O(n) for the ring's cyclic-banded pattern (measured
+//   15-20 factor nonzeros per unknown for n = 1e3..1e5). The chain's midpoint mass matrix
+//   is singular on the whole space (the zig-zag u_k = (-1)^k v moves no midpoint), so the
+//   Lanczos inner product uses B = Mt + m Ct^T Ct, positive definite, and equal to Mt on
+//   the admissible vectors the operator produces; the start vector is op(B r).
 //   Shift sigma = -EI/(rho A R^4): below every eigenvalue, so a free ring's singular K
 //   is no problem and rigid modes come out as the largest 1/(lambda - sigma).
 //
@@ -58,7 +68,8 @@ struct Eigenpairs {
 int elastic_dofs(const Model& model);
 
 /// The `count` lowest elastic modes and all rigid ones. automatic picks dense for
-/// n <= 96 or when count is too close to elastic_dofs() for Lanczos, else sparse.
+/// n <= 24 (sparse is already faster at n = 40: bench/lumped_mass) or when count + rigid > elastic_dofs() / 3 (Lanczos would need nearly the
+/// whole space), else sparse.
 /// Throws std::invalid_argument for count outside [1, elastic_dofs()] (or too large for
 /// the sparse path when Method::sparse is forced), ring::NumericalError if the
 /// factorization or the iteration fails or the rigid count disagrees with the supports.

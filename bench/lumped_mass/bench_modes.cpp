@@ -1,6 +1,6 @@
 // Time against n (40 .. 1e5) for each lumped-mass variant: the paper's ring pinned at
-// 180 deg, the 9 lowest elastic modes, path chosen automatically (dense for n <= 96,
-// sparse shift-invert Lanczos above). Repetitions give medians:
+// 180 deg, the 9 lowest elastic modes; n = 40 on both paths (dense SVD and sparse
+// shift-invert Lanczos), larger n on the automatic (sparse) path. Repetitions give medians:
 //   bench_lumped_modes --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 // Counters: unknowns (order of the factorized system), factor_nnz and factor_nnz/unknown
 // (constant = O(n) memory for the factors), peak_rss_MB of the process so far (monotone;

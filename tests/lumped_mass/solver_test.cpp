@@ -101,7 +101,9 @@ TEST_P(LumpedSolver, DenseAndSparseAgree) {
     EXPECT_EQ(d.shapes[i].radial.size(), static_cast<std::size_t>(ring::kStations));
     // Supported rings have simple eigenvalues: the shapes must match too (MAC = cos^2
     // of the angle between them; 1e-8 allows eigenvector rounding ~1e-10 / gap).
-    if (spec.supports.pin) EXPECT_GT(ring::mac(d.shapes[i], s.shapes[i]), 1.0 - 1e-8) << "mode " << i + 1;
+    if (spec.supports.pin) {
+      EXPECT_GT(ring::mac(d.shapes[i], s.shapes[i]), 1.0 - 1e-8) << "mode " << i + 1;
+    }
   }
 }
 
