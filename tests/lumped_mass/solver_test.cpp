@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "lumped_mass/modes.hpp"
+#include "ring/closed_form.hpp"
 #include "ring/sampling.hpp"
 #include "common.hpp"
 #include "tests/support/close.hpp"
@@ -182,6 +183,51 @@ TEST(LumpedModel, SmallestChainIsTheRhombusMode) {
   const ring::ModalResult f = lumped::compute_modes(lumptest::paper_ring(), lumptest::options(4, kChain), 1);
   EXPECT_EQ(f.rigid_modes, 3);
   EXPECT_TRUE(ringtest::IsClose(f.omega[0], std::sqrt(free_w2), 1e-12));
+}
+
+// Very thin (R / r_g = 40000, d = 1 mm) and very thick (R / r_g = 20, d = 2 m) rings:
+// the rigid count, the agreement of the two paths and the discretization error must not
+// depend on slenderness (the bending error is a function of k h only; the frames'
+// membrane stiffness EA/l grows against bending as (R/r_g)^2 and must not spoil the
+// conditioning). Oracle: the closed-form free ring; 3e-4 bounds the n = 160 errors of
+// every variant for k = 2, 3 (convergence_test: largest 2.4e-4, chain k = 3).
+TEST(LumpedModel, SlendernessExtremes) {
+  for (double d : {0.001, 2.0}) {
+    ring::RingSpec spec = lumptest::paper_ring();
+    spec.section.diameter = d;
+    for (auto v : {kChain, kFrame, kConsistent}) {
+      const LumpedOptions o = lumptest::options(160, v);
+      const ring::ModalResult dn = lumped::compute_modes(spec, o, 4, lumped::Method::dense);
+      const ring::ModalResult sp = lumped::compute_modes(spec, o, 4, lumped::Method::sparse);
+      EXPECT_EQ(dn.rigid_modes, 3);
+      EXPECT_EQ(sp.rigid_modes, 3);
+      for (int k : {2, 3}) {
+        const double exact = v == kChain ? ring::closed_form::free_ring_inextensional(spec, k)
+                                         : ring::closed_form::free_ring_extensible(spec, k)[0];
+        const int i = 2 * (k - 2);
+        EXPECT_TRUE(ringtest::IsClose(sp.omega[i], dn.omega[i], 1e-10)) << name(v) << " d = " << d;
+        EXPECT_TRUE(ringtest::IsClose(sp.omega[i], exact, 3e-4)) << name(v) << " d = " << d << " k = " << k;
+      }
+    }
+  }
+}
+
+// Mode shapes at the common stations honour the supports: the pin (station 180) does not
+// move; the roller (station 0, opposite the pin) moves only along the pin-roller line,
+// i.e. radially at 0 deg. Oracle: the support definitions of DESIGN.md.
+TEST(LumpedModel, ShapesHonourSupports) {
+  ring::RingSpec spec = lumptest::pinned_ring();
+  spec.supports.roller = 0.0;
+  for (auto v : {kChain, kFrame, kConsistent}) {
+    const ring::ModalResult r = lumped::compute_modes(spec, lumptest::options(40, v), 9);
+    for (const auto& sh : r.shapes) {
+      ASSERT_EQ(sh.radial.size(), static_cast<std::size_t>(ring::kStations));
+      // 1e-12: rounding of normalized shapes (largest component 1).
+      EXPECT_LT(std::abs(sh.radial[180]), 1e-12) << name(v);
+      EXPECT_LT(std::abs(sh.tangential[180]), 1e-12) << name(v);
+      EXPECT_LT(std::abs(sh.tangential[0]), 1e-12) << name(v);
+    }
+  }
 }
 
 }  // namespace
