@@ -717,11 +717,14 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
     } catch (const std::exception& e) {
       throw ring::NumericalError(std::string("fem: eigen-solver failed: ") + e.what());
     }
-    const double scale = std::pow(spec.bending_frequency_scale(), 2);
-    for (double l : pairs.lambda)
-      if (!std::isfinite(l) || l < -1e-6 * scale)
-        throw ring::NumericalError("fem: eigenvalue " + std::to_string(l) + " is negative or not finite");
-    if (rigid > 0 && pairs.lambda[rigid - 1] > 1e-2 * pairs.lambda[rigid])
+    // Elastic eigenvalues must be positive (a negative one would mean a non-coercive
+    // penalty); rigid ones are zero up to round-off (~eps lambda_max, either sign) and,
+    // on the circle, the approximation of rigid translations by polar fields.
+    for (unsigned int i = 0; i < wanted; ++i)
+      if (!std::isfinite(pairs.lambda[i]) || (static_cast<int>(i) >= rigid && !(pairs.lambda[i] > 0)))
+        throw ring::NumericalError("fem: eigenvalue " + std::to_string(pairs.lambda[i]) + " of mode " +
+                                   std::to_string(i + 1) + " is not positive and finite");
+    if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > 1e-2 * pairs.lambda[rigid])
       throw ring::NumericalError("fem: the mesh is too coarse to represent the " + std::to_string(rigid) +
                                  " rigid modes (lowest elastic/rigid eigenvalue ratio < 100)");
     lambda.assign(pairs.lambda.begin() + rigid, pairs.lambda.end());
@@ -768,7 +771,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
   setup.degree = o.degree;
   setup.geometry = o.geometry;
   setup.rotary_inertia = o.rotary_inertia;
-  Solved s = solve_once(spec, setup, o.extensible, count, keep_full && !o.reference, !o.reference);
+  Solved s = solve_once(spec, setup, o.extensible, count, keep_full && !o.reference, !o.reference || !o.extensible);
   int refinements = 0;
   if (o.reference) {
     // p-refinement (exponential convergence on these smooth, piecewise analytic modes),
@@ -786,7 +789,8 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
       else
         setup.subdivisions *= 2;
       // Raw pairs carry ~1e-7 round-off; refine them only once the changes get near it.
-      refined = refinements > 1 && previous_change < kRefineBelowChange;
+      // (The inextensible penalty makes raw pairs far noisier: always refine them.)
+      refined = !o.extensible || (refinements > 1 && previous_change < kRefineBelowChange);
       Solved next = solve_once(spec, setup, o.extensible, count, false, refined);
       double change = 0.0;
       for (int i = 0; i < count; ++i)
