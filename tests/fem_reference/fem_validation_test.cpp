@@ -52,6 +52,32 @@ TEST(FemFreeRing, InextensibleLimitMatchesHoppe) {
   }
 }
 
+// Cross-section rotary inertia: the closed form's 2x2 problem for w = A cos(k theta),
+// u = B sin(k theta) gains rho I / R^2 (k A + B)^2 in the kinetic energy (rotation
+// (u - w')/R = (B + k A) sin(k theta) / R), i.e. M = rho A I2 + rho I / R^2 [k^2 k; k 1].
+// The lower root of det(K - lambda M) = 0 is the oracle (derived here, not in ring/).
+TEST(FemFreeRing, RotaryInertiaMatchesTwoByTwoClosedForm) {
+  const auto spec = femtest::paper_ring(std::nullopt);
+  FemOptions o;
+  o.degree = 8;
+  o.rotary_inertia = true;
+  const auto r = fem::compute_modes(spec, o, 14);
+  const double R = spec.radius, EA = spec.EA(), EI = spec.EI(), rhoA = spec.rhoA(), rhoI = spec.rho * spec.I();
+  for (int k = 2; k <= 8; ++k) {
+    const double K11 = EA / (R * R) + EI * std::pow(k, 4) / std::pow(R, 4);
+    const double K12 = EA * k / (R * R) + EI * std::pow(k, 3) / std::pow(R, 4);
+    const double K22 = EA * k * k / (R * R) + EI * k * k / std::pow(R, 4);
+    const double M11 = rhoA + rhoI * k * k / (R * R), M12 = rhoI * k / (R * R), M22 = rhoA + rhoI / (R * R);
+    const double a = M11 * M22 - M12 * M12, b = -(K11 * M22 + K22 * M11 - 2 * K12 * M12), c = K11 * K22 - K12 * K12;
+    const double lambda = 2 * c / (-b + std::sqrt(b * b - 4 * a * c));  // lower root, cancellation-free
+    const double exact = std::sqrt(lambda);
+    // 1e-9: degree 8 on 40 cells converges these k to ~1e-12 (the extensible test above)
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-9)) << "k = " << k;
+    // and rotary inertia must matter more than that: it lowers omega by ~k^2 I/(A R^2)
+    EXPECT_LT(exact, ring::closed_form::free_ring_extensible(spec, k)[0] * (1 - 1e-7));
+  }
+}
+
 // The extensible closed form couples u = B sin(k theta) and w = A cos(k theta): the
 // computed k = 2 shape must be that wave (MAC with the closed-form shape) and its
 // tangential/radial amplitude ratio the closed form's B/A. This pins down the sign
