@@ -59,7 +59,7 @@ void initial_acceleration(const Problem& p, State& s) {
   const int n = ch.dofs(), c = ch.constraint_count();
   const Matrix G = ch.constraint_jacobian(s.q);
   Vector phi, dphi, xi;
-  detail::load_forces(ch, p.load, s.q, phi, dphi);
+  detail::load_forces(ch, p.load, s.q, phi, nullptr);
   detail::inertia_terms(p.inertia, s.q, s.v, Vector::Zero(n), 0.0, 0.0, xi, nullptr);
   Matrix A = Matrix::Zero(n + c, n + c);
   A.topLeftCorner(n, n) = ch.mass_matrix(s.q);
@@ -80,7 +80,7 @@ void initial_acceleration(const Problem& p, State& s) {
 void residual_and_tangent(const Problem& p, const Vector& q, const Vector& v, const Vector& qdd, double f,
                           double cm, double cv, Vector& r, Matrix* T) {
   Vector phi, dphi;
-  detail::load_forces(p.chain, p.load, q, phi, dphi);
+  detail::load_forces(p.chain, p.load, q, phi, T ? &dphi : nullptr);
   if (T) *T = p.K;
   detail::inertia_terms(p.inertia, q, v, qdd, cm, cv, r, T);
   r += p.chain.spring_forces(q) - f * phi;
@@ -95,70 +95,128 @@ void add_constraint_curvature(const detail::Kinematic& k, const Vector& lambda, 
   T.diagonal() += k.hess_g.transpose() * lambda;
 }
 
-/// Solves the scaled saddle-point system [T G^T; G 0] [dq; dl] = [-r; -g]: rows of g and
-/// columns of lambda multiplied by s = max|T_jj| / l so that both blocks have the size of T
-/// (Bottasso, Bauchau & Cardona 2007). Returns false on a non-finite result. O((n+c)^3).
-bool solve_saddle(const Matrix& T, const Matrix& G, const Vector& r, const Vector& g, double l,
-                  Vector& dq, Vector& dl) {
-  const Eigen::Index n = T.rows(), c = G.rows();
-  const double sc = T.diagonal().cwiseAbs().maxCoeff() / l;
-  Matrix A(n + c, n + c);
-  A.topLeftCorner(n, n) = T;
-  A.topRightCorner(n, c) = sc * G.transpose();
-  A.bottomLeftCorner(c, n) = sc * G;
-  A.bottomRightCorner(c, c).setZero();
-  Vector rhs(n + c);
-  rhs.head(n) = -r;
-  rhs.tail(c) = -sc * g;
-  if (!rhs.allFinite()) return false;
-  const Vector x = A.partialPivLu().solve(rhs);
-  if (!x.allFinite()) return false;
-  dq = x.head(n);
-  dl = sc * x.tail(c);
-  return true;
-}
+/// The factorized Newton matrix of the scaled saddle-point system
+///   [T G^T; G 0] [dq; dl] = [-r; -g],
+/// rows of g and columns of lambda multiplied by s = max|T_jj| / l so that both blocks
+/// have the size of T (Bottasso, Bauchau & Cardona 2007). It is kept across iterations
+/// and steps while the iteration still contracts fast (modified Newton): the integrator
+/// refreshes it at a new step size, when an iteration shrinks the correction by less
+/// than 8, and before giving up on a step. Local to one run of respond().
+class NewtonMatrix {
+ public:
+  bool usable(double h) const { return valid_ && h == h_; }
+  void invalidate() { valid_ = false; }
+  /// O((n+c)^3).
+  void factor(const Matrix& T, const Matrix& G, double l, double h) {
+    const Eigen::Index n = T.rows(), c = G.rows();
+    sc_ = T.diagonal().cwiseAbs().maxCoeff() / l;
+    Matrix A(n + c, n + c);
+    A.topLeftCorner(n, n) = T;
+    A.topRightCorner(n, c) = sc_ * G.transpose();
+    A.bottomLeftCorner(c, n) = sc_ * G;
+    A.bottomRightCorner(c, c).setZero();
+    lu_.compute(A);
+    h_ = h;
+    valid_ = true;
+  }
+  /// O((n+c)^2). False on a non-finite result.
+  bool solve(const Vector& r, const Vector& g, Vector& dq, Vector& dl) const {
+    const Eigen::Index n = r.size(), c = g.size();
+    Vector rhs(n + c);
+    rhs.head(n) = -r;
+    rhs.tail(c) = -sc_ * g;
+    if (!rhs.allFinite()) return false;
+    const Vector x = lu_.solve(rhs);
+    if (!x.allFinite()) return false;
+    dq = x.head(n);
+    dl = sc_ * x.tail(c);
+    return true;
+  }
+
+ private:
+  Eigen::PartialPivLU<Matrix> lu_;
+  double sc_ = 1.0, h_ = 0.0;
+  bool valid_ = false;
+};
+
+/// Decides, iteration by iteration, whether the kept Newton matrix is still good enough.
+struct RefreshPolicy {
+  bool refresh = false;   ///< factor again at the next iteration
+  bool fresh = false;     ///< the matrix was factored at the current iteration
+  double previous = 0.0;  ///< size of the previous correction
+  /// After a correction of size `norm` (not yet applied): true to apply it, false to
+  /// discard it and retry with a fresh matrix (only when the matrix was old).
+  bool accept(double norm, double limit) {
+    if (!(norm <= limit)) {
+      if (fresh) return false;
+      refresh = true;
+      return false;
+    }
+    if (!fresh && previous > 0.0 && norm > 0.125 * previous) refresh = true;
+    previous = norm;
+    return true;
+  }
+};
 
 /// Result of one attempted step.
 struct StepOutcome {
   bool converged = false;
   int iterations = 0;
+  bool reused = false;  ///< began with a Newton matrix kept from an earlier step
 };
 
 /// One index-3 step of size h from `s0` (generalized-alpha, Arnold-Bruls form); on
 /// success writes `s1`. Newton on (q, lambda) with the analytic tangent of
 /// dynamics_model.hpp. O(n^3) per iteration.
 StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s0, double h,
-                        const IntegrationControls& ctl, State& s1) {
+                        const IntegrationControls& ctl, NewtonMatrix& nm, State& s1) {
   const Chain& ch = p.chain;
   const double t1 = s0.t + h;
   const double f1 = p.history.factor(t1);
   const double bh2 = co.beta * h * h;
   const double dqdd_dq = (1.0 - co.alpha_m) / ((1.0 - co.alpha_f) * bh2);
   const double dv_dq = co.gamma / (co.beta * h);
-  // Predictor: unchanged true acceleration, previous multipliers.
-  Vector a1 = (s0.qdd - co.alpha_m * s0.a) / (1.0 - co.alpha_m);
+  // Predictor: constant velocity, previous multipliers. Extrapolating the acceleration
+  // as well is worse after a step load, whose initial accelerations are local and huge
+  // at large n (at n = 640 it overshoots by radians and forces step halving).
+  Vector a1;
   const Vector q_hat = s0.q + h * s0.v + h * h * (0.5 - co.beta) * s0.a;
   const Vector v_hat = s0.v + h * (1.0 - co.gamma) * s0.a;
-  Vector q = q_hat + bh2 * a1;
+  Vector q = s0.q + h * s0.v;
   Vector lambda = s0.lambda;
   Vector v, qdd;
   StepOutcome out;
   Vector r, dqv, dl;
   Matrix T;
+  RefreshPolicy policy;
   for (int it = 1; it <= ctl.max_newton; ++it) {
     out.iterations = it;
     a1 = (q - q_hat) / bh2;
     v = v_hat + h * co.gamma * a1;
     qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
-    const Kinematic k = detail::evaluate(ch, q);
-    residual_and_tangent(p, q, v, qdd, f1, dqdd_dq, dv_dq, r, &T);
-    add_constraint_curvature(k, lambda, T);
+    policy.fresh = policy.refresh || !nm.usable(h);
+    const Kinematic k = detail::evaluate(ch, q, true, policy.fresh);
+    if (it == 1) out.reused = !policy.fresh;
+    residual_and_tangent(p, q, v, qdd, f1, dqdd_dq, dv_dq, r, policy.fresh ? &T : nullptr);
+    if (policy.fresh) {
+      add_constraint_curvature(k, lambda, T);
+      nm.factor(T, k.G, ch.l(), h);
+      policy.refresh = false;
+    }
     r += k.G.transpose() * lambda;
-    if (!solve_saddle(T, k.G, r, k.g, ch.l(), dqv, dl)) return out;
-    if (dqv.cwiseAbs().maxCoeff() > 0.5) return out;  // left the basin: cut the step
+    if (!nm.solve(r, k.g, dqv, dl)) return out;
+    const double norm = dqv.cwiseAbs().maxCoeff();
+    // A correction turning a segment by more than 0.5 rad has left the basin.
+    if (!policy.accept(norm, 0.5)) {
+      if (policy.refresh) continue;
+      return out;
+    }
     q += dqv;
     lambda += dl;
-    if (dqv.cwiseAbs().maxCoeff() <= ctl.tol_q) {
+    // Converged when the correction is below tol_q and the constraints hold to 1e-12 R
+    // (a kept Newton matrix contracts g only linearly, so check it explicitly).
+    if (norm <= ctl.tol_q &&
+        ch.constraints(q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
       out.converged = true;
       break;
     }
@@ -211,7 +269,7 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, Vector& q) {
 /// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
 /// is not: Cardona & Geradin 1989). O(n^3) per iteration.
 StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
-                             const IntegrationControls& ctl, State& s1) {
+                             const IntegrationControls& ctl, NewtonMatrix& nm, State& s1) {
   const Chain& ch = p.chain;
   const int n = ch.dofs(), c = ch.constraint_count(), nz = n - c;
   std::vector<int> dep(c), ind;
@@ -238,8 +296,8 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   const Vector zd_hat = zd0 + h * (1.0 - co.gamma) * zdd0;
   const double t1 = s0.t + h;
   const double f1 = p.history.factor(t1);
-  // Predictor: unchanged acceleration.
-  Vector q = s0.q + h * s0.v + 0.5 * h * h * s0.qdd;
+  // Predictor: constant velocity (see step_index3).
+  Vector q = s0.q + h * s0.v;
   Vector z = take(q, ind);
   Vector v(n), qdd(n), lambda(c), r, dqv, dl;
   Matrix T, Gy(c, c), Gz(c, nz);
@@ -249,7 +307,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   auto complete = [&](Kinematic& k) {
     for (int i = 0; i < nz; ++i) q[ind[i]] = z[i];
     if (!solve_dependent(ch, dep, q)) return false;
-    k = detail::evaluate(ch, q);
+    k = detail::evaluate(ch, q, false, false);
     for (int i = 0; i < c; ++i) Gy.col(i) = k.G.col(dep[i]);
     for (int i = 0; i < nz; ++i) Gz.col(i) = k.G.col(ind[i]);
     const Eigen::PartialPivLU<Matrix> lu(Gy);
@@ -264,21 +322,33 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     return true;
   };
   Kinematic k;
+  RefreshPolicy policy;
   for (int it = 1; it <= ctl.max_newton; ++it) {
     out.iterations = it;
     if (!complete(k)) return out;
     // Multipliers that make the dependent rows of r + G^T lambda vanish; the rest is the
     // reduced residual D^T r. The Newton correction restricted to G dq = 0 solves
     // D^T T D dz = -D^T r, which is the saddle-point system with the full T.
-    residual_and_tangent(p, q, v, qdd, f1, 1.0 / bh2, dv_dq, r, &T);
+    policy.fresh = policy.refresh || !nm.usable(h);
+    if (it == 1) out.reused = !policy.fresh;
+    residual_and_tangent(p, q, v, qdd, f1, 1.0 / bh2, dv_dq, r, policy.fresh ? &T : nullptr);
     lambda = -Gy.transpose().partialPivLu().solve(take(r, dep));
-    add_constraint_curvature(k, lambda, T);
+    if (policy.fresh) {
+      k.hess_g = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());  // see evaluate
+      add_constraint_curvature(k, lambda, T);
+      nm.factor(T, k.G, ch.l(), h);
+      policy.refresh = false;
+    }
     r += k.G.transpose() * lambda;
-    if (!solve_saddle(T, k.G, r, Vector::Zero(c), ch.l(), dqv, dl)) return out;
+    if (!nm.solve(r, Vector::Zero(c), dqv, dl)) return out;
     const Vector dz = take(dqv, ind);
-    if (dz.cwiseAbs().maxCoeff() > 0.5) return out;  // left the basin: cut the step
+    const double norm = dz.cwiseAbs().maxCoeff();
+    if (!policy.accept(norm, 0.5)) {  // more than 0.5 rad: left the basin
+      if (policy.refresh) continue;
+      return out;
+    }
     z += dz;
-    if (dz.cwiseAbs().maxCoeff() <= ctl.tol_q) {
+    if (norm <= ctl.tol_q) {
       out.converged = complete(k);
       break;
     }
@@ -388,18 +458,25 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const double min_dt = controls.min_dt_factor * response.dt;
   double h = response.dt;
   int successes = 0;
+  NewtonMatrix nm;
   for (long k = 1; k <= steps; ++k) {
     const double t_target = response.dt * k;
     int iterations = 0;
-    while (t_target - s.t > 1e-9 * response.dt) {
+    // Sub-steps (after halving) end exactly on the grid; a remainder below 1e-7 dt is
+    // round-off and is snapped. Never leave a sliver: accelerations come from
+    // (q - q_hat) / (beta h^2), so a step of 1e-9 dt would turn round-off into garbage;
+    // a remainder between h and 2 h is split into two equal steps.
+    while (t_target - s.t > 1e-7 * response.dt) {
       const double remaining = t_target - s.t;
       const bool last = remaining <= h * (1.0 + 1e-9);
-      const double hs = last ? remaining : h;
+      const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
       State s1;
-      const StepOutcome o = partitioned ? step_partitioned(p, co, s, hs, controls, s1)
-                                        : step_index3(p, co, s, hs, controls, s1);
+      const StepOutcome o = partitioned ? step_partitioned(p, co, s, hs, controls, nm, s1)
+                                        : step_index3(p, co, s, hs, controls, nm, s1);
       iterations += o.iterations;
       if (!o.converged) {
+        nm.invalidate();
+        if (o.reused) continue;  // first try again with a Newton matrix of this state
         h = 0.5 * hs;
         successes = 0;
         if (h < min_dt)
@@ -440,6 +517,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
         successes = 0;
       }
     }
+    s.t = t_target;
     record(s, iterations, k);
   }
   return th;

@@ -39,10 +39,11 @@ void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Ve
   if (T) T->diagonal() += tdiag;
 }
 
-Kinematic evaluate(const Chain& chain, const Vector& q) {
+Kinematic evaluate(const Chain& chain, const Vector& q, bool values, bool hessian) {
   Kinematic k;
   k.G = chain.constraint_jacobian(q);
-  k.g = chain.constraints(q);
+  if (values) k.g = chain.constraints(q);
+  if (!hessian) return k;
   // The constraints are sums of sinusoids l (a cos phi_j + b sin phi_j) of single angles,
   // so d^2 g/d phi_j^2 = -(that term) = its derivative at phi_j + pi/2.
   k.hess_g = chain.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
@@ -50,8 +51,10 @@ Kinematic evaluate(const Chain& chain, const Vector& q) {
 }
 
 void load_forces(const Chain& chain, const DeadLoad& load, const Vector& q, Vector& phi,
-                 Vector& dphi_diag) {
+                 Vector* dphi) {
   phi = chain.point_load_forces(q, load.hinge, load.force);
+  if (!dphi) return;
+  Vector& dphi_diag = *dphi;
   // Phi_j = l e'(phi_j) . F for j < hinge, so dPhi_j/dphi_j = -l e(phi_j) . F, and the
   // segment direction e(phi_j) is (p_{j+1} - p_j) / l.
   const Eigen::Matrix2Xd p = chain.hinge_positions(q);

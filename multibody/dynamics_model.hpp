@@ -55,11 +55,12 @@ struct Kinematic {
   Vector g;       ///< constraints, m
   Matrix hess_g;  ///< row i, column j: d^2 g_i / d phi_j^2 (c x n; Hessians are diagonal)
 };
-Kinematic evaluate(const Chain& chain, const Vector& q);
+/// G always; g and hess_g only when asked (each costs n sines and cosines).
+Kinematic evaluate(const Chain& chain, const Vector& q, bool values = true, bool hessian = true);
 
-/// Generalized force of the dead load and the diagonal of its derivative dPhi/dq. O(n).
+/// Generalized force of the dead load and (if asked) the diagonal of dPhi/dq. O(n).
 void load_forces(const Chain& chain, const DeadLoad& load, const Vector& q, Vector& phi,
-                 Vector& dphi_diag);
+                 Vector* dphi_diag);
 
 /// Shortest distance between the centre lines of two non-adjacent segments, over the
 /// pairs whose index gap (cyclic) is at least `min_gap`; returns {distance, i, j}. The

@@ -32,7 +32,7 @@ NewtonOutcome newton(const Chain& ch, const detail::DeadLoad& load, const Matrix
     const Matrix G = ch.constraint_jacobian(q);
     // Diagonal constraint Hessians (dynamics_model.hpp): G at every angle + pi/2.
     const Matrix hess = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
-    detail::load_forces(ch, load, q, phi, dphi);
+    detail::load_forces(ch, load, q, phi, &dphi);
     const Vector r = ch.spring_forces(q) + G.transpose() * lambda - s * phi;
     Matrix T = K;
     T.diagonal() += hess.transpose() * lambda - s * dphi;

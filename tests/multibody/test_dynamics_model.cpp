@@ -111,7 +111,7 @@ TEST(MultibodyDynamicsModel, ConstraintAndLoadTangentsMatchFiniteDifferences) {
   hg.diagonal() = k.hess_g.transpose() * s.lambda;
   EXPECT_LT(rel_diff(hg, fd_g), kFdTol);
   Vector p, dp;
-  multibody::detail::load_forces(ch, load, s.q, p, dp);
+  multibody::detail::load_forces(ch, load, s.q, p, &dp);
   Matrix dpm = Matrix::Zero(n, n);
   dpm.diagonal() = dp;
   EXPECT_LT(rel_diff(dpm, fd_p), kFdTol);

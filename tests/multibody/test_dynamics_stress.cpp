@@ -3,11 +3,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "multibody/dynamics.hpp"
 
 namespace {
+
+/// A number for RecordProperty, in scientific notation with 4 significant digits.
+inline std::string sci(double x) {
+  std::ostringstream s;
+  s << std::setprecision(4) << std::scientific << x;
+  return s.str();
+}
 
 using Integrator = ring::ResponseOptions::Integrator;
 
@@ -63,9 +73,9 @@ TEST(MultibodyDynamicsStress, GeneralizedAlphaRunsTenToTheFiveSteps) {
   }
   double max_w = 0.0;
   for (double w : th.work) max_w = std::max(max_w, w);
-  RecordProperty("max_constraint_residual_m", std::to_string(worst_g));
-  RecordProperty("max_energy_excess_J", std::to_string(worst_excess));
-  RecordProperty("final_energy_error_J", std::to_string(th.energy_error.back()));
+  RecordProperty("max_constraint_residual_m", sci(worst_g));
+  RecordProperty("max_energy_excess_J", sci(worst_excess));
+  RecordProperty("final_energy_error_J", sci(th.energy_error.back()));
   RecordProperty("max_newton_iterations", max_it);
   EXPECT_LT(worst_g, 1e-10);
   EXPECT_LT(worst_excess, 1e-3 * max_w);
@@ -92,7 +102,7 @@ TEST(MultibodyDynamicsStress, NewmarkFullSceneReachesSecondOrder) {
   }
   for (size_t k = 0; k + 1 < d.size(); ++k) {
     const double order = std::log2(d[k] / d[k + 1]);
-    RecordProperty("order_" + std::to_string(k), std::to_string(order));
+    RecordProperty("order_" + std::to_string(k), sci(order));
     EXPECT_NEAR(order, 2.0, 0.2) << "differences " << d[k] << ", " << d[k + 1];
   }
 }

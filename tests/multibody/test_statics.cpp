@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "multibody/statics.hpp"
@@ -19,6 +22,13 @@
 #include "tests/support/close.hpp"
 
 namespace {
+
+/// A number for RecordProperty, in scientific notation with 4 significant digits.
+inline std::string sci(double x) {
+  std::ostringstream s;
+  s << std::setprecision(4) << std::scientific << x;
+  return s.str();
+}
 
 ring::RingSpec paper_ring() {
   ring::RingSpec s;
@@ -84,10 +94,10 @@ TEST_P(MultibodyStaticsElastica, ConvergesAtSecondOrderInOneOverN) {
     e_across.push_back(std::abs(d.across - ref.across));
   }
   const double o_along = fitted_order(ns, e_along), o_across = fitted_order(ns, e_across);
-  RecordProperty("order_along", std::to_string(o_along));
-  RecordProperty("order_across", std::to_string(o_across));
-  RecordProperty("err_along_n40", std::to_string(e_along.front() / ref.along));
-  RecordProperty("err_along_n320", std::to_string(e_along.back() / ref.along));
+  RecordProperty("order_along", sci(o_along));
+  RecordProperty("order_across", sci(o_across));
+  RecordProperty("err_along_n40", sci(e_along.front() / ref.along));
+  RecordProperty("err_along_n320", sci(e_along.back() / ref.along));
   // Expected order 2; 0.2 is the band of the acceptance.
   EXPECT_NEAR(o_along, 2.0, 0.2) << "along: errors " << e_along[0] << " .. " << e_along[3];
   EXPECT_NEAR(o_across, 2.0, 0.2) << "across: errors " << e_across[0] << " .. " << e_across[3];
