@@ -91,11 +91,13 @@ namespace fem {
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::FemOptions& options,
                                 int count);
 
-/// Writes the `count` lowest mode shapes to `dir`/fem_modes.vtu (deal.II DataOut) on
-/// the 1-D theta mesh: the x coordinate is the polar angle in radians; for each mode k
-/// (1-based) the fields `radial_k` and `tangential_k` (normalized: largest |component|
-/// is 1) and the field data `omega_k` in the point names. Returns the file written.
-/// Throws like compute_modes and ring::NumericalError if the file cannot be written.
+/// Writes the `count` lowest mode shapes to `dir`/fem_modes.vtu (deal.II DataOut on the
+/// ring as a curve in the plane, Triangulation<1,2>: the circle, or the n-gon). For each
+/// mode k (1-based) with frequency w (rad/s): the scalar fields `radial_k_omega_w` and
+/// `tangential_k_omega_w` (polygon: `ux_...`, `uy_...`) and the vector
+/// `displacement_k_omega_w` (Cartesian, for ParaView's Warp By Vector), scaled so that
+/// the largest nodal value is 1. Returns the file written. O(count N).
+/// Throws like compute_modes, and ring::NumericalError if the file cannot be written.
 std::string write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count,
                       const std::string& dir);
 
