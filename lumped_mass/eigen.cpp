@@ -286,7 +286,7 @@ Eigenpairs solve_sparse(const Model& m, const Reduction& red, int count) {
 
   Eigenpairs p;
   p.method = Method::sparse;
-  p.unknowns = op.size();
+  p.system_order = op.size();
   p.factor_nonzeros = op.factor_nonzeros();
   p.X.resize(m.K.rows(), nev);
   for (int c = 0; c < nev; ++c) {
@@ -324,6 +324,7 @@ Eigenpairs solve(const Model& m, int count, Method method) {
   else
     p = solve_sparse(m, red, count);
 
+  p.unknowns = avail + m.expected_rigid;
   const double threshold = kRigidThreshold * m.lambda_scale;
   p.rigid = 0;
   for (double l : p.lambda) {

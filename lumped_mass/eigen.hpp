@@ -58,8 +58,9 @@ struct Eigenpairs {
                                ///< massless DOFs filled with their condensed values
   int rigid = 0;               ///< rigid modes found (== model.expected_rigid)
   Method method = Method::dense;  ///< the path that ran (dense or sparse)
-  long long unknowns = 0;      ///< size of the eigenproblem (dense: reduced size; sparse:
-                               ///< order of the factorized sparse system)
+  long long unknowns = 0;      ///< dimension of the eigenproblem: admissible DOFs after supports,
+                               ///< constraints and condensation (elastic_dofs() + rigid), both paths
+  long long system_order = 0;  ///< sparse path: order of the factorized mixed system (0 for dense)
   long long factor_nonzeros = 0;  ///< sparse path: nonzeros of the factors (0 for dense)
   double max_residual = 0.0;   ///< largest relative residual of the elastic pairs, see residuals()
 };

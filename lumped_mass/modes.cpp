@@ -22,7 +22,10 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
   r.model["n"] = static_cast<long long>(options.n);
   r.model["variant"] = ring::to_string(options.variant);
   r.model["method"] = std::string(pairs.method == Method::dense ? "dense" : "sparse");
-  if (pairs.method == Method::sparse) r.model["factor_nonzeros"] = pairs.factor_nonzeros;
+  if (pairs.method == Method::sparse) {
+    r.model["system_order"] = pairs.system_order;
+    r.model["factor_nonzeros"] = pairs.factor_nonzeros;
+  }
   r.rigid_modes = pairs.rigid;
   r.unknowns = pairs.unknowns;
   r.max_residual = pairs.max_residual;

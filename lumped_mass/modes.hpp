@@ -19,10 +19,12 @@ namespace lumped {
 
 /// The `count` lowest elastic modes of the variant in `options` (model.hpp), solved as
 /// in eigen.hpp, reported as ring::ModalResult: solver = "lumped"; model = {n, variant,
-/// method ("dense" | "sparse"), and for sparse factor_nonzeros}; rigid_modes (counted
+/// method ("dense" | "sparse"), and for sparse system_order and factor_nonzeros of the
+/// factorized mixed system}; rigid_modes (counted
 /// with kRigidThreshold, not numbered); omega (rad/s, ascending, elastic only); shapes at
 /// the common stations (ring::sample_polygon of the node displacements, anchor = pin
-/// angle or 0 for a free ring); unknowns; seconds (wall time of this call);
+/// angle or 0 for a free ring); unknowns (dimension of the eigenproblem: n - 2 for a
+/// pinned chain, 2n - 2 / 3n - 2 for the pinned frames); seconds (wall time of this call);
 /// max_residual (largest relative residual of the elastic pairs, eigen.hpp residuals()).
 /// \param count 1 <= count <= elastic_dofs() (n - 3 for the chain, 2n - 3 for frame,
 ///              3n - 3 for frame-consistent).

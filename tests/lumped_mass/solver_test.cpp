@@ -95,6 +95,10 @@ TEST_P(LumpedSolver, DenseAndSparseAgree) {
   EXPECT_EQ(std::get<std::string>(s.model.at("method")), "sparse");
   EXPECT_EQ(d.rigid_modes, spec.supports.rigid_modes());
   EXPECT_EQ(s.rigid_modes, spec.supports.rigid_modes());
+  // The eigenproblem's dimension: admissible DOFs (elastic n - 3, 2n - 3, 3n - 3 plus rigid).
+  const int per_node = c.variant == kChain ? 1 : c.variant == kFrame ? 2 : 3;
+  EXPECT_EQ(d.unknowns, per_node * c.n - 3 + spec.supports.rigid_modes());
+  EXPECT_EQ(s.unknowns, d.unknowns);
   ASSERT_EQ(d.omega.size(), 12u);
   ASSERT_EQ(s.omega.size(), 12u);
   for (int i = 0; i < 12; ++i) {
