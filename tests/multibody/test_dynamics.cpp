@@ -419,6 +419,7 @@ TEST(MultibodyDynamics, RejectsInputsThatCannotWork) {
   r.record = {5.0};  // not a hinge
   EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);
   r = paper_scene();
+  EXPECT_THROW(multibody::respond(spec, n_segments(41), r), std::invalid_argument);  // roller off the hinges
   spec.supports.pin.reset();
   spec.supports.roller.reset();
   EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);
