@@ -105,7 +105,7 @@ TEST(Gates, PassFailAndJunit) {
 TEST(Converge, ObservedOrders) {
   const std::string dir = ringtest::temp_dir();
   const auto r = ringvib("converge " + source("scenes/paper1990.toml") +
-                         " --set modes.solvers=[\"multibody\"] --set table.against=[] --out " + dir + " -q");
+                         " --set 'modes.solvers=[\"multibody\"]' --set 'table.against=[]' --out " + dir + " -q");
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream f(dir + "/convergence.csv");
   std::string line;
