@@ -1,6 +1,6 @@
 // Time of the 23 lowest modes of the paper's ring (pinned, rotary inertia on) on the
-// dense path, n = 40, 160, 640, 2000; phases timed separately (assembly + reduction,
-// then the whole compute_modes). Run, Release build:
+// dense path, n = 40, 160, 640, 2000 (and the sparse path at n = 40, 2000, 10000);
+// phases timed separately (assembly + reduction, then the whole compute_modes). Run, Release build:
 //   build/bin/bench_multibody_modes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -23,7 +23,7 @@ void BM_ComputeModes23(benchmark::State& st) {
   ring::MultibodyOptions o;
   o.n = static_cast<int>(st.range(0));
   o.rotary_inertia = st.range(1) != 0;
-  o.method = ring::MultibodyOptions::Method::dense;
+  o.method = st.range(2) ? ring::MultibodyOptions::Method::sparse : ring::MultibodyOptions::Method::dense;
   double solver_seconds = 0;
   ring::ModalResult r;
   for (auto _ : st) {
@@ -36,10 +36,13 @@ void BM_ComputeModes23(benchmark::State& st) {
   st.counters["omega1"] = r.omega[0];
 }
 BENCHMARK(BM_ComputeModes23)
-    ->ArgsProduct({{40, 160, 640, 2000}, {1}})
-    ->Args({640, 0})
-    ->Args({2000, 0})
-    ->ArgNames({"n", "rot"})
+    ->ArgsProduct({{40, 160, 640, 2000}, {1}, {0}})
+    ->Args({640, 0, 0})
+    ->Args({2000, 0, 0})
+    ->Args({40, 1, 1})
+    ->Args({2000, 1, 1})
+    ->Args({10000, 1, 1})
+    ->ArgNames({"n", "rot", "sparse"})
     ->Unit(benchmark::kMillisecond);
 
 void BM_Linearize(benchmark::State& st) {
