@@ -232,23 +232,20 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
   return out;
 }
 
-/// Solves g(q) = 0 for the dependent angles `dep` with the others fixed (Newton on the
-/// c x c block G_y, from the current q). O(n) per iteration. False if it fails.
-bool solve_dependent(const Chain& ch, const std::vector<int>& dep, Vector& q) {
+/// Solves g(q) = 0 for the dependent angles `dep` with the others fixed: chord iterations
+/// with the block G_y of `G` (the Jacobian at a nearby configuration: the caller's last
+/// one, which saves evaluating it here). O(n) per iteration. False if it fails.
+bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix& G, Vector& q) {
   const int c = static_cast<int>(dep.size());
   // |g| is in metres; 1e-15 R sqrt(n) is the round-off of the closure sum of n terms.
   const double tol = 1e-15 * ch.circumradius() * std::sqrt(double(ch.n()));
-  Eigen::PartialPivLU<Matrix> lu;  // chord method: G_y from the first iteration
+  Matrix Gy(c, c);
+  for (int i = 0; i < c; ++i) Gy.col(i) = G.col(dep[i]);
+  const Eigen::PartialPivLU<Matrix> lu(Gy);
   for (int it = 0; it < 30; ++it) {
     const Vector g = ch.constraints(q);
     if (!g.allFinite()) return false;
     if (g.cwiseAbs().maxCoeff() <= tol) return true;
-    if (it == 0) {
-      const Matrix G = ch.constraint_jacobian(q);
-      Matrix Gy(c, c);
-      for (int i = 0; i < c; ++i) Gy.col(i) = G.col(dep[i]);
-      lu.compute(Gy);
-    }
     const Vector dy = -lu.solve(g);
     if (!dy.allFinite()) return false;
     for (int i = 0; i < c; ++i) q[dep[i]] += dy[i];
@@ -273,8 +270,10 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   const Chain& ch = p.chain;
   const int n = ch.dofs(), c = ch.constraint_count(), nz = n - c;
   std::vector<int> dep(c), ind;
+  Matrix G0;
   {
-    const Eigen::ColPivHouseholderQR<Matrix> qr(ch.constraint_jacobian(s0.q));
+    G0 = ch.constraint_jacobian(s0.q);
+    const Eigen::ColPivHouseholderQR<Matrix> qr(G0);
     const auto& perm = qr.colsPermutation().indices();
     std::vector<bool> is_dep(n, false);
     for (int i = 0; i < c; ++i) {
@@ -306,7 +305,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   // kinematics there); false if the dependent angles cannot be found.
   auto complete = [&](Kinematic& k) {
     for (int i = 0; i < nz; ++i) q[ind[i]] = z[i];
-    if (!solve_dependent(ch, dep, q)) return false;
+    if (!solve_dependent(ch, dep, k.G.size() ? k.G : G0, q)) return false;
     k = detail::evaluate(ch, q, false, false);
     for (int i = 0; i < c; ++i) Gy.col(i) = k.G.col(dep[i]);
     for (int i = 0; i < nz; ++i) Gz.col(i) = k.G.col(ind[i]);
@@ -348,6 +347,9 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
       return out;
     }
     z += dz;
+    // The dependent rows of the correction keep G dq = 0 to first order: a predictor
+    // for solve_dependent, which then needs fewer evaluations of g.
+    for (int i = 0; i < c; ++i) q[dep[i]] += dqv[dep[i]];
     if (norm <= ctl.tol_q) {
       out.converged = complete(k);
       break;
