@@ -46,9 +46,13 @@
 //
 // ## Rigid modes
 // A computed omega^2 < kRigidThreshold * s (s as above) is a rigid (zero) mode: counted
-// in ModalResult::rigid_modes, never numbered, never returned. Elastic modes of any
-// ring are >= ~2 s, and rigid ones come out at ~1e-13 s, so the threshold separates them
-// by many orders of magnitude. Expected: 1 (pin), 0 (pin + roller), 3 (free).
+// in ModalResult::rigid_modes, never numbered, never returned. The chain is inextensible,
+// so omega^2 / s depends on n and the supports only: the lowest elastic omega^2 is
+// 0.79 s (n = 4, pinned) and >= 1.1 s from n = 5 (2.5 s pinned, 7.2 s free at large n),
+// while the robust path's rigid modes come out at |omega^2| <= 2e-12 s up to n = 2000:
+// the threshold 1e-6 s sits more than five orders from both. (The paper's coordinates
+// at n = 2000 without rotary inertia push the rigid mode to 1.5e-5 s and miss it; see
+// MultibodyStress.) Expected: 1 (pin), 0 (pin + roller), 3 (free).
 //
 // ## Outputs
 // ModalResult: solver "multibody"; model {n, rotary_inertia, dependent, method};
