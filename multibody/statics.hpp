@@ -5,14 +5,18 @@
 //
 // by load stepping with full Newton (analytic tangent K + sum_k lambda_k Hess g_k
 // - s dPhi/dphi). An increment whose Newton iteration fails (no convergence in 25
-// iterations, or a step turning a segment by more than 0.5 rad) is halved; below
-// 1e-6 of the requested increment a ring::NumericalError names the load factor
-// reached. No arc-length continuation: the diametrally loaded ring (pin + roller,
-// force along the pin-roller line) has no limit point up to self-contact (its load-
-// deflection curve rises monotonically, checked against the elastica in the tests),
-// so a limit point, if some other load produced one, is reported, not passed.
-// Self-contact (non-adjacent segments closer than the section depth) is reported as a
-// ring::NumericalError. Kinematics from multibody/chain.hpp unchanged.
+// iterations, or a step turning a segment by more than 0.5 rad) is halved. When the
+// increment falls below 1e-6 of the requested one (a limit point in the load), the
+// solver switches to arc-length continuation (Crisfield 1981, cylindrical: the norm of
+// the change of the angles per step is fixed, the load factor is an unknown) from the
+// last equilibrium and follows the path through the limit point until it comes back to
+// the full load (then a final Newton at s = 1), or reports why not.
+// Self-contact (non-adjacent segments closer than the section depth) ends the solve
+// with a ring::NumericalError naming the load factor (and the limit point, if the path
+// went through one): the chain model has no contact. Measured: the diametral load along
+// the pin-roller line has no limit point up to contact (P R^2/EI ~ 7.5); a load at 90
+// deg pushing toward the centre has one at P R^2/EI ~ 7.5, past which the top snaps
+// down onto the bottom. Kinematics from multibody/chain.hpp unchanged.
 #pragma once
 
 #include "ring/errors.hpp"
@@ -28,7 +32,8 @@ namespace multibody {
 /// deformed position. Cost: O(n^3) per Newton iteration (dense).
 /// Requires a pin and a roller (otherwise the rigid rotation about the pin is free).
 /// Throws std::invalid_argument for inputs that can never work and
-/// ring::NumericalError when no equilibrium path is found or the ring touches itself.
+/// ring::NumericalError when no equilibrium path reaches the full load or the ring
+/// touches itself.
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics);
 

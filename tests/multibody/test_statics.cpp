@@ -187,3 +187,39 @@ TEST(MultibodyStatics, SelfContactIsReportedNotSolvedThrough) {
 }
 
 }  // namespace
+
+namespace {
+
+// A load at the top (90 deg) pushing toward the centre: the ring on its pin and roller
+// is an arch pressed at its crown. Below P R^2/EI ~ 7.5 plain load stepping converges
+// (checked at 7). At 8 load stepping stops at a limit point (measured: load factor 0.94
+// of 8); the arc-length continuation must carry the path through it instead of giving
+// up there. Past the limit the load falls while the top snaps down (measured: contact at
+// load factor 0.87 < 0.94, so the load did pass a maximum) onto the bottom of the ring:
+// a self-contact, which must be reported as such, naming the limit point.
+TEST(MultibodyStatics, ContinuationPassesTheLimitPointOfAPressedArch) {
+  ring::RingSpec spec;
+  spec.section.diameter = 0.12;
+  spec.supports.pin = 180.0;
+  spec.supports.roller = 0.0;
+  ring::MultibodyOptions o;
+  ring::StaticOptions st;
+  st.load.angle = 90.0;
+  st.record = {90.0};
+  const double unit = spec.EI() / (spec.radius * spec.radius);
+  st.load.force = {0.0, -7.0 * unit};
+  st.steps = 28;
+  EXPECT_NO_THROW(multibody::solve_static(spec, o, st));
+  st.load.force = {0.0, -8.0 * unit};
+  st.steps = 32;
+  try {
+    multibody::solve_static(spec, o, st);
+    FAIL() << "expected a NumericalError (self-contact past the limit point)";
+  } catch (const ring::NumericalError& e) {
+    const std::string w = e.what();
+    EXPECT_NE(w.find("limit point"), std::string::npos) << w;
+    EXPECT_NE(w.find("touches itself"), std::string::npos) << w;
+  }
+}
+
+}  // namespace
