@@ -506,16 +506,19 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   // Hinge displacements delta p_k = delta p_0 + l sum_{j<k} e'(phi0_j) delta phi_j.
   const int n = chain.n();
   const Vector& phi0 = chain.phi0();
+  sol.hinge_ux.resize(n, count);
+  sol.hinge_uy.resize(n, count);
   for (int k = 0; k < count; ++k) {
-    std::vector<double> ux(n), uy(n);
     double x = chain.free() ? sol.dq(n, k) : 0.0, yv = chain.free() ? sol.dq(n + 1, k) : 0.0;
     for (int j = 0; j < n; ++j) {
-      ux[j] = x;
-      uy[j] = yv;
+      sol.hinge_ux(j, k) = x;
+      sol.hinge_uy(j, k) = yv;
       x -= chain.l() * std::sin(phi0[j]) * sol.dq(j, k);
       yv += chain.l() * std::cos(phi0[j]) * sol.dq(j, k);
     }
-    res.shapes.push_back(ring::sample_polygon(chain.anchor_deg(), ux, uy));
+    const Vector ux = sol.hinge_ux.col(k), uy = sol.hinge_uy.col(k);
+    res.shapes.push_back(ring::sample_polygon(chain.anchor_deg(), std::vector<double>(ux.data(), ux.data() + n),
+                                              std::vector<double>(uy.data(), uy.data() + n)));
   }
   return sol;
 }

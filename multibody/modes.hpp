@@ -119,6 +119,9 @@ struct ModalSolution {
   ring::ModalResult result;
   Matrix x;             ///< r x count reduced eigenvectors, M0-orthonormal
   Matrix dq;            ///< dofs x count chain-coordinate shapes delta q = D x
+  /// n x count hinge displacements (m per unit modal amplitude, ring-centred frame):
+  /// row k = hinge k at rest angle anchor + 360 k / n; the linearized kinematics of dq.
+  Matrix hinge_ux, hinge_uy;
   Eigen::VectorXd rigid_omega2;  ///< computed omega^2 of the modes counted as rigid
   LinearModel model;    ///< K0, M0 and D used
 };
