@@ -1,6 +1,13 @@
 #!/usr/bin/env bash
-# Configures (Release) and builds everything into build/.
+# Configures (Release) and builds everything into build/. The compiler's output goes to
+# build/build.log and is shown only if the build fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j "$(nproc)"
+mkdir -p build
+echo "build: compiling into build/ (the first build takes several minutes: deal.II is slow to compile)"
+if ! { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j "$(nproc)"; } >build/build.log 2>&1; then
+  grep -E "error|Error" build/build.log | head -40 >&2 || true
+  echo "build: failed; the whole log is in build/build.log" >&2
+  exit 1
+fi
+echo "build: done"
