@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <stdexcept>
 
 #include "compare/commands.hpp"
 #include "ring/errors.hpp"
@@ -80,6 +81,9 @@ int main(int argc, char** argv) {
     if (*bench) return cmp::cmd_bench(a, out);
   } catch (const ring::InputError& e) {
     std::cerr << "ringvib: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {  // a solver's "can never work" check
+    std::cerr << "ringvib: error: " << a.scene << ": " << e.what() << "\n";
     return 2;
   } catch (const ring::NumericalError& e) {
     std::cerr << "ringvib: numerical failure: " << e.what() << "\n";

@@ -502,6 +502,9 @@ Scene build(const toml::table& root, const Reader& r) {
     const std::string sec = "static";
     r.known_keys(*t, sec, {"at", "force", "steps", "record"});
     if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a static analysis needs a pin (the ring is free)");
+    if (!s.ring.supports.roller)
+      r.fail("supports.roller", &root,
+             "a static analysis needs a roller as well as the pin: without it the ring can turn about the pin");
     StaticOptions o;
     o.load = read_load(r, *t, sec, false);
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));

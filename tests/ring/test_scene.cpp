@@ -127,12 +127,16 @@ TEST(SceneReject, FemDegreeOne) { expect_rejected(kPaper + "[fem]\ndegree = 1\n"
 TEST(SceneReject, TableComparesBaseWithItself) {
   expect_rejected(kPaper + "[table]\nbase = \"multibody\"\nagainst = [\"multibody\"]\n", "table.against");
 }
+const std::string kRollered = replace(kPaper, "pin = 180.0", "pin = 180.0\nroller = 0.0");
 TEST(SceneReject, LoadNotOnANode) {
-  expect_rejected(kPaper + "[static]\nat = 5.0\nforce = [-1.0, 0.0]\n", "static.at", "not a node");
+  expect_rejected(kRollered + "[static]\nat = 5.0\nforce = [-1.0, 0.0]\n", "static.at", "not a node");
 }
-TEST(SceneReject, LoadAtThePin) { expect_rejected(kPaper + "[static]\nat = 180.0\nforce = [-1.0, 0.0]\n", "static.at", "at the pin"); }
+TEST(SceneReject, LoadAtThePin) { expect_rejected(kRollered + "[static]\nat = 180.0\nforce = [-1.0, 0.0]\n", "static.at", "at the pin"); }
 TEST(SceneReject, ForceWithThreeComponents) {
-  expect_rejected(kPaper + "[static]\nat = 0.0\nforce = [-1.0, 0.0, 2.0]\n", "static.force", "2 numbers");
+  expect_rejected(kRollered + "[static]\nat = 0.0\nforce = [-1.0, 0.0, 2.0]\n", "static.force", "2 numbers");
+}
+TEST(SceneReject, StaticsWithoutRoller) {
+  expect_rejected(kPaper + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\n", "supports.roller", "turn about the pin");
 }
 TEST(SceneReject, StaticsOnAFreeRing) {
   expect_rejected(replace(kPaper, "pin = 180.0", "") + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\n", "supports.pin");
@@ -158,7 +162,8 @@ TEST(SceneSet, IntegerOverride) {
   EXPECT_EQ(s.lumped.n, 40);
 }
 TEST(SceneSet, ArrayOverrideCreatesSection) {
-  const ring::Scene s = ring::parse_scene(kPaper, "p.toml", {"static.at=0.0", "static.force=[-2e4,0.0]"});
+  const ring::Scene s =
+      ring::parse_scene(kPaper, "p.toml", {"supports.roller=0.0", "static.at=0.0", "static.force=[-2e4,0.0]"});
   ASSERT_TRUE(s.statics);
   EXPECT_EQ(s.statics->load.force[0], -2e4);
   EXPECT_EQ(s.statics->load.force[1], 0.0);
