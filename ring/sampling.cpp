@@ -6,23 +6,44 @@
 #include "ring/spec.hpp"
 
 namespace ring {
+namespace {
+
+/// cos and sin of every station angle, computed once (a constant table).
+struct StationDirections {
+  double c[kStations], s[kStations];
+  StationDirections() {
+    for (int i = 0; i < kStations; ++i) {
+      c[i] = std::cos(station_angle(i) * M_PI / 180.0);
+      s[i] = std::sin(station_angle(i) * M_PI / 180.0);
+    }
+  }
+};
+const StationDirections& directions() {
+  static const StationDirections d;
+  return d;
+}
+
+}  // namespace
 
 ModeShape sample_polygon(double anchor_deg, const std::vector<double>& ux,
                          const std::vector<double>& uy) {
   const int n = static_cast<int>(ux.size());
+  const StationDirections& dir = directions();
+  const double anchor = wrap_degrees(anchor_deg);
   ModeShape s;
   s.radial.resize(kStations);
   s.tangential.resize(kStations);
   for (int i = 0; i < kStations; ++i) {
-    const double a = station_angle(i);
-    const double steps = wrap_degrees(a - anchor_deg) * n / 360.0;
+    double rel = station_angle(i) - anchor;  // wrap_degrees without fmod
+    if (rel < 0.0) rel += 360.0;
+    const double steps = rel * n / 360.0;
     int k = static_cast<int>(std::floor(steps));
     double f = steps - k;
     if (k >= n) { k = n - 1; f = 1.0; }  // steps rounded up to n
     const int k1 = (k + 1) % n;
     const double x = (1.0 - f) * ux[k] + f * ux[k1];
     const double y = (1.0 - f) * uy[k] + f * uy[k1];
-    const double c = std::cos(a * M_PI / 180.0), sn = std::sin(a * M_PI / 180.0);
+    const double c = dir.c[i], sn = dir.s[i];
     s.radial[i] = c * x + sn * y;
     s.tangential[i] = -sn * x + c * y;
   }
