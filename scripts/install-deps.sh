@@ -18,6 +18,7 @@ packages=(
   libbenchmark-dev         # bench/
   gnuplot-nox              # figures (pngcairo terminal)
   libxml2-utils            # xmllint: the tests check that JUnit output parses
+  time                     # /usr/bin/time -v: peak memory in bench/process.sh
 )
 
 missing=()
