@@ -8,6 +8,7 @@
 
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
+#include "multibody/dynamics_sparse.hpp"
 
 namespace multibody {
 namespace {
@@ -44,12 +45,37 @@ struct State {
 /// The whole problem, fixed for a run.
 struct Problem {
   const Chain& chain;
-  detail::Inertia inertia;
+  detail::Inertia inertia;  ///< dense path only (O(n^2) memory)
   DeadLoad load;
   ring::LoadHistory history;
-  Matrix K;  ///< spring stiffness (constant)
-  Matrix C;  ///< damping (constant): a M(q0) + b K + hinge dampers
+  Matrix K;  ///< spring stiffness (constant; dense path only)
+  Matrix C;  ///< damping (constant): a M(q0) + b K + hinge dampers (dense path only)
   bool damped = false;
+  bool sparse = false;     ///< O(n) structured path (dynamics_sparse.hpp)
+  double damp_mass = 0.0;  ///< a of C = a M(q0) + damp_cyclic (2,-1,-1 cyclic)
+  double damp_cyclic = 0.0;
+  /// C v in O(n) (sparse path) or with the dense C.
+  Vector damping_times(const Vector& v) const {
+    if (!sparse) return C * v;
+    Vector y = damp_mass * chain.mass_times(chain.q0(), v);
+    const Eigen::Index n = v.size();
+    for (Eigen::Index k = 0; k < n; ++k)
+      y[k] += damp_cyclic * (2.0 * v[k] - v[(k + n - 1) % n] - v[(k + 1) % n]);
+    return y;
+  }
+};
+
+/// The Newton tangent: a dense matrix, or the O(n) structured form of the sparse path.
+struct Tangent {
+  Matrix dense;
+  detail::StructuredMatrix structured;
+  bool sparse = false;
+  void add_diagonal(const Vector& d) {
+    if (sparse)
+      structured.diag += d;
+    else
+      dense.diagonal() += d;
+  }
 };
 
 /// Consistent initial accelerations and multipliers: the index-1 problem
@@ -60,6 +86,19 @@ void initial_acceleration(const Problem& p, State& s) {
   const Matrix G = ch.constraint_jacobian(s.q);
   Vector phi, dphi, xi;
   detail::load_forces(ch, p.load, s.q, phi, nullptr);
+  if (p.sparse) {  // the same system through the structured mass matrix, O(n)
+    xi = ch.quadratic_velocity(s.q, s.v);
+    const Vector b = p.history.factor(s.t) * phi - xi - p.damping_times(s.v) - ch.spring_forces(s.q);
+    detail::SparseSaddle lu;
+    Vector qdd, lambda;
+    if (!lu.factor(detail::mass_structured(ch, s.q), G, 1.0) ||
+        !lu.solve(b, -ch.constraint_jdot_qdot(s.q, s.v), qdd, lambda))
+      throw std::runtime_error("multibody::respond: initial accelerations not computable");
+    s.qdd = qdd;
+    s.lambda = lambda;
+    s.a = s.qdd;
+    return;
+  }
   detail::inertia_terms(p.inertia, s.q, s.v, Vector::Zero(n), 0.0, 0.0, xi, nullptr);
   Matrix A = Matrix::Zero(n + c, n + c);
   A.topLeftCorner(n, n) = ch.mass_matrix(s.q);
@@ -77,22 +116,45 @@ void initial_acceleration(const Problem& p, State& s) {
 /// Full residual r (without G^T lambda) and tangent T of the equations of motion at
 /// (q, v, qdd) for load factor f, with dqdd/dq = cm and dv/dq = cv along the
 /// integrator's formulas (without the constraint curvature). O(n^2).
+/// O(n^2) on the dense path, O(n) on the sparse one.
 void residual_and_tangent(const Problem& p, const Vector& q, const Vector& v, const Vector& qdd, double f,
-                          double cm, double cv, Vector& r, Matrix* T) {
+                          double cm, double cv, Vector& r, Tangent* T) {
   Vector phi, dphi;
   detail::load_forces(p.chain, p.load, q, phi, T ? &dphi : nullptr);
-  if (T) *T = p.K;
-  detail::inertia_terms(p.inertia, q, v, qdd, cm, cv, r, T);
+  if (p.sparse) {
+    if (T) {
+      T->sparse = true;
+      T->structured = detail::StructuredMatrix{};
+      T->structured.diag = Vector::Zero(q.size());
+      T->structured.cyclic = p.chain.K();
+    }
+    detail::inertia_terms_structured(p.chain, q, v, qdd, cm, cv, r, T ? &T->structured : nullptr);
+    if (T && p.damped) {
+      T->structured.cyclic += cv * p.damp_cyclic;
+      if (p.damp_mass > 0.0) {
+        detail::StructuredMatrix M0 = detail::mass_structured(p.chain, p.chain.q0());
+        T->structured.diag += cv * p.damp_mass * M0.diag;
+        M0.terms[0].coef *= cv * p.damp_mass;
+        T->structured.terms.push_back(std::move(M0.terms[0]));
+      }
+    }
+  } else {
+    if (T) {
+      T->sparse = false;
+      T->dense = p.K;
+    }
+    detail::inertia_terms(p.inertia, q, v, qdd, cm, cv, r, T ? &T->dense : nullptr);
+    if (T && p.damped) T->dense += cv * p.C;
+  }
   r += p.chain.spring_forces(q) - f * phi;
-  if (p.damped) r += p.C * v;
+  if (p.damped) r += p.damping_times(v);
   if (!T) return;
-  if (p.damped) *T += cv * p.C;
-  T->diagonal() -= f * dphi;
+  T->add_diagonal(-f * dphi);
 }
 
 /// Adds the constraint curvature sum_i lambda_i Hess g_i (diagonal) to T. O(n).
-void add_constraint_curvature(const detail::Kinematic& k, const Vector& lambda, Matrix& T) {
-  T.diagonal() += k.hess_g.transpose() * lambda;
+void add_constraint_curvature(const detail::Kinematic& k, const Vector& lambda, Tangent& T) {
+  T.add_diagonal(k.hess_g.transpose() * lambda);
 }
 
 /// The factorized Newton matrix of the scaled saddle-point system
@@ -106,8 +168,16 @@ class NewtonMatrix {
  public:
   bool usable(double h) const { return valid_ && h == h_; }
   void invalidate() { valid_ = false; }
-  /// O((n+c)^3).
-  void factor(const Matrix& T, const Matrix& G, double l, double h) {
+  /// O((n+c)^3) dense, O(n) sparse. False if the sparse factorization fails.
+  bool factor(const Tangent& Tn, const Matrix& G, double l, double h) {
+    sparse_ = Tn.sparse;
+    if (sparse_) {
+      sc_ = Tn.structured.diagonal().cwiseAbs().maxCoeff() / l;
+      h_ = h;
+      valid_ = slu_.factor(Tn.structured, G, sc_);
+      return valid_;
+    }
+    const Matrix& T = Tn.dense;
     const Eigen::Index n = T.rows(), c = G.rows();
     sc_ = T.diagonal().cwiseAbs().maxCoeff() / l;
     Matrix A(n + c, n + c);
@@ -118,10 +188,16 @@ class NewtonMatrix {
     lu_.compute(A);
     h_ = h;
     valid_ = true;
+    return true;
   }
   /// O((n+c)^2). False on a non-finite result.
   bool solve(const Vector& r, const Vector& g, Vector& dq, Vector& dl) const {
     const Eigen::Index n = r.size(), c = g.size();
+    if (sparse_) {
+      if (!slu_.solve(-r, -sc_ * g, dq, dl)) return false;
+      dl *= sc_;
+      return true;
+    }
     Vector rhs(n + c);
     rhs.head(n) = -r;
     rhs.tail(c) = -sc_ * g;
@@ -135,6 +211,8 @@ class NewtonMatrix {
 
  private:
   Eigen::PartialPivLU<Matrix> lu_;
+  detail::SparseSaddle slu_;
+  bool sparse_ = false;
   double sc_ = 1.0, h_ = 0.0;
   bool valid_ = false;
 };
@@ -187,7 +265,7 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
   Vector v, qdd;
   StepOutcome out;
   Vector r, dqv, dl;
-  Matrix T;
+  Tangent T;
   RefreshPolicy policy;
   for (int it = 1; it <= ctl.max_newton; ++it) {
     out.iterations = it;
@@ -200,7 +278,7 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
     residual_and_tangent(p, q, v, qdd, f1, dqdd_dq, dv_dq, r, policy.fresh ? &T : nullptr);
     if (policy.fresh) {
       add_constraint_curvature(k, lambda, T);
-      nm.factor(T, k.G, ch.l(), h);
+      if (!nm.factor(T, k.G, ch.l(), h)) return out;
       policy.refresh = false;
     }
     r += k.G.transpose() * lambda;
@@ -299,7 +377,8 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   Vector q = s0.q + h * s0.v;
   Vector z = take(q, ind);
   Vector v(n), qdd(n), lambda(c), r, dqv, dl;
-  Matrix T, Gy(c, c), Gz(c, nz);
+  Tangent T;
+  Matrix Gy(c, c), Gz(c, nz);
   StepOutcome out;
   // Positions, velocities and accelerations of all angles from z (and the constraint
   // kinematics there); false if the dependent angles cannot be found.
@@ -335,7 +414,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     if (policy.fresh) {
       k.hess_g = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());  // see evaluate
       add_constraint_curvature(k, lambda, T);
-      nm.factor(T, k.G, ch.l(), h);
+      if (!nm.factor(T, k.G, ch.l(), h)) return out;
       policy.refresh = false;
     }
     r += k.G.transpose() * lambda;
@@ -365,6 +444,10 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   return out;
 }
 
+/// Segments from which the contact test uses the grid of closest_nonadjacent_grid:
+/// below, the O(n^2) box loop is as fast (both well under the step's cost).
+constexpr int kGridContact = 128;
+
 std::string describe(double t) {
   std::ostringstream s;
   s.precision(6);
@@ -373,6 +456,14 @@ std::string describe(double t) {
 }
 
 }  // namespace
+
+bool use_sparse_path(const ring::MultibodyOptions& options) {
+  switch (options.method) {
+    case ring::MultibodyOptions::Method::dense: return false;
+    case ring::MultibodyOptions::Method::sparse: return true;
+    default: return options.n >= kSparseDynamicsCrossover;
+  }
+}
 
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
@@ -393,15 +484,21 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
 
   const Chain chain(spec, options, response.load.angle);
   const int n = chain.dofs();
-  Problem p{chain, detail::inertia_constants(chain), {chain.hinge_at(response.load.angle),
-                    {response.load.force[0], response.load.force[1]}},
-            response.load.history, chain.stiffness_matrix(), Matrix::Zero(n, n), false};
+  const bool sparse = use_sparse_path(options);
+  Problem p{chain, sparse ? detail::Inertia{} : detail::inertia_constants(chain),
+            {chain.hinge_at(response.load.angle), {response.load.force[0], response.load.force[1]}},
+            response.load.history, sparse ? Matrix() : chain.stiffness_matrix(),
+            sparse ? Matrix() : Matrix::Zero(n, n), false};
+  p.sparse = sparse;
   if (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0) {
     p.damped = true;
     // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
     // pattern (cyclic 2, -1, -1), so they are the stiffness matrix times c / K.
-    p.C = response.rayleigh_mass * chain.mass_matrix(chain.q0()) +
-          (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * p.K;
+    p.damp_mass = response.rayleigh_mass;
+    p.damp_cyclic = (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K();
+    if (!sparse)
+      p.C = response.rayleigh_mass * chain.mass_matrix(chain.q0()) +
+            (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * p.K;
   }
   const Coefficients co = coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
@@ -497,7 +594,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
         // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
         // system this is exactly the energy the discrete damping force removes.
         const Vector vm = s.v + s1.v;
-        dissipated += 0.25 * hs * vm.dot(p.C * vm);
+        dissipated += 0.25 * hs * vm.dot(p.damping_times(vm));
       }
       s = std::move(s1);
       if (last) s.t = t_target;  // no round-off drift of the sub-steps
@@ -505,7 +602,11 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
         fail(IntegrationFailure::Reason::not_finite,
              "multibody::respond: non-finite state at t = " + describe(s.t) + " s");
       if (controls.check_contact) {
-        const auto cp = detail::closest_nonadjacent(chain.hinge_positions(s.q), gap, depth);
+        // Above kGridContact segments the uniform grid (same pairs, same result, O(n)).
+        const Eigen::Matrix2Xd hp = chain.hinge_positions(s.q);
+        const auto cp = chain.n() >= kGridContact
+                            ? detail::closest_nonadjacent_grid(hp, chain.l(), gap, depth)
+                            : detail::closest_nonadjacent(hp, gap, depth);
         if (cp.distance < depth) {
           std::ostringstream m;
           m << "multibody::respond: the ring touches itself at t = " << describe(s.t)

@@ -84,6 +84,13 @@ struct IntegrationControls {
   bool check_contact = true;    ///< test non-adjacent segments for contact each step (O(n^2))
 };
 
+/// Segments from which MultibodyOptions::Method::automatic takes the O(n) sparse path
+/// (dynamics_sparse.hpp); measured crossover, see bench/multibody/bench_dynamics.cpp.
+constexpr int kSparseDynamicsCrossover = 200;
+
+/// True when respond() takes the O(n) structured/sparse path for these options.
+bool use_sparse_path(const ring::MultibodyOptions& options);
+
 /// Forced response from rest in the undeformed state (phi = phi0, phi' = 0).
 /// Requires a pin (and normally a roller; without one the rigid rotation about the
 /// pin is left to the dynamics). The load acts at `response.load.angle`, which must be

@@ -11,3 +11,7 @@ ringvib_test(multibody_statics_tests
 ringvib_test(multibody_dynamics_stress_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_dynamics_stress.cpp
   LIBS multibody LABELS stress)
+# Issue 8 point 2: the O(n) path of the forced response.
+ringvib_test(multibody_dynamics_sparse_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_dynamics_sparse.cpp
+  LIBS multibody LABELS validation)

@@ -1,0 +1,259 @@
+#include "multibody/dynamics_sparse.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace multibody::detail {
+namespace {
+inline Eigen::Vector2d e(double a) { return {std::cos(a), std::sin(a)}; }
+inline Eigen::Vector2d eprime(double a) { return {-std::sin(a), std::cos(a)}; }
+inline double A_diag(Eigen::Index n, Eigen::Index j) { return double(n - 1 - j) + 0.25; }
+}  // namespace
+
+Eigen::Matrix2Xd apply_A(const Eigen::Matrix2Xd& w) {
+  const Eigen::Index n = w.cols();
+  Eigen::Matrix2Xd y(2, n), z(2, n);
+  Eigen::Vector2d acc = Eigen::Vector2d::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) {  // y = L w
+    y.col(i) = acc + 0.5 * w.col(i);
+    acc += w.col(i);
+  }
+  acc.setZero();
+  for (Eigen::Index j = n - 1; j >= 0; --j) {  // z = L^T y
+    z.col(j) = acc + 0.5 * y.col(j);
+    acc += y.col(j);
+  }
+  return z;
+}
+
+Vector StructuredMatrix::times(const Vector& x) const {
+  const Eigen::Index n = size();
+  Vector y = diag.cwiseProduct(x);
+  if (cyclic != 0.0)
+    for (Eigen::Index k = 0; k < n; ++k)
+      y[k] += cyclic * (2.0 * x[k] - x[(k + n - 1) % n] - x[(k + 1) % n]);
+  for (const LowRankTerm& t : terms) {
+    Eigen::Matrix2Xd w(2, n);
+    for (Eigen::Index j = 0; j < n; ++j) w.col(j) = t.right.col(j) * x[j];
+    const Eigen::Matrix2Xd z = apply_A(w);
+    for (Eigen::Index j = 0; j < n; ++j) y[j] += t.coef * t.left.col(j).dot(z.col(j));
+  }
+  return y;
+}
+
+Vector StructuredMatrix::diagonal() const {
+  const Eigen::Index n = size();
+  Vector d = diag.array() + 2.0 * cyclic;
+  for (const LowRankTerm& t : terms)
+    for (Eigen::Index j = 0; j < n; ++j) d[j] += t.coef * A_diag(n, j) * t.left.col(j).dot(t.right.col(j));
+  return d;
+}
+
+Matrix StructuredMatrix::dense() const {
+  const Eigen::Index n = size();
+  Matrix M(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) M.col(j) = times(Vector::Unit(n, j));
+  return M;
+}
+
+// Derivation (angles only; the pinned chain). With midpoint accelerations
+//   a_i = l sum_k L_ik (e'_k qdd_k - e_k v_k^2),  e_k = e(phi_k), e'_k = e'(phi_k),
+// the inertia force is f = J^T m a + Jr qdd with J_ik = l L_ik e'_k, i.e.
+//   f_j = m l^2 e'_j . Y_j + Jr qdd_j,   Y = (I_2 (x) A) h,  h_k = e'_k qdd_k - e_k v_k^2
+// (this is M qdd + xi of chain.hpp: xi_j = m l^2 sum_k A_jk sin(phi_j - phi_k) v_k^2).
+// d f_j / d(phi_k, v_k) through h_k (with qdd = cm dq, v = cv dq along the integrator):
+//   m l^2 A_jk e'_j . (cm e'_k - e_k qdd_k - e'_k v_k^2 - 2 cv e_k v_k)  =: U^T A W,
+// and through e'_j itself (diagonal): -m l^2 e_j . Y_j, plus Jr cm. The k = j entry of
+// U^T A W is m l^2 A_jj (cm - v_j^2), and together with the diagonal this is the dense
+// tangent's cm M_jj + d f_j/d phi_j (checked entry by entry in test_dynamics_sparse.cpp).
+void inertia_terms_structured(const Chain& chain, const Vector& q, const Vector& v,
+                              const Vector& qdd, double cm, double cv, Vector& r,
+                              StructuredMatrix* T) {
+  if (chain.free()) throw std::logic_error("inertia_terms_structured: pinned chains only");
+  const Eigen::Index n = chain.n();
+  const double ml2 = chain.m() * chain.l() * chain.l(), jr = chain.Jr();
+  Eigen::Matrix2Xd E(2, n), Ep(2, n), h(2, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    E.col(k) = e(q[k]);
+    Ep.col(k) = eprime(q[k]);
+    h.col(k) = Ep.col(k) * qdd[k] - E.col(k) * (v[k] * v[k]);
+  }
+  const Eigen::Matrix2Xd Y = apply_A(h);
+  r.resize(n);
+  for (Eigen::Index j = 0; j < n; ++j) r[j] = ml2 * Ep.col(j).dot(Y.col(j)) + jr * qdd[j];
+  if (!T) return;
+  if (T->diag.size() != n) {
+    T->diag = Vector::Zero(n);
+  }
+  LowRankTerm t;
+  t.coef = ml2;
+  t.left = Ep;
+  t.right.resize(2, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    t.right.col(k) = (cm - v[k] * v[k]) * Ep.col(k) - (qdd[k] + 2.0 * cv * v[k]) * E.col(k);
+    T->diag[k] += jr * cm - ml2 * E.col(k).dot(Y.col(k));
+  }
+  T->terms.push_back(std::move(t));
+}
+
+StructuredMatrix mass_structured(const Chain& chain, const Vector& q) {
+  const Eigen::Index n = chain.n();
+  StructuredMatrix M;
+  M.diag = Vector::Constant(n, chain.Jr());
+  LowRankTerm t;
+  t.coef = chain.m() * chain.l() * chain.l();
+  t.left.resize(2, n);
+  for (Eigen::Index k = 0; k < n; ++k) t.left.col(k) = eprime(q[k]);
+  t.right = t.left;
+  M.terms.push_back(std::move(t));
+  return M;
+}
+
+// Unknowns, segment by segment: dq_j, then per term (y_x, y_y, s_x, s_y)_j; then the
+// c multipliers. Rows in the same order: the equation of dq_j, the y and s relations,
+// the constraints. The term's coefficient goes into its W rows (y carries force units),
+// so the equation rows of dq_j hold the unit vectors U_j.
+bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc) {
+  const Eigen::Index n = T.size(), c = G.rows();
+  const int nt = static_cast<int>(T.terms.size());
+  stride_ = 1 + 4 * nt;
+  order_ = n * stride_ + c;
+  T_ = T;
+  G_ = G;
+  sc_ = sc;
+  std::vector<Eigen::Triplet<double>> tr;
+  tr.reserve(size_t(n) * (3 + 2 * c + nt * 14));
+  auto dq = [&](Eigen::Index j) { return j * stride_; };
+  auto yv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 1 + 4 * t + comp; };
+  auto sv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 3 + 4 * t + comp; };
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Index row = dq(j);
+    tr.emplace_back(row, dq(j), T.diag[j] + 2.0 * T.cyclic);
+    if (T.cyclic != 0.0) {
+      tr.emplace_back(row, dq((j + n - 1) % n), -T.cyclic);
+      tr.emplace_back(row, dq((j + 1) % n), -T.cyclic);
+    }
+    for (Eigen::Index i = 0; i < c; ++i) tr.emplace_back(row, n * stride_ + i, sc * G(i, j));
+    for (int t = 0; t < nt; ++t) {
+      const LowRankTerm& term = T.terms[t];
+      for (int a = 0; a < 2; ++a) {
+        tr.emplace_back(row, sv(j, t, a), term.left(a, j));
+        // y_j - y_{j-1} - (coef/2) (W_j dq_j + W_{j-1} dq_{j-1}) = 0
+        const Eigen::Index ry = yv(j, t, a);
+        tr.emplace_back(ry, yv(j, t, a), 1.0);
+        tr.emplace_back(ry, dq(j), -0.5 * term.coef * term.right(a, j));
+        if (j > 0) {
+          tr.emplace_back(ry, yv(j - 1, t, a), -1.0);
+          tr.emplace_back(ry, dq(j - 1), -0.5 * term.coef * term.right(a, j - 1));
+        }
+        // s_j - s_{j+1} - (y_j + y_{j+1}) / 2 = 0
+        const Eigen::Index rs = sv(j, t, a);
+        tr.emplace_back(rs, sv(j, t, a), 1.0);
+        tr.emplace_back(rs, yv(j, t, a), -0.5);
+        if (j + 1 < n) {
+          tr.emplace_back(rs, sv(j + 1, t, a), -1.0);
+          tr.emplace_back(rs, yv(j + 1, t, a), -0.5);
+        }
+      }
+    }
+  }
+  for (Eigen::Index i = 0; i < c; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) tr.emplace_back(n * stride_ + i, dq(j), sc * G(i, j));
+  Eigen::SparseMatrix<double> A(order_, order_);
+  A.setFromTriplets(tr.begin(), tr.end());
+  A.makeCompressed();
+  nnz_ = A.nonZeros();
+  lu_ = std::make_shared<Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>>();
+  lu_->compute(A);
+  return lu_->info() == Eigen::Success;
+}
+
+long SparseSaddle::factor_nonzeros() const {
+  if (!lu_) return 0;
+  return static_cast<long>(lu_->nnzL() + lu_->nnzU());
+}
+
+bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
+                         int refinements) const {
+  const Eigen::Index n = T_.size(), c = G_.rows();
+  x = Vector::Zero(n);
+  y = Vector::Zero(c);
+  Vector rb = b, rd = d;
+  for (int pass = 0; pass <= refinements; ++pass) {
+    Vector rhs = Vector::Zero(order_);
+    for (Eigen::Index j = 0; j < n; ++j) rhs[j * stride_] = rb[j];
+    rhs.tail(c) = rd;
+    if (!rhs.allFinite()) return false;
+    const Vector sol = lu_->solve(rhs);
+    if (!sol.allFinite()) return false;
+    for (Eigen::Index j = 0; j < n; ++j) x[j] += sol[j * stride_];
+    y += sol.tail(c);
+    if (pass == refinements) break;
+    // Residual of the saddle-point system with the exact O(n) product.
+    rb = b - T_.times(x) - sc_ * (G_.transpose() * y);
+    rd = d - sc_ * (G_ * x);
+  }
+  return x.allFinite() && y.allFinite();
+}
+
+ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& p, double l, int min_gap,
+                                     double reach) {
+  const int n = static_cast<int>(p.cols());
+  ClosestPair best{reach, -1, -1};
+  const double cell = l + reach;
+  auto key = [](long long ix, long long iy) { return (ix << 32) ^ (iy & 0xffffffffLL); };
+  std::unordered_map<long long, std::vector<int>> grid;
+  grid.reserve(size_t(n) * 2);
+  std::vector<long long> cx(n), cy(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d mid = 0.5 * (p.col(i) + p.col((i + 1) % n));
+    cx[i] = static_cast<long long>(std::floor(mid.x() / cell));
+    cy[i] = static_cast<long long>(std::floor(mid.y() / cell));
+    grid[key(cx[i], cy[i])].push_back(i);
+  }
+  auto point_segment = [](const Eigen::Vector2d& x, const Eigen::Vector2d& a,
+                          const Eigen::Vector2d& b) {
+    const Eigen::Vector2d ab = b - a;
+    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (a + t * ab - x).norm();
+  };
+  auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() * b.y() - a.y() * b.x();
+  };
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = p.col(i), b = p.col((i + 1) % n);
+    const Eigen::Vector2d lo_i = a.cwiseMin(b), hi_i = a.cwiseMax(b);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        const auto it = grid.find(key(cx[i] + dx, cy[i] + dy));
+        if (it == grid.end()) continue;
+        for (int j : it->second) {
+          // The same pair filter as closest_nonadjacent: j > i, cyclic gap >= min_gap.
+          if (j < i + min_gap || n - (j - i) < min_gap) continue;
+          const Eigen::Vector2d c = p.col(j), d = p.col((j + 1) % n);
+          const Eigen::Vector2d lo_j = c.cwiseMin(d), hi_j = c.cwiseMax(d);
+          if (lo_j.x() > hi_i.x() + reach || lo_i.x() > hi_j.x() + reach ||
+              lo_j.y() > hi_i.y() + reach || lo_i.y() > hi_j.y() + reach)
+            continue;
+          double dist;
+          const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+          const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+          if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0))) {
+            dist = 0.0;
+          } else {
+            dist = std::min({point_segment(a, c, d), point_segment(b, c, d),
+                             point_segment(c, a, b), point_segment(d, a, b)});
+          }
+          // Ties go to the lexicographically first pair, as in the O(n^2) loop.
+          if (dist < best.distance ||
+              (dist == best.distance && best.i >= 0 && (i < best.i || (i == best.i && j < best.j))))
+            best = {dist, i, j};
+        }
+      }
+  }
+  return best;
+}
+
+}  // namespace multibody::detail
