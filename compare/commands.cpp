@@ -113,12 +113,15 @@ Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
 
 int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
               const std::string& vtu_dir) {
-  ring::Scene s = load(a);
+  const ring::Scene s = load(a);
   const int k = count.value_or(s.modes.count);
   if (!vtu_dir.empty() && solver != "fem")
     throw ring::InputError(a.scene, "--vtu", "VTU output is for the FE solver (--solver fem)");
-  // --count is validated like modes.count.
-  if (count) s = ring::load_scene(a.scene, [&] { auto v = a.set; v.push_back("modes.count=" + std::to_string(k)); return v; }());
+  // --count is checked against the model like modes.count (gates do not apply here).
+  if (count && k > ring::max_elastic_modes(s, solver))
+    throw ring::InputError(a.scene, "--count", std::to_string(k) + " modes asked, but the " + solver +
+                                                   " model has only " +
+                                                   std::to_string(ring::max_elastic_modes(s, solver)) + " elastic modes");
   const ring::ModalResult m = solve_modes(s, solver, k);
   if (!vtu_dir.empty()) {
     make_dirs(vtu_dir);

@@ -314,8 +314,9 @@ void read_gates(const Reader& r, const toml::table& t, Scene& s) {
   }
 }
 
-/// Largest number of elastic modes each model has (DESIGN.md: count <= what the model has).
-long long max_modes(const Scene& s, const std::string& solver) {
+}  // namespace
+
+long long max_elastic_modes(const Scene& s, const std::string& solver) {
   const int rigid = s.ring.supports.rigid_modes();
   const int pinned_dofs = s.ring.supports.pin ? 2 : 0;
   const int roller_dofs = s.ring.supports.roller ? 1 : 0;
@@ -331,6 +332,8 @@ long long max_modes(const Scene& s, const std::string& solver) {
   // C0 elements of degree p: p nodes per cell and two displacement components.
   return 2LL * s.fem.elements * s.fem.degree - pinned_dofs - roller_dofs - rigid;
 }
+
+namespace {
 
 void check_nodes(const Reader& r, const Scene& s, const toml::table& root) {
   struct Model { std::string name, key; int n; };
@@ -520,7 +523,7 @@ Scene build(const toml::table& root, const Reader& r) {
   // Cross checks: every solver used must have the modes asked for, and nodes at the points.
   for (const auto& name : kSolvers) {
     if (!s.needs(name)) continue;
-    const long long most = max_modes(s, name);
+    const long long most = max_elastic_modes(s, name);
     if (s.modes.count > most) {
       const std::string key = name == "multibody" ? "multibody.n" : name == "lumped" ? "lumped.n" : "fem.elements";
       r.fail("modes.count", root.at_path("modes.count").node(),

@@ -89,6 +89,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 Scene parse_scene(const std::string& toml_text, const std::string& name,
                   const std::vector<std::string>& overrides = {});
 
+/// The number of elastic modes the solver's model has under the scene's options
+/// (n - 3 for the chains; what the frame and FE unknowns leave after supports and rigid modes).
+long long max_elastic_modes(const Scene& scene, const std::string& solver);
+
 /// The known solver names, in the canonical order.
 const std::vector<std::string>& solver_names();
 

@@ -6,27 +6,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "support/paper.hpp"
 
 using ringtest::ringvib;
 using ringtest::source;
 
 namespace {
 
-const std::string kMultibodyOnly = R"(
-title = "multibody only"
-[ring]
-radius = 10.0
-E = 2.1e11
-rho = 7.8e3
-section = { shape = "circle", diameter = 0.12 }
-[supports]
-pin = 180.0
-[multibody]
-n = 40
-[modes]
-count = 9
-solvers = ["multibody"]
-)";
+/// The shipped multibody-only scene (23 modes, gated against the paper's column).
+const std::string kMultibodyOnly = ringtest::source_text("scenes/paper1990-multibody.toml");
 
 TEST(Cli, HelpListsSubcommands) {
   const auto r = ringvib("--help");
@@ -50,8 +38,8 @@ TEST(Cli, BadScenesExit2AndWriteNothing) {
   struct Case { std::string from, to, key; };
   const std::vector<Case> cases = {
       {"radius = 10.0", "radius = -10.0", "ring.radius"},
-      {"n = 40", "n = 2", "multibody.n"},
-      {"count = 9", "count = 0", "modes.count"},
+      {"[multibody]\nn = 40", "[multibody]\nn = 2", "multibody.n"},
+      {"count = 23", "count = 0", "modes.count"},
       {"[modes]", "[modse]", "modse"},
       {"solvers = [\"multibody\"]", "solvers = [\"sap5\"]", "modes.solvers"},
       {"diameter = 0.12", "diameter = \"big\"", "ring.section.diameter"},
@@ -80,11 +68,11 @@ TEST(Cli, BadScenesExit2AndWriteNothing) {
 }
 
 // DESIGN.md: {"solver", "model": {...}, "rigid_modes", "omega": [ascending], "seconds"};
-// modes.count = 9 computes 9 modes.
+// modes.count = 9 computes 9 modes, and --count 3 three.
 TEST(Cli, ModesJsonContract) {
   const std::string dir = ringtest::temp_dir();
   ringtest::write(dir + "/mb.toml", kMultibodyOnly);
-  const auto r = ringvib("modes " + dir + "/mb.toml --solver multibody --json");
+  const auto r = ringvib("modes " + dir + "/mb.toml --solver multibody --json --count 9");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["solver"], "multibody");
@@ -95,6 +83,7 @@ TEST(Cli, ModesJsonContract) {
   EXPECT_GE(j["seconds"].get<double>(), 0.0);
   const auto k = nlohmann::json::parse(ringvib("modes " + dir + "/mb.toml --solver multibody --json --count 3").out);
   EXPECT_EQ(k["omega"].size(), 3u);
+  EXPECT_EQ(ringvib("modes " + dir + "/mb.toml --solver multibody --count 38").code, 2);  // n - 3 = 37
 }
 
 // A multibody-only scene never loads the FE module: with the module path pointing at

@@ -6,18 +6,11 @@
 #include <optional>
 
 #include "ring/spec.hpp"
+#include "support/paper.hpp"
 
 namespace femtest {
 
-inline ring::RingSpec paper_ring(std::optional<double> pin = 180.0) {
-  ring::RingSpec spec;
-  spec.radius = 10.0;
-  spec.E = 2.1e11;
-  spec.rho = 7.8e3;
-  spec.section.shape = ring::Section::Shape::circle;
-  spec.section.diameter = 0.12;
-  spec.supports.pin = pin;
-  return spec;
-}
+/// Pinned at 180 degrees unless told otherwise (std::nullopt: free).
+inline ring::RingSpec paper_ring(std::optional<double> pin = 180.0) { return ringtest::paper_ring(pin); }
 
 }  // namespace femtest

@@ -5,14 +5,11 @@
 
 #include "ring/closed_form.hpp"
 #include "support/close.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;  // R = 10 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3
-  s.section.diameter = 0.12;
-  return s;
-}
+using ringtest::paper_ring;
 
 // Oracle: the formula evaluated by an independent implementation (Python 3.11, math
 // module, written from Soedel eq. 6.6.14 without this code), to 1e-15.
