@@ -92,7 +92,7 @@ void initial_acceleration(const Problem& p, State& s) {
     detail::SparseSaddle lu;
     Vector qdd, lambda;
     if (!lu.factor(detail::mass_structured(ch, s.q), G, 1.0) ||
-        !lu.solve(b, -ch.constraint_jdot_qdot(s.q, s.v), qdd, lambda))
+        !lu.solve(b, -ch.constraint_jdot_qdot(s.q, s.v), qdd, lambda, 2))
       throw std::runtime_error("multibody::respond: initial accelerations not computable");
     s.qdd = qdd;
     s.lambda = lambda;

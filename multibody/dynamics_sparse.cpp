@@ -111,85 +111,166 @@ StructuredMatrix mass_structured(const Chain& chain, const Vector& q) {
   return M;
 }
 
-// Unknowns, segment by segment: dq_j, then per term (y_x, y_y, s_x, s_y)_j; then the
-// c multipliers. Rows in the same order: the equation of dq_j, the y and s relations,
-// the constraints. The term's coefficient goes into its W rows (y carries force units),
-// so the equation rows of dq_j hold the unit vectors U_j.
+// ---- banded LU with partial pivoting (LAPACK's dgbtf2/dgbtrs, unblocked) ----
+// A(i, j) is stored at ab[j * ldab + kv + i - j], kv = kl + ku, ldab = 2 kl + ku + 1: the
+// kl extra rows hold the fill of the row interchanges. O(N kl (kl + ku)) to factor,
+// O(N (2 kl + ku)) to solve.
+void BandLU::resize(Eigen::Index N, int kl, int ku) {
+  N_ = N;
+  kl_ = kl;
+  ku_ = ku;
+  ldab_ = 2 * kl + ku + 1;
+  ab_.assign(size_t(N) * ldab_, 0.0);
+  ipiv_.assign(N, 0);
+}
+
+bool BandLU::factor() {
+  const int kv = kl_ + ku_;
+  Eigen::Index ju = 0;
+  for (Eigen::Index j = 0; j < N_; ++j) {
+    const Eigen::Index km = std::min<Eigen::Index>(kl_, N_ - 1 - j);
+    double* col = &ab_[size_t(j) * ldab_];
+    Eigen::Index jp = 0;
+    double best = std::abs(col[kv]);
+    for (Eigen::Index r = 1; r <= km; ++r)
+      if (std::abs(col[kv + r]) > best) best = std::abs(col[kv + r]), jp = r;
+    ipiv_[j] = j + jp;
+    if (!(best > 0.0) || !std::isfinite(best)) return false;
+    ju = std::max(ju, std::min<Eigen::Index>(j + ku_ + jp, N_ - 1));
+    if (jp != 0)
+      for (Eigen::Index c = j; c <= ju; ++c)
+        std::swap(at(j, c), at(j + jp, c));
+    const double inv = 1.0 / col[kv];
+    for (Eigen::Index r = 1; r <= km; ++r) col[kv + r] *= inv;
+    for (Eigen::Index c = j + 1; c <= ju; ++c) {
+      const double f = at(j, c);
+      if (f == 0.0) continue;
+      double* cc = &ab_[size_t(c) * ldab_ + kv + j - c];
+      for (Eigen::Index r = 1; r <= km; ++r) cc[r] -= col[kv + r] * f;
+    }
+  }
+  return true;
+}
+
+void BandLU::solve(double* b) const {
+  const int kv = kl_ + ku_;
+  for (Eigen::Index j = 0; j < N_; ++j) {
+    const Eigen::Index km = std::min<Eigen::Index>(kl_, N_ - 1 - j);
+    if (ipiv_[j] != j) std::swap(b[ipiv_[j]], b[j]);
+    const double* col = &ab_[size_t(j) * ldab_];
+    for (Eigen::Index r = 1; r <= km; ++r) b[j + r] -= col[kv + r] * b[j];
+  }
+  for (Eigen::Index j = N_ - 1; j >= 0; --j) {
+    const double* col = &ab_[size_t(j) * ldab_];
+    b[j] /= col[kv];
+    const double bj = b[j];
+    for (Eigen::Index i = std::max<Eigen::Index>(0, j - kv); i < j; ++i) b[i] -= col[kv + i - j] * bj;
+  }
+}
+
+// Unknowns, segment by segment: dq_j, then per term (y_x, y_y, s_x, s_y)_j. Rows in the
+// same order: the equation of dq_j, the y and s relations. The term's coefficient goes
+// into its W rows (y carries force units), so the equation rows of dq_j hold the unit
+// vectors U_j. This core is banded (lower bandwidth 2 stride - 1, upper stride). The two
+// cyclic corner entries of the springs and the constraint rows/columns form a border of
+// k = 2 + c unknowns (z0 = dq_{n-1}, z1 = dq_0, the multipliers), eliminated by the
+// Schur complement S = D - C core^{-1} B (k x k) of the bordered system.
 bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc) {
   const Eigen::Index n = T.size(), c = G.rows();
   const int nt = static_cast<int>(T.terms.size());
   stride_ = 1 + 4 * nt;
-  order_ = n * stride_ + c;
+  order_ = n * stride_;
   T_ = T;
   G_ = G;
   sc_ = sc;
+  // Within a segment's block: the y of every term, dq_j, then the s of every term. This
+  // order gives the narrowest band (one term: lower 5, upper 5).
   std::vector<Eigen::Triplet<double>> tr;
-  tr.reserve(size_t(n) * (3 + 2 * c + nt * 14));
-  auto dq = [&](Eigen::Index j) { return j * stride_; };
-  auto yv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 1 + 4 * t + comp; };
-  auto sv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 3 + 4 * t + comp; };
+  tr.reserve(size_t(n) * (3 + 14 * nt));
+  auto put = [&](Eigen::Index i, Eigen::Index j, double v) { tr.emplace_back(i, j, v); };
+  auto dq = [&](Eigen::Index j) { return j * stride_ + 2 * nt; };
+  auto yv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 2 * t + comp; };
+  auto sv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 2 * nt + 1 + 2 * t + comp; };
+  dq0_ = 2 * nt;
   for (Eigen::Index j = 0; j < n; ++j) {
     const Eigen::Index row = dq(j);
-    tr.emplace_back(row, dq(j), T.diag[j] + 2.0 * T.cyclic);
+    put(row, dq(j), T.diag[j] + 2.0 * T.cyclic);
     if (T.cyclic != 0.0) {
-      tr.emplace_back(row, dq((j + n - 1) % n), -T.cyclic);
-      tr.emplace_back(row, dq((j + 1) % n), -T.cyclic);
+      if (j > 0) put(row, dq(j - 1), -T.cyclic);
+      if (j + 1 < n) put(row, dq(j + 1), -T.cyclic);
     }
-    for (Eigen::Index i = 0; i < c; ++i) tr.emplace_back(row, n * stride_ + i, sc * G(i, j));
     for (int t = 0; t < nt; ++t) {
       const LowRankTerm& term = T.terms[t];
       for (int a = 0; a < 2; ++a) {
-        tr.emplace_back(row, sv(j, t, a), term.left(a, j));
+        put(row, sv(j, t, a), term.left(a, j));
         // y_j - y_{j-1} - (coef/2) (W_j dq_j + W_{j-1} dq_{j-1}) = 0
         const Eigen::Index ry = yv(j, t, a);
-        tr.emplace_back(ry, yv(j, t, a), 1.0);
-        tr.emplace_back(ry, dq(j), -0.5 * term.coef * term.right(a, j));
+        put(ry, yv(j, t, a), 1.0);
+        put(ry, dq(j), -0.5 * term.coef * term.right(a, j));
         if (j > 0) {
-          tr.emplace_back(ry, yv(j - 1, t, a), -1.0);
-          tr.emplace_back(ry, dq(j - 1), -0.5 * term.coef * term.right(a, j - 1));
+          put(ry, yv(j - 1, t, a), -1.0);
+          put(ry, dq(j - 1), -0.5 * term.coef * term.right(a, j - 1));
         }
         // s_j - s_{j+1} - (y_j + y_{j+1}) / 2 = 0
         const Eigen::Index rs = sv(j, t, a);
-        tr.emplace_back(rs, sv(j, t, a), 1.0);
-        tr.emplace_back(rs, yv(j, t, a), -0.5);
+        put(rs, sv(j, t, a), 1.0);
+        put(rs, yv(j, t, a), -0.5);
         if (j + 1 < n) {
-          tr.emplace_back(rs, sv(j + 1, t, a), -1.0);
-          tr.emplace_back(rs, yv(j + 1, t, a), -0.5);
+          put(rs, sv(j + 1, t, a), -1.0);
+          put(rs, yv(j + 1, t, a), -0.5);
         }
       }
     }
   }
+  int kl = 0, ku = 0;
+  for (const auto& e : tr) {
+    kl = std::max<int>(kl, int(e.row() - e.col()));
+    ku = std::max<int>(ku, int(e.col() - e.row()));
+  }
+  band_.resize(order_, kl, ku);
+  for (const auto& e : tr) band_.at(e.row(), e.col()) += e.value();
+  nnz_ = static_cast<long>(tr.size());
+  if (!band_.factor()) return false;
+  // Border: B (order x k), C (k x order), D (k x k).
+  const Eigen::Index k = 2 + c;
+  B_ = Matrix::Zero(order_, k);
+  C_ = Matrix::Zero(k, order_);
+  Matrix D = Matrix::Zero(k, k);
+  B_(dq(0), 0) = -T.cyclic;
+  B_(dq(n - 1), 1) = -T.cyclic;
+  C_(0, dq(n - 1)) = -1.0;
+  C_(1, dq(0)) = -1.0;
+  D(0, 0) = D(1, 1) = 1.0;
   for (Eigen::Index i = 0; i < c; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) tr.emplace_back(n * stride_ + i, dq(j), sc * G(i, j));
-  Eigen::SparseMatrix<double> A(order_, order_);
-  A.setFromTriplets(tr.begin(), tr.end());
-  A.makeCompressed();
-  nnz_ = A.nonZeros();
-  lu_ = std::make_shared<Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>>();
-  lu_->compute(A);
-  return lu_->info() == Eigen::Success;
+    for (Eigen::Index j = 0; j < n; ++j) B_(dq(j), 2 + i) = C_(2 + i, dq(j)) = sc * G(i, j);
+  nnz_ += 2 + 2 * n * c;
+  X_ = B_;
+  for (Eigen::Index col = 0; col < k; ++col) band_.solve(X_.col(col).data());
+  schur_.compute(D - C_ * X_);
+  return std::isfinite(schur_.rcond()) && schur_.rcond() > 1e-300;
 }
 
-long SparseSaddle::factor_nonzeros() const {
-  if (!lu_) return 0;
-  return static_cast<long>(lu_->nnzL() + lu_->nnzU());
-}
+long SparseSaddle::factor_nonzeros() const { return band_.stored(); }
 
 bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
                          int refinements) const {
-  const Eigen::Index n = T_.size(), c = G_.rows();
+  const Eigen::Index n = T_.size(), c = G_.rows(), k = 2 + c;
   x = Vector::Zero(n);
   y = Vector::Zero(c);
   Vector rb = b, rd = d;
+  Vector u(order_), e(k);
   for (int pass = 0; pass <= refinements; ++pass) {
-    Vector rhs = Vector::Zero(order_);
-    for (Eigen::Index j = 0; j < n; ++j) rhs[j * stride_] = rb[j];
-    rhs.tail(c) = rd;
-    if (!rhs.allFinite()) return false;
-    const Vector sol = lu_->solve(rhs);
-    if (!sol.allFinite()) return false;
-    for (Eigen::Index j = 0; j < n; ++j) x[j] += sol[j * stride_];
-    y += sol.tail(c);
+    u.setZero();
+    for (Eigen::Index j = 0; j < n; ++j) u[j * stride_ + dq0_] = rb[j];
+    e.setZero();
+    e.tail(c) = rd;
+    if (!u.allFinite() || !e.allFinite()) return false;
+    band_.solve(u.data());
+    const Vector w = schur_.solve(e - C_ * u);
+    u.noalias() -= X_ * w;
+    if (!u.allFinite() || !w.allFinite()) return false;
+    for (Eigen::Index j = 0; j < n; ++j) x[j] += u[j * stride_ + dq0_];
+    y += w.tail(c);
     if (pass == refinements) break;
     // Residual of the saddle-point system with the exact O(n) product.
     rb = b - T_.times(x) - sc_ * (G_.transpose() * y);

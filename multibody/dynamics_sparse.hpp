@@ -12,14 +12,17 @@
 // down-shift, so y = L w and s = L^T y are the sparse bidiagonal relations
 //   y_j - y_{j-1} = (w_j + w_{j-1}) / 2,   s_j - s_{j+1} = (y_j + y_{j+1}) / 2,
 // and the saddle-point system [T G^T; G 0] becomes a sparse system in
-// (dq, y_t, s_t, dlambda) of order n (1 + 4 terms) + c with O(n) non-zeros, factored
-// by Eigen's SparseLU (COLAMD ordering; fill measured O(n), see the bench). Each solve
-// is refined against the exact O(n) product T x, so it is accurate to round-off of the
-// dense LU's size.
+// (dq, y_t, s_t, dlambda) of order n (1 + 4 terms) + c. Interleaved segment by segment
+// it is banded (bandwidths ~2 stride and stride) except for the springs' two cyclic
+// corner entries and the c constraint rows and columns; those form a border of 2 + c
+// unknowns eliminated through a small Schur complement. (Eigen's SparseLU, tried
+// first, pivoted on the dense border rows and cost 3 s per step at n = 2560.) Solves can
+// be refined against the exact O(n) product T x; Newton corrections are not (the
+// iteration itself refines them), the consistent initial accelerations are (twice).
 #pragma once
 
 #include <Eigen/Dense>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
@@ -62,15 +65,36 @@ void inertia_terms_structured(const Chain& chain, const Vector& q, const Vector&
 /// M(q) as a structured matrix (m l^2 U^T A U + Jr I). O(n).
 StructuredMatrix mass_structured(const Chain& chain, const Vector& q);
 
-/// The factorized saddle-point matrix [T sc G^T; sc G 0] of a structured T. O(n) fill.
+/// Banded LU with partial pivoting (an unblocked port of LAPACK's dgbtf2/dgbtrs):
+/// lower bandwidth kl, upper ku. O(N kl (kl + ku)) to factor, O(N (2 kl + ku)) to solve.
+class BandLU {
+ public:
+  void resize(Eigen::Index N, int kl, int ku);  ///< zero matrix of order N
+  /// Entry (i, j), |i - j| within the band (before factor()).
+  double& at(Eigen::Index i, Eigen::Index j) { return ab_[size_t(j) * ldab_ + kl_ + ku_ + i - j]; }
+  bool factor();                 ///< false on a zero or non-finite pivot
+  void solve(double* b) const;   ///< in place
+  long stored() const { return static_cast<long>(ab_.size()); }
+
+ private:
+  Eigen::Index N_ = 0;
+  int kl_ = 0, ku_ = 0, ldab_ = 1;
+  std::vector<double> ab_;
+  std::vector<Eigen::Index> ipiv_;
+};
+
+/// The factorized saddle-point matrix [T sc G^T; sc G 0] of a structured T: the banded
+/// core (dq, y, s) by BandLU, the spring's two cyclic corner entries and the c
+/// constraint rows as a border of 2 + c unknowns by its Schur complement. O(n) time and
+/// memory.
 class SparseSaddle {
  public:
-  /// Factors; false if SparseLU reports a singular matrix.
+  /// Factors; false on a singular core or Schur complement.
   bool factor(const StructuredMatrix& T, const Matrix& G, double sc);
   /// Solves [T sc G^T; sc G 0] [x; y] = [b; d] with `refinements` steps of iterative
   /// refinement against the exact product. False on a non-finite result.
-  bool solve(const Vector& b, const Vector& d, Vector& x, Vector& y, int refinements = 2) const;
-  /// Non-zeros of the assembled matrix and of the L and U factors (bench counters).
+  bool solve(const Vector& b, const Vector& d, Vector& x, Vector& y, int refinements = 0) const;
+  /// Entries placed in the banded core and border (bench counter), doubles stored by the band.
   long nonzeros() const { return nnz_; }
   long factor_nonzeros() const;
 
@@ -78,10 +102,12 @@ class SparseSaddle {
   StructuredMatrix T_;
   Matrix G_;
   double sc_ = 1.0;
-  int stride_ = 1;
+  int stride_ = 1, dq0_ = 0;  ///< unknowns per segment; offset of dq_j in its block
   long nnz_ = 0;
   Eigen::Index order_ = 0;
-  std::shared_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>> lu_;
+  BandLU band_;
+  Matrix B_, C_, X_;  ///< border columns, rows, core^{-1} B
+  Eigen::PartialPivLU<Matrix> schur_;
 };
 
 /// closest_nonadjacent (dynamics_model.hpp) with a uniform grid of cell size l + reach
