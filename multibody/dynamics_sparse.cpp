@@ -152,6 +152,33 @@ bool BandLU::factor() {
   return true;
 }
 
+void BandLU::solve_many(double* b, Eigen::Index ld, Eigen::Index k) const {
+  // The same sweeps as solve(), each band column read once for all k right-hand sides.
+  const int kv = kl_ + ku_;
+  for (Eigen::Index j = 0; j < N_; ++j) {
+    const Eigen::Index km = std::min<Eigen::Index>(kl_, N_ - 1 - j);
+    const double* col = &ab_[size_t(j) * ldab_];
+    for (Eigen::Index q = 0; q < k; ++q) {
+      double* bq = b + q * ld;
+      if (ipiv_[j] != j) std::swap(bq[ipiv_[j]], bq[j]);
+      const double bj = bq[j];
+      if (bj == 0.0) continue;
+      for (Eigen::Index r = 1; r <= km; ++r) bq[j + r] -= col[kv + r] * bj;
+    }
+  }
+  for (Eigen::Index j = N_ - 1; j >= 0; --j) {
+    const double* col = &ab_[size_t(j) * ldab_];
+    const Eigen::Index i0 = std::max<Eigen::Index>(0, j - kv);
+    for (Eigen::Index q = 0; q < k; ++q) {
+      double* bq = b + q * ld;
+      bq[j] /= col[kv];
+      const double bj = bq[j];
+      if (bj == 0.0) continue;
+      for (Eigen::Index i = i0; i < j; ++i) bq[i] -= col[kv + i - j] * bj;
+    }
+  }
+}
+
 void BandLU::solve(double* b) const {
   const int kv = kl_ + ku_;
   for (Eigen::Index j = 0; j < N_; ++j) {
@@ -245,7 +272,7 @@ bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc)
     for (Eigen::Index j = 0; j < n; ++j) B_(dq(j), 2 + i) = C_(2 + i, dq(j)) = sc * G(i, j);
   nnz_ += 2 + 2 * n * c;
   X_ = B_;
-  for (Eigen::Index col = 0; col < k; ++col) band_.solve(X_.col(col).data());
+  band_.solve_many(X_.data(), X_.rows(), k);
   schur_.compute(D - C_ * X_);
   return std::isfinite(schur_.rcond()) && schur_.rcond() > 1e-300;
 }

@@ -74,6 +74,8 @@ class BandLU {
   double& at(Eigen::Index i, Eigen::Index j) { return ab_[size_t(j) * ldab_ + kl_ + ku_ + i - j]; }
   bool factor();                 ///< false on a zero or non-finite pivot
   void solve(double* b) const;   ///< in place
+  /// k right-hand sides, column q at b + q ld, in place.
+  void solve_many(double* b, Eigen::Index ld, Eigen::Index k) const;
   long stored() const { return static_cast<long>(ab_.size()); }
 
  private:

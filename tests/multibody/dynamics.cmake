@@ -15,3 +15,6 @@ ringvib_test(multibody_dynamics_stress_tests
 ringvib_test(multibody_dynamics_sparse_tests
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_dynamics_sparse.cpp
   LIBS multibody LABELS validation)
+ringvib_test(multibody_dynamics_sparse_stress_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_dynamics_sparse_stress.cpp
+  LIBS multibody LABELS stress)
