@@ -1,16 +1,16 @@
 #include "multibody/modes.hpp"
 
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <Spectra/SymEigsSolver.h>
-#include <Spectra/SymGEigsSolver.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <chrono>
 #include <functional>
 #include <optional>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -150,24 +150,36 @@ namespace {
 /// The sparse large-n path: the same reduced problem (orthonormal null-space basis
 /// Q = Householder factor of J^T, applied implicitly in O(n c)), but K0, M0 and
 /// S0 = K0 + s M0 only as operators. M(q0) is applied in O(n) through the midpoint
-/// kinematics, and S0^{-1} by one sparse LU of a banded saddle-point system in
-/// (angles x, midpoint velocities V = v_t + l L E' x, back-sums W = L^T m V,
-/// multipliers lambda), where L's cumulative sums become bidiagonal relations:
-///   V_i - V_{i-1} = l (E'x_{i-1} + E'x_i) / 2,   W_j - W_{j+1} = m (V_j + V_{j+1}) / 2,
-///   (K + s Jr) x + s l (-sin phi_j W_x + cos phi_j W_y) + J^T lambda = f,   J x = 0.
-/// Rows are scaled by 1/K (angles), 1/(s m) (translations), 1/l, 1/m. The constraints J x = 0 border this banded system
-/// (unknowns 5n (+2)), eliminated with c extra solves. O(n) factorization and solves.
+/// kinematics. S0^{-1} is a constrained solve of S = K + s M in chain coordinates,
+/// split as S = A + (rank-one cyclic spring at hinge 0) + (translation coupling, free
+/// ring), with the constraints J dq = 0 and those two couplings as a border of k <= 6
+/// extra unknowns (Schur complement of k prefactored solves).
+///
+/// A is the "open chain": hinge 0 held, springs at hinges 1..n-1 only, full mass
+/// (m |midpoint displacement|^2 + Jr x^2). Its solve A x = f is the minimization of
+/// 1/2 x^T A x - f^T x, a chain of scalar decisions with the state z_i = (h_i, x_{i-1})
+/// (hinge i's displacement, previous angle), h_{i+1} = h_i + l e'(phi_i) x_i: a discrete
+/// Riccati sweep (backward: quadratic cost-to-go P_i, 3x3; forward: x_i). Every pivot is
+/// a scalar >= s Jr + s m l^2 / 4 + K > 0 and every P_i a Schur complement of a positive
+/// semidefinite matrix, so the sweep is Cholesky-stable; ~60 flops per segment per solve,
+/// 10 doubles per segment stored. The previous banded mixed (angle, midpoint velocity,
+/// back-sum) system with a general sparse LU cost ~20x more per solve and grew
+/// superlinearly (3.2 s for n = 40000).
 class SparseReduced {
  public:
-  static constexpr int kRefinementSteps = 2;
-  SparseReduced(const Chain& c, double shift) : c_(c), q0_(c.q0()), s_(shift) {
+  /// Steps of iterative refinement with the residual in reduced coordinates. One step
+  /// takes the solve to its rounding level (measured: a second step changes the 23
+  /// frequencies by < 1e-14 relative at n = 1e5).
+  static constexpr int kRefinementSteps = 1;
+  SparseReduced(const Chain& c, double shift) : c_(c), s_(shift) {
     cos_ = c.phi0().array().cos();
     sin_ = c.phi0().array().sin();
-    const Matrix J = c.constraint_jacobian(q0_);
+    const Matrix J = c.constraint_jacobian(c.q0());
     qr_.compute(J.transpose());
     N_ = c.dofs();
     nc_ = static_cast<int>(J.rows());
-    assemble(J);
+    factor_open();
+    border(J);
   }
   int r() const { return N_ - nc_; }
   Vector expand(const Vector& xr) const {
@@ -182,49 +194,56 @@ class SparseReduced {
     const Vector x = expand(xr);
     return reduce(k_times(x) + s_ * m_times(x));
   }
-  /// S0^{-1} yr: the constrained solve by bordering, x = z - Z lambda with
-  /// lambda = (J Z)^{-1} J z, where A0 z = f and A0 Z = J^T (prefactored). O(n).
+  /// S0^{-1} yr, refined against S0 applied in O(n) (kRefinementSteps). O(n).
   Vector S0_solve(const Vector& yr) const {
-    // One step of iterative refinement with the residual taken in angle coordinates
-    // (S0 applied in O(n) without the mixed variables) removes the error that the mixed
-    // banded system's conditioning adds at large n.
-    Vector x = border_solve(yr);
-    for (int step = 0; step < kRefinementSteps; ++step) x += border_solve(yr - S0(x));
-    return x;
+    return reduce(solve_full(expand(yr)));
   }
   const Eigen::HouseholderQR<Matrix>& qr() const { return qr_; }
-
- private:
-  Vector border_solve(const Vector& yr) const {
-    const Vector f = expand(yr);
-    Vector rhs = Vector::Zero(lu_.rows());
-    for (int i = 0; i < N_; ++i) rhs[xi_[i]] = f[i] * row_scale_[i];
-    const Vector z = lu_.solve(rhs);
-    Vector x(N_);
-    for (int i = 0; i < N_; ++i) x[i] = z[xi_[i]];
-    x -= Zx_ * jz_lu_.solve(J_ * x);
-    return reduce(x);
+  int dofs() const { return N_; }
+  const Matrix& Jt() const { return Jt_; }
+  /// Euclidean projection onto the null space of J: v -= J^T (J J^T)^{-1} J v. O(n c).
+  void project(Vector& v) const { v.noalias() -= Jt_ * jjt_.solve(Jt_.transpose() * v); }
+  /// S dq = (K + s M(q0)) dq in chain coordinates. O(n).
+  Vector S_full(const Vector& dq) const { return k_times(dq) + s_ * m_times(dq); }
+  /// The constrained solve [S J^T; J 0] [dq; lambda] = [f; 0] in chain coordinates
+  /// (dq in the null space of J), refined kRefinementSteps times against S_full: the
+  /// multiplier part of the residual is absorbed by the next solve's lambda. O(n).
+  Vector solve_full(const Vector& f) const {
+    Vector lambda(nc_), dl(nc_);
+    Vector dq = full_solve(f, lambda);
+    for (int step = 0; step < kRefinementSteps; ++step) {
+      // The residual of the bordered system, J^T lambda included: without it the
+      // residual is dominated by the multiplier part and the refinement gains nothing.
+      dq += full_solve(f - S_full(dq) - Jt_ * lambda, dl);
+      lambda += dl;
+    }
+    return dq;
+  }
+  /// D^T Y for the columns of Y (N x k): Householder reflections blocked over the columns.
+  Matrix reduce_cols(const Matrix& Y) const {
+    return (qr_.householderQ().transpose() * Y).bottomRows(r());
   }
   /// Chain::mass_times at q0 with the trigonometry cached (same recurrences). O(n).
   Vector m_times(const Vector& v) const {
     const int n = c_.n();
     const double l = c_.l(), m = c_.m(), Jr = c_.Jr();
-    std::vector<double> Vx(n), Vy(n);
+    // Forward: midpoint displacements V_i; backward: W_j = sum_{i >= j} m V_i - m V_j / 2.
+    Vector y(N_);
     double ax = c_.free() ? v[n] : 0.0, ay = c_.free() ? v[n + 1] : 0.0;
+    std::vector<double> V(2 * static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
       const double tx = -l * v[i] * sin_[i], ty = l * v[i] * cos_[i];
-      Vx[i] = ax + 0.5 * tx;
-      Vy[i] = ay + 0.5 * ty;
+      V[2 * i] = ax + 0.5 * tx;
+      V[2 * i + 1] = ay + 0.5 * ty;
       ax += tx;
       ay += ty;
     }
-    Vector y(N_);
     double bx = 0.0, by = 0.0;
     for (int j = n - 1; j >= 0; --j) {
-      const double wx = bx + 0.5 * m * Vx[j], wy = by + 0.5 * m * Vy[j];
+      const double wx = bx + 0.5 * m * V[2 * j], wy = by + 0.5 * m * V[2 * j + 1];
       y[j] = l * (-sin_[j] * wx + cos_[j] * wy) + Jr * v[j];
-      bx += m * Vx[j];
-      by += m * Vy[j];
+      bx += m * V[2 * j];
+      by += m * V[2 * j + 1];
     }
     if (c_.free()) {
       y[n] = bx;
@@ -232,134 +251,243 @@ class SparseReduced {
     }
     return y;
   }
+  /// K dq: springs at every hinge (cyclic). O(n).
   Vector k_times(const Vector& x) const {
     const int n = c_.n();
+    const double K = c_.K();
     Vector y = Vector::Zero(N_);
-    for (int k = 0; k < n; ++k) y[k] = c_.K() * (2 * x[k] - x[(k + n - 1) % n] - x[(k + 1) % n]);
+    y[0] = K * (2 * x[0] - x[n - 1] - x[1 % n]);
+    for (int k = 1; k + 1 < n; ++k) y[k] = K * (2 * x[k] - x[k - 1] - x[k + 1]);
+    if (n > 1) y[n - 1] = K * (2 * x[n - 1] - x[n - 2] - x[0]);
     return y;
   }
-  // Unknowns and equations interleaved per segment i, block [x_i, Vx_i, Vy_i, Wx_i, Wy_i]
-  // at 5i (+2 after the translations of a free ring, which come first): a band of width
-  // ~10 plus the cyclic spring between segments n-1 and 0.
-  void assemble(const Matrix& J) {
-    const int n = c_.n();
-    const double l = c_.l(), m = c_.m(), K = c_.K(), Jr = c_.Jr();
-    const int o = c_.free() ? 2 : 0;
-    auto X = [&](int i) { return o + 5 * i; };
-    auto VX = [&](int i) { return o + 5 * i + 1; };
-    auto VY = [&](int i) { return o + 5 * i + 2; };
-    auto WX = [&](int i) { return o + 5 * i + 3; };
-    auto WY = [&](int i) { return o + 5 * i + 4; };
-    const int T = o + 5 * n;
-    xi_.resize(N_);
-    row_scale_.assign(N_, 1.0 / K);
-    for (int i = 0; i < n; ++i) xi_[i] = X(i);
-    if (c_.free()) {
-      xi_[n] = 0;
-      xi_[n + 1] = 1;
-      row_scale_[n] = row_scale_[n + 1] = 1.0 / (s_ * m);
-    }
-    const Vector& phi = c_.phi0();
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(static_cast<std::size_t>(25 * n + 8));
-    for (int j = 0; j < n; ++j) {  // angle rows / K: (K + s Jr) x + s l (-sin W_x + cos W_y)
-      const double sj = std::sin(phi[j]), cj = std::cos(phi[j]);
-      t.emplace_back(X(j), X(j), 2.0 + s_ * Jr / K);
-      t.emplace_back(X(j), X((j + n - 1) % n), -1.0);
-      t.emplace_back(X(j), X((j + 1) % n), -1.0);
-      t.emplace_back(X(j), WX(j), -s_ * l * sj / K);
-      t.emplace_back(X(j), WY(j), s_ * l * cj / K);
-    }
-    if (c_.free()) {  // translation rows / (s m): s (W_0 + m V_0 / 2) = f_t
-      t.emplace_back(0, WX(0), 1.0 / m);
-      t.emplace_back(0, VX(0), 0.5);
-      t.emplace_back(1, WY(0), 1.0 / m);
-      t.emplace_back(1, VY(0), 0.5);
-    }
-    for (int i = 0; i < n; ++i) {  // V rows / l: V_i - V_{i-1} = l (E'x_{i-1} + E'x_i) / 2
-      t.emplace_back(VX(i), VX(i), 1.0 / l);
-      t.emplace_back(VY(i), VY(i), 1.0 / l);
-      t.emplace_back(VX(i), X(i), 0.5 * std::sin(phi[i]));
-      t.emplace_back(VY(i), X(i), -0.5 * std::cos(phi[i]));
-      if (i == 0) {
-        if (c_.free()) {  // V_0 = v_t + l E'x_0 / 2
-          t.emplace_back(VX(0), 0, -1.0 / l);
-          t.emplace_back(VY(0), 1, -1.0 / l);
-        }
-      } else {
-        t.emplace_back(VX(i), VX(i - 1), -1.0 / l);
-        t.emplace_back(VY(i), VY(i - 1), -1.0 / l);
-        t.emplace_back(VX(i), X(i - 1), 0.5 * std::sin(phi[i - 1]));
-        t.emplace_back(VY(i), X(i - 1), -0.5 * std::cos(phi[i - 1]));
-      }
-    }
-    for (int j = 0; j < n; ++j) {  // W rows / m: W_j - W_{j+1} = m (V_j + V_{j+1}) / 2
-      t.emplace_back(WX(j), WX(j), 1.0 / m);
-      t.emplace_back(WY(j), WY(j), 1.0 / m);
-      t.emplace_back(WX(j), VX(j), -0.5);
-      t.emplace_back(WY(j), VY(j), -0.5);
-      if (j + 1 < n) {
-        t.emplace_back(WX(j), WX(j + 1), -1.0 / m);
-        t.emplace_back(WY(j), WY(j + 1), -1.0 / m);
-        t.emplace_back(WX(j), VX(j + 1), -0.5);
-        t.emplace_back(WY(j), VY(j + 1), -0.5);
-      }
-    }
-    Eigen::SparseMatrix<double> A(T, T);
-    A.setFromTriplets(t.begin(), t.end());
-    A.makeCompressed();
-    lu_.analyzePattern(A);
-    lu_.factorize(A);
-    if (lu_.info() != Eigen::Success)
-      throw ring::NumericalError("multibody: sparse LU of the chain's banded system failed (n = " +
-                                 std::to_string(n) + "): " + lu_.lastErrorMessage());
-    // Border: Z = A0^{-1} [J^T / K; 0], then the small c x c system J Z.
-    J_ = J;
-    Zx_.resize(N_, nc_);
-    for (int a = 0; a < nc_; ++a) {
-      Vector rhs = Vector::Zero(T);
-      for (int i = 0; i < N_; ++i) rhs[xi_[i]] = J(a, i) * row_scale_[i];
-      const Vector z = lu_.solve(rhs);
-      for (int i = 0; i < N_; ++i) Zx_(i, a) = z[xi_[i]];
-    }
-    jz_lu_.compute(J_ * Zx_);
-  }
 
+ private:
+  /// Backward Riccati sweep of the open chain (matrix part, once). For segment i the
+  /// stage cost in (z_i, x_i) plus the cost-to-go 1/2 z_{i+1}^T P_{i+1} z_{i+1},
+  /// z_{i+1} = F z_i + g_i x_i (F keeps h, drops x_{i-1}; g_i = (l e'_i, 1)), is a
+  /// quadratic with Hessian [[Hzz, hzx], [hzx^T, hxx]]; eliminating x_i gives
+  /// P_i = Hzz - hzx hzx^T / hxx.
+  void factor_open() {
+    const int n = c_.n();
+    const double l = c_.l(), m = c_.m(), K = c_.K(), Jr = c_.Jr(), s = s_;
+    hzx_.resize(3, n);
+    inv_hxx_.resize(n);
+    Eigen::Matrix3d P = Eigen::Matrix3d::Zero();  // P_n: open end, no cost
+    for (int i = n - 1; i >= 0; --i) {
+      const double gx = -l * sin_[i], gy = l * cos_[i];
+      const Eigen::Vector3d g(gx, gy, 1.0);
+      const Eigen::Vector3d Pg = P * g;
+      const double spring = i >= 1 ? K : 0.0;
+      const double hxx = spring + s * (m * l * l / 4.0 + Jr) + g.dot(Pg);
+      // hzx = stage cross terms + F^T P g (F^T picks the h rows).
+      Eigen::Vector3d hzx(s * m * 0.5 * gx + Pg[0], s * m * 0.5 * gy + Pg[1], -spring);
+      Eigen::Matrix3d Hzz = Eigen::Matrix3d::Zero();
+      Hzz.topLeftCorner<2, 2>() = P.topLeftCorner<2, 2>();
+      Hzz(0, 0) += s * m;
+      Hzz(1, 1) += s * m;
+      Hzz(2, 2) = spring;
+      P = Hzz - hzx * hzx.transpose() / hxx;
+      hzx_.col(i) = hzx;
+      inv_hxx_[i] = 1.0 / hxx;
+    }
+  }
+  /// x = A^{-1} f for the open chain (first n entries of f). Two sweeps, O(n).
+  Vector open_solve(const Vector& f) const {
+    const int n = c_.n();
+    const double l = c_.l();
+    // Backward: linear cost-to-go term q_i (cost -q^T z); hx_i = f_i + g_i^T q_{i+1}.
+    Vector hx(n);
+    double q0 = 0.0, q1 = 0.0, q2 = 0.0;
+    for (int i = n - 1; i >= 0; --i) {
+      const double gx = -l * sin_[i], gy = l * cos_[i];
+      const double h = f[i] + gx * q0 + gy * q1 + q2;
+      hx[i] = h;
+      const double t = h * inv_hxx_[i];
+      // q_i = F^T q_{i+1} - hzx hx / hxx
+      q0 = q0 - hzx_(0, i) * t;
+      q1 = q1 - hzx_(1, i) * t;
+      q2 = -hzx_(2, i) * t;
+    }
+    // Forward: x_i = (hx_i - hzx_i^T z_i) / hxx_i, z_0 = 0.
+    Vector x(n);
+    double zx = 0.0, zy = 0.0, zp = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double xi = (hx[i] - hzx_(0, i) * zx - hzx_(1, i) * zy - hzx_(2, i) * zp) * inv_hxx_[i];
+      x[i] = xi;
+      zx += -l * sin_[i] * xi;
+      zy += l * cos_[i] * xi;
+      zp = xi;
+    }
+    return x;
+  }
+  /// Border of the open chain: extra unknowns e = (alpha = x_0 - x_{n-1} for the cyclic
+  /// spring at hinge 0; translation a (free ring); multipliers lambda):
+  ///   A x + B e = f_x,   C x + D e = (f_a, 0...)  with
+  ///   B = [K u, s A_xa, J_x^T],  C = [u^T; s A_xa^T; J_x],  D = diag(-1, [s m n I, J_a^T], [J_a, 0]).
+  void border(const Matrix& J) {
+    const int n = c_.n();
+    const double l = c_.l(), m = c_.m(), K = c_.K();
+    const int na = c_.free() ? 2 : 0;
+    const int k = 1 + na + nc_;
+    B_ = Matrix::Zero(n, k);
+    C_ = Matrix::Zero(k, n);
+    Matrix D = Matrix::Zero(k, k);
+    B_(0, 0) = K;
+    B_(n - 1, 0) = -K;
+    C_(0, 0) = 1.0;
+    C_(0, n - 1) = -1.0;
+    D(0, 0) = -1.0;
+    for (int a = 0; a < na; ++a) {
+      // d^2 (s m/2 sum |y_j|^2) / dx_i da = s m l e'_i (n - i - 1/2).
+      for (int i = 0; i < n; ++i) {
+        const double e = a == 0 ? -sin_[i] : cos_[i];
+        B_(i, 1 + a) = s_ * m * l * e * (n - i - 0.5);
+      }
+      C_.row(1 + a) = B_.col(1 + a).transpose();
+      D(1 + a, 1 + a) = s_ * m * n;
+    }
+    for (int b = 0; b < nc_; ++b) {
+      B_.col(1 + na + b) = J.row(b).head(n).transpose();
+      C_.row(1 + na + b) = J.row(b).head(n);
+      for (int a = 0; a < na; ++a) {
+        D(1 + a, 1 + na + b) = J(b, n + a);
+        D(1 + na + b, 1 + a) = J(b, n + a);
+      }
+    }
+    Z_.resize(n, k);
+    for (int j = 0; j < k; ++j) Z_.col(j) = open_solve(B_.col(j));
+    schur_.compute(D - C_ * Z_);
+    na_ = na;
+    Jt_ = J.transpose();
+    jjt_.compute(J * Jt_);
+  }
+  /// The constrained solve in chain coordinates: [S J^T; J 0] [dq; lambda] = [f; 0]. O(n k).
+  Vector full_solve(const Vector& f, Vector& lambda) const {
+    const int n = c_.n(), k = static_cast<int>(Z_.cols());
+    const Vector x0 = open_solve(f.head(n));
+    Vector g = Vector::Zero(k);
+    for (int a = 0; a < na_; ++a) g[1 + a] = f[n + a];
+    const Vector e = schur_.solve(g - C_ * x0);
+    Vector dq(N_);
+    dq.head(n) = x0 - Z_ * e;
+    for (int a = 0; a < na_; ++a) dq[n + a] = e[1 + a];
+    lambda = e.tail(nc_);
+    return dq;
+  }
   const Chain& c_;
-  Vector q0_;
   double s_;
   Vector cos_, sin_;  ///< of phi0
-  int N_ = 0, nc_ = 0;
+  int N_ = 0, nc_ = 0, na_ = 0;
   Eigen::HouseholderQR<Matrix> qr_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
-  std::vector<int> xi_;     ///< position of chain coordinate i among the sparse unknowns
-  std::vector<double> row_scale_;  ///< scaling of chain coordinate i's equation
-  Matrix J_, Zx_;           ///< constraint Jacobian (c x N) and A0^{-1} J^T / K (N x c)
-  Eigen::PartialPivLU<Matrix> jz_lu_;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> hzx_;  ///< Riccati cross terms per segment
+  Vector inv_hxx_;                                ///< 1 / Riccati pivots
+  Matrix B_, C_, Z_;                              ///< border (n x k, k x n), Z = A^{-1} B
+  Eigen::FullPivLU<Matrix> schur_;                ///< D - C Z, k x k
+  Matrix Jt_;                                     ///< J^T, N x c
+  Eigen::LLT<Matrix> jjt_;                        ///< J J^T, c x c
 };
 
-/// Spectra operator objects over SparseReduced: A = M0 and B = S0 (with B^{-1}).
-struct SparseAOp {
-  using Scalar = double;
-  const SparseReduced& p;
-  Eigen::Index rows() const { return p.r(); }
-  Eigen::Index cols() const { return p.r(); }
-  void perform_op(const double* x, double* y) const {
-    Eigen::Map<Vector>(y, p.r()) = p.M0(Eigen::Map<const Vector>(x, p.r()));
+/// Lanczos for the largest eigenvalues mu of T = S_c M (S_c: the constrained solve
+/// SparseReduced::solve_full), run in chain coordinates on the null space of J: T is
+/// self-adjoint there in the S inner product and equals S0^{-1} M0 in the reduced
+/// coordinates x = D^T dq, so the Ritz values are those of the reduced pencil and the
+/// Householder basis D is applied only to the final vectors. No restart: the wanted
+/// mu = 1/(omega^2 + s) are the best separated end of the spectrum (omega^2 grows like
+/// k^4), so ~2 nev steps converge them (measured: 50..52 steps for nev = 26, n = 2000 ..
+/// 10^6).
+/// Step k: p = M v_k, w = S_c p; since S w = p - J^T lambda and J v_j = 0, the local
+/// coefficients <w, v_j>_S = v_j^T p (j = k-1, k) need no S product; then one full
+/// classical Gram-Schmidt pass with the true S w (two reads of the basis per step
+/// instead of Spectra's repeated S products and reallocations, ~10x faster here).
+/// Stops when the nev largest Ritz values have residual |beta_k y_k| <= tol * theta
+/// (Spectra's criterion, tol = 1e-13), or when the Krylov space is invariant.
+/// Cost per step: two Riccati solves, one M and three S products (O(n)), 2 k N for the
+/// reorthogonalization. Memory: N x (steps + 1). Returns chain-coordinate vectors.
+void sparse_lanczos(const SparseReduced& sp, int nev, Vector& mu, Matrix& vecs) {
+  const int N = sp.dofs(), r = sp.r();
+  const int max_steps = std::min(r, 4 * nev + 60);
+  // Residual estimate |beta y_last| <= 1e-8 theta: the Ritz values come from the exact
+  // Rayleigh quotient V^T M V, so their error is quadratic in the residual (~1e-16 theta
+  // for gaps ~theta). The estimate stagnates near 1e-9 (the solve's rounding in the S
+  // norm; measured n = 2000 .. 2e5), so Spectra's 1e-13 would never be met here.
+  constexpr double tol = 1e-8;
+  Matrix V(N, max_steps + 1);
+  std::mt19937_64 gen(20260421);  // fixed seed: reproducible runs
+  std::uniform_real_distribution<double> uni(-0.5, 0.5);
+  Vector w(N);
+  for (int i = 0; i < N; ++i) w[i] = uni(gen);
+  w = sp.solve_full(w);  // a start vector in the null space of J
+  w /= std::sqrt(w.dot(sp.S_full(w)));
+  V.col(0) = w;
+  Eigen::SelfAdjointEigenSolver<Matrix> es;
+  int m = 0;  // Krylov dimension reached
+  bool done = false;
+  Matrix H = Matrix::Zero(max_steps, max_steps);  // V^T M V = V^T S T V, by columns
+  for (int k = 0; k < max_steps && !done; ++k) {
+    const Vector p = sp.m_times(V.col(k));
+    const auto Vk = V.leftCols(k + 1);
+    // Column k of the Rayleigh quotient V^T M V: exact up to the dot products' rounding,
+    // whatever the solve's error (which only slows convergence).
+    const Vector h = Vk.transpose() * p;
+    H.col(k).head(k + 1) = h;
+    H.row(k).head(k + 1) = h.transpose();
+    w = sp.solve_full(p);
+    const double b0 = std::sqrt(std::max(0.0, w.dot(p)));  // ||w||_S before orthogonalization
+    w.noalias() -= Vk * h;  // Gram-Schmidt with <w, v_j>_S = v_j^T (p - J^T lambda) = h_j
+    Vector q = sp.S_full(w);
+    double b = std::sqrt(std::max(0.0, w.dot(q)));
+    if (!(b > 0.7 * b0)) {  // DGKS: cancellation, so a second pass with the true S w
+      const Vector h2 = Vk.transpose() * q;
+      w.noalias() -= Vk * h2;
+      q = sp.S_full(w);
+      b = std::sqrt(std::max(0.0, w.dot(q)));
+    }
+    m = k + 1;
+    if (!(b > 1e-10 * b0) && m < r) {
+      // The Krylov space closed (a single start vector spans one copy of each multiple
+      // eigenvalue: the free ring's three rigid modes and its cos/sin pairs): continue
+      // with a fresh random direction in the null space, S-orthogonal to V. H stays the
+      // exact Rayleigh quotient (its new column comes from the next step's dots).
+      for (int i = 0; i < N; ++i) w[i] = uni(gen);
+      w = sp.solve_full(w);
+      for (int pass = 0; pass < 2; ++pass) w.noalias() -= Vk * (Vk.transpose() * sp.S_full(w)).eval();
+      sp.project(w);
+      b = std::sqrt(std::max(0.0, w.dot(sp.S_full(w))));
+      V.col(k + 1) = w / b;
+      continue;
+    }
+    const bool invariant = m == r;
+    if (m >= nev) {
+      es.compute(H.topLeftCorner(m, m));
+      if (es.info() != Eigen::Success) throw ring::NumericalError("multibody: Ritz eigensolver failed");
+      done = invariant;
+      if (!done) {
+        done = true;
+        for (int i = 0; i < nev; ++i) {
+          const int j = m - 1 - i;  // ascending order: the largest last
+          const double theta = es.eigenvalues()[j];
+          if (std::abs(b * es.eigenvectors()(m - 1, j)) > tol * std::abs(theta)) done = false;
+        }
+      }
+    }
+    if (!done) {
+      sp.project(w);  // rounding (and, at invariance, noise) off the null space of J
+      V.col(k + 1) = w / b;  // the projection moves w by rounding only (not invariant here)
+    }
   }
-};
-struct SparseBOp {
-  using Scalar = double;
-  const SparseReduced& p;
-  Eigen::Index rows() const { return p.r(); }
-  Eigen::Index cols() const { return p.r(); }
-  void perform_op(const double* x, double* y) const {
-    Eigen::Map<Vector>(y, p.r()) = p.S0(Eigen::Map<const Vector>(x, p.r()));
+  if (!done)
+    throw ring::NumericalError("multibody: sparse Lanczos did not converge for " + std::to_string(nev) +
+                               " modes of " + std::to_string(r) + " in " + std::to_string(max_steps) + " steps");
+  if (std::getenv("RINGVIB_MODES_TRACE")) std::fprintf(stderr, "lanczos steps %d\n", m);
+  mu.resize(nev);
+  Matrix Y(m, nev);
+  for (int i = 0; i < nev; ++i) {
+    mu[i] = es.eigenvalues()[m - 1 - i];
+    Y.col(i) = es.eigenvectors().col(m - 1 - i);
   }
-  void solve(const double* x, double* y) const {
-    Eigen::Map<Vector>(y, p.r()) = p.S0_solve(Eigen::Map<const Vector>(x, p.r()));
-  }
-};
+  vecs = V.leftCols(m) * Y;
+}
 
 /// Lanczos parameters shared by both paths: ncv >= 2 nev + 1, tolerance 1e-13 relative
 /// on the Ritz residuals (eigenvalue error ~ residual^2 / gap: far below 1e-8).
@@ -378,6 +506,10 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
                           int count) {
   const auto start = std::chrono::steady_clock::now();
   const bool sparse = uses_sparse_path(options);
+  const bool dbg = std::getenv("RINGVIB_MODES_TRACE") != nullptr;
+  auto tick = [&](const char* what) {
+    if (dbg) std::fprintf(stderr, "%-12s %.3f s\n", what, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
   if (sparse && options.dependent == Dependent::paper)
     throw std::invalid_argument(
         "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "
@@ -439,18 +571,11 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   } else {
     // M0 is positive definite by construction (see above); on this path it is never formed,
     // so the check is that every Ritz value mu = x^T M0 x / x^T S0 x comes out > 0.
+    tick("chain");
     sp.emplace(chain, s);
-    SparseAOp aop{*sp};
-    SparseBOp bop{*sp};
-    Spectra::SymGEigsSolver<SparseAOp, SparseBOp, Spectra::GEigsMode::RegularInverse> eigs(
-        aop, bop, nev, ncv_for(nev, r));
-    eigs.init();
-    eigs.compute(Spectra::SortRule::LargestAlge, 1000, 1e-13);
-    if (eigs.info() != Spectra::CompInfo::Successful)
-      throw ring::NumericalError("multibody: sparse Lanczos (Spectra) did not converge for " +
-                                 std::to_string(nev) + " modes of " + std::to_string(r));
-    mu = eigs.eigenvalues();
-    vecs = eigs.eigenvectors();
+    tick("factor");
+    sparse_lanczos(*sp, nev, mu, vecs);
+    tick("lanczos");
     if (!(mu.minCoeff() > 0.0))
       throw ring::NumericalError("multibody: non-positive Ritz value of S0^{-1} M0: M0 is not "
                                  "positive definite (n = " + std::to_string(chain.n()) + ")");
@@ -485,20 +610,73 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   res.model["method"] = std::string(sparse ? "sparse" : "dense");
   res.rigid_modes = static_cast<int>(rigid.size());
   res.unknowns = r;
+  // Norms for the backward error: ||K0||_2 and ||M0||_2 estimated by power iteration
+  // (10 products from an alternating start; the Rayleigh quotient is a lower bound and
+  // converges to ~1 % for these spectra, which is all a backward error's scale needs).
+  auto norm_est = [](const std::function<Vector(const Vector&)>& op, int dim) {
+    Vector v(dim);
+    for (int i = 0; i < dim; ++i) v[i] = (i % 2 ? 1.0 : -1.0) * (1.0 + 0.25 * std::sin(1.0 + i));
+    double lam = 0.0;
+    for (int it = 0; it < 10; ++it) {
+      v /= v.norm();
+      const Vector y = op(v);
+      lam = v.dot(y);
+      v = y;
+    }
+    return lam;
+  };
   sol.x.resize(r, count);
-  for (int k = 0; k < count; ++k) {
-    Vector x = vecs.col(keep[k]);
-    Vector Mx = M0x(x);
-    const double norm = std::sqrt(x.dot(Mx));
-    x /= norm;
-    Mx /= norm;
-    const double w2 = 1.0 / mu[keep[k]] - s;
-    const Vector Kx = K0x(x);
-    res.max_residual = std::max(res.max_residual, (Kx - w2 * Mx).norm() / (Kx.norm() + w2 * Mx.norm()));
-    res.omega.push_back(std::sqrt(w2));
-    sol.x.col(k) = x;
+  if (!sparse) {
+    for (int k = 0; k < count; ++k) {
+      Vector x = vecs.col(keep[k]);
+      Vector Mx = M0x(x);
+      const double norm = std::sqrt(x.dot(Mx));
+      x /= norm;
+      Mx /= norm;
+      sol.x.col(k) = x;
+    }
+  } else {
+    // Chain-coordinate Ritz vectors (in the null space of J): M-normalize them, then
+    // x = D^T dq in one blocked Householder application.
+    sol.dq.resize(N, count);
+    for (int k = 0; k < count; ++k) {
+      Vector d = vecs.col(keep[k]);
+      d /= std::sqrt(d.dot(sp->m_times(d)));
+      sol.dq.col(k) = d;
+    }
+    vecs.resize(0, 0);
+    sol.x = sp->reduce_cols(sol.dq);
   }
-  sol.dq = sol.model.expand(sol.x);
+  tick("vectors");
+  // Scales: dense, ||K0|| and ||M0||; sparse, ||K|| and ||M|| of the chain (N = r + c:
+  // the c constrained directions barely move the largest eigenvalue), O(n) per product.
+  double normK, normM;
+  if (!sparse) {
+    normK = norm_est(K0x, r);
+    normM = norm_est(M0x, r);
+  } else {
+    normK = norm_est([&sp](const Vector& v) { return sp->k_times(v); }, N);
+    normM = norm_est([&sp](const Vector& v) { return sp->m_times(v); }, N);
+  }
+  for (int k = 0; k < count; ++k) {
+    const Vector x = sol.x.col(k);
+    const double w2 = 1.0 / mu[keep[k]] - s;
+    Vector Mx, Kx;
+    if (!sparse) {
+      Mx = M0x(x);
+      Kx = K0x(x);
+    } else {  // D^T K dq, D^T M dq with dq = D x
+      Kx = sp->reduce(sp->k_times(sol.dq.col(k)));
+      Mx = sp->reduce(sp->m_times(sol.dq.col(k)));
+    }
+    const double rn = (Kx - w2 * Mx).norm();
+    res.max_residual = std::max(res.max_residual, rn / (Kx.norm() + w2 * Mx.norm()));
+    sol.backward_error = std::max(sol.backward_error, rn / ((normK + w2 * normM) * x.norm()));
+    res.omega.push_back(std::sqrt(w2));
+  }
+  tick("residuals");
+  if (!sparse) sol.dq = sol.model.expand(sol.x);
+  tick("expand");
   // Solver time: everything up to the chain-coordinate shapes; the sampling at the
   // common stations below is output formatting (ring::sample_polygon, ~10 us per mode).
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -506,6 +684,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   // Hinge displacements delta p_k = delta p_0 + l sum_{j<k} e'(phi0_j) delta phi_j.
   const int n = chain.n();
   const Vector& phi0 = chain.phi0();
+  const Vector ls = chain.l() * phi0.array().sin(), lc = chain.l() * phi0.array().cos();
   sol.hinge_ux.resize(n, count);
   sol.hinge_uy.resize(n, count);
   for (int k = 0; k < count; ++k) {
@@ -513,13 +692,14 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     for (int j = 0; j < n; ++j) {
       sol.hinge_ux(j, k) = x;
       sol.hinge_uy(j, k) = yv;
-      x -= chain.l() * std::sin(phi0[j]) * sol.dq(j, k);
-      yv += chain.l() * std::cos(phi0[j]) * sol.dq(j, k);
+      x -= ls[j] * sol.dq(j, k);
+      yv += lc[j] * sol.dq(j, k);
     }
     const Vector ux = sol.hinge_ux.col(k), uy = sol.hinge_uy.col(k);
     res.shapes.push_back(ring::sample_polygon(chain.anchor_deg(), std::vector<double>(ux.data(), ux.data() + n),
                                               std::vector<double>(uy.data(), uy.data() + n)));
   }
+  tick("sampling");
   return sol;
 }
 

@@ -1,8 +1,10 @@
 // Time of the 23 lowest modes of the paper's ring (pinned, rotary inertia on) on the
-// dense path, n = 40, 160, 640, 2000 (and the sparse path at n = 40, 2000, 10000);
+// dense path, n = 40, 160, 640, 2000, and the sparse path from n = 40 to 10^6 (with the
+// process's peak RSS; run one n per process for a per-n peak, multibody/README.md);
 // phases timed separately (assembly + reduction, then the whole compute_modes). Run, Release build:
 //   build/bin/bench_multibody_modes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include "multibody/modes.hpp"
 
@@ -34,14 +36,24 @@ void BM_ComputeModes23(benchmark::State& st) {
   st.counters["unknowns"] = static_cast<double>(r.unknowns);
   st.counters["solver_s"] = benchmark::Counter(solver_seconds, benchmark::Counter::kAvgIterations);
   st.counters["omega1"] = r.omega[0];
+  // Peak resident set of the whole process so far (Linux: KiB): per-n only when one n
+  // runs per process (--benchmark_filter), as in multibody/README.md.
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  st.counters["peak_rss_MiB"] = static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 BENCHMARK(BM_ComputeModes23)
     ->ArgsProduct({{40, 160, 640, 2000}, {1}, {0}})
     ->Args({640, 0, 0})
     ->Args({2000, 0, 0})
     ->Args({40, 1, 1})
+    ->Args({160, 1, 1})
+    ->Args({320, 1, 1})
+    ->Args({640, 1, 1})
     ->Args({2000, 1, 1})
     ->Args({10000, 1, 1})
+    ->Args({100000, 1, 1})
+    ->Args({1000000, 1, 1})
     ->ArgNames({"n", "rot", "sparse"})
     ->Unit(benchmark::kMillisecond);
 

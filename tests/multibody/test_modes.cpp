@@ -248,15 +248,18 @@ TEST(MultibodyModes, SparsePathMatchesDenseAtN160) {
     for (bool rot : {true, false}) {
       SCOPED_TRACE(std::string(spec.supports.free() ? "free" : spec.supports.roller ? "roller" : "pin") + (rot ? " rotary" : ""));
       const auto d = multibody::compute_modes(spec, opts(160, rot, Dep::robust, Method::dense), 23);
-      const auto s = multibody::compute_modes(spec, opts(160, rot, Dep::robust, Method::sparse), 23);
+      const auto sol = multibody::solve_modes(spec, opts(160, rot, Dep::robust, Method::sparse), 23);
+      const auto& s = sol.result;
       EXPECT_EQ(std::get<std::string>(s.model.at("method")), "sparse");
       EXPECT_EQ(std::get<std::string>(d.model.at("method")), "dense");
       EXPECT_EQ(s.rigid_modes, d.rigid_modes);
-      // independent algorithms (dense Cholesky vs banded mixed LU + Lanczos): 1e-10,
+      // independent algorithms (dense Cholesky vs Riccati sweeps + own Lanczos): 1e-10,
       // two orders above the 1e-12 both reach against the oracles at this n
       for (int i = 0; i < 23; ++i) EXPECT_TRUE(ringtest::IsClose(s.omega[i], d.omega[i], 1e-10)) << "mode " << i + 1;
-      // residual of the sparse path at n = 160: measured 1e-12 .. 5e-11
-      EXPECT_LT(s.max_residual, 1e-10);
+      // Normwise backward error of the sparse path at n = 160: measured 1e-14 .. 1.1e-12
+      // (its Lanczos stops at a 1e-8 relative Ritz residual); max_residual is floored by
+      // the rounding of K0 x (up to 1e-9 here, modes.hpp) and not a test of the solver.
+      EXPECT_LT(sol.backward_error, 1e-10);
       if (!spec.supports.free()) {
         for (int i = 0; i < 23; ++i) EXPECT_GT(ring::mac(s.shapes[i], d.shapes[i]), 1 - 1e-8);
       }
