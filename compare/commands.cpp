@@ -2,20 +2,19 @@
 
 #include <unistd.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "compare/bench.hpp"
+#include "compare/converge.hpp"
 #include "compare/gates.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
-#include "compare/bench.hpp"
-#include "compare/converge.hpp"
 #include "compare/report.hpp"
 #include "compare/response.hpp"
 #include "compare/solvers.hpp"
@@ -45,15 +44,16 @@ ring::Scene load(const CommonArgs& a) {
   return s;
 }
 
-/// The solvers of the table in column order: the scene's [table], else modes.solvers.
+/// The solvers whose modes the scene asks for, in column order: the scene's [table]
+/// (base, then against), then any other solver of modes.solvers.
 std::vector<std::string> table_solvers(const ring::Scene& s) {
   std::vector<std::string> v;
   if (s.table.present) {
     v.push_back(s.table.base);
     for (const auto& o : s.table.against) v.push_back(o);
-  } else {
-    v = s.modes.solvers;
   }
+  for (const auto& o : s.modes.solvers)
+    if (std::find(v.begin(), v.end(), o) == v.end()) v.push_back(o);
   return v;
 }
 
