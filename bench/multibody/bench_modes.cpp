@@ -43,7 +43,7 @@ void BM_ComputeModes23(benchmark::State& st) {
   st.counters["peak_rss_MiB"] = static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 BENCHMARK(BM_ComputeModes23)
-    ->ArgsProduct({{40, 160, 640, 2000}, {1}, {0}})
+    ->ArgsProduct({{40, 160, 320, 640, 2000}, {1}, {0}})
     ->Args({640, 0, 0})
     ->Args({2000, 0, 0})
     ->Args({40, 1, 1})
