@@ -394,7 +394,7 @@ class SparseReduced {
 /// coordinates x = D^T dq, so the Ritz values are those of the reduced pencil and the
 /// Householder basis D is applied only to the final vectors. No restart: the wanted
 /// mu = 1/(omega^2 + s) are the best separated end of the spectrum (omega^2 grows like
-/// k^4), so ~2 nev steps converge them (measured: 50..52 steps for nev = 26, n = 2000 ..
+/// k^4), so ~2 nev steps converge them (measured: 45..50 steps for nev = 26, n = 2000 ..
 /// 10^6).
 /// Step k: p = M v_k, w = S_c p; since S w = p - J^T lambda and J v_j = 0, the local
 /// coefficients <w, v_j>_S = v_j^T p (j = k-1, k) need no S product; then one full
