@@ -505,7 +505,10 @@ bool uses_sparse_path(const ring::MultibodyOptions& options) {
 ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           int count) {
   const auto start = std::chrono::steady_clock::now();
-  const bool sparse = uses_sparse_path(options);
+  // Automatic choice: the sparse path also needs few modes relative to r (its Lanczos
+  // basis grows with the count; asking for a third of the spectrum or more is the dense
+  // path's job, as in the small-problem rule of the dense path itself). Set below.
+  bool sparse = uses_sparse_path(options);
   const bool dbg = std::getenv("RINGVIB_MODES_TRACE") != nullptr;
   auto tick = [&](const char* what) {
     if (dbg) std::fprintf(stderr, "%-12s %.3f s\n", what, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -521,6 +524,9 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     throw std::invalid_argument("multibody: count = " + std::to_string(count) +
                                 " must satisfy 1 <= count <= " + std::to_string(r - expected_rigid) +
                                 " (elastic modes of the n = " + std::to_string(chain.n()) + " chain)");
+  if (sparse && options.method == ring::MultibodyOptions::Method::automatic &&
+      3 * std::min(r, count + expected_rigid + 2) > r)
+    sparse = false;
   const double R = spec.radius;
   const double s = spec.EI() / (spec.rhoA() * R * R * R * R);
   const int nev = std::min(r, count + expected_rigid + 2);

@@ -107,7 +107,9 @@ constexpr double kRigidThreshold = 1e-6;
 /// 207 ms / sparse 14 ms at n = 640. Both are within 1e-12 of the independent oracles on
 /// either side (tests/multibody/test_modes_sparse.cpp), so the switch costs no accuracy.
 constexpr int kSparseThreshold = 256;
-/// True when solve_modes will take the sparse large-n path for these options.
+/// True when solve_modes may take the sparse large-n path for these options (automatic:
+/// n > kSparseThreshold, robust; solve_modes then also requires count + rigid + 2 <= r / 3,
+/// else dense).
 bool uses_sparse_path(const ring::MultibodyOptions& options);
 
 /// The linearized, constraint-reduced problem about the n-gon (for tests and studies).
