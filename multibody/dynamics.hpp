@@ -41,8 +41,16 @@
 // end exactly on the recorded grid. Below min_dt an IntegrationFailure is thrown, as it
 // is when non-adjacent segments come closer than the section depth (the ring touches
 // itself; the model has no contact).
-// MultibodyOptions: n and rotary_inertia are used; `dependent` and `method` are not
-// (the partition is chosen by pivoting at every step; all matrices are dense).
+// MultibodyOptions: n, rotary_inertia and method are used; `dependent` is not (the
+// partition is chosen by pivoting at every step).
+// method: `dense` forms the n x n tangent (O(n^2) per Newton iteration, O(n^3) per
+// factorization); `sparse` (issue 8) keeps the same equations, iterates and policies but
+// never forms an n x n matrix: the tangent is diag + cyclic springs + m l^2 U^T (L^T L) W
+// with L the midpoint cumulative sum, whose bidiagonal relations make the saddle-point
+// system banded plus a border of 2 + c unknowns (dynamics_sparse.hpp): O(n) time and
+// memory per Newton iteration, and the self-contact test uses a uniform grid (O(n)).
+// `automatic` takes sparse from n = kSparseDynamicsCrossover. The two paths give the
+// same histories to ~1e-12 of the peak displacement (tests at n = 40, 160, 1280).
 #pragma once
 
 #include <string>
@@ -81,12 +89,17 @@ struct IntegrationControls {
   /// Newton converged when the correction is <= tol_q (rad) (and, index 3, |g| <= 1e-12 R)
   double tol_q = 1e-9;
   int snapshots = 6;            ///< deformed shapes stored, evenly spaced in [0, t_end]
-  bool check_contact = true;    ///< test non-adjacent segments for contact each step (O(n^2))
+  /// test non-adjacent segments for contact each step (O(n^2) box loop below 128
+  /// segments, a uniform grid above: O(n); same result)
+  bool check_contact = true;
 };
 
 /// Segments from which MultibodyOptions::Method::automatic takes the O(n) sparse path
-/// (dynamics_sparse.hpp); measured crossover, see bench/multibody/bench_dynamics.cpp.
-constexpr int kSparseDynamicsCrossover = 200;
+/// (dynamics_sparse.hpp). Measured (bench/multibody/bench_dynamics.cpp, CPU time per
+/// step, 20 kN scene): n = 40 dense 68/85 us vs sparse 67/100 us (generalized-alpha /
+/// newmark); n = 60-80 equal within the noise of a loaded machine (500-step runs);
+/// n = 160 dense 703/742 us vs sparse 417/477 us. So the crossover lies near 80-100.
+constexpr int kSparseDynamicsCrossover = 100;
 
 /// True when respond() takes the O(n) structured/sparse path for these options.
 bool use_sparse_path(const ring::MultibodyOptions& options);
@@ -101,9 +114,12 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// balance error T + V + D - W (J; D the energy dissipated by damping, midpoint rule
 /// per step), constraint
 /// residual max |g| (m), Newton iterations of the step (summed over sub-steps).
-/// Cost per step: O(n^2) per Newton iteration (3 to 7) plus an O(n^3) factorization
-/// whenever the kept Newton matrix is refreshed (measured: 44 us per step at n = 40
-/// with generalized-alpha, 36 ms at n = 640; see bench/multibody/bench_dynamics.cpp).
+/// Cost per step: dense path O(n^2) per Newton iteration (3 to 7) plus an O(n^3)
+/// factorization whenever the kept Newton matrix is refreshed (measured: 44 us per step
+/// at n = 40 with generalized-alpha, 36 ms at n = 640); sparse path O(n) per iteration
+/// (see bench/multibody/bench_dynamics.cpp for both). The number of Newton iterations
+/// per step grows with n under the paper's point step load (about 5 at n = 40, 7 at
+/// 2560, 20-50 at 10^4 in the first steps, with step halving).
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
 /// IntegrationFailure (a ring::NumericalError) when the integration cannot continue.
