@@ -479,7 +479,6 @@ void sparse_lanczos(const SparseReduced& sp, int nev, Vector& mu, Matrix& vecs) 
   if (!done)
     throw ring::NumericalError("multibody: sparse Lanczos did not converge for " + std::to_string(nev) +
                                " modes of " + std::to_string(r) + " in " + std::to_string(max_steps) + " steps");
-  if (std::getenv("RINGVIB_MODES_TRACE")) std::fprintf(stderr, "lanczos steps %d\n", m);
   mu.resize(nev);
   Matrix Y(m, nev);
   for (int i = 0; i < nev; ++i) {
@@ -509,15 +508,14 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   // basis grows with the count; asking for a third of the spectrum or more is the dense
   // path's job, as in the small-problem rule of the dense path itself). Set below.
   bool sparse = uses_sparse_path(options);
-  const bool dbg = std::getenv("RINGVIB_MODES_TRACE") != nullptr;
-  auto tick = [&](const char* what) {
-    if (dbg) std::fprintf(stderr, "%-12s %.3f s\n", what, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  };
   if (sparse && options.dependent == Dependent::paper)
     throw std::invalid_argument(
         "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "
         "offered on the dense path only)");
   const Chain chain(spec, options);
+  if (sparse && options.method == ring::MultibodyOptions::Method::sparse && chain.n() < 12)
+    throw std::invalid_argument("multibody: method = sparse needs n >= 12 (n = " + std::to_string(chain.n()) +
+                                "); use method = \"dense\" or \"auto\"");
   const int N = chain.dofs(), r = N - chain.constraint_count();
   const int expected_rigid = spec.supports.rigid_modes();
   if (count < 1 || count > r - expected_rigid)
@@ -577,11 +575,8 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   } else {
     // M0 is positive definite by construction (see above); on this path it is never formed,
     // so the check is that every Ritz value mu = x^T M0 x / x^T S0 x comes out > 0.
-    tick("chain");
     sp.emplace(chain, s);
-    tick("factor");
     sparse_lanczos(*sp, nev, mu, vecs);
-    tick("lanczos");
     if (!(mu.minCoeff() > 0.0))
       throw ring::NumericalError("multibody: non-positive Ritz value of S0^{-1} M0: M0 is not "
                                  "positive definite (n = " + std::to_string(chain.n()) + ")");
@@ -653,7 +648,6 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     vecs.resize(0, 0);
     sol.x = sp->reduce_cols(sol.dq);
   }
-  tick("vectors");
   // Scales: dense, ||K0|| and ||M0||; sparse, ||K|| and ||M|| of the chain (N = r + c:
   // the c constrained directions barely move the largest eigenvalue), O(n) per product.
   double normK, normM;
@@ -667,7 +661,6 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   // D^T K dq and D^T M dq on the sparse path in blocks of columns: one blocked Householder
   // application per block instead of one per vector (2.4 s -> ~0.5 s at n = 10^6), with
   // the extra memory bounded by 4 N kBlock doubles.
-  tick("norms");
   constexpr int kBlock = 6;
   for (int k0 = 0; k0 < count; k0 += kBlock) {
     const int nb = std::min(kBlock, count - k0);
@@ -695,9 +688,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
       res.omega.push_back(std::sqrt(w2));
     }
   }
-  tick("residuals");
   if (!sparse) sol.dq = sol.model.expand(sol.x);
-  tick("expand");
   // Solver time: everything up to the chain-coordinate shapes; the sampling at the
   // common stations below is output formatting (ring::sample_polygon, ~10 us per mode).
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -720,7 +711,6 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     res.shapes.push_back(ring::sample_polygon(chain.anchor_deg(), std::vector<double>(ux.data(), ux.data() + n),
                                               std::vector<double>(uy.data(), uy.data() + n)));
   }
-  tick("sampling");
   return sol;
 }
 
