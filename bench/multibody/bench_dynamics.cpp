@@ -2,7 +2,10 @@
 // integrators, and the whole 500-step paper scene (target: under 50 ms). Issue 8: the
 // same on the dense and the O(n) sparse path (second argument 0 = dense, 1 = sparse)
 // at n = 40, 160, 640, 2560, 10000 (dense only up to 640: 51 ms/step there, O(n^3)),
-// and n = 10^4 for 1000 steps (BM_LongRunSparse, target well under a minute).
+// and n = 10^4 for the first 100 steps (BM_LongRunSparse; the issue's target is 1000
+// steps well under a minute, which is NOT met: the Newton iteration is O(n), ~5 ms at
+// n = 10^4, but under the point step load the iterations per step grow with n (20-60,
+// with step halving), and a 1000-step newmark run took over 8 min of CPU).
 // Scene: the paper ring (R = 10 m, circle d = 0.12 m, steel), pin at 180 deg, roller at
 // 0 deg, a 20 kN step force at 0 deg toward the pin, dt = 0.01 s. Counters: steps per
 // run, Newton iterations per step, unknowns n. Run with
@@ -69,17 +72,17 @@ void step_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_StepNewmark)->Apply(step_args)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StepGeneralizedAlpha)->Apply(step_args)->Unit(benchmark::kMillisecond);
 
-/// n = 10^4, 1000 steps (10 s of the 20 kN scene) on the sparse path: total time.
+/// n = 10^4, 100 steps (1 s of the 20 kN scene) on the sparse path: total time.
 void long_run(benchmark::State& state, Integrator integrator) {
   ring::MultibodyOptions o;
   o.n = 10000;
   o.method = ring::MultibodyOptions::Method::sparse;
-  const ring::ResponseOptions r = scene(integrator, 10.0);
+  const ring::ResponseOptions r = scene(integrator, 1.0);
   double iterations = 0.0, worst_g = 0.0, t_reached = 0.0;
   for (auto _ : state) {
     ring::TimeHistory th;
-    // generalized-alpha stops with IntegrationFailure at n = 10^4 (t = 2.32 s: Newton
-    // fails even at the minimum step); time and count what was integrated.
+    // generalized-alpha stops with IntegrationFailure at n = 10^4 over 10 s (t = 2.32 s:
+    // Newton fails even at the minimum step); time and count what was integrated.
     try {
       th = multibody::respond(paper_ring(), o, r);
     } catch (const multibody::IntegrationFailure& f) {
