@@ -111,10 +111,17 @@ StructuredMatrix mass_structured(const Chain& chain, const Vector& q) {
   return M;
 }
 
-// ---- banded LU with partial pivoting (LAPACK's dgbtf2/dgbtrs, unblocked) ----
-// A(i, j) is stored at ab[j * ldab + kv + i - j], kv = kl + ku, ldab = 2 kl + ku + 1: the
-// kl extra rows hold the fill of the row interchanges. O(N kl (kl + ku)) to factor,
-// O(N (2 kl + ku)) to solve.
+// ---- banded LU with partial pivoting: LAPACK's dgbtrf/dgbtrs ----
+// A(i, j) is stored at ab[j * ldab + kv + i - j], kv = kl + ku, ldab = 2 kl + ku + 1 (LAPACK's
+// band storage: the kl extra rows hold the fill of the row interchanges). O(N kl (kl + ku))
+// to factor, O(N (2 kl + ku)) to solve.
+extern "C" {
+void dgbtrf_(const int* m, const int* n, const int* kl, const int* ku, double* ab, const int* ldab, int* ipiv,
+             int* info);
+void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku, const int* nrhs, const double* ab,
+             const int* ldab, const int* ipiv, double* b, const int* ldb, int* info, std::size_t trans_len);
+}
+
 void BandLU::resize(Eigen::Index N, int kl, int ku) {
   N_ = N;
   kl_ = kl;
@@ -125,75 +132,21 @@ void BandLU::resize(Eigen::Index N, int kl, int ku) {
 }
 
 bool BandLU::factor() {
-  const int kv = kl_ + ku_;
-  Eigen::Index ju = 0;
-  for (Eigen::Index j = 0; j < N_; ++j) {
-    const Eigen::Index km = std::min<Eigen::Index>(kl_, N_ - 1 - j);
-    double* col = &ab_[size_t(j) * ldab_];
-    Eigen::Index jp = 0;
-    double best = std::abs(col[kv]);
-    for (Eigen::Index r = 1; r <= km; ++r)
-      if (std::abs(col[kv + r]) > best) best = std::abs(col[kv + r]), jp = r;
-    ipiv_[j] = j + jp;
-    if (!(best > 0.0) || !std::isfinite(best)) return false;
-    ju = std::max(ju, std::min<Eigen::Index>(j + ku_ + jp, N_ - 1));
-    if (jp != 0)
-      for (Eigen::Index c = j; c <= ju; ++c)
-        std::swap(at(j, c), at(j + jp, c));
-    const double inv = 1.0 / col[kv];
-    for (Eigen::Index r = 1; r <= km; ++r) col[kv + r] *= inv;
-    for (Eigen::Index c = j + 1; c <= ju; ++c) {
-      const double f = at(j, c);
-      if (f == 0.0) continue;
-      double* cc = &ab_[size_t(c) * ldab_ + kv + j - c];
-      for (Eigen::Index r = 1; r <= km; ++r) cc[r] -= col[kv + r] * f;
-    }
-  }
-  return true;
+  for (double x : ab_)
+    if (!std::isfinite(x)) return false;
+  const int n = static_cast<int>(N_);
+  int info = 0;
+  dgbtrf_(&n, &n, &kl_, &ku_, ab_.data(), &ldab_, ipiv_.data(), &info);
+  return info == 0;  // info > 0: an exactly zero pivot
 }
 
 void BandLU::solve_many(double* b, Eigen::Index ld, Eigen::Index k) const {
-  // The same sweeps as solve(), each band column read once for all k right-hand sides.
-  const int kv = kl_ + ku_;
-  for (Eigen::Index j = 0; j < N_; ++j) {
-    const Eigen::Index km = std::min<Eigen::Index>(kl_, N_ - 1 - j);
-    const double* col = &ab_[size_t(j) * ldab_];
-    for (Eigen::Index q = 0; q < k; ++q) {
-      double* bq = b + q * ld;
-      if (ipiv_[j] != j) std::swap(bq[ipiv_[j]], bq[j]);
-      const double bj = bq[j];
-      if (bj == 0.0) continue;
-      for (Eigen::Index r = 1; r <= km; ++r) bq[j + r] -= col[kv + r] * bj;
-    }
-  }
-  for (Eigen::Index j = N_ - 1; j >= 0; --j) {
-    const double* col = &ab_[size_t(j) * ldab_];
-    const Eigen::Index i0 = std::max<Eigen::Index>(0, j - kv);
-    for (Eigen::Index q = 0; q < k; ++q) {
-      double* bq = b + q * ld;
-      bq[j] /= col[kv];
-      const double bj = bq[j];
-      if (bj == 0.0) continue;
-      for (Eigen::Index i = i0; i < j; ++i) bq[i] -= col[kv + i - j] * bj;
-    }
-  }
+  const int n = static_cast<int>(N_), nrhs = static_cast<int>(k), ldb = static_cast<int>(ld);
+  int info = 0;
+  dgbtrs_("N", &n, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), b, &ldb, &info, 1);
 }
 
-void BandLU::solve(double* b) const {
-  const int kv = kl_ + ku_;
-  for (Eigen::Index j = 0; j < N_; ++j) {
-    const Eigen::Index km = std::min<Eigen::Index>(kl_, N_ - 1 - j);
-    if (ipiv_[j] != j) std::swap(b[ipiv_[j]], b[j]);
-    const double* col = &ab_[size_t(j) * ldab_];
-    for (Eigen::Index r = 1; r <= km; ++r) b[j + r] -= col[kv + r] * b[j];
-  }
-  for (Eigen::Index j = N_ - 1; j >= 0; --j) {
-    const double* col = &ab_[size_t(j) * ldab_];
-    b[j] /= col[kv];
-    const double bj = b[j];
-    for (Eigen::Index i = std::max<Eigen::Index>(0, j - kv); i < j; ++i) b[i] -= col[kv + i - j] * bj;
-  }
-}
+void BandLU::solve(double* b) const { solve_many(b, N_, 1); }
 
 // Unknowns, segment by segment: dq_j, then per term (y_x, y_y, s_x, s_y)_j. Rows in the
 // same order: the equation of dq_j, the y and s relations. The term's coefficient goes

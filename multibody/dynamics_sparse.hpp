@@ -65,7 +65,7 @@ void inertia_terms_structured(const Chain& chain, const Vector& q, const Vector&
 /// M(q) as a structured matrix (m l^2 U^T A U + Jr I). O(n).
 StructuredMatrix mass_structured(const Chain& chain, const Vector& q);
 
-/// Banded LU with partial pivoting (an unblocked port of LAPACK's dgbtf2/dgbtrs):
+/// Banded LU with partial pivoting by LAPACK (dgbtrf/dgbtrs) in LAPACK's band storage:
 /// lower bandwidth kl, upper ku. O(N kl (kl + ku)) to factor, O(N (2 kl + ku)) to solve.
 class BandLU {
  public:
@@ -82,7 +82,7 @@ class BandLU {
   Eigen::Index N_ = 0;
   int kl_ = 0, ku_ = 0, ldab_ = 1;
   std::vector<double> ab_;
-  std::vector<Eigen::Index> ipiv_;
+  std::vector<int> ipiv_;  ///< LAPACK's 1-based row interchanges
 };
 
 /// The factorized saddle-point matrix [T sc G^T; sc G 0] of a structured T: the banded

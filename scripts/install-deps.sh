@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev            # dense and sparse linear algebra (all solvers)
   libarpack2-dev           # ARPACK (through deal.II in fem_reference/)
   libspectra-dev           # shift-invert Lanczos on Eigen sparse matrices (multibody, lumped)
+  liblapack-dev            # banded LU (dgbtrf) of the multibody dynamics' O(n) Newton solve
   libdeal.ii-dev           # FE reference only (fem_reference/)
   libtomlplusplus-dev      # scene files
   libcli11-dev             # command line
