@@ -7,24 +7,15 @@
 
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
+#include "tests/multibody/common.hpp"
 
 namespace {
+
+using mbtest::paper_ring;
 
 using multibody::Chain;
 using multibody::Matrix;
 using multibody::Vector;
-
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  s.supports.roller = 0.0;
-  return s;
-}
 
 struct State {
   Vector q, v, a, lambda;

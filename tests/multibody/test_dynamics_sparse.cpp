@@ -15,30 +15,16 @@
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
 #include "tests/support/close.hpp"
+#include "tests/multibody/common.hpp"
 
 namespace {
+
+using mbtest::sci;
+using mbtest::paper_ring;
 
 using multibody::Matrix;
 using multibody::Vector;
 using Integrator = ring::ResponseOptions::Integrator;
-
-inline std::string sci(double x) {
-  std::ostringstream s;
-  s << std::setprecision(4) << std::scientific << x;
-  return s.str();
-}
-
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  s.supports.roller = 0.0;
-  return s;
-}
 
 ring::ResponseOptions paper_scene(Integrator integrator, double t_end = 5.0) {
   ring::ResponseOptions r;

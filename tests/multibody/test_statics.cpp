@@ -20,27 +20,12 @@
 #include "ring/errors.hpp"
 #include "tests/multibody/elastica.hpp"
 #include "tests/support/close.hpp"
+#include "tests/multibody/common.hpp"
 
 namespace {
 
-/// A number for RecordProperty, in scientific notation with 4 significant digits.
-inline std::string sci(double x) {
-  std::ostringstream s;
-  s << std::setprecision(4) << std::scientific << x;
-  return s.str();
-}
-
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  s.supports.roller = 0.0;
-  return s;
-}
+using mbtest::sci;
+using mbtest::paper_ring;
 
 struct Diametral {
   double along, across;
