@@ -49,7 +49,7 @@
 // is applied only to the final vectors (x = D^T dq). Cost: ~45-50 Lanczos steps for 23
 // modes at every n, each O(n) plus 4 k n for the reorthogonalization (k = step); memory
 // N x (steps + 1) doubles plus the outputs. Measured curve: multibody/README.md. Robust
-// dependent coordinates only; meant for n >= 12 (at n = 8 every mode is wanted and the
+// dependent coordinates only; n >= 10 (forcing it below is an input error: at n = 8 every mode is wanted and the
 // Krylov space degenerates).
 //
 // ## Residuals: why max_residual grows like n^2 on either path and what to read instead
