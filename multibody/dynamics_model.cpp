@@ -66,6 +66,20 @@ void load_forces(const Chain& chain, const DeadLoad& load, const Vector& q, Vect
   }
 }
 
+double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                        const Eigen::Vector2d& d) {
+  auto point_segment = [](const Eigen::Vector2d& x, const Eigen::Vector2d& s0, const Eigen::Vector2d& s1) {
+    const Eigen::Vector2d ab = s1 - s0;
+    const double t = std::clamp((x - s0).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (s0 + t * ab - x).norm();
+  };
+  auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0))) return 0.0;  // the centre lines cross
+  return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
+}
+
 ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double reach) {
   const int n = static_cast<int>(p.cols());
   ClosestPair best{reach, -1, -1};
@@ -76,15 +90,6 @@ ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double r
     lo[i] = a.cwiseMin(b);
     hi[i] = a.cwiseMax(b);
   }
-  auto point_segment = [](const Eigen::Vector2d& x, const Eigen::Vector2d& a,
-                          const Eigen::Vector2d& b) {
-    const Eigen::Vector2d ab = b - a;
-    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    return (a + t * ab - x).norm();
-  };
-  auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-  };
   for (int i = 0; i < n; ++i) {
     for (int j = i + min_gap; j < n; ++j) {
       if (n - (j - i) < min_gap) break;  // cyclic gap
@@ -92,16 +97,7 @@ ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double r
           lo[j].y() > hi[i].y() + reach || lo[i].y() > hi[j].y() + reach)
         continue;
       const Eigen::Vector2d a = p.col(i), b = p.col((i + 1) % n);
-      const Eigen::Vector2d c = p.col(j), d = p.col((j + 1) % n);
-      double dist;
-      const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-      const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-      if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0))) {
-        dist = 0.0;  // the centre lines cross
-      } else {
-        dist = std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b),
-                         point_segment(d, a, b)});
-      }
+      const double dist = segment_distance(a, b, p.col(j), p.col((j + 1) % n));
       if (dist < best.distance) best = {dist, i, j};
     }
   }

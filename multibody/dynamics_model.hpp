@@ -71,6 +71,10 @@ struct ClosestPair {
   int i = -1, j = -1;
 };
 /// "segments i and j cross" or "segments i and j are d m apart".
+/// Distance between the segments [a, b] and [c, d] (0 when they cross). O(1).
+double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                        const Eigen::Vector2d& d);
+
 std::string describe_contact(const ClosestPair& cp);
 ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& hinges, int min_gap, double reach);
 

@@ -274,15 +274,6 @@ ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& p, double l, int mi
     cy[i] = static_cast<long long>(std::floor(mid.y() / cell));
     grid[key(cx[i], cy[i])].push_back(i);
   }
-  auto point_segment = [](const Eigen::Vector2d& x, const Eigen::Vector2d& a,
-                          const Eigen::Vector2d& b) {
-    const Eigen::Vector2d ab = b - a;
-    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    return (a + t * ab - x).norm();
-  };
-  auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-  };
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d a = p.col(i), b = p.col((i + 1) % n);
     const Eigen::Vector2d lo_i = a.cwiseMin(b), hi_i = a.cwiseMax(b);
@@ -298,15 +289,7 @@ ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& p, double l, int mi
           if (lo_j.x() > hi_i.x() + reach || lo_i.x() > hi_j.x() + reach ||
               lo_j.y() > hi_i.y() + reach || lo_i.y() > hi_j.y() + reach)
             continue;
-          double dist;
-          const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-          const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-          if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0))) {
-            dist = 0.0;
-          } else {
-            dist = std::min({point_segment(a, c, d), point_segment(b, c, d),
-                             point_segment(c, a, b), point_segment(d, a, b)});
-          }
+          const double dist = segment_distance(a, b, c, d);
           // Ties go to the lexicographically first pair, as in the O(n^2) loop.
           if (dist < best.distance ||
               (dist == best.distance && best.i >= 0 && (i < best.i || (i == best.i && j < best.j))))

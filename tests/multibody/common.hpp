@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "ring/scene.hpp"
 #include "ring/spec.hpp"
 #include "support/paper.hpp"
 
@@ -23,6 +24,20 @@ inline ring::RingSpec paper_ring() {
   ring::RingSpec s = ringtest::paper_ring(180.0);
   s.supports.roller = 0.0;
   return s;
+}
+
+/// The reconstructed section-5 load (issue 7): a 20 kN step at C (0 deg) toward the pin,
+/// dt = 0.01 s, recorded points 0, 90, 180, 270 deg.
+inline ring::ResponseOptions forced_scene(ring::ResponseOptions::Integrator integrator, double t_end = 5.0) {
+  ring::ResponseOptions r;
+  r.load.angle = 0.0;
+  r.load.force = {-20e3, 0.0};
+  r.dt = 0.01;
+  r.t_end = t_end;
+  r.integrator = integrator;
+  r.rho_inf = 0.8;
+  r.record = {0.0, 90.0, 180.0, 270.0};
+  return r;
 }
 
 }  // namespace mbtest

@@ -27,15 +27,7 @@ using multibody::Vector;
 using Integrator = ring::ResponseOptions::Integrator;
 
 ring::ResponseOptions paper_scene(Integrator integrator, double t_end = 5.0) {
-  ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-20e3, 0.0};
-  r.dt = 0.01;
-  r.t_end = t_end;
-  r.integrator = integrator;
-  r.rho_inf = 0.8;
-  r.record = {0.0, 90.0, 180.0, 270.0};
-  return r;
+  return mbtest::forced_scene(integrator, t_end);
 }
 
 ring::MultibodyOptions opts(int n, ring::MultibodyOptions::Method m) {

@@ -21,16 +21,8 @@ using mbtest::paper_ring;
 using Integrator = ring::ResponseOptions::Integrator;
 using Method = ring::MultibodyOptions::Method;
 
-ring::ResponseOptions paper_scene(Integrator integrator, double t_end) {
-  ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-20e3, 0.0};
-  r.dt = 0.01;
-  r.t_end = t_end;
-  r.integrator = integrator;
-  r.rho_inf = 0.8;
-  r.record = {0.0, 90.0, 180.0, 270.0};
-  return r;
+ring::ResponseOptions paper_scene(Integrator integrator, double t_end = 5.0) {
+  return mbtest::forced_scene(integrator, t_end);
 }
 
 ring::MultibodyOptions opts(int n, Method m) {

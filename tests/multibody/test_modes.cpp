@@ -15,6 +15,7 @@
 #include "ring/sampling.hpp"
 #include "tests/multibody/ring_oracle.hpp"
 #include "tests/support/close.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -22,16 +23,8 @@ using Dep = ring::MultibodyOptions::Dependent;
 
 // The paper's ring (Table 1): R = 10 m, solid circle d = 0.12 m, E = 2.1e11 Pa,
 // rho = 7.8e3 kg/m^3 (NOTES.md: the printed 9.8e3 is a misprint), pinned at 180 deg.
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  return s;
-}
+/// The Table 1 ring, pinned at 180 degrees.
+ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
 ring::RingSpec free_ring() {
   ring::RingSpec s = paper_ring();
   s.supports.pin.reset();

@@ -12,20 +12,14 @@
 #include "multibody/modes.hpp"
 #include "tests/multibody/ring_oracle.hpp"
 #include "tests/support/close.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
 using Dep = ring::MultibodyOptions::Dependent;
 
-ring::RingSpec paper_ring() {  // Table 1 ring (see test_modes.cpp)
-  ring::RingSpec s;
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  return s;
-}
+/// The Table 1 ring, pinned at 180 degrees.
+ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
 
 const std::vector<int> kNs{4, 5, 6, 8, 10, 16, 32, 64, 128, 256, 512, 1024, 2000};
 
