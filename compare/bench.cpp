@@ -10,7 +10,7 @@
 #include "compare/converge.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
-#include "compare/solvers.hpp"
+#include "compare/registry.hpp"
 #include "compare/table.hpp"
 
 namespace cmp {
@@ -23,12 +23,12 @@ struct Timed {
 };
 
 /// Solves repeatedly; the median of the solvers' own wall times (process-internal).
-Timed timed_solve(const ring::Scene& s, const std::string& solver, int modes) {
+Timed timed_solve(const ring::Scene& s, const SolverEntry& solver, int modes) {
   Timed t;
   std::vector<double> times;
   double total = 0.0;
   while (times.size() < 3 || (total < 0.3 && times.size() < 9)) {
-    t.result = solve_modes(s, solver, modes);
+    t.result = solver.modes(s, modes);
     times.push_back(t.result.seconds);
     total += t.result.seconds;
   }
@@ -51,36 +51,34 @@ std::string fmt_seconds(double s) {
 BenchStudy bench(const ring::Scene& scene, const References& references, std::ostream* progress) {
   BenchStudy b;
   b.modes = scene.modes.count;
+  b.method_curve = solver(scene_schema().default_solver).curve(scene);
+  ring::Scene p3 = scene;
+  p3.fem.degree = 3;
+  b.fe_curve = solver(scene.reference_solver).curve(p3);
   for (const auto* r : {&references.extensible, &references.inextensible})
     if (*r) b.reference_seconds = std::max(b.reference_seconds, (*r)->seconds);
-  auto add = [&](const std::string& curve, const std::string& solver, int size, int degree) -> Timed {
-    if (progress) *progress << "ringvib: bench " << curve << " at " << size << "\n";
-    const Timed t = timed_solve(with_size(scene, solver, size, degree), solver, b.modes);
-    const auto [mx, mean] = errors_against(t.result, references.of(scene, solver), b.modes);
-    b.points.push_back({curve, size, t.result.unknowns, t.median, t.repeats, mx, mean});
-    return t;
-  };
-  for (const auto& solver : ring::solver_names()) {
-    if (!scene.column(solver)) continue;
-    if (solver == "fem") {
-      for (int p = 2; p <= 4; ++p)
-        for (int e : {10, 20, 40, 80, 160}) add("fem (p = " + std::to_string(p) + ")", solver, e, p);
-      continue;
-    }
-    const std::string curve = solver == "lumped" ? "lumped (" + ring::to_string(scene.lumped.variant) + ")" : solver;
-    const ring::ModalResult& reference = references.of(scene, solver);
+  for (const SolverEntry& entry : registry()) {
+    if (!scene.column(entry.name)) continue;
+    const ring::ModalResult& reference = references.of(scene, entry.name);
     std::optional<Timed> coarser;
-    for (int n = 40; n <= 2560; n *= 2) {
-      if (n < b.modes + 3) continue;
-      Timed t = add(curve, solver, n, 0);
-      if (solver == "multibody" && coarser) {
+    std::string previous_curve;
+    for (const auto& [curve, s] : entry.bench_sweep(scene, b.modes)) {
+      const int size = entry.size(s);
+      if (progress) *progress << "ringvib: bench " << curve << " at " << size << "\n";
+      Timed t = timed_solve(s, entry, b.modes);
+      const auto [mx, mean] = errors_against(t.result, reference, b.modes);
+      b.points.push_back({curve, size, t.result.unknowns, t.median, t.repeats, mx, mean});
+      if (curve != previous_curve) coarser.reset();
+      previous_curve = curve;
+      const int n = size;
+      if (entry.richardson && coarser) {
         // Richardson with order 2 from n/2 and n: the cost of both solves.
         ring::ModalResult x = t.result;
         const auto pf = pair_by_mac(reference, t.result), pc = pair_by_mac(reference, coarser->result);
         for (int i = 0; i < b.modes; ++i)
           x.omega[pf[i]] = (4.0 * t.result.omega[pf[i]] - coarser->result.omega[pc[i]]) / 3.0;
         const auto [mx, mean] = errors_against(x, reference, b.modes);
-        b.points.push_back({"multibody + Richardson", n, t.result.unknowns, t.median + coarser->median, t.repeats,
+        b.points.push_back({curve + " + Richardson", n, t.result.unknowns, t.median + coarser->median, t.repeats,
                             mx, mean});
       }
       coarser = std::move(t);
@@ -132,15 +130,15 @@ std::string bench_text(const BenchStudy& b) {
   // The paper's claim: multibody at n = 40 takes about 1/3 of the FE time.
   const BenchPoint *mb40 = nullptr, *fe40 = nullptr;
   for (const auto& p : b.points) {
-    if (p.curve == "multibody" && p.size == 40) mb40 = &p;
-    if (p.curve == "fem (p = 3)" && p.size == 40) fe40 = &p;
+    if (p.curve == b.method_curve && p.size == 40) mb40 = &p;
+    if (p.curve == b.fe_curve && p.size == 40) fe40 = &p;
   }
   if (mb40 && fe40)
     s << "\nMultibody / FE time at equal n = 40 (FE p = 3): " << sig4(mb40->seconds / fe40->seconds)
       << " (the paper claims about 1/3 against its SAP5 run); their max errors " << sig4(mb40->max_error) << " % and "
       << sig4(fe40->max_error) << " %.\n";
   for (double e : {1.0, 0.01}) {
-    const auto m = time_to_error(b, "multibody", e), f = time_to_error(b, "fem (p = 3)", e);
+    const auto m = time_to_error(b, b.method_curve, e), f = time_to_error(b, b.fe_curve, e);
     if (m && f)
       s << "Multibody / FE (p = 3) time at equal max error " << e << " %: " << sig4(*m / *f) << "\n";
     else if (f)

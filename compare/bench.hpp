@@ -27,6 +27,8 @@ struct BenchStudy {
   int modes = 0;
   double reference_seconds = 0.0;
   std::vector<BenchPoint> points;
+  /// The curves of the paper's claim: its method, and FE at p = 3 (the ratios printed).
+  std::string method_curve = "multibody", fe_curve = "fem (p = 3)";
 };
 
 /// Runs the sweep, each model against its own continuum (References): every solver the scene runs (multibody and lumped n = 40 x 2^k up to

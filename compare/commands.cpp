@@ -17,7 +17,7 @@
 #include "compare/plot.hpp"
 #include "compare/report.hpp"
 #include "compare/response.hpp"
-#include "compare/solvers.hpp"
+#include "compare/registry.hpp"
 #include "compare/table.hpp"
 #include "ring/errors.hpp"
 #include "ring/scene.hpp"
@@ -39,7 +39,7 @@ class Progress {
 };
 
 ring::Scene load(const CommonArgs& a) {
-  ring::Scene s = ring::load_scene(a.scene, a.set);
+  ring::Scene s = load_scene(a.scene, a.set);
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
 }
@@ -95,7 +95,7 @@ std::string modes_text(const ring::ModalResult& m) {
 }
 
 /// Writes the history computed before a failure and reports where it went (exit 3).
-[[noreturn]] void keep_partial(const ResponseFailure& e, const std::string& path) {
+[[noreturn]] void keep_partial(const ring::IntegrationFailure& e, const std::string& path) {
   write_file(path, history_csv(e.partial()));
   const double t = e.partial().t.empty() ? 0.0 : e.partial().t.back();
   throw ring::NumericalError(std::string(e.what()) + "; the history up to t = " + sig4(t) + " s was written to " + path);
@@ -115,17 +115,18 @@ int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int>
               const std::string& vtu_dir) {
   const ring::Scene s = load(a);
   const int k = count.value_or(s.modes.count);
-  if (!vtu_dir.empty() && solver != "fem")
-    throw ring::InputError(a.scene, "--vtu", "VTU output is for the FE solver (--solver fem)");
+  const SolverEntry& entry = cmp::solver(solver);
+  if (!vtu_dir.empty() && !entry.write_vtu)
+    throw ring::InputError(a.scene, "--vtu", "VTU output is for the FE solver (--solver " + s.reference_solver + ")");
   // --count is checked against the model like modes.count (gates do not apply here).
-  if (count && k > ring::max_elastic_modes(s, solver))
+  if (count && k > entry.elastic_modes(s))
     throw ring::InputError(a.scene, "--count", std::to_string(k) + " modes asked, but the " + solver +
-                                                   " model has only " +
-                                                   std::to_string(ring::max_elastic_modes(s, solver)) + " elastic modes");
-  const ring::ModalResult m = solve_modes(s, solver, k);
+                                                   " model has only " + std::to_string(entry.elastic_modes(s)) +
+                                                   " elastic modes");
+  const ring::ModalResult m = entry.modes(s, k);
   if (!vtu_dir.empty()) {
     make_dirs(vtu_dir);
-    write_fem_vtu(s, k, vtu_dir);
+    entry.write_vtu(s, k, vtu_dir);
   }
   std::cout << (json ? modal_json(m, false) : modes_text(m));
   return 0;
@@ -167,7 +168,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
     p.say("integrating the forced response");
     try {
       rep.history = respond(s);
-    } catch (const ResponseFailure& e) {
+    } catch (const ring::IntegrationFailure& e) {
       // Keep what was computed: the partial history goes into the report folder.
       if (out_dir.empty()) throw;
       keep_partial(e, out_dir + "/response.csv");
@@ -195,7 +196,7 @@ int cmd_respond(const CommonArgs& a, const std::string& csv) {
     const ring::TimeHistory h = respond(s);
     if (csv.empty()) std::cout << history_csv(h);
     else write_file(csv, history_csv(h));
-  } catch (const ResponseFailure& e) {
+  } catch (const ring::IntegrationFailure& e) {
     if (csv.empty()) throw;
     keep_partial(e, csv);
   }

@@ -7,7 +7,7 @@
 
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
-#include "compare/solvers.hpp"
+#include "compare/registry.hpp"
 #include "compare/table.hpp"
 
 namespace cmp {
@@ -23,10 +23,8 @@ std::pair<double, double> errors_against(const ring::ModalResult& r, const ring:
   return {mx, sum / modes};
 }
 
-bool inextensible_limit(const ring::Scene& scene, const std::string& solver) {
-  if (solver == "multibody") return true;
-  if (solver == "lumped") return scene.lumped.variant == ring::LumpedOptions::Variant::chain;
-  return !scene.fem.extensible;
+bool inextensible_limit(const ring::Scene& scene, const std::string& name) {
+  return solver(name).inextensible(scene);
 }
 
 const ring::ModalResult& References::of(const ring::Scene& scene, const std::string& solver) const {
@@ -37,7 +35,7 @@ const ring::ModalResult& References::of(const ring::Scene& scene, const std::str
 
 References compute_references(const ring::Scene& scene, std::ostream* progress) {
   References refs;
-  for (const auto& name : ring::solver_names()) {
+  for (const auto& name : solver_names()) {
     if (!scene.column(name)) continue;
     const bool inext = inextensible_limit(scene, name);
     auto& slot = inext ? refs.inextensible : refs.extensible;
@@ -49,17 +47,6 @@ References compute_references(const ring::Scene& scene, std::ostream* progress) 
     slot = reference_modes(s, scene.modes.count);
   }
   return refs;
-}
-
-ring::Scene with_size(const ring::Scene& s, const std::string& solver, int size, int degree) {
-  ring::Scene r = s;
-  if (solver == "multibody") r.multibody.n = size;
-  if (solver == "lumped") r.lumped.n = size;
-  if (solver == "fem") {
-    r.fem.elements = size;
-    if (degree > 0) r.fem.degree = degree;
-  }
-  return r;
 }
 
 double fitted_order(const std::vector<double>& x, const std::vector<double>& y) {
@@ -86,23 +73,21 @@ ConvergenceStudy converge(const ring::Scene& scene, const References& references
   for (const auto* r : {&references.extensible, &references.inextensible})
     if (*r) c.reference_estimate = std::max(c.reference_estimate, (*r)->error_estimate);
   const double floor_pct = 100.0 * 100.0 * std::max(scene.fem.tolerance, c.reference_estimate);
-  std::vector<std::string> solvers;
-  for (const auto& name : ring::solver_names())
-    if (scene.column(name)) solvers.push_back(name);
-  for (const auto& name : solvers) {
+  for (const SolverEntry& entry : registry()) {
+    if (!scene.column(entry.name)) continue;
+    const std::string& name = entry.name;
     const ring::ModalResult& reference = references.of(scene, name);
     ConvergenceSeries s;
-    s.name = name == "fem" ? "fem (p = " + std::to_string(scene.fem.degree) + ")"
-           : name == "lumped" ? "lumped (" + ring::to_string(scene.lumped.variant) + ")" : name;
-    s.parameter = name == "fem" ? "elements" : "n";
-    const int steps = name == "fem" ? 4 : 5;
+    s.name = entry.curve(scene);
+    s.parameter = entry.size_name;
     std::vector<ring::ModalResult> results;
-    for (int k = 0; k < steps; ++k) {
-      const int base = name == "multibody" ? scene.multibody.n : name == "lumped" ? scene.lumped.n : scene.fem.elements;
+    for (int k = 0; k < entry.converge_steps; ++k) {
+      const int base = entry.size(scene);
       const double size = base << k;
-      const ring::Scene r = with_size(scene, name, base << k);
+      ring::Scene r = scene;
+      entry.set_size(r, base << k);
       if (progress) *progress << "ringvib: " << name << " at " << s.parameter << " = " << size << "\n";
-      results.push_back(solve_modes(r, name, c.modes));
+      results.push_back(entry.modes(r, c.modes));
       const auto [mx, mean] = errors_against(results.back(), reference, c.modes);
       s.size.push_back(size);
       s.max_error.push_back(mx);
@@ -114,9 +99,9 @@ ConvergenceStudy converge(const ring::Scene& scene, const References& references
       if (s.max_error[i] > floor_pct) { fx.push_back(s.size[i]); fy.push_back(s.max_error[i]); }
     s.order = fitted_order(fx, fy);
     c.series.push_back(s);
-    if (name == "multibody") {
+    if (entry.richardson) {
       // Richardson with the observed order 2: w = (4 w_2n - w_n) / 3, paired by MAC.
-      ConvergenceSeries rich{"multibody (Richardson)", "n", {}, {}, {}, {}, 0.0};
+      ConvergenceSeries rich{s.name + " (Richardson)", s.parameter, {}, {}, {}, {}, 0.0};
       for (std::size_t k = 1; k < results.size(); ++k) {
         ring::ModalResult x = results[k];
         const std::vector<int> pf = pair_by_mac(reference, results[k]), pc = pair_by_mac(reference, results[k - 1]);

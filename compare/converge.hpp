@@ -47,18 +47,15 @@ struct ConvergenceStudy {
   std::vector<ConvergenceSeries> series;
 };
 
-/// Refines every solver the scene runs, each measured against its own limit: multibody and lumped n x {1, 2, 4, 8, 16},
-/// FE elements x {1, 2, 4, 8} at the scene's degree. Modes are paired with the reference
+/// Refines every solver the scene runs, each measured against its own limit, over its
+/// registry entry's refinements (size x 1, 2, 4, ...: the chains 5, FE 4 at the scene's
+/// degree), with a Richardson column where the entry asks for one. Modes are paired with the reference
 /// by MAC. Points closer to the reference than 100x its tolerance are left out of the fit.
 ConvergenceStudy converge(const ring::Scene& scene, const References& references, std::ostream* progress);
 
 /// Max and mean |error| in % of `r` against `reference` over the first `modes` modes,
 /// paired by MAC. O(modes^2 kStations).
 std::pair<double, double> errors_against(const ring::ModalResult& r, const ring::ModalResult& reference, int modes);
-
-/// The scene with one solver's discretization replaced: multibody.n, lumped.n or
-/// fem.elements = size (and fem.degree = degree when degree > 0).
-ring::Scene with_size(const ring::Scene& scene, const std::string& solver, int size, int degree = 0);
 
 /// Least-squares slope of log(y) against log(x), negated (the observed order).
 double fitted_order(const std::vector<double>& x, const std::vector<double>& y);

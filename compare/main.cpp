@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "compare/commands.hpp"
+#include "compare/registry.hpp"
 #include "ring/errors.hpp"
 
 namespace {
@@ -41,9 +42,11 @@ int main(int argc, char** argv) {
 
   auto* modes = app.add_subcommand("modes", "natural frequencies of one solver");
   add_common(modes, a);
-  modes->add_option("--solver", solver, "multibody | fem | lumped")
+  std::string names;
+  for (const auto& n : cmp::solver_names()) names += (names.empty() ? "" : " | ") + n;
+  modes->add_option("--solver", solver, names)
       ->required()
-      ->check(CLI::IsMember({"multibody", "fem", "lumped"}));
+      ->check(CLI::IsMember(cmp::solver_names()));
   modes->add_option("--count", count, "number of elastic modes (default: modes.count)")->check(CLI::PositiveNumber);
   modes->add_flag("--json", json, "print JSON");
   modes->add_option("--vtu", vtu, "FE only: write the mode shapes as VTU files into this folder");

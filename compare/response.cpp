@@ -9,31 +9,16 @@
 #include "compare/plot.hpp"
 #include "ring/errors.hpp"
 
-#ifdef RINGVIB_HAVE_DYNAMICS
-#include "multibody/dynamics.hpp"
-#include "multibody/statics.hpp"
-#endif
+#include "compare/registry.hpp"
 
 namespace cmp {
 
 ring::TimeHistory respond(const ring::Scene& scene) {
-#ifdef RINGVIB_HAVE_DYNAMICS
-  try {
-    return multibody::respond(scene.ring, scene.multibody, *scene.response);
-  } catch (const multibody::IntegrationFailure& e) {
-    throw ResponseFailure(e.what(), e.partial());
-  }
-#else
-  throw ring::InputError(scene.file, "response", "the nonlinear multibody dynamics is not built yet in this version");
-#endif
+  return solver(scene.response_request.solvers.front()).response(scene);
 }
 
 ring::StaticResult solve_static(const ring::Scene& scene) {
-#ifdef RINGVIB_HAVE_DYNAMICS
-  return multibody::solve_static(scene.ring, scene.multibody, *scene.statics);
-#else
-  throw ring::InputError(scene.file, "static", "the nonlinear multibody statics is not built yet in this version");
-#endif
+  return solver(scene.static_request.solvers.front()).statics(scene);
 }
 
 namespace {

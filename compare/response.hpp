@@ -10,19 +10,8 @@
 
 namespace cmp {
 
-/// A forced response that stopped early: the history up to the last accepted step.
-class ResponseFailure : public ring::NumericalError {
- public:
-  ResponseFailure(const std::string& what, ring::TimeHistory partial)
-      : ring::NumericalError(what), partial_(std::move(partial)) {}
-  const ring::TimeHistory& partial() const { return partial_; }
-
- private:
-  ring::TimeHistory partial_;
-};
-
-/// Integrates the scene's [response]. Throws ring::InputError if the nonlinear
-/// multibody dynamics is not built, ResponseFailure when the integration stops early.
+/// Integrates the scene's [response] with its first solver. Throws
+/// ring::IntegrationFailure when the integration stops early.
 ring::TimeHistory respond(const ring::Scene& scene);
 /// Solves the scene's [static].
 ring::StaticResult solve_static(const ring::Scene& scene);

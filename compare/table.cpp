@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/output.hpp"
+#include "compare/registry.hpp"
 #include "ring/sampling.hpp"
 
 extern "C" const char ringvib_table1_csv[];  // generated from compare/data/table1.csv
@@ -37,10 +38,8 @@ Column pair_column(const ring::ModalResult& base, const ring::ModalResult& other
 }
 
 std::string label(const std::string& solver) {
-  if (solver == "multibody") return "multibody";
-  if (solver == "lumped") return "lumped mass";
-  if (solver == "fem") return "FE";
-  return solver;
+  const SolverEntry* e = find_solver(solver);
+  return e ? e->label : solver;
 }
 
 /// Rows of cells; the first row is the header.
@@ -145,10 +144,9 @@ Table build_table(const std::string& title, const std::vector<ring::ModalResult>
 }
 
 std::optional<double> paper_value(const ring::PaperRow& row, const std::string& solver) {
-  if (solver == "multibody") return row.mb_corrected;
-  if (solver == "lumped") return row.lm_corrected;
-  if (solver == "fem") return row.fe_corrected;
-  return std::nullopt;
+  const SolverEntry* e = find_solver(solver);
+  if (!e || !e->paper) return std::nullopt;
+  return e->paper(row);
 }
 
 std::vector<ring::PaperRow> paper_table() { return ring::parse_paper_table(ringvib_table1_csv, "compare/data/table1.csv"); }

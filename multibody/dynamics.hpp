@@ -57,30 +57,13 @@
 
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
-#include "ring/scene.hpp"
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
 
-/// A time integration that could not go on; carries what was computed up to the
-/// failure (exit code 3 through ring::NumericalError).
-class IntegrationFailure : public ring::NumericalError {
- public:
-  enum class Reason { step_too_small, self_contact, not_finite };
-  IntegrationFailure(Reason reason, double t_reached, ring::TimeHistory partial,
-                     const std::string& what)
-      : ring::NumericalError(what), reason_(reason), t_(t_reached), partial_(std::move(partial)) {}
-  Reason reason() const { return reason_; }
-  /// Time of the last accepted step, s.
-  double t_reached() const { return t_; }
-  /// The history up to t_reached (every accepted step).
-  const ring::TimeHistory& partial() const { return partial_; }
-
- private:
-  Reason reason_;
-  double t_;
-  ring::TimeHistory partial_;
-};
+/// The integration failure every solver throws (ring/errors.hpp).
+using IntegrationFailure = ring::IntegrationFailure;
 
 /// Knobs of the nonlinear solver that a scene does not set (defaults suit the paper).
 struct IntegrationControls {

@@ -21,7 +21,7 @@
 
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
-#include "ring/scene.hpp"
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {

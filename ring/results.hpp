@@ -54,6 +54,9 @@ struct PointDisplacement {
 
 /// Nonlinear static equilibrium.
 struct StaticResult {
+  std::string solver;                            ///< "multibody", "fem", "lumped"
+  long long unknowns = 0;                        ///< size of the nonlinear system
+  double seconds = 0.0;                          ///< solver wall time
   std::vector<PointDisplacement> displacements;  ///< at the recorded points
   int steps = 0;
   int newton_iterations = 0;
@@ -63,6 +66,9 @@ struct StaticResult {
 
 /// Time history of a forced response; one entry per accepted step (t = 0 first).
 struct TimeHistory {
+  std::string solver;                    ///< "multibody", "fem", "lumped"
+  long long unknowns = 0;                ///< size of the nonlinear system per step
+  double seconds = 0.0;                  ///< solver wall time
   std::vector<double> record_angles;     ///< degrees
   std::vector<double> t;                 ///< s
   std::vector<std::vector<double>> ux;   ///< [point][step], m

@@ -205,8 +205,6 @@ class Reader {
   std::set<std::string> overridden_;
 };
 
-const std::vector<std::string> kSolvers = {"multibody", "lumped", "fem"};
-
 Section read_section(const Reader& r, const toml::table& ring_t) {
   Section s;
   const toml::table* t = r.table(ring_t, "ring", "section");
@@ -273,9 +271,9 @@ std::vector<double> read_record(const Reader& r, const toml::table& t, const std
   return rec;
 }
 
-void read_gates(const Reader& r, const toml::table& t, Scene& s) {
-  const std::vector<std::string> keys = {"multibody", "lumped", "fem"};
-  r.known_keys(t, "gates", keys);
+void read_gates(const Reader& r, const toml::table& t, Scene& s, const SceneSchema& schema) {
+  const std::vector<std::string> names = schema.names();
+  r.known_keys(t, "gates", names);
   for (const auto& [k, node] : t) {
     const std::string solver(k.str());
     const std::string key = "gates." + solver;
@@ -290,7 +288,7 @@ void read_gates(const Reader& r, const toml::table& t, Scene& s) {
         if (!gt->contains("max")) r.fail(key + ".max", gt, "missing: the largest allowed |error| in percent");
         g.max_pct = r.number(*gt, key, "max", 0.0, 0.0, HUGE_VAL, true);
         std::vector<std::string> against = {"reference", "paper"};
-        for (const auto& o : kSolvers)
+        for (const auto& o : names)
           if (o != solver) against.push_back(o);
         g.against = r.choice(*gt, key, "against", "reference", against);
         const auto m = r.numbers(*gt, key, "modes", {1.0, 0.0}, 2);
@@ -314,37 +312,12 @@ void read_gates(const Reader& r, const toml::table& t, Scene& s) {
   }
 }
 
-}  // namespace
-
-long long max_elastic_modes(const Scene& s, const std::string& solver) {
-  const int rigid = s.ring.supports.rigid_modes();
-  const int pinned_dofs = s.ring.supports.pin ? 2 : 0;
-  const int roller_dofs = s.ring.supports.roller ? 1 : 0;
-  if (solver == "multibody") return s.multibody.n - 3;  // n angles - 2 closures (+2 free) - supports/rigid
-  if (solver == "lumped") {
-    const long long n = s.lumped.n;
-    switch (s.lumped.variant) {
-      case LumpedOptions::Variant::chain: return n - 3;
-      case LumpedOptions::Variant::frame: return 2 * n - pinned_dofs - roller_dofs - rigid;
-      case LumpedOptions::Variant::frame_consistent: return 3 * n - pinned_dofs - roller_dofs - rigid;
-    }
-  }
-  // C0 elements of degree p: p nodes per cell and two displacement components.
-  return 2LL * s.fem.elements * s.fem.degree - pinned_dofs - roller_dofs - rigid;
-}
-
-namespace {
-
-void check_nodes(const Reader& r, const Scene& s, const toml::table& root) {
+/// Every model that the scene uses must have a node at every support, load and record point.
+void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const SceneSchema& schema) {
   struct Model { std::string name, key; int n; };
   std::vector<Model> models;
-  for (const auto& name : kSolvers) {
-    const bool used = s.needs(name) || (name == "multibody" && (s.response || s.statics));
-    if (!used) continue;
-    if (name == "multibody") models.push_back({name, "multibody.n", s.multibody.n});
-    if (name == "lumped") models.push_back({name, "lumped.n", s.lumped.n});
-    if (name == "fem") models.push_back({name, "fem.elements", s.fem.elements});
-  }
+  for (const auto& m : schema.solvers)
+    if (s.needs(m.name) || s.runs_nonlinear(m.name)) models.push_back({m.name, m.size_key, m.size(s)});
   const auto& sup = s.ring.supports;
   double anchor = sup.pin.value_or(0.0);
   if (!sup.pin) {
@@ -378,8 +351,27 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root) {
   }
 }
 
-Scene build(const toml::table& root, const Reader& r) {
+/// [response].solvers / [static].solvers (default: the schema's default solver) and
+/// .reference; each listed solver must offer the analysis.
+NonlinearRequest read_request(const Reader& r, const toml::table& t, const std::string& sec,
+                              const SceneSchema& schema, bool SolverSchema::*offers) {
+  NonlinearRequest q;
+  q.solvers = r.strings(t, sec, "solvers", schema.names());
+  if (t.contains("solvers") && q.solvers.empty()) r.fail(sec + ".solvers", t.get("solvers"), "expected at least one solver");
+  if (q.solvers.empty()) q.solvers.push_back(schema.default_solver);
+  for (const auto& name : q.solvers)
+    if (!(schema.find(name)->*offers))
+      r.fail(sec + ".solvers", t.get("solvers"),
+             "the " + name + " solver does not offer " + (sec == "static" ? "nonlinear statics" : "a forced response"));
+  q.reference = r.boolean(t, sec, "reference", false);
+  if (q.reference && !(schema.find(schema.reference_solver)->*offers))
+    r.fail(sec + ".reference", t.get("reference"), "the reference solver " + schema.reference_solver + " does not offer it");
+  return q;
+}
+
+Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
+  s.reference_solver = schema.reference_solver;
   r.known_keys(root, "", {"title", "ring", "supports", "multibody", "fem", "lumped", "modes", "table", "gates",
                           "response", "static"});
   if (const toml::node* n = root.get("title")) {
@@ -456,54 +448,63 @@ Scene build(const toml::table& root, const Reader& r) {
   if (const toml::table* t = r.table(root, "", "modes")) {
     r.known_keys(*t, "modes", {"count", "solvers"});
     s.modes.count = static_cast<int>(r.integer(*t, "modes", "count", 23, 1, 100000));
-    s.modes.solvers = r.strings(*t, "modes", "solvers", kSolvers);
+    s.modes.solvers = r.strings(*t, "modes", "solvers", schema.names());
     if (t->contains("solvers") && s.modes.solvers.empty())
       r.fail("modes.solvers", t->get("solvers"), "expected at least one solver");
     if (!t->contains("solvers")) {
-      if (mt) s.modes.solvers.push_back("multibody");
-      if (lt) s.modes.solvers.push_back("lumped");
-      if (ft) s.modes.solvers.push_back("fem");
-      if (s.modes.solvers.empty()) s.modes.solvers.push_back("multibody");
+      for (const auto& m : schema.solvers)
+        if (root.get(m.name)) s.modes.solvers.push_back(m.name);
+      if (s.modes.solvers.empty()) s.modes.solvers.push_back(schema.default_solver);
     }
   }
+
+  // A scene that lists no analysis at all: the modes of the solver sections present
+  // (README, modes.solvers), rather than nothing.
+  if (!root.get("modes") && !root.get("table") && !root.get("response") && !root.get("static"))
+    for (const auto& m : schema.solvers)
+      if (root.get(m.name)) s.modes.solvers.push_back(m.name);
 
   // [table]
   if (const toml::table* t = r.table(root, "", "table")) {
     r.known_keys(*t, "table", {"base", "against", "reference"});
     s.table.present = true;
-    s.table.base = r.choice(*t, "table", "base", "multibody", kSolvers);
-    s.table.against = r.strings(*t, "table", "against", kSolvers);
+    s.table.base = r.choice(*t, "table", "base", schema.default_solver, schema.names());
+    s.table.against = r.strings(*t, "table", "against", schema.names());
     if (std::find(s.table.against.begin(), s.table.against.end(), s.table.base) != s.table.against.end())
       r.fail("table.against", t->get("against"), "lists the base solver \"" + s.table.base + "\" again");
     s.table.reference = r.boolean(*t, "table", "reference", false);
     if (s.modes.solvers.empty()) s.modes.count = 23;  // a table without [modes]: the paper's 23
   }
 
-  if (const toml::table* t = r.table(root, "", "gates")) read_gates(r, *t, s);
+  if (const toml::table* t = r.table(root, "", "gates")) read_gates(r, *t, s, schema);
 
   // [response], [static]: need a pin (a free ring under a dead load has no equilibrium).
   if (const toml::table* t = r.table(root, "", "response")) {
     const std::string sec = "response";
-    r.known_keys(*t, sec, {"at", "force", "history", "period", "dt", "t_end", "integrator", "rho_inf", "record",
-                           "rayleigh_mass", "rayleigh_stiffness", "hinge_damping"});
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "history", "period", "dt", "t_end", "integrator",
+                           "rho_inf", "record", "rayleigh_mass", "rayleigh_stiffness", "hinge_damping"});
     if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a forced response needs a pin (the ring is free)");
     ResponseOptions o;
     o.load = read_load(r, *t, sec, true);
     o.dt = r.number(*t, sec, "dt", 0.01, 0.0, HUGE_VAL, true);
     o.t_end = r.number(*t, sec, "t_end", 5.0, 0.0, HUGE_VAL, true);
     if (o.t_end / o.dt > 1e8) r.fail("response.dt", t->get("dt"), "t_end/dt exceeds 1e8 steps");
-    o.integrator = r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha"}) == "newmark"
-                       ? ResponseOptions::Integrator::newmark : ResponseOptions::Integrator::generalized_alpha;
+    const std::string integrator =
+        r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha", "energy-momentum"});
+    o.integrator = integrator == "newmark"             ? ResponseOptions::Integrator::newmark
+                 : integrator == "generalized-alpha" ? ResponseOptions::Integrator::generalized_alpha
+                                                      : ResponseOptions::Integrator::energy_momentum;
     o.rho_inf = r.number(*t, sec, "rho_inf", 0.8, 0.0, 1.0);
     o.record = read_record(r, *t, sec);
     o.rayleigh_mass = r.number(*t, sec, "rayleigh_mass", 0.0, 0.0, HUGE_VAL);
     o.rayleigh_stiffness = r.number(*t, sec, "rayleigh_stiffness", 0.0, 0.0, HUGE_VAL);
     o.hinge_damping = r.number(*t, sec, "hinge_damping", 0.0, 0.0, HUGE_VAL);
     s.response = o;
+    s.response_request = read_request(r, *t, sec, schema, &SolverSchema::response);
   }
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
-    r.known_keys(*t, sec, {"at", "force", "steps", "record"});
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "steps", "record"});
     if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a static analysis needs a pin (the ring is free)");
     if (!s.ring.supports.roller)
       r.fail("supports.roller", &root,
@@ -513,6 +514,7 @@ Scene build(const toml::table& root, const Reader& r) {
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
     o.record = read_record(r, *t, sec);
     s.statics = o;
+    s.static_request = read_request(r, *t, sec, schema, &SolverSchema::statics);
   }
   for (const auto* opt : {s.response ? &s.response->load : nullptr, s.statics ? &s.statics->load : nullptr}) {
     if (opt && s.ring.supports.pin && std::abs(wrap_degrees(opt->angle - *s.ring.supports.pin)) < 1e-9)
@@ -521,15 +523,13 @@ Scene build(const toml::table& root, const Reader& r) {
   }
 
   // Cross checks: every solver used must have the modes asked for, and nodes at the points.
-  for (const auto& name : kSolvers) {
-    if (!s.needs(name)) continue;
-    const long long most = max_elastic_modes(s, name);
-    if (s.modes.count > most) {
-      const std::string key = name == "multibody" ? "multibody.n" : name == "lumped" ? "lumped.n" : "fem.elements";
+  for (const auto& m : schema.solvers) {
+    if (!s.needs(m.name)) continue;
+    const long long most = m.elastic_modes(s);
+    if (s.modes.count > most)
       r.fail("modes.count", root.at_path("modes.count").node(),
-             std::to_string(s.modes.count) + " modes asked, but the " + name + " model (" + key +
+             std::to_string(s.modes.count) + " modes asked, but the " + m.name + " model (" + m.size_key +
                  ") has only " + std::to_string(most) + " elastic modes");
-    }
   }
   for (const auto& g : s.gates) {
     if (!s.column(g.solver))
@@ -539,7 +539,7 @@ Scene build(const toml::table& root, const Reader& r) {
       r.fail("gates." + g.solver + ".against", root.at_path("gates").node(),
              "compares with \"" + g.against + "\", which the scene does not run");
   }
-  check_nodes(r, s, root);
+  check_nodes(r, s, root, schema);
   return s;
 }
 
@@ -589,14 +589,31 @@ bool Scene::needs_reference() const {
 
 bool Scene::needs(const std::string& solver) const {
   if (column(solver)) return true;
-  if (solver == "fem" && needs_reference()) return true;
-  return false;
+  return solver == reference_solver && needs_reference();
 }
 
+bool Scene::runs_nonlinear(const std::string& solver) const {
+  auto in = [&](const NonlinearRequest& q) {
+    return std::find(q.solvers.begin(), q.solvers.end(), solver) != q.solvers.end() ||
+           (q.reference && solver == reference_solver);
+  };
+  return (response && in(response_request)) || (statics && in(static_request));
+}
 
-const std::vector<std::string>& solver_names() { return kSolvers; }
+const SolverSchema* SceneSchema::find(const std::string& name) const {
+  for (const auto& m : solvers)
+    if (m.name == name) return &m;
+  return nullptr;
+}
 
-Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides) {
+std::vector<std::string> SceneSchema::names() const {
+  std::vector<std::string> v;
+  for (const auto& m : solvers) v.push_back(m.name);
+  return v;
+}
+
+Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
+                  const SceneSchema& schema) {
   toml::table root;
   try {
     root = toml::parse(toml_text, name);
@@ -608,7 +625,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
   std::set<std::string> overridden;
   for (const auto& o : overrides) overridden.insert(apply_override(root, o, name));
   Reader r(name, overridden);
-  Scene s = build(root, r);
+  Scene s = build(root, r, schema);
   s.file = name;
   std::ostringstream out;
   out << root;
@@ -616,13 +633,13 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
   return s;
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(path, "", "cannot read the scene file (missing or unreadable)");
   std::stringstream s;
   s << f.rdbuf();
   if (f.bad()) throw InputError(path, "", "cannot read the scene file");
-  return parse_scene(s.str(), path, overrides);
+  return parse_scene(s.str(), path, overrides, schema);
 }
 
 }  // namespace ring

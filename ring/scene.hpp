@@ -2,10 +2,12 @@
 // Parsed and validated once; the driver computes exactly what it lists.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace ring {
@@ -13,13 +15,13 @@ namespace ring {
 /// Which modes to compute, with which solvers.
 struct ModesRequest {
   int count = 23;                     ///< elastic modes (rigid ones are counted apart)
-  std::vector<std::string> solvers;   ///< subset of {"multibody", "lumped", "fem"}
+  std::vector<std::string> solvers;   ///< subset of the known solvers (SceneSchema)
 };
 
 /// The three-way table: the base column, then each other solver and its difference.
 struct TableRequest {
   bool present = false;               ///< the scene has a [table] section
-  std::string base = "multibody";
+  std::string base;                   ///< default: SceneSchema::default_solver
   std::vector<std::string> against;   ///< other solvers, in column order
   bool reference = false;             ///< add the converged FE reference and errors
 };
@@ -32,25 +34,35 @@ struct Gate {
   int first_mode = 1, last_mode = 0;  ///< 1-based, inclusive; last 0 = all requested
 };
 
-/// Forced nonlinear response (the paper's section 5).
-struct ResponseOptions {
-  PointLoad load;                      ///< at, force, history, period
-  double dt = 0.01;                    ///< s
-  double t_end = 5.0;                  ///< s
-  enum class Integrator { newmark, generalized_alpha };
-  Integrator integrator = Integrator::newmark;
-  double rho_inf = 0.8;                ///< generalized-alpha spectral radius, [0, 1]
-  std::vector<double> record;          ///< degrees, points written
-  double rayleigh_mass = 0.0;          ///< C = a M + b K: a, 1/s
-  double rayleigh_stiffness = 0.0;     ///< b, s
-  double hinge_damping = 0.0;          ///< N m s/rad at every hinge
+/// Which solvers run a nonlinear analysis ([response] or [static]), and whether the
+/// converged FE reference is added.
+struct NonlinearRequest {
+  std::vector<std::string> solvers;   ///< default: SceneSchema::default_solver alone
+  bool reference = false;
 };
 
-/// Nonlinear statics under a point load, by load stepping.
-struct StaticOptions {
-  PointLoad load;
-  int steps = 20;
-  std::vector<double> record;
+struct Scene;
+
+/// What the scene reader must know of one solver to check a scene. The driver's solver
+/// registry supplies these; the vocabulary itself names no solver.
+struct SolverSchema {
+  std::string name;                   ///< also the name of its option section
+  std::string size_key;               ///< the discretization key named in messages ("multibody.n")
+  /// Pieces around the ring under the scene's options: nodes at anchor + 360 k / size.
+  std::function<int(const Scene&)> size;
+  /// How many elastic modes its model has under the scene's options.
+  std::function<long long(const Scene&)> elastic_modes;
+  bool statics = false;               ///< offers nonlinear statics
+  bool response = false;              ///< offers the forced nonlinear response
+};
+
+/// All the solvers a scene may name.
+struct SceneSchema {
+  std::vector<SolverSchema> solvers;
+  std::string default_solver;         ///< table base and nonlinear default (the paper's method)
+  std::string reference_solver;       ///< the solver whose converged run is the reference
+  const SolverSchema* find(const std::string& name) const;
+  std::vector<std::string> names() const;
 };
 
 /// Everything a scene file can say, validated.
@@ -65,35 +77,36 @@ struct Scene {
   TableRequest table;
   std::vector<Gate> gates;
   std::optional<ResponseOptions> response;
+  NonlinearRequest response_request;   ///< response.solvers, response.reference
   std::optional<StaticOptions> statics;
+  NonlinearRequest static_request;     ///< static.solvers, static.reference
   std::vector<std::string> warnings;   ///< e.g. the thin-ring assumption stretched
   std::string resolved_toml;           ///< the scene after --set overrides, as TOML
 
-  /// True when the solver ("multibody", "lumped", "fem") is a column: in modes.solvers
-  /// or in the table.
+  std::string reference_solver;        ///< copied from the schema it was read with
+
+  /// True when the solver is a column: in modes.solvers or in the table.
   bool column(const std::string& solver) const;
-  /// True when the converged FE reference is asked for (table.reference or a gate).
+  /// True when the converged modal reference is asked for (table.reference or a gate).
   bool needs_reference() const;
-  /// True when some requested output needs this solver's modes (a column, or the FE
+  /// True when some requested output needs this solver's modes (a column, or the
   /// reference). Nothing else is built: a scene that doesn't need FE never loads it.
   bool needs(const std::string& solver) const;
+  /// True when a nonlinear analysis of the scene runs this solver (or its reference).
+  bool runs_nonlinear(const std::string& solver) const;
 };
 
-/// Reads and validates a scene. `overrides` are "section.key=value" with the value in
-/// TOML syntax (a bare word is taken as a string). Throws InputError naming the file
-/// and the key (exit code 2) on a missing file, malformed TOML (with line and column),
-/// an unknown key (with the nearest known key), a wrong type or a value out of range.
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+/// Reads and validates a scene against the known solvers. `overrides` are
+/// "section.key=value" with the value in TOML syntax (a bare word is taken as a string).
+/// Throws InputError naming the file and the key (exit code 2) on a missing file,
+/// malformed TOML (with line and column), an unknown key (with the nearest known key), a
+/// wrong type or a value out of range, a solver that is not in the schema or does not
+/// offer the analysis, more modes than a model has, or a point that is not a node of a
+/// model that uses it.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema);
 
 /// Same, from TOML text; `name` is used in messages in place of a file name.
-Scene parse_scene(const std::string& toml_text, const std::string& name,
-                  const std::vector<std::string>& overrides = {});
-
-/// The number of elastic modes the solver's model has under the scene's options
-/// (n - 3 for the chains; what the frame and FE unknowns leave after supports and rigid modes).
-long long max_elastic_modes(const Scene& scene, const std::string& solver);
-
-/// The known solver names, in the canonical order.
-const std::vector<std::string>& solver_names();
+Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
+                  const SceneSchema& schema);
 
 }  // namespace ring

@@ -1,4 +1,5 @@
 #include "ring/spec.hpp"
+#include "ring/analysis.hpp"
 
 #include <cmath>
 
@@ -88,6 +89,15 @@ std::string to_string(LoadHistory::Kind k) {
     case LoadHistory::Kind::ramp: return "ramp";
     case LoadHistory::Kind::half_sine: return "half-sine";
     case LoadHistory::Kind::harmonic: return "harmonic";
+  }
+  return "";
+}
+
+std::string to_string(ResponseOptions::Integrator i) {
+  switch (i) {
+    case ResponseOptions::Integrator::newmark: return "newmark";
+    case ResponseOptions::Integrator::generalized_alpha: return "generalized-alpha";
+    case ResponseOptions::Integrator::energy_momentum: return "energy-momentum";
   }
   return "";
 }

@@ -10,8 +10,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "compare/solvers.hpp"
-#include "ring/scene.hpp"
+#include "compare/registry.hpp"
 #include "support/close.hpp"
 
 namespace {
@@ -21,7 +20,7 @@ ring::Scene scene(double d_over_R, double E, double rho, const std::string& solv
                            "\nsection = { shape = \"circle\", diameter = " + std::to_string(d_over_R * 10.0) +
                            " }\n[supports]\npin = 180.0\n[multibody]\nn = 40\n[lumped]\nn = 40\n[fem]\nelements = 40\n"
                            "degree = 4\n[modes]\ncount = 12\nsolvers = " + solvers + "\n";
-  return ring::parse_scene(text, "scaling.toml");
+  return cmp::parse_scene(text, "scaling.toml");
 }
 
 std::vector<double> omega_hat(const ring::Scene& s, const std::string& solver) {

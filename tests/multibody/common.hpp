@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "ring/scene.hpp"
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 #include "support/paper.hpp"
 

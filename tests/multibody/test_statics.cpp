@@ -1,6 +1,6 @@
 // Nonlinear statics of the chain (multibody/statics.hpp) against an independent
 // reference: the inextensible elastica ring squeezed along a diameter, by shooting on
-// its ODE (tests/multibody/elastica.hpp), and its linear limit (Roark, Table 9.2 case 1,
+// its ODE (tests/support/elastica.hpp), and its linear limit (Roark, Table 9.2 case 1,
 // ring::closed_form::diametral_load).
 //
 // The scene: the paper's ring pinned at A (180 deg), roller at C (0 deg) on the line AC,
@@ -18,7 +18,7 @@
 #include "multibody/statics.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/errors.hpp"
-#include "tests/multibody/elastica.hpp"
+#include "tests/support/elastica.hpp"
 #include "tests/support/close.hpp"
 #include "tests/multibody/common.hpp"
 

@@ -1,4 +1,4 @@
-#include "compare/solvers.hpp"
+#include "compare/fem_module.hpp"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -12,15 +12,9 @@
 
 #include "ring/errors.hpp"
 
-#ifdef RINGVIB_HAVE_MULTIBODY
-#include "multibody/modes.hpp"
-#endif
-#ifdef RINGVIB_HAVE_LUMPED_MASS
-#include "lumped_mass/modes.hpp"
-#endif
 #include "fem_reference/plugin.hpp"
 
-namespace cmp {
+namespace cmp::fem_module {
 namespace {
 
 /// Where the FE plug-in is: $RINGVIB_FEM_MODULE, else beside the executable.
@@ -71,68 +65,28 @@ const fem::Plugin& fem_plugin() {
 void check(int status, const std::string& error) {
   if (status == 0) return;
   if (status == 2) throw ring::InputError("", "fem", error);
-  throw ring::NumericalError("fem: " + error);
-}
-
-[[noreturn]] void not_built(const std::string& solver) {
-  throw ring::InputError("", "solver " + solver, "the " + solver + " solver is not built yet in this version");
+  throw ring::NumericalError(error.rfind("fem", 0) == 0 ? error : "fem: " + error);
 }
 
 }  // namespace
 
-ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& solver, int count) {
-  if (solver == "multibody") {
-#ifdef RINGVIB_HAVE_MULTIBODY
-    return multibody::compute_modes(scene.ring, scene.multibody, count);
-#else
-    not_built(solver);
-#endif
-  }
-  if (solver == "lumped") {
-#ifdef RINGVIB_HAVE_LUMPED_MASS
-    return lumped::compute_modes(scene.ring, scene.lumped, count);
-#else
-    not_built(solver);
-#endif
-  }
-  if (solver == "fem") {
-    ring::ModalResult out;
-    std::string error;
-    check(fem_plugin().modes(scene.ring, scene.fem, count, out, error), error);
-    return out;
-  }
-  throw ring::InputError(scene.file, "solver", "unknown solver \"" + solver + "\"; expected multibody, lumped or fem");
-}
-
-ring::ModalResult reference_modes(const ring::Scene& scene, int count) {
-  ring::FemOptions o = scene.fem;
-  o.reference = true;
+ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count) {
   ring::ModalResult out;
   std::string error;
-  check(fem_plugin().modes(scene.ring, o, count, out, error), error);
-  out.solver = "reference";
+  check(fem_plugin().modes(spec, options, count, out, error), error);
   return out;
 }
 
-void write_fem_vtu(const ring::Scene& scene, int count, const std::string& dir) {
+void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir) {
   std::string error;
-  check(fem_plugin().write_vtu(scene.ring, scene.fem, count, dir, error), error);
+  check(fem_plugin().write_vtu(spec, options, count, dir, error), error);
 }
 
-bool fem_module_loaded() { return g_loaded; }
+bool loaded() { return g_loaded; }
 
-bool solver_available(const std::string& solver) {
-#ifdef RINGVIB_HAVE_MULTIBODY
-  if (solver == "multibody") return true;
-#endif
-#ifdef RINGVIB_HAVE_LUMPED_MASS
-  if (solver == "lumped") return true;
-#endif
-  if (solver == "fem") {
-    struct stat st;
-    return stat(fem_module_path().c_str(), &st) == 0;
-  }
-  return false;
+bool available() {
+  struct stat st;
+  return stat(fem_module_path().c_str(), &st) == 0;
 }
 
-}  // namespace cmp
+}  // namespace cmp::fem_module

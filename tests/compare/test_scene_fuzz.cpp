@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "ring/errors.hpp"
-#include "ring/scene.hpp"
+#include "compare/registry.hpp"
 
 namespace {
 
@@ -74,7 +74,7 @@ TEST(SceneFuzz, MutatedScenesAreAcceptedValidOrRejectedClearly) {
   for (int i = 0; i < 5000; ++i) {
     const std::string text = mutate(seeds[i % seeds.size()], rng);
     try {
-      const ring::Scene s = ring::parse_scene(text, "fuzz.toml");
+      const ring::Scene s = cmp::parse_scene(text, "fuzz.toml");
       expect_valid(s, text);
       ++accepted;
     } catch (const ring::InputError& e) {
@@ -101,7 +101,7 @@ TEST(SceneFuzz, RandomOverrides) {
   for (int i = 0; i < 2000; ++i) {
     const std::string o = keys[rng() % keys.size()] + "=" + values[rng() % values.size()];
     try {
-      expect_valid(ring::parse_scene(base, "p.toml", {o}), o);
+      expect_valid(cmp::parse_scene(base, "p.toml", {o}), o);
     } catch (const ring::InputError&) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << "unexpected exception " << e.what() << " for --set " << o;

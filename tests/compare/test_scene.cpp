@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ring/errors.hpp"
-#include "ring/scene.hpp"
+#include "compare/registry.hpp"
 
 namespace {
 
@@ -38,7 +38,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 void expect_rejected(const std::string& text, const std::string& key, const std::string& also = "",
                      const std::vector<std::string>& overrides = {}) {
   try {
-    ring::parse_scene(text, "bad.toml", overrides);
+    cmp::parse_scene(text, "bad.toml", overrides);
     ADD_FAILURE() << "accepted a scene that should fail at " << key;
   } catch (const ring::InputError& e) {
     const std::string m = e.what();
@@ -51,7 +51,7 @@ void expect_rejected(const std::string& text, const std::string& key, const std:
 }
 
 TEST(SceneParse, PaperSceneReadsAsWritten) {
-  const ring::Scene s = ring::parse_scene(kPaper, "paper.toml");
+  const ring::Scene s = cmp::parse_scene(kPaper, "paper.toml");
   EXPECT_EQ(s.multibody.n, 40);
   EXPECT_EQ(s.modes.count, 23);
   ASSERT_TRUE(s.ring.supports.pin);
@@ -65,7 +65,7 @@ TEST(SceneParse, PaperSceneReadsAsWritten) {
 TEST(SceneParse, ShippedScenesLoad) {
   for (const char* f : {"paper1990.toml", "paper1990-as-printed.toml", "free-ring.toml", "paper1990-forced.toml"}) {
     const std::string path = std::string(RINGVIB_SOURCE_DIR) + "/scenes/" + f;
-    EXPECT_NO_THROW(ring::load_scene(path)) << path;
+    EXPECT_NO_THROW(cmp::load_scene(path)) << path;
   }
 }
 
@@ -73,7 +73,7 @@ TEST(SceneParse, ShippedScenesLoad) {
 
 TEST(SceneReject, MissingFileNamesThePath) {
   try {
-    ring::load_scene("/nonexistent/dir/scene.toml");
+    cmp::load_scene("/nonexistent/dir/scene.toml");
     ADD_FAILURE();
   } catch (const ring::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/scene.toml"), std::string::npos);
@@ -94,7 +94,7 @@ TEST(SceneReject, SectionAsThickAsTheRing) {
   expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 12.0"), "ring.section", "not small against the radius");
 }
 TEST(SceneWarn, ThickSectionWarns) {
-  const ring::Scene s = ring::parse_scene(replace(kPaper, "diameter = 0.12", "diameter = 1.5"), "thick.toml");
+  const ring::Scene s = cmp::parse_scene(replace(kPaper, "diameter = 0.12", "diameter = 1.5"), "thick.toml");
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_NE(s.warnings[0].find("thin-ring"), std::string::npos);
 }
@@ -157,26 +157,26 @@ TEST(SceneReject, SpectralRadiusAboveOne) {
 // ---- --set overrides ----
 
 TEST(SceneSet, IntegerOverride) {
-  const ring::Scene s = ring::parse_scene(kPaper, "p.toml", {"multibody.n=160"});
+  const ring::Scene s = cmp::parse_scene(kPaper, "p.toml", {"multibody.n=160"});
   EXPECT_EQ(s.multibody.n, 160);
   EXPECT_EQ(s.lumped.n, 40);
 }
 TEST(SceneSet, ArrayOverrideCreatesSection) {
   const ring::Scene s =
-      ring::parse_scene(kPaper, "p.toml", {"supports.roller=0.0", "static.at=0.0", "static.force=[-2e4,0.0]"});
+      cmp::parse_scene(kPaper, "p.toml", {"supports.roller=0.0", "static.at=0.0", "static.force=[-2e4,0.0]"});
   ASSERT_TRUE(s.statics);
   EXPECT_EQ(s.statics->load.force[0], -2e4);
   EXPECT_EQ(s.statics->load.force[1], 0.0);
 }
 TEST(SceneSet, QuotedAndBareStrings) {
-  const ring::Scene a = ring::parse_scene(kPaper, "p.toml", {"lumped.variant=\"frame\""});
-  const ring::Scene b = ring::parse_scene(kPaper, "p.toml", {"lumped.variant=frame"});
+  const ring::Scene a = cmp::parse_scene(kPaper, "p.toml", {"lumped.variant=\"frame\""});
+  const ring::Scene b = cmp::parse_scene(kPaper, "p.toml", {"lumped.variant=frame"});
   EXPECT_EQ(a.lumped.variant, ring::LumpedOptions::Variant::frame);
   EXPECT_EQ(b.lumped.variant, ring::LumpedOptions::Variant::frame);
 }
 TEST(SceneSet, ResolvedSceneRoundTrips) {
-  const ring::Scene a = ring::parse_scene(kPaper, "p.toml", {"multibody.n=80", "ring.radius=5.0"});
-  const ring::Scene b = ring::parse_scene(a.resolved_toml, "resolved.toml");
+  const ring::Scene a = cmp::parse_scene(kPaper, "p.toml", {"multibody.n=80", "ring.radius=5.0"});
+  const ring::Scene b = cmp::parse_scene(a.resolved_toml, "resolved.toml");
   EXPECT_EQ(b.multibody.n, 80);
   EXPECT_EQ(b.ring.radius, 5.0);
   EXPECT_EQ(b.resolved_toml, a.resolved_toml);

@@ -1,0 +1,25 @@
+// The FE solver lives in a plug-in (libringvib_fem.so) that is dlopen()ed on first use,
+// so that a scene without FE never maps deal.II's shared libraries. The registry's FE
+// entry calls these; nothing else does.
+#pragma once
+
+#include <string>
+
+#include "ring/analysis.hpp"
+#include "ring/results.hpp"
+#include "ring/spec.hpp"
+
+namespace cmp::fem_module {
+
+/// Each throws ring::InputError when the plug-in cannot be loaded or the input cannot
+/// work (exit 2) and ring::NumericalError on a numerical failure (exit 3).
+ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count);
+void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir);
+
+/// True once the plug-in has been loaded in this process (tests use it to show that a
+/// scene without FE never loads it).
+bool loaded();
+/// True when the plug-in exists on disk.
+bool available();
+
+}  // namespace cmp::fem_module

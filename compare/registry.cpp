@@ -1,0 +1,220 @@
+#include "compare/registry.hpp"
+
+#include <stdexcept>
+
+#include "compare/fem_module.hpp"
+#include "lumped_mass/modes.hpp"
+#include "multibody/dynamics.hpp"
+#include "multibody/modes.hpp"
+#include "multibody/statics.hpp"
+#include "ring/errors.hpp"
+
+namespace cmp {
+namespace {
+
+/// A solver's std::invalid_argument ("can never work") is an input error (exit 2).
+template <class F>
+auto as_input_error(const ring::Scene& s, const std::string& name, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw ring::InputError(s.file, name, e.what());
+  }
+}
+
+/// Chains and frames: n = 40, 80, ..., 2560 (from enough pieces for the modes asked).
+std::vector<std::pair<std::string, ring::Scene>> doubling_sweep(const SolverEntry& e, const ring::Scene& s,
+                                                                int modes) {
+  std::vector<std::pair<std::string, ring::Scene>> v;
+  for (int n = 40; n <= 2560; n *= 2) {
+    ring::Scene r = s;
+    e.set_size(r, n);
+    if (e.elastic_modes(r) < modes) continue;
+    v.emplace_back(e.curve(s), r);
+  }
+  return v;
+}
+
+SolverEntry multibody_entry() {
+  SolverEntry e;
+  e.name = "multibody";
+  e.label = "multibody";
+  e.size_key = "multibody.n";
+  e.size_name = "n";
+  e.size = [](const ring::Scene& s) { return s.multibody.n; };
+  e.set_size = [](ring::Scene& s, int n) { s.multibody.n = n; };
+  // n angles - 2 closures (+2 for a free ring) - what the supports hold or leave rigid.
+  e.elastic_modes = [](const ring::Scene& s) -> long long { return s.multibody.n - 3; };
+  e.inextensible = [](const ring::Scene&) { return true; };
+  e.curve = [](const ring::Scene&) { return std::string("multibody"); };
+  e.converge_steps = 5;
+  e.richardson = true;
+  e.paper = [](const ring::PaperRow& r) { return r.mb_corrected; };
+  e.modes = [](const ring::Scene& s, int count) {
+    return as_input_error(s, "multibody", [&] { return multibody::compute_modes(s.ring, s.multibody, count); });
+  };
+  e.statics = [](const ring::Scene& s) {
+    return as_input_error(s, "static", [&] { return multibody::solve_static(s.ring, s.multibody, *s.statics); });
+  };
+  e.response = [](const ring::Scene& s) {
+    return as_input_error(s, "response", [&] { return multibody::respond(s.ring, s.multibody, *s.response); });
+  };
+  return e;
+}
+
+SolverEntry lumped_entry() {
+  SolverEntry e;
+  e.name = "lumped";
+  e.label = "lumped mass";
+  e.size_key = "lumped.n";
+  e.size_name = "n";
+  e.size = [](const ring::Scene& s) { return s.lumped.n; };
+  e.set_size = [](ring::Scene& s, int n) { s.lumped.n = n; };
+  e.elastic_modes = [](const ring::Scene& s) -> long long {
+    const long long n = s.lumped.n;
+    const auto& sup = s.ring.supports;
+    const int held = (sup.pin ? 2 : 0) + (sup.roller ? 1 : 0) + sup.rigid_modes();
+    switch (s.lumped.variant) {
+      case ring::LumpedOptions::Variant::chain: return n - 3;
+      case ring::LumpedOptions::Variant::frame: return 2 * n - held;
+      case ring::LumpedOptions::Variant::frame_consistent: return 3 * n - held;
+    }
+    return 0;
+  };
+  e.inextensible = [](const ring::Scene& s) { return s.lumped.variant == ring::LumpedOptions::Variant::chain; };
+  e.curve = [](const ring::Scene& s) { return "lumped (" + ring::to_string(s.lumped.variant) + ")"; };
+  e.converge_steps = 5;
+  e.paper = [](const ring::PaperRow& r) { return r.lm_corrected; };
+  e.modes = [](const ring::Scene& s, int count) {
+    return as_input_error(s, "lumped", [&] { return lumped::compute_modes(s.ring, s.lumped, count); });
+  };
+  return e;
+}
+
+SolverEntry fem_entry() {
+  SolverEntry e;
+  e.name = "fem";
+  e.label = "FE";
+  e.size_key = "fem.elements";
+  e.size_name = "elements";
+  e.size = [](const ring::Scene& s) { return s.fem.elements; };
+  e.set_size = [](ring::Scene& s, int n) { s.fem.elements = n; };
+  // C0 elements of degree p: p nodes per cell and two displacement components.
+  e.elastic_modes = [](const ring::Scene& s) -> long long {
+    const auto& sup = s.ring.supports;
+    const int held = (sup.pin ? 2 : 0) + (sup.roller ? 1 : 0) + sup.rigid_modes();
+    return 2LL * s.fem.elements * s.fem.degree - held;
+  };
+  e.inextensible = [](const ring::Scene& s) { return !s.fem.extensible; };
+  e.curve = [](const ring::Scene& s) { return "fem (p = " + std::to_string(s.fem.degree) + ")"; };
+  e.bench_sweep = [](const ring::Scene& s, int) {
+    std::vector<std::pair<std::string, ring::Scene>> v;
+    for (int p = 2; p <= 4; ++p)
+      for (int cells : {10, 20, 40, 80, 160}) {
+        ring::Scene r = s;
+        r.fem.degree = p;
+        r.fem.elements = cells;
+        v.emplace_back("fem (p = " + std::to_string(p) + ")", r);
+      }
+    return v;
+  };
+  e.converge_steps = 4;
+  e.paper = [](const ring::PaperRow& r) { return r.fe_corrected; };
+  e.modes = [](const ring::Scene& s, int count) { return fem_module::modes(s.ring, s.fem, count); };
+  e.write_vtu = [](const ring::Scene& s, int count, const std::string& dir) {
+    fem_module::write_vtu(s.ring, s.fem, count, dir);
+  };
+  return e;
+}
+
+std::vector<SolverEntry> make_registry() {
+  std::vector<SolverEntry> v = {multibody_entry(), lumped_entry(), fem_entry()};
+  for (auto& e : v)
+    if (!e.bench_sweep) {
+      const SolverEntry copy = e;
+      e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
+    }
+  return v;
+}
+
+}  // namespace
+
+const std::vector<SolverEntry>& registry() {
+  static const std::vector<SolverEntry> r = make_registry();
+  return r;
+}
+
+std::vector<std::string> solver_names() {
+  std::vector<std::string> v;
+  for (const auto& e : registry()) v.push_back(e.name);
+  return v;
+}
+
+const SolverEntry* find_solver(const std::string& name) {
+  for (const auto& e : registry())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+const SolverEntry& solver(const std::string& name) {
+  if (const SolverEntry* e = find_solver(name)) return *e;
+  std::string known;
+  for (const auto& e : registry()) known += (known.empty() ? "" : ", ") + e.name;
+  throw ring::InputError("", "solver", "unknown solver \"" + name + "\"; expected one of " + known);
+}
+
+const ring::SceneSchema& scene_schema() {
+  static const ring::SceneSchema schema = [] {
+    ring::SceneSchema s;
+    for (const auto& e : registry())
+      s.solvers.push_back({e.name, e.size_key, e.size, e.elastic_modes, bool(e.statics), bool(e.response)});
+    s.default_solver = registry().front().name;  // the paper's method
+    s.reference_solver = "fem";
+    return s;
+  }();
+  return schema;
+}
+
+ring::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  return ring::load_scene(path, overrides, scene_schema());
+}
+
+ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
+                        const std::vector<std::string>& overrides) {
+  return ring::parse_scene(toml_text, name, overrides, scene_schema());
+}
+
+ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count) {
+  return solver(name).modes(scene, count);
+}
+
+ring::ModalResult reference_modes(const ring::Scene& scene, int count) {
+  ring::Scene s = scene;
+  s.fem.reference = true;
+  ring::ModalResult out = solver(scene.reference_solver).modes(s, count);
+  out.solver = "reference";
+  return out;
+}
+
+ring::StaticResult reference_static(const ring::Scene& scene) {
+  const SolverEntry& e = solver(scene.reference_solver);
+  if (!e.statics) throw ring::InputError(scene.file, "static.reference", "the " + e.name + " solver has no statics");
+  ring::Scene s = scene;
+  s.fem.reference = true;
+  ring::StaticResult out = e.statics(s);
+  out.solver = "reference";
+  return out;
+}
+
+ring::TimeHistory reference_response(const ring::Scene& scene) {
+  const SolverEntry& e = solver(scene.reference_solver);
+  if (!e.response)
+    throw ring::InputError(scene.file, "response.reference", "the " + e.name + " solver has no forced response");
+  ring::Scene s = scene;
+  s.fem.reference = true;
+  ring::TimeHistory out = e.response(s);
+  out.solver = "reference";
+  return out;
+}
+
+}  // namespace cmp

@@ -1,0 +1,81 @@
+// The solver registry: the one place that names the solvers. Tables, convergence,
+// benchmarks, gates, the scene's solver checks and the command line loop over it.
+// Adding a solver is its folder, its option struct in ring/spec.hpp, its option section
+// in the scene reader, and one entry in registry.cpp.
+//
+// Usage:
+//   const ring::Scene s = cmp::load_scene("scenes/paper1990.toml", {});
+//   for (const cmp::SolverEntry& e : cmp::registry())
+//     if (s.column(e.name)) ring::ModalResult r = e.modes(s, s.modes.count);
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ring/paper_table.hpp"
+#include "ring/results.hpp"
+#include "ring/scene.hpp"
+
+namespace cmp {
+
+/// One solver as the driver sees it. An analysis the solver does not offer is an empty
+/// function.
+struct SolverEntry {
+  std::string name;       ///< scene and command-line name; also its option section
+  std::string label;      ///< column header in tables ("lumped mass", "FE")
+  std::string size_key;   ///< the discretization key ("multibody.n", "fem.elements")
+  std::string size_name;  ///< what the size counts, in tables ("n", "elements")
+
+  /// Pieces around the ring (nodes at anchor + 360 k / size), and the scene with it changed.
+  std::function<int(const ring::Scene&)> size;
+  std::function<void(ring::Scene&, int)> set_size;
+  /// Elastic modes the model has under the scene's options.
+  std::function<long long(const ring::Scene&)> elastic_modes;
+  /// True when the model converges to the inextensible ring (rigid links), false for
+  /// the extensible one (frames, FE with EA).
+  std::function<bool(const ring::Scene&)> inextensible;
+  /// The curve name in convergence and benchmark output ("lumped (chain)", "fem (p = 3)").
+  std::function<std::string(const ring::Scene&)> curve;
+  /// The refinements `ringvib bench` times, as scenes (curve name, scene).
+  std::function<std::vector<std::pair<std::string, ring::Scene>>(const ring::Scene&, int modes)> bench_sweep;
+  int converge_steps = 5;      ///< refinements size x 1, 2, 4, ... in `ringvib converge`
+  bool richardson = false;     ///< add a Richardson column (order 2) in convergence and bench
+  /// Its column of the paper's Table 1 (corrected values), if it has one.
+  std::function<std::optional<double>(const ring::PaperRow&)> paper;
+
+  /// Analyses. Each throws ring::InputError (exit 2) for a request that cannot work and
+  /// ring::NumericalError (exit 3; ring::IntegrationFailure for a response) on failure.
+  std::function<ring::ModalResult(const ring::Scene&, int count)> modes;
+  std::function<ring::StaticResult(const ring::Scene&)> statics;
+  std::function<ring::TimeHistory(const ring::Scene&)> response;
+  /// Writes the `count` lowest mode shapes as VTU files into `dir` (ParaView), if offered.
+  std::function<void(const ring::Scene&, int count, const std::string& dir)> write_vtu;
+};
+
+/// Every solver, in the canonical order (the paper's method first).
+const std::vector<SolverEntry>& registry();
+/// The entry of `name`; throws ring::InputError naming the known solvers.
+const SolverEntry& solver(const std::string& name);
+/// The entry of `name`, or null ("reference" and other column names are not solvers).
+const SolverEntry* find_solver(const std::string& name);
+/// The names, in registry order.
+std::vector<std::string> solver_names();
+/// What the scene reader needs of the registry.
+const ring::SceneSchema& scene_schema();
+
+/// Reads and validates a scene against the registry (ring::load_scene).
+ring::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
+                        const std::vector<std::string>& overrides = {});
+
+/// The `count` lowest elastic modes of a solver with the scene's options.
+ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count);
+/// The converged modal reference: the reference solver with its reference option on.
+ring::ModalResult reference_modes(const ring::Scene& scene, int count);
+/// The converged nonlinear references of the reference solver.
+ring::StaticResult reference_static(const ring::Scene& scene);
+ring::TimeHistory reference_response(const ring::Scene& scene);
+
+}  // namespace cmp

@@ -1,0 +1,38 @@
+// The options of the nonlinear analyses (forced response and statics), shared by every
+// solver that offers them. The scene reader fills them; solvers read them and never
+// include the scene format (ring/scene.hpp).
+#pragma once
+
+#include <vector>
+
+#include "ring/spec.hpp"
+
+namespace ring {
+
+/// Forced nonlinear response from rest in the undeformed state (the paper's section 5).
+struct ResponseOptions {
+  PointLoad load;                      ///< at, force, history, period
+  double dt = 0.01;                    ///< s
+  double t_end = 5.0;                  ///< s
+  /// newmark: average acceleration (the paper's); generalized_alpha: Chung & Hulbert
+  /// (1993) with rho_inf; energy_momentum: an energy-conserving scheme (where offered).
+  enum class Integrator { newmark, generalized_alpha, energy_momentum };
+  Integrator integrator = Integrator::newmark;
+  double rho_inf = 0.8;                ///< generalized-alpha spectral radius, [0, 1]
+  std::vector<double> record;          ///< degrees, points written
+  double rayleigh_mass = 0.0;          ///< C = a M + b K: a, 1/s
+  double rayleigh_stiffness = 0.0;     ///< b, s
+  double hinge_damping = 0.0;          ///< N m s/rad at every hinge (a rotational damper
+                                       ///< on the relative rotation of neighbouring pieces)
+};
+
+/// Nonlinear statics under a dead point load, by load stepping (full load at the end).
+struct StaticOptions {
+  PointLoad load;                      ///< its history is ignored
+  int steps = 20;                      ///< load increments
+  std::vector<double> record;          ///< degrees, points reported
+};
+
+std::string to_string(ResponseOptions::Integrator i);
+
+}  // namespace ring
