@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/bench.hpp"
+#include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
 #include "compare/gates.hpp"
+#include "compare/nonlinear.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
 #include "compare/report.hpp"
@@ -101,6 +103,20 @@ std::string modes_text(const ring::ModalResult& m) {
   throw ring::NumericalError(std::string(e.what()) + "; the history up to t = " + sig4(t) + " s was written to " + path);
 }
 
+std::string format_nonlinear(const NonlinearTable& t, const std::string& format) {
+  if (format == "md") return format_markdown(t);
+  if (format == "csv") return format_csv(t);
+  if (format == "json") return format_json(t);
+  return format_text(t);
+}
+
+/// The solver a single-solver output is for: --solver, or the only one the scene lists.
+std::optional<std::string> single_solver(const std::string& option, const ring::NonlinearRequest& q) {
+  if (!option.empty()) return option;
+  if (q.solvers.size() == 1 && !q.reference) return q.solvers.front();
+  return std::nullopt;
+}
+
 Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
   Table t = build_table(s.title, r.columns, r.reference ? &*r.reference : nullptr, s.modes.count);
   bool gates_need_paper = false;
@@ -164,21 +180,41 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
       if (!g.pass) code = 1;
     }
   }
-  if (s.response) {
-    p.say("integrating the forced response");
+  if (s.response || s.statics) {
+    NonlinearRun nl;
     try {
-      rep.history = respond(s);
+      nl = run_nonlinear(s, "", p.on() ? &std::cerr : nullptr);
     } catch (const ring::IntegrationFailure& e) {
       // Keep what was computed: the partial history goes into the report folder.
       if (out_dir.empty()) throw;
-      keep_partial(e, out_dir + "/response.csv");
+      keep_partial(e, out_dir + "/response" + (e.partial().solver.empty() ? "" : "_" + e.partial().solver) + ".csv");
     }
-    std::cout << "response: " << rep.history->t.size() - 1 << " steps to t = " << rep.history->t.back() << " s\n";
-  }
-  if (s.statics) {
-    p.say("solving the nonlinear statics");
-    rep.statics = solve_static(s);
-    std::cout << static_text(*rep.statics);
+    // One solver prints what `respond`/`static` print; several (or a reference) the
+    // comparison table. The report always has the table.
+    if (!nl.histories.empty()) {
+      rep.history = nl.histories.front();
+      rep.response_table = response_table(s.title, nl.histories, nl.history_reference ? &*nl.history_reference : nullptr);
+      if (nl.histories.size() > 1 || nl.history_reference)
+        std::cout << format_text(*rep.response_table) << "\n";
+      else
+        std::cout << "response: " << rep.history->t.size() - 1 << " steps to t = " << rep.history->t.back() << " s\n";
+    }
+    if (!nl.statics.empty()) {
+      rep.statics = nl.statics.front();
+      rep.static_table = static_table(s.title, nl.statics, nl.static_reference ? &*nl.static_reference : nullptr);
+      if (nl.statics.size() > 1 || nl.static_reference) std::cout << format_text(*rep.static_table) << "\n";
+      else std::cout << static_text(*rep.statics);
+    }
+    rep.nonlinear = std::move(nl);
+    for (const auto* t : {rep.response_table ? &*rep.response_table : nullptr,
+                          rep.static_table ? &*rep.static_table : nullptr}) {
+      if (!t) continue;
+      for (const auto& g : evaluate_nonlinear_gates(s.gates, *t)) {
+        std::cout << g.line() << "\n";
+        if (!g.pass) code = 1;
+        rep.gates.push_back(g);
+      }
+    }
   }
   if (!junit.empty()) write_file(junit, junit_xml(s.title.empty() ? a.scene : s.title, rep.gates));
   if (!out_dir.empty()) {
@@ -189,11 +225,23 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
   return code;
 }
 
-int cmd_respond(const CommonArgs& a, const std::string& csv) {
-  const ring::Scene s = load(a);
+int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format) {
+  ring::Scene s = load(a);
   if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
+  const Progress p(a.quiet);
+  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  const auto one = single_solver(solver, s.response_request);
+  if (!one) {
+    if (!csv.empty())
+      throw ring::InputError(a.scene, "--csv", "the scene runs several solvers (response.solvers); pick one with "
+                                               "--solver NAME, or write every history with run --out DIR");
+    const NonlinearRun r = run_nonlinear(s, "", progress);
+    std::cout << format_nonlinear(response_table(s.title, r.histories, r.history_reference ? &*r.history_reference : nullptr),
+                                  format);
+    return 0;
+  }
   try {
-    const ring::TimeHistory h = respond(s);
+    const ring::TimeHistory h = run_nonlinear(s, *one, progress).histories.front();
     if (csv.empty()) std::cout << history_csv(h);
     else write_file(csv, history_csv(h));
   } catch (const ring::IntegrationFailure& e) {
@@ -203,10 +251,19 @@ int cmd_respond(const CommonArgs& a, const std::string& csv) {
   return 0;
 }
 
-int cmd_static(const CommonArgs& a, bool json) {
+int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const std::string& format) {
   const ring::Scene s = load(a);
   if (!s.statics) throw ring::InputError(a.scene, "static", "the scene has no [static] section");
-  const ring::StaticResult r = solve_static(s);
+  const Progress p(a.quiet);
+  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  const auto one = single_solver(solver, s.static_request);
+  if (!one) {
+    const NonlinearRun r = run_nonlinear(s, "", progress);
+    const NonlinearTable t = static_table(s.title, r.statics, r.static_reference ? &*r.static_reference : nullptr);
+    std::cout << format_nonlinear(t, json ? "json" : format);
+    return 0;
+  }
+  const ring::StaticResult r = run_nonlinear(s, *one, progress).statics.front();
   std::cout << (json ? static_json(r) : static_text(r));
   return 0;
 }
@@ -230,11 +287,23 @@ int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   const Progress p(a.quiet);
   if (!out_dir.empty()) make_dirs(out_dir);
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
-  const BenchStudy b = bench(s, compute_references(s, progress), progress);
-  std::cout << bench_text(b);
-  if (!out_dir.empty()) {
-    write_bench(out_dir, b);
-    std::cout << "wrote " << out_dir << "/bench.csv, bench.txt and bench.png\n";
+  // The modal sweep for the solvers whose modes the scene lists, the nonlinear sweeps for
+  // its [response] and [static].
+  const bool modal = !s.modes.solvers.empty() || s.table.present;
+  if (modal) {
+    const BenchStudy b = bench(s, compute_references(s, progress), progress);
+    std::cout << bench_text(b);
+    if (!out_dir.empty()) {
+      write_bench(out_dir, b);
+      std::cout << "wrote " << out_dir << "/bench.csv, bench.txt and bench.png\n";
+    }
+  }
+  for (const NonlinearBench& b : bench_nonlinear(s, progress)) {
+    std::cout << (modal ? "\n" : "") << bench_nonlinear_text(b);
+    if (!out_dir.empty()) {
+      write_bench_nonlinear(out_dir, b);
+      std::cout << "wrote " << out_dir << "/bench_" << b.analysis << ".csv, .txt and .png\n";
+    }
   }
   return 0;
 }

@@ -19,8 +19,11 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
 int cmd_table(const CommonArgs& a, bool paper, const std::string& format);
 int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
               const std::string& vtu_dir);
-int cmd_respond(const CommonArgs& a, const std::string& csv);
-int cmd_static(const CommonArgs& a, bool json);
+/// One solver (--solver NAME, or the only one listed): its history as CSV. Several: the
+/// comparison table of their peaks in `format` (text | md | csv | json).
+int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format);
+/// One solver: its equilibrium (text, or JSON with --json). Several: the comparison table.
+int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const std::string& format);
 int cmd_converge(const CommonArgs& a, const std::string& out_dir);
 int cmd_bench(const CommonArgs& a, const std::string& out_dir);
 

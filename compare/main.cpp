@@ -54,10 +54,18 @@ int main(int argc, char** argv) {
   auto* respond = app.add_subcommand("respond", "the forced nonlinear response of [response]");
   add_common(respond, a);
   respond->add_option("--csv", csv, "write the time history to this CSV file (default: stdout)");
+  respond->add_option("--solver", solver, "only this solver (default: response.solvers)")
+      ->check(CLI::IsMember(cmp::solver_names()));
+  respond->add_option("--format", format, "the comparison table of several solvers: text | md | csv | json")
+      ->check(CLI::IsMember({"text", "md", "csv", "json"}));
 
   auto* statics = app.add_subcommand("static", "nonlinear static equilibrium of [static]");
   add_common(statics, a);
   statics->add_flag("--json", json, "print JSON");
+  statics->add_option("--solver", solver, "only this solver (default: static.solvers)")
+      ->check(CLI::IsMember(cmp::solver_names()));
+  statics->add_option("--format", format, "the comparison table of several solvers: text | md | csv | json")
+      ->check(CLI::IsMember({"text", "md", "csv", "json"}));
 
   auto* converge = app.add_subcommand("converge", "error against refinement and observed orders, per solver");
   add_common(converge, a);
@@ -78,8 +86,8 @@ int main(int argc, char** argv) {
     if (*run) return cmp::cmd_run(a, out, junit, paper);
     if (*table) return cmp::cmd_table(a, paper, format);
     if (*modes) return cmp::cmd_modes(a, solver, count, json, vtu);
-    if (*respond) return cmp::cmd_respond(a, csv);
-    if (*statics) return cmp::cmd_static(a, json);
+    if (*respond) return cmp::cmd_respond(a, csv, solver, format);
+    if (*statics) return cmp::cmd_static(a, json, solver, format);
     if (*converge) return cmp::cmd_converge(a, out);
     if (*bench) return cmp::cmd_bench(a, out);
   } catch (const ring::InputError& e) {

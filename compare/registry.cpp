@@ -1,5 +1,6 @@
 #include "compare/registry.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 #include "compare/fem_module.hpp"
@@ -127,13 +128,31 @@ SolverEntry fem_entry() {
   return e;
 }
 
+/// Wraps a nonlinear analysis so that its result names the solver and carries the wall
+/// time even where the solver leaves them out.
+template <class Result>
+std::function<Result(const ring::Scene&)> named_and_timed(std::string name,
+                                                          std::function<Result(const ring::Scene&)> f) {
+  if (!f) return f;
+  return [name, f](const ring::Scene& s) {
+    const auto start = std::chrono::steady_clock::now();
+    Result r = f(s);
+    if (r.solver.empty()) r.solver = name;
+    if (r.seconds == 0.0) r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  };
+}
+
 std::vector<SolverEntry> make_registry() {
   std::vector<SolverEntry> v = {multibody_entry(), lumped_entry(), fem_entry()};
-  for (auto& e : v)
+  for (auto& e : v) {
     if (!e.bench_sweep) {
       const SolverEntry copy = e;
       e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
     }
+    e.statics = named_and_timed(e.name, e.statics);
+    e.response = named_and_timed(e.name, e.response);
+  }
   return v;
 }
 

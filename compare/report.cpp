@@ -139,18 +139,51 @@ void write_report(const std::string& dir, const RunReport& r) {
     md << "## Errors against the converged reference\n\n![errors](error.png)\n\n";
   }
   if (r.history) {
+    md << "## Forced response\n\n";
+    // response.csv is the first solver's history; with several solvers each has its own.
     put("response.csv", history_csv(*r.history));
-    plot_response(dir, *r.history, s.ring.radius);
+    const auto& histories = r.nonlinear ? r.nonlinear->histories : std::vector<ring::TimeHistory>{*r.history};
+    if (histories.size() > 1)
+      for (const auto& h : histories) put("response_" + h.solver + ".csv", history_csv(h));
+    if (r.nonlinear && r.nonlinear->history_reference)
+      put("response_reference.csv", history_csv(*r.nonlinear->history_reference));
+    if (r.response_table) {
+      md << format_markdown(*r.response_table) << "\n";
+      put("response_table.txt", format_text(*r.response_table));
+      put("response_table.md", format_markdown(*r.response_table));
+      put("response_table.csv", format_csv(*r.response_table));
+      put("response_table.json", format_json(*r.response_table));
+    }
+    if (histories.size() > 1) plot_histories(dir, histories);
+    else plot_response(dir, *r.history, s.ring.radius);
     files.push_back("response_history.png");
-    md << "## Forced response\n\n![time histories](response_history.png)\n\n";
+    md << "![time histories](response_history.png)\n\n";
     if (!r.history->snapshot_t.empty()) {
       files.push_back("response_shapes.png");
       md << "![deformed ring](response_shapes.png)\n\n";
     }
   }
   if (r.statics) {
+    md << "## Nonlinear statics\n\n";
     put("static.json", static_json(*r.statics));
-    md << "## Nonlinear statics\n\n```\n" << static_text(*r.statics) << "```\n\n";
+    if (r.static_table) {
+      md << format_markdown(*r.static_table) << "\n";
+      if (r.nonlinear && r.nonlinear->statics.size() > 1)
+        for (const auto& x : r.nonlinear->statics) put("static_" + x.solver + ".json", static_json(x));
+      if (r.nonlinear && r.nonlinear->static_reference)
+        put("static_reference.json", static_json(*r.nonlinear->static_reference));
+      put("static_table.txt", format_text(*r.static_table));
+      put("static_table.md", format_markdown(*r.static_table));
+      put("static_table.csv", format_csv(*r.static_table));
+      put("static_table.json", format_json(*r.static_table));
+    } else {
+      md << "```\n" << static_text(*r.statics) << "```\n\n";
+    }
+    std::vector<ring::StaticResult> all = r.nonlinear ? r.nonlinear->statics : std::vector<ring::StaticResult>{*r.statics};
+    if (r.nonlinear && r.nonlinear->static_reference) all.push_back(*r.nonlinear->static_reference);
+    plot_static_shapes(dir, all);
+    files.push_back("static_shapes.png");
+    md << "![deformed ring under the static load](static_shapes.png)\n\n";
   }
   md << "## Scene (after --set overrides)\n\n```toml\n" << s.resolved_toml << "\n```\n\n## Files\n\n";
   for (const auto& f : files) md << "- `" << f << "`\n";

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "compare/gates.hpp"
+#include "compare/nonlinear.hpp"
 #include "compare/table.hpp"
 #include "ring/results.hpp"
 #include "ring/scene.hpp"
@@ -19,8 +20,10 @@ struct RunReport {
   std::optional<ring::ModalResult> reference;
   std::optional<Table> table;
   std::vector<GateResult> gates;
-  std::optional<ring::TimeHistory> history;
-  std::optional<ring::StaticResult> statics;
+  std::optional<ring::TimeHistory> history;      ///< the first response solver's
+  std::optional<ring::StaticResult> statics;     ///< the first statics solver's
+  std::optional<NonlinearRun> nonlinear;         ///< every nonlinear result
+  std::optional<NonlinearTable> response_table, static_table;  ///< with several solvers or a reference
 };
 
 /// Writes every file of the report into `dir` (which exists). Lists what it wrote in

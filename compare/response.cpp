@@ -50,12 +50,15 @@ std::string static_json(const ring::StaticResult& r) {
   for (const auto& d : r.displacements) j["displacements"].push_back({{"angle", d.angle}, {"ux", d.ux}, {"uy", d.uy}});
   j["steps"] = r.steps;
   j["newton_iterations"] = r.newton_iterations;
+  j["solver"] = r.solver;
+  j["unknowns"] = r.unknowns;
+  j["seconds"] = r.seconds;
   return j.dump(2) + "\n";
 }
 
 std::string static_text(const ring::StaticResult& r) {
   std::ostringstream s;
-  s << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n"
+  s << (r.solver.empty() ? "" : r.solver + ": ") << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n"
     << "   angle deg        ux m        uy m\n";
   for (const auto& d : r.displacements) {
     char line[96];

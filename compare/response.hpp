@@ -19,7 +19,8 @@ ring::StaticResult solve_static(const ring::Scene& scene);
 /// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, work,
 /// energy_error, constraint_residual, newton_iterations (issue 7, DESIGN.md).
 std::string history_csv(const ring::TimeHistory& h);
-/// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations"}.
+/// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations", "solver",
+/// "unknowns", "seconds"}.
 std::string static_json(const ring::StaticResult& r);
 std::string static_text(const ring::StaticResult& r);
 

@@ -32,6 +32,9 @@ struct Gate {
   double max_pct = 0.0;               ///< largest allowed |error| or |difference|, %
   std::string against = "reference";  ///< "reference", "paper", or another solver's name
   int first_mode = 1, last_mode = 0;  ///< 1-based, inclusive; last 0 = all requested
+  /// What is gated: "modes" (frequencies), "response" (peak |u| at the recorded points)
+  /// or "static" (|u| at the recorded points).
+  std::string analysis = "modes";
 };
 
 /// Which solvers run a nonlinear analysis ([response] or [static]), and whether the

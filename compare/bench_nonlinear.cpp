@@ -1,0 +1,202 @@
+#include "compare/bench_nonlinear.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/registry.hpp"
+#include "ring/errors.hpp"
+
+namespace cmp {
+namespace {
+
+/// The loaded point's peak |u| over a history, or its |u| at equilibrium.
+double loaded_value(const ring::TimeHistory& h, double angle) {
+  double peak = 0.0;
+  for (std::size_t p = 0; p < h.record_angles.size(); ++p)
+    if (std::abs(h.record_angles[p] - angle) < 1e-9)
+      for (std::size_t k = 0; k < h.t.size(); ++k) peak = std::max(peak, std::hypot(h.ux[p][k], h.uy[p][k]));
+  return peak;
+}
+
+double loaded_value(const ring::StaticResult& r, double angle) {
+  for (const auto& d : r.displacements)
+    if (std::abs(d.angle - angle) < 1e-9) return std::hypot(d.ux, d.uy);
+  return NAN;
+}
+
+/// Every support, load and record point of the scene is a node of an n-piece model.
+bool nodes_fit(const ring::Scene& s, int n) {
+  const double anchor = s.ring.supports.pin.value_or(0.0);
+  std::vector<double> points;
+  if (s.ring.supports.roller) points.push_back(*s.ring.supports.roller);
+  if (s.response) {
+    points.push_back(s.response->load.angle);
+    points.insert(points.end(), s.response->record.begin(), s.response->record.end());
+  }
+  if (s.statics) {
+    points.push_back(s.statics->load.angle);
+    points.insert(points.end(), s.statics->record.begin(), s.statics->record.end());
+  }
+  for (double a : points)
+    if (!ring::on_node(a, anchor, n)) return false;
+  return true;
+}
+
+std::string fmt_seconds(double s) {
+  char b[32];
+  if (s < 1e-3) std::snprintf(b, sizeof b, "%.1f us", s * 1e6);
+  else if (s < 1.0) std::snprintf(b, sizeof b, "%.2f ms", s * 1e3);
+  else std::snprintf(b, sizeof b, "%.2f s", s);
+  return b;
+}
+
+template <class Run>
+NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, double angle,
+                     const std::vector<std::string>& solvers, Run run, std::ostream* progress) {
+  NonlinearBench b;
+  b.analysis = analysis;
+  b.loaded_point = angle;
+  b.study.method_curve = scene_schema().default_solver;
+  b.study.fe_curve = scene.reference_solver;
+  if (progress) *progress << "ringvib: computing the converged " << analysis << " reference\n";
+  {
+    const auto [value, seconds] = run(scene, nullptr);
+    b.reference_value = value;
+    b.reference_seconds = seconds;
+  }
+  for (const auto& name : solvers) {
+    const SolverEntry& e = solver(name);
+    for (int n = 20; n <= 320; n *= 2) {
+      ring::Scene s = scene;
+      e.set_size(s, n);
+      if (!nodes_fit(s, n)) continue;
+      if (progress) *progress << "ringvib: bench " << analysis << " " << name << " at " << e.size_name << " = " << n << "\n";
+      std::vector<double> times;
+      double value = NAN, total = 0.0;
+      while (times.empty() || (total < 0.3 && times.size() < 5)) {
+        const auto [v, seconds] = run(s, &e);
+        value = v;
+        times.push_back(seconds);
+        total += seconds;
+      }
+      std::sort(times.begin(), times.end());
+      const double err = std::abs(value - b.reference_value) / b.reference_value * 100.0;
+      b.study.points.push_back({name, n, 0, times[times.size() / 2], static_cast<int>(times.size()), err, err});
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostream* progress) {
+  std::vector<NonlinearBench> out;
+  const SolverEntry& ref = solver(scene.reference_solver);
+  if (scene.response) {
+    if (!ref.response)
+      throw ring::InputError(scene.file, "response",
+                             "bench needs the converged reference response, and the " + ref.name +
+                                 " solver has no forced response in this build");
+    const double at = scene.response->load.angle;
+    out.push_back(sweep(
+        scene, "response", at, scene.response_request.solvers,
+        [&](const ring::Scene& s, const SolverEntry* e) {
+          const ring::TimeHistory h = e ? e->response(s) : reference_response(s);
+          return std::pair<double, double>{loaded_value(h, at), h.seconds};
+        },
+        progress));
+  }
+  if (scene.statics) {
+    if (!ref.statics)
+      throw ring::InputError(scene.file, "static",
+                             "bench needs the converged reference statics, and the " + ref.name +
+                                 " solver has no statics in this build");
+    const double at = scene.statics->load.angle;
+    out.push_back(sweep(
+        scene, "static", at, scene.static_request.solvers,
+        [&](const ring::Scene& s, const SolverEntry* e) {
+          const ring::StaticResult r = e ? e->statics(s) : reference_static(s);
+          return std::pair<double, double>{loaded_value(r, at), r.seconds};
+        },
+        progress));
+  }
+  return out;
+}
+
+std::string bench_nonlinear_text(const NonlinearBench& b) {
+  const BenchStudy& st = b.study;
+  const std::string what = b.analysis == "response" ? "peak |u|" : "|u|";
+  std::ostringstream s;
+  s << "Run time against the error of the loaded point's " << what << " (" << sig4(b.loaded_point)
+    << " deg), " << (b.analysis == "response" ? "forced response" : "nonlinear statics")
+    << ", against the converged reference " << sig4(b.reference_value) << " m (computed in "
+    << fmt_seconds(b.reference_seconds) << ")\n(solver time inside this process, median of repeats; compare times as ratios)\n\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "%-12s %6s %12s %8s %12s\n", "solver", "size", "time", "repeats", "|error| %");
+  s << line;
+  for (const auto& p : st.points) {
+    std::snprintf(line, sizeof line, "%-12s %6d %12s %8d %12.3e\n", p.curve.c_str(), p.size, fmt_seconds(p.seconds).c_str(),
+                  p.repeats, p.max_error);
+    s << line;
+  }
+  std::vector<std::string> curves;
+  for (const auto& p : st.points)
+    if (std::find(curves.begin(), curves.end(), p.curve) == curves.end()) curves.push_back(p.curve);
+  s << "\nTime to reach an error of 1 % and of 0.1 %:\n";
+  for (const auto& c : curves) {
+    const auto t1 = time_to_error(st, c, 1.0), t2 = time_to_error(st, c, 0.1);
+    std::snprintf(line, sizeof line, "  %-12s 1 %%: %-12s 0.1 %%: %s\n", c.c_str(),
+                  t1 ? fmt_seconds(*t1).c_str() : "not reached", t2 ? fmt_seconds(*t2).c_str() : "not reached");
+    s << line;
+  }
+  const BenchPoint *m40 = nullptr, *f40 = nullptr;
+  for (const auto& p : st.points) {
+    if (p.curve == st.method_curve && p.size == 40) m40 = &p;
+    if (p.curve == st.fe_curve && p.size == 40) f40 = &p;
+  }
+  s << "\nThe paper's claim (" << st.method_curve << " takes about 1/3 of the FE time):\n";
+  if (m40 && f40) {
+    const double r = m40->seconds / f40->seconds;
+    s << "  at equal n = 40: " << st.method_curve << " / " << st.fe_curve << " time = " << sig4(r) << " (errors "
+      << sig4(m40->max_error) << " % and " << sig4(f40->max_error) << " %)\n";
+  } else {
+    s << "  at equal n = 40: not measured (both solvers must be listed)\n";
+  }
+  for (double e : {1.0, 0.1}) {
+    const auto m = time_to_error(st, st.method_curve, e), f = time_to_error(st, st.fe_curve, e);
+    if (m && f) s << "  at equal error " << e << " %: time ratio " << sig4(*m / *f) << "\n";
+    else s << "  at equal error " << e << " %: " << (m ? st.fe_curve : st.method_curve) << " does not reach it in the sweep\n";
+  }
+  return s.str();
+}
+
+void write_bench_nonlinear(const std::string& dir, const NonlinearBench& b) {
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "analysis,solver,size,seconds_median,repeats,error_pct,reference_m\n";
+  std::map<std::string, Series> curves;
+  std::vector<std::string> order;
+  for (const auto& p : b.study.points) {
+    csv << b.analysis << "," << p.curve << "," << p.size << "," << p.seconds << "," << p.repeats << "," << p.max_error
+        << "," << b.reference_value << "\n";
+    if (!curves.count(p.curve)) {
+      order.push_back(p.curve);
+      curves[p.curve].name = p.curve;
+    }
+    curves[p.curve].x.push_back(p.seconds);
+    curves[p.curve].y.push_back(p.max_error);
+  }
+  const std::string name = "bench_" + b.analysis;
+  write_file(dir + "/" + name + ".csv", csv.str());
+  std::vector<Series> plot;
+  for (const auto& c : order) plot.push_back(curves[c]);
+  plot_series(dir, name, "Run time against the error of the loaded point (" + b.analysis + ", lower left is better)",
+              "solver time, median (s)", "|error| against the reference (%)", plot, true, true);
+  write_file(dir + "/" + name + ".txt", bench_nonlinear_text(b));
+}
+
+}  // namespace cmp

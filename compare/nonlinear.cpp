@@ -1,0 +1,342 @@
+#include "compare/nonlinear.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/registry.hpp"
+#include "ring/errors.hpp"
+
+namespace cmp {
+
+NonlinearRun run_nonlinear(const ring::Scene& scene, const std::string& only, std::ostream* progress) {
+  NonlinearRun run;
+  auto listed = [&](const ring::NonlinearRequest& q) {
+    std::vector<std::string> v;
+    for (const auto& name : q.solvers)
+      if (only.empty() || name == only) v.push_back(name);
+    if (!only.empty() && v.empty()) v.push_back(only);  // --solver NAME not listed: run it anyway
+    return v;
+  };
+  auto say = [&](const std::string& what) {
+    if (progress) *progress << "ringvib: " << what << "\n";
+  };
+  if (scene.response) {
+    for (const auto& name : listed(scene.response_request)) {
+      const SolverEntry& e = solver(name);
+      if (!e.response) throw ring::InputError(scene.file, "response.solvers", "the " + name + " solver has no forced response");
+      say("integrating the forced response with " + name);
+      run.histories.push_back(e.response(scene));
+    }
+    if (scene.response_request.reference && only.empty()) {
+      say("integrating the converged reference response");
+      run.history_reference = reference_response(scene);
+    }
+  }
+  if (scene.statics) {
+    for (const auto& name : listed(scene.static_request)) {
+      const SolverEntry& e = solver(name);
+      if (!e.statics) throw ring::InputError(scene.file, "static.solvers", "the " + name + " solver has no statics");
+      say("solving the nonlinear statics with " + name);
+      run.statics.push_back(e.statics(scene));
+    }
+    if (scene.static_request.reference && only.empty()) {
+      say("solving the converged reference statics");
+      run.static_reference = reference_static(scene);
+    }
+  }
+  return run;
+}
+
+namespace {
+
+/// Fills the differences against the base (column 0) and the errors against the
+/// reference, leaving NaN where the value compared with is ~0 for that quantity.
+void fill_relative(NonlinearTable& t) {
+  std::map<std::string, double> scale;
+  for (const auto& r : t.rows)
+    for (double v : r.value) scale[r.quantity] = std::max(scale[r.quantity], std::abs(v));
+  auto rel = [&](double a, double b, const std::string& q) {
+    return std::abs(b) > 1e-9 * scale[q] ? (a - b) / std::abs(b) * 100.0 : NAN;
+  };
+  for (auto& r : t.rows) {
+    r.diff_pct.assign(r.value.size(), NAN);
+    for (std::size_t c = 1; c < r.value.size(); ++c) r.diff_pct[c] = rel(r.value[0], r.value[c], r.quantity);
+    if (r.reference) {
+      r.error_pct.clear();
+      for (double v : r.value) r.error_pct.push_back(rel(v, *r.reference, r.quantity));
+    }
+  }
+}
+
+struct Peak {
+  double u = 0.0, t = 0.0;
+};
+
+Peak peak(const ring::TimeHistory& h, std::size_t point) {
+  Peak p;
+  for (std::size_t k = 0; k < h.t.size(); ++k) {
+    const double u = std::hypot(h.ux[point][k], h.uy[point][k]);
+    if (u > p.u) p = {u, h.t[k]};
+  }
+  return p;
+}
+
+/// Index of the recorded point at `angle` (degrees), or -1.
+int point_index(const std::vector<double>& angles, double angle) {
+  for (std::size_t i = 0; i < angles.size(); ++i)
+    if (std::abs(angles[i] - angle) < 1e-9) return static_cast<int>(i);
+  return -1;
+}
+
+/// 4 significant digits, exponent form for very small or large values; "n/a" if undefined.
+std::string number_or_na(double v, bool pct) {
+  if (!std::isfinite(v)) return "n/a";
+  if (pct) return pct2(v);
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+std::vector<std::vector<std::string>> cells(const NonlinearTable& t) {
+  std::vector<std::vector<std::string>> out;
+  std::vector<std::string> head = {"point deg", "quantity"};
+  for (std::size_t c = 0; c < t.solvers.size(); ++c) {
+    head.push_back(t.solvers[c]);
+    if (c > 0) head.push_back("diff %");
+    if (t.has_reference()) head.push_back("error %");
+  }
+  if (t.has_reference()) head.push_back("reference");
+  out.push_back(head);
+  for (const auto& r : t.rows) {
+    std::vector<std::string> row = {number_or_na(r.angle, false), r.quantity};
+    for (std::size_t c = 0; c < r.value.size(); ++c) {
+      row.push_back(number_or_na(r.value[c], false));
+      if (c > 0) row.push_back(number_or_na(r.diff_pct[c], true));
+      if (r.reference) row.push_back(number_or_na(r.error_pct[c], true));
+    }
+    if (r.reference) row.push_back(number_or_na(*r.reference, false));
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::string units_note(const NonlinearTable& t) {
+  return t.analysis == "response"
+             ? "peak_u: largest |u| over the history (m); t_peak: when it occurs (s)"
+             : "ux, uy: displacement (m, ring-centred frame); u: its magnitude";
+}
+
+}  // namespace
+
+NonlinearTable response_table(const std::string& title, const std::vector<ring::TimeHistory>& histories,
+                              const ring::TimeHistory* reference) {
+  NonlinearTable t;
+  t.title = title;
+  t.analysis = "response";
+  if (histories.empty()) return t;
+  for (const auto& h : histories) t.solvers.push_back(h.solver);
+  for (std::size_t p = 0; p < histories.front().record_angles.size(); ++p) {
+    const double angle = histories.front().record_angles[p];
+    NonlinearRow u{angle, "peak_u", {}, {}, std::nullopt, {}}, tp{angle, "t_peak", {}, {}, std::nullopt, {}};
+    for (const auto& h : histories) {
+      const int i = point_index(h.record_angles, angle);
+      const Peak pk = i < 0 ? Peak{NAN, NAN} : peak(h, i);
+      u.value.push_back(pk.u);
+      tp.value.push_back(pk.t);
+    }
+    if (reference) {
+      const int i = point_index(reference->record_angles, angle);
+      const Peak pk = i < 0 ? Peak{NAN, NAN} : peak(*reference, i);
+      u.reference = pk.u;
+      tp.reference = pk.t;
+    }
+    t.rows.push_back(u);
+    t.rows.push_back(tp);
+  }
+  fill_relative(t);
+  return t;
+}
+
+NonlinearTable static_table(const std::string& title, const std::vector<ring::StaticResult>& results,
+                            const ring::StaticResult* reference) {
+  NonlinearTable t;
+  t.title = title;
+  t.analysis = "static";
+  if (results.empty()) return t;
+  for (const auto& r : results) t.solvers.push_back(r.solver);
+  auto find = [](const ring::StaticResult& r, double angle) -> const ring::PointDisplacement* {
+    for (const auto& d : r.displacements)
+      if (std::abs(d.angle - angle) < 1e-9) return &d;
+    return nullptr;
+  };
+  for (const auto& d0 : results.front().displacements) {
+    NonlinearRow rows[3] = {{d0.angle, "ux", {}, {}, std::nullopt, {}},
+                            {d0.angle, "uy", {}, {}, std::nullopt, {}},
+                            {d0.angle, "u", {}, {}, std::nullopt, {}}};
+    auto values = [](const ring::PointDisplacement* d) {
+      return d ? std::array<double, 3>{d->ux, d->uy, std::hypot(d->ux, d->uy)} : std::array<double, 3>{NAN, NAN, NAN};
+    };
+    for (const auto& r : results) {
+      const auto v = values(find(r, d0.angle));
+      for (int q = 0; q < 3; ++q) rows[q].value.push_back(v[q]);
+    }
+    if (reference) {
+      const auto v = values(find(*reference, d0.angle));
+      for (int q = 0; q < 3; ++q) rows[q].reference = v[q];
+    }
+    for (auto& r : rows) t.rows.push_back(r);
+  }
+  fill_relative(t);
+  return t;
+}
+
+std::string format_text(const NonlinearTable& t) {
+  const auto c = cells(t);
+  std::vector<std::size_t> w(c[0].size(), 0);
+  for (const auto& r : c)
+    for (std::size_t k = 0; k < r.size(); ++k) w[k] = std::max(w[k], r[k].size());
+  std::ostringstream s;
+  if (!t.title.empty()) s << t.title << "\n";
+  s << (t.analysis == "response" ? "Forced response" : "Nonlinear statics") << " at the recorded points, "
+    << units_note(t) << "\n\n";
+  for (const auto& r : c) {
+    for (std::size_t k = 0; k < r.size(); ++k) s << (k ? "  " : "") << std::string(w[k] - r[k].size(), ' ') << r[k];
+    s << "\n";
+  }
+  s << "\ndiff % = (" << (t.solvers.empty() ? "base" : t.solvers[0])
+    << " - other) / |other| * 100 (the paper's definition)";
+  if (t.has_reference()) s << "; error % = (x - reference) / |reference| * 100";
+  s << "; n/a where the value compared with is ~0.\n";
+  return s.str();
+}
+
+std::string format_markdown(const NonlinearTable& t) {
+  const auto c = cells(t);
+  std::ostringstream s;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    s << "|";
+    for (const auto& x : c[i]) s << " " << x << " |";
+    s << "\n";
+    if (i == 0) {
+      s << "|";
+      for (std::size_t k = 0; k < c[0].size(); ++k) s << (k < 2 ? "---|" : "---:|");
+      s << "\n";
+    }
+  }
+  s << "\n" << units_note(t) << ". diff % = (base - other) / |other| * 100";
+  if (t.has_reference()) s << "; error % against the converged reference";
+  s << ".\n";
+  return s.str();
+}
+
+std::string format_csv(const NonlinearTable& t) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "point,quantity";
+  for (std::size_t c = 0; c < t.solvers.size(); ++c) {
+    s << "," << t.solvers[c];
+    if (c > 0) s << "," << t.solvers[c] << "_diff_pct";
+    if (t.has_reference()) s << "," << t.solvers[c] << "_error_pct";
+  }
+  if (t.has_reference()) s << ",reference";
+  s << "\n";
+  auto num = [](double v) {
+    if (!std::isfinite(v)) return std::string();
+    std::ostringstream o;
+    o.precision(17);
+    o << v;
+    return o.str();
+  };
+  for (const auto& r : t.rows) {
+    s << r.angle << "," << r.quantity;
+    for (std::size_t c = 0; c < r.value.size(); ++c) {
+      s << "," << num(r.value[c]);
+      if (c > 0) s << "," << num(r.diff_pct[c]);
+      if (r.reference) s << "," << num(r.error_pct[c]);
+    }
+    if (r.reference) s << "," << num(*r.reference);
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::string format_json(const NonlinearTable& t) {
+  nlohmann::json j;
+  j["title"] = t.title;
+  j["analysis"] = t.analysis;
+  j["base"] = t.solvers.empty() ? "" : t.solvers[0];
+  j["rows"] = nlohmann::json::array();
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  for (const auto& r : t.rows) {
+    nlohmann::json row;
+    row["point"] = r.angle;
+    row["quantity"] = r.quantity;
+    for (std::size_t c = 0; c < r.value.size(); ++c) {
+      row[t.solvers[c]] = num(r.value[c]);
+      if (c > 0) row[t.solvers[c] + "_diff_pct"] = num(r.diff_pct[c]);
+      if (r.reference) row[t.solvers[c] + "_error_pct"] = num(r.error_pct[c]);
+    }
+    if (r.reference) row["reference"] = num(*r.reference);
+    j["rows"].push_back(row);
+  }
+  return j.dump(2) + "\n";
+}
+
+void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories) {
+  std::vector<Series> series;
+  for (std::size_t s = 0; s < histories.size(); ++s) {
+    const auto& h = histories[s];
+    for (std::size_t p = 0; p < h.record_angles.size(); ++p) {
+      Series x{h.solver + ": |u| at " + sig4(h.record_angles[p]) + " deg", h.t, {}, static_cast<int>(p), s > 0};
+      double largest = 0.0;
+      for (std::size_t k = 0; k < h.t.size(); ++k) {
+        x.y.push_back(std::hypot(h.ux[p][k], h.uy[p][k]));
+        largest = std::max(largest, x.y.back());
+      }
+      if (largest > 0.0) series.push_back(x);  // the pin does not move
+    }
+  }
+  plot_series(dir, "response_history", "Forced response of every solver: |u| of the recorded points", "t (s)",
+              "|displacement| (m)", series);
+  std::vector<Series> shapes;
+  for (std::size_t s = 0; s < histories.size(); ++s) {
+    const auto& h = histories[s];
+    for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
+      Series x{h.solver + ", t = " + sig4(h.snapshot_t[k]) + " s", {}, {}, static_cast<int>(k), s > 0};
+      for (std::size_t i = 0; i <= h.snapshot_x[k].size(); ++i) {
+        const std::size_t j = i % h.snapshot_x[k].size();
+        x.x.push_back(h.snapshot_x[k][j]);
+        x.y.push_back(h.snapshot_y[k][j]);
+      }
+      shapes.push_back(x);
+    }
+  }
+  if (!shapes.empty())
+    plot_series(dir, "response_shapes", "Deformed ring at several instants, every solver (dashed: not the base)",
+                "x (m)", "y (m)", shapes, false, false, true);
+}
+
+void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results) {
+  std::vector<Series> shapes;
+  for (std::size_t s = 0; s < results.size(); ++s) {
+    const auto& r = results[s];
+    if (r.node_x.empty()) continue;
+    Series x{r.solver, {}, {}, static_cast<int>(s), false};
+    for (std::size_t i = 0; i <= r.node_x.size(); ++i) {
+      x.x.push_back(r.node_x[i % r.node_x.size()]);
+      x.y.push_back(r.node_y[i % r.node_y.size()]);
+    }
+    shapes.push_back(x);
+  }
+  if (!shapes.empty())
+    plot_series(dir, "static_shapes", "Deformed ring under the static load, every solver", "x (m)", "y (m)", shapes,
+                false, false, true);
+}
+
+}  // namespace cmp
