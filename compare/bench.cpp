@@ -38,6 +38,8 @@ Timed timed_solve(const ring::Scene& s, const SolverEntry& solver, int modes) {
   return t;
 }
 
+}  // namespace
+
 std::string fmt_seconds(double s) {
   char b[32];
   if (s < 1e-3) std::snprintf(b, sizeof b, "%.1f us", s * 1e6);
@@ -46,7 +48,40 @@ std::string fmt_seconds(double s) {
   return b;
 }
 
-}  // namespace
+std::vector<std::string> curve_names(const BenchStudy& b) {
+  std::vector<std::string> curves;
+  for (const auto& p : b.points)
+    if (std::find(curves.begin(), curves.end(), p.curve) == curves.end()) curves.push_back(p.curve);
+  return curves;
+}
+
+std::string time_to_error_lines(const BenchStudy& b, double second_pct) {
+  std::ostringstream s;
+  char line[200];
+  for (const auto& c : curve_names(b)) {
+    const auto t1 = time_to_error(b, c, 1.0), t2 = time_to_error(b, c, second_pct);
+    std::snprintf(line, sizeof line, "  %-24s 1 %%: %-12s %g %%: %s\n", c.c_str(),
+                  t1 ? fmt_seconds(*t1).c_str() : "not reached", second_pct,
+                  t2 ? fmt_seconds(*t2).c_str() : "not reached");
+    s << line;
+  }
+  return s.str();
+}
+
+void plot_pareto(const std::string& dir, const std::string& name, const std::string& title, const std::string& ylabel,
+                 const BenchStudy& b) {
+  std::vector<Series> plot;
+  for (const auto& c : curve_names(b)) {
+    Series x{c, {}, {}};
+    for (const auto& p : b.points)
+      if (p.curve == c) {
+        x.x.push_back(p.seconds);
+        x.y.push_back(p.max_error);
+      }
+    plot.push_back(x);
+  }
+  plot_series(dir, name, title, "solver time, median (s)", ylabel, plot, true, true);
+}
 
 BenchStudy bench(const ring::Scene& scene, const References& references, std::ostream* progress) {
   BenchStudy b;
@@ -117,16 +152,8 @@ std::string bench_text(const BenchStudy& b) {
                   fmt_seconds(p.seconds).c_str(), p.repeats, p.max_error, p.mean_error);
     s << line;
   }
-  std::vector<std::string> curves;
-  for (const auto& p : b.points)
-    if (std::find(curves.begin(), curves.end(), p.curve) == curves.end()) curves.push_back(p.curve);
-  s << "\nTime to reach a max error of 1 % and of 0.01 % on the " << b.modes << " modes:\n";
-  for (const auto& c : curves) {
-    const auto t1 = time_to_error(b, c, 1.0), t2 = time_to_error(b, c, 0.01);
-    std::snprintf(line, sizeof line, "  %-24s 1 %%: %-12s 0.01 %%: %s\n", c.c_str(),
-                  t1 ? fmt_seconds(*t1).c_str() : "not reached", t2 ? fmt_seconds(*t2).c_str() : "not reached");
-    s << line;
-  }
+  s << "\nTime to reach a max error of 1 % and of 0.01 % on the " << b.modes << " modes:\n"
+    << time_to_error_lines(b, 0.01);
   // The paper's claim: multibody at n = 40 takes about 1/3 of the FE time.
   const BenchPoint *mb40 = nullptr, *fe40 = nullptr;
   for (const auto& p : b.points) {
@@ -152,23 +179,12 @@ void write_bench(const std::string& dir, const BenchStudy& b) {
   std::ostringstream csv;
   csv.precision(12);
   csv << "curve,size,unknowns,seconds_median,repeats,max_error_pct,mean_error_pct\n";
-  std::map<std::string, Series> curves;
-  std::vector<std::string> order;
-  for (const auto& p : b.points) {
+  for (const auto& p : b.points)
     csv << '"' << p.curve << "\"," << p.size << "," << p.unknowns << "," << p.seconds << "," << p.repeats << ","
         << p.max_error << "," << p.mean_error << "\n";
-    if (!curves.count(p.curve)) {
-      order.push_back(p.curve);
-      curves[p.curve].name = p.curve;
-    }
-    curves[p.curve].x.push_back(p.seconds);
-    curves[p.curve].y.push_back(p.max_error);
-  }
   write_file(dir + "/bench.csv", csv.str());
-  std::vector<Series> plot;
-  for (const auto& c : order) plot.push_back(curves[c]);
-  plot_series(dir, "bench", "Run time against error, " + std::to_string(b.modes) + " lowest modes (lower left is better)",
-              "solver time, median (s)", "max |error| against the reference (%)", plot, true, true);
+  plot_pareto(dir, "bench", "Run time against error, " + std::to_string(b.modes) + " lowest modes (lower left is better)",
+              "max |error| against the reference (%)", b);
   write_file(dir + "/bench.txt", bench_text(b));
 }
 

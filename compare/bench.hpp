@@ -41,6 +41,16 @@ BenchStudy bench(const ring::Scene& scene, const References& references, std::os
 std::optional<double> time_to_error(const BenchStudy& b, const std::string& curve, double error_pct);
 
 std::string bench_text(const BenchStudy& b);
+
+/// A duration for people: "12.3 us", "4.56 ms", "7.89 s".
+std::string fmt_seconds(double s);
+/// The curve names of the study, in order of first appearance.
+std::vector<std::string> curve_names(const BenchStudy& b);
+/// The "time to reach 1 % and <second> %" lines of every curve.
+std::string time_to_error_lines(const BenchStudy& b, double second_pct);
+/// The Pareto figure NAME.png: max error against median time, one curve each.
+void plot_pareto(const std::string& dir, const std::string& name, const std::string& title, const std::string& ylabel,
+                 const BenchStudy& b);
 void write_bench(const std::string& dir, const BenchStudy& b);
 
 }  // namespace cmp

@@ -46,14 +46,6 @@ bool nodes_fit(const ring::Scene& s, int n) {
   return true;
 }
 
-std::string fmt_seconds(double s) {
-  char b[32];
-  if (s < 1e-3) std::snprintf(b, sizeof b, "%.1f us", s * 1e6);
-  else if (s < 1.0) std::snprintf(b, sizeof b, "%.2f ms", s * 1e3);
-  else std::snprintf(b, sizeof b, "%.2f s", s);
-  return b;
-}
-
 template <class Run>
 NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, double angle,
                      const std::vector<std::string>& solvers, Run run, std::ostream* progress) {
@@ -143,16 +135,7 @@ std::string bench_nonlinear_text(const NonlinearBench& b) {
                   p.repeats, p.max_error);
     s << line;
   }
-  std::vector<std::string> curves;
-  for (const auto& p : st.points)
-    if (std::find(curves.begin(), curves.end(), p.curve) == curves.end()) curves.push_back(p.curve);
-  s << "\nTime to reach an error of 1 % and of 0.1 %:\n";
-  for (const auto& c : curves) {
-    const auto t1 = time_to_error(st, c, 1.0), t2 = time_to_error(st, c, 0.1);
-    std::snprintf(line, sizeof line, "  %-12s 1 %%: %-12s 0.1 %%: %s\n", c.c_str(),
-                  t1 ? fmt_seconds(*t1).c_str() : "not reached", t2 ? fmt_seconds(*t2).c_str() : "not reached");
-    s << line;
-  }
+  s << "\nTime to reach an error of 1 % and of 0.1 %:\n" << time_to_error_lines(st, 0.1);
   const BenchPoint *m40 = nullptr, *f40 = nullptr;
   for (const auto& p : st.points) {
     if (p.curve == st.method_curve && p.size == 40) m40 = &p;
@@ -178,24 +161,13 @@ void write_bench_nonlinear(const std::string& dir, const NonlinearBench& b) {
   std::ostringstream csv;
   csv.precision(12);
   csv << "analysis,solver,size,seconds_median,repeats,error_pct,reference_m\n";
-  std::map<std::string, Series> curves;
-  std::vector<std::string> order;
-  for (const auto& p : b.study.points) {
+  for (const auto& p : b.study.points)
     csv << b.analysis << "," << p.curve << "," << p.size << "," << p.seconds << "," << p.repeats << "," << p.max_error
         << "," << b.reference_value << "\n";
-    if (!curves.count(p.curve)) {
-      order.push_back(p.curve);
-      curves[p.curve].name = p.curve;
-    }
-    curves[p.curve].x.push_back(p.seconds);
-    curves[p.curve].y.push_back(p.max_error);
-  }
   const std::string name = "bench_" + b.analysis;
   write_file(dir + "/" + name + ".csv", csv.str());
-  std::vector<Series> plot;
-  for (const auto& c : order) plot.push_back(curves[c]);
-  plot_series(dir, name, "Run time against the error of the loaded point (" + b.analysis + ", lower left is better)",
-              "solver time, median (s)", "|error| against the reference (%)", plot, true, true);
+  plot_pareto(dir, name, "Run time against the error of the loaded point (" + b.analysis + ", lower left is better)",
+              "|error| against the reference (%)", b.study);
   write_file(dir + "/" + name + ".txt", bench_nonlinear_text(b));
 }
 

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/grid.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
 #include "compare/registry.hpp"
@@ -103,8 +104,8 @@ std::string number_or_na(double v, bool pct) {
   return b;
 }
 
-std::vector<std::vector<std::string>> cells(const NonlinearTable& t) {
-  std::vector<std::vector<std::string>> out;
+Cells cells(const NonlinearTable& t) {
+  Cells out;
   std::vector<std::string> head = {"point deg", "quantity"};
   for (std::size_t c = 0; c < t.solvers.size(); ++c) {
     head.push_back(t.solvers[c]);
@@ -197,18 +198,11 @@ NonlinearTable static_table(const std::string& title, const std::vector<ring::St
 }
 
 std::string format_text(const NonlinearTable& t) {
-  const auto c = cells(t);
-  std::vector<std::size_t> w(c[0].size(), 0);
-  for (const auto& r : c)
-    for (std::size_t k = 0; k < r.size(); ++k) w[k] = std::max(w[k], r[k].size());
   std::ostringstream s;
   if (!t.title.empty()) s << t.title << "\n";
   s << (t.analysis == "response" ? "Forced response" : "Nonlinear statics") << " at the recorded points, "
-    << units_note(t) << "\n\n";
-  for (const auto& r : c) {
-    for (std::size_t k = 0; k < r.size(); ++k) s << (k ? "  " : "") << std::string(w[k] - r[k].size(), ' ') << r[k];
-    s << "\n";
-  }
+    << units_note(t) << "\n\n"
+    << text_grid(cells(t));
   s << "\ndiff % = (" << (t.solvers.empty() ? "base" : t.solvers[0])
     << " - other) / |other| * 100 (the paper's definition)";
   if (t.has_reference()) s << "; error % = (x - reference) / |reference| * 100";
@@ -217,19 +211,8 @@ std::string format_text(const NonlinearTable& t) {
 }
 
 std::string format_markdown(const NonlinearTable& t) {
-  const auto c = cells(t);
   std::ostringstream s;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    s << "|";
-    for (const auto& x : c[i]) s << " " << x << " |";
-    s << "\n";
-    if (i == 0) {
-      s << "|";
-      for (std::size_t k = 0; k < c[0].size(); ++k) s << (k < 2 ? "---|" : "---:|");
-      s << "\n";
-    }
-  }
-  s << "\n" << units_note(t) << ". diff % = (base - other) / |other| * 100";
+  s << markdown_grid(cells(t), 2) << "\n" << units_note(t) << ". diff % = (base - other) / |other| * 100";
   if (t.has_reference()) s << "; error % against the converged reference";
   s << ".\n";
   return s.str();

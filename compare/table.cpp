@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/grid.hpp"
 #include "compare/output.hpp"
 #include "compare/registry.hpp"
 #include "ring/sampling.hpp"
@@ -152,40 +153,15 @@ std::optional<double> paper_value(const ring::PaperRow& row, const std::string& 
 std::vector<ring::PaperRow> paper_table() { return ring::parse_paper_table(ringvib_table1_csv, "compare/data/table1.csv"); }
 
 std::string format_text(const Table& t) {
-  const auto c = cells(t, true);
-  std::vector<std::size_t> w(c[0].size(), 0);
-  for (const auto& r : c)
-    for (std::size_t k = 0; k < r.size(); ++k) w[k] = std::max(w[k], r[k].size());
   std::ostringstream s;
   if (!t.title.empty()) s << t.title << "\n\n";
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    for (std::size_t k = 0; k < c[i].size(); ++k)
-      s << (k ? "  " : "") << std::string(w[k] - c[i][k].size(), ' ') << c[i][k];
-    s << "\n";
-    if (i == 0) {
-      std::size_t total = 0;
-      for (std::size_t k = 0; k < w.size(); ++k) total += w[k] + (k ? 2 : 0);
-      s << std::string(total, '-') << "\n";
-    }
-  }
-  s << "\n" << footnotes(t);
+  s << text_grid(cells(t, true)) << "\n" << footnotes(t);
   return s.str();
 }
 
 std::string format_markdown(const Table& t) {
-  const auto c = cells(t, true);
   std::ostringstream s;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    s << "|";
-    for (const auto& x : c[i]) s << " " << x << " |";
-    s << "\n";
-    if (i == 0) {
-      s << "|";
-      for (std::size_t k = 0; k < c[0].size(); ++k) s << "---:|";
-      s << "\n";
-    }
-  }
-  s << "\n" << footnotes(t);
+  s << markdown_grid(cells(t, true)) << "\n" << footnotes(t);
   return s.str();
 }
 

@@ -76,7 +76,7 @@ namespace fem {
 /// Natural frequencies and mode shapes of the ring (see the file comment for the model).
 /// \param spec    ring, section, material, supports (pin/roller must fall on vertices:
 ///                the pin is vertex 0; the roller must satisfy ring::on_node).
-/// \param options elements >= 4, degree 2..30; reference = true refines p (then h) until
+/// \param options elements >= 4, degree 2..12; reference = true refines p (then h) until
 ///                the `count` frequencies change by less than options.tolerance (relative,
 ///                > 0) between successive refinements and reports error_estimate.
 /// \param count   elastic modes wanted, 1 <= count <= unknowns - rigid modes.
@@ -86,7 +86,7 @@ namespace fem {
 ///         unknowns after constraints); seconds; max_residual; error_estimate.
 /// \throws std::invalid_argument for options or count that can never work,
 ///         ring::NumericalError for a failed factorization, eigen-solve or refinement.
-/// Cost: O(N (p+1)^2) assembly and, for N > 400, ARPACK with O(N p) work per
+/// Cost: O(N (p+1)^2) assembly and, for N > 150, ARPACK with O(N p) work per
 /// Lanczos step after an O(N p^2) banded factorization; O(N^3) dense below.
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::FemOptions& options,
                                 int count);

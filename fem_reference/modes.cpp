@@ -1,0 +1,171 @@
+// The FE modes driver: input validation, one discretization (with the inextensible
+// extrapolation), and the p/h refinement to the converged reference (modes.hpp).
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+namespace {
+
+void validate(const ring::RingSpec& spec, const ring::FemOptions& o, int count) {
+  auto need = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("fem: " + what);
+  };
+  need(spec.radius > 0 && std::isfinite(spec.radius), "ring.radius must be > 0");
+  need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
+  need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
+  need(o.elements >= 4, "fem.elements (=" + std::to_string(o.elements) + ") must be >= 4");
+  need(o.degree >= 2 && o.degree <= 12, "fem.degree (=" + std::to_string(o.degree) + ") must be in 2..12");
+  need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
+  need(count >= 1, "count (=" + std::to_string(count) + ") must be >= 1");
+  need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
+  if (spec.supports.roller) {
+    need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
+             ring::wrap_degrees(*spec.supports.pin - *spec.supports.roller) > 1e-9,
+         "supports.roller must differ from supports.pin");
+    need(ring::on_node(*spec.supports.roller, *spec.supports.pin, o.elements),
+         "supports.roller (=" + std::to_string(*spec.supports.roller) +
+             ") must fall on an FE vertex: pin + k * 360 / fem.elements");
+  }
+}
+
+Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int count, bool keep_full,
+                  bool refine = true) {
+  const int rigid = spec.supports.rigid_modes();
+  auto run = [&](double EA, std::vector<double>& lambda, double& max_res, ring::ModalResult& r,
+                 std::vector<Vector<double>>* full) {
+    setup.EA = EA;
+    const RingModel model(spec, setup);
+    const unsigned int wanted = static_cast<unsigned int>(count + rigid);
+    if (wanted > model.n_free())
+      throw std::invalid_argument("fem: count (=" + std::to_string(count) + ") must be <= unknowns - rigid modes (=" +
+                                  std::to_string(static_cast<int>(model.n_free()) - rigid) + ") for " +
+                                  std::to_string(setup.cells()) + " cells of degree " + std::to_string(setup.degree));
+    EigenPairs pairs;
+    try {
+      pairs = model.solve(wanted, refine);
+    } catch (const ring::NumericalError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw ring::NumericalError(std::string("fem: eigen-solver failed: ") + e.what());
+    }
+    // Elastic eigenvalues must be positive (a negative one would mean a non-coercive
+    // penalty); rigid ones are zero up to round-off (~eps lambda_max, either sign) and,
+    // on the circle, the approximation of rigid translations by polar fields.
+    for (unsigned int i = 0; i < wanted; ++i)
+      if (!std::isfinite(pairs.lambda[i]) || (static_cast<int>(i) >= rigid && !(pairs.lambda[i] > 0)))
+        throw ring::NumericalError("fem: eigenvalue " + std::to_string(pairs.lambda[i]) + " of mode " +
+                                   std::to_string(i + 1) + " is not positive and finite");
+    if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > 1e-2 * pairs.lambda[rigid])
+      throw ring::NumericalError("fem: the mesh is too coarse to represent the " + std::to_string(rigid) +
+                                 " rigid modes (lowest elastic/rigid eigenvalue ratio < 100)");
+    lambda.assign(pairs.lambda.begin() + rigid, pairs.lambda.end());
+    max_res = 0.0;
+    r.shapes.clear();
+    for (unsigned int i = rigid; i < wanted; ++i) {
+      max_res = std::max(max_res, pairs.residual[i]);
+      const auto f = model.expand(pairs.q[i]);
+      r.shapes.push_back(model.sample(f));
+      if (full) full->push_back(f);
+    }
+    r.unknowns = model.n_free();
+  };
+  Solved out;
+  auto& r = out.result;
+  std::vector<double> lambda;
+  double max_res = 0.0;
+  if (extensible) {
+    run(spec.EA(), lambda, max_res, r, keep_full ? &out.full : nullptr);
+  } else {
+    // omega^2(beta) = omega^2_inf - c / beta + O(beta^-2): extrapolate from beta, 2 beta.
+    const double base = kInextensibleBeta * spec.EI() / (spec.radius * spec.radius);
+    std::vector<double> lambda1;
+    double res1 = 0.0;
+    run(base, lambda1, res1, r, nullptr);
+    run(2.0 * base, lambda, max_res, r, keep_full ? &out.full : nullptr);
+    for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = 2.0 * lambda[i] - lambda1[i];
+    max_res = std::max(max_res, res1);
+  }
+  for (double l : lambda) {
+    if (!(l > 0)) throw ring::NumericalError("fem: non-positive elastic eigenvalue " + std::to_string(l));
+    r.omega.push_back(std::sqrt(l));
+  }
+  r.max_residual = max_res;
+  r.rigid_modes = spec.supports.rigid_modes();
+  return out;
+}
+
+}  // namespace
+
+Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, bool keep_full) {
+  validate(spec, o, count);
+  const auto t0 = std::chrono::steady_clock::now();
+  Setup setup;
+  setup.elements = o.elements;
+  setup.degree = o.degree;
+  setup.geometry = o.geometry;
+  setup.rotary_inertia = o.rotary_inertia;
+  Solved s = solve_once(spec, setup, o.extensible, count, keep_full && !o.reference, !o.reference || !o.extensible);
+  int refinements = 0;
+  if (o.reference) {
+    // p-refinement (exponential convergence on these smooth, piecewise analytic modes),
+    // h-refinement once p reaches kReferenceMaxDegree. Stop when the largest relative
+    // change of the requested frequencies is below the tolerance.
+    double previous_change = 0.0;
+    bool refined = true;
+    for (;;) {
+      if (++refinements > kReferenceMaxSteps)
+        throw ring::NumericalError("fem: reference not converged after " + std::to_string(kReferenceMaxSteps) +
+                                   " refinements (degree " + std::to_string(setup.degree) + ", cells " +
+                                   std::to_string(setup.cells()) + ")");
+      if (setup.degree < kReferenceMaxDegree)
+        ++setup.degree;
+      else
+        setup.subdivisions *= 2;
+      // Raw pairs carry ~1e-7 round-off; refine them only once the changes get near it.
+      // (The inextensible penalty makes raw pairs far noisier: always refine them.)
+      refined = !o.extensible || (refinements > 1 && previous_change < kRefineBelowChange);
+      Solved next = solve_once(spec, setup, o.extensible, count, false, refined);
+      double change = 0.0;
+      for (int i = 0; i < count; ++i)
+        change = std::max(change, std::abs(next.result.omega[i] - s.result.omega[i]) / next.result.omega[i]);
+      s = std::move(next);
+      if (change < o.tolerance) {
+        // The change is the error of the previous solution; with a contraction
+        // r = change / previous_change per step the current one has about change * r / (1 - r).
+        const double ratio = previous_change > 0 ? change / previous_change : 1.0;
+        // Not below the refined solve's round-off: the free ring's k = 2..13 match the
+        // closed form to ~1e-12, not better.
+        s.result.error_estimate = std::max(kRoundOffFloor, ratio < 0.5 ? change * ratio / (1.0 - ratio) : change);
+        break;
+      }
+      previous_change = change;
+    }
+    if (keep_full || !refined) {
+      const double estimate = s.result.error_estimate;
+      s = solve_once(spec, setup, o.extensible, count, keep_full);
+      s.result.error_estimate = estimate;
+    }
+  }
+  auto& r = s.result;
+  r.solver = "fem";
+  r.model["elements"] = static_cast<long long>(setup.elements);
+  r.model["cells"] = static_cast<long long>(setup.cells());
+  r.model["degree"] = static_cast<long long>(setup.degree);
+  r.model["geometry"] = ring::to_string(setup.geometry);
+  r.model["extensible"] = o.extensible;
+  r.model["rotary_inertia"] = o.rotary_inertia;
+  r.model["reference"] = o.reference;
+  r.model["refinements"] = static_cast<long long>(refinements);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  s.result.model["subdivisions"] = static_cast<long long>(setup.subdivisions);
+  return s;
+}
+
+}  // namespace fem::detail
+
+namespace fem {
+
+ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count) {
+  return detail::run(spec, options, count, false).result;
+}
+
+}  // namespace fem

@@ -1,0 +1,343 @@
+// The linear ring model: mesh, constraints, reduced system, assembly, operator
+// application, expansion and sampling (ring_model.hpp).
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+
+RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
+    : spec_(spec),
+      setup_(setup),
+      theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0),
+      h_(2.0 * kPi / setup.cells()),
+      sigma_(-std::pow(spec.bending_frequency_scale(), 2)),
+      fe_(make_fe(setup)),
+      dof_handler_(triangulation_) {
+  make_grid();
+  setup_constraints();
+  setup_reduced_system();
+  assemble();
+}
+
+void RingModel::make_grid() {
+  GridGenerator::subdivided_hyper_cube(triangulation_, setup_.cells(), theta0_, theta0_ + 2.0 * kPi);
+  dof_handler_.distribute_dofs(fe_);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) cells_.push_back(cell);
+  std::sort(cells_.begin(), cells_.end(),
+            [](const auto& a, const auto& b) { return a->center()[0] < b->center()[0]; });
+  const double chord_angle = 2.0 * kPi / setup_.elements;
+  for (int j = 0; j < setup_.elements; ++j) {
+    const double a0 = theta0_ + j * chord_angle, a1 = a0 + chord_angle;
+    const double tx = std::cos(a1) - std::cos(a0), ty = std::sin(a1) - std::sin(a0);
+    const double len = std::hypot(tx, ty);
+    chord_t_.push_back({tx / len, ty / len});
+  }
+  // Reference tables: every cell is the same affine image of [0, 1] in theta, so one
+  // FEValues evaluation serves all cells. Gauss with p+2 points integrates the
+  // polynomial integrands (degree <= 2p+2) exactly.
+  const QGauss<1> gauss(setup_.degree + 2);
+  std::vector<Point<1>> points = gauss.get_points();
+  points.push_back(Point<1>(0.0));
+  points.push_back(Point<1>(1.0));
+  std::vector<double> weights = gauss.get_weights();
+  weights.push_back(0.0);
+  weights.push_back(0.0);
+  const Quadrature<1> table_points(points, weights);
+  FEValues<1> fev(fe_, table_points, update_values | update_gradients | update_hessians | update_JxW_values);
+  fev.reinit(cells_[0]);
+  const unsigned int dpc = fe_.n_dofs_per_cell();
+  nq_ = gauss.size();
+  for (unsigned int q = 0; q < table_points.size(); ++q) {
+    ds_.push_back(fev.JxW(q) * ds_dtheta());
+    for (unsigned int i = 0; i < dpc; ++i) {
+      v0_.push_back(fev.shape_value(i, q));
+      v1_.push_back(fev.shape_grad(i, q)[0]);
+      v2_.push_back(fev.shape_hessian(i, q)[0][0]);
+    }
+  }
+  for (unsigned int i = 0; i < dpc; ++i) component_.push_back(fe_.system_to_component_index(i).first);
+  // sigma = 2 (q+1)(q+2) > (q+1)^2, the trace-inverse constant for kappa of degree
+  // q = p (u' on the circle), makes the form coercive; h = arc length of a cell.
+  const double q_kappa = setup_.degree;
+  penalty_ = 2.0 * (q_kappa + 1) * (q_kappa + 2) * spec_.EI() / (ds_dtheta() * h_);
+}
+
+std::array<types::global_dof_index, 2> RingModel::end_dofs(unsigned int cell, double xi) const {
+  std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+  cells_[cell]->get_dof_indices(dofs);
+  std::array<types::global_dof_index, 2> out{numbers::invalid_dof_index, numbers::invalid_dof_index};
+  const auto& points = fe_.get_unit_support_points();
+  for (unsigned int i = 0; i < dofs.size(); ++i)
+    if (std::abs(points[i][0] - xi) < 1e-12) out[fe_.system_to_component_index(i).first] = dofs[i];
+  return out;
+}
+
+void RingModel::setup_constraints() {
+  const unsigned int n = setup_.cells();
+  // Periodic closure: the vertex at theta0 + 2 pi is the vertex at theta0. The field
+  // components are the same there (polar basis at the same angle, or Cartesian).
+  const auto first = end_dofs(0, 0.0), last = end_dofs(n - 1, 1.0);
+  for (unsigned int c = 0; c < 2; ++c) {
+    constraints_.add_line(last[c]);
+    constraints_.add_entry(last[c], first[c], 1.0);
+  }
+  if (spec_.supports.pin) {
+    for (unsigned int c = 0; c < 2; ++c) {
+      constraints_.add_line(first[c]);  // both components zero at vertex 0
+    }
+    if (spec_.supports.roller) {
+      // The roller vertex stays on the line pin-roller: the displacement component
+      // along e, the unit normal of that line, is zero.
+      const double steps = ring::wrap_degrees(*spec_.supports.roller - *spec_.supports.pin) * n / 360.0;
+      const unsigned int k = static_cast<unsigned int>(std::lround(steps)) % n;
+      const double a = theta0_ + k * h_;
+      const std::array<double, 2> d{std::cos(a) - std::cos(theta0_), std::sin(a) - std::sin(theta0_)};
+      const double len = std::hypot(d[0], d[1]);
+      const std::array<double, 2> e{-d[1] / len, d[0] / len};
+      // coefficient of each field component in e.U at the roller
+      std::array<double, 2> coef;
+      if (setup_.geometry == Geometry::curved)
+        coef = {e[0] * -std::sin(a) + e[1] * std::cos(a), e[0] * std::cos(a) + e[1] * std::sin(a)};
+      else
+        coef = e;
+      const auto dofs = end_dofs(k, 0.0);
+      const unsigned int m = std::abs(coef[0]) >= std::abs(coef[1]) ? 0 : 1;
+      constraints_.add_line(dofs[m]);
+      if (std::abs(coef[1 - m]) > 1e-14 * std::abs(coef[m]))
+        constraints_.add_entry(dofs[m], dofs[1 - m], -coef[1 - m] / coef[m]);
+    }
+  }
+  constraints_.close();
+}
+
+void RingModel::setup_reduced_system() {
+  const auto n_dofs = dof_handler_.n_dofs();
+  free_.assign(n_dofs, -1);
+  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+    if (!constraints_.is_constrained(i)) free_[i] = n_free_++;
+  expansion_.resize(n_dofs);
+  for (types::global_dof_index i = 0; i < n_dofs; ++i) {
+    if (free_[i] >= 0) {
+      expansion_[i] = {{static_cast<unsigned int>(free_[i]), 1.0}};
+    } else if (const auto* entries = constraints_.get_constraint_entries(i)) {
+      for (const auto& [j, w] : *entries) expansion_[i].emplace_back(free_[j], w);
+    }
+  }
+  // Couplings: each cell with itself, and the two cells beside every vertex (the
+  // interior-penalty terms).
+  DynamicSparsityPattern dsp(n_free_);
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  std::vector<types::global_dof_index> a(dpc), b(dpc);
+  for (unsigned int v = 0; v < n; ++v) {
+    cells_[(v + n - 1) % n]->get_dof_indices(a);
+    cells_[v]->get_dof_indices(b);
+    std::vector<unsigned int> rows;
+    for (const auto* list : {&a, &b})
+      for (const auto i : *list)
+        for (const auto& [f, w] : expansion_[i]) rows.push_back(f);
+    for (const auto r : rows)
+      for (const auto c : rows) dsp.add(r, c);
+  }
+  sparsity_.copy_from(dsp);
+  K_.reinit(sparsity_);
+  M_.reinit(sparsity_);
+}
+
+double RingModel::ds_dtheta() const {
+  // Circle: ds = R dtheta. Polygon: the n-gon of side 2 pi R / n (perimeter = the
+  // circumference, as the paper's SAP5 run and its multibody chain), so a chord of
+  // angle 2 pi / n has length R * 2 pi / n as well.
+  return spec_.radius;
+}
+
+Kinematics RingModel::kinematics(unsigned int cell, unsigned int i, unsigned int q) const {
+  const unsigned int k = q * fe_.n_dofs_per_cell() + i, c = component_[i];
+  const double v = v0_[k], v1 = v1_[k], v2 = v2_[k];
+  Kinematics out;
+  const double R = spec_.radius;
+  if (setup_.geometry == Geometry::curved) {
+    if (c == 0) {  // u, tangential
+      out.d[0] = v;
+      out.eps = v1 / R;
+      out.kappa = v1 / (R * R);
+      out.phi = v / R;
+    } else {  // w, radial
+      out.d[1] = v;
+      out.eps = v / R;
+      out.kappa = -v2 / (R * R);
+      out.phi = -v1 / R;
+    }
+    return out;
+  }
+  // Polygon: chord j from vertex j to j+1, unit tangent t, outward normal n = t turned
+  // clockwise; theta is proportional to arc length along the chord.
+  const auto& t = chord_t_[cell / setup_.subdivisions];
+  const std::array<double, 2> n{t[1], -t[0]};
+  const double J = ds_dtheta();
+  out.d[c] = v;
+  out.eps = t[c] * v1 / J;
+  out.kappa = -n[c] * v2 / (J * J);
+  out.phi = -n[c] * v1 / J;
+  return out;
+}
+
+void RingModel::vertex_terms(unsigned int v, std::vector<double>& jump, std::vector<double>& mean) const {
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  const unsigned int left = (v + n - 1) % n;
+  const double EI = spec_.EI();
+  for (unsigned int i = 0; i < dpc; ++i) {
+    const auto l = kinematics(left, i, nq_ + 1);  // right end of the left cell
+    jump[i] = -l.phi;
+    mean[i] = 0.5 * EI * l.kappa;
+    const auto r = kinematics(v, i, nq_);  // left end of the right cell
+    jump[dpc + i] = r.phi;
+    mean[dpc + i] = 0.5 * EI * r.kappa;
+  }
+}
+
+void RingModel::add_local(const FullMatrix<double>& local, const std::vector<types::global_dof_index>& dofs,
+                          SparseMatrix<double>& global) const {
+  for (unsigned int i = 0; i < dofs.size(); ++i)
+    for (const auto& [fi, wi] : expansion_[dofs[i]])
+      for (unsigned int j = 0; j < dofs.size(); ++j) {
+        const double lij = local(i, j);
+        if (lij == 0.0) continue;
+        for (const auto& [fj, wj] : expansion_[dofs[j]]) global.add(fi, fj, wi * wj * lij);
+      }
+}
+
+void RingModel::assemble() {
+  const double EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
+  const double rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  FullMatrix<double> k_cell(dpc, dpc), m_cell(dpc, dpc);
+  std::vector<types::global_dof_index> dofs(dpc);
+  std::vector<Kinematics> kin(dpc);
+  for (unsigned int cell = 0; cell < n; ++cell) {
+    k_cell = 0;
+    m_cell = 0;
+    for (unsigned int q = 0; q < nq_; ++q) {
+      for (unsigned int i = 0; i < dpc; ++i) kin[i] = kinematics(cell, i, q);
+      for (unsigned int i = 0; i < dpc; ++i)
+        for (unsigned int j = 0; j < dpc; ++j) {
+          k_cell(i, j) += (EA * kin[i].eps * kin[j].eps + EI * kin[i].kappa * kin[j].kappa) * ds_[q];
+          m_cell(i, j) += (rhoA * (kin[i].d[0] * kin[j].d[0] + kin[i].d[1] * kin[j].d[1]) +
+                           rhoI * kin[i].phi * kin[j].phi) * ds_[q];
+        }
+    }
+    cells_[cell]->get_dof_indices(dofs);
+    add_local(k_cell, dofs, K_);
+    add_local(m_cell, dofs, M_);
+  }
+  // Symmetric interior penalty on the rotation jump at every vertex.
+  std::vector<double> jump(2 * dpc), mean(2 * dpc);
+  std::vector<types::global_dof_index> pair_dofs(2 * dpc), right(dpc);
+  FullMatrix<double> k_vertex(2 * dpc, 2 * dpc);
+  for (unsigned int v = 0; v < n; ++v) {
+    vertex_terms(v, jump, mean);
+    for (unsigned int i = 0; i < 2 * dpc; ++i)
+      for (unsigned int j = 0; j < 2 * dpc; ++j)
+        k_vertex(i, j) = mean[i] * jump[j] + mean[j] * jump[i] + penalty_ * jump[i] * jump[j];
+    cells_[(v + n - 1) % n]->get_dof_indices(dofs);
+    cells_[v]->get_dof_indices(right);
+    std::copy(dofs.begin(), dofs.end(), pair_dofs.begin());
+    std::copy(right.begin(), right.end(), pair_dofs.begin() + dpc);
+    add_local(k_vertex, pair_dofs, K_);
+  }
+}
+
+void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const {
+  const Vector<double> full = expand(q);
+  const Real EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
+  const Real rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  kq.assign(n_free_, 0.0L);
+  mq.assign(n_free_, 0.0L);
+  std::vector<types::global_dof_index> dofs(dpc), right(dpc);
+  std::vector<Real> lk(2 * dpc), lm(dpc), x(2 * dpc);
+  std::vector<Kinematics> kin(dpc);
+  auto scatter = [&](const std::vector<types::global_dof_index>& d, unsigned int offset, unsigned int count,
+                     const std::vector<Real>& local, std::vector<Real>& global) {
+    for (unsigned int i = 0; i < count; ++i)
+      for (const auto& [f, w] : expansion_[d[i]]) global[f] += w * local[offset + i];
+  };
+  for (unsigned int cell = 0; cell < n; ++cell) {
+    cells_[cell]->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dpc; ++i) x[i] = full[dofs[i]];
+    std::fill(lk.begin(), lk.end(), 0.0L);
+    std::fill(lm.begin(), lm.end(), 0.0L);
+    for (unsigned int qp = 0; qp < nq_; ++qp) {
+      Real eps = 0, kappa = 0, d0 = 0, d1 = 0, phi = 0;
+      for (unsigned int i = 0; i < dpc; ++i) {
+        kin[i] = kinematics(cell, i, qp);
+        eps += x[i] * kin[i].eps;
+        kappa += x[i] * kin[i].kappa;
+        d0 += x[i] * kin[i].d[0];
+        d1 += x[i] * kin[i].d[1];
+        phi += x[i] * kin[i].phi;
+      }
+      const Real ds = ds_[qp];
+      for (unsigned int i = 0; i < dpc; ++i) {
+        lk[i] += ds * (EA * eps * kin[i].eps + EI * kappa * kin[i].kappa);
+        lm[i] += ds * (rhoA * (d0 * kin[i].d[0] + d1 * kin[i].d[1]) + rhoI * phi * kin[i].phi);
+      }
+    }
+    scatter(dofs, 0, dpc, lk, kq);
+    scatter(dofs, 0, dpc, lm, mq);
+  }
+  std::vector<double> jump(2 * dpc), mean(2 * dpc);
+  for (unsigned int v = 0; v < n; ++v) {
+    vertex_terms(v, jump, mean);
+    cells_[(v + n - 1) % n]->get_dof_indices(dofs);
+    cells_[v]->get_dof_indices(right);
+    for (unsigned int i = 0; i < dpc; ++i) {
+      x[i] = full[dofs[i]];
+      x[dpc + i] = full[right[i]];
+    }
+    Real J = 0, M = 0;
+    for (unsigned int a = 0; a < 2 * dpc; ++a) {
+      J += x[a] * jump[a];
+      M += x[a] * mean[a];
+    }
+    for (unsigned int a = 0; a < 2 * dpc; ++a) lk[a] = mean[a] * J + jump[a] * M + penalty_ * J * jump[a];
+    scatter(dofs, 0, dpc, lk, kq);
+    scatter(right, dpc, dpc, lk, kq);
+  }
+}
+
+Vector<double> RingModel::expand(const Vector<double>& q) const {
+  Vector<double> full(dof_handler_.n_dofs());
+  for (types::global_dof_index i = 0; i < full.size(); ++i)
+    if (free_[i] >= 0) full[i] = q[free_[i]];
+  constraints_.distribute(full);
+  return full;
+}
+
+ring::ModeShape RingModel::sample(const Vector<double>& full) const {
+  ring::ModeShape shape;
+  shape.radial.resize(ring::kStations);
+  shape.tangential.resize(ring::kStations);
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  std::vector<types::global_dof_index> dofs(dpc);
+  for (int s = 0; s < ring::kStations; ++s) {
+    const double a = ring::station_angle(s) * kPi / 180.0;
+    double t = std::fmod(a - theta0_, 2.0 * kPi);
+    if (t < 0) t += 2.0 * kPi;
+    const unsigned int cell = std::min(n - 1, static_cast<unsigned int>(t / h_));
+    const double xi = std::clamp(t / h_ - cell, 0.0, 1.0);
+    cells_[cell]->get_dof_indices(dofs);
+    std::array<double, 2> U{0.0, 0.0};
+    for (unsigned int i = 0; i < dpc; ++i)
+      U[fe_.system_to_component_index(i).first] += full[dofs[i]] * fe_.shape_value(i, Point<1>(xi));
+    if (setup_.geometry == Geometry::curved) {
+      shape.tangential[s] = U[0];
+      shape.radial[s] = U[1];
+    } else {
+      shape.radial[s] = U[0] * std::cos(a) + U[1] * std::sin(a);
+      shape.tangential[s] = -U[0] * std::sin(a) + U[1] * std::cos(a);
+    }
+  }
+  ring::normalize(shape);
+  return shape;
+}
+
+}  // namespace fem::detail

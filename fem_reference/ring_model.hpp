@@ -1,0 +1,207 @@
+// Internal to fem_reference/: the deal.II model of the linear ring (mesh, constraints,
+// assembly, the eigen-solve and its refinement, sampling and VTU output), shared by the
+// files that implement fem/modes.hpp. The formulation is documented in modes.hpp.
+//
+// Shape of the program (deal.II step-47): RingModel's constructor runs make_grid(),
+// setup_constraints(), setup_reduced_system(), assemble() (ring_model.cpp); solve()
+// computes the lowest modes (ring_eigen.cpp); sample() evaluates the FE fields at the
+// common stations; write_vtu() writes them for ParaView (ring_vtu.cpp); modes.cpp is the
+// reference driver (validation, the inextensible extrapolation, p/h refinement).
+#pragma once
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/arpack_solver.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "ring/errors.hpp"
+#include "ring/sampling.hpp"
+
+#include "fem_reference/modes.hpp"
+
+namespace fem::detail {
+
+using namespace dealii;
+using Geometry = ring::FemOptions::Geometry;
+
+constexpr double kPi = 3.14159265358979323846;
+/// Above this many free unknowns the dense O(N^3) LAPACK solve gives way to ARPACK.
+constexpr unsigned int kDenseLimit = 150;
+/// Highest degree the reference refinement raises p to before it refines h instead
+/// (FE_Q uses Gauss-Lobatto support points, well conditioned at these degrees).
+constexpr int kReferenceMaxDegree = 16;
+constexpr int kReferenceMaxSteps = 40;
+/// Extra eigenpairs computed above the wanted ones for the refinement (refine()).
+constexpr unsigned int kGuardModes = 8;
+/// Reference runs refine the eigenpairs once successive frequencies change by less.
+constexpr double kRefineBelowChange = 1e-5;
+/// Subspace-iteration corrections in refine().
+constexpr unsigned int kRefinementRounds = 1;
+/// Relative round-off of refined frequencies (measured, see the estimate below).
+constexpr double kRoundOffFloor = 1e-12;
+/// Inextensible limit: EA -> beta EI / R^2 for these beta, then Richardson in 1/beta.
+constexpr double kInextensibleBeta = 1e6;
+
+/// One discretization of the ring: what RingModel is built from.
+struct Setup {
+  int elements = 40;      ///< equal pieces (chords on the polygon), vertex 0 at the pin
+  int subdivisions = 1;   ///< cells per piece
+  int degree = 3;         ///< p: degree of the bending field
+  Geometry geometry = Geometry::curved;
+  bool rotary_inertia = false;
+  double EA = 0.0;        ///< axial stiffness used (EA, or the inextensible penalty)
+  int cells() const { return elements * subdivisions; }
+};
+
+/// What one shape function contributes at one point: displacement components in the
+/// fields' own orthonormal basis (polar (u, w) or Cartesian (ux, uy)), centreline
+/// strain, change of curvature and cross-section rotation (counter-clockwise).
+struct Kinematics {
+  std::array<double, 2> d{0.0, 0.0};
+  double eps = 0.0, kappa = 0.0, phi = 0.0;
+};
+
+/// Lowest eigenpairs of the reduced problem K q = lambda M q, lambda ascending, and
+/// each pair's relative residual (see RingModel::refine).
+struct EigenPairs {
+  std::vector<double> lambda;
+  std::vector<Vector<double>> q;
+  std::vector<double> residual;
+};
+
+/// Extended precision for the operator applications that refine the eigenpairs.
+using Real = long double;
+
+class RingModel {
+ public:
+  /// Builds mesh, constraints and matrices. O(cells (2p+3)^2).
+  RingModel(const ring::RingSpec& spec, const Setup& setup);
+
+  unsigned int n_free() const { return n_free_; }
+  /// The `n` lowest eigenpairs, refined (see refine()). Dense LAPACK (O(N^3)) up to
+  /// kDenseLimit unknowns, ARPACK shift-invert on UMFPACK above (O(N p^2)
+  /// factorization + O(N p) per Lanczos step).
+  /// With refine = false the raw pairs come back (frequencies to ~eps lambda_max / lambda,
+  /// residuals NaN): enough while a reference refinement is far from converged.
+  EigenPairs solve(unsigned int n, bool refine = true) const;
+  /// Reduced vector -> all DoFs (constraints distributed). O(N).
+  Vector<double> expand(const Vector<double>& q) const;
+  /// Radial and tangential displacement of a full DoF vector at the common stations,
+  /// normalized. O(kStations (2p+3)).
+  ring::ModeShape sample(const Vector<double>& full) const;
+  /// Writes the given full vectors to a VTU file with DataOut.
+  void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
+                 const std::string& file) const;
+
+ private:
+  void make_grid();
+  void setup_constraints();
+  void setup_reduced_system();
+  void assemble();
+
+  /// Kinematics of local shape function i of `cell` at cell quadrature point q
+  /// (q = nq, nq+1: the left and right ends of the cell).
+  Kinematics kinematics(unsigned int cell, unsigned int i, unsigned int q) const;
+  /// Interior-penalty data at vertex v (between cell v-1 and cell v): for the 2 dpc
+  /// local DoFs [cell v-1 | cell v], the rotation jump and the mean moment.
+  void vertex_terms(unsigned int v, std::vector<double>& jump, std::vector<double>& mean) const;
+  /// ds/dtheta on a cell: R (on the polygon: chord length / chord angle, also R).
+  double ds_dtheta() const;
+  /// DoFs at one end (xi = 0 or 1) of a cell, by component.
+  std::array<types::global_dof_index, 2> end_dofs(unsigned int cell, double xi) const;
+  /// Adds a local matrix on `dofs` to the reduced global matrix (constraints expanded).
+  void add_local(const FullMatrix<double>& local, const std::vector<types::global_dof_index>& dofs,
+                 SparseMatrix<double>& global) const;
+  /// K q and M q (reduced) accumulated in extended precision from the strain fields of
+  /// q, never from the assembled entries: q^T K q then loses no digits to the stiff
+  /// membrane part (the assembled product cancels to ~eps lambda_max / lambda). O(N p).
+  void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const;
+  /// Improves raw eigenpairs: Rayleigh-Ritz on their span with Gram matrices from
+  /// apply(), one subspace-iteration correction q -= (K - sigma M)^{-1} r, Ritz again.
+  /// Residuals ||r||_* / (||K q||_* + lambda ||M q||_*) in the dual norm of
+  /// K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm that bounds the
+  /// frequency error; the Euclidean norm would only show the round-off of the stiff
+  /// entries. O(m^2 N) for m pairs.
+  EigenPairs refine(EigenPairs raw, const SparseDirectUMFPACK& shifted_inverse) const;
+
+  const ring::RingSpec& spec_;
+  const Setup setup_;
+  const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
+  const double h_;       ///< cell size in theta, rad
+  const double sigma_;   ///< spectral shift, < 0 (rad/s)^2
+
+  Triangulation<1> triangulation_;
+  FESystem<1> fe_;
+  DoFHandler<1> dof_handler_;
+  std::vector<DoFHandler<1>::active_cell_iterator> cells_;  ///< counter-clockwise order
+  std::vector<std::array<double, 2>> chord_t_;  ///< polygon: unit tangent of each chord
+  AffineConstraints<double> constraints_;
+
+  /// Shape functions on the reference cell (all cells are equal affine images of it):
+  /// value, d/dtheta, d2/dtheta2 at the Gauss points, then at xi = 0 and xi = 1;
+  /// index [q * dpc + i]. ds_[q]: quadrature weight times ds/dtheta.
+  unsigned int nq_ = 0;
+  std::vector<double> v0_, v1_, v2_, ds_;
+  std::vector<unsigned int> component_;
+  double penalty_ = 0.0;  ///< sigma EI / h of the interior penalty
+
+  /// Reduced numbering: free_[i] = index of unconstrained DoF i, or -1; expansion_[i]
+  /// lists (free index, weight) with U_i = sum weight * q_free (homogeneous constraints).
+  std::vector<int> free_;
+  std::vector<std::vector<std::pair<unsigned int, double>>> expansion_;
+  unsigned int n_free_ = 0;
+  SparsityPattern sparsity_;
+  SparseMatrix<double> K_, M_;
+};
+
+template <int spacedim = 1>
+FESystem<1, spacedim> make_fe(const Setup& s) {
+  // Curved: u (tangential) one degree above w (radial), so that u' and w share a space
+  // and inextensional motion is exact (no membrane locking). Polygon: ux, uy of degree p.
+  if (s.geometry == Geometry::curved)
+    return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree + 1), 1, FE_Q<1, spacedim>(s.degree), 1);
+  return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree), 2);
+}
+
+/// Frequencies, shapes and residual of one discretization (with the inextensible
+/// extrapolation when asked). `full` receives the full DoF vectors if not null.
+struct Solved {
+  ring::ModalResult result;
+  std::vector<Vector<double>> full;
+};
+
+/// The whole modal solve of compute_modes (validation, refinement to the reference);
+/// keep_full keeps the full DoF vectors of the final discretization (for the VTU output).
+Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, bool keep_full);
+
+}  // namespace fem::detail

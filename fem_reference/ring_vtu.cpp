@@ -1,0 +1,115 @@
+// VTU output of the linear ring's mode shapes (deal.II DataOut, ring_model.hpp).
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+namespace {
+
+
+/// For the VTU output: the Cartesian displacement of a mode from its two field
+/// components (polar (u, w) on the circle, or already Cartesian on the polygon).
+class CartesianDisplacement : public DataPostprocessorVector<2> {
+ public:
+  CartesianDisplacement(const std::string& name, bool polar)
+      : DataPostprocessorVector<2>(name, update_values | update_quadrature_points), polar_(polar) {}
+  void evaluate_vector_field(const DataPostprocessorInputs::Vector<2>& in,
+                             std::vector<Vector<double>>& out) const override {
+    for (unsigned int q = 0; q < in.solution_values.size(); ++q) {
+      const double a0 = in.solution_values[q][0], a1 = in.solution_values[q][1];
+      if (!polar_) {
+        out[q][0] = a0;
+        out[q][1] = a1;
+        continue;
+      }
+      const double t = std::atan2(in.evaluation_points[q][1], in.evaluation_points[q][0]);
+      out[q][0] = -std::sin(t) * a0 + std::cos(t) * a1;
+      out[q][1] = std::cos(t) * a0 + std::sin(t) * a1;
+    }
+  }
+
+ private:
+  bool polar_;
+};
+
+}  // namespace
+
+void RingModel::write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
+                          const std::string& file) const {
+  // The same cells as a curve in the plane (Triangulation<1,2>, a closed loop), so that
+  // ParaView shows the ring: the circle through a SphericalManifold, or the n-gon of
+  // side 2 pi R / n. Local DoF orderings agree, so values are copied cell by cell.
+  const bool curved = setup_.geometry == Geometry::curved;
+  const unsigned int n = setup_.cells(), m = setup_.subdivisions;
+  const double chord_angle = 2.0 * kPi / setup_.elements;
+  const double corner = curved ? spec_.radius : spec_.radius * (chord_angle / 2.0) / std::sin(chord_angle / 2.0);
+  std::vector<Point<2>> vertices(n);
+  for (unsigned int i = 0; i < n; ++i) {
+    const double a0 = theta0_ + (i / m) * chord_angle, a1 = a0 + chord_angle, f = double(i % m) / m;
+    if (curved)
+      vertices[i] = Point<2>(spec_.radius * std::cos(theta0_ + i * h_), spec_.radius * std::sin(theta0_ + i * h_));
+    else
+      vertices[i] = Point<2>(corner * ((1 - f) * std::cos(a0) + f * std::cos(a1)),
+                             corner * ((1 - f) * std::sin(a0) + f * std::sin(a1)));
+  }
+  std::vector<CellData<1>> cells(n);
+  for (unsigned int i = 0; i < n; ++i) cells[i].vertices = {i, (i + 1) % n};
+  Triangulation<1, 2> plane;
+  plane.create_triangulation(vertices, cells, SubCellData());
+  const SphericalManifold<1, 2> circle;
+  if (curved) {
+    plane.set_all_manifold_ids(0);
+    plane.set_manifold(0, circle);
+  }
+  const FESystem<1, 2> fe(make_fe<2>(setup_));
+  DoFHandler<1, 2> dofs(plane);
+  dofs.distribute_dofs(fe);
+
+  DataOut<1, 2> data_out;
+  data_out.attach_dof_handler(dofs);
+  std::vector<Vector<double>> fields(modes.size(), Vector<double>(dofs.n_dofs()));
+  std::vector<std::unique_ptr<CartesianDisplacement>> displacement;
+  Vector<double> local(fe.n_dofs_per_cell());
+  for (unsigned int k = 0; k < modes.size(); ++k) {
+    for (const auto& cell : dofs.active_cell_iterators()) {
+      cells_[cell->index()]->get_dof_values(modes[k], local);
+      cell->set_dof_values(local, fields[k]);
+    }
+    const double largest = fields[k].linfty_norm();
+    if (largest > 0) fields[k] /= largest;
+    std::ostringstream suffix;  // mode number and frequency (rad/s) in every name
+    suffix << "_" << (k + 1) << "_omega_" << omega[k];
+    data_out.add_data_vector(fields[k], std::vector<std::string>{(curved ? "tangential" : "ux") + suffix.str(),
+                                                                 (curved ? "radial" : "uy") + suffix.str()});
+    displacement.push_back(std::make_unique<CartesianDisplacement>("displacement" + suffix.str(), curved));
+    data_out.add_data_vector(fields[k], *displacement.back());
+  }
+  const MappingQ<1, 2> mapping(std::max(2, setup_.degree));
+  data_out.build_patches(mapping, setup_.degree + 1, DataOut<1, 2>::curved_inner_cells);
+  std::ofstream out(file);
+  if (!out) throw ring::NumericalError("fem: cannot write " + file);
+  data_out.write_vtu(out);
+  if (!out) throw ring::NumericalError("fem: writing " + file + " failed");
+}
+
+}  // namespace fem::detail
+
+namespace fem {
+
+using namespace detail;
+
+std::string write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count,
+                      const std::string& dir) {
+  Solved s = run(spec, options, count, true);
+  Setup setup;
+  setup.elements = options.elements;
+  setup.subdivisions = static_cast<int>(std::get<long long>(s.result.model.at("subdivisions")));
+  setup.degree = static_cast<int>(std::get<long long>(s.result.model.at("degree")));
+  setup.geometry = options.geometry;
+  setup.rotary_inertia = options.rotary_inertia;
+  setup.EA = spec.EA();
+  const RingModel model(spec, setup);  // the same mesh and DoF numbering as the solve
+  const std::string file = dir + "/fem_modes.vtu";
+  model.write_vtu(s.full, s.result.omega, file);
+  return file;
+}
+
+}  // namespace fem
