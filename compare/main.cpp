@@ -1,4 +1,4 @@
-// ringvib: runs what a scene file asks for (DESIGN.md). main() parses, dispatches,
+// ringvib: runs what a scene file asks for (README). main() parses, dispatches,
 // catches and maps failures to the documented exit codes.
 #include <unistd.h>
 

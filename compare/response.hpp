@@ -17,7 +17,7 @@ ring::TimeHistory respond(const ring::Scene& scene);
 ring::StaticResult solve_static(const ring::Scene& scene);
 
 /// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, work,
-/// energy_error, constraint_residual, newton_iterations (issue 7, DESIGN.md).
+/// energy_error, constraint_residual, newton_iterations (README, "The command").
 std::string history_csv(const ring::TimeHistory& h);
 /// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations", "solver",
 /// "unknowns", "seconds"}.

@@ -1,9 +1,9 @@
 // Finite-element reference for the in-plane vibration of a thin ring: curved (or
 // polygonal) Euler-Bernoulli beam elements on deal.II. This header has NO deal.II
 // includes on purpose: the rest of ringvib (and the dlopen boundary in plugin.hpp)
-// sees only the shared result types, so that deal.II is compiled in one .cpp file.
+// sees only the shared result types, so that deal.II stays in fem_reference/'s .cpp files.
 //
-// The model (issue 4). Mesh: a 1-D mesh in the polar angle theta, from the pin angle
+// The model. Mesh: a 1-D mesh in the polar angle theta, from the pin angle
 // theta0 to theta0 + 2 pi, closed periodically through AffineConstraints, with
 // `elements` equal pieces (vertex k at node_angles(spec, elements)[k]) each split into
 // `subdivisions` equal cells.
@@ -14,7 +14,7 @@
 //    kinematics of ring/closed_form.hpp.
 //  - geometry `polygon`: straight chords between the vertices (the paper's SAP5 frame):
 //    the regular n-gon of side 2 pi R / n, i.e. perimeter = circumference, vertices at
-//    radius R (pi/n) / sin(pi/n) in the node directions (NOTES.md: what SAP5 computed);
+//    radius R (pi/n) / sin(pi/n) in the node directions (README, "The paper": what SAP5 computed);
 //    fields are the Cartesian components (ux, uy); on a chord with unit tangent t and
 //    outward normal n, eps = t.U_s, kappa = -n.U_ss, phi = -n.U_s (s: arc length).
 // Energies: strain EA/2 int eps^2 + EI/2 int kappa^2 ds, kinetic rho A/2 int |U|^2 ds

@@ -1,5 +1,5 @@
 // The dlopen boundary: wraps fem::compute_modes / fem::write_vtu so that no exception
-// crosses it; errors become the exit codes of DESIGN.md (2 bad input, 3 numerical).
+// crosses it; errors become the exit codes of the README (2 bad input, 3 numerical).
 #include "fem_reference/plugin.hpp"
 
 #include <exception>

@@ -1,4 +1,4 @@
-// The two kinds of failure a user can meet, with the exit codes of DESIGN.md.
+// The kinds of failure a user can meet, with the exit codes of the README.
 #pragma once
 
 #include <stdexcept>

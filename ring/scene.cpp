@@ -228,7 +228,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     }
   }
 
-  // Solver sections: each optional, defaults as in DESIGN.md.
+  // Solver sections: each optional, defaults as in the README's scene reference.
   const toml::table* mt = r.table(root, "", "multibody");
   if (mt) {
     r.known_keys(*mt, "multibody", {"n", "rotary_inertia", "dependent", "method"});

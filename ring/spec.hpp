@@ -1,7 +1,7 @@
 // The shared vocabulary of ringvib: what a ring is, how it is held and loaded,
 // and how each solver discretizes it. Every solver takes these by const reference.
 //
-// Conventions (DESIGN.md): SI units; the ring's centre is the origin of the
+// Conventions (README): SI units; the ring's centre is the origin of the
 // reporting frame; a point on the ring is named by its polar angle in degrees,
 // counter-clockwise from +x; radial displacement positive outward, tangential
 // positive counter-clockwise; frequencies are angular (rad/s).
