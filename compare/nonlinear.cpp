@@ -305,8 +305,13 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
                 "x (m)", "y (m)", shapes, false, false, true);
 }
 
-void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results) {
-  std::vector<Series> shapes;
+void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, double radius) {
+  Series undeformed{"undeformed", {}, {}, 9, true};
+  for (int i = 0; i <= 360; ++i) {
+    undeformed.x.push_back(radius * std::cos(i * M_PI / 180.0));
+    undeformed.y.push_back(radius * std::sin(i * M_PI / 180.0));
+  }
+  std::vector<Series> shapes = {undeformed};
   for (std::size_t s = 0; s < results.size(); ++s) {
     const auto& r = results[s];
     if (r.node_x.empty()) continue;
@@ -317,7 +322,7 @@ void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticRe
     }
     shapes.push_back(x);
   }
-  if (!shapes.empty())
+  if (shapes.size() > 1)
     plot_series(dir, "static_shapes", "Deformed ring under the static load, every solver", "x (m)", "y (m)", shapes,
                 false, false, true);
 }

@@ -181,7 +181,7 @@ void write_report(const std::string& dir, const RunReport& r) {
     }
     std::vector<ring::StaticResult> all = r.nonlinear ? r.nonlinear->statics : std::vector<ring::StaticResult>{*r.statics};
     if (r.nonlinear && r.nonlinear->static_reference) all.push_back(*r.nonlinear->static_reference);
-    plot_static_shapes(dir, all);
+    plot_static_shapes(dir, all, s.ring.radius);
     files.push_back("static_shapes.png");
     md << "![deformed ring under the static load](static_shapes.png)\n\n";
   }
