@@ -5,6 +5,7 @@
 
 #include "compare/fem_module.hpp"
 #include "lumped_mass/modes.hpp"
+#include "lumped_mass/nonlinear.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/modes.hpp"
 #include "multibody/statics.hpp"
@@ -88,6 +89,12 @@ SolverEntry lumped_entry() {
   e.paper = [](const ring::PaperRow& r) { return r.lm_corrected; };
   e.modes = [](const ring::Scene& s, int count) {
     return as_input_error(s, "lumped", [&] { return lumped::compute_modes(s.ring, s.lumped, count); });
+  };
+  e.statics = [](const ring::Scene& s) {
+    return as_input_error(s, "static", [&] { return lumped::solve_static(s.ring, s.lumped, *s.statics); });
+  };
+  e.response = [](const ring::Scene& s) {
+    return as_input_error(s, "response", [&] { return lumped::respond(s.ring, s.lumped, *s.response); });
   };
   return e;
 }

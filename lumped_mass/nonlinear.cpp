@@ -1,0 +1,551 @@
+#include "lumped_mass/nonlinear.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "ring/errors.hpp"
+
+namespace lumped {
+namespace {
+
+using Vec = Eigen::VectorXd;
+using Vec2 = Eigen::Vector2d;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+using Sparse = Eigen::SparseMatrix<double>;
+constexpr double kPi = 3.14159265358979323846;
+
+/// The chain's fixed data: geometry, stiffness, mass and supports.
+struct Chain {
+  int n = 0;
+  double l = 0.0, k = 0.0, m = 0.0, rho = 0.0, theta0 = 0.0, anchor_deg = 0.0, depth = 0.0;
+  Vec rest;                 ///< 2n: hinge rest positions
+  bool pin = false;
+  int roller = -1;          ///< hinge index of the roller, or -1
+  Vec2 nu{0.0, 0.0};        ///< unit normal of the pin-roller line
+  int rows() const { return n + (pin ? 2 : 0) + (roller >= 0 ? 1 : 0); }
+
+  Vec2 at(const Vec& x, int j) const {
+    j = ((j % n) + n) % n;
+    return {x[2 * j], x[2 * j + 1]};
+  }
+  /// Hinge index of a point named by its polar angle (a node, checked by the caller).
+  int hinge(double deg) const {
+    const double step = 360.0 / n;
+    return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor_deg) / step)) % n;
+  }
+};
+
+Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
+  auto need = [&](bool ok, const std::string& msg) {
+    if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
+  };
+  need(o.variant == ring::LumpedOptions::Variant::chain,
+       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no nonlinear model here; use \"chain\"");
+  need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
+  need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
+       "radius, E, rho, area and inertia must be > 0");
+  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
+  Chain c;
+  c.n = o.n;
+  c.l = 2.0 * kPi * spec.radius / c.n;
+  c.k = spec.EI() / c.l;
+  c.m = spec.rhoA() * c.l;
+  c.rho = c.l / (2.0 * std::sin(kPi / c.n));
+  c.theta0 = 2.0 * kPi / c.n;
+  c.depth = spec.section.depth();
+  c.anchor_deg = *spec.supports.pin;
+  c.pin = true;
+  c.rest.resize(2 * c.n);
+  const auto angles = ring::node_angles(spec, c.n);
+  for (int j = 0; j < c.n; ++j) {
+    c.rest[2 * j] = c.rho * std::cos(angles[j] * kPi / 180.0);
+    c.rest[2 * j + 1] = c.rho * std::sin(angles[j] * kPi / 180.0);
+  }
+  if (spec.supports.roller) {
+    need(ring::on_node(*spec.supports.roller, c.anchor_deg, c.n),
+         "supports.roller must fall on a hinge (lumped.n = " + std::to_string(c.n) + ")");
+    c.roller = c.hinge(*spec.supports.roller);
+    need(c.roller != 0, "supports.roller must differ from the pin");
+    const Vec2 d = (c.at(c.rest, c.roller) - c.at(c.rest, 0)).normalized();
+    c.nu = {-d.y(), d.x()};
+  }
+  return c;
+}
+
+/// Turning angle at hinge j and its gradient with respect to (x_{j-1}, x_j, x_{j+1}).
+struct Turn {
+  double theta = 0.0;
+  Eigen::Matrix<double, 6, 1> grad;
+  Eigen::Matrix<double, 6, 6> hess;
+};
+
+/// d angle(v) / dv = J v / |v|^2 (J: rotation by +90 deg), and its Hessian.
+Eigen::Matrix2d angle_hessian(const Vec2& v) {
+  const double r2 = v.squaredNorm();
+  Eigen::Matrix2d J;
+  J << 0.0, -1.0, 1.0, 0.0;
+  const Eigen::Matrix2d h = (J * r2 - 2.0 * (J * v) * v.transpose()) / (r2 * r2);
+  return 0.5 * (h + h.transpose());
+}
+
+Turn turn(const Chain& c, const Vec& x, int j, bool with_hessian) {
+  const Vec2 a = c.at(x, j) - c.at(x, j - 1), b = c.at(x, j + 1) - c.at(x, j);
+  Turn t;
+  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  const Vec2 ga = Vec2(-a.y(), a.x()) / a.squaredNorm(), gb = Vec2(-b.y(), b.x()) / b.squaredNorm();
+  // theta = angle(b) - angle(a); a = x_j - x_{j-1}, b = x_{j+1} - x_j.
+  t.grad << ga, -ga - gb, gb;
+  if (with_hessian) {
+    const Eigen::Matrix2d Ha = angle_hessian(a), Hb = angle_hessian(b);
+    t.hess.setZero();
+    // - A^T Ha A with A = [-I, I, 0]; + B^T Hb B with B = [0, -I, I].
+    t.hess.block<2, 2>(0, 0) -= Ha;
+    t.hess.block<2, 2>(0, 2) += Ha;
+    t.hess.block<2, 2>(2, 0) += Ha;
+    t.hess.block<2, 2>(2, 2) -= Ha;
+    t.hess.block<2, 2>(2, 2) += Hb;
+    t.hess.block<2, 2>(2, 4) -= Hb;
+    t.hess.block<2, 2>(4, 2) -= Hb;
+    t.hess.block<2, 2>(4, 4) += Hb;
+  }
+  return t;
+}
+
+/// Global DoF of local index i (0..5) of the three hinges around j.
+int dof(const Chain& c, int j, int i) {
+  const int h = (((j - 1 + i / 2) % c.n) + c.n) % c.n;
+  return 2 * h + i % 2;
+}
+
+struct Springs {
+  double energy = 0.0;
+  Vec grad;
+  Triplets hess;
+};
+
+/// V, grad V and (scaled by `hess_scale`, if not zero) Hess V.
+Springs springs(const Chain& c, const Vec& x, double hess_scale) {
+  Springs s;
+  s.grad = Vec::Zero(2 * c.n);
+  for (int j = 0; j < c.n; ++j) {
+    const Turn t = turn(c, x, j, hess_scale != 0.0);
+    const double d = t.theta - c.theta0;
+    s.energy += 0.5 * c.k * d * d;
+    for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += c.k * d * t.grad[i];
+    if (hess_scale != 0.0) {
+      const Eigen::Matrix<double, 6, 6> H = c.k * (t.grad * t.grad.transpose() + d * t.hess);
+      for (int i = 0; i < 6; ++i)
+        for (int q = 0; q < 6; ++q) s.hess.emplace_back(dof(c, j, i), dof(c, j, q), hess_scale * H(i, q));
+    }
+  }
+  return s;
+}
+
+/// Constraint values: links (|d|^2 - l^2) / (2 l), then the supports (m).
+Vec constraints(const Chain& c, const Vec& x) {
+  Vec g(c.rows());
+  for (int j = 0; j < c.n; ++j) g[j] = ((c.at(x, j + 1) - c.at(x, j)).squaredNorm() - c.l * c.l) / (2.0 * c.l);
+  int r = c.n;
+  const Vec2 p0 = c.at(x, 0) - c.at(c.rest, 0);
+  g[r++] = p0.x();
+  g[r++] = p0.y();
+  if (c.roller >= 0) g[r++] = c.nu.dot(c.at(x, c.roller) - c.at(c.rest, 0));
+  return g;
+}
+
+/// The constraint Jacobian G(x) as triplets at (row_offset + row, column), times `scale`.
+void jacobian(const Chain& c, const Vec& x, int row_offset, double scale, bool transpose, Triplets& out) {
+  auto put = [&](int r, int col, double v) {
+    if (transpose) out.emplace_back(col, row_offset + r, scale * v);
+    else out.emplace_back(row_offset + r, col, scale * v);
+  };
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 d = (c.at(x, j + 1) - c.at(x, j)) / c.l;
+    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
+    put(j, a, -d.x());
+    put(j, a + 1, -d.y());
+    put(j, b, d.x());
+    put(j, b + 1, d.y());
+  }
+  int r = c.n;
+  put(r++, 0, 1.0);
+  put(r++, 1, 1.0);
+  if (c.roller >= 0) {
+    put(r, 2 * c.roller, c.nu.x());
+    put(r, 2 * c.roller + 1, c.nu.y());
+  }
+}
+
+/// sum_j lambda_j Hess c_j: the link rows have the constant Hessian (1/l)[I -I; -I I].
+void constraint_hessian(const Chain& c, const Vec& lambda, double scale, Triplets& out) {
+  for (int j = 0; j < c.n; ++j) {
+    const double w = scale * lambda[j] / c.l;
+    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
+    for (int d = 0; d < 2; ++d) {
+      out.emplace_back(a + d, a + d, w);
+      out.emplace_back(b + d, b + d, w);
+      out.emplace_back(a + d, b + d, -w);
+      out.emplace_back(b + d, a + d, -w);
+    }
+  }
+}
+
+/// The constant mass matrix of the midpoint masses: m/4 [I I; I I] on every link.
+Sparse mass_matrix(const Chain& c) {
+  Triplets t;
+  for (int j = 0; j < c.n; ++j) {
+    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
+    for (int d = 0; d < 2; ++d)
+      for (int p : {a + d, b + d})
+        for (int q : {a + d, b + d}) t.emplace_back(p, q, c.m / 4.0);
+  }
+  Sparse M(2 * c.n, 2 * c.n);
+  M.setFromTriplets(t.begin(), t.end());
+  return M;
+}
+
+/// Smallest distance between hinges at least `gap` apart along the chain (uniform grid,
+/// O(n)); hinges closer than the section depth mean the ring touches itself.
+struct Contact {
+  double distance = INFINITY;
+  int i = -1, j = -1;
+};
+
+Contact closest_nonadjacent(const Chain& c, const Vec& x) {
+  const int gap = std::max(2, static_cast<int>(std::ceil(2.0 * c.depth / c.l)) + 1);
+  const double cell = std::max(c.depth, c.l);
+  std::unordered_map<long long, std::vector<int>> grid;
+  auto key = [&](long long gx, long long gy) { return gx * 1000003LL + gy; };
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 p = c.at(x, j);
+    grid[key(std::floor(p.x() / cell), std::floor(p.y() / cell))].push_back(j);
+  }
+  Contact best;
+  if (2 * gap > c.n) return best;
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 p = c.at(x, j);
+    const long long gx = std::floor(p.x() / cell), gy = std::floor(p.y() / cell);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        auto it = grid.find(key(gx + dx, gy + dy));
+        if (it == grid.end()) continue;
+        for (int i : it->second) {
+          const int sep = std::min((i - j + c.n) % c.n, (j - i + c.n) % c.n);
+          if (sep < gap) continue;
+          const double d = (c.at(x, i) - p).norm();
+          if (d < best.distance) best = {d, j, i};
+        }
+      }
+  }
+  return best;
+}
+
+/// Solves the sparse KKT system; throws ring::NumericalError if singular.
+Vec solve(const Sparse& A, const Vec& rhs) {
+  Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu;
+  lu.compute(A);
+  if (lu.info() != Eigen::Success) throw ring::NumericalError("lumped: singular Newton matrix");
+  Vec x = lu.solve(rhs);
+  if (!x.allFinite()) throw ring::NumericalError("lumped: non-finite Newton correction");
+  return x;
+}
+
+std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record, const std::string& key) {
+  std::vector<int> h;
+  for (double a : record) {
+    if (!ring::on_node(a, c.anchor_deg, c.n))
+      throw std::invalid_argument("lumped: " + key + " angle " + std::to_string(a) + " is not a hinge of the chain");
+    h.push_back(c.hinge(a));
+  }
+  return h;
+}
+
+int load_hinge(const Chain& c, const ring::PointLoad& load, const std::string& key) {
+  if (!ring::on_node(load.angle, c.anchor_deg, c.n))
+    throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(load.angle) + ") is not a hinge of the chain");
+  const int h = c.hinge(load.angle);
+  if (h == 0) throw std::invalid_argument("lumped: " + key + " acts at the pin");
+  return h;
+}
+
+std::string contact_message(const Chain& c, const Contact& k) {
+  std::ostringstream s;
+  s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth
+    << " m): the ring touches itself, and the chain model has no contact";
+  return s.str();
+}
+
+}  // namespace
+
+ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                const ring::StaticOptions& statics) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Chain c = make_chain(spec, options, "statics");
+  if (c.roller < 0) throw std::invalid_argument("lumped statics: needs a roller as well as the pin");
+  if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
+  const int at = load_hinge(c, statics.load, "static.at");
+  const auto rec = record_hinges(c, statics.record, "static.record");
+  const int N = 2 * c.n, R = c.rows();
+  Vec F = Vec::Zero(N);
+  F[2 * at] = statics.load.force[0];
+  F[2 * at + 1] = statics.load.force[1];
+  // Rows and columns of the constraints scaled to the stiffness (EI / l^3) so that the
+  // KKT matrix is balanced for the LU's pivoting.
+  const double scale = spec.EI() / (c.l * c.l * c.l);
+
+  Vec x = c.rest, lambda = Vec::Zero(R);
+  ring::StaticResult out;
+  double s = 0.0, ds = 1.0 / statics.steps;
+  const double min_ds = 1e-6 / statics.steps;
+  while (s < 1.0 - 1e-14) {
+    const double target = std::min(1.0, s + ds);
+    Vec xt = x, lt = lambda;
+    bool ok = false;
+    int iterations = 0;
+    for (int it = 0; it < 25; ++it) {
+      ++iterations;
+      const Springs sp = springs(c, xt, 1.0);
+      Triplets t = sp.hess;
+      constraint_hessian(c, lt * scale, 1.0, t);
+      jacobian(c, xt, N, scale, true, t);
+      jacobian(c, xt, N, scale, false, t);
+      Sparse A(N + R, N + R);
+      A.setFromTriplets(t.begin(), t.end());
+      Vec rhs(N + R);
+      Triplets gt;
+      jacobian(c, xt, 0, 1.0, true, gt);
+      Sparse GT(N, R);
+      GT.setFromTriplets(gt.begin(), gt.end());
+      rhs.head(N) = -(sp.grad + GT * (lt * scale) - target * F);
+      rhs.tail(R) = -scale * constraints(c, xt);
+      Vec d;
+      try {
+        d = solve(A, rhs);
+      } catch (const ring::NumericalError&) {
+        break;
+      }
+      const double step = d.head(N).cwiseAbs().maxCoeff();
+      if (!(step < 0.5 * c.l)) break;
+      xt += d.head(N);
+      lt += d.tail(R);
+      if (step <= 1e-12 * spec.radius) {
+        ok = constraints(c, xt).cwiseAbs().maxCoeff() <= 1e-10 * spec.radius;
+        break;
+      }
+    }
+    out.newton_iterations += iterations;
+    if (!ok) {
+      ds /= 2.0;
+      if (ds < min_ds)
+        throw ring::NumericalError("lumped statics: no equilibrium found beyond load factor " + std::to_string(s) +
+                                   " (a limit point, or the load is too large for the chain)");
+      continue;
+    }
+    x = xt;
+    lambda = lt;
+    s = target;
+    ++out.steps;
+    const Contact k = closest_nonadjacent(c, x);
+    if (k.distance < c.depth)
+      throw ring::NumericalError("lumped statics: at load factor " + std::to_string(s) + " " + contact_message(c, k));
+    ds = std::min(2.0 * ds, 1.0 / statics.steps);
+  }
+  for (std::size_t p = 0; p < rec.size(); ++p) {
+    const Vec2 u = c.at(x, rec[p]) - c.at(c.rest, rec[p]);
+    out.displacements.push_back({statics.record[p], u.x(), u.y()});
+  }
+  for (int j = 0; j < c.n; ++j) {
+    out.node_x.push_back(x[2 * j]);
+    out.node_y.push_back(x[2 * j + 1]);
+  }
+  out.solver = "lumped";
+  out.unknowns = N + R;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                          const ring::ResponseOptions& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Chain c = make_chain(spec, options, "response");
+  if (r.integrator == ring::ResponseOptions::Integrator::generalized_alpha)
+    throw std::invalid_argument(
+        "lumped response: response.integrator = \"generalized-alpha\" is not offered by the lumped chain; use "
+        "\"newmark\" (its midpoint form) or \"energy-momentum\"");
+  if (!(r.dt > 0) || !(r.t_end >= r.dt))
+    throw std::invalid_argument("lumped response: response.dt must be > 0 and <= response.t_end");
+  const int at = load_hinge(c, r.load, "response.at");
+  const auto rec = record_hinges(c, r.record, "response.record");
+  const int N = 2 * c.n, R = c.rows();
+  Vec F = Vec::Zero(N);
+  F[2 * at] = r.load.force[0];
+  F[2 * at + 1] = r.load.force[1];
+  const Sparse M = mass_matrix(c);
+  // Rayleigh damping C = a M + b K0, K0 the spring Hessian at rest (no link forces there).
+  Sparse Cd(N, N);
+  if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
+    const Springs s0 = springs(c, c.rest, 1.0);
+    Sparse K0(N, N);
+    K0.setFromTriplets(s0.hess.begin(), s0.hess.end());
+    Cd = r.rayleigh_mass * M + r.rayleigh_stiffness * K0;
+  }
+  const double ch = r.hinge_damping;
+  const bool damped = r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || ch > 0;
+
+  ring::TimeHistory h;
+  h.solver = "lumped";
+  h.unknowns = N + R;
+  h.record_angles = r.record;
+  h.ux.assign(rec.size(), {});
+  h.uy.assign(rec.size(), {});
+  const long long steps = std::llround(r.t_end / r.dt);
+  std::vector<long long> snap_steps;
+  for (int k = 0; k < 6; ++k) snap_steps.push_back(std::llround(k * steps / 5.0));
+
+  Vec x = c.rest, v = Vec::Zero(N), lambda = Vec::Zero(R);
+  double work = 0.0, dissipated = 0.0, max_work = 0.0;
+  auto record = [&](double t, int iterations) {
+    h.t.push_back(t);
+    for (std::size_t p = 0; p < rec.size(); ++p) {
+      const Vec2 u = c.at(x, rec[p]) - c.at(c.rest, rec[p]);
+      h.ux[p].push_back(u.x());
+      h.uy[p].push_back(u.y());
+    }
+    const double T = 0.5 * v.dot(M * v), V = springs(c, x, 0.0).energy;
+    h.kinetic.push_back(T);
+    h.strain.push_back(V);
+    h.work.push_back(work);
+    h.energy_error.push_back(T + V + dissipated - work);
+    h.constraint_residual.push_back(constraints(c, x).head(c.n).cwiseAbs().maxCoeff());
+    h.newton_iterations.push_back(iterations);
+  };
+  auto fail = [&](ring::IntegrationFailure::Reason why, const std::string& msg) {
+    h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    throw ring::IntegrationFailure(why, h.t.empty() ? 0.0 : h.t.back(), h, "lumped response: " + msg);
+  };
+  record(0.0, 0);
+  auto snapshot = [&](long long step) {
+    if (std::find(snap_steps.begin(), snap_steps.end(), step) == snap_steps.end()) return;
+    h.snapshot_t.push_back(h.t.back());
+    std::vector<double> sx, sy;
+    for (int j = 0; j < c.n; ++j) {
+      sx.push_back(x[2 * j]);
+      sy.push_back(x[2 * j + 1]);
+    }
+    h.snapshot_x.push_back(sx);
+    h.snapshot_y.push_back(sy);
+  };
+  snapshot(0);
+
+  double t = 0.0;
+  for (long long step = 1; step <= steps; ++step) {
+    const double t_next = step * r.dt;
+    int iterations = 0;
+    double hstep = r.dt;
+    while (t < t_next - 1e-12 * r.dt) {
+      hstep = std::min(hstep, t_next - t);
+      const double hh = hstep, tm = t + 0.5 * hh;
+      const double scale = 2.0 / (hh * hh) * c.m;  // balances the constraint rows
+      const Vec Fm = F * r.load.history.factor(tm);
+      Vec x1 = x + hh * v, l1 = lambda;
+      bool ok = false;
+      for (int it = 0; it < 20; ++it) {
+        ++iterations;
+        const Vec xm = 0.5 * (x + x1), vm = (x1 - x) / hh;
+        const Springs sp = springs(c, xm, 0.5);
+        Triplets trip = sp.hess;
+        constraint_hessian(c, l1 * scale, 0.5, trip);
+        jacobian(c, xm, N, scale, true, trip);
+        jacobian(c, x1, N, scale, false, trip);
+        Vec res = (2.0 / (hh * hh)) * (M * (x1 - x - hh * v)) + sp.grad - Fm;
+        if (damped) res += Cd * vm;
+        if (ch > 0)
+          for (int j = 0; j < c.n; ++j) {
+            const Turn tm_ = turn(c, xm, j, false);
+            const double rate = (turn(c, x1, j, false).theta - turn(c, x, j, false).theta) / hh;
+            for (int i = 0; i < 6; ++i) {
+              res[dof(c, j, i)] += ch * rate * tm_.grad[i];
+              for (int q = 0; q < 6; ++q)
+                trip.emplace_back(dof(c, j, i), dof(c, j, q), ch / hh * tm_.grad[i] * tm_.grad[q]);
+            }
+          }
+        Triplets gt;
+        jacobian(c, xm, 0, 1.0, true, gt);
+        Sparse GT(N, R);
+        GT.setFromTriplets(gt.begin(), gt.end());
+        res += GT * (l1 * scale);
+        Sparse A(N + R, N + R);
+        A.setFromTriplets(trip.begin(), trip.end());
+        Sparse Mt = (2.0 / (hh * hh)) * M;
+        if (damped) Mt += Cd / hh;
+        Mt.conservativeResize(N + R, N + R);
+        A += Mt;
+        Vec rhs(N + R);
+        rhs.head(N) = -res;
+        rhs.tail(R) = -scale * constraints(c, x1);
+        Vec d;
+        try {
+          d = solve(A, rhs);
+        } catch (const ring::NumericalError&) {
+          break;
+        }
+        const double move = d.head(N).cwiseAbs().maxCoeff();
+        if (!(move < 0.5 * c.l)) break;
+        x1 += d.head(N);
+        l1 += d.tail(R);
+        if (move <= 1e-11 * spec.radius) {
+          ok = constraints(c, x1).head(c.n).cwiseAbs().maxCoeff() <= 1e-10 * spec.radius;
+          break;
+        }
+      }
+      if (!ok) {
+        hstep /= 2.0;
+        if (hstep < 1e-6 * r.dt)
+          fail(ring::IntegrationFailure::Reason::step_too_small,
+               "Newton does not converge at t = " + std::to_string(t) + " s even with dt = " + std::to_string(hstep) +
+                   " s");
+        continue;
+      }
+      const Vec dx = x1 - x, vm = dx / hh;
+      work += Fm.dot(dx);
+      if (damped) dissipated += hh * vm.dot(Cd * vm);
+      if (ch > 0)
+        for (int j = 0; j < c.n; ++j) {
+          const double rate = (turn(c, x1, j, false).theta - turn(c, x, j, false).theta) / hh;
+          dissipated += hh * ch * rate * rate;
+        }
+      v = 2.0 * vm - v;
+      x = x1;
+      lambda = l1;
+      t += hh;
+      if (!x.allFinite() || !v.allFinite())
+        fail(ring::IntegrationFailure::Reason::not_finite, "a non-finite state at t = " + std::to_string(t) + " s");
+      hstep = std::min(2.0 * hstep, r.dt);
+    }
+    t = t_next;
+    record(t_next, iterations);
+    snapshot(step);
+    max_work = std::max(max_work, std::abs(work));
+    const Contact k = closest_nonadjacent(c, x);
+    if (k.distance < c.depth) fail(ring::IntegrationFailure::Reason::self_contact, contact_message(c, k));
+    // The balance error of the midpoint rule is O(h^2) of the spring energy; a growth
+    // beyond 1 % of the largest work is a failed integration, not a result.
+    if (max_work > 0 && std::abs(h.energy_error.back()) > 1e-2 * max_work)
+      fail(ring::IntegrationFailure::Reason::energy_growth,
+           "the energy balance error " + std::to_string(h.energy_error.back()) + " J exceeds 1 % of the work " +
+               std::to_string(max_work) + " J at t = " + std::to_string(t_next) + " s");
+  }
+  h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return h;
+}
+
+}  // namespace lumped

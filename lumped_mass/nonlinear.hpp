@@ -1,0 +1,67 @@
+// Geometrically nonlinear statics and forced response of the lumped-mass `chain`
+// (model.hpp), written independently of multibody/: the same physical model as the
+// multibody chain without segment rotary inertia, in other coordinates, which makes
+// each an exact oracle for the other in continuous time.
+//
+// ## Model (Cartesian hinge positions, no small-rotation assumption anywhere)
+// Unknowns x = (x_0, y_0, ..., x_{n-1}, y_{n-1}): the hinge positions, ring-centred
+// frame, hinge k resting at rho (cos a_k, sin a_k) (model.hpp's n-gon, a_k from the pin).
+//  - Rigid links: c_j(x) = (|x_{j+1} - x_j|^2 - l^2) / (2 l) = 0, j = 0..n-1 (quadratic).
+//  - Supports: pin (hinge 0 fixed: 2 rows), roller (hinge r on the line through the pin
+//    and its rest position: nu . (x_r - X_0) = 0, 1 row).
+//  - Springs k = EI / l at every hinge on the turning angle between neighbouring links,
+//    theta_j = atan2(a x b, a . b), a = x_j - x_{j-1}, b = x_{j+1} - x_j (exact for any
+//    rotation below pi between neighbours): V = k/2 sum_j (theta_j - 2 pi / n)^2.
+//  - Point masses m = rho A l at the link midpoints: T = m/2 sum_j |(v_j + v_{j+1})/2|^2,
+//    so the mass matrix M is constant (block-tridiagonal plus the closing corners).
+//  - A dead force F f(t) at one hinge.
+//
+// ## Statics: grad V(x) + G(x)^T lambda = s F, c(x) = 0, s: 0 -> 1
+// Load stepping with full Newton on (x, lambda) (tangent: the spring Hessian
+// k sum (grad theta grad theta^T + (theta - theta0) Hess theta) plus sum lambda_j Hess c_j),
+// an increment halved when Newton fails (25 iterations, a hinge moving more than l/2 in
+// one iteration, a non-finite value).
+//
+// ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
+//   M (v_{n+1} - v_n) / h = F f(t_{n+1/2}) - grad V(x_m) - C v_m - G(x_m)^T lambda,
+//   (x_{n+1} - x_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   x_m = (x_n + x_{n+1}) / 2.
+// Second order; for a linear system it is the average-acceleration Newmark scheme
+// (the paper's). Because the constraints are quadratic, c(x_{n+1}) - c(x_n) =
+// G(x_m)(x_{n+1} - x_n) exactly, so the constraint forces do no work and the
+// constraints hold to round-off at every step; the energy balance error comes only
+// from the midpoint rule on the non-quadratic spring energy (O(h^2), no drift for
+// undamped runs). Offered for response.integrator = "newmark" and "energy-momentum"
+// (the same scheme; energy is conserved up to that O(h^2) spring term);
+// "generalized-alpha" is not offered (std::invalid_argument).
+// Damping: Rayleigh C = a M + b K0 (K0 the stiffness at rest) and hinge dampers c on
+// the turning rate, both at the midpoint velocity; the dissipated energy is summed.
+//
+// Cost: per Newton iteration one sparse LU (Eigen SparseLU, COLAMD) of the
+// (3n + supports) KKT matrix, whose pattern is banded plus the closing corners: O(n)
+// time and memory.
+#pragma once
+
+#include "ring/analysis.hpp"
+#include "ring/results.hpp"
+#include "ring/spec.hpp"
+
+namespace lumped {
+
+/// Static equilibrium of the chain under `statics.load` (full load). Requires a pin and a
+/// roller, the `chain` variant, and the load and record points on hinges.
+/// Throws std::invalid_argument for inputs that can never work and ring::NumericalError
+/// when no load step reaches the full load (a limit point: no arc-length here) or the
+/// ring touches itself.
+ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                const ring::StaticOptions& statics);
+
+/// Forced response from rest in the undeformed state (see above). Requires a pin, the
+/// `chain` variant, load and record points on hinges. Records every requested step as
+/// ring::TimeHistory (energies, constraint residual max |c_j|, Newton iterations, six
+/// snapshots). Throws ring::IntegrationFailure (with the history so far) when Newton
+/// fails at a step that cannot be halved further, a value is not finite, the ring
+/// touches itself, or the undamped energy balance error exceeds 1 % of the largest work.
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                          const ring::ResponseOptions& response);
+
+}  // namespace lumped
