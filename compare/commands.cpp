@@ -117,6 +117,30 @@ std::optional<std::string> single_solver(const std::string& option, const ring::
   return std::nullopt;
 }
 
+/// Writes a run's files into a fresh sibling folder, then publishes them into `dir` in
+/// place of the files an earlier run wrote there (output.hpp, publish_folder), so that a
+/// folder holds one run's files and an interrupted run leaves nothing half-written.
+template <class Write>
+void write_into(const std::string& dir, Write write) {
+  std::string base = dir;
+  while (base.size() > 1 && base.back() == '/') base.pop_back();
+  const std::string staging = base + ".tmp-" + std::to_string(getpid());
+  begin_staging(staging);
+  make_dirs(staging);
+  write(staging);
+  publish_folder(staging, base);
+}
+
+/// The scene asks for modes (a table, modes.solvers); commands that compare modes need them.
+bool modal(const ring::Scene& s) { return !s.modes.solvers.empty() || s.table.present; }
+
+void require_modes(const ring::Scene& s, const std::string& command) {
+  if (!modal(s))
+    throw ring::InputError(s.file, "modes",
+                           "`" + command + "` compares natural frequencies, and the scene asks for none (add a "
+                           "[modes] or [table] section, or a solver section without [response]/[static])");
+}
+
 Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
   Table t = build_table(s.title, r.columns, r.reference ? &*r.reference : nullptr, s.modes.count);
   bool gates_need_paper = false;
@@ -130,6 +154,7 @@ Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
 int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
               const std::string& vtu_dir) {
   const ring::Scene s = load(a);
+  if (!vtu_dir.empty()) check_output_dir(vtu_dir, "--vtu");
   const int k = count.value_or(s.modes.count);
   const SolverEntry& entry = cmp::solver(solver);
   if (!vtu_dir.empty() && !entry.write_vtu)
@@ -150,6 +175,7 @@ int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int>
 
 int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
   const ring::Scene s = load(a);
+  require_modes(s, "table");
   const Progress p(a.quiet);
   const Table t = make_table(s, compute_modal(s, p), paper);
   if (format == "md") std::cout << format_markdown(t);
@@ -162,13 +188,13 @@ int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
 int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper) {
   const ring::Scene s = load(a);
   const Progress p(a.quiet);
-  if (!out_dir.empty()) make_dirs(out_dir);
+  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
+  if (!junit.empty()) check_output_file(junit, "--junit", a.scene);
   RunReport rep;
   rep.scene = &s;
   int code = 0;
 
-  const bool modal = !s.modes.solvers.empty() || s.table.present;
-  if (modal) {
+  if (modal(s)) {
     const ModalRun r = compute_modal(s, p);
     rep.modal = r.columns;
     rep.reference = r.reference;
@@ -187,6 +213,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
     } catch (const ring::IntegrationFailure& e) {
       // Keep what was computed: the partial history goes into the report folder.
       if (out_dir.empty()) throw;
+      make_dirs(out_dir);
       keep_partial(e, out_dir + "/response" + (e.partial().solver.empty() ? "" : "_" + e.partial().solver) + ".csv");
     }
     // One solver prints what `respond`/`static` print; several (or a reference) the
@@ -219,7 +246,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
   if (!junit.empty()) write_file(junit, junit_xml(s.title.empty() ? a.scene : s.title, rep.gates));
   if (!out_dir.empty()) {
     p.say("writing the report, data and figures to " + out_dir);
-    write_report(out_dir, rep);
+    write_into(out_dir, [&](const std::string& dir) { write_report(dir, rep); });
     std::cout << "wrote " << out_dir << "/report.md\n";
   }
   return code;
@@ -228,6 +255,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
 int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format) {
   ring::Scene s = load(a);
   if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
+  if (!csv.empty()) check_output_file(csv, "--csv", a.scene);
   const Progress p(a.quiet);
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
   const auto one = single_solver(solver, s.response_request);
@@ -270,13 +298,14 @@ int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const 
 
 int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
+  require_modes(s, "converge");
   const Progress p(a.quiet);
-  if (!out_dir.empty()) make_dirs(out_dir);
+  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
   const ConvergenceStudy c = converge(s, compute_references(s, progress), progress);
   std::cout << convergence_text(c);
   if (!out_dir.empty()) {
-    write_convergence(out_dir, c);
+    write_into(out_dir, [&](const std::string& dir) { write_convergence(dir, c); });
     std::cout << "wrote " << out_dir << "/convergence.csv and convergence.png\n";
   }
   return 0;
@@ -284,26 +313,26 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
 
 int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
+  if (!modal(s) && !s.response && !s.statics)
+    throw ring::InputError(a.scene, "modes", "`bench` times modes, a [response] or a [static], and the scene has none");
   const Progress p(a.quiet);
-  if (!out_dir.empty()) make_dirs(out_dir);
+  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
   // The modal sweep for the solvers whose modes the scene lists, the nonlinear sweeps for
   // its [response] and [static].
-  const bool modal = !s.modes.solvers.empty() || s.table.present;
-  if (modal) {
-    const BenchStudy b = bench(s, compute_references(s, progress), progress);
-    std::cout << bench_text(b);
-    if (!out_dir.empty()) {
-      write_bench(out_dir, b);
-      std::cout << "wrote " << out_dir << "/bench.csv, bench.txt and bench.png\n";
-    }
+  std::optional<BenchStudy> modal_study;
+  if (modal(s)) {
+    modal_study = bench(s, compute_references(s, progress), progress);
+    std::cout << bench_text(*modal_study);
   }
-  for (const NonlinearBench& b : bench_nonlinear(s, progress)) {
-    std::cout << (modal ? "\n" : "") << bench_nonlinear_text(b);
-    if (!out_dir.empty()) {
-      write_bench_nonlinear(out_dir, b);
-      std::cout << "wrote " << out_dir << "/bench_" << b.analysis << ".csv, .txt and .png\n";
-    }
+  const std::vector<NonlinearBench> nonlinear = bench_nonlinear(s, progress);
+  for (const NonlinearBench& b : nonlinear) std::cout << (modal_study ? "\n" : "") << bench_nonlinear_text(b);
+  if (!out_dir.empty()) {
+    write_into(out_dir, [&](const std::string& dir) {
+      if (modal_study) write_bench(dir, *modal_study);
+      for (const NonlinearBench& b : nonlinear) write_bench_nonlinear(dir, b);
+    });
+    std::cout << "wrote " << out_dir << "/bench*.csv, .txt and .png\n";
   }
   return 0;
 }

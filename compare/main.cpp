@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "compare/commands.hpp"
+#include "compare/output.hpp"
 #include "compare/registry.hpp"
 #include "ring/errors.hpp"
 
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
   modes->add_option("--solver", solver, names)
       ->required()
       ->check(CLI::IsMember(cmp::solver_names()));
-  modes->add_option("--count", count, "number of elastic modes (default: modes.count)")->check(CLI::PositiveNumber);
+  modes->add_option("--count", count, "number of elastic modes (default: modes.count)")->check(CLI::Range(1, 100000));
   modes->add_flag("--json", json, "print JSON");
   modes->add_option("--vtu", vtu, "FE only: write the mode shapes as VTU files into this folder");
 
@@ -75,6 +76,22 @@ int main(int argc, char** argv) {
   add_common(bench, a);
   bench->add_option("--out", out, "folder for bench.csv, bench.txt and the log-log figure");
 
+  // An unknown subcommand is named, with the known ones (CLI11 alone says only that a
+  // subcommand is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string list;
+    for (const auto* sub : app.get_subcommands({})) {
+      known |= sub->get_name() == argv[1];
+      list += (list.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "ringvib: error: unknown subcommand '" << argv[1] << "'; expected one of " << list
+                << " (ringvib --help)\n";
+      return 2;
+    }
+  }
+  cmp::install_signal_cleanup();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,9 @@
 #include "compare/plot.hpp"
 
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <cmath>
 #include <cstdio>
@@ -12,12 +15,6 @@
 
 namespace cmp {
 namespace {
-
-std::string shell_quote(const std::string& s) {
-  std::string o = "'";
-  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return o + "'";
-}
 
 std::string gp_string(const std::string& s) {  // a gnuplot double-quoted string
   std::string o = "\"";
@@ -41,21 +38,69 @@ void render(const std::string& dir, const std::string& name, const std::string& 
      << script;
   write_file(dir + "/" + name + ".gp", gp.str());
   // gnuplot writes the PNG under a temporary name (the script on disk keeps its own
-  // output line; a piped copy is redirected), then the PNG is renamed into place.
+  // output line; the copy piped to gnuplot is redirected), then the PNG is renamed into
+  // place. gnuplot is our direct child, so that a signal handler can stop it
+  // (install_signal_cleanup) before removing its half-written PNG.
   const std::string tmp = name + ".png.tmp-" + std::to_string(getpid());
-  const std::string piped = "cd " + shell_quote(dir) + " && sed " +
-                            shell_quote("s|^set output '" + name + ".png'$|set output '" + tmp + "'|") + " " +
-                            shell_quote(name + ".gp") + " | gnuplot 2>&1";
-  FILE* p = popen(piped.c_str(), "r");
-  if (!p) throw std::runtime_error("cannot run gnuplot for " + name);
+  std::string piped = gp.str();
+  const std::string line = "set output '" + name + ".png'\n";
+  piped.replace(piped.find(line), line.size(), "set output '" + tmp + "'\n");
+  const std::string from = dir + "/" + tmp, to = dir + "/" + name + ".png";
+  register_temporary(from);
+  int in[2], out_pipe[2];
+  if (pipe(in) != 0) throw std::runtime_error("cannot run gnuplot for " + name);
+  if (pipe(out_pipe) != 0) {
+    close(in[0]);
+    close(in[1]);
+    throw std::runtime_error("cannot run gnuplot for " + name);
+  }
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(in[0], STDIN_FILENO);
+    dup2(out_pipe[1], STDOUT_FILENO);
+    dup2(out_pipe[1], STDERR_FILENO);
+    for (int fd : {in[0], in[1], out_pipe[0], out_pipe[1]}) close(fd);
+    if (chdir(dir.c_str()) != 0) _exit(126);
+    execlp("gnuplot", "gnuplot", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(in[0]);
+  close(out_pipe[1]);
+  if (pid < 0) {
+    close(in[1]);
+    close(out_pipe[0]);
+    release_temporary(from);
+    throw std::runtime_error("cannot run gnuplot for " + name);
+  }
+  register_child(pid);
+  // The script is a few KiB (the data is in NAME.dat): it fits the pipe's buffer.
+  for (std::size_t done = 0; done < piped.size();) {
+    const ssize_t n = write(in[1], piped.data() + done, piped.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  close(in[1]);
   std::string out;
   char buf[512];
-  while (std::fgets(buf, sizeof buf, p)) out += buf;
-  const int status = pclose(p);
-  const std::string from = dir + "/" + tmp, to = dir + "/" + name + ".png";
-  if (status != 0 || std::rename(from.c_str(), to.c_str()) != 0) {
+  for (ssize_t n; (n = read(out_pipe[0], buf, sizeof buf)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  close(out_pipe[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  register_child(0);
+  const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::rename(from.c_str(), to.c_str()) == 0;
+  if (ok) finished_file(to);
+  release_temporary(from);
+  if (!ok) {
     std::remove(from.c_str());
-    throw std::runtime_error("gnuplot failed for " + dir + "/" + name + ".gp: " + out);
+    throw std::runtime_error("gnuplot failed for " + dir + "/" + name + ".gp: " + (out.empty() ? "no output" : out));
   }
 }
 

@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include <sys/stat.h>
+
 #include <toml++/toml.h>
 
 #include "ring/errors.hpp"
@@ -18,6 +20,13 @@ namespace {
 
 using toml_input::Reader;
 using toml_input::fmt_num;
+
+/// Angular distance of two angles on the circle, degrees in [0, 180].
+double circular_distance(double a, double b) {
+  const double d = wrap_degrees(a - b);
+  return std::min(d, 360.0 - d);
+}
+
 
 
 Section read_section(const Reader& r, const toml::table& ring_t) {
@@ -223,7 +232,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     if (t->contains("roller")) {
       if (!s.ring.supports.pin) r.fail("supports.roller", t->get("roller"), "a roller needs a pin");
       s.ring.supports.roller = wrap_degrees(r.number(*t, "supports", "roller", 0.0, -360.0, 360.0));
-      if (std::abs(*s.ring.supports.roller - *s.ring.supports.pin) < 1e-9)
+      if (circular_distance(*s.ring.supports.roller, *s.ring.supports.pin) < 1e-6)
         r.fail("supports.roller", t->get("roller"), "the roller must be at a different angle from the pin");
     }
   }
@@ -307,7 +316,12 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     o.load = read_load(r, *t, sec, true);
     o.dt = r.number(*t, sec, "dt", 0.01, 0.0, HUGE_VAL, true);
     o.t_end = r.number(*t, sec, "t_end", 5.0, 0.0, HUGE_VAL, true);
-    if (o.t_end / o.dt > 1e8) r.fail("response.dt", t->get("dt"), "t_end/dt exceeds 1e8 steps");
+    if (o.dt > o.t_end)
+      r.fail(t->contains("dt") ? "response.dt" : "response.t_end", t->contains("dt") ? t->get("dt") : t->get("t_end"),
+             "the time step " + fmt_num(o.dt) + " s is longer than response.t_end = " + fmt_num(o.t_end) + " s");
+    if (o.t_end / o.dt > 1e8)
+      r.fail(t->contains("t_end") ? "response.t_end" : "response.dt", t->contains("t_end") ? t->get("t_end") : t->get("dt"),
+             "t_end/dt = " + fmt_num(o.t_end / o.dt) + " steps exceeds 1e8");
     const std::string integrator =
         r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha", "energy-momentum"});
     o.integrator = integrator == "newmark"             ? ResponseOptions::Integrator::newmark
@@ -336,7 +350,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     s.static_request = read_request(r, *t, sec, schema, &SolverSchema::statics);
   }
   for (const auto* opt : {s.response ? &s.response->load : nullptr, s.statics ? &s.statics->load : nullptr}) {
-    if (opt && s.ring.supports.pin && std::abs(wrap_degrees(opt->angle - *s.ring.supports.pin)) < 1e-9)
+    if (opt && s.ring.supports.pin && circular_distance(opt->angle, *s.ring.supports.pin) < 1e-6)
       r.fail(opt == (s.response ? &s.response->load : nullptr) ? "response.at" : "static.at", &root,
              "the load acts at the pin, where it does nothing; load another point");
   }
@@ -378,6 +392,24 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   return s;
 }
 
+/// The TOML parser recurses once per dotted-key part and per nested table or array, and
+/// overflows the stack somewhere past 20,000 levels: a line that nests or dots more than
+/// kMaxNesting times is refused before parsing (no scene comes near it).
+void check_nesting(const std::string& text, const std::string& name) {
+  std::size_t line = 1, count = 0;
+  for (char ch : text) {
+    if (ch == '\n') {
+      ++line;
+      count = 0;
+    } else if (ch == '.' || ch == '[' || ch == '{') {
+      if (++count > kMaxNesting)
+        throw InputError(name, "line " + std::to_string(line),
+                         "more than " + std::to_string(kMaxNesting) +
+                             " dotted-key parts or nested brackets on one line; a scene does not nest that deep");
+    }
+  }
+}
+
 /// Applies one "a.b.c=value" override to the parsed document.
 std::string apply_override(toml::table& root, const std::string& spec, const std::string& file) {
   const auto eq = spec.find('=');
@@ -385,11 +417,13 @@ std::string apply_override(toml::table& root, const std::string& spec, const std
     throw InputError(file, "--set " + spec, "expected section.key=value");
   const std::string path = spec.substr(0, eq), value = spec.substr(eq + 1);
   toml::table parsed;
+  if (value.find_first_of("\n\r") != std::string::npos)
+    throw InputError(file, "--set " + path, "the value spans several lines; give one key=value per --set");
   try {
     parsed = toml::parse("v = " + value);
   } catch (const toml::parse_error&) {
     // A bare word (--set lumped.variant=frame) is a string.
-    if (value.empty() || value.find_first_of("\"'[]{}=\n") != std::string::npos)
+    if (value.empty() || value.find_first_of("\"'[]{}=\n\r") != std::string::npos)
       throw InputError(file, "--set " + path, "the value '" + value + "' is not valid TOML");
     parsed.insert_or_assign("v", value);
   }
@@ -449,6 +483,7 @@ std::vector<std::string> SceneSchema::names() const {
 
 Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
                   const SceneSchema& schema) {
+  check_nesting(toml_text, name);
   toml::table root;
   try {
     root = toml::parse(toml_text, name);
@@ -469,12 +504,21 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema) {
+  struct stat st;
+  if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError(path, "", "is a folder; expected a scene file (TOML)");
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(path, "", "cannot read the scene file (missing or unreadable)");
-  std::stringstream s;
-  s << f.rdbuf();
+  // Read at most one byte past the limit: a scene larger than that (or an endless
+  // device) is refused instead of read.
+  std::string text(kMaxSceneBytes + 1, '\0');
+  f.read(&text[0], static_cast<std::streamsize>(text.size()));
   if (f.bad()) throw InputError(path, "", "cannot read the scene file");
-  return parse_scene(s.str(), path, overrides, schema);
+  text.resize(static_cast<std::size_t>(f.gcount()));
+  if (text.size() > kMaxSceneBytes)
+    throw InputError(path, "", "is larger than " + std::to_string(kMaxSceneBytes / 1024) +
+                                   " KiB; a scene is a short TOML file");
+  return parse_scene(text, path, overrides, schema);
 }
 
 }  // namespace ring

@@ -99,6 +99,10 @@ struct Scene {
   bool runs_nonlinear(const std::string& solver) const;
 };
 
+/// Largest scene file read (bytes), and the deepest nesting or dotting on one line.
+constexpr std::size_t kMaxSceneBytes = 1 << 20;
+constexpr std::size_t kMaxNesting = 1000;
+
 /// Reads and validates a scene against the known solvers. `overrides` are
 /// "section.key=value" with the value in TOML syntax (a bare word is taken as a string).
 /// Throws InputError naming the file and the key (exit code 2) on a missing file,
