@@ -1,0 +1,166 @@
+// The exit-code contract held against hostile but realistic use, through the binary:
+// every input problem is exit 2 naming the key or option, found before anything is
+// computed or written; a signal during the write phase leaves no temporary file; a
+// folder holds one run's files. The oracle is the README's contract ("Exit codes",
+// "What run --out DIR writes").
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "cli.hpp"
+#include "support/paper.hpp"
+
+using ringtest::ringvib;
+using ringtest::source;
+
+namespace {
+
+bool exists(const std::string& p) {
+  struct stat st;
+  return stat(p.c_str(), &st) == 0;
+}
+
+/// Files below `dir` whose name contains ".tmp-" (a temporary of ringvib's writers).
+std::string temporaries(const std::string& dir) {
+  const std::string cmd = "find " + dir + " -name '*.tmp-*' 2>/dev/null";
+  std::string out;
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+  }
+  return out;
+}
+
+void expect_input_error(const ringtest::Run& r, const std::string& names) {
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find(names), std::string::npos) << "message does not name " << names << ": " << r.err;
+}
+
+// Class 1: shipped scenes without modes used to crash `table` (SIGSEGV); a dotted key of
+// 50,000 parts overflowed the TOML parser's stack.
+TEST(Robustness, NoCrashOnScenesWithoutModesOrDeepNesting) {
+  for (const char* scene : {"scenes/paper1990-forced.toml", "scenes/paper1990-static.toml"}) {
+    expect_input_error(ringvib("table " + source(scene)), "modes");
+    expect_input_error(ringvib("table " + source(scene) + " --format csv"), "modes");
+    expect_input_error(ringvib("converge " + source(scene)), "modes");
+  }
+  const std::string dir = ringtest::temp_dir();
+  std::string deep = "a";
+  for (int i = 0; i < 50000; ++i) deep += ".a";
+  ringtest::write(dir + "/deep.toml", "[" + deep + "]\nx = 1\n");
+  expect_input_error(ringvib("run " + dir + "/deep.toml"), "line 1");
+  ringtest::write(dir + "/deep2.toml", deep + " = 1\n");
+  expect_input_error(ringvib("run " + dir + "/deep2.toml"), "line 1");
+}
+
+// Class 2: output paths are checked before the computation and named as the user gave
+// them; the scene is never overwritten.
+TEST(Robustness, OutputPathsCheckedUpFront) {
+  const std::string dir = ringtest::temp_dir();
+  const std::string scene = dir + "/forced.toml";
+  ringtest::write(scene, ringtest::source_text("scenes/paper1990-forced.toml"));
+  const std::string before = ringtest::source_text("scenes/paper1990-forced.toml");
+  expect_input_error(ringvib("run " + source("scenes/paper1990-multibody.toml") + " --junit /proc/x/j.xml"),
+                     "--junit /proc/x/j.xml");
+  expect_input_error(ringvib("run " + source("scenes/paper1990-multibody.toml") + " --junit " + dir), "--junit");
+  expect_input_error(ringvib("respond " + scene + " --csv " + dir), "--csv");
+  expect_input_error(ringvib("respond " + scene + " --csv " + dir + "/missing/x.csv"), "--csv");
+  expect_input_error(ringvib("respond " + scene + " --csv " + scene), "scene file itself");
+  std::ifstream f(scene);
+  std::stringstream now;
+  now << f.rdbuf();
+  EXPECT_EQ(now.str(), before);
+  ringtest::write(dir + "/afile", "x");
+  expect_input_error(ringvib("run " + source("scenes/paper1990-multibody.toml") + " --out " + dir + "/afile/out"),
+                     "--out");
+  expect_input_error(ringvib("run " + source("scenes/paper1990-multibody.toml") + " --out /proc/x"), "--out");
+  EXPECT_FALSE(exists(dir + "/afile/out"));
+}
+
+// Class 3: input errors that used to be found late, inside a solver, or not at all.
+TEST(Robustness, InputErrorsNameTheSceneKey) {
+  const std::string forced = source("scenes/paper1990-forced.toml");
+  const std::string dir = ringtest::temp_dir();
+  expect_input_error(ringvib("run " + forced + " --out " + dir + "/o --set response.dt=10"), "response.dt");
+  EXPECT_FALSE(exists(dir + "/o"));  // nothing created
+  expect_input_error(ringvib("run " + forced + " --set response.t_end=1e9"), "response.t_end");
+  expect_input_error(ringvib("run " + forced + " --set supports.roller=179.999999999999"), "supports.roller");
+  expect_input_error(ringvib("run " + forced + " --set response.at=179.999999999999"), "response.at");
+  expect_input_error(ringvib("run " + forced + " --set response.at=-180.000000000001"), "response.at");
+  expect_input_error(ringvib("run " + dir), "folder");
+  expect_input_error(ringvib("run /dev/zero"), "larger than");
+  expect_input_error(ringvib("frobnicate " + forced), "unknown subcommand 'frobnicate'");
+  const auto count = ringvib("modes " + source("scenes/paper1990-multibody.toml") + " --solver multibody --count 0");
+  EXPECT_EQ(count.code, 2);
+  EXPECT_LT(count.err.size(), 200u) << count.err;  // no 309-digit DBL_MAX
+  expect_input_error(ringvib("run " + forced + " --set 'ring.radius=20\nbogus=1'"), "--set ring.radius");
+}
+
+// Class 5: a re-run replaces the earlier run's files (and keeps the user's own).
+TEST(Robustness, AFolderHoldsOneRunsFiles) {
+  const std::string out = ringtest::temp_dir() + "/out";
+  ASSERT_EQ(ringvib("run " + source("scenes/paper1990-static.toml") + " --out " + out).code, 0);
+  EXPECT_TRUE(exists(out + "/static.json"));
+  ringtest::write(out + "/notes.txt", "mine");
+  ASSERT_EQ(ringvib("run " + source("scenes/paper1990-multibody.toml") + " --out " + out).code, 0);
+  EXPECT_FALSE(exists(out + "/static.json"));
+  EXPECT_FALSE(exists(out + "/static_shapes.png"));
+  EXPECT_TRUE(exists(out + "/table.csv"));
+  EXPECT_TRUE(exists(out + "/notes.txt"));
+  EXPECT_EQ(temporaries(out + "/.."), "");
+}
+
+// Class 5: SIGTERM while the figures are written (a PNG being rendered) leaves no
+// temporary file or staging folder, and the run dies of the signal.
+TEST(Robustness, SignalDuringTheWritePhaseLeavesNoTemporary) {
+  const std::string base = ringtest::temp_dir();
+  int caught = 0;
+  for (int attempt = 0; attempt < 10 && caught < 2; ++attempt) {
+    const std::string out = base + "/run" + std::to_string(attempt);
+    const pid_t pid = fork();
+    if (pid == 0) {
+      const int null = open("/dev/null", O_WRONLY);
+      dup2(null, STDOUT_FILENO);
+      dup2(null, STDERR_FILENO);
+      const std::string scene = source("scenes/paper1990-forced.toml");
+      execl(ringtest::ringvib_path().c_str(), "ringvib", "run", scene.c_str(), "--out", out.c_str(), "-q",
+            static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    // Wait for a PNG under construction, then stop the run.
+    bool killed = false;
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < std::chrono::seconds(20)) {
+      if (temporaries(base).find(".png.tmp-") != std::string::npos) {
+        kill(pid, SIGTERM);
+        killed = true;
+        break;
+      }
+      int st = 0;
+      if (waitpid(pid, &st, WNOHANG) == pid) break;  // finished before we caught it
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!killed) continue;
+    ++caught;
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+    EXPECT_EQ(temporaries(base), "");
+    EXPECT_FALSE(exists(out));  // never published
+  }
+  EXPECT_GE(caught, 1) << "the write phase was never caught in 10 runs";
+}
+
+}  // namespace
