@@ -14,6 +14,7 @@
 #include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
 #include "compare/gates.hpp"
+#include "compare/guard.hpp"
 #include "compare/nonlinear.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
@@ -42,6 +43,7 @@ class Progress {
 
 ring::Scene load(const CommonArgs& a) {
   ring::Scene s = load_scene(a.scene, a.set);
+  check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
 }

@@ -13,6 +13,8 @@ struct CommonArgs {
   std::string scene;
   std::vector<std::string> set;  ///< --set section.key=value
   bool quiet = false;            ///< no progress on stderr
+  double max_memory_gib = 8.0;   ///< --max-memory: the cost guard's budget
+  bool force = false;            ///< --force: skip the cost guard
 };
 
 int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper);

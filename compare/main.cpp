@@ -17,6 +17,9 @@ void add_common(CLI::App* c, cmp::CommonArgs& a) {
   c->add_option("scene", a.scene, "scene file (TOML)")->required();
   c->add_option("--set", a.set, "override a scene key: section.key=value (value in TOML syntax)");
   c->add_flag("-q,--quiet", a.quiet, "no progress messages on stderr");
+  c->add_option("--max-memory", a.max_memory_gib, "cost guard: refuse scenes estimated to need more (GiB, default 8)")
+      ->check(CLI::PositiveNumber);
+  c->add_flag("--force", a.force, "skip the cost guard");
 }
 
 }  // namespace

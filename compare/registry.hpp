@@ -42,6 +42,9 @@ struct SolverEntry {
   std::function<std::vector<std::pair<std::string, ring::Scene>>(const ring::Scene&, int modes)> bench_sweep;
   int converge_steps = 5;      ///< refinements size x 1, 2, 4, ... in `ringvib converge`
   bool richardson = false;     ///< add a Richardson column (order 2) in convergence and bench
+  /// Estimated peak memory (bytes) of `count` modes (count 0: the nonlinear solves) under
+  /// the scene's options, for the cost guard (guard.hpp); calibrated in the README.
+  std::function<double(const ring::Scene&, int count)> memory;
   /// Its column of the paper's Table 1 (corrected values), if it has one.
   std::function<std::optional<double>(const ring::PaperRow&)> paper;
 

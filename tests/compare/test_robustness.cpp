@@ -108,6 +108,21 @@ TEST(Robustness, InputErrorsNameTheSceneKey) {
   expect_input_error(ringvib("run " + forced + " --set 'ring.radius=20\nbogus=1'"), "--set ring.radius");
 }
 
+// Class 4: the cost guard refuses what no machine this runs on can finish, naming the
+// key and the estimate, before any solve; --max-memory and --force move the budget.
+TEST(Robustness, CostGuardRefusesAbsurdRequests) {
+  const std::string mb = source("scenes/paper1990-multibody.toml");
+  expect_input_error(ringvib("modes " + mb + " --solver multibody --set multibody.n=100000000"), "multibody.n");
+  expect_input_error(ringvib("modes " + mb + " --solver multibody --set multibody.n=20000 --set multibody.method=dense"),
+                     "GiB");
+  expect_input_error(ringvib("run " + source("scenes/paper1990-forced.toml") +
+                             " --set response.dt=1e-7 --set response.t_end=9"),
+                     "response.t_end");
+  // A small budget refuses even the paper's n = 40; --force goes ahead.
+  expect_input_error(ringvib("modes " + mb + " --solver multibody --max-memory 1e-6"), "--max-memory");
+  EXPECT_EQ(ringvib("modes " + mb + " --solver multibody --max-memory 1e-6 --force").code, 0);
+}
+
 // Class 5: a re-run replaces the earlier run's files (and keeps the user's own).
 TEST(Robustness, AFolderHoldsOneRunsFiles) {
   const std::string out = ringtest::temp_dir() + "/out";
