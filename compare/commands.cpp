@@ -26,6 +26,20 @@
 #include "ring/scene.hpp"
 
 namespace cmp {
+
+/// The solvers whose modes the scene asks for, in column order: the scene's [table]
+/// (base, then against), then any other solver of modes.solvers.
+std::vector<std::string> table_solvers(const ring::Scene& s) {
+  std::vector<std::string> v;
+  if (s.table.present) {
+    v.push_back(s.table.base);
+    for (const auto& o : s.table.against) v.push_back(o);
+  }
+  for (const auto& o : s.modes.solvers)
+    if (std::find(v.begin(), v.end(), o) == v.end()) v.push_back(o);
+  return v;
+}
+
 namespace {
 
 /// Progress on stderr, only on a terminal and without --quiet.
@@ -46,19 +60,6 @@ ring::Scene load(const CommonArgs& a) {
   check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
-}
-
-/// The solvers whose modes the scene asks for, in column order: the scene's [table]
-/// (base, then against), then any other solver of modes.solvers.
-std::vector<std::string> table_solvers(const ring::Scene& s) {
-  std::vector<std::string> v;
-  if (s.table.present) {
-    v.push_back(s.table.base);
-    for (const auto& o : s.table.against) v.push_back(o);
-  }
-  for (const auto& o : s.modes.solvers)
-    if (std::find(v.begin(), v.end(), o) == v.end()) v.push_back(o);
-  return v;
 }
 
 /// Everything modal the scene needs, each solver computed once.

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "ring/scene.hpp"
+
 namespace cmp {
 
 struct CommonArgs {
@@ -16,6 +18,10 @@ struct CommonArgs {
   double max_memory_gib = 8.0;   ///< --max-memory: the cost guard's budget
   bool force = false;            ///< --force: skip the cost guard
 };
+
+/// The solvers whose modes the scene asks for, in table column order: the scene's
+/// [table] (base, then against), then any other solver of modes.solvers.
+std::vector<std::string> table_solvers(const ring::Scene& s);
 
 int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper);
 int cmd_table(const CommonArgs& a, bool paper, const std::string& format);

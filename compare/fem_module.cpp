@@ -70,7 +70,13 @@ void check(int status, const std::string& error) {
 
 }  // namespace
 
+// ARPACK keeps its state in Fortran SAVE variables and deal.II's solvers are not meant
+// to be entered from several threads at once: one FE solve at a time per process
+// (a threaded `ringvib sweep` runs its other solvers in parallel around it).
+std::mutex g_solve;
+
 ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count) {
+  std::lock_guard<std::mutex> lock(g_solve);
   ring::ModalResult out;
   std::string error;
   check(fem_plugin().modes(spec, options, count, out, error), error);
@@ -78,6 +84,7 @@ ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& opti
 }
 
 void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir) {
+  std::lock_guard<std::mutex> lock(g_solve);
   std::string error;
   check(fem_plugin().write_vtu(spec, options, count, dir, error), error);
 }

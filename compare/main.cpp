@@ -9,6 +9,7 @@
 #include "compare/commands.hpp"
 #include "compare/output.hpp"
 #include "compare/registry.hpp"
+#include "compare/sweep.hpp"
 #include "ring/errors.hpp"
 
 namespace {
@@ -79,6 +80,16 @@ int main(int argc, char** argv) {
   add_common(bench, a);
   bench->add_option("--out", out, "folder for bench.csv, bench.txt and the log-log figure");
 
+  auto* sweep = app.add_subcommand("sweep", "the scene over many --vary values, on all cores or under mpirun");
+  add_common(sweep, a);
+  cmp::SweepArgs sw;
+  sweep->add_option("--vary", sw.vary, "KEY=[v1, v2, ...] (values in TOML syntax); several: all combinations")
+      ->required();
+  sweep->add_flag("--zip", sw.zip, "the --vary lists in lockstep instead of all combinations");
+  sweep->add_option("--out", sw.out, "folder for sweep.csv, sweep.json, sweep.md and sweep.png (default: CSV on stdout)");
+  sweep->add_flag("--resume", sw.resume, "skip the cases already in --out DIR/sweep.csv with status ok");
+  sweep->add_option("-j,--jobs", sw.jobs, "threads (default: all cores)")->check(CLI::Range(1, 1024));
+
   // An unknown subcommand is named, with the known ones (CLI11 alone says only that a
   // subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {
@@ -110,6 +121,7 @@ int main(int argc, char** argv) {
     if (*statics) return cmp::cmd_static(a, json, solver, format);
     if (*converge) return cmp::cmd_converge(a, out);
     if (*bench) return cmp::cmd_bench(a, out);
+    if (*sweep) return cmp::cmd_sweep(a, sw, argc, argv);
   } catch (const ring::InputError& e) {
     std::cerr << "ringvib: error: " << e.what() << "\n";
     return 2;

@@ -1,0 +1,460 @@
+#include "compare/sweep.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/guard.hpp"
+#include "compare/nonlinear.hpp"
+#include "compare/output.hpp"
+#include "compare/plot.hpp"
+#include "compare/registry.hpp"
+#include "compare/sweep_mpi.hpp"
+#include "compare/table.hpp"
+#include "ring/errors.hpp"
+
+namespace cmp {
+namespace {
+
+/// Splits the inside of a TOML array at its top-level commas (quotes, brackets and
+/// braces nest).
+std::vector<std::string> split_array(const std::string& text, const std::string& option) {
+  std::string t = text;
+  auto trim = [](std::string s) {
+    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+  };
+  t = trim(t);
+  if (t.size() < 2 || t.front() != '[' || t.back() != ']')
+    throw ring::InputError("", "--vary " + option, "expected KEY=[v1, v2, ...] (a TOML array of values)");
+  std::vector<std::string> items;
+  std::string cur;
+  int depth = 0;
+  char quote = 0;
+  for (std::size_t i = 1; i + 1 < t.size(); ++i) {
+    const char c = t[i];
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    } else if (c == ',' && depth == 0) {
+      items.push_back(trim(cur));
+      cur.clear();
+      continue;
+    }
+    cur += c;
+  }
+  if (!trim(cur).empty()) items.push_back(trim(cur));
+  if (items.empty() || std::any_of(items.begin(), items.end(), [](const std::string& s) { return s.empty(); }))
+    throw ring::InputError("", "--vary " + option, "expected a non-empty list of values, none of them empty");
+  return items;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char c : s) o += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return o + "\"";
+}
+
+std::vector<std::string> csv_split(const std::string& line) {
+  std::vector<std::string> f;
+  std::string cur;
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cur += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cur += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      f.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  f.push_back(cur);
+  return f;
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+nlohmann::json row_json(const SweepRow& r) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  return {{"case", r.index},     {"values", r.values},   {"solver", r.solver},   {"analysis", r.analysis},
+          {"quantity", r.quantity}, {"value", num(r.value)}, {"error_pct", num(r.error_pct)},
+          {"unknowns", r.unknowns}, {"seconds", r.seconds}, {"status", r.status}, {"message", r.message}};
+}
+
+SweepRow row_from_json(const nlohmann::json& j) {
+  SweepRow r;
+  r.index = j["case"];
+  r.values = j["values"].get<std::vector<std::string>>();
+  r.solver = j["solver"];
+  r.analysis = j["analysis"];
+  r.quantity = j["quantity"];
+  r.value = j["value"].is_null() ? NAN : j["value"].get<double>();
+  r.error_pct = j["error_pct"].is_null() ? NAN : j["error_pct"].get<double>();
+  r.unknowns = j["unknowns"];
+  r.seconds = j["seconds"];
+  r.status = j["status"];
+  r.message = j["message"];
+  return r;
+}
+
+/// Rows already in `file` (a sweep.csv of the same keys) with status ok, by their values.
+std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(const std::string& file,
+                                                                     const std::vector<std::string>& keys) {
+  std::map<std::vector<std::string>, std::vector<SweepRow>> done;
+  std::ifstream f(file);
+  std::string line;
+  if (!std::getline(f, line)) return done;
+  const auto head = csv_split(line);
+  const std::size_t k = keys.size();
+  if (head.size() != k + 10 || !std::equal(keys.begin(), keys.end(), head.begin() + 1))
+    throw ring::InputError("", "--resume " + file, "was written by a sweep over other keys");
+  std::set<std::vector<std::string>> failed;
+  while (std::getline(f, line)) {
+    const auto x = csv_split(line);
+    if (x.size() != head.size()) continue;
+    SweepRow r;
+    r.index = std::atoi(x[0].c_str());
+    r.values.assign(x.begin() + 1, x.begin() + 1 + k);
+    r.solver = x[k + 1];
+    r.analysis = x[k + 2];
+    r.quantity = x[k + 3];
+    r.value = x[k + 4].empty() ? NAN : std::stod(x[k + 4]);
+    r.error_pct = x[k + 5].empty() ? NAN : std::stod(x[k + 5]);
+    r.unknowns = std::atoll(x[k + 6].c_str());
+    r.seconds = std::atof(x[k + 7].c_str());
+    r.status = x[k + 8];
+    r.message = x[k + 9];
+    if (r.status != "ok") failed.insert(r.values);
+    done[r.values].push_back(r);
+  }
+  for (const auto& v : failed) done.erase(v);
+  return done;
+}
+
+/// The solvers whose modes the scene asks for, in table order.
+std::vector<ring::ModalResult> modal_columns(const ring::Scene& s) {
+  std::vector<ring::ModalResult> v;
+  for (const auto& name : table_solvers(s)) v.push_back(solve_modes(s, name, s.modes.count));
+  return v;
+}
+
+bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
+  // Against the first varied key (when its values are numbers): per solver and per
+  // combination of the other keys, the max |error| over the case's rows (or, without a
+  // reference, the first row's value).
+  std::map<std::string, Series> curves;
+  std::map<std::pair<int, std::string>, std::pair<double, double>> per_case;  // (case, solver) -> (x, y)
+  bool any_error = false;
+  for (const auto& r : rows) any_error |= r.status == "ok" && std::isfinite(r.error_pct);
+  for (const auto& r : rows) {
+    if (r.status != "ok" || r.values.empty()) continue;
+    char* end = nullptr;
+    const double x = std::strtod(r.values[0].c_str(), &end);
+    if (end == r.values[0].c_str() || *end) return false;  // not a number: no figure
+    const double y = any_error ? std::abs(r.error_pct) : r.value;
+    auto key = std::make_pair(r.index, r.solver);
+    auto it = per_case.find(key);
+    if (it == per_case.end()) per_case[key] = {x, y};
+    else if (any_error) it->second.second = std::max(it->second.second, y);
+    std::string label = r.solver;
+    for (std::size_t i = 1; i < keys.size(); ++i) label += ", " + keys[i] + " = " + r.values[i];
+    curves[label].name = label;
+  }
+  for (const auto& [key, xy] : per_case) {
+    const auto& r = *std::find_if(rows.begin(), rows.end(), [&](const SweepRow& x) {
+      return x.index == key.first && x.solver == key.second;
+    });
+    std::string label = r.solver;
+    for (std::size_t i = 1; i < keys.size(); ++i) label += ", " + keys[i] + " = " + r.values[i];
+    curves[label].x.push_back(xy.first);
+    curves[label].y.push_back(xy.second);
+  }
+  std::vector<Series> plot;
+  bool positive = true;
+  for (auto& [label, s] : curves) {
+    plot.push_back(s);
+    for (double x : s.x) positive &= x > 0;
+  }
+  if (plot.empty()) return false;
+  plot_series(dir, "sweep",
+              any_error ? "Largest |error| against the reference, per case" : "First value of each case",
+              keys[0], any_error ? "max |error| (%)" : "value", plot, positive, any_error);
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
+                                                  std::vector<std::string>& keys) {
+  if (vary.empty()) throw ring::InputError("", "--vary", "expected at least one --vary KEY=[v1, v2, ...]");
+  std::vector<std::vector<std::string>> lists;
+  keys.clear();
+  for (const auto& v : vary) {
+    const auto eq = v.find('=');
+    if (eq == std::string::npos || eq == 0) throw ring::InputError("", "--vary " + v, "expected KEY=[v1, v2, ...]");
+    keys.push_back(v.substr(0, eq));
+    lists.push_back(split_array(v.substr(eq + 1), keys.back()));
+  }
+  std::vector<std::vector<std::string>> cases;
+  if (zip) {
+    for (const auto& l : lists)
+      if (l.size() != lists[0].size())
+        throw ring::InputError("", "--zip", "the --vary lists must have equal lengths (" + keys[0] + ": " +
+                                                std::to_string(lists[0].size()) + " values)");
+    for (std::size_t i = 0; i < lists[0].size(); ++i) {
+      std::vector<std::string> c;
+      for (std::size_t k = 0; k < keys.size(); ++k) c.push_back(lists[k][i]);
+      cases.push_back(c);
+    }
+    return cases;
+  }
+  cases.push_back({});
+  for (const auto& l : lists) {  // the first key varies slowest
+    std::vector<std::vector<std::string>> next;
+    for (const auto& c : cases)
+      for (const auto& v : l) {
+        auto d = c;
+        d.push_back(v);
+        next.push_back(d);
+      }
+    cases = std::move(next);
+  }
+  return cases;
+}
+
+std::vector<SweepRow> run_case(const CommonArgs& a, int index, const std::vector<std::string>& overrides,
+                               const std::vector<std::string>& values) {
+  std::vector<SweepRow> rows;
+  auto row = [&]() {
+    SweepRow r;
+    r.index = index;
+    r.values = values;
+    r.value = NAN;
+    r.error_pct = NAN;
+    return r;
+  };
+  try {
+    std::vector<std::string> set = a.set;
+    set.insert(set.end(), overrides.begin(), overrides.end());
+    const ring::Scene s = load_scene(a.scene, set);
+    check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
+    if (!s.modes.solvers.empty() || s.table.present) {
+      const std::vector<ring::ModalResult> columns = modal_columns(s);
+      std::optional<ring::ModalResult> reference;
+      if (s.needs_reference()) reference = reference_modes(s, s.modes.count);
+      const Table t = build_table(s.title, columns, reference ? &*reference : nullptr, s.modes.count);
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        for (int i = 0; i < t.rows; ++i) {
+          SweepRow r = row();
+          r.solver = columns[c].solver;
+          r.analysis = "modes";
+          r.quantity = "mode " + std::to_string(i + 1);
+          r.value = t.columns[c].omega[i];
+          if (reference) r.error_pct = t.columns[c].error_pct[i];
+          r.unknowns = columns[c].unknowns;
+          r.seconds = columns[c].seconds;
+          rows.push_back(r);
+        }
+    }
+    if (s.response || s.statics) {
+      const NonlinearRun nl = run_nonlinear(s);
+      auto add = [&](const NonlinearTable& t, const std::string& quantity, auto& results) {
+        for (const auto& tr : t.rows) {
+          if (tr.quantity != quantity) continue;
+          for (std::size_t c = 0; c < tr.value.size(); ++c) {
+            SweepRow r = row();
+            r.solver = t.solvers[c];
+            r.analysis = t.analysis;
+            r.quantity = quantity + " at " + sig4(tr.angle) + " deg";
+            r.value = tr.value[c];
+            if (tr.reference) r.error_pct = tr.error_pct[c];
+            r.unknowns = results[c].unknowns;
+            r.seconds = results[c].seconds;
+            rows.push_back(r);
+          }
+        }
+      };
+      if (!nl.histories.empty())
+        add(response_table(s.title, nl.histories, nl.history_reference ? &*nl.history_reference : nullptr), "peak_u",
+            nl.histories);
+      if (!nl.statics.empty())
+        add(static_table(s.title, nl.statics, nl.static_reference ? &*nl.static_reference : nullptr), "u", nl.statics);
+    }
+  } catch (const ring::InputError& e) {
+    rows.clear();
+    SweepRow r = row();
+    r.status = "input-error";
+    r.message = e.what();
+    rows.push_back(r);
+  } catch (const std::exception& e) {
+    rows.clear();
+    SweepRow r = row();
+    r.status = "numerical-failure";
+    r.message = e.what();
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::string sweep_csv(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
+  std::ostringstream s;
+  s << "case";
+  for (const auto& k : keys) s << "," << csv_field(k);
+  s << ",solver,analysis,quantity,value,error_pct,unknowns,seconds,status,message\n";
+  for (const auto& r : rows) {
+    s << r.index;
+    for (const auto& v : r.values) s << "," << csv_field(v);
+    s << "," << r.solver << "," << r.analysis << "," << csv_field(r.quantity) << "," << number(r.value) << ","
+      << number(r.error_pct) << "," << r.unknowns << "," << number(r.seconds) << "," << r.status << ","
+      << csv_field(r.message) << "\n";
+  }
+  return s.str();
+}
+
+std::string sweep_json(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
+  nlohmann::json j;
+  j["keys"] = keys;
+  j["rows"] = nlohmann::json::array();
+  for (const auto& r : rows) j["rows"].push_back(row_json(r));
+  return j.dump(2) + "\n";
+}
+
+int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int ranks = mpi::launched_size();
+  if (ranks > 1 && !mpi::built()) {
+    // Every rank would run the whole sweep: only the first does, and says why.
+    if (mpi::launched_rank() != 0) return 0;
+    std::cerr << "ringvib: note: this ringvib was built without MPI; rank 0 runs the whole sweep alone\n";
+  }
+  const bool distributed = ranks > 1 && mpi::built();
+  const bool root = !distributed || mpi::launched_rank() == 0;
+
+  // Everything is checked before anything runs: the cases, each case's scene, the outputs.
+  std::vector<std::string> keys;
+  const auto cases = sweep_cases(args.vary, args.zip, keys);
+  std::vector<std::vector<std::string>> overrides;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::vector<std::string> o;
+    for (std::size_t k = 0; k < keys.size(); ++k) o.push_back(keys[k] + "=" + cases[i][k]);
+    std::vector<std::string> set = a.set;
+    set.insert(set.end(), o.begin(), o.end());
+    try {
+      check_cost(load_scene(a.scene, set), Budget{a.max_memory_gib * double(1ull << 30), a.force});
+    } catch (const ring::InputError& e) {
+      std::string which;
+      for (const auto& x : o) which += (which.empty() ? "" : ", ") + x;
+      throw ring::InputError("", "--vary case " + std::to_string(i) + " (" + which + ")", e.what());
+    }
+    overrides.push_back(o);
+  }
+  if (!args.out.empty()) check_output_dir(args.out, "--out");
+  if (args.resume && args.out.empty()) throw ring::InputError("", "--resume", "needs --out DIR (the sweep to resume)");
+  std::map<std::vector<std::string>, std::vector<SweepRow>> done;
+  if (args.resume) done = done_cases(args.out + "/sweep.csv", keys);
+  std::vector<int> todo;
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    if (!done.count(cases[i])) todo.push_back(static_cast<int>(i));
+
+  const bool progress = root && !a.quiet && isatty(STDERR_FILENO);
+  std::atomic<int> finished{0}, failed{0};
+  auto run = [&](int i) {
+    auto rows = run_case(a, i, overrides[i], cases[i]);
+    if (rows.size() == 1 && rows[0].status != "ok") ++failed;
+    const int f = ++finished;
+    if (progress) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double left = elapsed / f * (static_cast<double>(todo.size()) - f);
+      std::fprintf(stderr, "\rringvib: sweep %d/%zu cases done, %d failed, about %.0f s left   ", f, todo.size(),
+                   failed.load(), left);
+    }
+    return rows;
+  };
+  std::vector<std::vector<SweepRow>> results(cases.size());
+  if (distributed) {
+    std::vector<std::string> texts;
+    const auto serialize = [&](int k) {
+      nlohmann::json j = nlohmann::json::array();
+      for (const auto& r : run(todo[k])) j.push_back(row_json(r));
+      return j.dump();
+    };
+    if (!mpi::distribute(argc, argv, static_cast<int>(todo.size()), serialize, texts)) return 0;
+    for (std::size_t k = 0; k < todo.size(); ++k)
+      for (const auto& j : nlohmann::json::parse(texts[k])) results[todo[k]].push_back(row_from_json(j));
+  } else {
+    const int jobs = args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    std::atomic<std::size_t> next{0};
+    std::vector<std::thread> pool;
+    for (int w = 0; w < std::min<int>(jobs, static_cast<int>(todo.size())); ++w)
+      pool.emplace_back([&] {
+        for (std::size_t k; (k = next++) < todo.size();) results[todo[k]] = run(todo[k]);
+      });
+    for (auto& t : pool) t.join();
+  }
+  if (progress) std::fprintf(stderr, "\n");
+
+  std::vector<SweepRow> rows;
+  int all_failed_numerically = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto& r = done.count(cases[i]) ? done[cases[i]] : results[i];
+    if (r.size() == 1 && r[0].status == "numerical-failure") ++all_failed_numerically;
+    rows.insert(rows.end(), r.begin(), r.end());
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (args.out.empty()) {
+    std::cout << sweep_csv(keys, rows);
+  } else {
+    make_dirs(args.out);
+    write_file(args.out + "/sweep.csv", sweep_csv(keys, rows));
+    write_file(args.out + "/sweep.json", sweep_json(keys, rows));
+    std::ostringstream md;
+    md << "# Sweep of " << a.scene << "\n\n" << cases.size() << " cases over";
+    for (const auto& k : keys) md << " `" << k << "`";
+    md << (args.zip ? " (in lockstep)" : " (all combinations)") << "; " << todo.size() << " run here, "
+       << cases.size() - todo.size() << " kept from an earlier run; " << failed.load() << " failed.\n\n"
+       << "Data: `sweep.csv`, `sweep.json` (one row per case x solver x mode or recorded point).\n";
+    if (plot_sweep(args.out, keys, rows)) md << "\n![sweep](sweep.png)\n";
+    write_file(args.out + "/sweep.md", md.str());
+  }
+  std::cerr << "ringvib: sweep: " << cases.size() << " cases, " << todo.size() << " run, "
+            << cases.size() - todo.size() << " resumed, " << failed.load() << " failed, in " << sig4(wall) << " s on "
+            << (distributed ? std::to_string(ranks) + " MPI ranks" : "1 process") << "\n";
+  return !cases.empty() && all_failed_numerically == static_cast<int>(cases.size()) ? 3 : 0;
+}
+
+}  // namespace cmp

@@ -1,0 +1,61 @@
+// `ringvib sweep`: one scene run over many variations of its keys, for method research.
+// Each case is the scene with `--set` overrides; every case is validated before any
+// runs; the cases run on all cores (threads), or across machines under MPI (dynamic
+// distribution from rank 0); the rows come out in case order whatever the schedule, so a
+// serial run, a threaded run and an MPI run write the same table apart from timings.
+//
+// Usage:
+//   ringvib sweep scenes/sweep-thickness.toml --vary multibody.n=[20,40,80]
+//       --vary 'ring.section=[{diameter=0.01}, {diameter=0.1}]' --out out/sweep
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compare/commands.hpp"
+
+namespace cmp {
+
+struct SweepArgs {
+  std::vector<std::string> vary;  ///< "key=[v1, v2, ...]" (values in TOML syntax)
+  bool zip = false;               ///< lists in lockstep instead of their product
+  std::string out;                ///< folder for sweep.csv, sweep.json, sweep.md, sweep.png
+  bool resume = false;            ///< skip the cases already in out/sweep.csv with status ok
+  int jobs = 0;                   ///< threads (0: all cores; under MPI: per rank, default 1)
+};
+
+/// One row of the sweep's table. `values` are the varied keys' values, as given.
+struct SweepRow {
+  int index = 0;                       ///< case number, 0-based, in product (or zip) order
+  std::vector<std::string> values;
+  std::string solver;                  ///< "multibody", ..., or "" for a case that failed before
+  std::string analysis;                ///< "modes", "response", "static"
+  std::string quantity;                ///< "mode 3", "peak_u at 0 deg", "u at 90 deg"
+  double value = 0.0;                  ///< omega (rad/s) or displacement (m)
+  double error_pct = 0.0;              ///< against the reference; NaN without one
+  long long unknowns = 0;
+  double seconds = 0.0;
+  std::string status = "ok";           ///< "ok", "input-error", "numerical-failure"
+  std::string message;
+};
+
+/// The cases of the --vary lists: each a list of "key=value" overrides. Throws
+/// ring::InputError for a malformed --vary, or lists of different lengths with zip.
+std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
+                                                  std::vector<std::string>& keys);
+
+/// Runs one case: every analysis the scene lists, as rows. A case that fails is one
+/// row with its status and message; it never throws.
+std::vector<SweepRow> run_case(const CommonArgs& a, int index, const std::vector<std::string>& overrides,
+                               const std::vector<std::string>& values);
+
+/// The table as CSV (header: case, the varied keys, solver, analysis, quantity, value,
+/// error_pct, unknowns, seconds, status, message) and as JSON ({"keys", "rows": [...]}).
+std::string sweep_csv(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
+std::string sweep_json(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
+
+/// The subcommand. Exit 0 when the sweep completes (failed cases are rows), 3 when every
+/// case failed numerically, 2 for bad input (before anything runs).
+int cmd_sweep(const CommonArgs& a, const SweepArgs& s, int argc, char** argv);
+
+}  // namespace cmp
