@@ -1,5 +1,6 @@
 #include "compare/sweep_mpi.hpp"
 
+#include <chrono>
 #include <cstdlib>
 #include <mutex>
 #include <thread>
@@ -79,8 +80,14 @@ bool distribute(int argc, char** argv, int n, const std::function<std::string(in
   });
   int active = size - 1;
   while (active > 0) {
+    // Poll rather than block: Open MPI's blocking probe spins a core, which the local
+    // worker thread needs.
     MPI_Status st;
-    MPI_Probe(MPI_ANY_SOURCE, kRequest, MPI_COMM_WORLD, &st);
+    for (int flag = 0;;) {
+      MPI_Iprobe(MPI_ANY_SOURCE, kRequest, MPI_COMM_WORLD, &flag, &st);
+      if (flag) break;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
     const std::string msg = receive_text(st);
     const auto nl = msg.find('\n');
     const int done = std::atoi(msg.substr(0, nl).c_str());
