@@ -1,0 +1,96 @@
+// The nonlinear comparison through the binary, on the shipped compare scenes: two
+// independent solvers of the same chain (multibody in segment angles, lumped in
+// Cartesian hinge positions). Oracles: their statics agree to round-off (the same
+// equilibrium); their forced responses differ by the rotary inertia the lumped chain
+// leaves out and by each integrator's O(dt^2) error, which at the paper's dt = 0.01 s
+// is below 0.5 % of the loaded point's peak (measured 0.04 %); the contracts of the
+// README (JSON keys, single-solver outputs, gates, files).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "support/paper.hpp"
+
+using ringtest::ringvib;
+using ringtest::source;
+
+namespace {
+
+const nlohmann::json* row(const nlohmann::json& t, double point, const std::string& q) {
+  for (const auto& r : t["rows"])
+    if (r["point"] == point && r["quantity"] == q) return &r;
+  return nullptr;
+}
+
+TEST(NonlinearCli, StaticsOfTwoSolversAgreeToRoundOff) {
+  const auto r = ringvib("static " + source("scenes/paper1990-static-compare.toml") + " --format json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto t = nlohmann::json::parse(r.out);
+  EXPECT_EQ(t["analysis"], "static");
+  EXPECT_EQ(t["base"], "multibody");
+  const auto* u = row(t, 0.0, "u");
+  ASSERT_NE(u, nullptr);
+  EXPECT_NEAR((*u)["lumped_diff_pct"].get<double>(), 0.0, 1e-9);
+  EXPECT_GT((*u)["multibody"].get<double>(), 1.5);  // the 20 kN squeeze shortens AC by 1.58 m
+  EXPECT_TRUE((*row(t, 180.0, "u"))["lumped_diff_pct"].is_null());  // the pin does not move
+  // One solver picked: today's object plus "solver".
+  const auto one = ringvib("static " + source("scenes/paper1990-static-compare.toml") + " --solver lumped --json");
+  ASSERT_EQ(one.code, 0) << one.err;
+  const auto j = nlohmann::json::parse(one.out);
+  EXPECT_EQ(j["solver"], "lumped");
+  for (const char* k : {"displacements", "steps", "newton_iterations"}) EXPECT_TRUE(j.contains(k)) << k;
+}
+
+TEST(NonlinearCli, ResponsesOfTwoSolversAgreeWithinTheirModelDifference) {
+  const std::string scene = source("scenes/paper1990-forced-compare.toml");
+  const auto r = ringvib("respond " + scene + " --format json --set response.t_end=1.5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto t = nlohmann::json::parse(r.out);
+  EXPECT_EQ(t["analysis"], "response");
+  const auto* peak = row(t, 0.0, "peak_u");
+  ASSERT_NE(peak, nullptr);
+  EXPECT_LT(std::abs((*peak)["lumped_diff_pct"].get<double>()), 0.5);
+  // One solver with --csv: today's columns.
+  const std::string csv = ringtest::temp_dir() + "/h.csv";
+  ASSERT_EQ(ringvib("respond " + scene + " --solver lumped --set response.t_end=0.1 --csv " + csv).code, 0);
+  std::ifstream f(csv);
+  std::string header;
+  std::getline(f, header);
+  EXPECT_EQ(header,
+            "t,ux_0,uy_0,ux_90,uy_90,ux_180,uy_180,ux_270,uy_270,kinetic,strain,work,energy_error,"
+            "constraint_residual,newton_iterations");
+  // Several solvers and --csv: which history is meant is ambiguous: exit 2.
+  EXPECT_EQ(ringvib("respond " + scene + " --csv " + csv).code, 2);
+}
+
+// Gates on the nonlinear comparison: a bound the difference meets passes, a tighter one
+// fails (exit 1) and names the point; both land in the JUnit file.
+TEST(NonlinearCli, GatesOnTheComparison) {
+  const std::string scene = source("scenes/paper1990-static-compare.toml");
+  const std::string dir = ringtest::temp_dir();
+  const auto pass = ringvib("run " + scene + " --set 'gates.lumped={max = 1e-6, analysis = \"static\", against = " +
+                            "\"multibody\"}' --junit " + dir + "/j.xml --out " + dir + "/out");
+  EXPECT_EQ(pass.code, 0) << pass.err << pass.out;
+  EXPECT_NE(pass.out.find("PASS lumped vs multibody, static |u|"), std::string::npos) << pass.out;
+  std::ifstream report(dir + "/out/report.md");
+  std::stringstream md;
+  md << report.rdbuf();
+  EXPECT_NE(md.str().find("static_shapes.png"), std::string::npos);
+  std::ifstream table(dir + "/out/static_table.json");
+  EXPECT_TRUE(table.good());
+  // A response gate against the other solver, tighter than their 0.04 % difference.
+  const auto fail = ringvib("run " + source("scenes/paper1990-forced-compare.toml") +
+                            " --set response.t_end=1.5 --set 'gates.multibody={max = 1e-4, analysis = \"response\", "
+                            "against = \"lumped\"}'");
+  EXPECT_EQ(fail.code, 1) << fail.err;
+  EXPECT_NE(fail.out.find("FAIL multibody vs lumped, response peak |u|"), std::string::npos) << fail.out;
+  // A reference the scene does not compute cannot be gated against: exit 2.
+  EXPECT_EQ(ringvib("run " + scene + " --set 'gates.lumped={max = 1, analysis = \"static\"}'").code, 2);
+}
+
+}  // namespace
