@@ -43,6 +43,11 @@ std::string label(const std::string& solver) {
   return e ? e->label : solver;
 }
 
+/// Below this MAC a pairing compares unlike shapes: marked "?" in the table itself.
+constexpr double kWeakMac = 0.5;
+
+bool weak(double mac) { return std::isfinite(mac) && mac < kWeakMac; }
+
 /// Rows of cells; the first row is the header.
 std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
   std::vector<std::vector<std::string>> out;
@@ -65,11 +70,12 @@ std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
       const Column& col = t.columns[c];
       std::string v = sig4(col.omega[i]);
       if (with_flags && col.mode[i] != i + 1) v += "*";
+      if (with_flags && weak(col.mac[i])) v += "?";
       r.push_back(v);
       if (c > 0) r.push_back(pct2(col.diff_pct[i]));
       if (t.reference) r.push_back(pct2(col.error_pct[i]));
     }
-    if (t.reference) r.push_back(sig4(t.reference->omega[i]));
+    if (t.reference) r.push_back(sig4(t.reference->omega[i]) + (with_flags && weak(t.reference->mac[i]) ? "?" : ""));
     if (!t.paper.empty())
       for (const auto& col : t.columns) {
         const auto p = i < static_cast<int>(t.paper.size()) ? paper_value(t.paper[i], col.solver) : std::nullopt;
@@ -100,6 +106,9 @@ std::string footnotes(const Table& t) {
     for (double m : c.mac)
       if (std::isfinite(m)) worst = std::min(worst, m);
   s << "Lowest MAC of any paired mode: " << sig4(worst) << ".\n";
+  if (worst < kWeakMac)
+    s << "? paired with MAC < " << kWeakMac << ": the shapes differ, so its difference or error compares unlike "
+      << "modes (refine the coarser model, or compare fewer modes).\n";
   return s.str();
 }
 

@@ -51,7 +51,11 @@ class Reader {
 
   [[noreturn]] void fail(const std::string& key, const toml::node* node, const std::string& what) const {
     std::string k = key;
-    if (overridden_.count(key)) k += " (from --set)";
+    // An overridden key, or a key inside an overridden inline table (its source line is
+    // that of the --set value, not of the file).
+    bool from_set = overridden_.count(key) > 0;
+    for (const auto& o : overridden_) from_set |= key.rfind(o + ".", 0) == 0;
+    if (from_set) k += " (from --set)";
     else if (node && node->source().begin) k += " (line " + std::to_string(node->source().begin.line) + ")";
     throw InputError(file_, k, what);
   }

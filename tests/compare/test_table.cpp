@@ -107,3 +107,20 @@ TEST(Table, EmbeddedPaperTable) {
 }
 
 }  // namespace
+
+namespace {
+
+// A pairing of unlike shapes (orthogonal at the stations: MAC 0) is marked in the table
+// itself, not only in a footnote.
+TEST(Table, WeakPairingsAreMarkedInTheTable) {
+  const auto base = fake("multibody", {2.0, 4.0}, {2, 3});
+  const auto other = fake("fem", {2.1, 4.1}, {4, 5});
+  const cmp::Table t = cmp::build_table("t", {base, other}, nullptr, 2);
+  const std::string text = cmp::format_text(t);
+  EXPECT_NE(text.find("2.100?"), std::string::npos) << text;
+  EXPECT_NE(text.find("MAC < 0.5"), std::string::npos) << text;
+  const auto good = cmp::build_table("t", {base, fake("fem", {2.1, 4.1}, {2, 3})}, nullptr, 2);
+  EXPECT_EQ(cmp::format_text(good).find('?'), std::string::npos);
+}
+
+}  // namespace
