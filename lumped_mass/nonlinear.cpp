@@ -259,6 +259,32 @@ Vec solve(const Sparse& A, const Vec& rhs) {
   return x;
 }
 
+enum class Newton { failed, iterating, converged };
+
+/// One Newton correction of (x, lambda) from the KKT system A d = -(residual, scale g):
+/// failed when A is singular or the correction moves a hinge by half a link or more,
+/// converged when it moves no hinge by more than `tol` and the links then hold to
+/// 1e-10 R (R: the ring's radius).
+Newton newton_update(const Chain& c, const Sparse& A, const Vec& residual, double scale, double tol, double radius,
+                     Vec& x, Vec& lambda) {
+  const int N = 2 * c.n;
+  Vec rhs(A.rows());
+  rhs.head(N) = -residual;
+  rhs.tail(A.rows() - N) = -scale * constraints(c, x);
+  Vec d;
+  try {
+    d = solve(A, rhs);
+  } catch (const ring::NumericalError&) {
+    return Newton::failed;
+  }
+  const double move = d.head(N).cwiseAbs().maxCoeff();
+  if (!(move < 0.5 * c.l)) return Newton::failed;
+  x += d.head(N);
+  lambda += d.tail(A.rows() - N);
+  if (move > tol) return Newton::iterating;
+  return constraints(c, x).head(c.n).cwiseAbs().maxCoeff() <= 1e-10 * radius ? Newton::converged : Newton::failed;
+}
+
 std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record, const std::string& key) {
   std::vector<int> h;
   for (double a : record) {
@@ -320,27 +346,15 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
       jacobian(c, xt, N, scale, false, t);
       Sparse A(N + R, N + R);
       A.setFromTriplets(t.begin(), t.end());
-      Vec rhs(N + R);
       Triplets gt;
       jacobian(c, xt, 0, 1.0, true, gt);
       Sparse GT(N, R);
       GT.setFromTriplets(gt.begin(), gt.end());
-      rhs.head(N) = -(sp.grad + GT * (lt * scale) - target * F);
-      rhs.tail(R) = -scale * constraints(c, xt);
-      Vec d;
-      try {
-        d = solve(A, rhs);
-      } catch (const ring::NumericalError&) {
-        break;
-      }
-      const double step = d.head(N).cwiseAbs().maxCoeff();
-      if (!(step < 0.5 * c.l)) break;
-      xt += d.head(N);
-      lt += d.tail(R);
-      if (step <= 1e-12 * spec.radius) {
-        ok = constraints(c, xt).cwiseAbs().maxCoeff() <= 1e-10 * spec.radius;
-        break;
-      }
+      const Newton step = newton_update(c, A, sp.grad + GT * (lt * scale) - target * F, scale, 1e-12 * spec.radius,
+                                        spec.radius, xt, lt);
+      if (step == Newton::iterating) continue;
+      ok = step == Newton::converged;
+      break;
     }
     out.newton_iterations += iterations;
     if (!ok) {
@@ -489,23 +503,10 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
         if (damped) Mt += Cd / hh;
         Mt.conservativeResize(N + R, N + R);
         A += Mt;
-        Vec rhs(N + R);
-        rhs.head(N) = -res;
-        rhs.tail(R) = -scale * constraints(c, x1);
-        Vec d;
-        try {
-          d = solve(A, rhs);
-        } catch (const ring::NumericalError&) {
-          break;
-        }
-        const double move = d.head(N).cwiseAbs().maxCoeff();
-        if (!(move < 0.5 * c.l)) break;
-        x1 += d.head(N);
-        l1 += d.tail(R);
-        if (move <= 1e-11 * spec.radius) {
-          ok = constraints(c, x1).head(c.n).cwiseAbs().maxCoeff() <= 1e-10 * spec.radius;
-          break;
-        }
+        const Newton step = newton_update(c, A, res, scale, 1e-11 * spec.radius, spec.radius, x1, l1);
+        if (step == Newton::iterating) continue;
+        ok = step == Newton::converged;
+        break;
       }
       if (!ok) {
         hstep /= 2.0;
