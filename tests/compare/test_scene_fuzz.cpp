@@ -34,7 +34,9 @@ void expect_valid(const ring::Scene& s, const std::string& text) {
   EXPECT_GE(s.fem.elements, 4) << text;
   EXPECT_GE(s.fem.degree, 2) << text;
   EXPECT_GE(s.modes.count, 1) << text;
-  if (s.ring.supports.roller) EXPECT_TRUE(s.ring.supports.pin.has_value()) << text;
+  if (s.ring.supports.roller) {
+    EXPECT_TRUE(s.ring.supports.pin.has_value()) << text;
+  }
   for (const auto* w : {&s.ring.radius, &s.ring.E, &s.ring.rho}) EXPECT_TRUE(std::isfinite(*w)) << text;
 }
 
