@@ -468,6 +468,10 @@ bool use_sparse_path(const ring::MultibodyOptions& options) {
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
                           const IntegrationControls& controls) {
+  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
+    throw std::invalid_argument(
+        "multibody::respond: response.integrator = \"energy-momentum\" is not offered by the multibody chain; use "
+        "\"newmark\" or \"generalized-alpha\" (the lumped chain offers an energy-conserving midpoint scheme)");
   if (!spec.supports.pin)
     throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
