@@ -1,4 +1,4 @@
-// Assembly of the lumped-mass models of a ring (issue 5), written independently of
+// Assembly of the lumped-mass models of a ring, written independently of
 // multibody/: the three variants are built in CARTESIAN node coordinates on the
 // regular n-gon whose side is l = 2 pi R / n (perimeter = circumference).
 //

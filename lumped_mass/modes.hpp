@@ -1,4 +1,4 @@
-// Natural frequencies and mode shapes of the lumped-mass ring models (issue 5),
+// Natural frequencies and mode shapes of the lumped-mass ring models,
 // independent of multibody/: the only shared code is ring/.
 //
 // Usage:

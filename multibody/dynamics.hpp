@@ -44,7 +44,7 @@
 // MultibodyOptions: n, rotary_inertia and method are used; `dependent` is not (the
 // partition is chosen by pivoting at every step).
 // method: `dense` forms the n x n tangent (O(n^2) per Newton iteration, O(n^3) per
-// factorization); `sparse` (issue 8) keeps the same equations, iterates and policies but
+// factorization); `sparse` keeps the same equations, iterates and policies but
 // never forms an n x n matrix: the tangent is diag + cyclic springs + m l^2 U^T (L^T L) W
 // with L the midpoint cumulative sum, whose bidiagonal relations make the saddle-point
 // system banded plus a border of 2 + c unknowns (dynamics_sparse.hpp): O(n) time and

@@ -1,5 +1,5 @@
-// Internal to multibody/dynamics.cpp: the O(n) large-n path of the forced response
-// (issue 8, point 2). Same equations, same coordinates (segment angles) and the same
+// Internal to multibody/dynamics.cpp: the O(n) large-n path of the forced response.
+// Same equations, same coordinates (segment angles) and the same
 // saddle-point Newton system as the dense path; only the linear algebra differs.
 //
 // Structure used. With midpoint_i = P_0 + l sum_j L_ij e(phi_j), L_ij = 1 (j < i),

@@ -60,8 +60,8 @@
 // 2.7e-10 (n = 10^3), 1.7e-8 (10^4), 1.8e-6 (10^5), 2e-4 (10^6) while the frequencies stay
 // within 1e-11 of the oracles. ModalSolution::backward_error (normwise,
 // ||r|| / ((||K0|| + w^2 ||M0||) ||x||)) is the meaningful measure: ~1e-12 at every n up
-// to 10^6 on the sparse path, ~1e-15 on the dense one. The growth reported by the
-// previous owner was this floor, not a loss of accuracy.
+// to 10^6 on the sparse path, ~1e-15 on the dense one: the growth of max_residual is
+// this floor, not a loss of accuracy.
 //
 // ## Rigid modes
 // A computed omega^2 < kRigidThreshold * s (s as above) is a rigid (zero) mode: counted

@@ -1,5 +1,5 @@
-// Time per step of multibody::respond (issue 7) at n = 40, 160, 640 for both
-// integrators, and the whole 500-step paper scene (target: under 50 ms). Issue 8: the
+// Time per step of multibody::respond at n = 40, 160, 640 for both
+// integrators, and the whole 500-step paper scene (target: under 50 ms). The
 // same on the dense and the O(n) sparse path (second argument 0 = dense, 1 = sparse)
 // at n = 40, 160, 640, 2560, 10000 (dense only up to 640: 51 ms/step there, O(n^3)),
 // and n = 10^4 for the first 100 steps (BM_LongRunSparse; the issue's target is 1000

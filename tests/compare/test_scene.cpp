@@ -1,6 +1,6 @@
 // The scene parser: every rejected input gets an InputError that names the key, and
 // --set overrides go through the same validation. The oracle is the scene format of
-// DESIGN.md and README ("Scene reference").
+// the README and README ("Scene reference").
 #include <gtest/gtest.h>
 
 #include <string>

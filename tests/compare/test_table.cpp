@@ -96,7 +96,7 @@ TEST(Gates, NanFails) {
 }
 
 // Oracle: the shipped copy of Table 1 has the paper's 23 modes and the corrections of
-// NOTES.md ("Corrections"): mode 2 MB 3.798, mode 3 FE 8.967, mode 8 MB 35.75.
+// README "The paper" ("Corrections"): mode 2 MB 3.798, mode 3 FE 8.967, mode 8 MB 35.75.
 TEST(Table, EmbeddedPaperTable) {
   const auto rows = cmp::paper_table();
   ASSERT_EQ(rows.size(), 23u);

@@ -22,7 +22,7 @@ namespace {
 using Dep = ring::MultibodyOptions::Dependent;
 
 // The paper's ring (Table 1): R = 10 m, solid circle d = 0.12 m, E = 2.1e11 Pa,
-// rho = 7.8e3 kg/m^3 (NOTES.md: the printed 9.8e3 is a misprint), pinned at 180 deg.
+// rho = 7.8e3 kg/m^3 (README "The paper": the printed 9.8e3 is a misprint), pinned at 180 deg.
 /// The Table 1 ring, pinned at 180 degrees.
 ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
 ring::RingSpec free_ring() {
@@ -52,13 +52,13 @@ TEST(MultibodyModes, PaperTableOneN40) {
   const auto rows = ring::read_paper_table(RINGVIB_SOURCE_DIR "/compare/data/table1.csv");
   ASSERT_EQ(rows.size(), 23u);
   const auto r = multibody::compute_modes(paper_ring(), opts(40), 23);
-  EXPECT_EQ(r.rigid_modes, 1);  // rotation about the pin (NOTES.md, "Support")
+  EXPECT_EQ(r.rigid_modes, 1);  // rotation about the pin (README "The paper", "Support")
   ASSERT_EQ(r.omega.size(), 23u);
   ASSERT_EQ(r.shapes.size(), 23u);
   for (int i = 0; i < 23; ++i) {
     const double ref = rows[i].mb_corrected.value();
     // Issue 3: modes 1-9 within 0.8 %, all 23 within 2.5 % of the paper's multibody
-    // column (NOTES.md item 3 measured 0.8 % and 2.1 %).
+    // column (README "The paper" item 3 measured 0.8 % and 2.1 %).
     const double tol = i < 9 ? 0.008 : 0.025;
     EXPECT_TRUE(ringtest::IsClose(r.omega[i], ref, tol)) << "mode " << i + 1;
     if (i > 0) {

@@ -1,4 +1,4 @@
-// The paper's ring, one definition for every suite (Yin & Wang, Table 1; NOTES.md):
+// The paper's ring, one definition for every suite (Yin & Wang, Table 1; README "The paper"):
 // R = 10 m, solid circle d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3 (the printed
 // 9.8e3 is a misprint).
 #pragma once
