@@ -51,8 +51,9 @@ const fem::Plugin& fem_plugin() {
       return;
     }
     plugin = entry();
-    if (plugin->abi_version != 1) {
-      failure = "the FE module " + path + " has ABI version " + std::to_string(plugin->abi_version) + ", expected 1";
+    if (plugin->abi_version != fem::kAbiVersion) {
+      failure = "the FE module " + path + " has ABI version " + std::to_string(plugin->abi_version) + ", expected " +
+                std::to_string(fem::kAbiVersion) + " (rebuild it with this ringvib)";
       plugin = nullptr;
       return;
     }
@@ -87,6 +88,30 @@ void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int 
   std::lock_guard<std::mutex> lock(g_solve);
   std::string error;
   check(fem_plugin().write_vtu(spec, options, count, dir, error), error);
+}
+
+ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& options,
+                           const ring::StaticOptions& statics) {
+  std::lock_guard<std::mutex> lock(g_solve);
+  ring::StaticResult out;
+  std::string error;
+  check(fem_plugin().statics(spec, options, statics, out, error), error);
+  return out;
+}
+
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
+                          const ring::ResponseOptions& response) {
+  std::lock_guard<std::mutex> lock(g_solve);
+  ring::TimeHistory out;
+  std::string error;
+  int reason = 0;
+  double t_reached = 0.0;
+  const int status = fem_plugin().respond(spec, options, response, out, reason, t_reached, error);
+  if (status == 3 && reason >= 0)
+    throw ring::IntegrationFailure(static_cast<ring::IntegrationFailure::Reason>(reason), t_reached, std::move(out),
+                                   error);
+  check(status, error);
+  return out;
 }
 
 bool loaded() { return g_loaded; }

@@ -15,6 +15,11 @@ namespace cmp::fem_module {
 /// work (exit 2) and ring::NumericalError on a numerical failure (exit 3).
 ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count);
 void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir);
+ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& options,
+                           const ring::StaticOptions& statics);
+/// Throws ring::IntegrationFailure (with the partial history) when the integration fails.
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
+                          const ring::ResponseOptions& response);
 
 /// True once the plug-in has been loaded in this process (tests use it to show that a
 /// scene without FE never loads it).

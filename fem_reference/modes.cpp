@@ -3,9 +3,8 @@
 #include "fem_reference/ring_model.hpp"
 
 namespace fem::detail {
-namespace {
 
-void validate(const ring::RingSpec& spec, const ring::FemOptions& o, int count) {
+void validate(const ring::RingSpec& spec, const ring::FemOptions& o) {
   auto need = [](bool ok, const std::string& what) {
     if (!ok) throw std::invalid_argument("fem: " + what);
   };
@@ -15,7 +14,7 @@ void validate(const ring::RingSpec& spec, const ring::FemOptions& o, int count) 
   need(o.elements >= 4, "fem.elements (=" + std::to_string(o.elements) + ") must be >= 4");
   need(o.degree >= 2 && o.degree <= 12, "fem.degree (=" + std::to_string(o.degree) + ") must be in 2..12");
   need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
-  need(count >= 1, "count (=" + std::to_string(count) + ") must be >= 1");
+  need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
   need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
   if (spec.supports.roller) {
     need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
@@ -26,6 +25,8 @@ void validate(const ring::RingSpec& spec, const ring::FemOptions& o, int count) 
              ") must fall on an FE vertex: pin + k * 360 / fem.elements");
   }
 }
+
+namespace {
 
 Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int count, bool keep_full,
                   bool refine = true) {
@@ -96,7 +97,8 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
 }  // namespace
 
 Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, bool keep_full) {
-  validate(spec, o, count);
+  validate(spec, o);
+  if (count < 1) throw std::invalid_argument("fem: count (=" + std::to_string(count) + ") must be >= 1");
   const auto t0 = std::chrono::steady_clock::now();
   Setup setup;
   setup.elements = o.elements;

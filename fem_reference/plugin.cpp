@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "fem_reference/modes.hpp"
+#include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
 
 namespace {
@@ -44,7 +45,27 @@ int write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int c
   return guarded(error, [&] { fem::write_vtu(spec, options, count, dir); });
 }
 
-constexpr fem::Plugin kPlugin{1, &modes, &write_vtu};
+int statics(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& st,
+            ring::StaticResult& out, std::string& error) {
+  return guarded(error, [&] { out = fem::solve_static(spec, options, st); });
+}
+
+int respond(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::ResponseOptions& response,
+            ring::TimeHistory& out, int& reason, double& t_reached, std::string& error) {
+  reason = -1;
+  return guarded(error, [&] {
+    try {
+      out = fem::respond(spec, options, response);
+    } catch (const ring::IntegrationFailure& e) {
+      out = e.partial();
+      reason = static_cast<int>(e.reason());
+      t_reached = e.t_reached();
+      throw;
+    }
+  });
+}
+
+constexpr fem::Plugin kPlugin{fem::kAbiVersion, &modes, &write_vtu, &statics, &respond};
 
 }  // namespace
 

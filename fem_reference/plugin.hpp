@@ -6,19 +6,33 @@
 
 #include <string>
 
+#include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
 
 namespace fem {
 
+/// Every entry returns 0 on success, 2 for bad input (ring::InputError /
+/// std::invalid_argument), 3 for a numerical failure (ring::NumericalError); on failure
+/// `error` holds the message. No exception crosses the boundary; a failed response's
+/// partial history comes back in `out` with `t_reached` set.
 struct Plugin {
-  int abi_version;  // 1
-  // Returns 0 on success, 2 for bad input (ring::InputError / std::invalid_argument), 3 for a numerical failure
-  // (ring::NumericalError); on failure `error` holds the message. Never lets an exception cross the boundary.
-  int (*modes)(const ring::RingSpec& spec, const ring::FemOptions& options, int count, ring::ModalResult& out, std::string& error);
-  // Writes the `count` lowest mode shapes as VTU (deal.II DataOut) into directory `dir` (which exists).
-  int (*write_vtu)(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir, std::string& error);
+  int abi_version;  // kAbiVersion
+  int (*modes)(const ring::RingSpec& spec, const ring::FemOptions& options, int count, ring::ModalResult& out,
+               std::string& error);
+  /// Writes the `count` lowest mode shapes as VTU (deal.II DataOut) into directory `dir` (which exists).
+  int (*write_vtu)(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir,
+                   std::string& error);
+  int (*statics)(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics,
+                 ring::StaticResult& out, std::string& error);
+  /// On an integration failure (3): `out` is the history so far, `reason` the
+  /// ring::IntegrationFailure::Reason as an int, `t_reached` its time.
+  int (*respond)(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::ResponseOptions& response,
+                 ring::TimeHistory& out, int& reason, double& t_reached, std::string& error);
 };
+
+/// Version 2 added statics and respond (the geometrically exact beam).
+constexpr int kAbiVersion = 2;
 
 }  // namespace fem
 

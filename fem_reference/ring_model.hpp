@@ -123,6 +123,27 @@ class RingModel {
   void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
                  const std::string& file) const;
 
+  // The geometrically exact beam on the same mesh, fields and constraints (ring_beam.cpp;
+  // curved geometry only, formulation in nonlinear.hpp).
+  /// Strain energy of the reduced displacement q; adds its gradient (the internal force)
+  /// and its Hessian (the consistent tangent, on sparsity()) when not null.
+  /// O(cells (p+2) (2p+3)^2).
+  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const;
+  /// The consistent mass matrix (constant: the polar basis at fixed theta does not move)
+  /// and the stiffness at rest (the tangent of beam_energy at q = 0), reduced.
+  const SparseMatrix<double>& mass() const { return M_; }
+  const SparseMatrix<double>& stiffness() const { return K_; }
+  const SparsityPattern& sparsity() const { return sparsity_; }
+  unsigned int cells() const { return setup_.cells(); }
+  /// Index of the vertex at `degrees` (which must be a vertex: ring::on_node).
+  unsigned int vertex_of(double degrees) const;
+  /// Reduced generalized force of the force f (N, Cartesian) acting at vertex k.
+  Vector<double> vertex_force(unsigned int k, const std::array<double, 2>& f) const;
+  /// Cartesian displacement (m) at vertex k of a full DoF vector.
+  std::array<double, 2> vertex_displacement(const Vector<double>& full, unsigned int k) const;
+  /// Rest position of vertex k (ring-centred frame, m).
+  std::array<double, 2> vertex_position(unsigned int k) const;
+
  private:
   void make_grid();
   void setup_constraints();
@@ -192,6 +213,9 @@ FESystem<1, spacedim> make_fe(const Setup& s) {
     return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree + 1), 1, FE_Q<1, spacedim>(s.degree), 1);
   return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree), 2);
 }
+
+/// Throws std::invalid_argument for a ring or options no FE solve can work with.
+void validate(const ring::RingSpec& spec, const ring::FemOptions& o);
 
 /// Frequencies, shapes and residual of one discretization (with the inextensible
 /// extrapolation when asked). `full` receives the full DoF vectors if not null.

@@ -252,7 +252,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   const toml::table* ft = r.table(root, "", "fem");
   if (ft) {
     r.known_keys(*ft, "fem", {"elements", "degree", "geometry", "extensible", "rotary_inertia", "reference",
-                              "tolerance"});
+                              "tolerance", "response_tolerance"});
     s.fem.elements = static_cast<int>(r.integer(*ft, "fem", "elements", 40, 4, 10000000));
     s.fem.degree = static_cast<int>(r.integer(*ft, "fem", "degree", 3, 2, 12));
     s.fem.geometry = r.choice(*ft, "fem", "geometry", "curved", {"curved", "polygon"}) == "polygon"
@@ -261,6 +261,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     s.fem.rotary_inertia = r.boolean(*ft, "fem", "rotary_inertia", false);
     s.fem.reference = r.boolean(*ft, "fem", "reference", false);
     s.fem.tolerance = r.number(*ft, "fem", "tolerance", 1e-9, 1e-14, 1e-2);
+    s.fem.response_tolerance = r.number(*ft, "fem", "response_tolerance", 1e-3, 1e-8, 1e-1);
   }
   const toml::table* lt = r.table(root, "", "lumped");
   if (lt) {

@@ -98,7 +98,8 @@ struct FemOptions {
   bool extensible = true;        ///< axial strain energy EA; false: inextensible limit
   bool rotary_inertia = false;   ///< cross-section rotary inertia rho I
   bool reference = false;        ///< refine until converged
-  double tolerance = 1e-9;       ///< relative change that stops the refinement
+  double tolerance = 1e-9;       ///< relative change that stops the refinement (modes, statics)
+  double response_tolerance = 1e-3;  ///< the same for the peaks of the reference response
 };
 
 struct LumpedOptions {

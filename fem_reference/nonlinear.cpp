@@ -1,0 +1,415 @@
+// The geometrically exact beam's drivers: statics by load stepping and Newton, forced
+// response by Newmark or generalized-alpha, and their converged references
+// (nonlinear.hpp).
+#include "fem_reference/nonlinear.hpp"
+
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+namespace {
+
+constexpr int kMaxNewton = 25;
+/// Statics: the smallest load increment tried, as a fraction of one load step.
+constexpr int kMaxHalvings = 10;
+/// Inextensible limit: EA = beta EI / R^2 (statics extrapolate from beta and 2 beta).
+constexpr double kResponseBeta = 1e7;
+//// An undamped run that gains more than this fraction of the largest work has failed.
+constexpr double kEnergyGrowth = 1e-2;
+
+void need(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("fem: " + what);
+}
+
+void validate_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::PointLoad& load,
+                        const std::vector<double>& record, const std::string& section) {
+  validate(spec, o);
+  need(o.geometry == Geometry::curved, "the geometrically exact beam needs fem.geometry = \"curved\"");
+  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
+  const double pin = *spec.supports.pin;
+  auto on_vertex = [&](double a, const std::string& key) {
+    need(ring::on_node(a, pin, o.elements), section + "." + key + " (=" + std::to_string(a) +
+                                                ") must fall on an FE vertex: pin + k * 360 / fem.elements");
+  };
+  on_vertex(load.angle, "at");
+  for (double a : record) on_vertex(a, "record");
+  need(std::isfinite(load.force[0]) && std::isfinite(load.force[1]), section + ".force must be finite");
+}
+
+Setup make_setup(const ring::RingSpec& spec, const ring::FemOptions& o, double beta) {
+  Setup s;
+  s.elements = o.elements;
+  s.degree = o.degree;
+  s.geometry = o.geometry;
+  s.EA = o.extensible ? spec.EA() : beta * spec.EI() / (spec.radius * spec.radius);
+  return s;
+}
+
+/// Newton on grad V(q) - rhs(q) = 0 with the tangent `tangent(q) + extra`; q updated in
+/// place. Returns the iterations, or -1 when it did not converge (q then unusable).
+/// Converged: the correction is below 1e-12 of the ring radius (quadratic convergence
+/// takes the residual to round-off one iteration later).
+template <class Residual>
+int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent) {
+  SparseDirectUMFPACK lu;
+  Vector<double> r, dq;
+  for (int it = 1; it <= kMaxNewton; ++it) {
+    SparseMatrix<double>& S = residual_and_tangent(q, r);
+    if (!std::isfinite(r.l2_norm())) return -1;
+    try {
+      lu.initialize(S);
+    } catch (const std::exception&) {
+      return -1;
+    }
+    dq = r;
+    lu.solve(dq);
+    q.add(-1.0, dq);
+    if (!std::isfinite(dq.l2_norm())) return -1;
+    if (dq.linfty_norm() <= 1e-12 * radius) return it;
+  }
+  return -1;
+}
+
+struct StaticSolve {
+  std::vector<std::array<double, 2>> record;  ///< displacement at each record point
+  std::vector<double> node_x, node_y;
+  int steps = 0, iterations = 0;
+  long long unknowns = 0;
+};
+
+StaticSolve static_once(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st) {
+  const RingModel model(spec, setup);
+  const Vector<double> F = model.vertex_force(model.vertex_of(st.load.angle), st.load.force);
+  SparseMatrix<double> K(model.sparsity());
+  Vector<double> q(model.n_free()), trial;
+  StaticSolve out;
+  out.unknowns = model.n_free();
+  double s = 0.0;
+  const double ds = 1.0 / std::max(1, st.steps);
+  double step = ds;
+  int halvings = 0;
+  while (s < 1.0 - 1e-14) {
+    const double s_next = std::min(1.0, s + step);
+    trial = q;
+    const int it = newton(trial, spec.radius, [&](const Vector<double>& x, Vector<double>& r) -> SparseMatrix<double>& {
+      model.beam_energy(x, &r, &K);
+      r.add(-s_next, F);
+      return K;
+    });
+    if (it < 0) {
+      if (++halvings > kMaxHalvings)
+        throw ring::NumericalError("fem statics: no equilibrium beyond load factor " + std::to_string(s) +
+                                   " (a limit point, or the ring touching itself): the increment was halved " +
+                                   std::to_string(kMaxHalvings) + " times");
+      step *= 0.5;
+      continue;
+    }
+    q = trial;
+    s = s_next;
+    out.iterations += it;
+    ++out.steps;
+    step = std::min(ds, 2.0 * step);
+  }
+  const Vector<double> full = model.expand(q);
+  for (double a : st.record) out.record.push_back(model.vertex_displacement(full, model.vertex_of(a)));
+  for (unsigned int k = 0; k < model.cells(); ++k) {
+    const auto X = model.vertex_position(k);
+    const auto u = model.vertex_displacement(full, k);
+    out.node_x.push_back(X[0] + u[0]);
+    out.node_y.push_back(X[1] + u[1]);
+  }
+  return out;
+}
+
+/// One discretization; inextensible: Richardson in 1/beta from beta and 2 beta.
+StaticSolve static_at(const ring::RingSpec& spec, const ring::FemOptions& o, Setup setup,
+                      const ring::StaticOptions& st) {
+  if (o.extensible) return static_once(spec, setup, st);
+  const double base = kInextensibleBeta * spec.EI() / (spec.radius * spec.radius);
+  setup.EA = base;
+  const StaticSolve a = static_once(spec, setup, st);
+  setup.EA = 2.0 * base;
+  StaticSolve b = static_once(spec, setup, st);
+  auto extrapolate = [](double lo, double hi) { return 2.0 * hi - lo; };
+  for (std::size_t i = 0; i < b.record.size(); ++i)
+    for (int c = 0; c < 2; ++c) b.record[i][c] = extrapolate(a.record[i][c], b.record[i][c]);
+  for (std::size_t i = 0; i < b.node_x.size(); ++i) {
+    b.node_x[i] = extrapolate(a.node_x[i], b.node_x[i]);
+    b.node_y[i] = extrapolate(a.node_y[i], b.node_y[i]);
+  }
+  b.iterations += a.iterations;
+  return b;
+}
+
+double largest_change(const std::vector<std::array<double, 2>>& a, const std::vector<std::array<double, 2>>& b) {
+  double change = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    change = std::max(change, std::hypot(a[i][0] - b[i][0], a[i][1] - b[i][1]));
+    scale = std::max(scale, std::hypot(b[i][0], b[i][1]));
+  }
+  return scale > 0 ? change / scale : change;
+}
+
+/// Refines the degree (then the cells) until `change(previous, next)` < tolerance;
+/// returns the last discretization's result and the number of refinements.
+template <class Solve, class Change>
+auto refine_until(Setup& setup, double tolerance, Solve&& solve, Change&& change, double& estimate,
+                  int& refinements, const std::string& what) {
+  auto current = solve(setup);
+  for (refinements = 1;; ++refinements) {
+    if (refinements > kReferenceMaxSteps)
+      throw ring::NumericalError("fem: " + what + " reference not converged after " +
+                                 std::to_string(kReferenceMaxSteps) + " refinements");
+    if (setup.degree < 12)
+      ++setup.degree;
+    else
+      setup.subdivisions *= 2;
+    auto next = solve(setup);
+    estimate = change(current, next);
+    current = std::move(next);
+    if (estimate < tolerance) return current;
+  }
+}
+
+ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  validate_nonlinear(spec, o, st.load, st.record, "static");
+  need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
+  const auto t0 = std::chrono::steady_clock::now();
+  Setup setup = make_setup(spec, o, kInextensibleBeta);
+  auto solve = [&](const Setup& s) { return static_at(spec, o, s, st); };
+  StaticSolve sol;
+  double estimate = 0.0;
+  int refinements = 0;
+  if (o.reference) {
+    sol = refine_until(setup, o.tolerance, solve,
+                       [](const StaticSolve& a, const StaticSolve& b) { return largest_change(a.record, b.record); },
+                       estimate, refinements, "static");
+  } else {
+    sol = solve(setup);
+  }
+  ring::StaticResult r;
+  r.solver = "fem";
+  r.unknowns = sol.unknowns;
+  r.steps = sol.steps;
+  r.newton_iterations = sol.iterations;
+  for (std::size_t i = 0; i < st.record.size(); ++i) r.displacements.push_back({st.record[i], sol.record[i][0], sol.record[i][1]});
+  r.node_x = std::move(sol.node_x);
+  r.node_y = std::move(sol.node_y);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+/// One time integration with one discretization (the file comment's scheme).
+ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, const ring::ResponseOptions& rs) {
+  using Integrator = ring::ResponseOptions::Integrator;
+  const auto t0 = std::chrono::steady_clock::now();
+  const RingModel model(spec, setup);
+  const unsigned int N = model.n_free();
+  const Vector<double> F = model.vertex_force(model.vertex_of(rs.load.angle), rs.load.force);
+  const SparseMatrix<double>& M = model.mass();
+  const bool damped = rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0;
+  // Generalized-alpha (Chung & Hulbert 1993); Newmark average acceleration is am = af = 0.
+  double am = 0.0, af = 0.0, gamma = 0.5, beta = 0.25;
+  if (rs.integrator == Integrator::generalized_alpha) {
+    am = (2.0 * rs.rho_inf - 1.0) / (rs.rho_inf + 1.0);
+    af = rs.rho_inf / (rs.rho_inf + 1.0);
+    gamma = 0.5 - am + af;
+    beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+  }
+  const double dt = rs.dt;
+  const long long steps = std::llround(rs.t_end / dt);
+
+  ring::TimeHistory h;
+  h.solver = "fem";
+  h.unknowns = N;
+  h.record_angles = rs.record;
+  h.ux.resize(rs.record.size());
+  h.uy.resize(rs.record.size());
+  std::vector<unsigned int> record_vertex;
+  for (double a : rs.record) record_vertex.push_back(model.vertex_of(a));
+  std::vector<long long> snap_steps;
+  for (int k = 0; k < 6; ++k) snap_steps.push_back(std::llround(k * steps / 5.0));
+
+  Vector<double> q(N), v(N), a(N), Cv(N), tmp(N);
+  auto damping = [&](const Vector<double>& x, Vector<double>& out) {  // C x
+    M.vmult(out, x);
+    out *= rs.rayleigh_mass;
+    if (rs.rayleigh_stiffness > 0) {
+      model.stiffness().vmult(tmp, x);
+      out.add(rs.rayleigh_stiffness, tmp);
+    }
+  };
+  double work = 0.0, dissipated = 0.0, max_work = 0.0, strain = 0.0;
+  auto record = [&](double t, int iterations) {
+    const Vector<double> full = model.expand(q);
+    h.t.push_back(t);
+    for (std::size_t i = 0; i < record_vertex.size(); ++i) {
+      const auto u = model.vertex_displacement(full, record_vertex[i]);
+      h.ux[i].push_back(u[0]);
+      h.uy[i].push_back(u[1]);
+    }
+    M.vmult(tmp, v);
+    const double T = 0.5 * (v * tmp);
+    h.kinetic.push_back(T);
+    h.strain.push_back(strain);
+    h.work.push_back(work);
+    h.energy_error.push_back(T + strain + dissipated - work);
+    h.constraint_residual.push_back(0.0);
+    h.newton_iterations.push_back(iterations);
+  };
+  auto snapshot = [&](long long step) {
+    if (std::find(snap_steps.begin(), snap_steps.end(), step) == snap_steps.end()) return;
+    const Vector<double> full = model.expand(q);
+    h.snapshot_t.push_back(h.t.back());
+    std::vector<double> sx, sy;
+    for (unsigned int k = 0; k < model.cells(); ++k) {
+      const auto X = model.vertex_position(k);
+      const auto u = model.vertex_displacement(full, k);
+      sx.push_back(X[0] + u[0]);
+      sy.push_back(X[1] + u[1]);
+    }
+    h.snapshot_x.push_back(sx);
+    h.snapshot_y.push_back(sy);
+  };
+  auto fail = [&](ring::IntegrationFailure::Reason why, const std::string& msg) {
+    h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    throw ring::IntegrationFailure(why, h.t.empty() ? 0.0 : h.t.back(), h, "fem response: " + msg);
+  };
+
+  // Start from rest: M a0 = F g(0) (no internal or damping force in the rest state).
+  {
+    SparseDirectUMFPACK lu;
+    lu.initialize(M);
+    a = F;
+    a *= rs.load.history.factor(0.0);
+    lu.solve(a);
+  }
+  record(0.0, 0);
+  snapshot(0);
+
+  SparseMatrix<double> S(model.sparsity());
+  Vector<double> internal(N), qa(N), va(N), aa(N), r(N);
+  const double c_m = (1.0 - am) / (beta * dt * dt), c_c = (1.0 - af) * gamma / (beta * dt);
+  double g_old = rs.load.history.factor(0.0);
+  for (long long step = 1; step <= steps; ++step) {
+    const double t_next = step * dt, t_alpha = t_next - af * dt;
+    const double g_alpha = rs.load.history.factor(t_alpha), g_next = rs.load.history.factor(t_next);
+    const Vector<double> q_old = q, v_old = v, a_old = a;
+    // Predictor q = q_old: then a_{n+1} and v_{n+1} follow from Newmark's relations.
+    auto kinematics = [&](const Vector<double>& x) {
+      // a_{n+1} = (x - q_n - dt v_n) / (beta dt^2) - (1/(2 beta) - 1) a_n
+      a = x;
+      a.add(-1.0, q_old, -dt, v_old);
+      a *= 1.0 / (beta * dt * dt);
+      a.add(-(0.5 / beta - 1.0), a_old);
+      v = v_old;
+      v.add((1.0 - gamma) * dt, a_old, gamma * dt, a);
+    };
+    q = q_old;
+    const int it = newton(q, spec.radius, [&](const Vector<double>& x, Vector<double>& res) -> SparseMatrix<double>& {
+      kinematics(x);
+      qa = x;
+      qa.sadd(1.0 - af, af, q_old);
+      va = v;
+      va.sadd(1.0 - af, af, v_old);
+      aa = a;
+      aa.sadd(1.0 - am, am, a_old);
+      model.beam_energy(qa, &internal, &S);
+      S *= (1.0 - af);
+      S.add(c_m, M);
+      if (rs.rayleigh_mass > 0) S.add(c_c * rs.rayleigh_mass, M);
+      if (rs.rayleigh_stiffness > 0) S.add(c_c * rs.rayleigh_stiffness, model.stiffness());
+      res.reinit(N);
+      M.vmult(res, aa);
+      res += internal;
+      if (damped) {
+        damping(va, Cv);
+        res += Cv;
+      }
+      res.add(-g_alpha, F);
+      return S;
+    });
+    if (it < 0)
+      fail(ring::IntegrationFailure::Reason::step_too_small,
+           "Newton did not converge in " + std::to_string(kMaxNewton) + " iterations at t = " + std::to_string(t_next) +
+               " s (dt = " + std::to_string(dt) + " s; try a smaller response.dt)");
+    kinematics(q);
+    if (!std::isfinite(q.l2_norm()) || !std::isfinite(v.l2_norm()))
+      fail(ring::IntegrationFailure::Reason::not_finite, "a non-finite state at t = " + std::to_string(t_next) + " s");
+    tmp = q;
+    tmp -= q_old;
+    work += 0.5 * (g_old + g_next) * (F * tmp);
+    g_old = g_next;
+    if (damped) {  // trapezoidal rule on v^T C v
+      damping(v_old, Cv);
+      double p = v_old * Cv;
+      damping(v, Cv);
+      p += v * Cv;
+      dissipated += 0.5 * dt * p;
+    }
+    strain = model.beam_energy(q, nullptr, nullptr);
+    record(t_next, it);
+    snapshot(step);
+    max_work = std::max(max_work, std::abs(work));
+    if (!damped && max_work > 0 && h.energy_error.back() > kEnergyGrowth * max_work)
+      fail(ring::IntegrationFailure::Reason::energy_growth,
+           "the energy balance error " + std::to_string(h.energy_error.back()) + " J exceeds 1 % of the work " +
+               std::to_string(max_work) + " J at t = " + std::to_string(t_next) + " s");
+  }
+  h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return h;
+}
+
+double peak_change(const ring::TimeHistory& a, const ring::TimeHistory& b) {
+  double change = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.ux.size(); ++i) {
+    auto peak = [&](const ring::TimeHistory& h) {
+      double p = 0.0;
+      for (std::size_t k = 0; k < h.t.size(); ++k) p = std::max(p, std::hypot(h.ux[i][k], h.uy[i][k]));
+      return p;
+    };
+    const double pa = peak(a), pb = peak(b);
+    change = std::max(change, std::abs(pa - pb));
+    scale = std::max(scale, pb);
+  }
+  return scale > 0 ? change / scale : change;
+}
+
+ring::TimeHistory response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  validate_nonlinear(spec, o, rs.load, rs.record, "response");
+  need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
+  need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
+  need(rs.integrator != ring::ResponseOptions::Integrator::energy_momentum,
+       "response.integrator = \"energy-momentum\" is not offered by the FE beam (newmark or generalized-alpha)");
+  need(rs.dt > 0 && rs.t_end >= rs.dt, "response.dt must be > 0 and <= response.t_end");
+  const auto t0 = std::chrono::steady_clock::now();
+  Setup setup = make_setup(spec, o, kResponseBeta);
+  if (!o.reference) return respond_once(spec, setup, rs);
+  ring::ResponseOptions fine = rs;
+  int refinements = 0;
+  double estimate = 0.0;
+  auto solve = [&](const Setup& s) {
+    ring::TimeHistory h = respond_once(spec, s, fine);
+    fine.dt *= 0.5;
+    return h;
+  };
+  ring::TimeHistory h = refine_until(setup, o.response_tolerance, solve, peak_change, estimate, refinements, "response");
+  h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return h;
+}
+
+}  // namespace
+}  // namespace fem::detail
+
+namespace fem {
+
+ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptions& options,
+                                const ring::StaticOptions& statics) {
+  return detail::statics(spec, options, statics);
+}
+
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
+                          const ring::ResponseOptions& response) {
+  return detail::response(spec, options, response);
+}
+
+}  // namespace fem

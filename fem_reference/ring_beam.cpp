@@ -1,0 +1,227 @@
+// The geometrically exact beam on RingModel's mesh: strain energy, internal force and
+// consistent tangent (nonlinear.hpp has the formulation), and the vertex helpers the
+// nonlinear drivers use.
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+namespace {
+
+using Vec4 = std::array<double, 4>;
+using Mat4 = std::array<std::array<double, 4>, 4>;
+
+/// A scalar of g = (a_t, a_n, b_t, b_n) with its gradient and Hessian; a = dx/ds0 in the
+/// rest frame (t0, n0) and b = da/dtheta.
+struct Scalar {
+  double value = 0.0;
+  Vec4 d{};
+  Mat4 dd{};
+};
+
+/// The rotation rate dphi/dtheta = (a_n b_t - a_t b_n) / |a|^2 of the tangent angle
+/// phi = atan2(-a_n, a_t) (counter-clockwise from t0), exact for any rotation.
+Scalar rotation_rate(const Vec4& g) {
+  const double a[2] = {g[0], g[1]};
+  const double mu = 1.0 / (a[0] * a[0] + a[1] * a[1]);
+  const double c = g[1] * g[2] - g[0] * g[3];
+  const double dmu[2] = {-2.0 * mu * mu * a[0], -2.0 * mu * mu * a[1]};
+  const double dca[2] = {-g[3], g[2]};  // dc/da
+  const double dcb[2] = {g[1], -g[0]};  // dc/db
+  const double D[2][2] = {{0.0, -1.0}, {1.0, 0.0}};  // d2c/da db
+  Scalar k;
+  k.value = c * mu;
+  k.d = {dca[0] * mu + c * dmu[0], dca[1] * mu + c * dmu[1], dcb[0] * mu, dcb[1] * mu};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const double ddmu = -2.0 * mu * mu * (i == j) + 8.0 * mu * mu * mu * a[i] * a[j];
+      k.dd[i][j] = c * ddmu + dca[i] * dmu[j] + dmu[i] * dca[j];
+      k.dd[i][2 + j] = k.dd[2 + j][i] = mu * D[i][j] + dmu[i] * dcb[j];
+    }
+  return k;
+}
+
+/// The tangent angle phi(a) = atan2(-a_n, a_t) relative to t0: gradient and Hessian in a
+/// (the value itself only enters through differences, see the vertex terms).
+Scalar tangent_angle(const Vec4& g) {
+  const double at = g[0], an = g[1], mu = 1.0 / (at * at + an * an);
+  Scalar p;
+  p.value = std::atan2(-an, at);
+  p.d = {an * mu, -at * mu, 0.0, 0.0};
+  p.dd[0][0] = -2.0 * mu * mu * at * an;
+  p.dd[0][1] = p.dd[1][0] = mu - 2.0 * mu * mu * an * an;
+  p.dd[1][1] = 2.0 * mu * mu * at * an;
+  return p;
+}
+
+/// Energy per reference length at a point: EA/2 (|a| - 1)^2 + EI/2 (phi'/R)^2.
+Scalar point_energy(const Vec4& g, double EA, double EI, double R) {
+  Scalar w;
+  const double lambda = std::hypot(g[0], g[1]);
+  w.value = 0.5 * EA * (lambda - 1.0) * (lambda - 1.0);
+  for (int i = 0; i < 2; ++i) {
+    w.d[i] = EA * (lambda - 1.0) / lambda * g[i];
+    for (int j = 0; j < 2; ++j)
+      w.dd[i][j] = EA * (g[i] * g[j] / (lambda * lambda * lambda) + (i == j) * (1.0 - 1.0 / lambda));
+  }
+  const Scalar k = rotation_rate(g);
+  const double c = EI / (R * R);
+  w.value += 0.5 * c * k.value * k.value;
+  for (int i = 0; i < 4; ++i) {
+    w.d[i] += c * k.value * k.d[i];
+    for (int j = 0; j < 4; ++j) w.dd[i][j] += c * (k.d[i] * k.d[j] + k.value * k.dd[i][j]);
+  }
+  return w;
+}
+
+}  // namespace
+
+double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
+                              SparseMatrix<double>* tangent) const {
+  if (setup_.geometry != Geometry::curved)
+    throw std::invalid_argument("fem: the geometrically exact beam needs fem.geometry = \"curved\"");
+  const Vector<double> full = expand(q);
+  const double EI = spec_.EI(), EA = setup_.EA, R = spec_.radius;
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  if (gradient) gradient->reinit(n_free_);
+  if (tangent) *tangent = 0.0;
+
+  // d g / d x_i for local shape function i at table point q (see nonlinear.hpp):
+  // a_t = 1 + (u' + w)/R, a_n = (w' - u)/R, b_t = (u'' + w')/R, b_n = (w'' - u')/R.
+  auto B = [&](unsigned int i, unsigned int qp) -> Vec4 {
+    const unsigned int k = qp * dpc + i;
+    const double v = v0_[k] / R, v1 = v1_[k] / R, v2 = v2_[k] / R;
+    if (component_[i] == 0) return {v1, -v, v2, -v1};
+    return {v, v1, v1, v2};
+  };
+  auto strain = [&](const std::vector<double>& x, unsigned int qp, std::vector<Vec4>& b) {
+    Vec4 g{1.0, 0.0, 0.0, 0.0};
+    for (unsigned int i = 0; i < dpc; ++i) {
+      b[i] = B(i, qp);
+      for (int a = 0; a < 4; ++a) g[a] += x[i] * b[i][a];
+    }
+    return g;
+  };
+  auto scatter = [&](const std::vector<types::global_dof_index>& dofs, const std::vector<double>& local) {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      for (const auto& [f, w] : expansion_[dofs[i]]) (*gradient)[f] += w * local[i];
+  };
+
+  double energy = 0.0;
+  std::vector<types::global_dof_index> dofs(dpc), right(dpc), pair(2 * dpc);
+  std::vector<double> x(dpc), xr(dpc), f(2 * dpc);
+  std::vector<Vec4> b(dpc), br(dpc);
+  FullMatrix<double> k_cell(dpc, dpc), k_vertex(2 * dpc, 2 * dpc);
+  for (unsigned int cell = 0; cell < n; ++cell) {
+    cells_[cell]->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dpc; ++i) x[i] = full[dofs[i]];
+    std::fill(f.begin(), f.end(), 0.0);
+    k_cell = 0;
+    for (unsigned int qp = 0; qp < nq_; ++qp) {
+      const Scalar w = point_energy(strain(x, qp, b), EA, EI, R);
+      energy += ds_[qp] * w.value;
+      for (unsigned int i = 0; i < dpc; ++i) {
+        Vec4 Hb{};
+        for (int a = 0; a < 4; ++a) {
+          f[i] += ds_[qp] * w.d[a] * b[i][a];
+          for (int c = 0; c < 4; ++c) Hb[a] += w.dd[a][c] * b[i][c];
+        }
+        if (tangent)
+          for (unsigned int j = 0; j < dpc; ++j)
+            k_cell(j, i) += ds_[qp] * (b[j][0] * Hb[0] + b[j][1] * Hb[1] + b[j][2] * Hb[2] + b[j][3] * Hb[3]);
+      }
+    }
+    if (gradient) scatter(dofs, {f.begin(), f.begin() + dpc});
+    if (tangent) add_local(k_cell, dofs, *tangent);
+  }
+
+  // Interior penalty at every vertex on the exact rotation jump J = phi_R - phi_L (the
+  // angle from the left cell's tangent to the right one's, never wrapped: both are
+  // measured from the same t0) and the mean moment {M} = EI (phi'_L + phi'_R) / (2 R):
+  // E_v = {M} J + penalty / 2 J^2.
+  for (unsigned int v = 0; v < n; ++v) {
+    const unsigned int left = (v + n - 1) % n;
+    cells_[left]->get_dof_indices(dofs);
+    cells_[v]->get_dof_indices(right);
+    for (unsigned int i = 0; i < dpc; ++i) {
+      x[i] = full[dofs[i]];
+      xr[i] = full[right[i]];
+    }
+    const Vec4 gl = strain(x, nq_ + 1, b), gr = strain(xr, nq_, br);
+    const Scalar pl = tangent_angle(gl), pr = tangent_angle(gr);
+    const Scalar kl = rotation_rate(gl), kr = rotation_rate(gr);
+    const double J = std::remainder(pr.value - pl.value, 2.0 * kPi);
+    const double m = EI / (2.0 * R);
+    const double M = m * (kl.value + kr.value), P = penalty_;
+    energy += M * J + 0.5 * P * J * J;
+    // Derivatives in the 8 local strain variables (left g | right g), then to the DoFs.
+    std::array<double, 8> dJ{}, dM{};
+    std::array<std::array<double, 8>, 8> H{};
+    for (int a = 0; a < 4; ++a) {
+      dJ[a] = -pl.d[a];
+      dJ[4 + a] = pr.d[a];
+      dM[a] = m * kl.d[a];
+      dM[4 + a] = m * kr.d[a];
+    }
+    const double s = M + P * J;
+    for (int a = 0; a < 8; ++a)
+      for (int c = 0; c < 8; ++c) H[a][c] = dM[a] * dJ[c] + dJ[a] * dM[c] + P * dJ[a] * dJ[c];
+    for (int a = 0; a < 4; ++a)
+      for (int c = 0; c < 4; ++c) {
+        H[a][c] += J * m * kl.dd[a][c] - s * pl.dd[a][c];
+        H[4 + a][4 + c] += J * m * kr.dd[a][c] + s * pr.dd[a][c];
+      }
+    std::array<double, 8> dE{};
+    for (int a = 0; a < 8; ++a) dE[a] = J * dM[a] + s * dJ[a];
+    auto local_b = [&](unsigned int i) -> const Vec4& { return i < dpc ? b[i] : br[i - dpc]; };
+    for (unsigned int i = 0; i < 2 * dpc; ++i) {
+      const Vec4& bi = local_b(i);
+      const unsigned int off_i = i < dpc ? 0 : 4;
+      f[i] = 0.0;
+      for (int a = 0; a < 4; ++a) f[i] += dE[off_i + a] * bi[a];
+      if (!tangent) continue;
+      for (unsigned int j = 0; j < 2 * dpc; ++j) {
+        const Vec4& bj = local_b(j);
+        const unsigned int off_j = j < dpc ? 0 : 4;
+        double sum = 0.0;
+        for (int a = 0; a < 4; ++a)
+          for (int c = 0; c < 4; ++c) sum += bi[a] * H[off_i + a][off_j + c] * bj[c];
+        k_vertex(i, j) = sum;
+      }
+    }
+    std::copy(dofs.begin(), dofs.end(), pair.begin());
+    std::copy(right.begin(), right.end(), pair.begin() + dpc);
+    if (gradient) scatter(pair, f);
+    if (tangent) add_local(k_vertex, pair, *tangent);
+  }
+  return energy;
+}
+
+unsigned int RingModel::vertex_of(double degrees) const {
+  const double pin = spec_.supports.pin.value_or(0.0);
+  const unsigned int n = setup_.cells();
+  return static_cast<unsigned int>(std::lround(ring::wrap_degrees(degrees - pin) * n / 360.0)) % n;
+}
+
+std::array<double, 2> RingModel::vertex_position(unsigned int k) const {
+  const double a = theta0_ + k * h_;
+  return {spec_.radius * std::cos(a), spec_.radius * std::sin(a)};
+}
+
+Vector<double> RingModel::vertex_force(unsigned int k, const std::array<double, 2>& f) const {
+  // U = u t0 + w n0 at the vertex: the force's work is u (f . t0) + w (f . n0).
+  const double a = theta0_ + k * h_;
+  const std::array<double, 2> coef{-f[0] * std::sin(a) + f[1] * std::cos(a), f[0] * std::cos(a) + f[1] * std::sin(a)};
+  const auto dofs = end_dofs(k, 0.0);
+  Vector<double> out(n_free_);
+  for (unsigned int c = 0; c < 2; ++c)
+    for (const auto& [j, w] : expansion_[dofs[c]]) out[j] += w * coef[c];
+  return out;
+}
+
+std::array<double, 2> RingModel::vertex_displacement(const Vector<double>& full, unsigned int k) const {
+  const double a = theta0_ + k * h_;
+  const auto dofs = end_dofs(k, 0.0);
+  const double u = full[dofs[0]], w = full[dofs[1]];
+  return {-u * std::sin(a) + w * std::cos(a), u * std::cos(a) + w * std::sin(a)};
+}
+
+}  // namespace fem::detail
