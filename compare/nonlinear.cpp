@@ -276,7 +276,7 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
   for (std::size_t s = 0; s < histories.size(); ++s) {
     const auto& h = histories[s];
     for (std::size_t p = 0; p < h.record_angles.size(); ++p) {
-      Series x{h.solver + ": |u| at " + sig4(h.record_angles[p]) + " deg", h.t, {}, static_cast<int>(p), s > 0};
+      Series x{h.solver + ": |u| at " + sig4(h.record_angles[p]) + " deg", h.t, {}, static_cast<int>(p), 1 + static_cast<int>(s % 4)};
       double largest = 0.0;
       for (std::size_t k = 0; k < h.t.size(); ++k) {
         x.y.push_back(std::hypot(h.ux[p][k], h.uy[p][k]));
@@ -285,13 +285,13 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
       if (largest > 0.0) series.push_back(x);  // the pin does not move
     }
   }
-  plot_series(dir, "response_history", "Forced response of every solver: |u| of the recorded points", "t (s)",
+  plot_series(dir, "response_history", "Forced response, |u| of the recorded points (solid: the base solver; dashed, dotted: the others in order)", "t (s)",
               "|displacement| (m)", series);
   std::vector<Series> shapes;
   for (std::size_t s = 0; s < histories.size(); ++s) {
     const auto& h = histories[s];
     for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
-      Series x{h.solver + ", t = " + sig4(h.snapshot_t[k]) + " s", {}, {}, static_cast<int>(k), s > 0};
+      Series x{h.solver + ", t = " + sig4(h.snapshot_t[k]) + " s", {}, {}, static_cast<int>(k), 1 + static_cast<int>(s % 4)};
       for (std::size_t i = 0; i <= h.snapshot_x[k].size(); ++i) {
         const std::size_t j = i % h.snapshot_x[k].size();
         x.x.push_back(h.snapshot_x[k][j]);
@@ -301,12 +301,12 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
     }
   }
   if (!shapes.empty())
-    plot_series(dir, "response_shapes", "Deformed ring at several instants, every solver (dashed: not the base)",
+    plot_series(dir, "response_shapes", "Deformed ring at several instants (solid: the base solver; dashed, dotted, dash-dotted: the others in order)",
                 "x (m)", "y (m)", shapes, false, false, true);
 }
 
 void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, double radius) {
-  Series undeformed{"undeformed", {}, {}, 9, true};
+  Series undeformed{"undeformed", {}, {}, 9, 2};
   for (int i = 0; i <= 360; ++i) {
     undeformed.x.push_back(radius * std::cos(i * M_PI / 180.0));
     undeformed.y.push_back(radius * std::sin(i * M_PI / 180.0));
@@ -315,7 +315,7 @@ void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticRe
   for (std::size_t s = 0; s < results.size(); ++s) {
     const auto& r = results[s];
     if (r.node_x.empty()) continue;
-    Series x{r.solver, {}, {}, static_cast<int>(s), false};
+    Series x{r.solver, {}, {}, static_cast<int>(s), 1};
     for (std::size_t i = 0; i <= r.node_x.size(); ++i) {
       x.x.push_back(r.node_x[i % r.node_x.size()]);
       x.y.push_back(r.node_y[i % r.node_y.size()]);

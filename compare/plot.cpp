@@ -184,7 +184,7 @@ void plot_series(const std::string& dir, const std::string& name, const std::str
     const Series& s = series[i];
     const bool dense = equal_aspect || s.x.size() > 60;  // markers only where they can be told apart
     g << (i ? ", " : "") << "datafile index " << i << " using 1:2 with "
-      << (dense ? "lines lw 2" : "linespoints lw 2 pt 7 ps 0.8") << " dt " << (s.dashed ? 2 : 1) << " lc rgb '"
+      << (dense ? "lines lw 2" : "linespoints lw 2 pt 7 ps 0.8") << " dt " << s.dash << " lc rgb '"
       << kColors[(s.color >= 0 ? s.color : static_cast<int>(i)) % kPalette] << "' title " << gp_string(s.name);
   }
   g << "\n";

@@ -26,7 +26,7 @@ struct Series {
   std::string name;
   std::vector<double> x, y;
   int color = -1;       ///< palette index; -1: the series' position
-  bool dashed = false;
+  int dash = 1;         ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
 };
 void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,
                  const std::string& ylabel, const std::vector<Series>& series, bool logx = false, bool logy = false,

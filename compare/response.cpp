@@ -72,8 +72,8 @@ void plot_response(const std::string& dir, const ring::TimeHistory& h, double ra
   std::vector<Series> series;
   for (std::size_t p = 0; p < h.record_angles.size(); ++p) {
     const int color = static_cast<int>(p);
-    series.push_back({"u_x at " + deg_label(h.record_angles[p]) + " deg", h.t, h.ux[p], color, false});
-    series.push_back({"u_y at " + deg_label(h.record_angles[p]) + " deg", h.t, h.uy[p], color, true});
+    series.push_back({"u_x at " + deg_label(h.record_angles[p]) + " deg", h.t, h.ux[p], color, 1});
+    series.push_back({"u_y at " + deg_label(h.record_angles[p]) + " deg", h.t, h.uy[p], color, 2});
   }
   plot_series(dir, "response_history", "Forced response: displacements of the recorded points", "t (s)",
               "displacement (m)", series);
