@@ -9,6 +9,7 @@
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
+#include "multibody/energy_momentum.hpp"
 
 namespace multibody {
 namespace {
@@ -468,10 +469,6 @@ bool use_sparse_path(const ring::MultibodyOptions& options) {
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
                           const IntegrationControls& controls) {
-  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
-    throw std::invalid_argument(
-        "multibody::respond: response.integrator = \"energy-momentum\" is not offered by the multibody chain; use "
-        "\"newmark\" or \"generalized-alpha\" (the lumped chain offers an energy-conserving midpoint scheme)");
   if (!spec.supports.pin)
     throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
@@ -485,6 +482,8 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (controls.max_newton < 1 || !(controls.min_dt_factor > 0 && controls.min_dt_factor <= 1))
     throw std::invalid_argument(
         "multibody::respond: controls need max_newton >= 1 and 0 < min_dt_factor <= 1");
+  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
+    return respond_energy_momentum(spec, options, response, controls);
 
   const Chain chain(spec, options, response.load.angle);
   const int n = chain.dofs();

@@ -1,0 +1,381 @@
+// The energy-momentum integrator in natural coordinates (energy_momentum.hpp).
+#include "multibody/energy_momentum.hpp"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "multibody/chain.hpp"
+#include "multibody/dynamics_model.hpp"
+#include "multibody/dynamics_sparse.hpp"
+
+namespace multibody {
+namespace {
+
+using Vec = Eigen::VectorXd;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+constexpr double kPi = 3.14159265358979323846;
+/// A spring's discrete-gradient correction is applied where it exceeds this many times
+/// its round-off (see step()).
+constexpr double kResolved = 1e3;
+constexpr double kEps = 2.220446049250313e-16;
+constexpr int kMaxNewton = 15;
+/// Newton converged: correction and constraints <= kTolerance R (R = n l / 2 pi: the
+/// round-off of positions is ~eps R, so a bound in l could not be met at large n).
+constexpr double kTolerance = 1e-12;
+
+/// The chain in hinge positions (see the header).
+struct Natural {
+  int n = 0;
+  double l = 0, m = 0, Jr = 0, K = 0, theta0 = 0;
+  Eigen::Vector2d pin, nu;  ///< pin position; unit normal of the roller's line
+  int roller = -1;
+  int load = 0;
+  Eigen::Vector2d F;
+  int rows() const { return n + 2 + (roller >= 0 ? 1 : 0); }
+  int size() const { return 2 * n + rows(); }
+};
+
+Eigen::Vector2d hinge(const Vec& x, int k) { return x.segment<2>(2 * k); }
+
+/// Turning angle at hinge k and its gradient and Hessian in y = (x_{k-1}, x_k, x_{k+1}).
+struct Turn {
+  double theta;
+  Vec6 d;
+  Mat6 dd;
+};
+
+Turn turn(const Vec6& y) {
+  const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
+  // Explicit return types: an `auto` lambda would return an expression that refers to a
+  // destroyed temporary.
+  auto grad_angle = [](const Eigen::Vector2d& v) -> Eigen::Vector2d {
+    return Eigen::Vector2d(-v.y(), v.x()) / v.squaredNorm();
+  };
+  auto hess_angle = [](const Eigen::Vector2d& v) -> Eigen::Matrix2d {
+    const double s2 = v.squaredNorm() * v.squaredNorm();
+    Eigen::Matrix2d h;
+    h << 2 * v.x() * v.y(), v.y() * v.y() - v.x() * v.x(), v.y() * v.y() - v.x() * v.x(), -2 * v.x() * v.y();
+    return h / s2;
+  };
+  Turn t;
+  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
+  const Eigen::Vector2d ga = grad_angle(a), gb = grad_angle(b);
+  t.d << ga, -ga - gb, gb;
+  const Eigen::Vector3d pa(-1, 1, 0), pb(0, -1, 1);
+  const Eigen::Matrix2d ha = hess_angle(a), hb = hess_angle(b);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) t.dd.block<2, 2>(2 * i, 2 * j) = -pa(i) * pa(j) * ha + pb(i) * pb(j) * hb;
+  return t;
+}
+
+Vec6 local(const Natural& c, const Vec& x, int k) {
+  Vec6 y;
+  y << hinge(x, (k + c.n - 1) % c.n), hinge(x, k), hinge(x, (k + 1) % c.n);
+  return y;
+}
+
+double spring_energy(const Natural& c, const Vec& x) {
+  double V = 0.0;
+  for (int k = 0; k < c.n; ++k) {
+    const double d = turn(local(c, x, k)).theta - c.theta0;
+    V += 0.5 * c.K * d * d;
+  }
+  return V;
+}
+
+/// M x for the constant bar mass matrix: per bar (m/4) [1 1; 1 1] + (Jr/l^2) [1 -1; -1 1].
+Vec mass_times(const Natural& c, const Vec& v) {
+  Vec out = Vec::Zero(2 * c.n);
+  const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
+  for (int i = 0; i < c.n; ++i) {
+    const int j = (i + 1) % c.n;
+    const Eigen::Vector2d a = hinge(v, i), b = hinge(v, j);
+    out.segment<2>(2 * i) += s * (a + b) + r * (a - b);
+    out.segment<2>(2 * j) += s * (a + b) + r * (b - a);
+  }
+  return out;
+}
+
+/// Constraint values at x (rows: links, pin x, pin y, roller).
+Vec constraints(const Natural& c, const Vec& x) {
+  Vec g(c.rows());
+  for (int i = 0; i < c.n; ++i) {
+    const Eigen::Vector2d e = hinge(x, (i + 1) % c.n) - hinge(x, i);
+    g(i) = (e.squaredNorm() - c.l * c.l) / (2.0 * c.l);
+  }
+  g.segment<2>(c.n) = hinge(x, 0) - c.pin;
+  if (c.roller >= 0) g(c.n + 2) = c.nu.dot(hinge(x, c.roller) - c.pin);
+  return g;
+}
+
+/// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
+/// `offset`: as columns (G^T, `transpose`) or as rows, and G(x)^T lambda to `force`
+/// when not null.
+void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool transpose, double scale,
+                             Triplets& t, const Vec* lambda, Vec* force) {
+  auto put = [&](int row, int dof, double v) {
+    if (transpose) t.emplace_back(dof, offset + row, scale * v);
+    else t.emplace_back(offset + row, dof, scale * v);
+    if (force) (*force)(dof) += v * (*lambda)(row);
+  };
+  for (int i = 0; i < c.n; ++i) {
+    const int j = (i + 1) % c.n;
+    const Eigen::Vector2d e = (hinge(x, j) - hinge(x, i)) / c.l;
+    for (int a = 0; a < 2; ++a) {
+      put(i, 2 * i + a, -e(a));
+      put(i, 2 * j + a, e(a));
+    }
+  }
+  put(c.n, 0, 1.0);
+  put(c.n + 1, 1, 1.0);
+  if (c.roller >= 0)
+    for (int a = 0; a < 2; ++a) put(c.n + 2, 2 * c.roller + a, c.nu(a));
+}
+
+struct Step {
+  bool converged = false;
+  int iterations = 0;
+};
+
+/// One step of the scheme from (x0, v0) over h with load factor f at the midpoint;
+/// x1 and lambda are the starting guess and the result.
+Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Vec& x1, Vec& lambda,
+          Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>& lu, bool& analyzed) {
+  const int N = 2 * c.n, S = c.size();
+  const double cm = 2.0 / (h * h);
+  const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
+  const double kappa = cm * (s + r);
+  Step out;
+  Triplets t;
+  t.reserve(static_cast<std::size_t>(c.n) * 60);
+  for (int it = 1; it <= kMaxNewton; ++it) {
+    t.clear();
+    const Vec xm = 0.5 * (x0 + x1);
+    // Inertia: (2/h^2) M (x1 - x0 - h v0).
+    Vec rx = cm * mass_times(c, x1 - x0 - h * v0);
+    rx.segment<2>(2 * c.load) -= f * c.F;
+    for (int i = 0; i < c.n; ++i) {
+      const int j = (i + 1) % c.n;
+      for (int a = 0; a < 2; ++a) {
+        t.emplace_back(2 * i + a, 2 * i + a, cm * (s + r));
+        t.emplace_back(2 * j + a, 2 * j + a, cm * (s + r));
+        t.emplace_back(2 * i + a, 2 * j + a, cm * (s - r));
+        t.emplace_back(2 * j + a, 2 * i + a, cm * (s - r));
+        // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = lambda_i / (2 l) [I -I; -I I].
+        const double w = lambda(i) / (2.0 * c.l);
+        t.emplace_back(2 * i + a, 2 * i + a, w);
+        t.emplace_back(2 * j + a, 2 * j + a, w);
+        t.emplace_back(2 * i + a, 2 * j + a, -w);
+        t.emplace_back(2 * j + a, 2 * i + a, -w);
+      }
+    }
+    // Springs: each one's discrete gradient and its exact Jacobian in y1.
+    for (int k = 0; k < c.n; ++k) {
+      const Vec6 y0 = local(c, x0, k), y1 = local(c, x1, k), dy = y1 - y0;
+      const Turn tm = turn(0.5 * (y0 + y1));
+      const double dm = tm.theta - c.theta0;
+      const Vec6 gm = c.K * dm * tm.d;
+      const Mat6 Hm = c.K * (tm.d * tm.d.transpose() + dm * tm.dd);
+      Vec6 g = gm;
+      Mat6 J = 0.5 * Hm;
+      const double ss = dy.squaredNorm();
+      const Turn t1 = turn(y1), t0 = turn(y0);
+      const double V1 = 0.5 * c.K * (t1.theta - c.theta0) * (t1.theta - c.theta0);
+      const double V0 = 0.5 * c.K * (t0.theta - c.theta0) * (t0.theta - c.theta0);
+      const double e = V1 - V0 - gm.dot(dy);
+      // The correction only where e is resolved above its round-off; elsewhere it would
+      // be noise (and its Jacobian noise / |dy|^2), and leaving it out costs an energy
+      // error below kResolved eps V per spring and step.
+      if (ss > 0 && std::abs(e) > kResolved * kEps * (std::abs(V0) + std::abs(V1) + std::abs(gm.dot(dy)))) {
+        g += e / ss * dy;
+        const Vec6 de = c.K * (t1.theta - c.theta0) * t1.d - 0.5 * Hm * dy - gm;
+        J += dy * de.transpose() / ss + e / ss * (Mat6::Identity() - 2.0 * dy * dy.transpose() / ss);
+      }
+      const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
+      for (int a = 0; a < 3; ++a) {
+        rx.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
+        for (int b = 0; b < 3; ++b)
+          for (int p = 0; p < 2; ++p)
+            for (int q = 0; q < 2; ++q) t.emplace_back(2 * hk[a] + p, 2 * hk[b] + q, J(2 * a + p, 2 * b + q));
+      }
+    }
+    // Constraint rows and multiplier columns scaled by the inertia's diagonal so that the
+    // KKT matrix is balanced (unscaled, its solve loses ~8 digits to the 1e8 ratio).
+    add_constraint_jacobian(c, xm, N, true, kappa, t, &lambda, &rx);  // G(xm)^T as columns
+    add_constraint_jacobian(c, x1, N, false, kappa, t, nullptr, nullptr);  // G(x1) as rows
+    Vec rhs(S);
+    rhs << -rx, -kappa * constraints(c, x1);
+    Eigen::SparseMatrix<double> A(S, S);
+    A.setFromTriplets(t.begin(), t.end());
+    if (!analyzed) {
+      lu.analyzePattern(A);
+      analyzed = true;
+    }
+    lu.factorize(A);
+    if (lu.info() != Eigen::Success) return out;
+    const Vec dz = lu.solve(rhs);
+    if (!dz.allFinite()) return out;
+    x1 += dz.head(N);
+    lambda += kappa * dz.tail(c.rows());
+    out.iterations = it;
+    if (dz.head(N).cwiseAbs().maxCoeff() > 0.5 * c.l) return out;  // left the basin
+    const double R = c.n * c.l / (2.0 * kPi);
+    if (dz.head(N).cwiseAbs().maxCoeff() <= kTolerance * R && constraints(c, x1).cwiseAbs().maxCoeff() <= kTolerance * R) {
+      out.converged = true;
+      return out;
+    }
+  }
+  return out;
+}
+
+std::string describe(double t) {
+  std::ostringstream s;
+  s.precision(6);
+  s << t;
+  return s.str();
+}
+
+}  // namespace
+
+ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                                          const ring::ResponseOptions& response,
+                                          const IntegrationControls& controls) {
+  if (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0)
+    throw std::invalid_argument(
+        "multibody::respond: response.integrator = \"energy-momentum\" conserves the undamped energy balance and "
+        "takes no damping; use \"newmark\" for a damped response");
+  const auto start = std::chrono::steady_clock::now();
+  const Chain chain(spec, options, response.load.angle);
+  Natural c;
+  c.n = chain.n();
+  c.l = chain.l();
+  c.m = chain.m();
+  c.Jr = chain.Jr();
+  c.K = chain.K();
+  c.theta0 = 2.0 * kPi / c.n;
+  c.pin = chain.hinge_rest(0);
+  if (const auto r = chain.roller_hinge()) {
+    c.roller = *r;
+    const Eigen::Vector2d d = (chain.hinge_rest(*r) - c.pin).normalized();
+    c.nu = Eigen::Vector2d(-d.y(), d.x());
+  }
+  c.load = chain.hinge_at(response.load.angle);
+  c.F = Eigen::Vector2d(response.load.force[0], response.load.force[1]);
+
+  std::vector<int> rec;
+  for (double a : response.record) rec.push_back(chain.hinge_at(a));
+  const int gap = detail::contact_gap(chain, spec.section.depth());
+  const double depth = spec.section.depth();
+  const long steps = std::lround(response.t_end / response.dt);
+  std::vector<long> snap_steps;
+  for (int i = 0; i < controls.snapshots; ++i)
+    snap_steps.push_back(controls.snapshots == 1 ? steps : std::lround(double(steps) * i / (controls.snapshots - 1)));
+
+  Vec x(2 * c.n), v = Vec::Zero(2 * c.n), lambda = Vec::Zero(c.rows());
+  for (int k = 0; k < c.n; ++k) x.segment<2>(2 * k) = chain.hinge_rest(k);
+  double work = 0.0, t = 0.0;
+
+  ring::TimeHistory th;
+  th.solver = "multibody";
+  th.unknowns = c.size();
+  th.record_angles = response.record;
+  th.ux.assign(rec.size(), {});
+  th.uy.assign(rec.size(), {});
+  auto record = [&](int iterations, long k) {
+    th.t.push_back(t);
+    for (std::size_t i = 0; i < rec.size(); ++i) {
+      const Eigen::Vector2d u = hinge(x, rec[i]) - chain.hinge_rest(rec[i]);
+      th.ux[i].push_back(u.x());
+      th.uy[i].push_back(u.y());
+    }
+    const double T = 0.5 * v.dot(mass_times(c, v)), V = spring_energy(c, x);
+    th.kinetic.push_back(T);
+    th.strain.push_back(V);
+    th.work.push_back(work);
+    th.energy_error.push_back(T + V - work);
+    th.constraint_residual.push_back(constraints(c, x).head(c.n).cwiseAbs().maxCoeff());
+    th.newton_iterations.push_back(iterations);
+    for (long ks : snap_steps)
+      if (ks == k) {
+        th.snapshot_t.push_back(t);
+        std::vector<double> sx, sy;
+        for (int j = 0; j < c.n; ++j) {
+          sx.push_back(x(2 * j));
+          sy.push_back(x(2 * j + 1));
+        }
+        th.snapshot_x.push_back(sx);
+        th.snapshot_y.push_back(sy);
+        break;
+      }
+  };
+  auto fail = [&](IntegrationFailure::Reason why, const std::string& msg) {
+    th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    throw IntegrationFailure(why, th.t.empty() ? 0.0 : th.t.back(), th, msg);
+  };
+  record(0, 0);
+
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  bool analyzed = false;
+  const double min_dt = controls.min_dt_factor * response.dt;
+  double h = response.dt;
+  int successes = 0;
+  for (long k = 1; k <= steps; ++k) {
+    const double t_target = response.dt * k;
+    int iterations = 0;
+    while (t_target - t > 1e-7 * response.dt) {
+      const double remaining = t_target - t;
+      const bool last = remaining <= h * (1.0 + 1e-9);
+      const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
+      Vec x1 = x + hs * v, l1 = lambda;
+      const double f = response.load.history.factor(t + 0.5 * hs);
+      const Step st = step(c, x, v, hs, f, x1, l1, lu, analyzed);
+      iterations += st.iterations;
+      if (!st.converged) {
+        h = 0.5 * hs;
+        successes = 0;
+        if (h < min_dt)
+          fail(IntegrationFailure::Reason::step_too_small,
+               "multibody::respond (energy-momentum): Newton did not converge at t = " + describe(t) +
+                   " s even with the step halved to " + describe(h) + " s");
+        continue;
+      }
+      work += f * c.F.dot(hinge(x1, c.load) - hinge(x, c.load));
+      v = 2.0 / hs * (x1 - x) - v;
+      x = std::move(x1);
+      lambda = std::move(l1);
+      t = last ? t_target : t + hs;
+      if (!x.allFinite() || !v.allFinite())
+        fail(IntegrationFailure::Reason::not_finite,
+             "multibody::respond (energy-momentum): non-finite state at t = " + describe(t) + " s");
+      if (controls.check_contact) {
+        Eigen::Matrix2Xd hp(2, c.n);
+        for (int j = 0; j < c.n; ++j) hp.col(j) = hinge(x, j);
+        const auto cp = c.n >= 128 ? detail::closest_nonadjacent_grid(hp, c.l, gap, depth)
+                                   : detail::closest_nonadjacent(hp, gap, depth);
+        if (cp.distance < depth)
+          fail(IntegrationFailure::Reason::self_contact,
+               "multibody::respond (energy-momentum): the ring touches itself at t = " + describe(t) +
+                   " s: " + detail::describe_contact(cp) + "; the chain model does not include contact");
+      }
+      if (h < response.dt && ++successes >= 2) {
+        h = std::min(2.0 * h, response.dt);
+        successes = 0;
+      }
+    }
+    t = t_target;
+    record(iterations, k);
+  }
+  th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return th;
+}
+
+}  // namespace multibody
