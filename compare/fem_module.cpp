@@ -95,7 +95,9 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
   std::lock_guard<std::mutex> lock(g_solve);
   ring::StaticResult out;
   std::string error;
-  check(fem_plugin().statics(spec, options, statics, out, error), error);
+  const int status = fem_plugin().statics(spec, options, statics, out, error);
+  if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
+  check(status, error);
   return out;
 }
 
@@ -107,6 +109,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& op
   int reason = 0;
   double t_reached = 0.0;
   const int status = fem_plugin().respond(spec, options, response, out, reason, t_reached, error);
+  if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
   if (status == 3 && reason >= 0)
     throw ring::IntegrationFailure(static_cast<ring::IntegrationFailure::Reason>(reason), t_reached, std::move(out),
                                    error);

@@ -15,6 +15,8 @@ namespace cmp::fem_module {
 /// work (exit 2) and ring::NumericalError on a numerical failure (exit 3).
 ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count);
 void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir);
+/// statics and respond throw std::invalid_argument for input the solver refuses (the
+/// registry turns it into a ring::InputError naming the scene and key).
 ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& options,
                            const ring::StaticOptions& statics);
 /// Throws ring::IntegrationFailure (with the partial history) when the integration fails.

@@ -149,8 +149,12 @@ SolverEntry fem_entry() {
     return 8.0 * unknowns * (30.0 * p + 2.0 * count + 20.0);
   };
   e.modes = [](const ring::Scene& s, int count) { return fem_module::modes(s.ring, s.fem, count); };
-  e.statics = [](const ring::Scene& s) { return fem_module::statics(s.ring, s.fem, *s.statics); };
-  e.response = [](const ring::Scene& s) { return fem_module::respond(s.ring, s.fem, *s.response); };
+  e.statics = [](const ring::Scene& s) {
+    return as_input_error(s, "static", [&] { return fem_module::statics(s.ring, s.fem, *s.statics); });
+  };
+  e.response = [](const ring::Scene& s) {
+    return as_input_error(s, "response", [&] { return fem_module::respond(s.ring, s.fem, *s.response); });
+  };
   e.write_vtu = [](const ring::Scene& s, int count, const std::string& dir) {
     fem_module::write_vtu(s.ring, s.fem, count, dir);
   };

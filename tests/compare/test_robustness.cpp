@@ -100,7 +100,10 @@ TEST(Robustness, InputErrorsNameTheSceneKey) {
   expect_input_error(ringvib("run " + forced + " --set response.at=179.999999999999"), "response.at");
   expect_input_error(ringvib("run " + forced + " --set response.at=-180.000000000001"), "response.at");
   // An integrator a solver does not offer is an input error, not another scheme.
-  expect_input_error(ringvib("respond " + forced + " --set response.integrator=energy-momentum"), "energy-momentum");
+  expect_input_error(ringvib("respond " + forced + " --solver lumped --set response.integrator=generalized-alpha"),
+                     "generalized-alpha");
+  expect_input_error(ringvib("respond " + forced + " --solver fem --set response.integrator=energy-momentum"),
+                     "energy-momentum");
   expect_input_error(ringvib("run " + dir), "folder");
   expect_input_error(ringvib("run /dev/zero"), "larger than");
   expect_input_error(ringvib("frobnicate " + forced), "unknown subcommand 'frobnicate'");

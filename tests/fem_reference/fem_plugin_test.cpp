@@ -1,5 +1,6 @@
-// The dlopen boundary: build/bin/libringvib_fem.so loads, reports ABI 1, and gives
-// exactly the numbers of the statically linked fem::compute_modes.
+// The dlopen boundary: build/bin/libringvib_fem.so loads, reports ABI 2 (modes, VTU,
+// statics, response), and gives exactly the numbers of the statically linked solvers;
+// a failed integration comes back as code 3 with its partial history.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
@@ -7,6 +8,8 @@
 #include <string>
 
 #include "fem_reference/modes.hpp"
+#include "fem_reference/nonlinear.hpp"
+#include "ring/errors.hpp"
 #include "fem_reference/plugin.hpp"
 #include "tests/fem_reference/paper_ring.hpp"
 
@@ -22,7 +25,7 @@ const fem::Plugin* load() {
 TEST(FemPlugin, DlopenGivesTheSameNumbers) {
   const fem::Plugin* plugin = load();
   ASSERT_NE(plugin, nullptr) << dlerror();
-  EXPECT_EQ(plugin->abi_version, 1);
+  EXPECT_EQ(plugin->abi_version, 2);
   const auto spec = femtest::paper_ring(180.0);
   ring::FemOptions o;
   ring::ModalResult out;
@@ -34,6 +37,48 @@ TEST(FemPlugin, DlopenGivesTheSameNumbers) {
   for (std::size_t i = 0; i < out.omega.size(); ++i) EXPECT_NEAR(out.omega[i], direct.omega[i], 1e-12 * direct.omega[i]);
   EXPECT_EQ(out.rigid_modes, direct.rigid_modes);
   EXPECT_EQ(out.unknowns, direct.unknowns);
+}
+
+ring::RingSpec held() {
+  ring::RingSpec s = femtest::paper_ring(180.0);
+  s.supports.roller = 0.0;
+  return s;
+}
+
+TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {
+  const fem::Plugin* plugin = load();
+  ASSERT_NE(plugin, nullptr);
+  ring::FemOptions o;
+  o.elements = 20;
+  ring::StaticOptions st;
+  st.load.force = {-20e3, 0.0};
+  st.record = {0.0, 90.0};
+  ring::StaticResult sr;
+  std::string error;
+  ASSERT_EQ(plugin->statics(held(), o, st, sr, error), 0) << error;
+  const auto sd = fem::solve_static(held(), o, st);
+  ASSERT_EQ(sr.displacements.size(), 2u);
+  EXPECT_EQ(sr.displacements[0].ux, sd.displacements[0].ux);
+  EXPECT_EQ(sr.displacements[1].uy, sd.displacements[1].uy);
+  ring::ResponseOptions rs;
+  rs.load = st.load;
+  rs.dt = 0.01;
+  rs.t_end = 0.2;
+  rs.record = {0.0};
+  ring::TimeHistory h;
+  int reason = -1;
+  double t_reached = 0.0;
+  ASSERT_EQ(plugin->respond(held(), o, rs, h, reason, t_reached, error), 0) << error;
+  EXPECT_EQ(h.ux[0].back(), fem::respond(held(), o, rs).ux[0].back());
+  // A step far too large for Newton from rest (the whole 20 MN load at once) fails with
+  // code 3, the reason and the history so far (the state at t = 0).
+  rs.load.force = {-2e7, 0.0};
+  rs.dt = 1.0;
+  rs.t_end = 2.0;
+  EXPECT_EQ(plugin->respond(held(), o, rs, h, reason, t_reached, error), 3);
+  EXPECT_EQ(reason, static_cast<int>(ring::IntegrationFailure::Reason::step_too_small)) << error;
+  EXPECT_FALSE(h.t.empty());
+  EXPECT_EQ(t_reached, h.t.back());
 }
 
 TEST(FemPlugin, ErrorsBecomeCodesNotExceptions) {
