@@ -448,6 +448,9 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
 /// Segments from which the contact test uses the grid of closest_nonadjacent_grid:
 /// below, the O(n^2) box loop is as fast (both well under the step's cost).
 constexpr int kGridContact = 128;
+/// An undamped run whose energy balance exceeds this fraction of the largest work has
+/// gained energy and failed (the same bound as the other solvers' responses).
+constexpr double kEnergyGrowth = 1e-2;
 
 std::string describe(double t) {
   std::ostringstream s;
@@ -526,7 +529,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   s.v = Vector::Zero(n);
   initial_acceleration(p, s);
   const Eigen::Vector2d F = p.load.force;
-  double work = 0.0, dissipated = 0.0;
+  double work = 0.0, dissipated = 0.0, max_work = 0.0;
   Eigen::Vector2d x_load = chain.hinge_position(s.q, p.load.hinge);
 
   auto record = [&](const State& st, int iterations, long k) {
@@ -625,6 +628,15 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
     }
     s.t = t_target;
     record(s, iterations, k);
+    // An undamped run that gains energy has failed, whatever the integrator: its history
+    // is not a result (generalized-alpha does on fine chains under a point step load).
+    max_work = std::max(max_work, std::abs(work));
+    if (!p.damped && max_work > 0 && th.energy_error.back() > kEnergyGrowth * max_work)
+      fail(IntegrationFailure::Reason::energy_growth,
+           "multibody::respond: the energy balance T + V - W grew to " + describe(th.energy_error.back()) +
+               " J, more than " + describe(100.0 * kEnergyGrowth) + " % of the work " + describe(max_work) +
+               " J, at t = " + describe(s.t) + " s: the integration gains energy (try response.integrator = "
+               "\"energy-momentum\" or \"newmark\")");
   }
   return th;
 }

@@ -233,10 +233,12 @@ TEST(MultibodySparseDynamics, DampedSceneAgrees) {
 
 // Self-contact is reported the same way on both paths (the issue-7 crushing load of
 // 150 kN, test_dynamics_stress.cpp), at n = 40 (O(n^2) contact loop) and n = 160 (grid):
-// same reason, same step.
+// same reason, same step. With Newmark: under this load generalized-alpha gains more
+// than 1 % of the work before the ring closes, which is now a failure of its own
+// (energy_growth, tested in test_dynamics_sparse_stress.cpp).
 TEST(MultibodySparseDynamics, SelfContactReportedOnBothPaths) {
   for (int n : {40, 160}) {
-    ring::ResponseOptions r = paper_scene(Integrator::generalized_alpha, 5.0);
+    ring::ResponseOptions r = paper_scene(Integrator::newmark, 5.0);
     r.load.force = {-150e3, 0.0};
     double t_dense = -1, t_sparse = -2;
     try {
