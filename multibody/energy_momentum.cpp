@@ -13,16 +13,12 @@
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
+#include "multibody/natural.hpp"
 
 namespace multibody {
 namespace {
 
-using Vec = Eigen::VectorXd;
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Triplets = std::vector<Eigen::Triplet<double>>;
-
-constexpr double kPi = 3.14159265358979323846;
+using namespace natural;
 /// A spring's discrete-gradient correction is applied where it exceeds this many times
 /// its round-off (see step()).
 constexpr double kResolved = 1e3;
@@ -31,115 +27,6 @@ constexpr int kMaxNewton = 15;
 /// Newton converged: correction and constraints <= kTolerance R (R = n l / 2 pi: the
 /// round-off of positions is ~eps R, so a bound in l could not be met at large n).
 constexpr double kTolerance = 1e-12;
-
-/// The chain in hinge positions (see the header).
-struct Natural {
-  int n = 0;
-  double l = 0, m = 0, Jr = 0, K = 0, theta0 = 0;
-  Eigen::Vector2d pin, nu;  ///< pin position; unit normal of the roller's line
-  int roller = -1;
-  int load = 0;
-  Eigen::Vector2d F;
-  int rows() const { return n + 2 + (roller >= 0 ? 1 : 0); }
-  int size() const { return 2 * n + rows(); }
-};
-
-Eigen::Vector2d hinge(const Vec& x, int k) { return x.segment<2>(2 * k); }
-
-/// Turning angle at hinge k and its gradient and Hessian in y = (x_{k-1}, x_k, x_{k+1}).
-struct Turn {
-  double theta;
-  Vec6 d;
-  Mat6 dd;
-};
-
-Turn turn(const Vec6& y) {
-  const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
-  // Explicit return types: an `auto` lambda would return an expression that refers to a
-  // destroyed temporary.
-  auto grad_angle = [](const Eigen::Vector2d& v) -> Eigen::Vector2d {
-    return Eigen::Vector2d(-v.y(), v.x()) / v.squaredNorm();
-  };
-  auto hess_angle = [](const Eigen::Vector2d& v) -> Eigen::Matrix2d {
-    const double s2 = v.squaredNorm() * v.squaredNorm();
-    Eigen::Matrix2d h;
-    h << 2 * v.x() * v.y(), v.y() * v.y() - v.x() * v.x(), v.y() * v.y() - v.x() * v.x(), -2 * v.x() * v.y();
-    return h / s2;
-  };
-  Turn t;
-  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
-  const Eigen::Vector2d ga = grad_angle(a), gb = grad_angle(b);
-  t.d << ga, -ga - gb, gb;
-  const Eigen::Vector3d pa(-1, 1, 0), pb(0, -1, 1);
-  const Eigen::Matrix2d ha = hess_angle(a), hb = hess_angle(b);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) t.dd.block<2, 2>(2 * i, 2 * j) = -pa(i) * pa(j) * ha + pb(i) * pb(j) * hb;
-  return t;
-}
-
-Vec6 local(const Natural& c, const Vec& x, int k) {
-  Vec6 y;
-  y << hinge(x, (k + c.n - 1) % c.n), hinge(x, k), hinge(x, (k + 1) % c.n);
-  return y;
-}
-
-double spring_energy(const Natural& c, const Vec& x) {
-  double V = 0.0;
-  for (int k = 0; k < c.n; ++k) {
-    const double d = turn(local(c, x, k)).theta - c.theta0;
-    V += 0.5 * c.K * d * d;
-  }
-  return V;
-}
-
-/// M x for the constant bar mass matrix: per bar (m/4) [1 1; 1 1] + (Jr/l^2) [1 -1; -1 1].
-Vec mass_times(const Natural& c, const Vec& v) {
-  Vec out = Vec::Zero(2 * c.n);
-  const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
-  for (int i = 0; i < c.n; ++i) {
-    const int j = (i + 1) % c.n;
-    const Eigen::Vector2d a = hinge(v, i), b = hinge(v, j);
-    out.segment<2>(2 * i) += s * (a + b) + r * (a - b);
-    out.segment<2>(2 * j) += s * (a + b) + r * (b - a);
-  }
-  return out;
-}
-
-/// Constraint values at x (rows: links, pin x, pin y, roller).
-Vec constraints(const Natural& c, const Vec& x) {
-  Vec g(c.rows());
-  for (int i = 0; i < c.n; ++i) {
-    const Eigen::Vector2d e = hinge(x, (i + 1) % c.n) - hinge(x, i);
-    g(i) = (e.squaredNorm() - c.l * c.l) / (2.0 * c.l);
-  }
-  g.segment<2>(c.n) = hinge(x, 0) - c.pin;
-  if (c.roller >= 0) g(c.n + 2) = c.nu.dot(hinge(x, c.roller) - c.pin);
-  return g;
-}
-
-/// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
-/// `offset`: as columns (G^T, `transpose`) or as rows, and G(x)^T lambda to `force`
-/// when not null.
-void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool transpose, double scale,
-                             Triplets& t, const Vec* lambda, Vec* force) {
-  auto put = [&](int row, int dof, double v) {
-    if (transpose) t.emplace_back(dof, offset + row, scale * v);
-    else t.emplace_back(offset + row, dof, scale * v);
-    if (force) (*force)(dof) += v * (*lambda)(row);
-  };
-  for (int i = 0; i < c.n; ++i) {
-    const int j = (i + 1) % c.n;
-    const Eigen::Vector2d e = (hinge(x, j) - hinge(x, i)) / c.l;
-    for (int a = 0; a < 2; ++a) {
-      put(i, 2 * i + a, -e(a));
-      put(i, 2 * j + a, e(a));
-    }
-  }
-  put(c.n, 0, 1.0);
-  put(c.n + 1, 1, 1.0);
-  if (c.roller >= 0)
-    for (int a = 0; a < 2; ++a) put(c.n + 2, 2 * c.roller + a, c.nu(a));
-}
 
 struct Step {
   bool converged = false;
@@ -170,14 +57,10 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
         t.emplace_back(2 * j + a, 2 * j + a, cm * (s + r));
         t.emplace_back(2 * i + a, 2 * j + a, cm * (s - r));
         t.emplace_back(2 * j + a, 2 * i + a, cm * (s - r));
-        // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = lambda_i / (2 l) [I -I; -I I].
-        const double w = lambda(i) / (2.0 * c.l);
-        t.emplace_back(2 * i + a, 2 * i + a, w);
-        t.emplace_back(2 * j + a, 2 * j + a, w);
-        t.emplace_back(2 * i + a, 2 * j + a, -w);
-        t.emplace_back(2 * j + a, 2 * i + a, -w);
       }
     }
+    // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = 1/2 sum lambda_i Hess c_i.
+    add_constraint_curvature(c, lambda, 0.5, t);
     // Springs: each one's discrete gradient and its exact Jacobian in y1.
     for (int k = 0; k < c.n; ++k) {
       const Vec6 y0 = local(c, x0, k), y1 = local(c, x1, k), dy = y1 - y0;
@@ -228,7 +111,7 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
     lambda += kappa * dz.tail(c.rows());
     out.iterations = it;
     if (dz.head(N).cwiseAbs().maxCoeff() > 0.5 * c.l) return out;  // left the basin
-    const double R = c.n * c.l / (2.0 * kPi);
+    const double R = c.radius();
     if (dz.head(N).cwiseAbs().maxCoeff() <= kTolerance * R && constraints(c, x1).cwiseAbs().maxCoeff() <= kTolerance * R) {
       out.converged = true;
       return out;
@@ -255,21 +138,8 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
         "takes no damping; use \"newmark\" for a damped response");
   const auto start = std::chrono::steady_clock::now();
   const Chain chain(spec, options, response.load.angle);
-  Natural c;
-  c.n = chain.n();
-  c.l = chain.l();
-  c.m = chain.m();
-  c.Jr = chain.Jr();
-  c.K = chain.K();
-  c.theta0 = 2.0 * kPi / c.n;
-  c.pin = chain.hinge_rest(0);
-  if (const auto r = chain.roller_hinge()) {
-    c.roller = *r;
-    const Eigen::Vector2d d = (chain.hinge_rest(*r) - c.pin).normalized();
-    c.nu = Eigen::Vector2d(-d.y(), d.x());
-  }
-  c.load = chain.hinge_at(response.load.angle);
-  c.F = Eigen::Vector2d(response.load.force[0], response.load.force[1]);
+  const Natural c =
+      make_natural(chain, response.load.angle, Eigen::Vector2d(response.load.force[0], response.load.force[1]));
 
   std::vector<int> rec;
   for (double a : response.record) rec.push_back(chain.hinge_at(a));
@@ -280,8 +150,7 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   for (int i = 0; i < controls.snapshots; ++i)
     snap_steps.push_back(controls.snapshots == 1 ? steps : std::lround(double(steps) * i / (controls.snapshots - 1)));
 
-  Vec x(2 * c.n), v = Vec::Zero(2 * c.n), lambda = Vec::Zero(c.rows());
-  for (int k = 0; k < c.n; ++k) x.segment<2>(2 * k) = chain.hinge_rest(k);
+  Vec x = rest(chain), v = Vec::Zero(2 * c.n), lambda = Vec::Zero(c.rows());
   double work = 0.0, t = 0.0;
 
   ring::TimeHistory th;

@@ -1,0 +1,80 @@
+// Internal to multibody/: the chain in natural coordinates (hinge positions), shared by
+// the energy-momentum integrator (energy_momentum.hpp) and the O(n) statics
+// (statics.hpp): constant bar mass matrix, quadratic link constraints, springs on the
+// turning angle. The model is documented in energy_momentum.hpp.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <vector>
+
+#include "multibody/chain.hpp"
+#include "ring/analysis.hpp"
+#include "ring/results.hpp"
+
+namespace multibody::natural {
+
+using Vec = Eigen::VectorXd;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// The chain in hinge positions.
+struct Natural {
+  int n = 0;
+  double l = 0, m = 0, Jr = 0, K = 0, theta0 = 0;
+  Eigen::Vector2d pin, nu;  ///< pin position; unit normal of the roller's line
+  int roller = -1;
+  int load = 0;             ///< loaded hinge
+  Eigen::Vector2d F;        ///< the dead force, N
+  int rows() const { return n + 2 + (roller >= 0 ? 1 : 0); }
+  int size() const { return 2 * n + rows(); }
+  /// Radius of the hinges' circle, m (the scale of positions and their round-off).
+  double radius() const;
+};
+
+/// The natural model of `chain` with a dead force F at the hinge at `load_deg`.
+Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d& F);
+/// The rest positions (x_0, y_0, ..., x_{n-1}, y_{n-1}).
+Vec rest(const Chain& chain);
+
+inline Eigen::Vector2d hinge(const Vec& x, int k) { return x.segment<2>(2 * k); }
+
+/// Turning angle at a hinge and its gradient and Hessian in y = (x_{k-1}, x_k, x_{k+1}).
+struct Turn {
+  double theta;
+  Vec6 d;
+  Mat6 dd;
+};
+Turn turn(const Vec6& y);
+/// The six coordinates of hinge k and its neighbours.
+Vec6 local(const Natural& c, const Vec& x, int k);
+double spring_energy(const Natural& c, const Vec& x);
+/// M v for the constant bar mass matrix. O(n).
+Vec mass_times(const Natural& c, const Vec& v);
+/// Constraint values (rows: links, pin x, pin y, roller). O(n).
+Vec constraints(const Natural& c, const Vec& x);
+/// Adds the constraint gradients G(x), times `scale`, to a KKT matrix whose multipliers
+/// start at `offset`: as columns (G^T, `transpose`) or as rows; adds G(x)^T lambda to
+/// `force` when not null.
+void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool transpose, double scale,
+                             Triplets& t, const Vec* lambda, Vec* force);
+/// Adds sum_i lambda_i Hess c_i (the links' constant Hessians), times `weight`.
+void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t);
+
+/// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
+/// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
+/// border: hinges 2 .. n-2 and their links in chain order, then hinges n-1, 0, 1 (the
+/// spring at hinge 0 couples n-1 with 1 and closes the cycle), links n-1 and 0, the pin
+/// and roller rows. An LU in this order (with pivoting inside the band) fills only the
+/// band and the border's rows and columns: O(n) memory and time, whatever the pivots.
+/// perm[old] = new. Needs n >= 4.
+Eigen::VectorXi banded_order(const Natural& c);
+
+/// Nonlinear statics of `chain` in hinge positions (statics_natural.cpp): load stepping
+/// with full Newton, one sparse LU per iteration, O(n); no arc-length continuation (a
+/// limit point is a ring::NumericalError). Same result type as multibody::solve_static.
+ring::StaticResult solve_static(const Chain& chain, const ring::RingSpec& spec, const ring::StaticOptions& st);
+
+}  // namespace multibody::natural

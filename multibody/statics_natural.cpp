@@ -1,0 +1,153 @@
+// Nonlinear statics on the O(n) path: the chain in hinge positions (natural.hpp), load
+// stepping with full Newton on the equilibrium ∇V(x) + G(x)^T lambda = s F, c(x) = 0.
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+#include "multibody/dynamics_model.hpp"
+#include "multibody/dynamics_sparse.hpp"
+#include "multibody/natural.hpp"
+#include "ring/errors.hpp"
+
+namespace multibody::natural {
+namespace {
+
+constexpr int kMaxNewton = 25;
+constexpr double kTolerance = 1e-12;  ///< correction and constraints, relative to radius()
+/// A correction below this (relative to radius()) that no longer contracts is round-off.
+constexpr double kFloor = 1e-9;
+/// Smallest load increment tried, relative to one load step.
+constexpr double kSmallestIncrement = 1e-6;
+
+/// The largest change of a link's direction that the position correction dx makes,
+/// |dx_{k+1} - dx_k| / l (rad, to first order). O(n).
+double turns_a_link_by(const Natural& c, const Vec& dx) {
+  double worst = 0.0;
+  for (int k = 0; k < c.n; ++k)
+    worst = std::max(worst, (hinge(dx, (k + 1) % c.n) - hinge(dx, k)).norm() / c.l);
+  return worst;
+}
+
+/// The KKT factorization in banded_order (a fill-reducing ordering such as COLAMD
+/// ignores the pivoting that the weak diagonal of the statics' KKT matrix forces, and its
+/// fill then grows far beyond O(n): minutes at n = 10^4).
+struct BandedLU {
+  Eigen::PermutationMatrix<Eigen::Dynamic> P;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
+  bool analyzed = false;
+};
+
+/// Newton at load factor s from (x, lambda); both updated. Iterations, or -1 on failure.
+int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedLU& f) {
+  const int N = 2 * c.n, S = c.size();
+  const double kappa = c.K / (c.l * c.l);  // the springs' stiffness scale: balances the KKT matrix
+  Triplets t;
+  double previous = 0.0;
+  for (int it = 1; it <= kMaxNewton; ++it) {
+    t.clear();
+    Vec rx = Vec::Zero(N);
+    rx.segment<2>(2 * c.load) -= s * c.F;
+    for (int k = 0; k < c.n; ++k) {
+      const Turn tk = turn(local(c, x, k));
+      const double d = tk.theta - c.theta0;
+      const Vec6 g = c.K * d * tk.d;
+      const Mat6 H = c.K * (tk.d * tk.d.transpose() + d * tk.dd);
+      const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
+      for (int a = 0; a < 3; ++a) {
+        rx.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
+        for (int b = 0; b < 3; ++b)
+          for (int p = 0; p < 2; ++p)
+            for (int q = 0; q < 2; ++q) t.emplace_back(2 * hk[a] + p, 2 * hk[b] + q, H(2 * a + p, 2 * b + q));
+      }
+    }
+    add_constraint_curvature(c, lambda, 1.0, t);
+    add_constraint_jacobian(c, x, N, true, kappa, t, &lambda, &rx);
+    add_constraint_jacobian(c, x, N, false, kappa, t, nullptr, nullptr);
+    Vec rhs(S);
+    rhs << -rx, -kappa * constraints(c, x);
+    Eigen::SparseMatrix<double> A(S, S);
+    A.setFromTriplets(t.begin(), t.end());
+    const Eigen::SparseMatrix<double> Ab = f.P * A * f.P.transpose();
+    if (!f.analyzed) {
+      f.lu.analyzePattern(Ab);
+      f.analyzed = true;
+    }
+    f.lu.factorize(Ab);
+    if (f.lu.info() != Eigen::Success) return -1;
+    const Vec dz = f.P.transpose() * Vec(f.lu.solve(f.P * rhs));
+    if (!dz.allFinite()) return -1;
+    const double step = dz.head(N).cwiseAbs().maxCoeff();
+    if (turns_a_link_by(c, dz.head(N)) > 0.5) return -1;  // left the basin (as the dense path's 0.5 rad)
+    x += dz.head(N);
+    lambda += kappa * dz.tail(c.rows());
+    // Converged below the tolerance, or at the round-off floor of the solve (it grows
+    // with n: ~1e-11 R at n = 10^4), where the corrections stop contracting although
+    // full Newton contracts them quadratically above it.
+    const bool at_floor = step <= kFloor * c.radius() && step > 0.25 * previous;
+    previous = step;
+    if ((step <= kTolerance * c.radius() || at_floor) &&
+        constraints(c, x).cwiseAbs().maxCoeff() <= kTolerance * c.radius())
+      return it;
+  }
+  return -1;
+}
+
+}  // namespace
+
+ring::StaticResult solve_static(const Chain& chain, const ring::RingSpec& spec, const ring::StaticOptions& st) {
+  const Natural c = make_natural(chain, st.load.angle, Eigen::Vector2d(st.load.force[0], st.load.force[1]));
+  const int gap = detail::contact_gap(chain, spec.section.depth());
+  const double depth = spec.section.depth();
+  Vec x = rest(chain), lambda = Vec::Zero(c.rows());
+  BandedLU lu;
+  lu.P = Eigen::PermutationMatrix<Eigen::Dynamic>(banded_order(c));
+  ring::StaticResult res;
+  res.solver = "multibody";
+  res.unknowns = c.size();
+  const double ds0 = 1.0 / st.steps;
+  double s = 0.0, ds = ds0;
+  while (s < 1.0 - 1e-14) {
+    const double s1 = std::min(1.0, s + ds);
+    Vec x1 = x, l1 = lambda;
+    const int it = newton(c, s1, x1, l1, lu);
+    if (it < 0) {
+      ds *= 0.5;
+      if (ds < kSmallestIncrement * ds0) {
+        std::ostringstream m;
+        m << "multibody::solve_static (O(n) path): no equilibrium beyond load factor " << s
+          << " (a limit point: this path has no arc-length continuation; multibody.method = \"dense\" has)";
+        throw ring::NumericalError(m.str());
+      }
+      continue;
+    }
+    res.newton_iterations += it;
+    x = std::move(x1);
+    lambda = std::move(l1);
+    s = s1;
+    ++res.steps;
+    ds = std::min(ds0, 2.0 * ds);
+    Eigen::Matrix2Xd hp(2, c.n);
+    for (int j = 0; j < c.n; ++j) hp.col(j) = hinge(x, j);
+    const auto cp = detail::closest_nonadjacent_grid(hp, c.l, gap, depth);
+    if (cp.distance < depth) {
+      std::ostringstream m;
+      m << "multibody::solve_static: the ring touches itself at load factor " << s << ": "
+        << detail::describe_contact(cp) << " (section depth " << depth << " m); the chain model does not include contact";
+      throw ring::NumericalError(m.str());
+    }
+  }
+  for (double a : st.record) {
+    const int k = chain.hinge_at(a);
+    const Eigen::Vector2d u = hinge(x, k) - chain.hinge_rest(k);
+    res.displacements.push_back({a, u.x(), u.y()});
+  }
+  for (int j = 0; j < c.n; ++j) {
+    res.node_x.push_back(x(2 * j));
+    res.node_y.push_back(x(2 * j + 1));
+  }
+  return res;
+}
+
+}  // namespace multibody::natural
