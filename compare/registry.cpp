@@ -52,13 +52,15 @@ SolverEntry multibody_entry() {
   e.converge_steps = 5;
   e.richardson = true;
   e.paper = [](const ring::PaperRow& r) { return r.mb_corrected; };
-  // Dense: a few n x n matrices; O(n) path: ~1 KiB per segment (measured 1 GB at 10^6)
-  // plus the Lanczos basis, n x (2 count + 20) doubles.
+  // Dense: a few n x n matrices; O(n) modes: ~1 KiB per segment (measured 1 GB at 10^6)
+  // plus the Lanczos basis, n x (2 count + 20) doubles; O(n) nonlinear solves (count = 0):
+  // ~10 KiB per segment, the sparse LU's factors (statics measured 352 MB at n = 4e4).
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
     const bool dense = s.multibody.method == ring::MultibodyOptions::Method::dense ||
                        (s.multibody.method == ring::MultibodyOptions::Method::automatic && n <= 256 && count > 0);
-    return (dense ? 12.0 * 8.0 * n * n : 1024.0 * n) + 8.0 * n * (2.0 * count + 20.0);
+    const double per_segment = count > 0 ? 1024.0 : 10240.0;
+    return (dense ? 12.0 * 8.0 * n * n : per_segment * n) + 8.0 * n * (2.0 * count + 20.0);
   };
   e.modes = [](const ring::Scene& s, int count) {
     return as_input_error(s, "multibody", [&] { return multibody::compute_modes(s.ring, s.multibody, count); });

@@ -8,6 +8,7 @@
 #include "ring/errors.hpp"
 
 #include "multibody/chain.hpp"
+#include "multibody/natural.hpp"
 #include "multibody/dynamics_model.hpp"
 
 namespace multibody {
@@ -141,6 +142,14 @@ NewtonOutcome arc_step(const Chain& ch, const detail::DeadLoad& load, const Matr
 
 }  // namespace
 
+bool use_natural_statics(const ring::MultibodyOptions& options) {
+  switch (options.method) {
+    case ring::MultibodyOptions::Method::dense: return false;
+    case ring::MultibodyOptions::Method::sparse: return true;
+    default: return options.n >= kSparseStaticsCrossover;
+  }
+}
+
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics) {
   if (!spec.supports.pin)
@@ -163,6 +172,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
         "multibody::solve_static: needs a roller as well as a pin (supports.roller), "
         "otherwise the ring is free to turn about the pin");
   }
+  if (use_natural_statics(options)) return natural::solve_static(ch, spec, statics);
 
   Vector q = ch.q0(), lambda = Vector::Zero(ch.constraint_count());
   ring::StaticResult res;

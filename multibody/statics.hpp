@@ -26,10 +26,22 @@
 
 namespace multibody {
 
+/// Segments from which MultibodyOptions::Method::automatic solves statics on the O(n)
+/// path (hinge positions, natural.hpp); below it the dense path, which alone has the
+/// arc-length continuation through limit points. The O(n) path is faster from n ~ 160
+/// (20 load steps at p = 5: 0.16 s dense vs 0.06 s at n = 320, 0.98 s vs 0.12 s at 640;
+/// 3.0 s at n = 10^4), so the crossover keeps continuation where the dense path costs
+/// seconds at most.
+constexpr int kSparseStaticsCrossover = 1000;
+
+/// True when solve_static takes the O(n) path for these options.
+bool use_natural_statics(const ring::MultibodyOptions& options);
+
 /// Static equilibrium under `statics.load` (its history is ignored: full load).
 /// Returns the displacements of the recorded points (ring-centred frame, m), the
 /// number of accepted load steps, the total Newton iterations, and every hinge's
-/// deformed position. Cost: O(n^3) per Newton iteration (dense).
+/// deformed position. Cost: O(n^3) per Newton iteration on the dense path, O(n) on the
+/// O(n) path (multibody.method = "sparse", or "auto" from kSparseStaticsCrossover).
 /// Requires a pin and a roller (otherwise the rigid rotation about the pin is free).
 /// Throws std::invalid_argument for inputs that can never work and
 /// ring::NumericalError when no equilibrium path reaches the full load or the ring

@@ -31,18 +31,29 @@ struct Diametral {
   double along, across;
 };
 
-/// Chain result for p = P R^2 / EI with n segments, in units of R.
-Diametral chain_diametral(double p, int n, int steps = 20) {
+/// The diametral load p = P R^2 / EI at C toward the pin, recorded at 0, 90, 180, 270 deg.
+ring::StaticOptions diametral_load(double p, int steps = 20) {
   const ring::RingSpec spec = paper_ring();
-  ring::MultibodyOptions o;
-  o.n = n;
   ring::StaticOptions st;
   st.load.angle = 0.0;
-  const double P = p * spec.EI() / (spec.radius * spec.radius);
-  st.load.force = {-P, 0.0};
+  st.load.force = {-p * spec.EI() / (spec.radius * spec.radius), 0.0};
   st.steps = steps;
   st.record = {0.0, 90.0, 180.0, 270.0};
-  const ring::StaticResult r = multibody::solve_static(spec, o, st);
+  return st;
+}
+
+ring::MultibodyOptions chain_options(int n, ring::MultibodyOptions::Method method) {
+  ring::MultibodyOptions o;
+  o.n = n;
+  o.method = method;
+  return o;
+}
+
+/// Chain result for p = P R^2 / EI with n segments, in units of R.
+Diametral chain_diametral(double p, int n, int steps = 20,
+                          ring::MultibodyOptions::Method method = ring::MultibodyOptions::Method::automatic) {
+  const ring::RingSpec spec = paper_ring();
+  const ring::StaticResult r = multibody::solve_static(spec, chain_options(n, method), diametral_load(p, steps));
   return {-r.displacements[0].ux / spec.radius,
           (r.displacements[1].uy - r.displacements[3].uy) / spec.radius};
 }
@@ -204,6 +215,87 @@ TEST(MultibodyStatics, ContinuationPassesTheLimitPointOfAPressedArch) {
     const std::string w = e.what();
     EXPECT_NE(w.find("limit point"), std::string::npos) << w;
     EXPECT_NE(w.find("touches itself"), std::string::npos) << w;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+using Method = ring::MultibodyOptions::Method;
+
+// The O(n) path (hinge positions, multibody.method = "sparse") and the dense path
+// (segment angles, arc-length capable) solve the same chain in different coordinates with
+// different code: their equilibria must agree to the Newton tolerances (1e-12 R on
+// positions, 1e-9 rad on angles -> ~1e-8 m on a 10 m ring; bound 1e-9 relative to the
+// largest displacement; measured <= 1e-12 m on displacements of ~10 m).
+TEST(MultibodyStaticsSparse, BothPathsGiveTheSameEquilibrium) {
+  const ring::RingSpec spec = paper_ring();
+  for (int n : {40, 160})
+    for (double p : {1.0, 5.0}) {
+      const auto st = diametral_load(p);
+      const auto dense = multibody::solve_static(spec, chain_options(n, Method::dense), st);
+      const auto on = multibody::solve_static(spec, chain_options(n, Method::sparse), st);
+      ASSERT_EQ(dense.displacements.size(), on.displacements.size());
+      double scale = 0.0, diff = 0.0;
+      for (size_t i = 0; i < dense.displacements.size(); ++i) {
+        const auto &a = dense.displacements[i], &b = on.displacements[i];
+        scale = std::max(scale, std::hypot(a.ux, a.uy));
+        diff = std::max(diff, std::hypot(a.ux - b.ux, a.uy - b.uy));
+      }
+      EXPECT_LT(diff, 1e-9 * scale) << "n = " << n << ", p = " << p;
+      EXPECT_EQ(on.steps, 20);
+      EXPECT_EQ(static_cast<int>(on.node_x.size()), n);
+    }
+}
+
+// n = 10^4 on the O(n) path (the dense path would need ~10^12 flops per iteration):
+// the chain keeps converging to the elastica at second order up to there, i.e. neither
+// the round-off of the larger system nor the Newton stopping rule shows (measured at
+// p = 5: relative error of the shortening 2.79e-4 (n = 320), 4.36e-6 (2560), 2.86e-7
+// (10^4), order 2.00 and 2.00). Order 2 +- 0.05 from 2560 to 10^4 bounds a spurious
+// error of ~1e-8 relative. Full Newton contracts quadratically, so a load step needs a
+// handful of iterations whatever n: at most 6 per step on average (a count; measured
+// 4.8 at n = 2560, 5.6 at 10^4, where one or two more reach the round-off floor).
+TEST(MultibodyStaticsSparse, TenThousandSegmentsConvergeToTheElasticaAtSecondOrder) {
+  const double p = 5.0;
+  const elastica::DiametralResult ref = elastica::diametral(p);
+  const ring::RingSpec spec = paper_ring();
+  const std::vector<int> ns{2560, 10000};
+  std::vector<double> e_along, e_across;
+  for (int n : ns) {
+    const auto r = multibody::solve_static(spec, chain_options(n, Method::automatic), diametral_load(p));
+    e_along.push_back(std::abs(-r.displacements[0].ux / spec.radius - ref.along) / ref.along);
+    e_across.push_back(
+        std::abs((r.displacements[1].uy - r.displacements[3].uy) / spec.radius - ref.across) / ref.across);
+    EXPECT_EQ(r.steps, 20);
+    EXPECT_LE(r.newton_iterations, 6 * r.steps) << "n = " << n;
+  }
+  RecordProperty("err_along_n10000", sci(e_along.back()));
+  EXPECT_NEAR(fitted_order(ns, e_along), 2.0, 0.05) << "errors " << e_along[0] << ", " << e_along[1];
+  EXPECT_NEAR(fitted_order(ns, e_across), 2.0, 0.05) << "errors " << e_across[0] << ", " << e_across[1];
+  EXPECT_TRUE(multibody::use_natural_statics(chain_options(10000, Method::automatic)));
+  EXPECT_FALSE(multibody::use_natural_statics(chain_options(40, Method::automatic)));
+}
+
+// The O(n) path has no arc-length continuation: the pressed crown beyond its limit load
+// (see ContinuationPassesTheLimitPointOfAPressedArch) is a NumericalError naming the
+// limit point and the dense path, not a result.
+TEST(MultibodyStaticsSparse, LimitPointIsReportedNotPassed) {
+  ring::RingSpec spec = paper_ring();
+  spec.supports.roller = 0.0;
+  ring::StaticOptions st;
+  st.load.angle = 90.0;
+  st.record = {90.0};
+  st.load.force = {0.0, -8.0 * spec.EI() / (spec.radius * spec.radius)};
+  st.steps = 32;
+  try {
+    multibody::solve_static(spec, chain_options(40, Method::sparse), st);
+    FAIL() << "expected a NumericalError at the limit point";
+  } catch (const ring::NumericalError& e) {
+    const std::string w = e.what();
+    EXPECT_NE(w.find("limit point"), std::string::npos) << w;
+    EXPECT_NE(w.find("dense"), std::string::npos) << w;
   }
 }
 
