@@ -57,6 +57,11 @@
 // (banded + periodic corner) tangent, O(N p) with N = (2p+1) cells unknowns.
 #pragma once
 
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
@@ -76,5 +81,42 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptio
 /// when a step fails or the energy balance grows.
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
                           const ring::ResponseOptions& response);
+
+// ---- Internal: the traced equilibrium path (tests and diagnostics; NOT in the plug-in
+// ABI, plugin.hpp, and not used by the ringvib command). ----
+
+/// How solve_static's continuation runs (defaults: what solve_static does).
+struct ContinuationOptions {
+  /// Skip load stepping: arc-length continuation from the rest state (for tests: the same
+  /// equilibrium must come out either way).
+  bool from_start = false;
+  /// Arc-length steps allowed before the path is declared not to return to the full load.
+  int max_arc_steps = 2000;
+};
+
+/// The equilibrium path of one discretization, from rest, in path order.
+struct StaticPath {
+  struct Point {
+    double load_factor = 0.0;                   ///< s: the load is s * statics.load.force
+    std::array<double, 2> displacement{0, 0};   ///< of the loaded point, ring-centred frame, m
+  };
+  std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)
+  /// The first maximum of the load factor along the path (a limit point), located to
+  /// ~1e-12 (static_path.cpp); NaN when the path met none before it ended.
+  double limit_load_factor = std::numeric_limits<double>::quiet_NaN();
+  bool continuation = false;  ///< the arc-length continuation took over (or ran from the start)
+  int arc_steps = 0;          ///< accepted arc-length steps
+  bool reached = false;       ///< the path reached the full load; then `result` holds it
+  ring::StaticResult result;
+  std::string failure;        ///< otherwise: the message solve_static throws
+};
+
+/// solve_static without the reference refinement (fem.reference must be false), keeping
+/// the path. Inextensible (fem.extensible = false): the path is the one with
+/// EA = 2 beta EI / R^2 (beta = 1e6), while the result and the limit load factor are
+/// extrapolated in 1/beta from beta and 2 beta, as solve_static's. Throws
+/// std::invalid_argument as solve_static does; a failed path is reported in `failure`.
+StaticPath trace_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics,
+                        const ContinuationOptions& continuation = {});
 
 }  // namespace fem
