@@ -274,10 +274,12 @@ bool PathFollower::load_stepping(State& state, Vector<double>& last_step) {
     const int it = newton_at(trial, s_next);
     // A step whose end, looked at in the direction of the step, has the load falling has
     // jumped over a limit point onto the path beyond it: like a failed Newton, it is cut.
+    // (A step that moves nothing, under a zero load, has no direction and jumped nowhere.)
     Vector<double> change = trial;
     change -= state.q;
     Tangent ahead;
-    if (it < 0 || !tangent_at({trial, s_next}, change, ahead) || ahead.rate <= 0.0) {
+    const bool jumped = it >= 0 && change.l2_norm() > 0.0 && (!tangent_at({trial, s_next}, change, ahead) || ahead.rate <= 0.0);
+    if (it < 0 || jumped) {
       step *= 0.5;
       if (step < ds_ / (1 << kMaxHalvings)) return false;
       continue;

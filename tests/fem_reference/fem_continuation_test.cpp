@@ -10,6 +10,7 @@
 // P R^2 / EI ~ 7.61, past which the crown snaps down onto the bottom of the ring.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -36,7 +37,7 @@ ring::StaticOptions pressed_crown(const ring::RingSpec& spec, double p) {
   ring::StaticOptions st;
   st.load.angle = 90.0;
   st.load.force = {0.0, -p * spec.EI() / (spec.radius * spec.radius)};
-  st.steps = static_cast<int>(4 * p);
+  st.steps = std::max(1, static_cast<int>(4 * p));
   st.record = {90.0, 0.0, 270.0};
   return st;
 }
@@ -203,6 +204,17 @@ TEST(FemContinuation, ReportsAPathThatDoesNotReturnWithinTheArcStepBound) {
   ring::FemOptions reference = fem_options(3, true);
   reference.reference = true;
   EXPECT_THROW(fem::trace_static(spec, reference, pressed_crown(spec, 8.0)), std::invalid_argument);
+}
+
+// A zero load leaves the ring at rest: load steps that move nothing have no direction
+// for the check that a step jumped over a limit point, and must not count as jumps.
+TEST(FemContinuation, ZeroLoadStaysAtRest) {
+  const ring::RingSpec spec = held_ring();
+  const auto r = fem::solve_static(spec, fem_options(3, true), pressed_crown(spec, 0.0));
+  for (const auto& d : r.displacements) {
+    EXPECT_EQ(d.ux, 0.0);
+    EXPECT_EQ(d.uy, 0.0);
+  }
 }
 
 // The self-contact distance on closed polygons with a known answer (geometry): a
