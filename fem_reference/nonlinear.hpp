@@ -47,8 +47,9 @@
 //     it is regular at a limit point, where K alone is singular (block elimination with
 //     K^-1 would lose all digits there). A step whose corrector moves farther than len
 //     from the predicted point fails; failed steps halve len (30 times in a row end the
-//     path); len then adapts towards 5 iterations (x0.5 .. x2), at most one requested
-//     load increment of change in s and R/10 of change in any value of q per step.
+//     path); len then adapts towards 5 iterations (x0.5 .. x2), shrinks (down to x0.5)
+//     after a step that changed s by more than one requested increment, and is kept to
+//     R/10 of change in any value of q per step.
 //  3. Limit point: the first accepted step across which ds/dtau changes sign from + to -
 //     brackets a maximum of s. Regula falsi (Illinois) on ds/dtau as a function of the
 //     arc length from the step's start (each evaluation an arc step and a tangent)

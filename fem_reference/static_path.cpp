@@ -394,9 +394,9 @@ void PathFollower::continuation(State state, const Vector<double>& forward) {
     }
     if (std::isnan(out_.limit) && tangent.rate > 0.0 && ahead.rate <= 0.0)
       out_.limit = locate_limit(state, tangent, len, next.s, ahead.rate);
-    // The next length: towards kTargetIterations corrector iterations, at most doubled or
-    // halved, no larger load change than one requested increment, no vertex value moved
-    // by more than kMaxArcMove R.
+    // The next length: towards kTargetIterations corrector iterations (at most doubled
+    // or halved), shorter (down to half) after a load change above one requested
+    // increment, and no value of q moved by more than kMaxArcMove R.
     double scale = std::clamp(std::sqrt(static_cast<double>(kTargetIterations) / it), 0.5, 2.0);
     const double load_change = std::abs(next.s - state.s);
     if (load_change > 0.0) scale = std::min(scale, std::max(0.5, ds_ / load_change));
