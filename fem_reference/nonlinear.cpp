@@ -3,14 +3,12 @@
 // (nonlinear.hpp).
 #include "fem_reference/nonlinear.hpp"
 
-#include "fem_reference/ring_model.hpp"
+#include "fem_reference/newton.hpp"
+#include "fem_reference/static_path.hpp"
 
 namespace fem::detail {
 namespace {
 
-constexpr int kMaxNewton = 25;
-/// Statics: the smallest load increment tried, as a fraction of one load step.
-constexpr int kMaxHalvings = 10;
 /// Inextensible limit: EA = beta EI / R^2 (statics extrapolate from beta and 2 beta).
 constexpr double kResponseBeta = 1e7;
 //// An undamped run that gains more than this fraction of the largest work has failed.
@@ -44,99 +42,31 @@ Setup make_setup(const ring::RingSpec& spec, const ring::FemOptions& o, double b
   return s;
 }
 
-/// Newton on grad V(q) - rhs(q) = 0 with the tangent `tangent(q) + extra`; q updated in
-/// place. Returns the iterations, or -1 when it did not converge (q then unusable).
-/// Converged: the correction is below 1e-12 of the ring radius (quadratic convergence
-/// takes the residual to round-off one iteration later).
-template <class Residual>
-int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent) {
-  SparseDirectUMFPACK lu;
-  Vector<double> r, dq;
-  for (int it = 1; it <= kMaxNewton; ++it) {
-    SparseMatrix<double>& S = residual_and_tangent(q, r);
-    if (!std::isfinite(r.l2_norm())) return -1;
-    try {
-      lu.initialize(S);
-    } catch (const std::exception&) {
-      return -1;
-    }
-    dq = r;
-    lu.solve(dq);
-    q.add(-1.0, dq);
-    if (!std::isfinite(dq.l2_norm())) return -1;
-    if (dq.linfty_norm() <= 1e-12 * radius) return it;
-  }
-  return -1;
-}
-
-struct StaticSolve {
-  std::vector<std::array<double, 2>> record;  ///< displacement at each record point
-  std::vector<double> node_x, node_y;
-  int steps = 0, iterations = 0;
-  long long unknowns = 0;
-};
-
-StaticSolve static_once(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st) {
-  const RingModel model(spec, setup);
-  const Vector<double> F = model.vertex_force(model.vertex_of(st.load.angle), st.load.force);
-  SparseMatrix<double> K(model.sparsity());
-  Vector<double> q(model.n_free()), trial;
-  StaticSolve out;
-  out.unknowns = model.n_free();
-  double s = 0.0;
-  const double ds = 1.0 / std::max(1, st.steps);
-  double step = ds;
-  int halvings = 0;
-  while (s < 1.0 - 1e-14) {
-    const double s_next = std::min(1.0, s + step);
-    trial = q;
-    const int it = newton(trial, spec.radius, [&](const Vector<double>& x, Vector<double>& r) -> SparseMatrix<double>& {
-      model.beam_energy(x, &r, &K);
-      r.add(-s_next, F);
-      return K;
-    });
-    if (it < 0) {
-      if (++halvings > kMaxHalvings)
-        throw ring::NumericalError("fem statics: no equilibrium beyond load factor " + std::to_string(s) +
-                                   " (a limit point, or the ring touching itself): the increment was halved " +
-                                   std::to_string(kMaxHalvings) + " times");
-      step *= 0.5;
-      continue;
-    }
-    q = trial;
-    s = s_next;
-    out.iterations += it;
-    ++out.steps;
-    step = std::min(ds, 2.0 * step);
-  }
-  const Vector<double> full = model.expand(q);
-  for (double a : st.record) out.record.push_back(model.vertex_displacement(full, model.vertex_of(a)));
-  for (unsigned int k = 0; k < model.cells(); ++k) {
-    const auto X = model.vertex_position(k);
-    const auto u = model.vertex_displacement(full, k);
-    out.node_x.push_back(X[0] + u[0]);
-    out.node_y.push_back(X[1] + u[1]);
-  }
-  return out;
-}
-
-/// One discretization; inextensible: Richardson in 1/beta from beta and 2 beta.
-StaticSolve static_at(const ring::RingSpec& spec, const ring::FemOptions& o, Setup setup,
-                      const ring::StaticOptions& st) {
-  if (o.extensible) return static_once(spec, setup, st);
+/// One discretization's path; inextensible: Richardson in 1/beta from beta and 2 beta
+/// (the displacements at the full load and the limit load factor; the path is 2 beta's).
+StaticSolve static_at(const ring::RingSpec& spec, const ring::FemOptions& o, Setup setup, const ring::StaticOptions& st,
+                      const ContinuationOptions& continuation) {
+  if (o.extensible) return trace_path(spec, setup, st, continuation);
   const double base = kInextensibleBeta * spec.EI() / (spec.radius * spec.radius);
   setup.EA = base;
-  const StaticSolve a = static_once(spec, setup, st);
+  StaticSolve a = trace_path(spec, setup, st, continuation);
   setup.EA = 2.0 * base;
-  StaticSolve b = static_once(spec, setup, st);
+  StaticSolve b = trace_path(spec, setup, st, continuation);
   auto extrapolate = [](double lo, double hi) { return 2.0 * hi - lo; };
+  // Both paths meet the limit point, or (close to a limit at the full load) only one.
+  b.limit = std::isnan(a.limit) ? b.limit : std::isnan(b.limit) ? a.limit : extrapolate(a.limit, b.limit);
+  b.iterations += a.iterations;
+  if (a.end != StaticSolve::End::reached && b.end == StaticSolve::End::reached) {
+    a.limit = b.limit;  // report the path that failed
+    return a;
+  }
+  if (b.end != StaticSolve::End::reached) return b;
   for (std::size_t i = 0; i < b.record.size(); ++i)
     for (int c = 0; c < 2; ++c) b.record[i][c] = extrapolate(a.record[i][c], b.record[i][c]);
   for (std::size_t i = 0; i < b.node_x.size(); ++i) {
     b.node_x[i] = extrapolate(a.node_x[i], b.node_x[i]);
     b.node_y[i] = extrapolate(a.node_y[i], b.node_y[i]);
   }
-  b.iterations += a.iterations;
   return b;
 }
 
@@ -170,12 +100,33 @@ auto refine_until(Setup& setup, double tolerance, Solve&& solve, Change&& change
   }
 }
 
-ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
+  ring::StaticResult r;
+  r.solver = "fem";
+  r.unknowns = sol.unknowns;
+  r.steps = sol.steps;
+  r.newton_iterations = sol.iterations;
+  for (std::size_t i = 0; i < st.record.size(); ++i) r.displacements.push_back({st.record[i], sol.record[i][0], sol.record[i][1]});
+  r.node_x = std::move(sol.node_x);
+  r.node_y = std::move(sol.node_y);
+  return r;
+}
+
+void validate_statics(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   validate_nonlinear(spec, o, st.load, st.record, "static");
   need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
+}
+
+ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  validate_statics(spec, o, st);
   const auto t0 = std::chrono::steady_clock::now();
   Setup setup = make_setup(spec, o, kInextensibleBeta);
-  auto solve = [&](const Setup& s) { return static_at(spec, o, s, st); };
+  const ContinuationOptions continuation;
+  auto solve = [&](const Setup& s) {
+    StaticSolve sol = static_at(spec, o, s, st, continuation);
+    if (sol.end != StaticSolve::End::reached) throw ring::NumericalError(failure_message(sol, continuation));
+    return sol;
+  };
   StaticSolve sol;
   double estimate = 0.0;
   int refinements = 0;
@@ -186,14 +137,7 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
   } else {
     sol = solve(setup);
   }
-  ring::StaticResult r;
-  r.solver = "fem";
-  r.unknowns = sol.unknowns;
-  r.steps = sol.steps;
-  r.newton_iterations = sol.iterations;
-  for (std::size_t i = 0; i < st.record.size(); ++i) r.displacements.push_back({st.record[i], sol.record[i][0], sol.record[i][1]});
-  r.node_x = std::move(sol.node_x);
-  r.node_y = std::move(sol.node_y);
+  ring::StaticResult r = to_result(std::move(sol), st);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -410,6 +354,32 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptio
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
                           const ring::ResponseOptions& response) {
   return detail::response(spec, options, response);
+}
+
+StaticPath trace_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics,
+                        const ContinuationOptions& continuation) {
+  detail::validate_statics(spec, options, statics);
+  if (options.reference)
+    throw std::invalid_argument("fem::trace_static: traces one discretization (fem.reference must be false)");
+  if (continuation.max_arc_steps < 1)
+    throw std::invalid_argument("fem::trace_static: max_arc_steps (=" + std::to_string(continuation.max_arc_steps) +
+                                ") must be >= 1");
+  const auto t0 = std::chrono::steady_clock::now();
+  detail::StaticSolve sol =
+      detail::static_at(spec, options, detail::make_setup(spec, options, detail::kInextensibleBeta), statics, continuation);
+  StaticPath path;
+  path.points = sol.path;
+  path.limit_load_factor = sol.limit;
+  path.continuation = sol.continuation;
+  path.arc_steps = sol.arc_steps;
+  path.reached = sol.end == detail::StaticSolve::End::reached;
+  if (path.reached) {
+    path.result = detail::to_result(std::move(sol), statics);
+    path.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  } else {
+    path.failure = detail::failure_message(sol, continuation);
+  }
+  return path;
 }
 
 }  // namespace fem

@@ -30,10 +30,57 @@
 // forces at vertices; record points must be vertices.
 //
 // ## Statics
-// Load stepping s = k / steps with full Newton on the consistent tangent (UMFPACK), the
-// increment halved when Newton fails (25 iterations, a non-finite value); a load level
-// that cannot be passed even with 1/1024 of an increment is reported as a limit point
-// (ring::NumericalError naming the load reached): there is no arc-length continuation.
+// The equilibrium path from rest, s the load factor (load = s F, full load at s = 1):
+//  1. Load stepping s = k / steps with full Newton on the consistent tangent (UMFPACK).
+//     An increment is halved when Newton fails (25 iterations, a non-finite value, an
+//     iterate more than R/10 away from the start in any value of q: near a limit point
+//     Newton can land on a distant branch) or when the step has jumped over a limit:
+//     the path tangent at its end, oriented along the step, has ds/dtau <= 0. When a
+//     load level cannot be passed with 1/1024 of an increment, the continuation takes over.
+//  2. Arc-length continuation (Crisfield 1981, cylindrical: |q - q0| = len, no load term
+//     in the arc; q holds displacements only, so the norm has one unit). Predictor
+//     along the unit tangent t, from [K -F; w^T 0] (t, ts) = (0, 1) with w the last
+//     step's direction (from rest: F, which raises the load while K is positive
+//     definite), so t is oriented forward and ds/dtau = ts/|t|. Corrector: Newton on
+//     (grad V(q) - s F, (|q - q0|^2 - len^2) / (2 len)) = 0 in (q, s), whose Jacobian
+//     is the bordered matrix [K -F; (q - q0)^T/len 0], factorized as a whole by UMFPACK:
+//     it is regular at a limit point, where K alone is singular (block elimination with
+//     K^-1 would lose all digits there). A step whose corrector moves farther than len
+//     from the predicted point fails; failed steps halve len (30 times in a row end the
+//     path); len then adapts towards 5 iterations (x0.5 .. x2), shrinks (down to x0.5)
+//     after a step that changed s by more than one requested increment, and is kept to
+//     R/10 of change in any value of q per step.
+//  3. Limit point: the first accepted step across which ds/dtau changes sign from + to -
+//     brackets a maximum of s. Regula falsi (Illinois) on ds/dtau as a function of the
+//     arc length from the step's start (each evaluation an arc step and a tangent)
+//     narrows it to 1e-6 of the step; the load factor there is the limit load factor,
+//     exact to the Newton tolerance (s varies quadratically about the maximum).
+//  4. The path ends when it crosses s = 1 (Newton at s = 1 from the interpolated point:
+//     the result, as from load stepping), or with ring::NumericalError: self-contact,
+//     or no return to the full load within 2000 arc steps, or a stalled continuation.
+//     Past a limit point the message reads "past a limit point at load factor L, the
+//     equilibrium path (arc-length continuation) ..." (the multibody chain's wording).
+// Self-contact, after every accepted step: the deformed centreline, sampled at most
+// depth/2 apart, as a closed polygon; two edges whose nearest ends are at least 2 depths
+// apart along the ring and closer than the section depth (or crossing) have touched.
+// The chord between two consecutive equilibria is checked at sub-steps that move no
+// point by more than depth/2, so no part can pass through another unseen. The beam has
+// no contact model: the path stops there.
+// Inextensible (fem.extensible = false): both beta paths are traced; the result and the
+// limit load factor are extrapolated in 1/beta.
+// Measured (tests/fem_reference/fem_continuation_test.cpp), the paper's ring on a pin
+// at 180 deg and a roller at 0 deg pressed at its crown (90 deg) toward the centre with
+// P R^2/EI = 8: load stepping stops at s = 0.9523 (40 cubic elements), the continuation
+// passes the limit (the crown 11.5 m down) and follows the crown down onto the bottom
+// of the ring (contact at s = 0.8895, the crown 17.5 m down). Limit load factor, inextensible: 0.9541865 (p = 3), 0.9517778 (p = 4),
+// 0.95176374 (p = 5), 0.95176371 (p = 6) on 40 elements; the multibody chain
+// Richardson-extrapolated from n = 80, 160, 320: 0.9517637 (P R^2/EI = 7.6141);
+// extensible (p = 5, 6): 0.9517406, 2.4e-5 lower. Where load stepping alone works
+// (P R^2/EI = 7), continuation from rest reaches the same equilibrium to 2e-13 of the
+// displacement.
+// Cost: per load step one more factorization (the tangent check); per arc step ~4-5
+// Newton iterations (assembly + sparse LU of the bordered matrix) and a self-contact
+// check, O(2 pi R / depth) expected (a uniform grid of buckets).
 //
 // ## Dynamics
 // M a + C v + f(q) = F g(t) from rest, f = grad V, C = a M + b K0 (Rayleigh, K0 the
@@ -57,16 +104,23 @@
 // (banded + periodic corner) tangent, O(N p) with N = (2p+1) cells unknowns.
 #pragma once
 
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
 
 namespace fem {
 
-/// Static equilibrium under statics.load (full load at the end of the load steps).
+/// Static equilibrium under statics.load: the end of the equilibrium path at the full
+/// load, through limit points if the path comes back to it (file comment, "Statics").
 /// Requires a pin and a roller on FE vertices, curved geometry, load and record points
 /// on vertices. Throws std::invalid_argument for input that can never work and
-/// ring::NumericalError for a failed solve or a limit point.
+/// ring::NumericalError when the path does not reach the full load (self-contact, no
+/// return past a limit point within the arc-step bound, a stalled continuation).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptions& options,
                                 const ring::StaticOptions& statics);
 
@@ -76,5 +130,42 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptio
 /// when a step fails or the energy balance grows.
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
                           const ring::ResponseOptions& response);
+
+// ---- Internal: the traced equilibrium path (tests and diagnostics; NOT in the plug-in
+// ABI, plugin.hpp, and not used by the ringvib command). ----
+
+/// How solve_static's continuation runs (defaults: what solve_static does).
+struct ContinuationOptions {
+  /// Skip load stepping: arc-length continuation from the rest state (for tests: the same
+  /// equilibrium must come out either way).
+  bool from_start = false;
+  /// Arc-length steps allowed before the path is declared not to return to the full load.
+  int max_arc_steps = 2000;
+};
+
+/// The equilibrium path of one discretization, from rest, in path order.
+struct StaticPath {
+  struct Point {
+    double load_factor = 0.0;                   ///< s: the load is s * statics.load.force
+    std::array<double, 2> displacement{0, 0};   ///< of the loaded point, ring-centred frame, m
+  };
+  std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)
+  /// The first maximum of the load factor along the path (a limit point), located to
+  /// ~1e-12 (static_path.cpp); NaN when the path met none before it ended.
+  double limit_load_factor = std::numeric_limits<double>::quiet_NaN();
+  bool continuation = false;  ///< the arc-length continuation took over (or ran from the start)
+  int arc_steps = 0;          ///< accepted arc-length steps
+  bool reached = false;       ///< the path reached the full load; then `result` holds it
+  ring::StaticResult result;
+  std::string failure;        ///< otherwise: the message solve_static throws
+};
+
+/// solve_static without the reference refinement (fem.reference must be false), keeping
+/// the path. Inextensible (fem.extensible = false): the path is the one with
+/// EA = 2 beta EI / R^2 (beta = 1e6), while the result and the limit load factor are
+/// extrapolated in 1/beta from beta and 2 beta, as solve_static's. Throws
+/// std::invalid_argument as solve_static does; a failed path is reported in `failure`.
+StaticPath trace_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics,
+                        const ContinuationOptions& continuation = {});
 
 }  // namespace fem

@@ -224,4 +224,27 @@ std::array<double, 2> RingModel::vertex_displacement(const Vector<double>& full,
   return {-u * std::sin(a) + w * std::cos(a), u * std::cos(a) + w * std::sin(a)};
 }
 
+std::vector<std::array<double, 2>> RingModel::centreline(const Vector<double>& full, unsigned int per_cell) const {
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  // Shape values at the points of the reference cell (all cells are affine images of it).
+  std::vector<double> table(per_cell * dpc);
+  for (unsigned int k = 0; k < per_cell; ++k)
+    for (unsigned int i = 0; i < dpc; ++i)
+      table[k * dpc + i] = fe_.shape_value(i, Point<1>(static_cast<double>(k) / per_cell));
+  std::vector<types::global_dof_index> dofs(dpc);
+  std::vector<std::array<double, 2>> out;
+  out.reserve(n * per_cell);
+  for (unsigned int cell = 0; cell < n; ++cell) {
+    cells_[cell]->get_dof_indices(dofs);
+    for (unsigned int k = 0; k < per_cell; ++k) {
+      double U[2] = {0.0, 0.0};  // (u, w): tangential, radial
+      for (unsigned int i = 0; i < dpc; ++i) U[component_[i]] += full[dofs[i]] * table[k * dpc + i];
+      const double a = theta0_ + (cell + static_cast<double>(k) / per_cell) * h_;
+      const double r = spec_.radius + U[1];
+      out.push_back({r * std::cos(a) - U[0] * std::sin(a), r * std::sin(a) + U[0] * std::cos(a)});
+    }
+  }
+  return out;
+}
+
 }  // namespace fem::detail

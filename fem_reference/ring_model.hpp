@@ -143,6 +143,10 @@ class RingModel {
   std::array<double, 2> vertex_displacement(const Vector<double>& full, unsigned int k) const;
   /// Rest position of vertex k (ring-centred frame, m).
   std::array<double, 2> vertex_position(unsigned int k) const;
+  /// Deformed centreline X + U (curved geometry) of a full DoF vector (ring-centred frame, m) at
+  /// `per_cell` equally spaced points of every cell, counter-clockwise from vertex 0
+  /// (point k at the polar angle theta0 + k h / per_cell). O(cells per_cell (2p+3)).
+  std::vector<std::array<double, 2>> centreline(const Vector<double>& full, unsigned int per_cell) const;
 
  private:
   void make_grid();

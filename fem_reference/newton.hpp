@@ -1,0 +1,45 @@
+// Internal to fem_reference/: full Newton on the geometrically exact beam's equations,
+// shared by the statics (static_path.cpp) and the response (nonlinear.cpp).
+#pragma once
+
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+
+constexpr int kMaxNewton = 25;
+
+/// Newton on grad V(q) - rhs(q) = 0 with the tangent `tangent(q) + extra`; q updated in
+/// place. Returns the iterations, or -1 when it did not converge (q then unusable).
+/// Converged: the correction is below 1e-12 of the ring radius (quadratic convergence
+/// takes the residual to round-off one iteration later). With `max_move`, an iterate
+/// that moves any value of q by more than that from the start counts as not converged:
+/// near a limit point Newton can otherwise land on a distant branch of equilibria.
+template <class Residual>
+int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent,
+           double max_move = std::numeric_limits<double>::infinity()) {
+  SparseDirectUMFPACK lu;
+  Vector<double> r, dq, moved;
+  const Vector<double> start = q;
+  for (int it = 1; it <= kMaxNewton; ++it) {
+    SparseMatrix<double>& S = residual_and_tangent(q, r);
+    if (!std::isfinite(r.l2_norm())) return -1;
+    try {
+      lu.initialize(S);
+    } catch (const std::exception&) {
+      return -1;
+    }
+    dq = r;
+    lu.solve(dq);
+    q.add(-1.0, dq);
+    if (!std::isfinite(dq.l2_norm())) return -1;
+    if (max_move < std::numeric_limits<double>::infinity()) {
+      moved = q;
+      moved -= start;
+      if (moved.linfty_norm() > max_move) return -1;
+    }
+    if (dq.linfty_norm() <= 1e-12 * radius) return it;
+  }
+  return -1;
+}
+
+}  // namespace fem::detail
