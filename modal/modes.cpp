@@ -39,10 +39,14 @@ Selection select_modes(const std::string& solver, const Eigen::VectorXd& omega2,
   return s;
 }
 
+double relative_residual(double r_norm, double ax_norm, double bx_norm, double lambda) {
+  return r_norm / (ax_norm + std::abs(lambda) * bx_norm);
+}
+
 PairResidual pair_residual(double r_norm, double ax_norm, double bx_norm, double lambda, double x_norm,
                            double norm_a, double norm_b) {
-  const double l = std::abs(lambda);
-  return {r_norm / (ax_norm + l * bx_norm), r_norm / ((norm_a + l * norm_b) * x_norm)};
+  return {relative_residual(r_norm, ax_norm, bx_norm, lambda),
+          r_norm / ((norm_a + std::abs(lambda) * norm_b) * x_norm)};
 }
 
 PairResidual pair_residual(const Eigen::VectorXd& ax, const Eigen::VectorXd& bx, double lambda, double x_norm,

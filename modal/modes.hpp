@@ -57,6 +57,9 @@ struct Selection {
 /// std::invalid_argument for count < 1 or scale <= 0.
 Selection select_modes(const std::string& solver, const Eigen::VectorXd& omega2, double scale, int count);
 
+/// ||r|| / (||A x|| + |lambda| ||B x||), the relative residual of one pair (file comment).
+double relative_residual(double r_norm, double ax_norm, double bx_norm, double lambda);
+
 /// Relative residual and normwise backward error of one pair (file comment).
 struct PairResidual {
   double relative = 0.0;
