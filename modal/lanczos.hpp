@@ -25,9 +25,12 @@
 // estimate |beta_m y_m| < tol * |nu| for all nev values.
 //
 // ## Cost
-// ncv operator applications (op and one B product each) per restart, plus 2 to 6 B
-// products and as many passes over the basis per step for the reorthogonalization
-// (O(n ncv) each); memory n x ncv doubles for the basis.
+// Per Lanczos step: one operator application and one B product, then Spectra's
+// reorthogonalization, repeated until max |V^T B f| <= eps ||f||_B, at most five times;
+// each repetition is one B product and two passes over the basis (O(n k), k = step).
+// For n >= ~10^4 rounding alone fails that test, so all five run: 14 B products and 11
+// passes over the basis per step (modal/README.md). ncv steps per restart; memory
+// n x ncv doubles for the basis.
 //
 // ## Errors
 // Arguments that can never work (nev outside 1..n-1, ncv outside nev+1..n, operators of

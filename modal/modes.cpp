@@ -49,7 +49,8 @@ PairResidual pair_residual(double r_norm, double ax_norm, double bx_norm, double
           r_norm / ((norm_a + std::abs(lambda) * norm_b) * x_norm)};
 }
 
-PairResidual pair_residual(const Eigen::VectorXd& ax, const Eigen::VectorXd& bx, double lambda, double x_norm,
+PairResidual pair_residual(const Eigen::Ref<const Eigen::VectorXd>& ax,
+                           const Eigen::Ref<const Eigen::VectorXd>& bx, double lambda, double x_norm,
                            double norm_a, double norm_b) {
   return pair_residual((ax - lambda * bx).norm(), ax.norm(), bx.norm(), lambda, x_norm, norm_a, norm_b);
 }

@@ -70,8 +70,9 @@ struct PairResidual {
 PairResidual pair_residual(double r_norm, double ax_norm, double bx_norm, double lambda, double x_norm,
                            double norm_a, double norm_b);
 /// The same from the products A x and B x (r = ax - lambda bx, unprojected).
-PairResidual pair_residual(const Eigen::VectorXd& ax, const Eigen::VectorXd& bx, double lambda,
-                           double x_norm, double norm_a, double norm_b);
+PairResidual pair_residual(const Eigen::Ref<const Eigen::VectorXd>& ax,
+                           const Eigen::Ref<const Eigen::VectorXd>& bx, double lambda, double x_norm,
+                           double norm_a, double norm_b);
 
 /// 2-norm of a symmetric positive semidefinite operator, estimated by `iterations` steps
 /// of power iteration from a fixed alternating start (the Rayleigh quotient, a lower

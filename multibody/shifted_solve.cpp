@@ -9,12 +9,11 @@ namespace multibody {
 ShiftedSolve::ShiftedSolve(const Chain& c) : c_(c) {
   cos_ = c.phi0().array().cos();
   sin_ = c.phi0().array().sin();
-  J_ = c.constraint_jacobian(c.q0());
-  qr_.compute(J_.transpose());
+  Jt_ = c.constraint_jacobian(c.q0()).transpose();
+  qr_.compute(Jt_);
   N_ = c.dofs();
-  nc_ = static_cast<int>(J_.rows());
-  Jt_ = J_.transpose();
-  jjt_.compute(J_ * Jt_);
+  nc_ = static_cast<int>(Jt_.cols());
+  jjt_.compute(Jt_.transpose() * Jt_);
 }
 
 void ShiftedSolve::set_shift(double sigma) {
@@ -23,7 +22,7 @@ void ShiftedSolve::set_shift(double sigma) {
                                 "): S = K - sigma M must be positive definite");
   s_ = -sigma;
   factor_open();
-  border(J_);
+  border(Jt_.transpose());
 }
 
 void ShiftedSolve::perform_op(const double* x_in, double* y_out) const {

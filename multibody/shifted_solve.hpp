@@ -84,7 +84,6 @@ class ShiftedSolve {
   double s_ = 0.0;
   Vector cos_, sin_;  ///< of phi0
   int N_ = 0, nc_ = 0, na_ = 0;
-  Matrix J_;                                      ///< constraint Jacobian at q0, c x N
   Eigen::HouseholderQR<Matrix> qr_;
   Eigen::Matrix<double, 3, Eigen::Dynamic> hzx_;  ///< Riccati cross terms per segment
   Vector inv_hxx_;                                ///< 1 / Riccati pivots
