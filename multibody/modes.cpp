@@ -11,6 +11,9 @@
 #include <string>
 
 #include "modal/lanczos.hpp"
+#include "modal/modes.hpp"
+#include "multibody/lanczos.hpp"
+#include "multibody/shifted_solve.hpp"
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
