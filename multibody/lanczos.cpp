@@ -20,32 +20,37 @@ SparsePairs hand_lanczos(const ShiftedSolve& sp, int nev) {
   Matrix V(N, max_steps + 1);
   std::mt19937_64 gen(20260421);  // fixed seed: reproducible runs
   std::uniform_real_distribution<double> uni(-0.5, 0.5);
-  Vector w(N);
-  for (int i = 0; i < N; ++i) w[i] = uni(gen);
-  w = sp.solve_full(w);  // a start vector in the null space of J
-  w /= std::sqrt(w.dot(sp.S_full(w)));
+  // One workspace and three vectors for the whole iteration: the products and solves
+  // below write into them instead of allocating (at n = 10^6 fresh 8 MB vectors cost
+  // page faults at every step).
+  ShiftedSolve::Workspace ws;
+  Vector p(N), w(N), q(N);
+  for (int i = 0; i < N; ++i) p[i] = uni(gen);
+  sp.solve_full(p, w, ws);  // a start vector in the null space of J
+  sp.S_full(w, q, ws);
+  w /= std::sqrt(w.dot(q));
   V.col(0) = w;
   Eigen::SelfAdjointEigenSolver<Matrix> es;
   int m = 0;  // Krylov dimension reached
   bool done = false;
   Matrix H = Matrix::Zero(max_steps, max_steps);  // V^T M V = V^T S T V, by columns
   for (int k = 0; k < max_steps && !done; ++k) {
-    const Vector p = sp.m_times(V.col(k));
+    sp.m_times(V.col(k), p, ws);
     const auto Vk = V.leftCols(k + 1);
     // Column k of the Rayleigh quotient V^T M V: exact up to the dot products' rounding,
     // whatever the solve's error (which only slows convergence).
     const Vector h = Vk.transpose() * p;
     H.col(k).head(k + 1) = h;
     H.row(k).head(k + 1) = h.transpose();
-    w = sp.solve_full(p);
+    sp.solve_full(p, w, ws);
     const double b0 = std::sqrt(std::max(0.0, w.dot(p)));  // ||w||_S before orthogonalization
     w.noalias() -= Vk * h;  // Gram-Schmidt with <w, v_j>_S = v_j^T (p - J^T lambda) = h_j
-    Vector q = sp.S_full(w);
+    sp.S_full(w, q, ws);
     double b = std::sqrt(std::max(0.0, w.dot(q)));
     if (!(b > 0.7 * b0)) {  // DGKS: cancellation, so a second pass with the true S w
       const Vector h2 = Vk.transpose() * q;
       w.noalias() -= Vk * h2;
-      q = sp.S_full(w);
+      sp.S_full(w, q, ws);
       b = std::sqrt(std::max(0.0, w.dot(q)));
     }
     m = k + 1;
@@ -54,11 +59,15 @@ SparsePairs hand_lanczos(const ShiftedSolve& sp, int nev) {
       // eigenvalue: the free ring's three rigid modes and its cos/sin pairs): continue
       // with a fresh random direction in the null space, S-orthogonal to V. H stays the
       // exact Rayleigh quotient (its new column comes from the next step's dots).
-      for (int i = 0; i < N; ++i) w[i] = uni(gen);
-      w = sp.solve_full(w);
-      for (int pass = 0; pass < 2; ++pass) w.noalias() -= Vk * (Vk.transpose() * sp.S_full(w)).eval();
+      for (int i = 0; i < N; ++i) p[i] = uni(gen);
+      sp.solve_full(p, w, ws);
+      for (int pass = 0; pass < 2; ++pass) {
+        sp.S_full(w, q, ws);
+        w.noalias() -= Vk * (Vk.transpose() * q).eval();
+      }
       sp.project(w);
-      b = std::sqrt(std::max(0.0, w.dot(sp.S_full(w))));
+      sp.S_full(w, q, ws);
+      b = std::sqrt(std::max(0.0, w.dot(q)));
       V.col(k + 1) = w / b;
       continue;
     }

@@ -173,9 +173,12 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     }
   } else {
     sol.dq.resize(N, count);
+    ShiftedSolve::Workspace ws;
+    Vector md(N);
     for (int k = 0; k < count; ++k) {
-      const Vector d = vecs.col(sel.elastic[k]);
-      sol.dq.col(k) = d / std::sqrt(d.dot(sp->m_times(d)));
+      const auto d = vecs.col(sel.elastic[k]);
+      sp->m_times(d, md, ws);
+      sol.dq.col(k) = d / std::sqrt(d.dot(md));
     }
     vecs.resize(0, 0);
     sol.x = sp->reduce_cols(sol.dq);
@@ -204,9 +207,10 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
       MX = sol.model.M0 * sol.x.middleCols(k0, nb);
     } else {  // D^T K dq, D^T M dq with dq = D x
       Matrix Kd(N, nb), Md(N, nb);
+      ShiftedSolve::Workspace ws;
       for (int j = 0; j < nb; ++j) {
-        Kd.col(j) = sp->k_times(sol.dq.col(k0 + j));
-        Md.col(j) = sp->m_times(sol.dq.col(k0 + j));
+        sp->k_times(sol.dq.col(k0 + j), Kd.col(j));
+        sp->m_times(sol.dq.col(k0 + j), Md.col(j), ws);
       }
       KX = sp->reduce_cols(Kd);
       MX = sp->reduce_cols(Md);

@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace multibody {
 
@@ -26,23 +25,48 @@ void ShiftedSolve::set_shift(double sigma) {
 }
 
 void ShiftedSolve::perform_op(const double* x_in, double* y_out) const {
-  Eigen::Map<Vector>(y_out, N_) = solve_full(Eigen::Map<const Vector>(x_in, N_));
+  Workspace ws;
+  Eigen::Map<Vector> y(y_out, N_);
+  solve_full(Eigen::Map<const Vector>(x_in, N_), y, ws);
 }
 
 void ShiftedSolve::project(Vector& v) const { v.noalias() -= Jt_ * jjt_.solve(Jt_.transpose() * v); }
 
-Vector ShiftedSolve::S_full(const Vector& dq) const { return k_times(dq) + s_ * m_times(dq); }
+Vector ShiftedSolve::S_full(const Vector& dq) const {
+  Workspace ws;
+  Vector y(N_);
+  S_full(dq, y, ws);
+  return y;
+}
+
+void ShiftedSolve::S_full(const Eigen::Ref<const Vector>& dq, Eigen::Ref<Vector> y, Workspace& ws) const {
+  k_times(dq, y);
+  ws.t.resize(N_);
+  m_times(dq, ws.t, ws);
+  y += s_ * ws.t;
+}
 
 Vector ShiftedSolve::solve_full(const Vector& f) const {
+  Workspace ws;
+  Vector dq(N_);
+  solve_full(f, dq, ws);
+  return dq;
+}
+
+void ShiftedSolve::solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws) const {
   Vector lambda(nc_), dl(nc_);
-  Vector dq = full_solve(f, lambda);
+  full_solve(f, dq, lambda);
+  ws.r.resize(N_);
   for (int step = 0; step < kRefinementSteps; ++step) {
     // The residual of the bordered system, J^T lambda included: without it the
     // residual is dominated by the multiplier part and the refinement gains nothing.
-    dq += full_solve(f - S_full(dq) - Jt_ * lambda, dl);
+    S_full(dq, ws.r, ws);
+    ws.r = f - ws.r;
+    ws.r.noalias() -= Jt_ * lambda;
+    full_solve(ws.r, ws.r, dl);  // the correction, in place
+    dq += ws.r;
     lambda += dl;
   }
-  return dq;
 }
 
 Matrix ShiftedSolve::reduce_cols(const Matrix& Y) const {
@@ -50,12 +74,19 @@ Matrix ShiftedSolve::reduce_cols(const Matrix& Y) const {
 }
 
 Vector ShiftedSolve::m_times(const Vector& v) const {
+  Workspace ws;
+  Vector y(N_);
+  m_times(v, y, ws);
+  return y;
+}
+
+void ShiftedSolve::m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y, Workspace& ws) const {
   const int n = c_.n();
   const double l = c_.l(), m = c_.m(), Jr = c_.Jr();
   // Forward: midpoint displacements V_i; backward: W_j = sum_{i >= j} m V_i - m V_j / 2.
-  Vector y(N_);
   double ax = c_.free() ? v[n] : 0.0, ay = c_.free() ? v[n + 1] : 0.0;
-  std::vector<double> V(2 * static_cast<std::size_t>(n));
+  ws.v.resize(2 * n);
+  double* V = ws.v.data();
   for (int i = 0; i < n; ++i) {
     const double tx = -l * v[i] * sin_[i], ty = l * v[i] * cos_[i];
     V[2 * i] = ax + 0.5 * tx;
@@ -74,17 +105,21 @@ Vector ShiftedSolve::m_times(const Vector& v) const {
     y[n] = bx;
     y[n + 1] = by;
   }
-  return y;
 }
 
 Vector ShiftedSolve::k_times(const Vector& x) const {
+  Vector y(N_);
+  k_times(x, y);
+  return y;
+}
+
+void ShiftedSolve::k_times(const Eigen::Ref<const Vector>& x, Eigen::Ref<Vector> y) const {
   const int n = c_.n();
   const double K = c_.K();
-  Vector y = Vector::Zero(N_);
+  y.setZero();
   y[0] = K * (2 * x[0] - x[n - 1] - x[1 % n]);
   for (int k = 1; k + 1 < n; ++k) y[k] = K * (2 * x[k] - x[k - 1] - x[k + 1]);
   if (n > 1) y[n - 1] = K * (2 * x[n - 1] - x[n - 2] - x[0]);
-  return y;
 }
 
 /// Backward Riccati sweep of the open chain (matrix part, once). For segment i the
@@ -117,12 +152,14 @@ void ShiftedSolve::factor_open() {
   }
 }
 
-/// x = A^{-1} f for the open chain (first n entries of f). Two sweeps, O(n).
-Vector ShiftedSolve::open_solve(const Vector& f) const {
+/// x = A^{-1} f for the open chain, in place (fx holds f on entry, x on return; both
+/// sweeps read entry i before they write it). Two sweeps, O(n).
+void ShiftedSolve::open_solve(double* fx) const {
   const int n = c_.n();
   const double l = c_.l();
   // Backward: linear cost-to-go term q_i (cost -q^T z); hx_i = f_i + g_i^T q_{i+1}.
-  Vector hx(n);
+  const double* f = fx;
+  double* hx = fx;
   double q0 = 0.0, q1 = 0.0, q2 = 0.0;
   for (int i = n - 1; i >= 0; --i) {
     const double gx = -l * sin_[i], gy = l * cos_[i];
@@ -135,7 +172,7 @@ Vector ShiftedSolve::open_solve(const Vector& f) const {
     q2 = -hzx_(2, i) * t;
   }
   // Forward: x_i = (hx_i - hzx_i^T z_i) / hxx_i, z_0 = 0.
-  Vector x(n);
+  double* x = fx;
   double zx = 0.0, zy = 0.0, zp = 0.0;
   for (int i = 0; i < n; ++i) {
     const double xi = (hx[i] - hzx_(0, i) * zx - hzx_(1, i) * zy - hzx_(2, i) * zp) * inv_hxx_[i];
@@ -144,7 +181,6 @@ Vector ShiftedSolve::open_solve(const Vector& f) const {
     zy += l * cos_[i] * xi;
     zp = xi;
   }
-  return x;
 }
 
 /// Border of the open chain: extra unknowns e = (alpha = x_0 - x_{n-1} for the cyclic
@@ -181,28 +217,30 @@ void ShiftedSolve::border(const Matrix& J) {
       D(1 + na + b, 1 + a) = J(b, n + a);
     }
   }
-  Z_.resize(n, k);
-  for (int j = 0; j < k; ++j) Z_.col(j) = open_solve(B_.col(j));
+  Z_ = B_;
+  for (int j = 0; j < k; ++j) open_solve(Z_.col(j).data());
   schur_.compute(D - C_ * Z_);
   na_ = na;
 }
 
 /// The constrained solve in chain coordinates: [S J^T; J 0] [dq; lambda] = [f; 0]. O(n k).
-Vector ShiftedSolve::full_solve(const Vector& f, Vector& lambda) const {
+/// dq may be f itself (f's translation entries are read before dq's are written).
+void ShiftedSolve::full_solve(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Vector& lambda) const {
   const int n = c_.n(), k = static_cast<int>(Z_.cols());
-  const Vector x0 = open_solve(f.head(n));
   Vector g = Vector::Zero(k);
   for (int a = 0; a < na_; ++a) g[1 + a] = f[n + a];
-  const Vector e = schur_.solve(g - C_ * x0);
-  Vector dq(N_);
-  dq.head(n) = x0 - Z_ * e;
+  if (dq.data() != f.data()) dq.head(n) = f.head(n);
+  open_solve(dq.data());  // x0 = A^{-1} f_x in dq's first n entries
+  const Vector e = schur_.solve(g - C_ * dq.head(n));
+  dq.head(n).noalias() -= Z_ * e;
   for (int a = 0; a < na_; ++a) dq[n + a] = e[1 + a];
   lambda = e.tail(nc_);
-  return dq;
 }
 
 void MassProduct::perform_op(const double* x_in, double* y_out) const {
-  Eigen::Map<Vector>(y_out, solve_.rows()) = solve_.m_times(Eigen::Map<const Vector>(x_in, solve_.rows()));
+  ShiftedSolve::Workspace ws;
+  Eigen::Map<Vector> y(y_out, solve_.rows());
+  solve_.m_times(Eigen::Map<const Vector>(x_in, solve_.rows()), y, ws);
 }
 
 }  // namespace multibody

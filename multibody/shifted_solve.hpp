@@ -43,6 +43,12 @@ class ShiftedSolve {
   /// frequencies by < 1e-14 relative at n = 1e5).
   static constexpr int kRefinementSteps = 1;
 
+  /// Scratch of the in-place overloads, owned by the caller (one per thread): a loop that
+  /// reuses one Workspace and its output vectors allocates nothing per product or solve.
+  struct Workspace {
+    Vector r, t, v;
+  };
+
   /// Trigonometry, the Householder QR of J^T; no factorization until set_shift.
   explicit ShiftedSolve(const Chain& chain);
   /// Factors S = K - sigma M for sigma < 0 (s = -sigma > 0 keeps S positive definite);
@@ -62,23 +68,28 @@ class ShiftedSolve {
   void project(Vector& v) const;
   /// S dq = (K + s M(q0)) dq in chain coordinates. O(n).
   Vector S_full(const Vector& dq) const;
+  void S_full(const Eigen::Ref<const Vector>& dq, Eigen::Ref<Vector> y, Workspace& ws) const;
   /// The constrained solve [S J^T; J 0] [dq; lambda] = [f; 0] in chain coordinates
   /// (dq in the null space of J), refined kRefinementSteps times against S_full: the
   /// multiplier part of the residual is absorbed by the next solve's lambda. O(n).
   Vector solve_full(const Vector& f) const;
+  /// The same into dq (not aliasing f), with ws as scratch.
+  void solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws) const;
   /// D^T Y for the columns of Y (N x k), D the orthonormal null-space basis
   /// (linear_model.hpp, robust): Householder reflections blocked over the columns.
   Matrix reduce_cols(const Matrix& Y) const;
   /// M(q0) v: Chain::mass_times at q0 with the trigonometry cached. O(n).
   Vector m_times(const Vector& v) const;
+  void m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y, Workspace& ws) const;
   /// K dq: springs at every hinge (cyclic). O(n).
   Vector k_times(const Vector& x) const;
+  void k_times(const Eigen::Ref<const Vector>& x, Eigen::Ref<Vector> y) const;
 
  private:
   void factor_open();
-  Vector open_solve(const Vector& f) const;
+  void open_solve(double* fx) const;
   void border(const Matrix& J);
-  Vector full_solve(const Vector& f, Vector& lambda) const;
+  void full_solve(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Vector& lambda) const;
 
   const Chain& c_;
   double s_ = 0.0;
