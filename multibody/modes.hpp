@@ -91,7 +91,7 @@ bool uses_sparse_path(const ring::MultibodyOptions& options);
 /// Lanczos, or the hand-written one of lanczos.hpp.
 enum class SparseEigensolver { library, hand_written };
 /// The one solve_modes(spec, options, count) and compute_modes use: the hand-written
-/// Lanczos, 3x faster at n = 10^6 with frequencies that agree with the library's to
+/// Lanczos, 2.3x faster at n = 10^6 with frequencies that agree with the library's to
 /// ~1e-12 (multibody/README.md, "Large n").
 constexpr SparseEigensolver kDefaultSparseEigensolver = SparseEigensolver::hand_written;
 /// Spectra's relative Ritz-residual bound on the library path (modal::LanczosOptions::tol).
