@@ -191,8 +191,9 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     normK = modal::norm_estimate([&](const Vector& v) { return Vector(sol.model.K0 * v); }, r);
     normM = modal::norm_estimate([&](const Vector& v) { return Vector(sol.model.M0 * v); }, r);
   } else {
-    normK = modal::norm_estimate([&](const Vector& v) { return sp->k_times(v); }, N);
-    normM = modal::norm_estimate([&](const Vector& v) { return sp->m_times(v); }, N);
+    ShiftedSolve::Workspace ws;
+    normK = modal::norm_estimate([&](const Vector& v) { Vector y(N); sp->k_times(v, y); return y; }, N);
+    normM = modal::norm_estimate([&](const Vector& v) { Vector y(N); sp->m_times(v, y, ws); return y; }, N);
   }
   // Residuals of the reduced pairs. D^T K dq and D^T M dq on the sparse path in blocks of
   // columns: one blocked Householder application per block instead of one per vector

@@ -32,25 +32,11 @@ void ShiftedSolve::perform_op(const double* x_in, double* y_out) const {
 
 void ShiftedSolve::project(Vector& v) const { v.noalias() -= Jt_ * jjt_.solve(Jt_.transpose() * v); }
 
-Vector ShiftedSolve::S_full(const Vector& dq) const {
-  Workspace ws;
-  Vector y(N_);
-  S_full(dq, y, ws);
-  return y;
-}
-
 void ShiftedSolve::S_full(const Eigen::Ref<const Vector>& dq, Eigen::Ref<Vector> y, Workspace& ws) const {
   k_times(dq, y);
   ws.t.resize(N_);
   m_times(dq, ws.t, ws);
   y += s_ * ws.t;
-}
-
-Vector ShiftedSolve::solve_full(const Vector& f) const {
-  Workspace ws;
-  Vector dq(N_);
-  solve_full(f, dq, ws);
-  return dq;
 }
 
 void ShiftedSolve::solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws) const {
@@ -71,13 +57,6 @@ void ShiftedSolve::solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vect
 
 Matrix ShiftedSolve::reduce_cols(const Matrix& Y) const {
   return (qr_.householderQ().transpose() * Y).bottomRows(r());
-}
-
-Vector ShiftedSolve::m_times(const Vector& v) const {
-  Workspace ws;
-  Vector y(N_);
-  m_times(v, y, ws);
-  return y;
 }
 
 void ShiftedSolve::m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y, Workspace& ws) const {
@@ -105,12 +84,6 @@ void ShiftedSolve::m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector>
     y[n] = bx;
     y[n + 1] = by;
   }
-}
-
-Vector ShiftedSolve::k_times(const Vector& x) const {
-  Vector y(N_);
-  k_times(x, y);
-  return y;
 }
 
 void ShiftedSolve::k_times(const Eigen::Ref<const Vector>& x, Eigen::Ref<Vector> y) const {
