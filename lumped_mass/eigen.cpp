@@ -2,15 +2,14 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
-#include <Spectra/SymGEigsShiftSolver.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <random>
 #include <stdexcept>
 #include <string>
 
+#include "modal/lanczos.hpp"
+#include "modal/modes.hpp"
 #include "ring/errors.hpp"
 
 namespace lumped {
@@ -253,8 +252,7 @@ Eigenpairs solve_sparse(const Model& m, const Reduction& red, int count) {
   const SpMat Ca = SpMat(Ct * E);
   const int Na = static_cast<int>(E.cols());
   const int nev = count + m.expected_rigid;
-  const int ncv = std::min(Na, std::max(2 * nev + 1, nev + 20));
-  if (nev >= Na || ncv <= nev)
+  if (nev >= Na)
     throw std::invalid_argument("lumped: sparse path needs count + rigid modes (=" + std::to_string(nev) +
                                 ") < " + std::to_string(Na) + " inertial DOFs; use the dense path");
   // Typical mass of one inertial DOF, to make Ct^T Ct commensurate with Mt.
@@ -263,40 +261,28 @@ Eigenpairs solve_sparse(const Model& m, const Reduction& red, int count) {
 
   ShiftInvertOp op(Bt, m.D, Mt, Ct, E, mass_scale);
   MassOp bop(Maa, Ca, mass_scale);
-  Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(op, bop, nev, ncv,
-                                                                                         sigma);
-  // Start in the admissible space (range of the operator): v0 = op(B r), fixed seed.
-  std::mt19937 gen(20261121);
-  std::uniform_real_distribution<double> uni(-1.0, 1.0);
-  VectorXd r(Na), br(Na), v0(Na);
-  for (int i = 0; i < Na; ++i) r[i] = uni(gen);
-  bop.perform_op(r.data(), br.data());
-  op.perform_op(br.data(), v0.data());
-  eigs.init(v0.data());
+  // The eigen layer starts in the admissible space (the operator's range, v0 = op(B r)).
   // tol is Spectra's relative Ritz-residual bound on nu = 1/(lambda - sigma).
-  eigs.compute(Spectra::SortRule::LargestMagn, 2000, 1e-13);
-  if (eigs.info() != Spectra::CompInfo::Successful)
-    throw ring::NumericalError("lumped: shift-invert Lanczos did not converge (" + std::to_string(nev) +
-                               " modes, " + std::to_string(Na) + " DOFs)");
-  const VectorXd lam = eigs.eigenvalues();
-  const MatrixXd V = eigs.eigenvectors();
-  std::vector<int> order(lam.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return lam[a] < lam[b]; });
+  modal::LanczosOptions opt;
+  opt.tol = 1e-13;
+  opt.max_restarts = 2000;
+  modal::ShiftInvertLanczos<ShiftInvertOp, MassOp> eigs(op, bop, nev, sigma, opt);
+  eigs.compute();
+  const VectorXd& lam = eigs.eigenvalues();  // ascending; ring::NumericalError unless converged
+  const MatrixXd& V = eigs.eigenvectors();
 
   Eigenpairs p;
   p.method = Method::sparse;
   p.system_order = op.size();
   p.factor_nonzeros = op.factor_nonzeros();
   p.X.resize(m.K.rows(), nev);
-  for (int c = 0; c < nev; ++c) {
-    const int i = order[c];
+  for (int i = 0; i < nev; ++i) {
     p.lambda.push_back(lam[i]);
     // Lift to all reduced DOFs: (Kt - sigma Mt) x = (lambda - sigma) Mt x (eigen.hpp).
     const VectorXd xa = V.col(i);
     const VectorXd xr = (lam[i] - sigma) * op.solve_reduced(E * (Maa * xa));
     const VectorXd x = red.T * xr;
-    p.X.col(c) = x / std::sqrt(x.dot(m.M * x));
+    p.X.col(i) = x / std::sqrt(x.dot(m.M * x));
   }
   return p;
 }
@@ -325,15 +311,14 @@ Eigenpairs solve(const Model& m, int count, Method method) {
     p = solve_sparse(m, red, count);
 
   p.unknowns = avail + m.expected_rigid;
-  const double threshold = kRigidThreshold * m.lambda_scale;
   p.rigid = 0;
   for (double l : p.lambda) {
     if (!std::isfinite(l)) throw ring::NumericalError("lumped: non-finite eigenvalue");
-    if (l < threshold) ++p.rigid;
+    if (modal::is_rigid(l, m.lambda_scale)) ++p.rigid;
   }
   if (p.rigid != m.expected_rigid)
     throw ring::NumericalError("lumped: found " + std::to_string(p.rigid) + " modes with omega^2 < " +
-                               std::to_string(kRigidThreshold) + " EI/(rho A R^4), the supports leave " +
+                               std::to_string(modal::kRigidThreshold) + " EI/(rho A R^4), the supports leave " +
                                std::to_string(m.expected_rigid));
   const std::vector<double> res = residuals(m, p);
   for (std::size_t i = p.rigid; i < res.size(); ++i) p.max_residual = std::max(p.max_residual, res[i]);
@@ -357,7 +342,7 @@ std::vector<double> residuals(const Model& m, const Eigenpairs& p) {
     const VectorXd kx = m.B.transpose() * VectorXd(m.D.cwiseProduct(bx)), mx = m.M * x;
     VectorXd r = red.T.transpose() * (kx - p.lambda[c] * mx);
     if (Ct.rows() > 0) r -= Ct.transpose() * cct.solve(Ct * r);
-    const double rel = r.norm() / (kx.norm() + std::abs(p.lambda[c]) * mx.norm());
+    const double rel = modal::relative_residual(r.norm(), kx.norm(), mx.norm(), p.lambda[c]);
     const double drift = std::max(m.C.rows() > 0 ? (m.C * x).norm() : 0.0, m.S.rows() > 0 ? (m.S * x).norm() : 0.0) / x.norm();
     out.push_back(std::max(rel, drift));
   }

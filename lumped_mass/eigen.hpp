@@ -15,8 +15,9 @@
 //   basis and Y^T M Y = L L^T (after Jacobi scaling), lambda = sigma^2 for the singular
 //   values sigma of F = D^1/2 B Y L^-T (Eigen::BDCSVD): small singular values carry
 //   absolute error eps ||F||, i.e. relative error eps sqrt(lambda_max / lambda) in lambda.
-// sparse (O(n) memory, O(n) per operator application): shift-invert Lanczos
-//   (Spectra::SymGEigsShiftSolver) in the space of the inertial DOFs. The operator
+// sparse (O(n) memory, O(n) per operator application): shift-invert Lanczos of the
+//   eigen layer (modal/lanczos.hpp: Spectra's SymGEigsShiftSolver, the layer's subspace
+//   rule and start vector) in the space of the inertial DOFs. The operator
 //   (A - sigma B)^-1 x solves the sparse mixed (stress) system
 //       [ -sigma Mt   Bt^T    Ct^T ] [y ]   [E x]
 //       [ Bt         -D^-1    0    ] [s ] = [ 0 ]     (s = D Bt y: strain resultants)
@@ -33,7 +34,8 @@
 //   Shift sigma = -EI/(rho A R^4): below every eigenvalue, so a free ring's singular K
 //   is no problem and rigid modes come out as the largest 1/(lambda - sigma).
 //
-// Rigid modes: an eigenvalue lambda < kRigidThreshold * EI/(rho A R^4) counts as rigid.
+// Rigid modes: the eigen layer's rule (modal/modes.hpp), an eigenvalue
+// lambda < modal::kRigidThreshold * EI/(rho A R^4) counts as rigid.
 // The lowest elastic omega^2 of any supported or free ring is >= ~2 EI/(rho A R^4)
 // (free ring k = 2: 7.2; pinned ring: 2.5 in these units), while a rigid mode's
 // lambda is roundoff; the count must equal Supports::rigid_modes(), or NumericalError.
@@ -43,11 +45,9 @@
 #include <vector>
 
 #include "lumped_mass/model.hpp"
+#include "modal/modes.hpp"
 
 namespace lumped {
-
-/// omega^2 below this fraction of EI/(rho A R^4) is a rigid (zero) mode.
-constexpr double kRigidThreshold = 1e-6;
 
 enum class Method { automatic, dense, sparse };
 

@@ -1,8 +1,8 @@
 #include "lumped_mass/modes.hpp"
 
 #include <chrono>
-#include <cmath>
 
+#include "modal/modes.hpp"
 #include "ring/sampling.hpp"
 
 namespace lumped {
@@ -17,8 +17,13 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
   const Model model = assemble(spec, options);
   const Eigenpairs pairs = solve(model, count, method);
 
+  // The layer's assembly: rigid count and omega = sqrt(lambda) of the `count` lowest
+  // elastic pairs (solve() already checked the rigid count against the supports).
+  const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(pairs.lambda.data(),
+                                                                   static_cast<Eigen::Index>(pairs.lambda.size()));
+  const modal::Selection sel = modal::select_modes("lumped", lambda, model.lambda_scale, count);
   ring::ModalResult r;
-  r.solver = "lumped";
+  modal::assemble(r, "lumped", lambda, sel, {pairs.max_residual});
   r.model["n"] = static_cast<long long>(options.n);
   r.model["variant"] = ring::to_string(options.variant);
   r.model["method"] = std::string(pairs.method == Method::dense ? "dense" : "sparse");
@@ -26,13 +31,10 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
     r.model["system_order"] = pairs.system_order;
     r.model["factor_nonzeros"] = pairs.factor_nonzeros;
   }
-  r.rigid_modes = pairs.rigid;
   r.unknowns = pairs.unknowns;
-  r.max_residual = pairs.max_residual;
   const int dpn = model.dofs_per_node;
   std::vector<double> ux(model.n), uy(model.n);
-  for (std::size_t c = pairs.rigid; c < pairs.lambda.size(); ++c) {
-    r.omega.push_back(std::sqrt(pairs.lambda[c]));
+  for (int c : sel.elastic) {
     for (int k = 0; k < model.n; ++k) {
       ux[k] = pairs.X(dpn * k, c);
       uy[k] = pairs.X(dpn * k + 1, c);

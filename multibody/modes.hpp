@@ -1,22 +1,7 @@
 // Linear natural frequencies of the rigid-segment chain (the paper's section 4).
 //
-// ## Problem
-// Linearized about the undeformed n-gon q0 (no preload, so neither the constraint
-// forces nor the quadratic-velocity terms contribute), with a basis D of the null space
-// of the constraint Jacobian J = Chain::constraint_jacobian(q0) (delta q = D x):
-//   \f$ K_0 x = \omega^2 M_0 x,\quad K_0 = D^T K D,\quad M_0 = D^T M(q_0) D \f$
-// (the paper's equations 24-26). Unknowns r = dofs - constraints: n - 2 (pin),
-// n - 3 (pin + roller), n (free ring).
-//
-// ## Dependent coordinates (MultibodyOptions::dependent)
-// - `paper`: the last two angles are dependent, D = [I; -J_2^{-1} J_1] (equation 17),
-//   J_2 = the 2x2 block of the last two columns, det J_2 = l^2 sin(2 pi / n): its
-//   condition number grows like n. With a roller the third dependent angle is that of
-//   segment r-1 (r = roller hinge; segment n-3 if r-1 >= n-2), whose roller-row entry is
-//   the only one among the three dependent columns.
-// - `robust` (default): D = the last r columns of the orthogonal factor Q of a
-//   Householder QR of J^T (an orthonormal null-space basis, condition number 1 for any
-//   n and any configuration), applied implicitly (O(n^2) for Q^T A Q).
+// The problem (K0 x = omega^2 M0 x, the constraint-reduced pencil about the n-gon) and
+// the dependent coordinates: linear_model.hpp.
 //
 // ## Solution method (dense path)
 // In angle coordinates M_0 is ill-conditioned (its spectrum spans ~n^2 and the pencil's
@@ -34,44 +19,37 @@
 // step; O(r^3) eigenvectors on the small path.
 //
 // ## Sparse path (MultibodyOptions::method = sparse, or automatic above kSparseThreshold)
-// Same pencil, never formed: K and M(q0) only as O(n) operators in chain coordinates
-// (M through the midpoint kinematics). The constrained solve with S = K + s M is
-// O(n): S = A + (cyclic spring at hinge 0) + (translation coupling, free ring), where A
-// (the open chain held at hinge 0) is solved by a discrete Riccati sweep over the state
-// (hinge displacement, previous angle) with scalar pivots (Cholesky-stable, ~60 flops per
-// segment), and the constraints J dq = 0 and the two couplings form a border of <= 6
-// unknowns (Schur complement of prefactored solves); one step of iterative refinement.
-// Eigenvalues: a Lanczos of our own for T = S_c M in the S inner product on the null
-// space of J (full reorthogonalization, DGKS second pass, no restart), Ritz values from
-// the exact Rayleigh quotient V^T M V so solve errors only slow convergence; a closed
-// Krylov space (multiple eigenvalues: the free ring's rigid modes and cos/sin pairs)
-// continues with a fresh random direction. The orthonormal basis D (Householder of J^T)
-// is applied only to the final vectors (x = D^T dq). Cost: ~45-50 Lanczos steps for 23
-// modes at every n, each O(n) plus 4 k n for the reorthogonalization (k = step); memory
-// N x (steps + 1) doubles plus the outputs. Measured curve: multibody/README.md. Robust
-// dependent coordinates only; n >= 10 (forcing it below is an input error: at n = 8 every mode is wanted and the
-// Krylov space degenerates).
+// Same pencil, never formed: K and M(q0) only as O(n) operators in chain coordinates,
+// and S = K + s M solved in O(n) on the null space of J by a Riccati sweep with a border
+// of <= 6 unknowns (shifted_solve.hpp). The eigenpairs come either from the eigen layer
+// (modal/lanczos.hpp: Spectra's shift-invert Lanczos with that solve as the operator and
+// M as B) or from the hand-written Lanczos of lanczos.hpp; kDefaultSparseEigensolver says
+// which one runs by default and multibody/README.md why (measured side by side). The
+// orthonormal basis D (Householder of J^T) is applied only to the final vectors
+// (x = D^T dq). Cost: O(n) per Lanczos step, ~50 steps for 23 modes at every n, plus
+// O(n k) per step for the reorthogonalization; memory N x (steps + 1) doubles plus the
+// outputs. Robust dependent coordinates only; n >= 10 (forcing it below is an input
+// error: at n = 8 every mode is wanted and the Krylov space degenerates).
 //
 // ## Residuals: why max_residual grows like n^2 on either path and what to read instead
 // For a smooth low mode x, K0 x is a second difference of a smooth vector: it is computed
 // with an absolute error ~eps ||K0|| ||x|| while its size is ~omega^2 ||M0 x||, so the
-// relative residual ||K0 x - w^2 M0 x|| / (||K0 x|| + w^2 ||M0 x||) of even the EXACT
-// eigenvector is floored at ~eps ||K0|| / (omega^2 ||M0||) ~ eps (n / k)^2-ish: measured
-// 2.7e-10 (n = 10^3), 1.7e-8 (10^4), 1.8e-6 (10^5), 2e-4 (10^6) while the frequencies stay
-// within 1e-11 of the oracles. ModalSolution::backward_error (normwise,
-// ||r|| / ((||K0|| + w^2 ||M0||) ||x||)) is the meaningful measure: ~1e-12 at every n up
-// to 10^6 on the sparse path, ~1e-15 on the dense one: the growth of max_residual is
-// this floor, not a loss of accuracy.
+// relative residual ||K0 x - w^2 M0 x|| / (||K0 x|| + w^2 ||M0 x||) of even the exact
+// eigenvector has a floor that grows like n^2, while the frequencies stay within 1e-11 of
+// the oracles. ModalSolution::backward_error (normwise,
+// ||r|| / ((||K0|| + w^2 ||M0||) ||x||)) is the measure that says whether the eigensolver
+// did its job; the tests bound it. Measured values of both, per path and n:
+// multibody/README.md.
 //
 // ## Rigid modes
-// A computed omega^2 < kRigidThreshold * s (s as above) is a rigid (zero) mode: counted
-// in ModalResult::rigid_modes, never numbered, never returned. The chain is inextensible,
-// so omega^2 / s depends on n and the supports only: the lowest elastic omega^2 is
-// 0.79 s (n = 4, pinned) and >= 1.1 s from n = 5 (2.5 s pinned, 7.2 s free at large n),
-// while the robust path's rigid modes come out at |omega^2| <= 2e-12 s up to n = 2000:
-// the threshold 1e-6 s sits more than five orders from both. (The paper's coordinates
-// at n = 2000 without rotary inertia push the rigid mode to 1.5e-5 s and miss it; see
-// MultibodyStress.) Expected: 1 (pin), 0 (pin + roller), 3 (free).
+// The eigen layer's rule (modal/modes.hpp): omega^2 < modal::kRigidThreshold * s is a
+// rigid (zero) mode, counted in ModalResult::rigid_modes, never numbered, never returned.
+// The chain is inextensible, so omega^2 / s depends on n and the supports only: the
+// lowest elastic omega^2 is 0.79 s (n = 4, pinned) and >= 1.1 s from n = 5 (2.5 s
+// pinned, 7.2 s free at large n), while the robust path's rigid modes come out at
+// |omega^2| <= 2e-12 s up to n = 2000. (The paper's coordinates at n = 2000 without
+// rotary inertia push the rigid mode to 1.5e-5 s and miss it; see MultibodyStress.)
+// Expected: 1 (pin), 0 (pin + roller), 3 (free).
 //
 // ## Outputs
 // ModalResult: solver "multibody"; model {n, rotary_inertia, dependent, method};
@@ -93,47 +71,31 @@
 #include <vector>
 
 #include "multibody/chain.hpp"
+#include "multibody/linear_model.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
 
-/// omega^2 < kRigidThreshold * EI / (rho A R^4) counts as a rigid mode.
-constexpr double kRigidThreshold = 1e-6;
-
-/// MultibodyOptions::Method::automatic takes the sparse path above this n (robust only).
-/// Measured (23 modes, pinned, rotary inertia, minimum of 3 runs, loaded 2-core machine):
-/// dense 8 ms / sparse 14 ms at n = 160, dense 35 ms / sparse 16 ms at n = 320, dense
-/// 207 ms / sparse 14 ms at n = 640. Both are within 1e-12 of the independent oracles on
-/// either side (tests/multibody/test_modes_sparse.cpp), so the switch costs no accuracy.
+/// MultibodyOptions::Method::automatic takes the sparse path above this n (robust only):
+/// where the sparse path is measured faster (multibody/README.md, "Crossover"); both are
+/// within 1e-12 of the independent oracles on either side
+/// (tests/multibody/test_modes_sparse.cpp), so the switch costs no accuracy.
 constexpr int kSparseThreshold = 256;
 /// True when solve_modes may take the sparse large-n path for these options (automatic:
 /// n > kSparseThreshold, robust; solve_modes then also requires count + rigid + 2 <= r / 3,
 /// else dense).
 bool uses_sparse_path(const ring::MultibodyOptions& options);
 
-/// The linearized, constraint-reduced problem about the n-gon (for tests and studies).
-struct LinearModel {
-  Matrix K0;           ///< r x r, D^T K D
-  Matrix M0;           ///< r x r, D^T M(q0) D
-  double j2_condition = 0.0;  ///< 2-norm condition of the paper's block J_2 (the last two
-                              ///< angle columns of the closure Jacobian), for reporting
-  /// delta q = D x for the columns of x (r x k): O(n k). Chain coordinates of reduced vectors.
-  Matrix expand(const Matrix& x) const;
-  /// D itself, dofs x r (dense, O(n^2)).
-  Matrix basis() const;
-
-  // D is kept implicit: paper: rows `independent` = identity, rows `dependent` = X;
-  // robust: the last r columns of the Householder factor Q of J^T.
-  ring::MultibodyOptions::Dependent kind = ring::MultibodyOptions::Dependent::robust;
-  std::vector<int> independent, dependent;
-  Matrix X;                           ///< paper: -J_P^{-1} J_I, c x r
-  Eigen::HouseholderQR<Matrix> qr;    ///< robust: QR of J^T
-};
-
-/// Assembles K0 and M0 (and the implicit D) for `chain` with the given dependent-coordinate
-/// choice. Cost O(n^2 c) time, O(n^2) memory (c = constraints, 2 or 3).
-LinearModel linearize(const Chain& chain, ring::MultibodyOptions::Dependent dependent);
+/// The eigensolver of the sparse path (file comment): the eigen layer's Spectra
+/// Lanczos, or the hand-written one of lanczos.hpp.
+enum class SparseEigensolver { library, hand_written };
+/// The one solve_modes(spec, options, count) and compute_modes use: the hand-written
+/// Lanczos, 2.3x faster at n = 10^6 with frequencies that agree with the library's to
+/// ~1e-12 (multibody/README.md, "Large n").
+constexpr SparseEigensolver kDefaultSparseEigensolver = SparseEigensolver::hand_written;
+/// Spectra's relative Ritz-residual bound on the library path (modal::LanczosOptions::tol).
+constexpr double kLibraryLanczosTol = 1e-10;
 
 /// Full modal solution, with the coordinates behind ModalResult.
 struct ModalSolution {
@@ -162,6 +124,10 @@ struct ModalSolution {
 /// supports' count.
 ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           int count);
+/// The same with the sparse path's eigensolver chosen (tests and benchmarks; the dense
+/// path ignores it).
+ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options, int count,
+                          SparseEigensolver eigensolver);
 
 /// The project-wide entry point: solve_modes(...).result.
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,

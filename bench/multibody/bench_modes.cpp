@@ -57,6 +57,31 @@ BENCHMARK(BM_ComputeModes23)
     ->ArgNames({"n", "rot", "sparse"})
     ->Unit(benchmark::kMillisecond);
 
+// The sparse path's two eigensolvers side by side on the same O(n) shifted solve (23
+// modes, pinned paper ring, rotary inertia): lib = 0 the hand-written Lanczos
+// (multibody/lanczos.hpp), lib = 1 the eigen layer's Spectra Lanczos (modal/lanczos.hpp).
+void BM_SparseEigensolver(benchmark::State& st) {
+  const ring::RingSpec s = paper_ring();
+  ring::MultibodyOptions o;
+  o.n = static_cast<int>(st.range(0));
+  o.method = ring::MultibodyOptions::Method::sparse;
+  const auto which = st.range(1) ? multibody::SparseEigensolver::library : multibody::SparseEigensolver::hand_written;
+  double solver_seconds = 0;
+  multibody::ModalSolution sol;
+  for (auto _ : st) {
+    sol = multibody::solve_modes(s, o, 23, which);
+    benchmark::DoNotOptimize(sol.result.omega.data());
+    solver_seconds += sol.result.seconds;
+  }
+  st.counters["solver_s"] = benchmark::Counter(solver_seconds, benchmark::Counter::kAvgIterations);
+  st.counters["omega1"] = sol.result.omega[0];
+  st.counters["backward_error"] = sol.backward_error;
+}
+BENCHMARK(BM_SparseEigensolver)
+    ->ArgsProduct({{2000, 10000, 100000, 1000000}, {0, 1}})
+    ->ArgNames({"n", "lib"})
+    ->Unit(benchmark::kMillisecond);
+
 void BM_Linearize(benchmark::State& st) {
   const ring::RingSpec s = paper_ring();
   ring::MultibodyOptions o;

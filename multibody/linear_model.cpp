@@ -1,0 +1,114 @@
+#include "multibody/linear_model.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "ring/errors.hpp"
+
+namespace multibody {
+
+namespace {
+
+using Dependent = ring::MultibodyOptions::Dependent;
+
+/// The paper's dependent angles: the last two, plus (with a roller at hinge r) segment
+/// r-1, or n-3 when r-1 is already among the last two.
+std::vector<int> paper_dependents(const Chain& c) {
+  const int n = c.n();
+  std::vector<int> p{n - 2, n - 1};
+  if (c.roller_hinge()) {
+    const int r = *c.roller_hinge();
+    p.insert(p.begin(), r - 1 <= n - 3 ? r - 1 : n - 3);
+  }
+  return p;
+}
+
+/// D^T A D for D = rows I: identity, rows P: X (c x r), without forming A D. O(N^2 c).
+Matrix condense(const Matrix& A, const std::vector<int>& I, const std::vector<int>& P,
+                const Matrix& X) {
+  const int r = static_cast<int>(I.size()), c = static_cast<int>(P.size());
+  Matrix AII(r, r), AIP(r, c), APP(c, c);
+  for (int j = 0; j < r; ++j)
+    for (int i = 0; i < r; ++i) AII(i, j) = A(I[i], I[j]);
+  for (int j = 0; j < c; ++j) {
+    for (int i = 0; i < r; ++i) AIP(i, j) = A(I[i], P[j]);
+    for (int i = 0; i < c; ++i) APP(i, j) = A(P[i], P[j]);
+  }
+  const Matrix t = AIP * X;  // r x r
+  Matrix R = AII + t + t.transpose() + X.transpose() * (APP * X);
+  return 0.5 * (R + R.transpose());
+}
+
+}  // namespace
+
+double j2_condition(const Matrix& J, int n) {
+  Eigen::JacobiSVD<Eigen::Matrix2d> svd(J.block(0, n - 2, 2, 2).eval());
+  const auto sv = svd.singularValues();
+  return sv[0] / sv[1];
+}
+
+LinearModel linearize(const Chain& chain, Dependent dependent) {
+  const Vector q0 = chain.q0();
+  const Matrix M = chain.mass_matrix(q0);
+  const Matrix K = chain.stiffness_matrix();
+  const Matrix J = chain.constraint_jacobian(q0);
+  const int N = chain.dofs(), c = static_cast<int>(J.rows()), r = N - c;
+  LinearModel lm;
+  lm.j2_condition = j2_condition(J, chain.n());
+  if (dependent == Dependent::paper) {
+    const std::vector<int> P = paper_dependents(chain);
+    std::vector<int> I;
+    for (int i = 0; i < N; ++i)
+      if (std::find(P.begin(), P.end(), i) == P.end()) I.push_back(i);
+    Matrix JP(c, c), JI(c, r);
+    for (int k = 0; k < c; ++k) JP.col(k) = J.col(P[k]);
+    for (int k = 0; k < r; ++k) JI.col(k) = J.col(I[k]);
+    Eigen::FullPivLU<Matrix> lu(JP);
+    if (lu.rank() < c)
+      throw ring::NumericalError("multibody: the paper's dependent block J_2 is singular (n = " +
+                                 std::to_string(chain.n()) + ")");
+    const Matrix X = -lu.solve(JI);  // c x r: the paper's -J_2^{-1} J_1
+    lm.K0 = condense(K, I, P, X);
+    lm.M0 = condense(M, I, P, X);
+    lm.kind = Dependent::paper;
+    lm.independent = I;
+    lm.dependent = P;
+    lm.X = X;
+  } else {
+    // Orthonormal null-space basis: the last r columns of Q in J^T = Q R. Q^T A Q is
+    // applied as c Householder reflections from each side: O(N^2 c).
+    lm.kind = Dependent::robust;
+    lm.qr.compute(J.transpose());
+    const auto Q = lm.qr.householderQ();
+    auto reduce = [&](const Matrix& A) {
+      const Matrix B = Q.transpose() * A;               // Q^T A
+      const Matrix C = Q.transpose() * B.transpose();   // Q^T (A Q), A symmetric
+      Matrix R = C.bottomRightCorner(r, r);
+      return Matrix(0.5 * (R + R.transpose()));
+    };
+    lm.K0 = reduce(K);
+    lm.M0 = reduce(M);
+  }
+  return lm;
+}
+
+Matrix LinearModel::expand(const Matrix& x) const {
+  if (kind == Dependent::paper) {
+    const int N = static_cast<int>(independent.size() + dependent.size());
+    Matrix dq(N, x.cols());
+    for (std::size_t k = 0; k < independent.size(); ++k) dq.row(independent[k]) = x.row(k);
+    const Matrix xd = X * x;
+    for (std::size_t k = 0; k < dependent.size(); ++k) dq.row(dependent[k]) = xd.row(k);
+    return dq;
+  }
+  const int N = static_cast<int>(qr.rows()), r = static_cast<int>(x.rows());
+  Matrix dq = Matrix::Zero(N, x.cols());
+  dq.bottomRows(r) = x;
+  return qr.householderQ() * dq;
+}
+
+Matrix LinearModel::basis() const {
+  return expand(Matrix::Identity(K0.rows(), K0.rows()));
+}
+
+}  // namespace multibody

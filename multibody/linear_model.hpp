@@ -1,0 +1,59 @@
+// The linear model of the chain about the undeformed n-gon (the paper's section 4):
+// the constraint null-space basis D and the reduced matrices K0, M0.
+//
+// ## Problem
+// Linearized about the undeformed n-gon q0 (no preload, so neither the constraint
+// forces nor the quadratic-velocity terms contribute), with a basis D of the null space
+// of the constraint Jacobian J = Chain::constraint_jacobian(q0) (delta q = D x):
+//   \f$ K_0 x = \omega^2 M_0 x,\quad K_0 = D^T K D,\quad M_0 = D^T M(q_0) D \f$
+// (the paper's equations 24-26). Unknowns r = dofs - constraints: n - 2 (pin),
+// n - 3 (pin + roller), n (free ring).
+//
+// ## Dependent coordinates (MultibodyOptions::dependent)
+// - `paper`: the last two angles are dependent, D = [I; -J_2^{-1} J_1] (equation 17),
+//   J_2 = the 2x2 block of the last two columns, det J_2 = l^2 sin(2 pi / n): its
+//   condition number grows like n. With a roller the third dependent angle is that of
+//   segment r-1 (r = roller hinge; segment n-3 if r-1 >= n-2), whose roller-row entry is
+//   the only one among the three dependent columns.
+// - `robust` (default): D = the last r columns of the orthogonal factor Q of a
+//   Householder QR of J^T (an orthonormal null-space basis, condition number 1 for any
+//   n and any configuration), applied implicitly (O(n^2) for Q^T A Q).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "multibody/chain.hpp"
+#include "ring/spec.hpp"
+
+namespace multibody {
+
+/// The linearized, constraint-reduced problem about the n-gon (for tests and studies).
+struct LinearModel {
+  Matrix K0;           ///< r x r, D^T K D
+  Matrix M0;           ///< r x r, D^T M(q0) D
+  double j2_condition = 0.0;  ///< 2-norm condition of the paper's block J_2 (the last two
+                              ///< angle columns of the closure Jacobian), for reporting
+  /// delta q = D x for the columns of x (r x k): O(n k). Chain coordinates of reduced vectors.
+  Matrix expand(const Matrix& x) const;
+  /// D itself, dofs x r (dense, O(n^2)).
+  Matrix basis() const;
+
+  // D is kept implicit: paper: rows `independent` = identity, rows `dependent` = X;
+  // robust: the last r columns of the Householder factor Q of J^T.
+  ring::MultibodyOptions::Dependent kind = ring::MultibodyOptions::Dependent::robust;
+  std::vector<int> independent, dependent;
+  Matrix X;                           ///< paper: -J_P^{-1} J_I, c x r
+  Eigen::HouseholderQR<Matrix> qr;    ///< robust: QR of J^T
+};
+
+/// Assembles K0 and M0 (and the implicit D) for `chain` with the given dependent-coordinate
+/// choice. Cost O(n^2 c) time, O(n^2) memory (c = constraints, 2 or 3).
+/// Throws ring::NumericalError if the paper's block J_2 is singular.
+LinearModel linearize(const Chain& chain, ring::MultibodyOptions::Dependent dependent);
+
+/// 2-norm condition number of the paper's block J_2 (the last two angle columns of the
+/// closure rows of J, c x dofs). O(1).
+double j2_condition(const Matrix& J, int n);
+
+}  // namespace multibody
