@@ -148,6 +148,35 @@ TEST(FemBeamStatics, ReferenceMatchesTheElastica) {
   }
 }
 
+// Oracle: the same elastica, now for fixed discretizations: the error of the shortening
+// of AC at P R^2/EI = 2 (rotations ~0.5 rad) falls like h^(2(p-1)), the order of the
+// linear model's frequencies (fem_reference/README.md). Measured relative errors on
+// 16, 32, 64, 128 elements: p = 2: 2.2e-1, 3.6e-2, 8.4e-3, 2.1e-3 (orders 2.61, 2.08,
+// 2.00); p = 3: 7.1e-3, 6.1e-5, 1.8e-6, 1.0e-7 (6.9, 5.1, 4.1: the coarse meshes are
+// pre-asymptotic); p = 4: 2.0e-5, 7.8e-8, 9.4e-10, 1.4e-11 (8.0, 6.4, 6.1). The order is
+// fitted on the last pair, 64 -> 128, within 0.25 of 2(p-1) (the largest pre-asymptotic
+// excess left there, 0.11 at p = 3, with a factor 2).
+TEST(FemBeamStatics, ConvergesToTheElasticaAtTheExpectedOrderInElements) {
+  const ring::RingSpec spec = held_ring();
+  const double p = 2.0;
+  const double P = p * spec.EI() / (spec.radius * spec.radius);
+  const auto exact = elastica::diametral(p);
+  for (int degree : {2, 3, 4}) {
+    std::vector<double> err;
+    for (int elements : {64, 128}) {
+      ring::FemOptions o;
+      o.extensible = false;
+      o.degree = degree;
+      o.elements = elements;
+      const auto r = fem::solve_static(spec, o, squeeze(P));
+      err.push_back(std::abs(-r.displacements[0].ux / spec.radius - exact.along) / exact.along);
+    }
+    const double order = std::log(err[0] / err[1]) / std::log(2.0);
+    RecordProperty("order_p" + std::to_string(degree), std::to_string(order));
+    EXPECT_NEAR(order, 2.0 * (degree - 1), 0.25) << "p = " << degree << ": errors " << err[0] << ", " << err[1];
+  }
+}
+
 /// The paper's section 5 load: 20 kN at C toward A, from rest, recorded at C and 90 deg.
 ring::ResponseOptions forced(double force, double dt, double t_end) {
   ring::ResponseOptions r;
