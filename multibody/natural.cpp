@@ -155,4 +155,18 @@ Eigen::VectorXi banded_order(const Natural& c) {
   return perm;
 }
 
+BandedKkt::BandedKkt(const Natural& c) : P_(banded_order(c)) {}
+
+bool BandedKkt::factor(const Eigen::SparseMatrix<double>& A) {
+  const Eigen::SparseMatrix<double> Ab = P_ * A * P_.transpose();
+  if (!analyzed_) {
+    lu_.analyzePattern(Ab);
+    analyzed_ = true;
+  }
+  lu_.factorize(Ab);
+  return lu_.info() == Eigen::Success;
+}
+
+Vec BandedKkt::solve(const Vec& rhs) { return P_.transpose() * Vec(lu_.solve(P_ * rhs)); }
+
 }  // namespace multibody::natural

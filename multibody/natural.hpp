@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <Eigen/SparseLU>
 
 #include <vector>
 
@@ -71,6 +72,26 @@ void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight
 /// band and the border's rows and columns: O(n) memory and time, whatever the pivots.
 /// perm[old] = new. Needs n >= 4.
 Eigen::VectorXi banded_order(const Natural& c);
+
+/// The chain's KKT matrix (unknowns as in banded_order's comment) factored by a sparse
+/// LU in banded_order: O(n) fill and time per factorization whatever the pivots. The
+/// symbolic analysis is done at the first factorization and kept (the pattern is fixed).
+/// (A fill-reducing ordering such as COLAMD ignores the pivoting that a weak diagonal
+/// forces, as the statics' KKT matrix has: its fill then grew far beyond O(n), minutes
+/// per factorization at n = 10^4.)
+class BandedKkt {
+ public:
+  explicit BandedKkt(const Natural& c);
+  /// False if the factorization fails (a singular matrix).
+  bool factor(const Eigen::SparseMatrix<double>& A);
+  /// A^-1 rhs with the last factorization.
+  Vec solve(const Vec& rhs);
+
+ private:
+  Eigen::PermutationMatrix<Eigen::Dynamic> P_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu_;
+  bool analyzed_ = false;
+};
 
 /// Nonlinear statics of `chain` in hinge positions (statics_natural.cpp): load stepping
 /// with full Newton, one sparse LU per iteration, O(n); no arc-length continuation (a

@@ -1,6 +1,5 @@
 // Nonlinear statics on the O(n) path: the chain in hinge positions (natural.hpp), load
 // stepping with full Newton on the equilibrium ∇V(x) + G(x)^T lambda = s F, c(x) = 0.
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <sstream>
@@ -30,17 +29,8 @@ double turns_a_link_by(const Natural& c, const Vec& dx) {
   return worst;
 }
 
-/// The KKT factorization in banded_order (a fill-reducing ordering such as COLAMD
-/// ignores the pivoting that the weak diagonal of the statics' KKT matrix forces, and its
-/// fill then grows far beyond O(n): minutes at n = 10^4).
-struct BandedLU {
-  Eigen::PermutationMatrix<Eigen::Dynamic> P;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu;
-  bool analyzed = false;
-};
-
 /// Newton at load factor s from (x, lambda); both updated. Iterations, or -1 on failure.
-int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedLU& f) {
+int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
   const int N = 2 * c.n, S = c.size();
   const double kappa = c.K / (c.l * c.l);  // the springs' stiffness scale: balances the KKT matrix
   Triplets t;
@@ -69,14 +59,8 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedLU& f) {
     rhs << -rx, -kappa * constraints(c, x);
     Eigen::SparseMatrix<double> A(S, S);
     A.setFromTriplets(t.begin(), t.end());
-    const Eigen::SparseMatrix<double> Ab = f.P * A * f.P.transpose();
-    if (!f.analyzed) {
-      f.lu.analyzePattern(Ab);
-      f.analyzed = true;
-    }
-    f.lu.factorize(Ab);
-    if (f.lu.info() != Eigen::Success) return -1;
-    const Vec dz = f.P.transpose() * Vec(f.lu.solve(f.P * rhs));
+    if (!kkt.factor(A)) return -1;
+    const Vec dz = kkt.solve(rhs);
     if (!dz.allFinite()) return -1;
     const double step = dz.head(N).cwiseAbs().maxCoeff();
     if (turns_a_link_by(c, dz.head(N)) > 0.5) return -1;  // left the basin (as the dense path's 0.5 rad)
@@ -101,8 +85,7 @@ ring::StaticResult solve_static(const Chain& chain, const ring::RingSpec& spec, 
   const int gap = detail::contact_gap(chain, spec.section.depth());
   const double depth = spec.section.depth();
   Vec x = rest(chain), lambda = Vec::Zero(c.rows());
-  BandedLU lu;
-  lu.P = Eigen::PermutationMatrix<Eigen::Dynamic>(banded_order(c));
+  BandedKkt kkt(c);
   ring::StaticResult res;
   res.solver = "multibody";
   res.unknowns = c.size();
@@ -111,7 +94,7 @@ ring::StaticResult solve_static(const Chain& chain, const ring::RingSpec& spec, 
   while (s < 1.0 - 1e-14) {
     const double s1 = std::min(1.0, s + ds);
     Vec x1 = x, l1 = lambda;
-    const int it = newton(c, s1, x1, l1, lu);
+    const int it = newton(c, s1, x1, l1, kkt);
     if (it < 0) {
       ds *= 0.5;
       if (ds < kSmallestIncrement * ds0) {
