@@ -1,6 +1,7 @@
 // The chain in natural coordinates (natural.hpp).
 #include "multibody/natural.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace multibody::natural {
@@ -133,6 +134,13 @@ void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight
       t.emplace_back(2 * j + a, 2 * i + a, -w);
     }
   }
+}
+
+double turns_a_link_by(const Natural& c, const Vec& dx) {
+  double worst = 0.0;
+  for (int k = 0; k < c.n; ++k)
+    worst = std::max(worst, (hinge(dx, (k + 1) % c.n) - hinge(dx, k)).norm() / c.l);
+  return worst;
 }
 
 Eigen::VectorXi banded_order(const Natural& c) {

@@ -64,6 +64,13 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
 /// Adds sum_i lambda_i Hess c_i (the links' constant Hessians), times `weight`.
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t);
 
+/// The largest change of a link's direction that the position correction dx makes,
+/// |dx_{k+1} - dx_k| / l (rad, to first order). Newton corrections above
+/// kBasinTurn have left the basin of attraction (the angle paths' bound of 0.5 rad
+/// on segment angles; a bound on |dx| itself would shrink with l = 2 pi R / n). O(n).
+double turns_a_link_by(const Natural& c, const Vec& dx);
+constexpr double kBasinTurn = 0.5;
+
 /// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
 /// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
 /// border: hinges 2 .. n-2 and their links in chain order, then hinges n-1, 0, 1 (the

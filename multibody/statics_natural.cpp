@@ -20,15 +20,6 @@ constexpr double kFloor = 1e-9;
 /// Smallest load increment tried, relative to one load step.
 constexpr double kSmallestIncrement = 1e-6;
 
-/// The largest change of a link's direction that the position correction dx makes,
-/// |dx_{k+1} - dx_k| / l (rad, to first order). O(n).
-double turns_a_link_by(const Natural& c, const Vec& dx) {
-  double worst = 0.0;
-  for (int k = 0; k < c.n; ++k)
-    worst = std::max(worst, (hinge(dx, (k + 1) % c.n) - hinge(dx, k)).norm() / c.l);
-  return worst;
-}
-
 /// Newton at load factor s from (x, lambda); both updated. Iterations, or -1 on failure.
 int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
   const int N = 2 * c.n, S = c.size();
@@ -63,7 +54,7 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
     const Vec dz = kkt.solve(rhs);
     if (!dz.allFinite()) return -1;
     const double step = dz.head(N).cwiseAbs().maxCoeff();
-    if (turns_a_link_by(c, dz.head(N)) > 0.5) return -1;  // left the basin (as the dense path's 0.5 rad)
+    if (turns_a_link_by(c, dz.head(N)) > kBasinTurn) return -1;  // left the basin
     x += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
     // Converged below the tolerance, or at the round-off floor of the solve (it grows
