@@ -2,11 +2,14 @@
 // format for RecordProperty.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
 
 #include "ring/analysis.hpp"
+#include "ring/results.hpp"
 #include "ring/spec.hpp"
 #include "support/paper.hpp"
 
@@ -38,6 +41,24 @@ inline ring::ResponseOptions forced_scene(ring::ResponseOptions::Integrator inte
   r.rho_inf = 0.8;
   r.record = {0.0, 90.0, 180.0, 270.0};
   return r;
+}
+
+/// The worst |T + V - W|, the largest |work|, the largest constraint residual and the
+/// mean Newton iterations per step of a history.
+struct Balance {
+  double worst = 0.0, work = 0.0, constraint = 0.0, iterations = 0.0;
+};
+
+inline Balance balance(const ring::TimeHistory& h) {
+  Balance b;
+  for (std::size_t k = 0; k < h.t.size(); ++k) {
+    b.worst = std::max(b.worst, std::abs(h.energy_error[k]));
+    b.work = std::max(b.work, std::abs(h.work[k]));
+    b.constraint = std::max(b.constraint, h.constraint_residual[k]);
+    b.iterations += h.newton_iterations[k];
+  }
+  b.iterations /= static_cast<double>(h.t.size() - 1);
+  return b;
 }
 
 }  // namespace mbtest

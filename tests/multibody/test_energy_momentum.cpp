@@ -14,21 +14,8 @@ namespace {
 
 using Integrator = ring::ResponseOptions::Integrator;
 
-struct Balance {
-  double worst = 0.0, work = 0.0, constraint = 0.0, iterations = 0.0;
-};
-
-Balance balance(const ring::TimeHistory& h) {
-  Balance b;
-  for (std::size_t k = 0; k < h.t.size(); ++k) {
-    b.worst = std::max(b.worst, std::abs(h.energy_error[k]));
-    b.work = std::max(b.work, std::abs(h.work[k]));
-    b.constraint = std::max(b.constraint, h.constraint_residual[k]);
-    b.iterations += h.newton_iterations[k];
-  }
-  b.iterations /= static_cast<double>(h.t.size() - 1);
-  return b;
-}
+using mbtest::Balance;
+using mbtest::balance;
 
 // The undamped balance T + V - W is conserved by construction for any dt; what is left
 // is the Newton tolerance (1e-12 R on the positions) and round-off: within 1e-9 of the
