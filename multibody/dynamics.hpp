@@ -26,7 +26,12 @@
 //    form with multipliers, as Arnold & Bruls (2007, Multibody Syst. Dyn. 18:185):
 //    equilibrium and constraints at t_{n+1}, a pseudo-acceleration a with
 //    (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) phi''_{n+1} + alpha_f phi''_n,
-//    and consistent initial accelerations (the index-1 problem at t = 0).
+//    consistent initial accelerations phi''_0 (the index-1 problem at t = 0), and a_0
+//    from the first step's Newton matrix S: S a_0 = c (M phi''_0) with the constraints,
+//    c = (1 - alpha_m) / ((1 - alpha_f) beta h^2); per mode a_0 = c phi''_0 / (c + w^2).
+//    (a_0 = phi''_0, the usual start, makes the scheme overshoot in velocity in every
+//    mode with w h >> 1: under a point step load on a fine chain it gained energy from
+//    the first step and the run failed from n ~ 640; multibody/README.md.)
 // Both solve, per Newton iteration, the saddle-point system [T G^T; G 0] with T the
 // analytic tangent of dynamics_model.hpp; rows of g and columns of lambda are scaled by
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
