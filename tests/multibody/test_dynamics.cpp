@@ -287,17 +287,7 @@ TEST_P(MultibodyDynamicsTimeStep, ResolvedChainConvergesAtSecondOrder) {
     const std::vector<double> d = successive_differences(GetParam(), 1.0, dts, history, 12);
     const std::string tag = ring::to_string(history.kind);
     for (size_t k = 0; k < d.size(); ++k) RecordProperty(tag + "_diff_" + std::to_string(k), sci(d[k]));
-    // Least-squares slope of log d_k against log dt_k.
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    const double m = static_cast<double>(d.size());
-    for (size_t k = 0; k < d.size(); ++k) {
-      const double x = std::log(dts[k]), y = std::log(d[k]);
-      sx += x;
-      sy += y;
-      sxx += x * x;
-      sxy += x * y;
-    }
-    const double order = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    const double order = mbtest::loglog_slope({dts.begin(), dts.begin() + d.size()}, d);
     RecordProperty(tag + "_fitted_order", sci(order));
     EXPECT_NEAR(order, 2.0, 0.1) << tag;
   }
