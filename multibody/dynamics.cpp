@@ -162,9 +162,10 @@ void add_constraint_curvature(const detail::Kinematic& k, const Vector& lambda, 
 ///   [T G^T; G 0] [dq; dl] = [-r; -g],
 /// rows of g and columns of lambda multiplied by s = max|T_jj| / l so that both blocks
 /// have the size of T (Bottasso, Bauchau & Cardona 2007). It is kept across iterations
-/// and steps while the iteration still contracts fast (modified Newton): the integrator
-/// refreshes it at a new step size, when an iteration shrinks the correction by less
-/// than 8, and before giving up on a step. Local to one run of respond().
+/// and steps (modified Newton): the integrator refreshes it at a new step size, after
+/// the first iteration of a step that began with it, when an iteration shrinks the
+/// correction by less than 8, and before giving up on a step (RefreshPolicy). Local to
+/// one run of respond().
 class NewtonMatrix {
  public:
   bool usable(double h) const { return valid_ && h == h_; }
@@ -172,6 +173,8 @@ class NewtonMatrix {
   /// O((n+c)^3) dense, O(n) sparse. False if the sparse factorization fails.
   bool factor(const Tangent& Tn, const Matrix& G, double l, double h) {
     sparse_ = Tn.sparse;
+    dependent_Y.resize(0, 0);
+    dependent_Y_partition.clear();
     if (sparse_) {
       sc_ = Tn.structured.diagonal().cwiseAbs().maxCoeff() / l;
       h_ = h;
@@ -210,6 +213,11 @@ class NewtonMatrix {
     return true;
   }
 
+  /// Newmark's Y = A^{-1} D^T U of add_dependent_rate_terms for this factorization and
+  /// the partition it was computed for (empty after factor()): kept with the matrix.
+  Matrix dependent_Y;
+  std::vector<int> dependent_Y_partition;
+
  private:
   Eigen::PartialPivLU<Matrix> lu_;
   detail::SparseSaddle slu_;
@@ -217,6 +225,40 @@ class NewtonMatrix {
   double sc_ = 1.0, h_ = 0.0;
   bool valid_ = false;
 };
+
+/// Starting value of generalized-alpha's pseudo-acceleration a_0 (the acceleration-like
+/// sequence of Arnold & Bruls 2007; the true acceleration qdd_0 stays consistent):
+///   [S G^T; G 0] [a_0; mu] = c [f Phi - xi - C v - K theta; -Gdot v],
+/// S = c M + c' (C + dxi/dv) + tangent stiffness (springs, load, constraint curvature
+/// with the consistent multipliers): the integrator's Newton matrix at t_0 for the step h
+/// without the term d(M qdd)/dq,
+/// c = (1 - alpha_m) / ((1 - alpha_f) beta h^2), c' = gamma / (beta h). In a linear mode
+/// of frequency w this is a_0 = c qdd_0 / (c + w^2): qdd_0 (1 + O(w^2 h^2)) where the
+/// step resolves the mode, so the accuracy of the consistent start is kept (second order
+/// in q and v: tests/multibody/test_dynamics.cpp), and -> 0 where w h >> 1. Why not
+/// a_0 = qdd_0: a mode with w h >> 1 started there leaves the first steps with the
+/// velocity ~ h (1 - gamma) qdd_0 instead of ~ qdd_0 / w (the method's velocity
+/// overshoot); a point step load gives every mode the acceleration F_k / m_k, the chain's
+/// w_max grows like n^2, and the spurious velocity of the loaded hinge spins its segments
+/// once h^2 |qdd_0| exceeds their length: +1.6 J at n = 640, +30 J at 1280, +1.3e3 J at
+/// 2560 of T + V - W after the first step of the 20 kN scene (multibody/README.md,
+/// "Energy growth is a failure"). With this start the balance stays <= 0. Cost: one
+/// factorization of the Newton matrix (O(n) sparse, O(n^3) dense).
+void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, State& s) {
+  const double c = (1.0 - co.alpha_m) / ((1.0 - co.alpha_f) * co.beta * h * h);
+  const double cv = co.gamma / (co.beta * h);
+  Vector r;
+  Tangent T;
+  residual_and_tangent(p, s.q, s.v, Vector::Zero(s.q.size()), p.history.factor(s.t), c, cv, r, &T);
+  const Kinematic k = detail::evaluate(p.chain, s.q, false, true);
+  add_constraint_curvature(k, s.lambda, T);
+  NewtonMatrix nm;
+  Vector a, mu;
+  if (!nm.factor(T, k.G, p.chain.l(), h) ||
+      !nm.solve(c * r, c * p.chain.constraint_jdot_qdot(s.q, s.v), a, mu))
+    throw std::runtime_error("multibody::respond: starting accelerations not computable");
+  s.a = a;
+}
 
 /// Decides, iteration by iteration, whether the kept Newton matrix is still good enough.
 struct RefreshPolicy {
@@ -231,6 +273,11 @@ struct RefreshPolicy {
       refresh = true;
       return false;
     }
+    // A matrix kept from an earlier step serves one iteration (a cheap first correction,
+    // 10-1000 times smaller than the predictor's error) and is then refreshed, so that
+    // the step finishes in Newton's quadratic range; one kept within the step is refreshed
+    // when it shrinks the correction by less than 8.
+    if (!fresh && previous == 0.0) refresh = true;
     if (!fresh && previous > 0.0 && norm > 0.125 * previous) refresh = true;
     previous = norm;
     return true;
@@ -333,14 +380,93 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
   return ch.constraints(q).cwiseAbs().maxCoeff() <= 1e3 * tol;
 }
 
+/// The terms d D/dz of the reduced Newton matrix that the saddle-point solve leaves out,
+/// added by the Woodbury identity. With dq = D dz the dependent rates change as
+///   dv_y   = cv (D dz)_y + Dv dz,  Dv = -G_y^{-1} H diag(v) D,
+///   dqdd_y = cm (D dz)_y + Da dz,  Da = -G_y^{-1} [(H diag(qdd) - G diag(v^2) + 2 cv H diag(v)) D
+///                                                + 2 (H diag(v))_y Dv],
+/// (from G v = 0 and G qdd + H v^2 = 0, H the constraint Hessian diagonals, whose own
+/// derivative is -G: the constraints are sinusoids of single angles), so the exact
+/// Jacobian is A + D^T U W with A = D^T T D (what the saddle-point system solves),
+/// U = [dr/dv, dr/dqdd] at the dependent columns (n x 2c) and W = [Dv; Da] (2c x nz).
+/// Given dz = A^{-1} (-D^T r), replaces it by (A + D^T U W)^{-1} (-D^T r) =
+/// dz - Y (I + W Y)^{-1} W dz, Y = A^{-1} D^T U (2c more solves with the kept matrix).
+/// These terms grow with v and qdd, which under a point step load on a fine chain are
+/// large near the load (the trapezoidal rule keeps the start's local accelerations,
+/// +-qdd_0 in the modes it does not resolve). Mean Newton iterations per step on the
+/// 20 kN scene (dt = 0.01 s, 2 s) without / with them: 4.2 / 3.6 (n = 40), 6.0 / 5.3
+/// (640), 19.0 / 15.5 (2560); always refreshing the matrix: 4.0 / 3.25 (40), 5.8 / 4.0
+/// (640). O(n) sparse, O(n^2) dense per call (2c solves when Y is refreshed). False on
+/// a non-finite result.
+bool add_dependent_rate_terms(const Problem& p, const Chain& ch, const std::vector<int>& dep,
+                              const std::vector<int>& ind, const Vector& q, const Vector& v,
+                              const Vector& qdd, const Matrix& G, const Matrix& Gy, const Matrix& Gz,
+                              double cv, const NewtonMatrix& nm, bool refresh_Y, Matrix& Y, Vector& dz) {
+  const int n = static_cast<int>(q.size()), c = static_cast<int>(dep.size()), nz = n - c;
+  const Matrix H = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
+  const Eigen::PartialPivLU<Matrix> gy(Gy);
+  // B D for a c x n matrix B: B_z - B_y G_y^{-1} G_z.
+  const Matrix GyiGz = gy.solve(Gz);
+  auto times_D = [&](const Matrix& B) {
+    Matrix Bz(c, nz), By(c, c);
+    for (int i = 0; i < nz; ++i) Bz.col(i) = B.col(ind[i]);
+    for (int i = 0; i < c; ++i) By.col(i) = B.col(dep[i]);
+    return Matrix(Bz - By * GyiGz);
+  };
+  const Matrix Hv = H * v.asDiagonal();
+  Matrix Hvy(c, c);
+  for (int i = 0; i < c; ++i) Hvy.col(i) = Hv.col(dep[i]);
+  const Matrix Dv = -gy.solve(times_D(Hv));
+  const Vector v2 = v.cwiseProduct(v);
+  const Matrix Ba = H * qdd.asDiagonal() - G * v2.asDiagonal() + 2.0 * cv * Hv;
+  const Matrix Da = -gy.solve(times_D(Ba) + 2.0 * Hvy * Dv);
+  Matrix W(2 * c, nz);
+  W.topRows(c) = Dv;
+  W.bottomRows(c) = Da;
+  const Matrix I = Matrix::Identity(2 * c, 2 * c);
+  if (!refresh_Y && Y.rows() == nz && Y.cols() == 2 * c) {
+    dz -= Y * (I + W * Y).partialPivLu().solve(W * dz);
+    return dz.allFinite();
+  }
+  // Columns of dr/dv = 2 S diag(v) + C and dr/dqdd = M at the dependent angles:
+  // M_ij = C0_ij cos(phi_i - phi_j), S_ij = C0_ij sin(phi_i - phi_j) (i != j), C0 from
+  // the mass matrix at phi = 0 (dynamics_model.hpp).
+  const Vector zero = Vector::Zero(n);
+  const Eigen::ArrayXd cq = q.array().cos(), sq = q.array().sin();
+  Matrix U(n, 2 * c);
+  for (int i = 0; i < c; ++i) {
+    const int j = dep[i];
+    Vector e = Vector::Zero(n);
+    e[j] = 1.0;
+    Vector c0 = ch.mass_times(zero, e);
+    const double mjj = c0[j];
+    c0[j] = 0.0;
+    const Eigen::ArrayXd cosd = cq * cq[j] + sq * sq[j], sind = sq * cq[j] - cq * sq[j];
+    Vector tv = 2.0 * v[j] * (c0.array() * sind).matrix();
+    if (p.damped) tv += p.damping_times(e);
+    Vector m = (c0.array() * cosd).matrix();
+    m[j] = mjj;
+    U.col(i) = tv;
+    U.col(c + i) = m;
+  }
+  Y.resize(nz, 2 * c);
+  Vector dq, dl;
+  for (int k = 0; k < 2 * c; ++k) {
+    if (!nm.solve(-U.col(k), Vector::Zero(c), dq, dl)) return false;
+    for (int i = 0; i < nz; ++i) Y(i, k) = dq[ind[i]];
+  }
+  dz -= Y * (I + W * Y).partialPivLu().solve(W * dz);
+  return dz.allFinite();
+}
+
 /// One Newmark step in the paper's reduced form (its eqs. 18-20, coordinate
 /// partitioning): the c dependent angles are the best-conditioned columns of G(q_n)
 /// (column-pivoted QR), the Newmark formulas act on the n - c independent angles z, and
 /// the dependent ones follow from g(q) = 0 at every iteration, their velocities and
 /// accelerations from G v = 0 and G qdd + Gdot v = 0. The equations are D^T r = 0 with
 /// D = [I; -G_y^{-1} G_z]; the Newton matrix is D^T T D with T the full tangent of
-/// step_index3 and lambda = -G_y^{-T} r_y (the terms d D/dz, of order v and h, are left
-/// out, so the convergence is fast-linear rather than quadratic). Constraints hold to
+/// step_index3 and lambda = -G_y^{-T} r_y, plus the terms d D/dz of the dependent rates
+/// (add_dependent_rate_terms), so the convergence is quadratic. Constraints hold to
 /// round-off at the positions, velocities and accelerations; no multiplier oscillates,
 /// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
 /// is not: Cardona & Geradin 1989). O(n^3) per iteration.
@@ -420,7 +546,14 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     }
     r += k.G.transpose() * lambda;
     if (!nm.solve(r, Vector::Zero(c), dqv, dl)) return out;
-    const Vector dz = take(dqv, ind);
+    Vector dz = take(dqv, ind);
+    // The terms d D/dz (Y is refreshed with the matrix and at a new partition).
+    const bool new_Y = nm.dependent_Y_partition != dep;
+    if (!add_dependent_rate_terms(p, ch, dep, ind, q, v, qdd, k.G, Gy, Gz, dv_dq, nm, new_Y, nm.dependent_Y, dz))
+      return out;
+    if (new_Y) nm.dependent_Y_partition = dep;
+    const Vector dy = -Gy.partialPivLu().solve(Gz * dz);
+    for (int i = 0; i < c; ++i) dqv[dep[i]] = dy[i];
     const double norm = dz.cwiseAbs().maxCoeff();
     if (!policy.accept(norm, 0.5)) {  // more than 0.5 rad: left the basin
       if (policy.refresh) continue;
@@ -528,6 +661,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   s.q = chain.q0();
   s.v = Vector::Zero(n);
   initial_acceleration(p, s);
+  if (!partitioned) starting_pseudo_acceleration(p, co, response.dt, s);
   const Eigen::Vector2d F = p.load.force;
   double work = 0.0, dissipated = 0.0, max_work = 0.0;
   Eigen::Vector2d x_load = chain.hinge_position(s.q, p.load.hinge);
@@ -629,7 +763,8 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
     s.t = t_target;
     record(s, iterations, k);
     // An undamped run that gains energy has failed, whatever the integrator: its history
-    // is not a result (generalized-alpha does on fine chains under a point step load).
+    // is not a result (generalized-alpha did on fine chains under a point step load when
+    // it started from a_0 = qdd_0; see starting_pseudo_acceleration).
     max_work = std::max(max_work, std::abs(work));
     if (!p.damped && max_work > 0 && th.energy_error.back() > kEnergyGrowth * max_work)
       fail(IntegrationFailure::Reason::energy_growth,

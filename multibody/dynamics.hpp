@@ -26,14 +26,20 @@
 //    form with multipliers, as Arnold & Bruls (2007, Multibody Syst. Dyn. 18:185):
 //    equilibrium and constraints at t_{n+1}, a pseudo-acceleration a with
 //    (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) phi''_{n+1} + alpha_f phi''_n,
-//    and consistent initial accelerations (the index-1 problem at t = 0).
+//    consistent initial accelerations phi''_0 (the index-1 problem at t = 0), and a_0
+//    from the first step's Newton matrix S: S a_0 = c (M phi''_0) with the constraints,
+//    c = (1 - alpha_m) / ((1 - alpha_f) beta h^2); per mode a_0 = c phi''_0 / (c + w^2).
+//    (a_0 = phi''_0, the usual start, makes the scheme overshoot in velocity in every
+//    mode with w h >> 1: under a point step load on a fine chain it gained energy from
+//    the first step and the run failed from n ~ 640; multibody/README.md.)
 // Both solve, per Newton iteration, the saddle-point system [T G^T; G 0] with T the
 // analytic tangent of dynamics_model.hpp; rows of g and columns of lambda are scaled by
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
-// as h -> 0. (For newmark the multipliers follow from the dependent rows and the
-// terms d D / dz are left out of T, so its convergence is fast-linear.) The factorized
-// matrix is kept across iterations and steps while each iteration shrinks the
-// correction at least 8-fold (modified Newton), and refreshed otherwise.
+// as h -> 0. (For newmark the multipliers follow from the dependent rows, and the terms
+// d D / dz that the saddle-point system leaves out, rank 2c, are added by the Woodbury
+// identity: the Jacobian is exact.) A factorized matrix kept from the previous step
+// serves the first iteration of a step and is then refreshed; within a step it is kept
+// while each iteration shrinks the correction at least 8-fold (modified Newton).
 // Predictor: constant velocity. Convergence: correction <= tol_q (rad) and, for the
 // index-3 form, |g| <= 1e-12 R. A step whose Newton iteration fails (max_newton
 // iterations, a correction > 0.5 rad, a non-finite value) is retried once with a fresh
@@ -100,9 +106,11 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// Cost per step: dense path O(n^2) per Newton iteration (3 to 7) plus an O(n^3)
 /// factorization whenever the kept Newton matrix is refreshed (measured: 44 us per step
 /// at n = 40 with generalized-alpha, 36 ms at n = 640); sparse path O(n) per iteration
-/// (see bench/multibody/bench_dynamics.cpp for both). The number of Newton iterations
-/// per step grows with n under the paper's point step load (about 5 at n = 40, 7 at
-/// 2560, 20-50 at 10^4 in the first steps, with step halving).
+/// (see bench/multibody/bench_dynamics.cpp for both). Mean Newton iterations per step,
+/// 20 kN scene, dt = 0.01 s, first 2 s: generalized-alpha 3.5 (n = 40), 3.35 (640,
+/// 2560, 10^4); newmark 3.6 (40), 5.3 (640), 15.5 (2560, with step halving) and 45 at
+/// 10^4 (first 0.5 s): the trapezoidal rule keeps the start's huge local accelerations
+/// of the unresolved modes, which shrink Newton's basin (multibody/README.md).
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
 /// IntegrationFailure (a ring::NumericalError) when the integration cannot continue.

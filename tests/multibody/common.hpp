@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
@@ -20,6 +21,20 @@ inline std::string sci(double x) {
   std::ostringstream s;
   s << std::setprecision(4) << std::scientific << x;
   return s.str();
+}
+
+/// Least-squares slope of log y against log x (a fitted convergence order).
+inline double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double m = static_cast<double>(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+  }
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
 /// The paper's ring pinned at A (180 deg) with the roller at C (0 deg), as in section 5.

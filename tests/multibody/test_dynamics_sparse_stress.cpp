@@ -35,12 +35,11 @@ ring::MultibodyOptions opts(int n, Method m) {
 // n = 10^4 (the size): 20 steps of the 20 kN scene (the start, the hardest part:
 // the step load's local response needs step halving) on both integrators. Oracles:
 // constraint residual < 1e-10 m at every step (the bound), finite energies, and
-// for newmark the energy balance (trapezoidal rule: T + V never exceeds the work of the
-// load by more than 1 % of it; measured 0). Generalized-alpha's index-3 form gains
-// energy on fine chains under this point step load, on the dense path too (T + V - W
-// after 0.5 s, dense = sparse: 1.9e3 J at n = 640, 1.6e4 J at n = 1280 against ~3e4 J
-// of work; 2.2e5 J at n = 5000): such a run is a failure (energy_growth, exit 3), never a
-// result, and its partial history is checked like a finished one.
+// the energy balance: T + V never exceeds the work of the load by more than 1 % of it
+// (newmark: trapezoidal rule, measured 0; generalized-alpha only dissipates since its
+// pseudo-acceleration starts from the Newton matrix, measured 0: T + V - W < 0 after
+// t = 0; with the consistent start it gained energy here and stopped, energy_growth).
+// A run that fails anyway (IntegrationFailure) has its partial history checked too.
 multibody::IntegrationFailure::Reason run_or_partial(const ring::MultibodyOptions& o, const ring::ResponseOptions& r,
                                                      ring::TimeHistory& th) {
   try {
@@ -56,13 +55,8 @@ TEST(MultibodySparseDynamicsStress, TenThousandSegments) {
   for (Integrator integ : {Integrator::generalized_alpha, Integrator::newmark}) {
     ring::TimeHistory th;
     const auto reason = run_or_partial(opts(10000, Method::sparse), paper_scene(integ, 0.2), th);
-    if (integ == Integrator::generalized_alpha) {
-      EXPECT_EQ(reason, multibody::IntegrationFailure::Reason::energy_growth);
-      ASSERT_GE(th.t.size(), 2u);
-      EXPECT_GT(th.energy_error.back(), 0.01 * th.work.back());
-    } else {
-      ASSERT_EQ(th.t.size(), 21u);
-    }
+    EXPECT_EQ(static_cast<int>(reason), -1) << "the run stopped with an IntegrationFailure";
+    ASSERT_EQ(th.t.size(), 21u);
     double worst_g = 0.0, excess = -1e300, max_w = 0.0;
     int iterations = 0;
     for (size_t i = 0; i < th.t.size(); ++i) {
@@ -77,17 +71,15 @@ TEST(MultibodySparseDynamicsStress, TenThousandSegments) {
     RecordProperty(tag + "max_energy_excess_J", sci(excess));
     RecordProperty(tag + "newton_iterations", iterations);
     EXPECT_LT(worst_g, 1e-10);
-    if (integ == Integrator::newmark) {
-      EXPECT_LE(excess, 0.01 * max_w);
-    }
+    EXPECT_LE(excess, 0.01 * max_w);
     EXPECT_GT(max_w, 0.0);
   }
 }
 
 // Sparse against dense at n = 1280 for 10 steps (dense: O(n^3), ~0.5 s per step).
 // Tolerance: one Newton tolerance, 1e-8 of the peak displacement (see
-// test_dynamics_sparse.cpp). Generalized-alpha gains energy here and fails
-// (energy_growth): both paths must fail alike, at the same step with the same history.
+// test_dynamics_sparse.cpp). Both paths must end alike (both finish, or both fail at the
+// same step with the same history).
 TEST(MultibodySparseDynamicsStress, SparseEqualsDenseAt1280) {
   for (Integrator integ : {Integrator::generalized_alpha, Integrator::newmark}) {
     const ring::ResponseOptions r = paper_scene(integ, 0.1);

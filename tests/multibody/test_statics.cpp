@@ -60,16 +60,7 @@ Diametral chain_diametral(double p, int n, int steps = 20,
 
 /// Least-squares slope of log(err) against log(n), negated (the observed order in 1/n).
 double fitted_order(const std::vector<int>& n, const std::vector<double>& err) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = n.size();
-  for (size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(n[i]), y = std::log(err[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
+  return -mbtest::loglog_slope({n.begin(), n.end()}, err);
 }
 
 class MultibodyStaticsElastica : public ::testing::TestWithParam<double> {};
