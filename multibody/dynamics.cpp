@@ -173,8 +173,6 @@ class NewtonMatrix {
   /// O((n+c)^3) dense, O(n) sparse. False if the sparse factorization fails.
   bool factor(const Tangent& Tn, const Matrix& G, double l, double h) {
     sparse_ = Tn.sparse;
-    dependent_Y.resize(0, 0);
-    dependent_Y_partition.clear();
     if (sparse_) {
       sc_ = Tn.structured.diagonal().cwiseAbs().maxCoeff() / l;
       h_ = h;
@@ -212,11 +210,6 @@ class NewtonMatrix {
     dl = sc_ * x.tail(c);
     return true;
   }
-
-  /// Newmark's Y = A^{-1} D^T U of add_dependent_rate_terms for this factorization and
-  /// the partition it was computed for (empty after factor()): kept with the matrix.
-  Matrix dependent_Y;
-  std::vector<int> dependent_Y_partition;
 
  private:
   Eigen::PartialPivLU<Matrix> lu_;
@@ -380,93 +373,16 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
   return ch.constraints(q).cwiseAbs().maxCoeff() <= 1e3 * tol;
 }
 
-/// The terms d D/dz of the reduced Newton matrix that the saddle-point solve leaves out,
-/// added by the Woodbury identity. With dq = D dz the dependent rates change as
-///   dv_y   = cv (D dz)_y + Dv dz,  Dv = -G_y^{-1} H diag(v) D,
-///   dqdd_y = cm (D dz)_y + Da dz,  Da = -G_y^{-1} [(H diag(qdd) - G diag(v^2) + 2 cv H diag(v)) D
-///                                                + 2 (H diag(v))_y Dv],
-/// (from G v = 0 and G qdd + H v^2 = 0, H the constraint Hessian diagonals, whose own
-/// derivative is -G: the constraints are sinusoids of single angles), so the exact
-/// Jacobian is A + D^T U W with A = D^T T D (what the saddle-point system solves),
-/// U = [dr/dv, dr/dqdd] at the dependent columns (n x 2c) and W = [Dv; Da] (2c x nz).
-/// Given dz = A^{-1} (-D^T r), replaces it by (A + D^T U W)^{-1} (-D^T r) =
-/// dz - Y (I + W Y)^{-1} W dz, Y = A^{-1} D^T U (2c more solves with the kept matrix).
-/// These terms grow with v and qdd, which under a point step load on a fine chain are
-/// large near the load (the trapezoidal rule keeps the start's local accelerations,
-/// +-qdd_0 in the modes it does not resolve). Mean Newton iterations per step on the
-/// 20 kN scene (dt = 0.01 s, 2 s) without / with them: 4.2 / 3.6 (n = 40), 6.0 / 5.3
-/// (640), 19.0 / 15.5 (2560); always refreshing the matrix: 4.0 / 3.25 (40), 5.8 / 4.0
-/// (640). O(n) sparse, O(n^2) dense per call (2c solves when Y is refreshed). False on
-/// a non-finite result.
-bool add_dependent_rate_terms(const Problem& p, const Chain& ch, const std::vector<int>& dep,
-                              const std::vector<int>& ind, const Vector& q, const Vector& v,
-                              const Vector& qdd, const Matrix& G, const Matrix& Gy, const Matrix& Gz,
-                              double cv, const NewtonMatrix& nm, bool refresh_Y, Matrix& Y, Vector& dz) {
-  const int n = static_cast<int>(q.size()), c = static_cast<int>(dep.size()), nz = n - c;
-  const Matrix H = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
-  const Eigen::PartialPivLU<Matrix> gy(Gy);
-  // B D for a c x n matrix B: B_z - B_y G_y^{-1} G_z.
-  const Matrix GyiGz = gy.solve(Gz);
-  auto times_D = [&](const Matrix& B) {
-    Matrix Bz(c, nz), By(c, c);
-    for (int i = 0; i < nz; ++i) Bz.col(i) = B.col(ind[i]);
-    for (int i = 0; i < c; ++i) By.col(i) = B.col(dep[i]);
-    return Matrix(Bz - By * GyiGz);
-  };
-  const Matrix Hv = H * v.asDiagonal();
-  Matrix Hvy(c, c);
-  for (int i = 0; i < c; ++i) Hvy.col(i) = Hv.col(dep[i]);
-  const Matrix Dv = -gy.solve(times_D(Hv));
-  const Vector v2 = v.cwiseProduct(v);
-  const Matrix Ba = H * qdd.asDiagonal() - G * v2.asDiagonal() + 2.0 * cv * Hv;
-  const Matrix Da = -gy.solve(times_D(Ba) + 2.0 * Hvy * Dv);
-  Matrix W(2 * c, nz);
-  W.topRows(c) = Dv;
-  W.bottomRows(c) = Da;
-  const Matrix I = Matrix::Identity(2 * c, 2 * c);
-  if (!refresh_Y && Y.rows() == nz && Y.cols() == 2 * c) {
-    dz -= Y * (I + W * Y).partialPivLu().solve(W * dz);
-    return dz.allFinite();
-  }
-  // Columns of dr/dv = 2 S diag(v) + C and dr/dqdd = M at the dependent angles:
-  // M_ij = C0_ij cos(phi_i - phi_j), S_ij = C0_ij sin(phi_i - phi_j) (i != j), C0 from
-  // the mass matrix at phi = 0 (dynamics_model.hpp).
-  const Vector zero = Vector::Zero(n);
-  const Eigen::ArrayXd cq = q.array().cos(), sq = q.array().sin();
-  Matrix U(n, 2 * c);
-  for (int i = 0; i < c; ++i) {
-    const int j = dep[i];
-    Vector e = Vector::Zero(n);
-    e[j] = 1.0;
-    Vector c0 = ch.mass_times(zero, e);
-    const double mjj = c0[j];
-    c0[j] = 0.0;
-    const Eigen::ArrayXd cosd = cq * cq[j] + sq * sq[j], sind = sq * cq[j] - cq * sq[j];
-    Vector tv = 2.0 * v[j] * (c0.array() * sind).matrix();
-    if (p.damped) tv += p.damping_times(e);
-    Vector m = (c0.array() * cosd).matrix();
-    m[j] = mjj;
-    U.col(i) = tv;
-    U.col(c + i) = m;
-  }
-  Y.resize(nz, 2 * c);
-  Vector dq, dl;
-  for (int k = 0; k < 2 * c; ++k) {
-    if (!nm.solve(-U.col(k), Vector::Zero(c), dq, dl)) return false;
-    for (int i = 0; i < nz; ++i) Y(i, k) = dq[ind[i]];
-  }
-  dz -= Y * (I + W * Y).partialPivLu().solve(W * dz);
-  return dz.allFinite();
-}
-
 /// One Newmark step in the paper's reduced form (its eqs. 18-20, coordinate
 /// partitioning): the c dependent angles are the best-conditioned columns of G(q_n)
 /// (column-pivoted QR), the Newmark formulas act on the n - c independent angles z, and
 /// the dependent ones follow from g(q) = 0 at every iteration, their velocities and
 /// accelerations from G v = 0 and G qdd + Gdot v = 0. The equations are D^T r = 0 with
 /// D = [I; -G_y^{-1} G_z]; the Newton matrix is D^T T D with T the full tangent of
-/// step_index3 and lambda = -G_y^{-T} r_y, plus the terms d D/dz of the dependent rates
-/// (add_dependent_rate_terms), so the convergence is quadratic. Constraints hold to
+/// step_index3 and lambda = -G_y^{-T} r_y. The terms d D/dz of the dependent rates, of
+/// order v and h, are left out (convergence fast-linear): added exactly (rank 2c,
+/// Woodbury) they saved 17-25 % of the iterations but cost 30-40 % more wall time per
+/// run on both paths (multibody/README.md, "Newton iterations per step"). Constraints hold to
 /// round-off at the positions, velocities and accelerations; no multiplier oscillates,
 /// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
 /// is not: Cardona & Geradin 1989). O(n^3) per iteration.
@@ -546,14 +462,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     }
     r += k.G.transpose() * lambda;
     if (!nm.solve(r, Vector::Zero(c), dqv, dl)) return out;
-    Vector dz = take(dqv, ind);
-    // The terms d D/dz (Y is refreshed with the matrix and at a new partition).
-    const bool new_Y = nm.dependent_Y_partition != dep;
-    if (!add_dependent_rate_terms(p, ch, dep, ind, q, v, qdd, k.G, Gy, Gz, dv_dq, nm, new_Y, nm.dependent_Y, dz))
-      return out;
-    if (new_Y) nm.dependent_Y_partition = dep;
-    const Vector dy = -Gy.partialPivLu().solve(Gz * dz);
-    for (int i = 0; i < c; ++i) dqv[dep[i]] = dy[i];
+    const Vector dz = take(dqv, ind);
     const double norm = dz.cwiseAbs().maxCoeff();
     if (!policy.accept(norm, 0.5)) {  // more than 0.5 rad: left the basin
       if (policy.refresh) continue;

@@ -35,9 +35,9 @@
 // Both solve, per Newton iteration, the saddle-point system [T G^T; G 0] with T the
 // analytic tangent of dynamics_model.hpp; rows of g and columns of lambda are scaled by
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
-// as h -> 0. (For newmark the multipliers follow from the dependent rows, and the terms
-// d D / dz that the saddle-point system leaves out, rank 2c, are added by the Woodbury
-// identity: the Jacobian is exact.) A factorized matrix kept from the previous step
+// as h -> 0. (For newmark the multipliers follow from the dependent rows and the terms
+// d D / dz are left out of T, so its convergence is fast-linear: adding them exactly
+// saved iterations but cost more time than they saved.) A factorized matrix kept from the previous step
 // serves the first iteration of a step and is then refreshed; within a step it is kept
 // while each iteration shrinks the correction at least 8-fold (modified Newton).
 // Predictor: constant velocity. Convergence: correction <= tol_q (rad) and, for the
@@ -108,8 +108,8 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// at n = 40 with generalized-alpha, 36 ms at n = 640); sparse path O(n) per iteration
 /// (see bench/multibody/bench_dynamics.cpp for both). Mean Newton iterations per step,
 /// 20 kN scene, dt = 0.01 s, first 2 s: generalized-alpha 3.5 (n = 40), 3.35 (640,
-/// 2560, 10^4); newmark 3.6 (40), 5.3 (640), 15.5 (2560, with step halving) and 45 at
-/// 10^4 (first 0.5 s): the trapezoidal rule keeps the start's huge local accelerations
+/// 2560, 10^4); newmark 4.2 (40), 6.0 (640), 18.9 (2560, with step halving, first 1 s):
+/// the trapezoidal rule keeps the start's huge local accelerations
 /// of the unresolved modes, which shrink Newton's basin (multibody/README.md).
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
