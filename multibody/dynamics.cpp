@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
 #include "multibody/energy_momentum.hpp"
+#include "multibody/newton_backend.hpp"
 
 namespace multibody {
 namespace {
@@ -43,180 +45,12 @@ struct State {
   Vector q, v, qdd, a, lambda;
 };
 
-/// The whole problem, fixed for a run.
+/// The whole problem, fixed for a run; its linear algebra is the backend's.
 struct Problem {
   const Chain& chain;
-  detail::Inertia inertia;  ///< dense path only (O(n^2) memory)
   DeadLoad load;
   ring::LoadHistory history;
-  Matrix K;  ///< spring stiffness (constant; dense path only)
-  Matrix C;  ///< damping (constant): a M(q0) + b K + hinge dampers (dense path only)
   bool damped = false;
-  bool sparse = false;     ///< O(n) structured path (dynamics_sparse.hpp)
-  double damp_mass = 0.0;  ///< a of C = a M(q0) + damp_cyclic (2,-1,-1 cyclic)
-  double damp_cyclic = 0.0;
-  /// C v in O(n) (sparse path) or with the dense C.
-  Vector damping_times(const Vector& v) const {
-    if (!sparse) return C * v;
-    Vector y = damp_mass * chain.mass_times(chain.q0(), v);
-    const Eigen::Index n = v.size();
-    for (Eigen::Index k = 0; k < n; ++k)
-      y[k] += damp_cyclic * (2.0 * v[k] - v[(k + n - 1) % n] - v[(k + 1) % n]);
-    return y;
-  }
-};
-
-/// The Newton tangent: a dense matrix, or the O(n) structured form of the sparse path.
-struct Tangent {
-  Matrix dense;
-  detail::StructuredMatrix structured;
-  bool sparse = false;
-  void add_diagonal(const Vector& d) {
-    if (sparse)
-      structured.diag += d;
-    else
-      dense.diagonal() += d;
-  }
-};
-
-/// Consistent initial accelerations and multipliers: the index-1 problem
-/// [M G^T; G 0] [qdd; lambda] = [f Phi - xi - C v - K theta; -Jdot v]. O(n^3).
-void initial_acceleration(const Problem& p, State& s) {
-  const Chain& ch = p.chain;
-  const int n = ch.dofs(), c = ch.constraint_count();
-  const Matrix G = ch.constraint_jacobian(s.q);
-  Vector phi, dphi, xi;
-  detail::load_forces(ch, p.load, s.q, phi, nullptr);
-  if (p.sparse) {  // the same system through the structured mass matrix, O(n)
-    xi = ch.quadratic_velocity(s.q, s.v);
-    const Vector b = p.history.factor(s.t) * phi - xi - p.damping_times(s.v) - ch.spring_forces(s.q);
-    detail::SparseSaddle lu;
-    Vector qdd, lambda;
-    if (!lu.factor(detail::mass_structured(ch, s.q), G, 1.0) ||
-        !lu.solve(b, -ch.constraint_jdot_qdot(s.q, s.v), qdd, lambda, 2))
-      throw std::runtime_error("multibody::respond: initial accelerations not computable");
-    s.qdd = qdd;
-    s.lambda = lambda;
-    s.a = s.qdd;
-    return;
-  }
-  detail::inertia_terms(p.inertia, s.q, s.v, Vector::Zero(n), 0.0, 0.0, xi, nullptr);
-  Matrix A = Matrix::Zero(n + c, n + c);
-  A.topLeftCorner(n, n) = ch.mass_matrix(s.q);
-  A.topRightCorner(n, c) = G.transpose();
-  A.bottomLeftCorner(c, n) = G;
-  Vector b(n + c);
-  b.head(n) = p.history.factor(s.t) * phi - xi - p.C * s.v - ch.spring_forces(s.q);
-  b.tail(c) = -ch.constraint_jdot_qdot(s.q, s.v);
-  const Vector x = A.partialPivLu().solve(b);
-  s.qdd = x.head(n);
-  s.lambda = x.tail(c);
-  s.a = s.qdd;
-}
-
-/// Full residual r (without G^T lambda) and tangent T of the equations of motion at
-/// (q, v, qdd) for load factor f, with dqdd/dq = cm and dv/dq = cv along the
-/// integrator's formulas (without the constraint curvature). O(n^2).
-/// O(n^2) on the dense path, O(n) on the sparse one.
-void residual_and_tangent(const Problem& p, const Vector& q, const Vector& v, const Vector& qdd, double f,
-                          double cm, double cv, Vector& r, Tangent* T) {
-  Vector phi, dphi;
-  detail::load_forces(p.chain, p.load, q, phi, T ? &dphi : nullptr);
-  if (p.sparse) {
-    if (T) {
-      T->sparse = true;
-      T->structured = detail::StructuredMatrix{};
-      T->structured.diag = Vector::Zero(q.size());
-      T->structured.cyclic = p.chain.K();
-    }
-    detail::inertia_terms_structured(p.chain, q, v, qdd, cm, cv, r, T ? &T->structured : nullptr);
-    if (T && p.damped) {
-      T->structured.cyclic += cv * p.damp_cyclic;
-      if (p.damp_mass > 0.0) {
-        detail::StructuredMatrix M0 = detail::mass_structured(p.chain, p.chain.q0());
-        T->structured.diag += cv * p.damp_mass * M0.diag;
-        M0.terms[0].coef *= cv * p.damp_mass;
-        T->structured.terms.push_back(std::move(M0.terms[0]));
-      }
-    }
-  } else {
-    if (T) {
-      T->sparse = false;
-      T->dense = p.K;
-    }
-    detail::inertia_terms(p.inertia, q, v, qdd, cm, cv, r, T ? &T->dense : nullptr);
-    if (T && p.damped) T->dense += cv * p.C;
-  }
-  r += p.chain.spring_forces(q) - f * phi;
-  if (p.damped) r += p.damping_times(v);
-  if (!T) return;
-  T->add_diagonal(-f * dphi);
-}
-
-/// Adds the constraint curvature sum_i lambda_i Hess g_i (diagonal) to T. O(n).
-void add_constraint_curvature(const detail::Kinematic& k, const Vector& lambda, Tangent& T) {
-  T.add_diagonal(k.hess_g.transpose() * lambda);
-}
-
-/// The factorized Newton matrix of the scaled saddle-point system
-///   [T G^T; G 0] [dq; dl] = [-r; -g],
-/// rows of g and columns of lambda multiplied by s = max|T_jj| / l so that both blocks
-/// have the size of T (Bottasso, Bauchau & Cardona 2007). It is kept across iterations
-/// and steps (modified Newton): the integrator refreshes it at a new step size, after
-/// the first iteration of a step that began with it, when an iteration shrinks the
-/// correction by less than 8, and before giving up on a step (RefreshPolicy). Local to
-/// one run of respond().
-class NewtonMatrix {
- public:
-  bool usable(double h) const { return valid_ && h == h_; }
-  void invalidate() { valid_ = false; }
-  /// O((n+c)^3) dense, O(n) sparse. False if the sparse factorization fails.
-  bool factor(const Tangent& Tn, const Matrix& G, double l, double h) {
-    sparse_ = Tn.sparse;
-    if (sparse_) {
-      sc_ = Tn.structured.diagonal().cwiseAbs().maxCoeff() / l;
-      h_ = h;
-      valid_ = slu_.factor(Tn.structured, G, sc_);
-      return valid_;
-    }
-    const Matrix& T = Tn.dense;
-    const Eigen::Index n = T.rows(), c = G.rows();
-    sc_ = T.diagonal().cwiseAbs().maxCoeff() / l;
-    Matrix A(n + c, n + c);
-    A.topLeftCorner(n, n) = T;
-    A.topRightCorner(n, c) = sc_ * G.transpose();
-    A.bottomLeftCorner(c, n) = sc_ * G;
-    A.bottomRightCorner(c, c).setZero();
-    lu_.compute(A);
-    h_ = h;
-    valid_ = true;
-    return true;
-  }
-  /// O((n+c)^2). False on a non-finite result.
-  bool solve(const Vector& r, const Vector& g, Vector& dq, Vector& dl) const {
-    const Eigen::Index n = r.size(), c = g.size();
-    if (sparse_) {
-      if (!slu_.solve(-r, -sc_ * g, dq, dl)) return false;
-      dl *= sc_;
-      return true;
-    }
-    Vector rhs(n + c);
-    rhs.head(n) = -r;
-    rhs.tail(c) = -sc_ * g;
-    if (!rhs.allFinite()) return false;
-    const Vector x = lu_.solve(rhs);
-    if (!x.allFinite()) return false;
-    dq = x.head(n);
-    dl = sc_ * x.tail(c);
-    return true;
-  }
-
- private:
-  Eigen::PartialPivLU<Matrix> lu_;
-  detail::SparseSaddle slu_;
-  bool sparse_ = false;
-  double sc_ = 1.0, h_ = 0.0;
-  bool valid_ = false;
 };
 
 /// Starting value of generalized-alpha's pseudo-acceleration a_0 (the acceleration-like
@@ -237,19 +71,18 @@ class NewtonMatrix {
 /// 2560 of T + V - W after the first step of the 20 kN scene (multibody/README.md,
 /// "Energy growth is a failure"). With this start the balance stays <= 0. Cost: one
 /// factorization of the Newton matrix (O(n) sparse, O(n^3) dense).
-void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, State& s) {
+void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, detail::NewtonBackend& nb,
+                                  State& s) {
   const double c = (1.0 - co.alpha_m) / ((1.0 - co.alpha_f) * co.beta * h * h);
   const double cv = co.gamma / (co.beta * h);
   Vector r;
-  Tangent T;
-  residual_and_tangent(p, s.q, s.v, Vector::Zero(s.q.size()), p.history.factor(s.t), c, cv, r, &T);
+  nb.residual(s.q, s.v, Vector::Zero(s.q.size()), p.history.factor(s.t), c, cv, r, true);
   const Kinematic k = detail::evaluate(p.chain, s.q, false, true);
-  add_constraint_curvature(k, s.lambda, T);
-  NewtonMatrix nm;
+  nb.add_to_tangent_diagonal(k.hess_g.transpose() * s.lambda);
   Vector a, mu;
-  if (!nm.factor(T, k.G, p.chain.l(), h) ||
-      !nm.solve(c * r, c * p.chain.constraint_jdot_qdot(s.q, s.v), a, mu))
-    throw std::runtime_error("multibody::respond: starting accelerations not computable");
+  const bool ok = nb.factor(k.G, p.chain.l(), h) && nb.solve(c * r, c * p.chain.constraint_jdot_qdot(s.q, s.v), a, mu);
+  nb.invalidate();  // the first step factors its own matrix
+  if (!ok) throw std::runtime_error("multibody::respond: starting accelerations not computable");
   s.a = a;
 }
 
@@ -288,7 +121,7 @@ struct StepOutcome {
 /// success writes `s1`. Newton on (q, lambda) with the analytic tangent of
 /// dynamics_model.hpp. O(n^3) per iteration.
 StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s0, double h,
-                        const IntegrationControls& ctl, NewtonMatrix& nm, State& s1) {
+                        const IntegrationControls& ctl, detail::NewtonBackend& nb, State& s1) {
   const Chain& ch = p.chain;
   const double t1 = s0.t + h;
   const double f1 = p.history.factor(t1);
@@ -306,24 +139,23 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
   Vector v, qdd;
   StepOutcome out;
   Vector r, dqv, dl;
-  Tangent T;
   RefreshPolicy policy;
   for (int it = 1; it <= ctl.max_newton; ++it) {
     out.iterations = it;
     a1 = (q - q_hat) / bh2;
     v = v_hat + h * co.gamma * a1;
     qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
-    policy.fresh = policy.refresh || !nm.usable(h);
+    policy.fresh = policy.refresh || !nb.usable(h);
     const Kinematic k = detail::evaluate(ch, q, true, policy.fresh);
     if (it == 1) out.reused = !policy.fresh;
-    residual_and_tangent(p, q, v, qdd, f1, dqdd_dq, dv_dq, r, policy.fresh ? &T : nullptr);
+    nb.residual(q, v, qdd, f1, dqdd_dq, dv_dq, r, policy.fresh);
     if (policy.fresh) {
-      add_constraint_curvature(k, lambda, T);
-      if (!nm.factor(T, k.G, ch.l(), h)) return out;
+      nb.add_to_tangent_diagonal(k.hess_g.transpose() * lambda);  // the constraint curvature
+      if (!nb.factor(k.G, ch.l(), h)) return out;
       policy.refresh = false;
     }
     r += k.G.transpose() * lambda;
-    if (!nm.solve(r, k.g, dqv, dl)) return out;
+    if (!nb.solve(r, k.g, dqv, dl)) return out;
     const double norm = dqv.cwiseAbs().maxCoeff();
     // A correction turning a segment by more than 0.5 rad has left the basin.
     if (!policy.accept(norm, 0.5)) {
@@ -387,7 +219,7 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
 /// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
 /// is not: Cardona & Geradin 1989). O(n^3) per iteration.
 StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
-                             const IntegrationControls& ctl, NewtonMatrix& nm, State& s1) {
+                             const IntegrationControls& ctl, detail::NewtonBackend& nb, State& s1) {
   const Chain& ch = p.chain;
   const int n = ch.dofs(), c = ch.constraint_count(), nz = n - c;
   std::vector<int> dep(c), ind;
@@ -420,7 +252,6 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   Vector q = s0.q + h * s0.v;
   Vector z = take(q, ind);
   Vector v(n), qdd(n), lambda(c), r, dqv, dl;
-  Tangent T;
   Matrix Gy(c, c), Gz(c, nz);
   StepOutcome out;
   // Positions, velocities and accelerations of all angles from z (and the constraint
@@ -450,18 +281,18 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     // Multipliers that make the dependent rows of r + G^T lambda vanish; the rest is the
     // reduced residual D^T r. The Newton correction restricted to G dq = 0 solves
     // D^T T D dz = -D^T r, which is the saddle-point system with the full T.
-    policy.fresh = policy.refresh || !nm.usable(h);
+    policy.fresh = policy.refresh || !nb.usable(h);
     if (it == 1) out.reused = !policy.fresh;
-    residual_and_tangent(p, q, v, qdd, f1, 1.0 / bh2, dv_dq, r, policy.fresh ? &T : nullptr);
+    nb.residual(q, v, qdd, f1, 1.0 / bh2, dv_dq, r, policy.fresh);
     lambda = -Gy.transpose().partialPivLu().solve(take(r, dep));
     if (policy.fresh) {
       k.hess_g = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());  // see evaluate
-      add_constraint_curvature(k, lambda, T);
-      if (!nm.factor(T, k.G, ch.l(), h)) return out;
+      nb.add_to_tangent_diagonal(k.hess_g.transpose() * lambda);  // the constraint curvature
+      if (!nb.factor(k.G, ch.l(), h)) return out;
       policy.refresh = false;
     }
     r += k.G.transpose() * lambda;
-    if (!nm.solve(r, Vector::Zero(c), dqv, dl)) return out;
+    if (!nb.solve(r, Vector::Zero(c), dqv, dl)) return out;
     const Vector dz = take(dqv, ind);
     const double norm = dz.cwiseAbs().maxCoeff();
     if (!policy.accept(norm, 0.5)) {  // more than 0.5 rad: left the basin
@@ -532,22 +363,16 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
 
   const Chain chain(spec, options, response.load.angle);
   const int n = chain.dofs();
-  const bool sparse = use_sparse_path(options);
-  Problem p{chain, sparse ? detail::Inertia{} : detail::inertia_constants(chain),
-            {chain.hinge_at(response.load.angle), {response.load.force[0], response.load.force[1]}},
-            response.load.history, sparse ? Matrix() : chain.stiffness_matrix(),
-            sparse ? Matrix() : Matrix::Zero(n, n), false};
-  p.sparse = sparse;
-  if (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0) {
-    p.damped = true;
-    // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
-    // pattern (cyclic 2, -1, -1), so they are the stiffness matrix times c / K.
-    p.damp_mass = response.rayleigh_mass;
-    p.damp_cyclic = (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K();
-    if (!sparse)
-      p.C = response.rayleigh_mass * chain.mass_matrix(chain.q0()) +
-            (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * p.K;
-  }
+  Problem p{chain, {chain.hinge_at(response.load.angle), {response.load.force[0], response.load.force[1]}},
+            response.load.history};
+  // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
+  // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
+  const detail::Damping damping{response.rayleigh_mass,
+                                (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K()};
+  p.damped = damping.any();
+  const std::unique_ptr<detail::NewtonBackend> backend =
+      detail::make_newton_backend(chain, p.load, damping, use_sparse_path(options));
+  detail::NewtonBackend& nb = *backend;
   const Coefficients co = coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
 
@@ -569,8 +394,10 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   State s;
   s.q = chain.q0();
   s.v = Vector::Zero(n);
-  initial_acceleration(p, s);
-  if (!partitioned) starting_pseudo_acceleration(p, co, response.dt, s);
+  if (!nb.initial_acceleration(s.q, s.v, p.history.factor(s.t), s.qdd, s.lambda))
+    throw std::runtime_error("multibody::respond: initial accelerations not computable");
+  s.a = s.qdd;
+  if (!partitioned) starting_pseudo_acceleration(p, co, response.dt, nb, s);
   const Eigen::Vector2d F = p.load.force;
   double work = 0.0, dissipated = 0.0, max_work = 0.0;
   Eigen::Vector2d x_load = chain.hinge_position(s.q, p.load.hinge);
@@ -606,7 +433,6 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const double min_dt = controls.min_dt_factor * response.dt;
   double h = response.dt;
   int successes = 0;
-  NewtonMatrix nm;
   for (long k = 1; k <= steps; ++k) {
     const double t_target = response.dt * k;
     int iterations = 0;
@@ -619,11 +445,11 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
       const bool last = remaining <= h * (1.0 + 1e-9);
       const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
       State s1;
-      const StepOutcome o = partitioned ? step_partitioned(p, co, s, hs, controls, nm, s1)
-                                        : step_index3(p, co, s, hs, controls, nm, s1);
+      const StepOutcome o = partitioned ? step_partitioned(p, co, s, hs, controls, nb, s1)
+                                        : step_index3(p, co, s, hs, controls, nb, s1);
       iterations += o.iterations;
       if (!o.converged) {
-        nm.invalidate();
+        nb.invalidate();
         if (o.reused) continue;  // first try again with a Newton matrix of this state
         h = 0.5 * hs;
         successes = 0;
@@ -643,7 +469,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
         // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
         // system this is exactly the energy the discrete damping force removes.
         const Vector vm = s.v + s1.v;
-        dissipated += 0.25 * hs * vm.dot(p.damping_times(vm));
+        dissipated += 0.25 * hs * vm.dot(nb.damping_times(vm));
       }
       s = std::move(s1);
       if (last) s.t = t_target;  // no round-off drift of the sub-steps
