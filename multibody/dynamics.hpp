@@ -55,7 +55,9 @@
 // with L the midpoint cumulative sum, whose bidiagonal relations make the saddle-point
 // system banded plus a border of 2 + c unknowns (dynamics_sparse.hpp): O(n) time and
 // memory per Newton iteration, and the self-contact test uses a uniform grid (O(n)).
-// `automatic` takes sparse from n = kSparseDynamicsCrossover. The two paths give the
+// `automatic` takes sparse from n = kSparseDynamicsCrossover. The two are backends of one
+// interface (newton_backend.hpp), chosen once per run; the integrators' steps are in
+// integrators.hpp. The two paths give the
 // same histories to ~1e-12 of the peak displacement (tests at n = 40, 160, 1280).
 #pragma once
 

@@ -1,0 +1,91 @@
+// Internal to multibody/: one step of each integrator of the nonlinear response
+// (dynamics.hpp explains the methods) and generalized-alpha's starting value, on the
+// Newton backend of newton_backend.hpp. respond() (dynamics.cpp) drives them.
+#pragma once
+
+#include <vector>
+
+#include "multibody/chain.hpp"
+#include "multibody/dynamics.hpp"
+#include "multibody/dynamics_model.hpp"
+#include "multibody/newton_backend.hpp"
+#include "ring/analysis.hpp"
+
+namespace multibody::detail {
+
+/// Integrator coefficients in the Arnold-Bruls form; Newmark is alpha_m = alpha_f = 0.
+struct Coefficients {
+  double alpha_m = 0.0, alpha_f = 0.0, beta = 0.25, gamma = 0.5;
+};
+
+/// The coefficients of response.integrator (newmark: 0, 0, 1/4, 1/2).
+Coefficients coefficients(const ring::ResponseOptions& r);
+
+/// State at an accepted time: positions, velocities, accelerations, the
+/// generalized-alpha pseudo-acceleration, multipliers.
+struct State {
+  double t = 0.0;
+  Vector q, v, qdd, a, lambda;
+};
+
+/// The whole problem, fixed for a run; its linear algebra is the backend's.
+struct Problem {
+  const Chain& chain;
+  DeadLoad load;
+  ring::LoadHistory history;
+  bool damped = false;
+};
+
+/// Result of one attempted step.
+struct StepOutcome {
+  bool converged = false;
+  int iterations = 0;
+  bool reused = false;  ///< began with a Newton matrix kept from an earlier step
+};
+
+/// Starting value of generalized-alpha's pseudo-acceleration a_0 (the acceleration-like
+/// sequence of Arnold & Bruls 2007; the true acceleration qdd_0 stays consistent):
+///   [S G^T; G 0] [a_0; mu] = c [f Phi - xi - C v - K theta; -Gdot v],
+/// S = c M + c' (C + dxi/dv) + tangent stiffness (springs, load, constraint curvature
+/// with the consistent multipliers): the integrator's Newton matrix at t_0 for the step h
+/// without the term d(M qdd)/dq,
+/// c = (1 - alpha_m) / ((1 - alpha_f) beta h^2), c' = gamma / (beta h). In a linear mode
+/// of frequency w this is a_0 = c qdd_0 / (c + w^2): qdd_0 (1 + O(w^2 h^2)) where the
+/// step resolves the mode, so the accuracy of the consistent start is kept (second order
+/// in q and v: tests/multibody/test_dynamics.cpp), and -> 0 where w h >> 1. Why not
+/// a_0 = qdd_0: a mode with w h >> 1 started there leaves the first steps with the
+/// velocity ~ h (1 - gamma) qdd_0 instead of ~ qdd_0 / w (the method's velocity
+/// overshoot); a point step load gives every mode the acceleration F_k / m_k, the chain's
+/// w_max grows like n^2, and the spurious velocity of the loaded hinge spins its segments
+/// once h^2 |qdd_0| exceeds their length: +1.6 J at n = 640, +30 J at 1280, +1.3e3 J at
+/// 2560 of T + V - W after the first step of the 20 kN scene (multibody/README.md,
+/// "Energy growth is a failure"). With this start the balance stays <= 0. Cost: one
+/// factorization of the Newton matrix (O(n) sparse, O(n^3) dense).
+void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, NewtonBackend& nb,
+                                  State& s);
+
+/// One index-3 step of size h from `s0` (generalized-alpha, Arnold-Bruls form); on
+/// success writes `s1`. Newton on (q, lambda) with the analytic tangent of
+/// dynamics_model.hpp. Cost per iteration: the backend's residual and solve, plus a
+/// factorization when the policy refreshes the matrix.
+StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s0, double h,
+                        const IntegrationControls& ctl, NewtonBackend& nb, State& s1);
+
+/// One Newmark step in the paper's reduced form (its eqs. 18-20, coordinate
+/// partitioning): the c dependent angles are the best-conditioned columns of G(q_n)
+/// (column-pivoted QR), the Newmark formulas act on the n - c independent angles z, and
+/// the dependent ones follow from g(q) = 0 at every iteration, their velocities and
+/// accelerations from G v = 0 and G qdd + Gdot v = 0. The equations are D^T r = 0 with
+/// D = [I; -G_y^{-1} G_z]; the Newton matrix is D^T T D with T the full tangent of
+/// step_index3 and lambda = -G_y^{-T} r_y. The terms d D/dz of the dependent rates, of
+/// order v and h, are left out (convergence fast-linear): added exactly (rank 2c,
+/// Woodbury) they saved 17-25 % of the iterations but cost 30-40 % more wall time per
+/// run on both paths (multibody/README.md, "Newton iterations per step"). Constraints hold to
+/// round-off at the positions, velocities and accelerations; no multiplier oscillates,
+/// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
+/// is not: Cardona & Geradin 1989). Cost per iteration: as step_index3, plus O(n) for
+/// the dependent angles.
+StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
+                             const IntegrationControls& ctl, NewtonBackend& nb, State& s1);
+
+}  // namespace multibody::detail
