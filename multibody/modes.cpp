@@ -6,7 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <optional>
+#include <memory>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -112,6 +113,121 @@ bool uses_sparse_path(const ring::MultibodyOptions& options) {
   return options.dependent == Dependent::robust && options.n > kSparseThreshold;
 }
 
+namespace {
+
+/// One of the two eigen-solution paths of solve_modes (modes.hpp), chosen once: the
+/// computed pairs, their M-normalized vectors, the operator norms of the backward error,
+/// the reduced products K0 x and M0 x of the residuals, and the chain-coordinate shapes.
+class ModesPath {
+ public:
+  virtual ~ModesPath() = default;
+  /// omega^2 ascending and their vectors (any scale): reduced x (dense) or chain dq
+  /// (sparse); `model` gets the linear model behind them (dense: K0, M0 and D; sparse: D).
+  virtual void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) = 0;
+  /// Fills sol.x (x^T M0 x = 1; sparse also sol.dq) from the selected columns of vecs.
+  virtual void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) = 0;
+  /// ||K|| and ||M|| of the backward error (dense: K0, M0; sparse: the unreduced K, M).
+  virtual std::pair<double, double> norms(const ModalSolution& sol) = 0;
+  /// K0 x and M0 x for the columns k0 .. k0 + nb - 1 of sol.x.
+  virtual void products(const ModalSolution& sol, int k0, int nb, Matrix& KX, Matrix& MX) = 0;
+  /// Sets sol.dq = D x where normalize() did not.
+  virtual void shapes(ModalSolution& sol) = 0;
+  virtual const char* name() const = 0;
+};
+
+/// The dense path: K0, M0 and D formed (O(n^2) memory, O(n^3) time).
+class DensePath final : public ModesPath {
+ public:
+  DensePath(const Chain& chain, Dependent dependent, double s) : chain_(chain), dependent_(dependent), s_(s) {}
+  void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
+    model = linearize(chain_, dependent_);
+    dense_pairs(model, s_, nev, omega2, vecs);
+  }
+  void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      const Vector x = vecs.col(columns[k]);
+      sol.x.col(static_cast<Eigen::Index>(k)) = x / std::sqrt(x.dot(sol.model.M0 * x));
+    }
+  }
+  std::pair<double, double> norms(const ModalSolution& sol) override {
+    const int r = static_cast<int>(sol.model.K0.rows());
+    return {modal::norm_estimate([&](const Vector& v) { return Vector(sol.model.K0 * v); }, r),
+            modal::norm_estimate([&](const Vector& v) { return Vector(sol.model.M0 * v); }, r)};
+  }
+  void products(const ModalSolution& sol, int k0, int nb, Matrix& KX, Matrix& MX) override {
+    KX = sol.model.K0 * sol.x.middleCols(k0, nb);
+    MX = sol.model.M0 * sol.x.middleCols(k0, nb);
+  }
+  void shapes(ModalSolution& sol) override { sol.dq = sol.model.expand(sol.x); }
+  const char* name() const override { return "dense"; }
+
+ private:
+  const Chain& chain_;
+  Dependent dependent_;
+  double s_;
+};
+
+/// The O(n) path: the shifted constrained solve as the operator, K and M as products,
+/// D applied only to the final vectors.
+class SparsePath final : public ModesPath {
+ public:
+  SparsePath(const Chain& chain, double s, SparseEigensolver eigensolver)
+      : chain_(chain), sp_(chain), eigensolver_(eigensolver) {
+    sp_.set_shift(-s);
+  }
+  void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
+    SparsePairs p = eigensolver_ == SparseEigensolver::library ? library_pairs(sp_, nev) : hand_lanczos(sp_, nev);
+    omega2 = std::move(p.omega2);
+    vecs = std::move(p.dq);
+    model.kind = Dependent::robust;
+    model.qr = sp_.qr();
+    model.j2_condition = j2_condition(chain_.constraint_jacobian(chain_.q0()), chain_.n());
+  }
+  // dq with dq^T M dq = 1, then x = D^T dq in one blocked Householder application.
+  void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
+    const Eigen::Index N = vecs.rows();
+    sol.dq.resize(N, static_cast<Eigen::Index>(columns.size()));
+    ShiftedSolve::Workspace ws;
+    Vector md(N);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      const auto d = vecs.col(columns[k]);
+      sp_.m_times(d, md, ws);
+      sol.dq.col(static_cast<Eigen::Index>(k)) = d / std::sqrt(d.dot(md));
+    }
+    vecs.resize(0, 0);
+    sol.x = sp_.reduce_cols(sol.dq);
+  }
+  // The unreduced K and M (N = r + c: the c constrained directions barely move the
+  // largest eigenvalue), O(n) per product.
+  std::pair<double, double> norms(const ModalSolution& sol) override {
+    const int N = chain_.dofs();
+    ShiftedSolve::Workspace ws;
+    return {modal::norm_estimate([&](const Vector& v) { Vector y(N); sp_.k_times(v, y); return y; }, N),
+            modal::norm_estimate([&](const Vector& v) { Vector y(N); sp_.m_times(v, y, ws); return y; }, N)};
+  }
+  // D^T K dq, D^T M dq with dq = D x, a block of columns per Householder application.
+  void products(const ModalSolution& sol, int k0, int nb, Matrix& KX, Matrix& MX) override {
+    const int N = chain_.dofs();
+    Matrix Kd(N, nb), Md(N, nb);
+    ShiftedSolve::Workspace ws;
+    for (int j = 0; j < nb; ++j) {
+      sp_.k_times(sol.dq.col(k0 + j), Kd.col(j));
+      sp_.m_times(sol.dq.col(k0 + j), Md.col(j), ws);
+    }
+    KX = sp_.reduce_cols(Kd);
+    MX = sp_.reduce_cols(Md);
+  }
+  void shapes(ModalSolution&) override {}
+  const char* name() const override { return "sparse"; }
+
+ private:
+  const Chain& chain_;
+  ShiftedSolve sp_;
+  SparseEigensolver eigensolver_;
+};
+
+}  // namespace
+
 ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options, int count,
                           SparseEigensolver eigensolver) {
   const auto start = std::chrono::steady_clock::now();
@@ -140,82 +256,31 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     sparse = false;
   const double s = modal::bending_scale(spec);
   const int nev = std::min(r, count + expected_rigid + 2);
+  std::unique_ptr<ModesPath> path;
+  if (sparse)
+    path = std::make_unique<SparsePath>(chain, s, eigensolver);
+  else
+    path = std::make_unique<DensePath>(chain, options.dependent, s);
 
   ModalSolution sol;
   Vector omega2;  // computed eigenvalues, ascending
-  Matrix vecs;    // dense: reduced vectors x; sparse: chain-coordinate vectors dq (any scale)
-  std::optional<ShiftedSolve> sp;
-  if (!sparse) {
-    sol.model = linearize(chain, options.dependent);
-    dense_pairs(sol.model, s, nev, omega2, vecs);
-  } else {
-    sp.emplace(chain);
-    sp->set_shift(-s);
-    SparsePairs pairs = eigensolver == SparseEigensolver::library ? library_pairs(*sp, nev)
-                                                                  : hand_lanczos(*sp, nev);
-    omega2 = std::move(pairs.omega2);
-    vecs = std::move(pairs.dq);
-    sol.model.kind = Dependent::robust;
-    sol.model.qr = sp->qr();
-    sol.model.j2_condition = j2_condition(chain.constraint_jacobian(chain.q0()), chain.n());
-  }
+  Matrix vecs;
+  path->pairs(nev, omega2, vecs, sol.model);
   const modal::Selection sel = modal::select_modes("multibody", omega2, s, count);
   sol.rigid_omega2 = Eigen::Map<const Vector>(sel.rigid_omega2.data(),
                                               static_cast<Eigen::Index>(sel.rigid_omega2.size()));
-
-  // M-normalized vectors: dense, x with x^T M0 x = 1; sparse, dq with dq^T M dq = 1, then
-  // x = D^T dq in one blocked Householder application.
   sol.x.resize(r, count);
-  if (!sparse) {
-    for (int k = 0; k < count; ++k) {
-      const Vector x = vecs.col(sel.elastic[k]);
-      sol.x.col(k) = x / std::sqrt(x.dot(sol.model.M0 * x));
-    }
-  } else {
-    sol.dq.resize(N, count);
-    ShiftedSolve::Workspace ws;
-    Vector md(N);
-    for (int k = 0; k < count; ++k) {
-      const auto d = vecs.col(sel.elastic[k]);
-      sp->m_times(d, md, ws);
-      sol.dq.col(k) = d / std::sqrt(d.dot(md));
-    }
-    vecs.resize(0, 0);
-    sol.x = sp->reduce_cols(sol.dq);
-  }
-  // Scales of the backward error: dense, ||K0|| and ||M0||; sparse, ||K|| and ||M|| of the
-  // chain (N = r + c: the c constrained directions barely move the largest eigenvalue),
-  // O(n) per product.
-  double normK, normM;
-  if (!sparse) {
-    normK = modal::norm_estimate([&](const Vector& v) { return Vector(sol.model.K0 * v); }, r);
-    normM = modal::norm_estimate([&](const Vector& v) { return Vector(sol.model.M0 * v); }, r);
-  } else {
-    ShiftedSolve::Workspace ws;
-    normK = modal::norm_estimate([&](const Vector& v) { Vector y(N); sp->k_times(v, y); return y; }, N);
-    normM = modal::norm_estimate([&](const Vector& v) { Vector y(N); sp->m_times(v, y, ws); return y; }, N);
-  }
-  // Residuals of the reduced pairs. D^T K dq and D^T M dq on the sparse path in blocks of
-  // columns: one blocked Householder application per block instead of one per vector
-  // (2.4 s -> ~0.5 s at n = 10^6), the extra memory bounded by 4 N kBlock doubles.
+  path->normalize(vecs, sel.elastic, sol);
+  const auto [normK, normM] = path->norms(sol);
+  // Residuals of the reduced pairs, in blocks of columns (on the sparse path one blocked
+  // Householder application per block instead of one per vector: 2.4 s -> ~0.5 s at
+  // n = 10^6), the extra memory bounded by 4 N kBlock doubles.
   constexpr int kBlock = 6;
   std::vector<double> relative;
   for (int k0 = 0; k0 < count; k0 += kBlock) {
     const int nb = std::min(kBlock, count - k0);
     Matrix KX(r, nb), MX(r, nb);
-    if (!sparse) {
-      KX = sol.model.K0 * sol.x.middleCols(k0, nb);
-      MX = sol.model.M0 * sol.x.middleCols(k0, nb);
-    } else {  // D^T K dq, D^T M dq with dq = D x
-      Matrix Kd(N, nb), Md(N, nb);
-      ShiftedSolve::Workspace ws;
-      for (int j = 0; j < nb; ++j) {
-        sp->k_times(sol.dq.col(k0 + j), Kd.col(j));
-        sp->m_times(sol.dq.col(k0 + j), Md.col(j), ws);
-      }
-      KX = sp->reduce_cols(Kd);
-      MX = sp->reduce_cols(Md);
-    }
+    path->products(sol, k0, nb, KX, MX);
     for (int j = 0; j < nb; ++j) {
       const int k = k0 + j;
       const modal::PairResidual pr = modal::pair_residual(KX.col(j), MX.col(j), omega2[sel.elastic[k]],
@@ -229,9 +294,9 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   res.model["n"] = static_cast<long long>(chain.n());
   res.model["rotary_inertia"] = options.rotary_inertia;
   res.model["dependent"] = ring::to_string(options.dependent);
-  res.model["method"] = std::string(sparse ? "sparse" : "dense");
+  res.model["method"] = std::string(path->name());
   res.unknowns = r;
-  if (!sparse) sol.dq = sol.model.expand(sol.x);
+  path->shapes(sol);
   // Solver time: everything up to the chain-coordinate shapes; the sampling at the
   // common stations below is output formatting (ring::sample_polygon, ~10 us per mode).
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
