@@ -82,4 +82,9 @@ ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& hinges, int min_gap, dou
 /// `depth`: 2 + floor(2 depth / l).
 int contact_gap(const Chain& chain, double depth);
 
+/// A Newton correction that turns a segment by more than this (rad) has left the basin
+/// of attraction: statics and dynamics, angle and hinge-position paths alike reject it
+/// and cut the load or time step.
+constexpr double kBasin = 0.5;
+
 }  // namespace multibody::detail

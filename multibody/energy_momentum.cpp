@@ -110,7 +110,7 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
     x1 += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
     out.iterations = it;
-    if (turns_a_link_by(c, dz.head(N)) > kBasinTurn) return out;  // left the basin
+    if (turns_a_link_by(c, dz.head(N)) > detail::kBasin) return out;  // left the basin
     const double R = c.radius();
     if (dz.head(N).cwiseAbs().maxCoeff() <= kTolerance * R && constraints(c, x1).cwiseAbs().maxCoeff() <= kTolerance * R) {
       out.converged = true;

@@ -124,7 +124,7 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
     if (!nb.solve(r, k.g, dqv, dl)) return out;
     const double norm = dqv.cwiseAbs().maxCoeff();
     // A correction turning a segment by more than 0.5 rad has left the basin.
-    if (!policy.accept(norm, 0.5)) {
+    if (!policy.accept(norm, kBasin)) {
       if (policy.refresh) continue;
       return out;
     }
@@ -226,7 +226,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     if (!nb.solve(r, Vector::Zero(c), dqv, dl)) return out;
     const Vector dz = take(dqv, ind);
     const double norm = dz.cwiseAbs().maxCoeff();
-    if (!policy.accept(norm, 0.5)) {  // more than 0.5 rad: left the basin
+    if (!policy.accept(norm, kBasin)) {  // left the basin
       if (policy.refresh) continue;
       return out;
     }

@@ -65,11 +65,10 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t);
 
 /// The largest change of a link's direction that the position correction dx makes,
-/// |dx_{k+1} - dx_k| / l (rad, to first order). Newton corrections above
-/// kBasinTurn have left the basin of attraction (the angle paths' bound of 0.5 rad
-/// on segment angles; a bound on |dx| itself would shrink with l = 2 pi R / n). O(n).
+/// |dx_{k+1} - dx_k| / l (rad, to first order): compared with detail::kBasin, as the
+/// angle paths compare their corrections (a bound on |dx| itself would shrink with
+/// l = 2 pi R / n). O(n).
 double turns_a_link_by(const Natural& c, const Vec& dx);
-constexpr double kBasinTurn = 0.5;
 
 /// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
 /// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a

@@ -75,9 +75,8 @@ NewtonOutcome newton(const Chain& ch, const detail::DeadLoad& load, const Matrix
     Vector dl;
     const Vector dq = solve_lin(L, true, dl);
     if (!dq.allFinite()) return out;
-    // A full Newton step larger than a quarter turn of some segment means the
-    // iteration has left the basin: reject and let the caller cut the increment.
-    if (dq.cwiseAbs().maxCoeff() > 0.5) return out;
+    // Left the basin: reject and let the caller cut the increment.
+    if (dq.cwiseAbs().maxCoeff() > detail::kBasin) return out;
     q += dq;
     lambda += dl;
     if (dq.cwiseAbs().maxCoeff() <= 1e-12) {

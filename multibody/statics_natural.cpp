@@ -54,7 +54,7 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
     const Vec dz = kkt.solve(rhs);
     if (!dz.allFinite()) return -1;
     const double step = dz.head(N).cwiseAbs().maxCoeff();
-    if (turns_a_link_by(c, dz.head(N)) > kBasinTurn) return -1;  // left the basin
+    if (turns_a_link_by(c, dz.head(N)) > detail::kBasin) return -1;  // left the basin
     x += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
     // Converged below the tolerance, or at the round-off floor of the solve (it grows
