@@ -2,7 +2,6 @@
 #include "multibody/energy_momentum.hpp"
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseLU>
 
 #include <chrono>
 #include <cmath>
@@ -24,9 +23,8 @@ using namespace natural;
 constexpr double kResolved = 1e3;
 constexpr double kEps = 2.220446049250313e-16;
 constexpr int kMaxNewton = 15;
-/// Newton converged: correction and constraints <= kTolerance R (R = n l / 2 pi: the
-/// round-off of positions is ~eps R, so a bound in l could not be met at large n).
-constexpr double kTolerance = 1e-12;
+// Newton's stopping rule: natural::NewtonStop (bounds relative to R = n l / 2 pi: the
+// round-off of positions is ~eps R, so a bound in l could not be met at large n).
 
 struct Step {
   bool converged = false;
@@ -36,7 +34,7 @@ struct Step {
 /// One step of the scheme from (x0, v0) over h with load factor f at the midpoint;
 /// x1 and lambda are the starting guess and the result.
 Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Vec& x1, Vec& lambda,
-          Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>& lu, bool& analyzed) {
+          BandedKkt& kkt) {
   const int N = 2 * c.n, S = c.size();
   const double cm = 2.0 / (h * h);
   const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
@@ -44,6 +42,7 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
   Step out;
   Triplets t;
   t.reserve(static_cast<std::size_t>(c.n) * 60);
+  NewtonStop stop(c.radius());
   for (int it = 1; it <= kMaxNewton; ++it) {
     t.clear();
     const Vec xm = 0.5 * (x0 + x1);
@@ -99,20 +98,14 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
     rhs << -rx, -kappa * constraints(c, x1);
     Eigen::SparseMatrix<double> A(S, S);
     A.setFromTriplets(t.begin(), t.end());
-    if (!analyzed) {
-      lu.analyzePattern(A);
-      analyzed = true;
-    }
-    lu.factorize(A);
-    if (lu.info() != Eigen::Success) return out;
-    const Vec dz = lu.solve(rhs);
+    if (!kkt.factor(A)) return out;
+    const Vec dz = kkt.solve(rhs);
     if (!dz.allFinite()) return out;
     x1 += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
     out.iterations = it;
     if (turns_a_link_by(c, dz.head(N)) > detail::kBasin) return out;  // left the basin
-    const double R = c.radius();
-    if (dz.head(N).cwiseAbs().maxCoeff() <= kTolerance * R && constraints(c, x1).cwiseAbs().maxCoeff() <= kTolerance * R) {
+    if (stop.converged(dz.head(N).cwiseAbs().maxCoeff(), constraints(c, x1).cwiseAbs().maxCoeff())) {
       out.converged = true;
       return out;
     }
@@ -192,8 +185,7 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   };
   record(0, 0);
 
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-  bool analyzed = false;
+  BandedKkt kkt(c);
   const double min_dt = controls.min_dt_factor * response.dt;
   double h = response.dt;
   int successes = 0;
@@ -206,7 +198,7 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
       const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
       Vec x1 = x + hs * v, l1 = lambda;
       const double f = response.load.history.factor(t + 0.5 * hs);
-      const Step st = step(c, x, v, hs, f, x1, l1, lu, analyzed);
+      const Step st = step(c, x, v, hs, f, x1, l1, kkt);
       iterations += st.iterations;
       if (!st.converged) {
         h = 0.5 * hs;

@@ -28,8 +28,8 @@
 // included): quadratic convergence. Damping is not offered (the scheme's point is the
 // undamped balance; use newmark).
 //
-// Cost: per Newton iteration O(n) assembly and one sparse LU (Eigen SparseLU, COLAMD
-// ordering computed once) of the (3n + supports) KKT matrix, banded plus the corners.
+// Cost: per Newton iteration O(n) assembly and one banded LU with a border
+// (natural::BandedKkt) of the (3n + supports) KKT matrix: O(n).
 #pragma once
 
 #include "multibody/dynamics.hpp"

@@ -163,18 +163,70 @@ Eigen::VectorXi banded_order(const Natural& c) {
   return perm;
 }
 
-BandedKkt::BandedKkt(const Natural& c) : P_(banded_order(c)) {}
-
-bool BandedKkt::factor(const Eigen::SparseMatrix<double>& A) {
-  const Eigen::SparseMatrix<double> Ab = P_ * A * P_.transpose();
-  if (!analyzed_) {
-    lu_.analyzePattern(Ab);
-    analyzed_ = true;
-  }
-  lu_.factorize(Ab);
-  return lu_.info() == Eigen::Success;
+bool NewtonStop::converged(double step, double constraint) {
+  constexpr double kTolerance = 1e-12, kFloor = 1e-9;
+  const bool at_floor = step <= kFloor * R_ && step > 0.25 * previous_;
+  previous_ = step;
+  return (step <= kTolerance * R_ || at_floor) && constraint <= kTolerance * R_;
 }
 
-Vec BandedKkt::solve(const Vec& rhs) { return P_.transpose() * Vec(lu_.solve(P_ * rhs)); }
+BandedKkt::BandedKkt(const Natural& c) : perm_(banded_order(c)) {
+  // The border of banded_order: hinges n-1, 0, 1 (6), links n-1 and 0 (2), pin and roller.
+  core_ = c.size() - (8 + c.rows() - c.n);
+}
+
+bool BandedKkt::factor(const Eigen::SparseMatrix<double>& A) {
+  const int m = core_, b = static_cast<int>(A.rows()) - core_;
+  int kl = 0, ku = 0;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int r = perm_[it.row()], col = perm_[j];
+      if (r < m && col < m) {
+        kl = std::max(kl, r - col);
+        ku = std::max(ku, col - r);
+      }
+    }
+  band_.resize(m, kl, ku);
+  B_.setZero(m, b);
+  C_.setZero(b, m);
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(b, b);
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int r = perm_[it.row()], col = perm_[j];
+      if (r < m && col < m)
+        band_.at(r, col) += it.value();
+      else if (r < m)
+        B_(r, col - m) += it.value();
+      else if (col < m)
+        C_(r - m, col) += it.value();
+      else
+        D(r - m, col - m) += it.value();
+    }
+  if (!band_.factor()) return false;
+  X_ = B_;
+  band_.solve_many(X_.data(), m, b);
+  schur_.compute(D - C_ * X_);
+  const double pivot = schur_.matrixLU().diagonal().cwiseAbs().minCoeff();
+  return std::isfinite(pivot) && pivot > 0.0;
+}
+
+Vec BandedKkt::solve(const Vec& rhs) const {
+  const int m = core_;
+  Vec f(m), g(rhs.size() - m);
+  for (Eigen::Index i = 0; i < rhs.size(); ++i) {
+    const int k = perm_[i];
+    if (k < m) f[k] = rhs[i];
+    else g[k - m] = rhs[i];
+  }
+  band_.solve(f.data());
+  const Vec y = schur_.solve(g - C_ * f);
+  f -= X_ * y;
+  Vec out(rhs.size());
+  for (Eigen::Index i = 0; i < rhs.size(); ++i) {
+    const int k = perm_[i];
+    out[i] = k < m ? f[k] : y[k - m];
+  }
+  return out;
+}
 
 }  // namespace multibody::natural

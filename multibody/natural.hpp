@@ -6,11 +6,11 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-#include <Eigen/SparseLU>
 
 #include <vector>
 
 #include "multibody/chain.hpp"
+#include "multibody/dynamics_sparse.hpp"
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 
@@ -70,6 +70,20 @@ void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight
 /// l = 2 pi R / n). O(n).
 double turns_a_link_by(const Natural& c, const Vec& dx);
 
+/// Newton's stopping rule on hinge positions: converged when the correction and the
+/// constraints are below 1e-12 R, or when the correction has reached the solve's
+/// round-off floor (it grows with n: ~1e-11 R at n = 10^4): below 1e-9 R and no longer
+/// contracting (full Newton contracts quadratically above the floor).
+class NewtonStop {
+ public:
+  explicit NewtonStop(double radius) : R_(radius) {}
+  /// After a correction of size `step` (max norm), with constraints `constraint` (max |c|).
+  bool converged(double step, double constraint);
+
+ private:
+  double R_, previous_ = 0.0;
+};
+
 /// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
 /// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
 /// border: hinges 2 .. n-2 and their links in chain order, then hinges n-1, 0, 1 (the
@@ -79,24 +93,28 @@ double turns_a_link_by(const Natural& c, const Vec& dx);
 /// perm[old] = new. Needs n >= 4.
 Eigen::VectorXi banded_order(const Natural& c);
 
-/// The chain's KKT matrix (unknowns as in banded_order's comment) factored by a sparse
-/// LU in banded_order: O(n) fill and time per factorization whatever the pivots. The
-/// symbolic analysis is done at the first factorization and kept (the pattern is fixed).
-/// (A fill-reducing ordering such as COLAMD ignores the pivoting that a weak diagonal
-/// forces, as the statics' KKT matrix has: its fill then grew far beyond O(n), minutes
-/// per factorization at n = 10^4.)
+/// The chain's KKT matrix (unknowns as in banded_order's comment) factored in
+/// banded_order: the band (hinges 2 .. n-2 and their links) by LAPACK's banded LU with
+/// partial pivoting (detail::BandLU), the border of banded_order (<= 11 unknowns) by its
+/// Schur complement. O(n) time and memory per factorization and solve, whatever the
+/// pivots. (A general sparse LU with a fill-reducing ordering such as COLAMD ignores the
+/// pivoting that a weak diagonal forces, as the statics' KKT matrix has: its fill grew far
+/// beyond O(n), minutes per factorization at n = 10^4; Eigen's SparseLU in this order is
+/// O(n) but its supernodal overhead costs ~7x the band LU at this bandwidth.)
 class BandedKkt {
  public:
   explicit BandedKkt(const Natural& c);
-  /// False if the factorization fails (a singular matrix).
+  /// False if the factorization fails (a zero pivot of the band or a singular border).
   bool factor(const Eigen::SparseMatrix<double>& A);
   /// A^-1 rhs with the last factorization.
-  Vec solve(const Vec& rhs);
+  Vec solve(const Vec& rhs) const;
 
  private:
-  Eigen::PermutationMatrix<Eigen::Dynamic> P_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu_;
-  bool analyzed_ = false;
+  Eigen::VectorXi perm_;  ///< perm_[old] = new
+  int core_ = 0;          ///< unknowns in the band; the border follows
+  detail::BandLU band_;
+  Eigen::MatrixXd B_, C_, X_;  ///< border columns and rows of the band, band^-1 B
+  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
 };
 
 /// Nonlinear statics of `chain` in hinge positions (statics_natural.cpp): load stepping

@@ -14,9 +14,6 @@ namespace multibody::natural {
 namespace {
 
 constexpr int kMaxNewton = 25;
-constexpr double kTolerance = 1e-12;  ///< correction and constraints, relative to radius()
-/// A correction below this (relative to radius()) that no longer contracts is round-off.
-constexpr double kFloor = 1e-9;
 /// Smallest load increment tried, relative to one load step.
 constexpr double kSmallestIncrement = 1e-6;
 
@@ -25,7 +22,7 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
   const int N = 2 * c.n, S = c.size();
   const double kappa = c.K / (c.l * c.l);  // the springs' stiffness scale: balances the KKT matrix
   Triplets t;
-  double previous = 0.0;
+  NewtonStop stop(c.radius());
   for (int it = 1; it <= kMaxNewton; ++it) {
     t.clear();
     Vec rx = Vec::Zero(N);
@@ -57,14 +54,7 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
     if (turns_a_link_by(c, dz.head(N)) > detail::kBasin) return -1;  // left the basin
     x += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
-    // Converged below the tolerance, or at the round-off floor of the solve (it grows
-    // with n: ~1e-11 R at n = 10^4), where the corrections stop contracting although
-    // full Newton contracts them quadratically above it.
-    const bool at_floor = step <= kFloor * c.radius() && step > 0.25 * previous;
-    previous = step;
-    if ((step <= kTolerance * c.radius() || at_floor) &&
-        constraints(c, x).cwiseAbs().maxCoeff() <= kTolerance * c.radius())
-      return it;
+    if (stop.converged(step, constraints(c, x).cwiseAbs().maxCoeff())) return it;
   }
   return -1;
 }

@@ -12,7 +12,7 @@ namespace {
 using Integrator = ring::ResponseOptions::Integrator;
 
 // 10^5 steps of dt = 0.05 s (5000 s, ~1700 periods of the first mode) under the paper's
-// 20 kN step: the balance stays within 1e-9 of the largest work (measured 4.3e-13: the
+// 20 kN step: the balance stays within 1e-9 of the largest work (measured 2.7e-13: the
 // per-step round-off accumulates like a random walk, far below the bound) and the links
 // at round-off (1e-12 R). A drifting or unstable scheme would leave both bounds long
 // before the end.
@@ -31,8 +31,8 @@ TEST(MultibodyEnergyMomentumStress, HundredThousandStepsKeepTheBalance) {
 }
 
 // n = 10^4 at the smallest and the largest dt of the range (a few steps each:
-// the cost is 0.1-0.2 s per step there). Measured balance 2.0e-13 (dt = 0.001) and
-// 3.2e-15 (dt = 0.05) of the work; Newton 3.0 and 6.1 iterations per step.
+// the cost is 0.04-0.06 s per step there). Measured balance 1.5e-13 (dt = 0.001) and
+// 2.4e-13 (dt = 0.05) of the work; Newton 3.0 and 5.0 iterations per step.
 TEST(MultibodyEnergyMomentumStress, TenThousandSegmentsAtBothEndsOfTheStepRange) {
   struct Case {
     double dt, t_end;
