@@ -82,13 +82,7 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
         const Vec6 de = c.K * (t1.theta - c.theta0) * t1.d - 0.5 * Hm * dy - gm;
         J += dy * de.transpose() / ss + e / ss * (Mat6::Identity() - 2.0 * dy * dy.transpose() / ss);
       }
-      const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
-      for (int a = 0; a < 3; ++a) {
-        rx.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
-        for (int b = 0; b < 3; ++b)
-          for (int p = 0; p < 2; ++p)
-            for (int q = 0; q < 2; ++q) t.emplace_back(2 * hk[a] + p, 2 * hk[b] + q, J(2 * a + p, 2 * b + q));
-      }
+      add_spring(c, k, g, J, rx, t);
     }
     // Constraint rows and multiplier columns scaled by the inertia's diagonal so that the
     // KKT matrix is balanced (unscaled, its solve loses ~8 digits to the 1e8 ratio).

@@ -123,6 +123,16 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
     for (int a = 0; a < 2; ++a) put(c.n + 2, 2 * c.roller + a, c.nu(a));
 }
 
+void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, Triplets& t) {
+  const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
+  for (int a = 0; a < 3; ++a) {
+    r.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
+    for (int b = 0; b < 3; ++b)
+      for (int p = 0; p < 2; ++p)
+        for (int q = 0; q < 2; ++q) t.emplace_back(2 * hk[a] + p, 2 * hk[b] + q, J(2 * a + p, 2 * b + q));
+  }
+}
+
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t) {
   for (int i = 0; i < c.n; ++i) {
     const int j = (i + 1) % c.n;

@@ -61,6 +61,9 @@ Vec constraints(const Natural& c, const Vec& x);
 /// `force` when not null.
 void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool transpose, double scale,
                              Triplets& t, const Vec* lambda, Vec* force);
+/// Adds a spring's force g and Jacobian J, in the coordinates of hinge k and its
+/// neighbours (local()), to the residual r and the KKT matrix's triplets.
+void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, Triplets& t);
 /// Adds sum_i lambda_i Hess c_i (the links' constant Hessians), times `weight`.
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t);
 

@@ -32,13 +32,7 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
       const double d = tk.theta - c.theta0;
       const Vec6 g = c.K * d * tk.d;
       const Mat6 H = c.K * (tk.d * tk.d.transpose() + d * tk.dd);
-      const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
-      for (int a = 0; a < 3; ++a) {
-        rx.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
-        for (int b = 0; b < 3; ++b)
-          for (int p = 0; p < 2; ++p)
-            for (int q = 0; q < 2; ++q) t.emplace_back(2 * hk[a] + p, 2 * hk[b] + q, H(2 * a + p, 2 * b + q));
-      }
+      add_spring(c, k, g, H, rx, t);
     }
     add_constraint_curvature(c, lambda, 1.0, t);
     add_constraint_jacobian(c, x, N, true, kappa, t, &lambda, &rx);

@@ -42,6 +42,18 @@ ring::StaticOptions diametral_load(double p, int steps = 20) {
   return st;
 }
 
+/// The ring on its pin and roller pressed at its crown (90 deg) toward the centre with
+/// p = P R^2 / EI, recorded at the crown.
+ring::StaticOptions pressed_crown(double p, int steps) {
+  const ring::RingSpec spec = paper_ring();
+  ring::StaticOptions st;
+  st.load.angle = 90.0;
+  st.record = {90.0};
+  st.load.force = {0.0, -p * spec.EI() / (spec.radius * spec.radius)};
+  st.steps = steps;
+  return st;
+}
+
 ring::MultibodyOptions chain_options(int n, ring::MultibodyOptions::Method method) {
   ring::MultibodyOptions o;
   o.n = n;
@@ -185,22 +197,11 @@ namespace {
 // load factor 0.87 < 0.94, so the load did pass a maximum) onto the bottom of the ring:
 // a self-contact, which must be reported as such, naming the limit point.
 TEST(MultibodyStatics, ContinuationPassesTheLimitPointOfAPressedArch) {
-  ring::RingSpec spec;
-  spec.section.diameter = 0.12;
-  spec.supports.pin = 180.0;
-  spec.supports.roller = 0.0;
-  ring::MultibodyOptions o;
-  ring::StaticOptions st;
-  st.load.angle = 90.0;
-  st.record = {90.0};
-  const double unit = spec.EI() / (spec.radius * spec.radius);
-  st.load.force = {0.0, -7.0 * unit};
-  st.steps = 28;
-  EXPECT_NO_THROW(multibody::solve_static(spec, o, st));
-  st.load.force = {0.0, -8.0 * unit};
-  st.steps = 32;
+  const ring::RingSpec spec = paper_ring();
+  const ring::MultibodyOptions o;
+  EXPECT_NO_THROW(multibody::solve_static(spec, o, pressed_crown(7.0, 28)));
   try {
-    multibody::solve_static(spec, o, st);
+    multibody::solve_static(spec, o, pressed_crown(8.0, 32));
     FAIL() << "expected a NumericalError (self-contact past the limit point)";
   } catch (const ring::NumericalError& e) {
     const std::string w = e.what();
@@ -273,15 +274,8 @@ TEST(MultibodyStaticsSparse, TenThousandSegmentsConvergeToTheElasticaAtSecondOrd
 // (see ContinuationPassesTheLimitPointOfAPressedArch) is a NumericalError naming the
 // limit point and the dense path, not a result.
 TEST(MultibodyStaticsSparse, LimitPointIsReportedNotPassed) {
-  ring::RingSpec spec = paper_ring();
-  spec.supports.roller = 0.0;
-  ring::StaticOptions st;
-  st.load.angle = 90.0;
-  st.record = {90.0};
-  st.load.force = {0.0, -8.0 * spec.EI() / (spec.radius * spec.radius)};
-  st.steps = 32;
   try {
-    multibody::solve_static(spec, chain_options(40, Method::sparse), st);
+    multibody::solve_static(paper_ring(), chain_options(40, Method::sparse), pressed_crown(8.0, 32));
     FAIL() << "expected a NumericalError at the limit point";
   } catch (const ring::NumericalError& e) {
     const std::string w = e.what();
