@@ -158,52 +158,80 @@ Matrix Chain::mass_matrix(const Vector& q) const {
   return M;
 }
 
+namespace {
+
+/// Generalized force of point masses m at the segment midpoints with accelerations (or
+/// velocities) A_i = a0 + sum_{j<i} t_j + t_i / 2: y_j = l e'(phi_j) . (sum_{i>j} m A_i +
+/// m A_j / 2) for the angles and, for a free chain, sum_i m A_i for (x_0, y_0).
+/// `ep` holds e'(phi_j) column by column. O(n).
+Vector project_midpoints(const Eigen::Matrix2Xd& ep, const Eigen::Matrix2Xd& t, Eigen::Vector2d a0, double m,
+                         double l, bool free) {
+  const Eigen::Index n = t.cols();
+  Eigen::Matrix2Xd A(2, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    A.col(i) = a0 + 0.5 * t.col(i);
+    a0 += t.col(i);
+  }
+  Vector y(n + (free ? 2 : 0));
+  Eigen::Vector2d back = Eigen::Vector2d::Zero();  // sum_{i>j} m A_i
+  for (Eigen::Index j = n - 1; j >= 0; --j) {
+    y[j] = l * ep.col(j).dot(back + 0.5 * m * A.col(j));
+    back += m * A.col(j);
+  }
+  if (free) y.tail<2>() = back;
+  return y;
+}
+
+/// e'(phi_j) = (-sin phi_j, cos phi_j) for the n angles of q.
+Eigen::Matrix2Xd eprimes(const Vector& q, int n) {
+  Eigen::Matrix2Xd ep(2, n);
+  for (int j = 0; j < n; ++j) ep.col(j) = eprime(q[j]);
+  return ep;
+}
+
+}  // namespace
+
 Vector Chain::mass_times(const Vector& q, const Vector& v) const {
   check(q);
   check(v);
-  const int n = n_;
   // Midpoint velocities V_i = v_t + l sum_j L_ij e'(phi_j) v_j, then M v collects
   // m V_i back through the same kinematics (L^T) plus the rotary inertia.
-  Eigen::Matrix2Xd V(2, n);
-  Eigen::Vector2d acc = free_ ? Eigen::Vector2d(v.tail<2>()) : Eigen::Vector2d::Zero();
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d t = l_ * v[i] * eprime(q[i]);
-    V.col(i) = acc + 0.5 * t;
-    acc += t;
-  }
-  Vector y(dofs());
-  Eigen::Vector2d back = Eigen::Vector2d::Zero();  // sum_{i>j} m V_i
-  for (int j = n - 1; j >= 0; --j) {
-    const Eigen::Vector2d w = back + 0.5 * m_ * V.col(j);
-    y[j] = l_ * eprime(q[j]).dot(w) + jr_ * v[j];
-    back += m_ * V.col(j);
-  }
-  if (free_) y.tail<2>() = back;
+  const Eigen::Matrix2Xd ep = eprimes(q, n_);
+  Eigen::Matrix2Xd t(2, n_);
+  for (int i = 0; i < n_; ++i) t.col(i) = l_ * v[i] * ep.col(i);
+  Vector y = project_midpoints(ep, t, free_ ? Eigen::Vector2d(v.tail<2>()) : Eigen::Vector2d::Zero(), m_, l_, free_);
+  y.head(n_) += jr_ * v.head(n_);
   return y;
 }
 
 Vector Chain::quadratic_velocity(const Vector& q, const Vector& qd) const {
   check(q);
   check(qd);
-  const int n = n_;
   // Centripetal midpoint accelerations a_i = -l sum_j L_ij e(phi_j) qd_j^2, projected
   // back as in mass_times.
-  Eigen::Matrix2Xd a(2, n);
-  Eigen::Vector2d acc = Eigen::Vector2d::Zero();
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d t = -l_ * qd[i] * qd[i] * e(q[i]);
-    a.col(i) = acc + 0.5 * t;
-    acc += t;
+  const Eigen::Matrix2Xd ep = eprimes(q, n_);
+  Eigen::Matrix2Xd t(2, n_);
+  for (int i = 0; i < n_; ++i) t.col(i) = -l_ * qd[i] * qd[i] * e(q[i]);
+  return project_midpoints(ep, t, Eigen::Vector2d::Zero(), m_, l_, free_);
+}
+
+Chain::InertiaColumns Chain::inertia_columns(const Vector& q, const Vector& qd, const Matrix& V) const {
+  check(q);
+  check(qd);
+  if (V.rows() != dofs()) throw std::invalid_argument("multibody: inertia_columns needs dofs() rows");
+  const Eigen::Matrix2Xd ep = eprimes(q, n_);
+  InertiaColumns out{Matrix(dofs(), V.cols()), Matrix(dofs(), V.cols())};
+  Eigen::Matrix2Xd t(2, n_);
+  for (Eigen::Index k = 0; k < V.cols(); ++k) {
+    for (int i = 0; i < n_; ++i) t.col(i) = l_ * V(i, k) * ep.col(i);
+    out.mass.col(k) = project_midpoints(
+        ep, t, free_ ? Eigen::Vector2d(V.col(k).tail<2>()) : Eigen::Vector2d::Zero(), m_, l_, free_);
+    out.mass.col(k).head(n_) += jr_ * V.col(k).head(n_);
+    // d/dqd of -l qd_i^2 e(phi_i) along V: -2 l qd_i V_i e(phi_i); e = (cos, sin) = (ep_y, -ep_x).
+    for (int i = 0; i < n_; ++i) t.col(i) = -2.0 * l_ * qd[i] * V(i, k) * Eigen::Vector2d(ep(1, i), -ep(0, i));
+    out.velocity.col(k) = project_midpoints(ep, t, Eigen::Vector2d::Zero(), m_, l_, free_);
   }
-  Vector y(dofs());
-  Eigen::Vector2d back = Eigen::Vector2d::Zero();
-  for (int j = n - 1; j >= 0; --j) {
-    const Eigen::Vector2d w = back + 0.5 * m_ * a.col(j);
-    y[j] = l_ * eprime(q[j]).dot(w);
-    back += m_ * a.col(j);
-  }
-  if (free_) y.tail<2>() = back;
-  return y;
+  return out;
 }
 
 double Chain::kinetic_energy(const Vector& q, const Vector& qd) const {

@@ -99,7 +99,11 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (!nb.initial_acceleration(s.q, s.v, p.history.factor(s.t), s.qdd, s.lambda))
     throw std::runtime_error("multibody::respond: initial accelerations not computable");
   s.a = s.qdd;
-  if (!partitioned) detail::starting_pseudo_acceleration(p, co, response.dt, nb, s);
+  // Both integrators start from the accelerations that the first step's Newton matrix
+  // filters (starting_pseudo_acceleration): generalized-alpha's pseudo-acceleration a_0,
+  // Newmark's qdd_0 (its partitioned step reads only the independent angles' qdd_0).
+  detail::starting_pseudo_acceleration(p, co, response.dt, nb, s);
+  if (partitioned) s.qdd = s.a;
   const Eigen::Vector2d F = p.load.force;
   double work = 0.0, dissipated = 0.0, max_work = 0.0;
   Eigen::Vector2d x_load = chain.hinge_position(s.q, p.load.hinge);

@@ -22,6 +22,9 @@
 //    velocities and accelerations exactly. (Newmark with gamma = 1/2 applied to the
 //    index-3 form with multipliers is unstable: Cardona & Geradin 1989; we saw the
 //    energy grow 1000-fold in 5 s and Newton fail at t = 3.5 s with dt = 0.005.)
+//    It starts from the accelerations filtered by the first step's Newton matrix, as
+//    generalized-alpha's a_0 below (phi''_0 in the modes the step resolves; the
+//    consistent phi''_0 left +-phi''_0 oscillating in every unresolved mode).
 //  - generalized-alpha: Chung & Hulbert (1993) parameters from rho_inf, on the index-3
 //    form with multipliers, as Arnold & Bruls (2007, Multibody Syst. Dyn. 18:185):
 //    equilibrium and constraints at t_{n+1}, a pseudo-acceleration a with
@@ -35,11 +38,12 @@
 // Both solve, per Newton iteration, the saddle-point system [T G^T; G 0] with T the
 // analytic tangent of dynamics_model.hpp; rows of g and columns of lambda are scaled by
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
-// as h -> 0. (For newmark the multipliers follow from the dependent rows and the terms
-// d D / dz are left out of T, so its convergence is fast-linear: adding them exactly
-// saved iterations but cost more time than they saved.) A factorized matrix kept from the previous step
-// serves the first iteration of a step and is then refreshed; within a step it is kept
-// while each iteration shrinks the correction at least 8-fold (modified Newton).
+// as h -> 0. (For newmark the multipliers follow from the dependent rows and T gains a
+// rank-c term, the dependent rates' change with q, applied by Woodbury's formula, so its
+// Newton is quadratic too; integrators.hpp.) A factorized matrix kept from the previous
+// step serves the first iteration of a step and is then refreshed; within a step it is
+// kept while each iteration shrinks the correction at least 8-fold (modified Newton) and,
+// for newmark, while the corrections stay below 1e-3 rad.
 // Predictor: constant velocity. Convergence: correction <= tol_q (rad) and, for the
 // index-3 form, |g| <= 1e-12 R. A step whose Newton iteration fails (max_newton
 // iterations, a correction > 0.5 rad, a non-finite value) is retried once with a fresh
@@ -110,9 +114,8 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// at n = 40 with generalized-alpha, 36 ms at n = 640); sparse path O(n) per iteration
 /// (see bench/multibody/bench_dynamics.cpp for both). Mean Newton iterations per step,
 /// 20 kN scene, dt = 0.01 s, first 2 s: generalized-alpha 3.5 (n = 40), 3.35 (640,
-/// 2560, 10^4); newmark 4.2 (40), 6.0 (640), 18.9 (2560, with step halving, first 1 s):
-/// the trapezoidal rule keeps the start's huge local accelerations
-/// of the unresolved modes, which shrink Newton's basin (multibody/README.md).
+/// 2560, 10^4); newmark 3.14 (40), 3.12 (640), 3.11 (2560); over 1000 steps at n = 10^4
+/// 3.50 and 3.41 (multibody/README.md, "Newton iterations per step").
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
 /// IntegrationFailure (a ring::NumericalError) when the integration cannot continue.

@@ -44,7 +44,8 @@ struct StepOutcome {
 };
 
 /// Starting value of generalized-alpha's pseudo-acceleration a_0 (the acceleration-like
-/// sequence of Arnold & Bruls 2007; the true acceleration qdd_0 stays consistent):
+/// sequence of Arnold & Bruls 2007; the true acceleration qdd_0 stays consistent), and
+/// of Newmark's acceleration (alpha_m = alpha_f = 0: a_0 = qdd_0 there):
 ///   [S G^T; G 0] [a_0; mu] = c [f Phi - xi - C v - K theta; -Gdot v],
 /// S = c M + c' (C + dxi/dv) + tangent stiffness (springs, load, constraint curvature
 /// with the consistent multipliers): the integrator's Newton matrix at t_0 for the step h
@@ -59,7 +60,10 @@ struct StepOutcome {
 /// w_max grows like n^2, and the spurious velocity of the loaded hinge spins its segments
 /// once h^2 |qdd_0| exceeds their length: +1.6 J at n = 640, +30 J at 1280, +1.3e3 J at
 /// 2560 of T + V - W after the first step of the 20 kN scene (multibody/README.md,
-/// "Energy growth is a failure"). With this start the balance stays <= 0. Cost: one
+/// "Energy growth is a failure"). With this start the balance stays <= 0. Newmark, which
+/// does not overshoot, kept the start's +-qdd_0 in every unresolved mode (the trapezoidal
+/// rule does not damp them): its energy balance reached +1.2e-4 of the work at n = 40,
+/// and its Newton needed 4.06 iterations per step at n = 2560 instead of 3.11. Cost: one
 /// factorization of the Newton matrix (O(n) sparse, O(n^3) dense).
 void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, NewtonBackend& nb,
                                   State& s);
@@ -74,17 +78,26 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
 /// One Newmark step in the paper's reduced form (its eqs. 18-20, coordinate
 /// partitioning): the c dependent angles are the best-conditioned columns of G(q_n)
 /// (column-pivoted QR), the Newmark formulas act on the n - c independent angles z, and
-/// the dependent ones follow from g(q) = 0 at every iteration, their velocities and
-/// accelerations from G v = 0 and G qdd + Gdot v = 0. The equations are D^T r = 0 with
-/// D = [I; -G_y^{-1} G_z]; the Newton matrix is D^T T D with T the full tangent of
-/// step_index3 and lambda = -G_y^{-T} r_y. The terms d D/dz of the dependent rates, of
-/// order v and h, are left out (convergence fast-linear): added exactly (rank 2c,
-/// Woodbury) they saved 17-25 % of the iterations but cost 30-40 % more wall time per
-/// run on both paths (multibody/README.md, "Newton iterations per step"). Constraints hold to
-/// round-off at the positions, velocities and accelerations; no multiplier oscillates,
-/// which is what makes the trapezoidal rule stable here (applied to the index-3 form it
-/// is not: Cardona & Geradin 1989). Cost per iteration: as step_index3, plus O(n) for
-/// the dependent angles.
+/// the dependent velocities and accelerations follow from G v = 0 and
+/// G qdd + Gdot v = 0 (their positions from g(q) = 0 at convergence). The equations are
+/// D^T r = 0, D = [I; -G_y^{-1} G_z], with lambda = -G_y^{-T} r_y. Newton runs on all
+/// angles and lambda with g(q) as a residual, on the saddle-point matrix of step_index3,
+/// made exact by a rank-c term: with E the dependent columns of the identity,
+///   J = T + M(q) E V^T,  V^T = -G_y^{-1} [c G + Hess_g qdd - G diag(v^2) + 2 c' H_v + 2 (H_v E) V_v^T],
+///   V_v^T = -G_y^{-1} [c' G + H_v],  H_v = Hess_g diag(v)
+/// (c = 1 / (beta h^2), c' = gamma / (beta h); the dependent accelerations' change with q
+/// that T's c I leaves out). It is applied by Woodbury's formula: c extra solves with each
+/// factorization, O(c n) per iteration. (The dependent velocities' share, (dxi/dv + C) E
+/// V_v^T, is left out: measured, it changes no iteration count.) The rank-c term grows
+/// like n, since three angles close a loop of n segments: without it Newton was linear
+/// and took 6.0 iterations per step at n = 640 and 19 at 2560. Its first iteration
+/// applies Newmark's formulas to every angle, as the index-3 form does (no dependent
+/// rates): from the predictor the partitioned equations are far from linear at large n
+/// (at n = 10^4 their first correction did not shrink the second), the index-3 ones are
+/// not. Constraints hold to round-off at the end (positions by solve_dependent,
+/// velocities and accelerations by construction); no multiplier oscillates, which is what
+/// makes the trapezoidal rule stable here (applied to the index-3 form it is not: Cardona
+/// & Geradin 1989). Cost per iteration: as step_index3, plus O(c n).
 StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
                              const IntegrationControls& ctl, NewtonBackend& nb, State& s1);
 

@@ -75,9 +75,13 @@ std::vector<double> modal_response(double w, double f, const std::vector<double>
   }
   const ring::LoadHistory& g = r.load.history;
   double xn = 0.0, vn = 0.0, qdd = f * g.factor(0.0), a = qdd;
-  if (r.integrator == Integrator::generalized_alpha && t.size() > 1) {
+  if (t.size() > 1) {
+    // Both integrators start from the acceleration filtered by the first step's Newton
+    // matrix (multibody/dynamics.cpp): generalized-alpha's pseudo-acceleration, Newmark's
+    // acceleration.
     const double h = t[1] - t[0], c = (1.0 - am) / ((1.0 - af) * beta * h * h);
     a = c * qdd / (c + w * w);
+    if (r.integrator == Integrator::newmark) qdd = a;
   }
   x[0] = 0.0;
   for (size_t i = 1; i < t.size(); ++i) {
