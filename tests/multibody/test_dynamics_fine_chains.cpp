@@ -64,9 +64,10 @@ TEST(MultibodyDynamicsFineChains, GeneralizedAlphaDoesNotGainEnergy) {
 // time-discretization errors, each estimated as the change of its peak when dt is
 // halved (0.01 -> 0.005 s; under a step load the convergence is not yet monotone, so no
 // Richardson factor is applied). Measured peaks (m): generalized-alpha 3.03622 (dt =
-// 0.01), 3.04008 (0.005), 3.03892 (0.0025); newmark 3.03369, 3.03938, 3.03923. The
-// difference at dt = 0.01, 2.5e-3 m, against the error sum 9.5e-3 m. The consistent
-// start gave 3.485 m.
+// 0.01), 3.04008 (0.005), 3.03892 (0.0025); newmark 3.0355, 3.0401 (3.03369, 3.03938
+// when it started from the consistent acceleration). The difference at dt = 0.01,
+// 7e-4 m, against the error sum 8.5e-3 m. Generalized-alpha's consistent start gave
+// 3.485 m.
 TEST(MultibodyDynamicsFineChains, FirstPeakAt1280AgreesWithNewmark) {
   const ring::RingSpec spec = mbtest::paper_ring();
   auto peak = [&](Integrator integ, double dt) {
