@@ -337,6 +337,32 @@ Matrix Chain::constraint_jacobian(const Vector& q) const {
   return J;
 }
 
+Chain::ConstraintKinematics Chain::constraint_kinematics(const Vector& q) const {
+  check(q);
+  const int c = constraint_count();
+  ConstraintKinematics k{Vector(c), Matrix::Zero(c, dofs()), Matrix::Zero(c, dofs())};
+  // The same operations as closure(), roller() and their Jacobians: g sums the unit
+  // vectors e(phi_j) (closure) and the hinge positions (roller); each constraint is a sum
+  // of l (a cos phi_j + b sin phi_j), so its second derivative is minus that term.
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero(), p = base(q);
+  for (int j = 0; j < n_; ++j) {
+    const Eigen::Vector2d u = e(q[j]), d = l_ * eprime(q[j]);
+    if (roller_ && j == *roller_) k.g[2] = roller_normal_.dot(p - hinge_rest(0));
+    sum += u;
+    p += l_ * u;
+    k.G.col(j).head<2>() = d;
+    k.hess.col(j).head<2>() = -l_ * u;
+    if (roller_ && j < *roller_) {
+      k.G(2, j) = d.dot(roller_normal_);
+      k.hess(2, j) = -l_ * u.dot(roller_normal_);
+    }
+  }
+  if (roller_ && *roller_ == n_) k.g[2] = roller_normal_.dot(p - hinge_rest(0));
+  k.g.head<2>() = l_ * sum;
+  if (roller_ && free_) k.G.row(2).tail<2>() = roller_normal_.transpose();
+  return k;
+}
+
 Vector Chain::constraint_jdot_qdot(const Vector& q, const Vector& qd) const {
   Vector g(constraint_count());
   g.head<2>() = closure_jdot_qdot(q, qd);

@@ -152,6 +152,14 @@ class Chain {
   /// All constraints stacked (closure x, closure y[, roller]). O(n).
   Vector constraints(const Vector& q) const;
   Matrix constraint_jacobian(const Vector& q) const;  ///< constraint_count() x dofs. O(n).
+  /// constraints(q), constraint_jacobian(q) and the constraints' Hessians, which are
+  /// diagonal (hess(i, j) = d^2 g_i / d phi_j^2; zero in x_0, y_0), with one evaluation
+  /// of the n sines and cosines. O(n).
+  struct ConstraintKinematics {
+    Vector g;
+    Matrix G, hess;
+  };
+  ConstraintKinematics constraint_kinematics(const Vector& q) const;
   Vector constraint_jdot_qdot(const Vector& q, const Vector& qd) const;  ///< O(n).
 
  private:

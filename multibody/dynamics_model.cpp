@@ -41,6 +41,10 @@ void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Ve
 
 Kinematic evaluate(const Chain& chain, const Vector& q, bool values, bool hessian) {
   Kinematic k;
+  if (values && hessian) {  // one pass of sines and cosines for all three
+    Chain::ConstraintKinematics ck = chain.constraint_kinematics(q);
+    return {std::move(ck.G), std::move(ck.g), std::move(ck.hess)};
+  }
   k.G = chain.constraint_jacobian(q);
   if (values) k.g = chain.constraints(q);
   if (!hessian) return k;

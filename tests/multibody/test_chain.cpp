@@ -144,6 +144,31 @@ TEST(MultibodyChain, ForcesAndJacobiansByFiniteDifferences) {
   EXPECT_LT(std::abs(c.roller(c.q0())), 1e-12 * c.l());
 }
 
+// constraint_kinematics (one pass of sines and cosines) against the separate functions,
+// bit for bit (the same operations), and its Hessians against central differences of
+// constraint_jacobian: pinned with a roller, and free (closure only, x_0 and y_0 as
+// unknowns).
+TEST(MultibodyChain, ConstraintKinematicsInOnePass) {
+  for (bool pinned : {true, false}) {
+    ring::RingSpec s = paper_ring(pinned);
+    if (pinned) s.supports.roller = 0.0;
+    const Chain c(s, opts(10));
+    ASSERT_EQ(c.constraint_count(), pinned ? 3 : 2);
+    ASSERT_EQ(c.dofs(), pinned ? 10 : 12);
+    const Vector q = perturbed(c, 31);
+    const Chain::ConstraintKinematics k = c.constraint_kinematics(q);
+    EXPECT_EQ(k.g, c.constraints(q));
+    EXPECT_EQ(k.G, c.constraint_jacobian(q));
+    Matrix H(c.constraint_count(), c.dofs());
+    for (int j = 0; j < c.dofs(); ++j) {
+      Vector dq = Vector::Zero(c.dofs());
+      dq[j] = kH;
+      H.col(j) = (c.constraint_jacobian(q + dq).col(j) - c.constraint_jacobian(q - dq).col(j)) / (2 * kH);
+    }
+    EXPECT_LT((k.hess - H).norm(), kFd * H.norm()) << (pinned ? "pinned" : "free");
+  }
+}
+
 TEST(MultibodyChain, RejectsWhatCanNeverWork) {
   EXPECT_THROW(Chain(paper_ring(), opts(3)), std::invalid_argument);
   ring::RingSpec s = paper_ring();
