@@ -259,6 +259,21 @@ bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
   return x.allFinite() && y.allFinite();
 }
 
+bool SparseSaddle::solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Matrix& Y) const {
+  const Eigen::Index n = T_.size(), c = G_.rows(), k = B.cols();
+  Matrix u = Matrix::Zero(order_, k), e = Matrix::Zero(2 + c, k);
+  for (Eigen::Index j = 0; j < n; ++j) u.row(j * stride_ + dq0_) = B.row(j);
+  e.bottomRows(c) = D;
+  if (!u.allFinite() || !e.allFinite()) return false;
+  band_.solve_many(u.data(), order_, k);
+  const Matrix w = schur_.solve(e - C_ * u);
+  u.noalias() -= X_ * w;
+  X.resize(n, k);
+  for (Eigen::Index j = 0; j < n; ++j) X.row(j) = u.row(j * stride_ + dq0_);
+  Y = w.bottomRows(c);
+  return X.allFinite() && Y.allFinite();
+}
+
 ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& p, double l, int min_gap,
                                      double reach) {
   const int n = static_cast<int>(p.cols());

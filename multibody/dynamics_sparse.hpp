@@ -96,6 +96,10 @@ class SparseSaddle {
   /// Solves [T sc G^T; sc G 0] [x; y] = [b; d] with `refinements` steps of iterative
   /// refinement against the exact product. False on a non-finite result.
   bool solve(const Vector& b, const Vector& d, Vector& x, Vector& y, int refinements = 0) const;
+  /// The same for the k columns of [B; D] at once, without refinement. False on a
+  /// non-finite result.
+  bool solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Matrix& Y) const;
+  Eigen::Index constraints() const { return G_.rows(); }  ///< c
   /// Entries placed in the banded core and border (bench counter), doubles stored by the band.
   long nonzeros() const { return nnz_; }
   long factor_nonzeros() const;

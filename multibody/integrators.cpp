@@ -227,13 +227,9 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   auto prepare_correction = [&] {
     Matrix E = Matrix::Zero(n, c);
     for (int i = 0; i < c; ++i) E(dep[i], i) = 1.0;
-    const Matrix U = ch.inertia_columns(q, v, E).mass;
-    Vector yq, yl;
-    for (int i = 0; i < c; ++i) {
-      if (!nb.solve(U.col(i), Vector::Zero(c), yq, yl)) return false;
-      Yq.col(i) = -yq;
-      Yl.col(i) = -yl;
-    }
+    if (!nb.solve_columns(ch.inertia_columns(q, v, E).mass, Yq, Yl)) return false;
+    Yq = -Yq;
+    Yl = -Yl;
     have_y = true;
     return true;
   };

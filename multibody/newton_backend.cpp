@@ -82,6 +82,16 @@ class DenseBackend final : public NewtonBackend {
     return true;
   }
 
+  bool solve_columns(const Matrix& R, Matrix& DQ, Matrix& DL) const override {
+    const Eigen::Index n = R.rows(), c = lu_.rows() - n;
+    Matrix rhs = Matrix::Zero(n + c, R.cols());
+    rhs.topRows(n) = -R;
+    const Matrix x = lu_.solve(rhs);
+    DQ = x.topRows(n);
+    DL = sc_ * x.bottomRows(c);
+    return DQ.allFinite() && DL.allFinite();
+  }
+
  private:
   Inertia inertia_;
   Matrix K_, C_, T_;
@@ -147,6 +157,12 @@ class StructuredBackend final : public NewtonBackend {
   bool solve(const Vector& r, const Vector& g, Vector& dq, Vector& dl) const override {
     if (!slu_.solve(-r, -sc_ * g, dq, dl)) return false;
     dl *= sc_;
+    return true;
+  }
+
+  bool solve_columns(const Matrix& R, Matrix& DQ, Matrix& DL) const override {
+    if (!slu_.solve_columns(-R, Matrix::Zero(slu_.constraints(), R.cols()), DQ, DL)) return false;
+    DL *= sc_;
     return true;
   }
 

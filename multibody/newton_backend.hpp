@@ -50,6 +50,8 @@ class NewtonBackend {
   virtual bool factor(const Matrix& G, double l, double h) = 0;
   /// The Newton correction with the kept factorization. False on a non-finite result.
   virtual bool solve(const Vector& r, const Vector& g, Vector& dq, Vector& dl) const = 0;
+  /// solve() for the columns of R with g = 0, all at once. False on a non-finite result.
+  virtual bool solve_columns(const Matrix& R, Matrix& DQ, Matrix& DL) const = 0;
 
   /// A factorization for steps of size h is kept.
   bool usable(double h) const { return valid_ && h == h_; }
