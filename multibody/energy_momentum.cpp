@@ -1,8 +1,6 @@
 // The energy-momentum integrator in natural coordinates (energy_momentum.hpp).
 #include "multibody/energy_momentum.hpp"
 
-#include <Eigen/Sparse>
-
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -40,11 +38,9 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
   const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
   const double kappa = cm * (s + r);
   Step out;
-  Triplets t;
-  t.reserve(static_cast<std::size_t>(c.n) * 60);
   NewtonStop stop(c.radius());
   for (int it = 1; it <= kMaxNewton; ++it) {
-    t.clear();
+    kkt.clear();
     const Vec xm = 0.5 * (x0 + x1);
     // Inertia: (2/h^2) M (x1 - x0 - h v0).
     Vec rx = cm * mass_times(c, x1 - x0 - h * v0);
@@ -52,14 +48,14 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
     for (int i = 0; i < c.n; ++i) {
       const int j = (i + 1) % c.n;
       for (int a = 0; a < 2; ++a) {
-        t.emplace_back(2 * i + a, 2 * i + a, cm * (s + r));
-        t.emplace_back(2 * j + a, 2 * j + a, cm * (s + r));
-        t.emplace_back(2 * i + a, 2 * j + a, cm * (s - r));
-        t.emplace_back(2 * j + a, 2 * i + a, cm * (s - r));
+        kkt.add(2 * i + a, 2 * i + a, cm * (s + r));
+        kkt.add(2 * j + a, 2 * j + a, cm * (s + r));
+        kkt.add(2 * i + a, 2 * j + a, cm * (s - r));
+        kkt.add(2 * j + a, 2 * i + a, cm * (s - r));
       }
     }
     // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = 1/2 sum lambda_i Hess c_i.
-    add_constraint_curvature(c, lambda, 0.5, t);
+    add_constraint_curvature(c, lambda, 0.5, kkt);
     // Springs: each one's discrete gradient and its exact Jacobian in y1.
     for (int k = 0; k < c.n; ++k) {
       const Vec6 y0 = local(c, x0, k), y1 = local(c, x1, k), dy = y1 - y0;
@@ -82,17 +78,15 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
         const Vec6 de = c.K * (t1.theta - c.theta0) * t1.d - 0.5 * Hm * dy - gm;
         J += dy * de.transpose() / ss + e / ss * (Mat6::Identity() - 2.0 * dy * dy.transpose() / ss);
       }
-      add_spring(c, k, g, J, rx, t);
+      add_spring(c, k, g, J, rx, kkt);
     }
     // Constraint rows and multiplier columns scaled by the inertia's diagonal so that the
     // KKT matrix is balanced (unscaled, its solve loses ~8 digits to the 1e8 ratio).
-    add_constraint_jacobian(c, xm, N, true, kappa, t, &lambda, &rx);  // G(xm)^T as columns
-    add_constraint_jacobian(c, x1, N, false, kappa, t, nullptr, nullptr);  // G(x1) as rows
+    add_constraint_jacobian(c, xm, N, true, kappa, kkt, &lambda, &rx);  // G(xm)^T as columns
+    add_constraint_jacobian(c, x1, N, false, kappa, kkt, nullptr, nullptr);  // G(x1) as rows
     Vec rhs(S);
     rhs << -rx, -kappa * constraints(c, x1);
-    Eigen::SparseMatrix<double> A(S, S);
-    A.setFromTriplets(t.begin(), t.end());
-    if (!kkt.factor(A)) return out;
+    if (!kkt.factor()) return out;
     const Vec dz = kkt.solve(rhs);
     if (!dz.allFinite()) return out;
     x1 += dz.head(N);

@@ -5,7 +5,8 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
+
+#include <cassert>
 
 #include <vector>
 
@@ -19,7 +20,6 @@ namespace multibody::natural {
 using Vec = Eigen::VectorXd;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Triplets = std::vector<Eigen::Triplet<double>>;
 
 /// The chain in hinge positions.
 struct Natural {
@@ -56,16 +56,88 @@ double spring_energy(const Natural& c, const Vec& x);
 Vec mass_times(const Natural& c, const Vec& v);
 /// Constraint values (rows: links, pin x, pin y, roller). O(n).
 Vec constraints(const Natural& c, const Vec& x);
+/// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
+/// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
+/// border: hinges 2 .. n-2 and their links in chain order, then hinges n-1, 0, 1 (the
+/// spring at hinge 0 couples n-1 with 1 and closes the cycle), links n-1 and 0, the pin
+/// and roller rows. An LU in this order (with pivoting inside the band) fills only the
+/// band and the border's rows and columns: O(n) memory and time, whatever the pivots.
+/// perm[old] = new. Needs n >= 4.
+struct BandedOrder {
+  Eigen::VectorXi perm;  ///< perm[old] = new
+  int band = 0;          ///< unknowns in the band; the border follows
+};
+BandedOrder banded_order(const Natural& c);
+
+/// The chain's KKT matrix (unknowns as in banded_order's comment), assembled straight
+/// into its factorization's storage and factored in banded_order: the band by LAPACK's
+/// banded LU with partial pivoting (detail::BandLU), the border by its Schur complement.
+/// O(n) time and memory per assembly, factorization and solve, whatever the pivots. (A
+/// general sparse LU with a fill-reducing ordering such as COLAMD ignores the pivoting
+/// that a weak diagonal forces, as the statics' KKT matrix has: its fill grew far beyond
+/// O(n), minutes per factorization at n = 10^4; Eigen's SparseLU in this order is O(n)
+/// but its supernodal overhead costs ~7x the band LU at this bandwidth.)
+///
+/// The storage follows the KKT matrix's structural pattern (kkt_pattern in natural.cpp:
+/// a spring couples hinges k-1, k, k+1; link i couples hinges i, i+1 with its
+/// multiplier; the pin and roller rows couple their hinge), fixed at construction: the
+/// band's widths, the border columns with entries in the band (the only ones solved
+/// for), the band columns that border rows reach. Usage, per Newton iteration:
+///   kkt.clear(); kkt.add(i, j, v) ...; if (kkt.factor()) dz = kkt.solve(rhs);
+class BandedKkt {
+ public:
+  explicit BandedKkt(const Natural& c);
+  /// Zero matrix (before assembly). O(n).
+  void clear();
+  /// A(i, j) += v, i and j in the natural order (hinge coordinates, then multipliers);
+  /// (i, j) must be in the structural pattern. O(1).
+  void add(int i, int j, double v) {
+    const int r = perm_[i], col = perm_[j];
+    if (r < core_ && col < core_) {
+      assert(col - r <= ku_ && r - col <= kl_);
+      band_.at(r, col) += v;
+    } else if (r < core_) {
+      assert(solved_[col - core_] >= 0);
+      X_(r, solved_[col - core_]) += v;
+    } else if (col < core_) {
+      assert(reached_[col] >= 0);
+      C_(r - core_, reached_[col]) += v;
+    } else {
+      D_(r - core_, col - core_) += v;
+    }
+  }
+  /// Factors the assembled matrix (which it overwrites); false if the factorization fails
+  /// (a zero pivot of the band or a singular border).
+  bool factor();
+  /// A^-1 rhs with the last factorization.
+  Vec solve(const Vec& rhs) const;
+
+ private:
+  Eigen::VectorXi perm_;      ///< perm_[old] = new
+  int core_ = 0;              ///< unknowns in the band; the border follows
+  int kl_ = 0, ku_ = 0;       ///< the band's lower and upper widths
+  Eigen::VectorXi solved_;    ///< per border unknown: its column in X_, or -1 (no entries in the band)
+  Eigen::VectorXi border_of_; ///< per column of X_: its border unknown
+  Eigen::VectorXi reached_;   ///< per band unknown: its column in C_, or -1 (no border row reaches it)
+  Eigen::VectorXi band_of_;   ///< per column of C_: its band unknown
+  detail::BandLU band_;
+  /// The border's columns in the band (B, then band^-1 B after factor()), the border
+  /// rows on the band columns they reach (C), the border block (D, then its Schur
+  /// complement D - C band^-1 B).
+  Eigen::MatrixXd X_, C_, D_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
+};
+
 /// Adds the constraint gradients G(x), times `scale`, to a KKT matrix whose multipliers
 /// start at `offset`: as columns (G^T, `transpose`) or as rows; adds G(x)^T lambda to
 /// `force` when not null.
 void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool transpose, double scale,
-                             Triplets& t, const Vec* lambda, Vec* force);
+                             BandedKkt& kkt, const Vec* lambda, Vec* force);
 /// Adds a spring's force g and Jacobian J, in the coordinates of hinge k and its
-/// neighbours (local()), to the residual r and the KKT matrix's triplets.
-void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, Triplets& t);
+/// neighbours (local()), to the residual r and the KKT matrix.
+void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt);
 /// Adds sum_i lambda_i Hess c_i (the links' constant Hessians), times `weight`.
-void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t);
+void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, BandedKkt& kkt);
 
 /// The largest change of a link's direction that the position correction dx makes,
 /// |dx_{k+1} - dx_k| / l (rad, to first order): compared with detail::kBasin, as the
@@ -85,39 +157,6 @@ class NewtonStop {
 
  private:
   double R_, previous_ = 0.0;
-};
-
-/// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
-/// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
-/// border: hinges 2 .. n-2 and their links in chain order, then hinges n-1, 0, 1 (the
-/// spring at hinge 0 couples n-1 with 1 and closes the cycle), links n-1 and 0, the pin
-/// and roller rows. An LU in this order (with pivoting inside the band) fills only the
-/// band and the border's rows and columns: O(n) memory and time, whatever the pivots.
-/// perm[old] = new. Needs n >= 4.
-Eigen::VectorXi banded_order(const Natural& c);
-
-/// The chain's KKT matrix (unknowns as in banded_order's comment) factored in
-/// banded_order: the band (hinges 2 .. n-2 and their links) by LAPACK's banded LU with
-/// partial pivoting (detail::BandLU), the border of banded_order (<= 11 unknowns) by its
-/// Schur complement. O(n) time and memory per factorization and solve, whatever the
-/// pivots. (A general sparse LU with a fill-reducing ordering such as COLAMD ignores the
-/// pivoting that a weak diagonal forces, as the statics' KKT matrix has: its fill grew far
-/// beyond O(n), minutes per factorization at n = 10^4; Eigen's SparseLU in this order is
-/// O(n) but its supernodal overhead costs ~7x the band LU at this bandwidth.)
-class BandedKkt {
- public:
-  explicit BandedKkt(const Natural& c);
-  /// False if the factorization fails (a zero pivot of the band or a singular border).
-  bool factor(const Eigen::SparseMatrix<double>& A);
-  /// A^-1 rhs with the last factorization.
-  Vec solve(const Vec& rhs) const;
-
- private:
-  Eigen::VectorXi perm_;  ///< perm_[old] = new
-  int core_ = 0;          ///< unknowns in the band; the border follows
-  detail::BandLU band_;
-  Eigen::MatrixXd B_, C_, X_;  ///< border columns and rows of the band, band^-1 B
-  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
 };
 
 /// Nonlinear statics of `chain` in hinge positions (statics_natural.cpp): load stepping
