@@ -161,16 +161,16 @@ BandedOrder banded_order(const Natural& c) {
     perm(2 * k) = next++;
     perm(2 * k + 1) = next++;
   };
-  for (int k = 2; k <= c.n - 2; ++k) {
+  for (int k = 1; k <= c.n - 2; ++k) {
     perm(N + k - 1) = next++;  // link k-1, between hinges k-1 and k
     put_hinge(k);
   }
   perm(N + c.n - 2) = next++;  // link n-2
-  for (int k : {c.n - 1, 0, 1}) put_hinge(k);
+  const int band = next;
+  for (int k : {c.n - 1, 0}) put_hinge(k);
   perm(N + c.n - 1) = next++;
-  perm(N) = next++;
   for (int row = c.n; row < c.rows(); ++row) perm(N + row) = next++;  // pin, roller
-  return {perm, c.size() - (8 + c.rows() - c.n)};
+  return {perm, band};
 }
 
 bool NewtonStop::converged(double step, double constraint) {

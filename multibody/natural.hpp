@@ -58,11 +58,15 @@ Vec mass_times(const Natural& c, const Vec& v);
 Vec constraints(const Natural& c, const Vec& x);
 /// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
 /// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
-/// border: hinges 2 .. n-2 and their links in chain order, then hinges n-1, 0, 1 (the
-/// spring at hinge 0 couples n-1 with 1 and closes the cycle), links n-1 and 0, the pin
-/// and roller rows. An LU in this order (with pivoting inside the band) fills only the
-/// band and the border's rows and columns: O(n) memory and time, whatever the pivots.
-/// perm[old] = new. Needs n >= 4.
+/// border. The band: link 0, hinge 1, link 1, hinge 2, ..., link n-3, hinge n-2, link n-2
+/// (chain order; lower and upper widths 7, from the springs, which couple hinge k with
+/// k +- 2). The border: hinges n-1 and 0 (the two hinges that close the cycle: every
+/// spring and link that wraps around touches one of them), link n-1 and the pin's two
+/// rows (which couple only these two hinges), the roller's row. Only the border's four
+/// hinge coordinates and the roller's row have entries in the band, so only five
+/// columns are solved for in the Schur complement. An LU in this order (with pivoting
+/// inside the band) fills only the band and the border's rows and columns: O(n) memory
+/// and time, whatever the pivots. Needs n >= 4.
 struct BandedOrder {
   Eigen::VectorXi perm;  ///< perm[old] = new
   int band = 0;          ///< unknowns in the band; the border follows
