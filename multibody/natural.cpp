@@ -255,7 +255,7 @@ void BandedKkt::clear() {
 
 bool BandedKkt::factor() {
   if (!band_.factor()) return false;
-  band_.solve_many(X_.data(), core_, X_.cols());
+  band_.solve_rows(X_.data(), static_cast<int>(X_.cols()));
   // D - C band^-1 B on the band columns that C reaches.
   Eigen::MatrixXd Xr(band_of_.size(), X_.cols());
   for (Eigen::Index q = 0; q < band_of_.size(); ++q) Xr.row(q) = X_.row(band_of_[q]);

@@ -127,8 +127,9 @@ class BandedKkt {
   detail::BandLU band_;
   /// The border's columns in the band (B, then band^-1 B after factor()), the border
   /// rows on the band columns they reach (C), the border block (D, then its Schur
-  /// complement D - C band^-1 B).
-  Eigen::MatrixXd X_, C_, D_;
+  /// complement D - C band^-1 B); X_ by rows, as BandLU::solve_rows takes it.
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> X_;
+  Eigen::MatrixXd C_, D_;
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
 };
 
