@@ -39,6 +39,12 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
   const double kappa = cm * (s + r);
   Step out;
   NewtonStop stop(c.radius());
+  // The springs' energies at x0 (constant over the iterations).
+  std::vector<double> V0(c.n);
+  for (int k = 0; k < c.n; ++k) {
+    const double d0 = turn_angle(local(c, x0, k)) - c.theta0;
+    V0[k] = 0.5 * c.K * d0 * d0;
+  }
   for (int it = 1; it <= kMaxNewton; ++it) {
     kkt.clear();
     const Vec xm = 0.5 * (x0 + x1);
@@ -66,14 +72,13 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
       Vec6 g = gm;
       Mat6 J = 0.5 * Hm;
       const double ss = dy.squaredNorm();
-      const Turn t1 = turn(y1), t0 = turn(y0);
+      const Turn t1 = turn(y1, false);
       const double V1 = 0.5 * c.K * (t1.theta - c.theta0) * (t1.theta - c.theta0);
-      const double V0 = 0.5 * c.K * (t0.theta - c.theta0) * (t0.theta - c.theta0);
-      const double e = V1 - V0 - gm.dot(dy);
+      const double e = V1 - V0[k] - gm.dot(dy);
       // The correction only where e is resolved above its round-off; elsewhere it would
       // be noise (and its Jacobian noise / |dy|^2), and leaving it out costs an energy
       // error below kResolved eps V per spring and step.
-      if (ss > 0 && std::abs(e) > kResolved * kEps * (std::abs(V0) + std::abs(V1) + std::abs(gm.dot(dy)))) {
+      if (ss > 0 && std::abs(e) > kResolved * kEps * (std::abs(V0[k]) + std::abs(V1) + std::abs(gm.dot(dy)))) {
         g += e / ss * dy;
         const Vec6 de = c.K * (t1.theta - c.theta0) * t1.d - 0.5 * Hm * dy - gm;
         J += dy * de.transpose() / ss + e / ss * (Mat6::Identity() - 2.0 * dy * dy.transpose() / ss);

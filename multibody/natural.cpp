@@ -35,7 +35,12 @@ Vec rest(const Chain& chain) {
   return x;
 }
 
-Turn turn(const Vec6& y) {
+double turn_angle(const Vec6& y) {
+  const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
+}
+
+Turn turn(const Vec6& y, bool hessian) {
   const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
   // Explicit return types: an `auto` lambda would return an expression that refers to a
   // destroyed temporary.
@@ -49,9 +54,13 @@ Turn turn(const Vec6& y) {
     return h / s2;
   };
   Turn t;
-  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
+  t.theta = turn_angle(y);
   const Eigen::Vector2d ga = grad_angle(a), gb = grad_angle(b);
   t.d << ga, -ga - gb, gb;
+  if (!hessian) {
+    t.dd.setZero();
+    return t;
+  }
   const Eigen::Vector3d pa(-1, 1, 0), pb(0, -1, 1);
   const Eigen::Matrix2d ha = hess_angle(a), hb = hess_angle(b);
   for (int i = 0; i < 3; ++i)
@@ -68,7 +77,7 @@ Vec6 local(const Natural& c, const Vec& x, int k) {
 double spring_energy(const Natural& c, const Vec& x) {
   double V = 0.0;
   for (int k = 0; k < c.n; ++k) {
-    const double d = turn(local(c, x, k)).theta - c.theta0;
+    const double d = turn_angle(local(c, x, k)) - c.theta0;
     V += 0.5 * c.K * d * d;
   }
   return V;
@@ -125,12 +134,13 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
 
 void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt) {
   const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
+  int dofs[6];
   for (int a = 0; a < 3; ++a) {
     r.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
-    for (int b = 0; b < 3; ++b)
-      for (int p = 0; p < 2; ++p)
-        for (int q = 0; q < 2; ++q) kkt.add(2 * hk[a] + p, 2 * hk[b] + q, J(2 * a + p, 2 * b + q));
+    dofs[2 * a] = 2 * hk[a];
+    dofs[2 * a + 1] = 2 * hk[a] + 1;
   }
+  kkt.add(dofs, J);
 }
 
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, BandedKkt& kkt) {

@@ -48,7 +48,10 @@ struct Turn {
   Vec6 d;
   Mat6 dd;
 };
-Turn turn(const Vec6& y);
+/// The turning angle, its gradient and, if `hessian` (else zero), its Hessian.
+Turn turn(const Vec6& y, bool hessian = true);
+/// The turning angle alone (the same value as turn(y).theta).
+double turn_angle(const Vec6& y);
 /// The six coordinates of hinge k and its neighbours.
 Vec6 local(const Natural& c, const Vec& x, int k);
 double spring_energy(const Natural& c, const Vec& x);
@@ -95,8 +98,25 @@ class BandedKkt {
   void clear();
   /// A(i, j) += v, i and j in the natural order (hinge coordinates, then multipliers);
   /// (i, j) must be in the structural pattern. O(1).
-  void add(int i, int j, double v) {
-    const int r = perm_[i], col = perm_[j];
+  void add(int i, int j, double v) { add_permuted(perm_[i], perm_[j], v); }
+  /// A(dofs[a], dofs[b]) += block(a, b) for all a, b: add() with each unknown mapped
+  /// once.
+  template <int K>
+  void add(const int (&dofs)[K], const Eigen::Matrix<double, K, K>& block) {
+    int p[K];
+    for (int a = 0; a < K; ++a) p[a] = perm_[dofs[a]];
+    for (int b = 0; b < K; ++b)
+      for (int a = 0; a < K; ++a) add_permuted(p[a], p[b], block(a, b));
+  }
+  /// Factors the assembled matrix (which it overwrites); false if the factorization fails
+  /// (a zero pivot of the band or a singular border).
+  bool factor();
+  /// A^-1 rhs with the last factorization.
+  Vec solve(const Vec& rhs) const;
+
+ private:
+  /// A(r, col) += v in banded_order's numbering.
+  void add_permuted(int r, int col, double v) {
     if (r < core_ && col < core_) {
       assert(col - r <= ku_ && r - col <= kl_);
       band_.at(r, col) += v;
@@ -110,13 +130,7 @@ class BandedKkt {
       D_(r - core_, col - core_) += v;
     }
   }
-  /// Factors the assembled matrix (which it overwrites); false if the factorization fails
-  /// (a zero pivot of the band or a singular border).
-  bool factor();
-  /// A^-1 rhs with the last factorization.
-  Vec solve(const Vec& rhs) const;
 
- private:
   Eigen::VectorXi perm_;      ///< perm_[old] = new
   int core_ = 0;              ///< unknowns in the band; the border follows
   int kl_ = 0, ku_ = 0;       ///< the band's lower and upper widths
