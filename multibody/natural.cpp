@@ -85,7 +85,13 @@ double spring_energy(const Natural& c, const Vec& x) {
 
 /// M x for the constant bar mass matrix: per bar (m/4) [1 1; 1 1] + (Jr/l^2) [1 -1; -1 1].
 Vec mass_times(const Natural& c, const Vec& v) {
-  Vec out = Vec::Zero(2 * c.n);
+  Vec out;
+  mass_times(c, v, out);
+  return out;
+}
+
+void mass_times(const Natural& c, const Vec& v, Vec& out) {
+  out.setZero(2 * c.n);
   const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
   for (int i = 0; i < c.n; ++i) {
     const int j = (i + 1) % c.n;
@@ -93,19 +99,23 @@ Vec mass_times(const Natural& c, const Vec& v) {
     out.segment<2>(2 * i) += s * (a + b) + r * (a - b);
     out.segment<2>(2 * j) += s * (a + b) + r * (b - a);
   }
-  return out;
 }
 
 /// Constraint values at x (rows: links, pin x, pin y, roller).
 Vec constraints(const Natural& c, const Vec& x) {
-  Vec g(c.rows());
+  Vec g;
+  constraints(c, x, g);
+  return g;
+}
+
+void constraints(const Natural& c, const Vec& x, Vec& g) {
+  g.resize(c.rows());
   for (int i = 0; i < c.n; ++i) {
     const Eigen::Vector2d e = hinge(x, (i + 1) % c.n) - hinge(x, i);
     g(i) = (e.squaredNorm() - c.l * c.l) / (2.0 * c.l);
   }
   g.segment<2>(c.n) = hinge(x, 0) - c.pin;
   if (c.roller >= 0) g(c.n + 2) = c.nu.dot(hinge(x, c.roller) - c.pin);
-  return g;
 }
 
 /// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
@@ -277,23 +287,24 @@ bool BandedKkt::factor() {
 }
 
 Vec BandedKkt::solve(const Vec& rhs) const {
+  Vec z = rhs, scratch;
+  solve(z, scratch);
+  return z;
+}
+
+void BandedKkt::solve(Vec& z, Vec& scratch) const {
   const int m = core_;
-  Vec f(m), g(rhs.size() - m);
-  for (Eigen::Index i = 0; i < rhs.size(); ++i) {
-    const int k = perm_[i];
-    if (k < m) f[k] = rhs[i];
-    else g[k - m] = rhs[i];
-  }
-  band_.solve(f.data());
+  scratch.resize(z.size());
+  for (Eigen::Index i = 0; i < z.size(); ++i) scratch[perm_[i]] = z[i];
+  band_.solve(scratch.data());
+  const auto f = scratch.head(m);
+  Vec g = scratch.tail(z.size() - m);
   for (Eigen::Index q = 0; q < band_of_.size(); ++q) g -= C_.col(q) * f[band_of_[q]];
   const Vec y = schur_.solve(g);
-  for (Eigen::Index q = 0; q < border_of_.size(); ++q) f -= X_.col(q) * y[border_of_[q]];
-  Vec out(rhs.size());
-  for (Eigen::Index i = 0; i < rhs.size(); ++i) {
-    const int k = perm_[i];
-    out[i] = k < m ? f[k] : y[k - m];
-  }
-  return out;
+  auto fx = scratch.head(m);
+  for (Eigen::Index q = 0; q < border_of_.size(); ++q) fx -= X_.col(q) * y[border_of_[q]];
+  scratch.tail(z.size() - m) = y;
+  for (Eigen::Index i = 0; i < z.size(); ++i) z[i] = scratch[perm_[i]];
 }
 
 }  // namespace multibody::natural

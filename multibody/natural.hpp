@@ -57,8 +57,12 @@ Vec6 local(const Natural& c, const Vec& x, int k);
 double spring_energy(const Natural& c, const Vec& x);
 /// M v for the constant bar mass matrix. O(n).
 Vec mass_times(const Natural& c, const Vec& v);
+/// The same into `out` (resized; no allocation when it has the size).
+void mass_times(const Natural& c, const Vec& v, Vec& out);
 /// Constraint values (rows: links, pin x, pin y, roller). O(n).
 Vec constraints(const Natural& c, const Vec& x);
+/// The same into `g` (resized; no allocation when it has the size).
+void constraints(const Natural& c, const Vec& x, Vec& g);
 /// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
 /// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
 /// border. The band: link 0, hinge 1, link 1, hinge 2, ..., link n-3, hinge n-2, link n-2
@@ -113,6 +117,9 @@ class BandedKkt {
   bool factor();
   /// A^-1 rhs with the last factorization.
   Vec solve(const Vec& rhs) const;
+  /// z = A^-1 z in place, with `scratch` for the permuted copy (resized; no allocation
+  /// of n-sized vectors when both have the size).
+  void solve(Vec& z, Vec& scratch) const;
 
  private:
   /// A(r, col) += v in banded_order's numbering.
