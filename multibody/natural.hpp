@@ -70,8 +70,8 @@ void constraints(const Natural& c, const Vec& x, Vec& g);
 /// k +- 2). The border: hinges n-1 and 0 (the two hinges that close the cycle: every
 /// spring and link that wraps around touches one of them), link n-1 and the pin's two
 /// rows (which couple only these two hinges), the roller's row. Only the border's four
-/// hinge coordinates and the roller's row have entries in the band, so only five
-/// columns are solved for in the Schur complement. An LU in this order (with pivoting
+/// hinge coordinates and the roller's row (unless its hinge is n-1 or 0) have entries
+/// in the band, so at most five columns are solved for in the Schur complement. An LU in this order (with pivoting
 /// inside the band) fills only the band and the border's rows and columns: O(n) memory
 /// and time, whatever the pivots. Needs n >= 4.
 struct BandedOrder {
@@ -186,7 +186,7 @@ class NewtonStop {
 };
 
 /// Nonlinear statics of `chain` in hinge positions (statics_natural.cpp): load stepping
-/// with full Newton, one sparse LU per iteration, O(n); no arc-length continuation (a
+/// with full Newton, one BandedKkt factorization per iteration, O(n); no arc-length continuation (a
 /// limit point is a ring::NumericalError). Same result type as multibody::solve_static.
 ring::StaticResult solve_static(const Chain& chain, const ring::RingSpec& spec, const ring::StaticOptions& st);
 
