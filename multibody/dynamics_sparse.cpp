@@ -148,6 +148,27 @@ void BandLU::solve_many(double* b, Eigen::Index ld, Eigen::Index k) const {
 
 void BandLU::solve(double* b) const { solve_many(b, N_, 1); }
 
+void BandLU::solve_rows(double* b, int k) const {
+  const Eigen::Index kv = kl_ + ku_;
+  // L: dgbtrs's row interchanges and multipliers (rows kv + 1 .. kv + kl of column j).
+  for (Eigen::Index j = 0; j + 1 < N_; ++j) {
+    double* bj = b + j * k;
+    const Eigen::Index p = ipiv_[j] - 1, lm = std::min<Eigen::Index>(kl_, N_ - 1 - j);
+    if (p != j) std::swap_ranges(bj, bj + k, b + p * k);
+    const double* l = &ab_[size_t(j) * ldab_ + kv + 1];
+    for (Eigen::Index i = 0; i < lm; ++i)
+      for (int q = 0; q < k; ++q) bj[(i + 1) * k + q] -= l[i] * bj[q];
+  }
+  // U, upper bandwidth kv, column by column from the last (dtbsv's order).
+  for (Eigen::Index j = N_ - 1; j >= 0; --j) {
+    double* bj = b + j * k;
+    const double* u = &ab_[size_t(j) * ldab_ + kv - j];  // u[i] = U(i, j), j - kv <= i <= j
+    for (int q = 0; q < k; ++q) bj[q] /= u[j];
+    for (Eigen::Index i = j - 1; i >= std::max<Eigen::Index>(0, j - kv); --i)
+      for (int q = 0; q < k; ++q) b[i * k + q] -= bj[q] * u[i];
+  }
+}
+
 // Unknowns, segment by segment: dq_j, then per term (y_x, y_y, s_x, s_y)_j. Rows in the
 // same order: the equation of dq_j, the y and s relations. The term's coefficient goes
 // into its W rows (y carries force units), so the equation rows of dq_j hold the unit

@@ -76,6 +76,11 @@ class BandLU {
   void solve(double* b) const;   ///< in place
   /// k right-hand sides, column q at b + q ld, in place.
   void solve_many(double* b, Eigen::Index ld, Eigen::Index k) const;
+  /// k right-hand sides stored by rows (row i at b + i k), in place: dgbtrs's operations
+  /// in its order, so the same result bit for bit, but one pass over the factors for all
+  /// k (dgbtrs runs its triangular band solve, dtbsv, once per right-hand side: at large
+  /// N each pass streams the factors from memory).
+  void solve_rows(double* b, int k) const;
   long stored() const { return static_cast<long>(ab_.size()); }
 
  private:

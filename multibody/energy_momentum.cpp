@@ -1,8 +1,6 @@
 // The energy-momentum integrator in natural coordinates (energy_momentum.hpp).
 #include "multibody/energy_momentum.hpp"
 
-#include <Eigen/Sparse>
-
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -31,35 +29,51 @@ struct Step {
   int iterations = 0;
 };
 
+/// The vectors of a Newton iteration, sized once for the chain: allocated per iteration,
+/// the allocator returned them to the system and faulted them back in (~5% of an
+/// iteration at n = 10^4).
+struct Work {
+  explicit Work(const Natural& c)
+      : V0(c.n), xm(2 * c.n), w(2 * c.n), rx(2 * c.n), g(c.rows()), z(c.size()), scratch(c.size()) {}
+  Vec V0, xm, w, rx, g, z, scratch;
+};
+
 /// One step of the scheme from (x0, v0) over h with load factor f at the midpoint;
 /// x1 and lambda are the starting guess and the result.
 Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Vec& x1, Vec& lambda,
-          BandedKkt& kkt) {
-  const int N = 2 * c.n, S = c.size();
+          BandedKkt& kkt, Work& work) {
+  const int N = 2 * c.n;
   const double cm = 2.0 / (h * h);
   const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
   const double kappa = cm * (s + r);
   Step out;
-  Triplets t;
-  t.reserve(static_cast<std::size_t>(c.n) * 60);
   NewtonStop stop(c.radius());
+  // The springs' energies at x0 (constant over the iterations).
+  Vec& V0 = work.V0;
+  for (int k = 0; k < c.n; ++k) {
+    const double d0 = turn_angle(local(c, x0, k)) - c.theta0;
+    V0[k] = 0.5 * c.K * d0 * d0;
+  }
+  Vec &xm = work.xm, &rx = work.rx, &dz = work.z;
   for (int it = 1; it <= kMaxNewton; ++it) {
-    t.clear();
-    const Vec xm = 0.5 * (x0 + x1);
+    kkt.clear();
+    xm = 0.5 * (x0 + x1);
     // Inertia: (2/h^2) M (x1 - x0 - h v0).
-    Vec rx = cm * mass_times(c, x1 - x0 - h * v0);
+    work.w = x1 - x0 - h * v0;
+    mass_times(c, work.w, rx);
+    rx *= cm;
     rx.segment<2>(2 * c.load) -= f * c.F;
     for (int i = 0; i < c.n; ++i) {
       const int j = (i + 1) % c.n;
       for (int a = 0; a < 2; ++a) {
-        t.emplace_back(2 * i + a, 2 * i + a, cm * (s + r));
-        t.emplace_back(2 * j + a, 2 * j + a, cm * (s + r));
-        t.emplace_back(2 * i + a, 2 * j + a, cm * (s - r));
-        t.emplace_back(2 * j + a, 2 * i + a, cm * (s - r));
+        kkt.add(2 * i + a, 2 * i + a, cm * (s + r));
+        kkt.add(2 * j + a, 2 * j + a, cm * (s + r));
+        kkt.add(2 * i + a, 2 * j + a, cm * (s - r));
+        kkt.add(2 * j + a, 2 * i + a, cm * (s - r));
       }
     }
     // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = 1/2 sum lambda_i Hess c_i.
-    add_constraint_curvature(c, lambda, 0.5, t);
+    add_constraint_curvature(c, lambda, 0.5, kkt);
     // Springs: each one's discrete gradient and its exact Jacobian in y1.
     for (int k = 0; k < c.n; ++k) {
       const Vec6 y0 = local(c, x0, k), y1 = local(c, x1, k), dy = y1 - y0;
@@ -70,36 +84,34 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
       Vec6 g = gm;
       Mat6 J = 0.5 * Hm;
       const double ss = dy.squaredNorm();
-      const Turn t1 = turn(y1), t0 = turn(y0);
+      const Turn t1 = turn(y1, false);
       const double V1 = 0.5 * c.K * (t1.theta - c.theta0) * (t1.theta - c.theta0);
-      const double V0 = 0.5 * c.K * (t0.theta - c.theta0) * (t0.theta - c.theta0);
-      const double e = V1 - V0 - gm.dot(dy);
+      const double e = V1 - V0[k] - gm.dot(dy);
       // The correction only where e is resolved above its round-off; elsewhere it would
       // be noise (and its Jacobian noise / |dy|^2), and leaving it out costs an energy
       // error below kResolved eps V per spring and step.
-      if (ss > 0 && std::abs(e) > kResolved * kEps * (std::abs(V0) + std::abs(V1) + std::abs(gm.dot(dy)))) {
+      if (ss > 0 && std::abs(e) > kResolved * kEps * (std::abs(V0[k]) + std::abs(V1) + std::abs(gm.dot(dy)))) {
         g += e / ss * dy;
         const Vec6 de = c.K * (t1.theta - c.theta0) * t1.d - 0.5 * Hm * dy - gm;
         J += dy * de.transpose() / ss + e / ss * (Mat6::Identity() - 2.0 * dy * dy.transpose() / ss);
       }
-      add_spring(c, k, g, J, rx, t);
+      add_spring(c, k, g, J, rx, kkt);
     }
     // Constraint rows and multiplier columns scaled by the inertia's diagonal so that the
     // KKT matrix is balanced (unscaled, its solve loses ~8 digits to the 1e8 ratio).
-    add_constraint_jacobian(c, xm, N, true, kappa, t, &lambda, &rx);  // G(xm)^T as columns
-    add_constraint_jacobian(c, x1, N, false, kappa, t, nullptr, nullptr);  // G(x1) as rows
-    Vec rhs(S);
-    rhs << -rx, -kappa * constraints(c, x1);
-    Eigen::SparseMatrix<double> A(S, S);
-    A.setFromTriplets(t.begin(), t.end());
-    if (!kkt.factor(A)) return out;
-    const Vec dz = kkt.solve(rhs);
+    add_constraint_jacobian(c, xm, N, true, kappa, kkt, &lambda, &rx);  // G(xm)^T as columns
+    add_constraint_jacobian(c, x1, N, false, kappa, kkt, nullptr, nullptr);  // G(x1) as rows
+    constraints(c, x1, work.g);
+    dz << -rx, -kappa * work.g;
+    if (!kkt.factor()) return out;
+    kkt.solve(dz, work.scratch);
     if (!dz.allFinite()) return out;
     x1 += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
     out.iterations = it;
     if (turns_a_link_by(c, dz.head(N)) > detail::kBasin) return out;  // left the basin
-    if (stop.converged(dz.head(N).cwiseAbs().maxCoeff(), constraints(c, x1).cwiseAbs().maxCoeff())) {
+    constraints(c, x1, work.g);
+    if (stop.converged(dz.head(N).cwiseAbs().maxCoeff(), work.g.cwiseAbs().maxCoeff())) {
       out.converged = true;
       return out;
     }
@@ -180,6 +192,8 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   record(0, 0);
 
   BandedKkt kkt(c);
+  Work buffers(c);
+  Vec x1, l1;
   const double min_dt = controls.min_dt_factor * response.dt;
   double h = response.dt;
   int successes = 0;
@@ -190,9 +204,10 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
       const double remaining = t_target - t;
       const bool last = remaining <= h * (1.0 + 1e-9);
       const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
-      Vec x1 = x + hs * v, l1 = lambda;
+      x1 = x + hs * v;
+      l1 = lambda;
       const double f = response.load.history.factor(t + 0.5 * hs);
-      const Step st = step(c, x, v, hs, f, x1, l1, kkt);
+      const Step st = step(c, x, v, hs, f, x1, l1, kkt, buffers);
       iterations += st.iterations;
       if (!st.converged) {
         h = 0.5 * hs;
@@ -205,8 +220,8 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
       }
       work += f * c.F.dot(hinge(x1, c.load) - hinge(x, c.load));
       v = 2.0 / hs * (x1 - x) - v;
-      x = std::move(x1);
-      lambda = std::move(l1);
+      x.swap(x1);
+      lambda.swap(l1);
       t = last ? t_target : t + hs;
       if (!x.allFinite() || !v.allFinite())
         fail(IntegrationFailure::Reason::not_finite,

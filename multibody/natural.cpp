@@ -35,7 +35,12 @@ Vec rest(const Chain& chain) {
   return x;
 }
 
-Turn turn(const Vec6& y) {
+double turn_angle(const Vec6& y) {
+  const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
+}
+
+Turn turn(const Vec6& y, bool hessian) {
   const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
   // Explicit return types: an `auto` lambda would return an expression that refers to a
   // destroyed temporary.
@@ -49,9 +54,13 @@ Turn turn(const Vec6& y) {
     return h / s2;
   };
   Turn t;
-  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
+  t.theta = turn_angle(y);
   const Eigen::Vector2d ga = grad_angle(a), gb = grad_angle(b);
   t.d << ga, -ga - gb, gb;
+  if (!hessian) {
+    t.dd.setZero();
+    return t;
+  }
   const Eigen::Vector3d pa(-1, 1, 0), pb(0, -1, 1);
   const Eigen::Matrix2d ha = hess_angle(a), hb = hess_angle(b);
   for (int i = 0; i < 3; ++i)
@@ -68,7 +77,7 @@ Vec6 local(const Natural& c, const Vec& x, int k) {
 double spring_energy(const Natural& c, const Vec& x) {
   double V = 0.0;
   for (int k = 0; k < c.n; ++k) {
-    const double d = turn(local(c, x, k)).theta - c.theta0;
+    const double d = turn_angle(local(c, x, k)) - c.theta0;
     V += 0.5 * c.K * d * d;
   }
   return V;
@@ -76,7 +85,13 @@ double spring_energy(const Natural& c, const Vec& x) {
 
 /// M x for the constant bar mass matrix: per bar (m/4) [1 1; 1 1] + (Jr/l^2) [1 -1; -1 1].
 Vec mass_times(const Natural& c, const Vec& v) {
-  Vec out = Vec::Zero(2 * c.n);
+  Vec out;
+  mass_times(c, v, out);
+  return out;
+}
+
+void mass_times(const Natural& c, const Vec& v, Vec& out) {
+  out.setZero(2 * c.n);
   const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
   for (int i = 0; i < c.n; ++i) {
     const int j = (i + 1) % c.n;
@@ -84,29 +99,33 @@ Vec mass_times(const Natural& c, const Vec& v) {
     out.segment<2>(2 * i) += s * (a + b) + r * (a - b);
     out.segment<2>(2 * j) += s * (a + b) + r * (b - a);
   }
-  return out;
 }
 
 /// Constraint values at x (rows: links, pin x, pin y, roller).
 Vec constraints(const Natural& c, const Vec& x) {
-  Vec g(c.rows());
+  Vec g;
+  constraints(c, x, g);
+  return g;
+}
+
+void constraints(const Natural& c, const Vec& x, Vec& g) {
+  g.resize(c.rows());
   for (int i = 0; i < c.n; ++i) {
     const Eigen::Vector2d e = hinge(x, (i + 1) % c.n) - hinge(x, i);
     g(i) = (e.squaredNorm() - c.l * c.l) / (2.0 * c.l);
   }
   g.segment<2>(c.n) = hinge(x, 0) - c.pin;
   if (c.roller >= 0) g(c.n + 2) = c.nu.dot(hinge(x, c.roller) - c.pin);
-  return g;
 }
 
 /// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
 /// `offset`: as columns (G^T, `transpose`) or as rows, and G(x)^T lambda to `force`
 /// when not null.
 void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool transpose, double scale,
-                             Triplets& t, const Vec* lambda, Vec* force) {
+                             BandedKkt& kkt, const Vec* lambda, Vec* force) {
   auto put = [&](int row, int dof, double v) {
-    if (transpose) t.emplace_back(dof, offset + row, scale * v);
-    else t.emplace_back(offset + row, dof, scale * v);
+    if (transpose) kkt.add(dof, offset + row, scale * v);
+    else kkt.add(offset + row, dof, scale * v);
     if (force) (*force)(dof) += v * (*lambda)(row);
   };
   for (int i = 0; i < c.n; ++i) {
@@ -123,25 +142,26 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
     for (int a = 0; a < 2; ++a) put(c.n + 2, 2 * c.roller + a, c.nu(a));
 }
 
-void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, Triplets& t) {
+void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt) {
   const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
+  int dofs[6];
   for (int a = 0; a < 3; ++a) {
     r.segment<2>(2 * hk[a]) += g.segment<2>(2 * a);
-    for (int b = 0; b < 3; ++b)
-      for (int p = 0; p < 2; ++p)
-        for (int q = 0; q < 2; ++q) t.emplace_back(2 * hk[a] + p, 2 * hk[b] + q, J(2 * a + p, 2 * b + q));
+    dofs[2 * a] = 2 * hk[a];
+    dofs[2 * a + 1] = 2 * hk[a] + 1;
   }
+  kkt.add(dofs, J);
 }
 
-void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, Triplets& t) {
+void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, BandedKkt& kkt) {
   for (int i = 0; i < c.n; ++i) {
     const int j = (i + 1) % c.n;
     const double w = weight * lambda(i) / c.l;
     for (int a = 0; a < 2; ++a) {
-      t.emplace_back(2 * i + a, 2 * i + a, w);
-      t.emplace_back(2 * j + a, 2 * j + a, w);
-      t.emplace_back(2 * i + a, 2 * j + a, -w);
-      t.emplace_back(2 * j + a, 2 * i + a, -w);
+      kkt.add(2 * i + a, 2 * i + a, w);
+      kkt.add(2 * j + a, 2 * j + a, w);
+      kkt.add(2 * i + a, 2 * j + a, -w);
+      kkt.add(2 * j + a, 2 * i + a, -w);
     }
   }
 }
@@ -153,7 +173,7 @@ double turns_a_link_by(const Natural& c, const Vec& dx) {
   return worst;
 }
 
-Eigen::VectorXi banded_order(const Natural& c) {
+BandedOrder banded_order(const Natural& c) {
   const int N = 2 * c.n;
   Eigen::VectorXi perm = Eigen::VectorXi::Constant(c.size(), -1);
   int next = 0;
@@ -161,16 +181,16 @@ Eigen::VectorXi banded_order(const Natural& c) {
     perm(2 * k) = next++;
     perm(2 * k + 1) = next++;
   };
-  for (int k = 2; k <= c.n - 2; ++k) {
+  for (int k = 1; k <= c.n - 2; ++k) {
     perm(N + k - 1) = next++;  // link k-1, between hinges k-1 and k
     put_hinge(k);
   }
   perm(N + c.n - 2) = next++;  // link n-2
-  for (int k : {c.n - 1, 0, 1}) put_hinge(k);
+  const int band = next;
+  for (int k : {c.n - 1, 0}) put_hinge(k);
   perm(N + c.n - 1) = next++;
-  perm(N) = next++;
   for (int row = c.n; row < c.rows(); ++row) perm(N + row) = next++;  // pin, roller
-  return perm;
+  return {perm, band};
 }
 
 bool NewtonStop::converged(double step, double constraint) {
@@ -180,63 +200,111 @@ bool NewtonStop::converged(double step, double constraint) {
   return (step <= kTolerance * R_ || at_floor) && constraint <= kTolerance * R_;
 }
 
-BandedKkt::BandedKkt(const Natural& c) : perm_(banded_order(c)) {
-  // The border of banded_order: hinges n-1, 0, 1 (6), links n-1 and 0 (2), pin and roller.
-  core_ = c.size() - (8 + c.rows() - c.n);
+namespace {
+
+/// Calls visit(i, j) for every (i, j) that the KKT matrix of the chain may hold (natural
+/// order, repeats allowed): the springs' blocks (hinges k-1, k, k+1, which cover the mass
+/// matrix's and the links' curvature blocks), the links' gradients as rows and columns,
+/// the pin's and the roller's.
+template <class Visit>
+void kkt_pattern(const Natural& c, Visit visit) {
+  const int N = 2 * c.n;
+  auto hinges = [&](int a, int b) {
+    for (int p = 0; p < 2; ++p)
+      for (int q = 0; q < 2; ++q) visit(2 * a + p, 2 * b + q);
+  };
+  auto row = [&](int r, int k) {  // constraint row r on hinge k, and its column
+    for (int p = 0; p < 2; ++p) {
+      visit(N + r, 2 * k + p);
+      visit(2 * k + p, N + r);
+    }
+  };
+  for (int k = 0; k < c.n; ++k) {
+    const int hk[3] = {(k + c.n - 1) % c.n, k, (k + 1) % c.n};
+    for (int a : hk)
+      for (int b : hk) hinges(a, b);
+    row(k, k);
+    row(k, hk[2]);
+  }
+  row(c.n, 0);
+  row(c.n + 1, 0);
+  if (c.roller >= 0) row(c.n + 2, c.roller);
 }
 
-bool BandedKkt::factor(const Eigen::SparseMatrix<double>& A) {
-  const int m = core_, b = static_cast<int>(A.rows()) - core_;
-  int kl = 0, ku = 0;
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-      const int r = perm_[it.row()], col = perm_[j];
-      if (r < m && col < m) {
-        kl = std::max(kl, r - col);
-        ku = std::max(ku, col - r);
+}  // namespace
+
+BandedKkt::BandedKkt(const Natural& c) {
+  BandedOrder order = banded_order(c);
+  perm_ = std::move(order.perm);
+  core_ = order.band;
+  const int b = c.size() - core_;
+  solved_ = Eigen::VectorXi::Constant(b, -1);
+  reached_ = Eigen::VectorXi::Constant(core_, -1);
+  kkt_pattern(c, [&](int i, int j) {
+    const int r = perm_[i], col = perm_[j];
+    if (r < core_ && col < core_) {
+      kl_ = std::max(kl_, r - col);
+      ku_ = std::max(ku_, col - r);
+    } else if (r < core_) {
+      solved_[col - core_] = 0;
+    } else if (col < core_) {
+      reached_[col] = 0;
+    }
+  });
+  auto number = [](Eigen::VectorXi& used) {
+    std::vector<int> of;
+    for (int k = 0; k < used.size(); ++k)
+      if (used[k] >= 0) {
+        used[k] = static_cast<int>(of.size());
+        of.push_back(k);
       }
-    }
-  band_.resize(m, kl, ku);
-  B_.setZero(m, b);
-  C_.setZero(b, m);
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(b, b);
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-      const int r = perm_[it.row()], col = perm_[j];
-      if (r < m && col < m)
-        band_.at(r, col) += it.value();
-      else if (r < m)
-        B_(r, col - m) += it.value();
-      else if (col < m)
-        C_(r - m, col) += it.value();
-      else
-        D(r - m, col - m) += it.value();
-    }
+    return Eigen::Map<Eigen::VectorXi>(of.data(), static_cast<Eigen::Index>(of.size())).eval();
+  };
+  border_of_ = number(solved_);
+  band_of_ = number(reached_);
+  clear();
+}
+
+void BandedKkt::clear() {
+  const int b = static_cast<int>(solved_.size());
+  band_.resize(core_, kl_, ku_);
+  X_.setZero(core_, border_of_.size());
+  C_.setZero(b, band_of_.size());
+  D_.setZero(b, b);
+}
+
+bool BandedKkt::factor() {
   if (!band_.factor()) return false;
-  X_ = B_;
-  band_.solve_many(X_.data(), m, b);
-  schur_.compute(D - C_ * X_);
+  band_.solve_rows(X_.data(), static_cast<int>(X_.cols()));
+  // D - C band^-1 B on the band columns that C reaches.
+  Eigen::MatrixXd Xr(band_of_.size(), X_.cols());
+  for (Eigen::Index q = 0; q < band_of_.size(); ++q) Xr.row(q) = X_.row(band_of_[q]);
+  const Eigen::MatrixXd CX = C_ * Xr;
+  for (Eigen::Index q = 0; q < border_of_.size(); ++q) D_.col(border_of_[q]) -= CX.col(q);
+  schur_.compute(D_);
   const double pivot = schur_.matrixLU().diagonal().cwiseAbs().minCoeff();
   return std::isfinite(pivot) && pivot > 0.0;
 }
 
 Vec BandedKkt::solve(const Vec& rhs) const {
+  Vec z = rhs, scratch;
+  solve(z, scratch);
+  return z;
+}
+
+void BandedKkt::solve(Vec& z, Vec& scratch) const {
   const int m = core_;
-  Vec f(m), g(rhs.size() - m);
-  for (Eigen::Index i = 0; i < rhs.size(); ++i) {
-    const int k = perm_[i];
-    if (k < m) f[k] = rhs[i];
-    else g[k - m] = rhs[i];
-  }
-  band_.solve(f.data());
-  const Vec y = schur_.solve(g - C_ * f);
-  f -= X_ * y;
-  Vec out(rhs.size());
-  for (Eigen::Index i = 0; i < rhs.size(); ++i) {
-    const int k = perm_[i];
-    out[i] = k < m ? f[k] : y[k - m];
-  }
-  return out;
+  scratch.resize(z.size());
+  for (Eigen::Index i = 0; i < z.size(); ++i) scratch[perm_[i]] = z[i];
+  band_.solve(scratch.data());
+  const auto f = scratch.head(m);
+  Vec g = scratch.tail(z.size() - m);
+  for (Eigen::Index q = 0; q < band_of_.size(); ++q) g -= C_.col(q) * f[band_of_[q]];
+  const Vec y = schur_.solve(g);
+  auto fx = scratch.head(m);
+  for (Eigen::Index q = 0; q < border_of_.size(); ++q) fx -= X_.col(q) * y[border_of_[q]];
+  scratch.tail(z.size() - m) = y;
+  for (Eigen::Index i = 0; i < z.size(); ++i) z[i] = scratch[perm_[i]];
 }
 
 }  // namespace multibody::natural

@@ -21,10 +21,9 @@ constexpr double kSmallestIncrement = 1e-6;
 int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
   const int N = 2 * c.n, S = c.size();
   const double kappa = c.K / (c.l * c.l);  // the springs' stiffness scale: balances the KKT matrix
-  Triplets t;
   NewtonStop stop(c.radius());
   for (int it = 1; it <= kMaxNewton; ++it) {
-    t.clear();
+    kkt.clear();
     Vec rx = Vec::Zero(N);
     rx.segment<2>(2 * c.load) -= s * c.F;
     for (int k = 0; k < c.n; ++k) {
@@ -32,16 +31,14 @@ int newton(const Natural& c, double s, Vec& x, Vec& lambda, BandedKkt& kkt) {
       const double d = tk.theta - c.theta0;
       const Vec6 g = c.K * d * tk.d;
       const Mat6 H = c.K * (tk.d * tk.d.transpose() + d * tk.dd);
-      add_spring(c, k, g, H, rx, t);
+      add_spring(c, k, g, H, rx, kkt);
     }
-    add_constraint_curvature(c, lambda, 1.0, t);
-    add_constraint_jacobian(c, x, N, true, kappa, t, &lambda, &rx);
-    add_constraint_jacobian(c, x, N, false, kappa, t, nullptr, nullptr);
+    add_constraint_curvature(c, lambda, 1.0, kkt);
+    add_constraint_jacobian(c, x, N, true, kappa, kkt, &lambda, &rx);
+    add_constraint_jacobian(c, x, N, false, kappa, kkt, nullptr, nullptr);
     Vec rhs(S);
     rhs << -rx, -kappa * constraints(c, x);
-    Eigen::SparseMatrix<double> A(S, S);
-    A.setFromTriplets(t.begin(), t.end());
-    if (!kkt.factor(A)) return -1;
+    if (!kkt.factor()) return -1;
     const Vec dz = kkt.solve(rhs);
     if (!dz.allFinite()) return -1;
     const double step = dz.head(N).cwiseAbs().maxCoeff();
