@@ -234,19 +234,18 @@ bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc)
   if (!band_.factor()) return false;
   // Border: B (order x k), C (k x order), D (k x k).
   const Eigen::Index k = 2 + c;
-  B_ = Matrix::Zero(order_, k);
+  X_ = RowMatrix::Zero(order_, k);  // B, then core^{-1} B in place
   C_ = Matrix::Zero(k, order_);
   Matrix D = Matrix::Zero(k, k);
-  B_(dq(0), 0) = -T.cyclic;
-  B_(dq(n - 1), 1) = -T.cyclic;
+  X_(dq(0), 0) = -T.cyclic;
+  X_(dq(n - 1), 1) = -T.cyclic;
   C_(0, dq(n - 1)) = -1.0;
   C_(1, dq(0)) = -1.0;
   D(0, 0) = D(1, 1) = 1.0;
   for (Eigen::Index i = 0; i < c; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) B_(dq(j), 2 + i) = C_(2 + i, dq(j)) = sc * G(i, j);
+    for (Eigen::Index j = 0; j < n; ++j) X_(dq(j), 2 + i) = C_(2 + i, dq(j)) = sc * G(i, j);
   nnz_ += 2 + 2 * n * c;
-  X_ = B_;
-  band_.solve_many(X_.data(), X_.rows(), k);
+  band_.solve_rows(X_.data(), static_cast<int>(k));
   schur_.compute(D - C_ * X_);
   return std::isfinite(schur_.rcond()) && schur_.rcond() > 1e-300;
 }
@@ -282,11 +281,12 @@ bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
 
 bool SparseSaddle::solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Matrix& Y) const {
   const Eigen::Index n = T_.size(), c = G_.rows(), k = B.cols();
-  Matrix u = Matrix::Zero(order_, k), e = Matrix::Zero(2 + c, k);
+  RowMatrix u = RowMatrix::Zero(order_, k);
+  Matrix e = Matrix::Zero(2 + c, k);
   for (Eigen::Index j = 0; j < n; ++j) u.row(j * stride_ + dq0_) = B.row(j);
   e.bottomRows(c) = D;
   if (!u.allFinite() || !e.allFinite()) return false;
-  band_.solve_many(u.data(), order_, k);
+  band_.solve_rows(u.data(), static_cast<int>(k));
   const Matrix w = schur_.solve(e - C_ * u);
   u.noalias() -= X_ * w;
   X.resize(n, k);

@@ -101,8 +101,8 @@ class SparseSaddle {
   /// Solves [T sc G^T; sc G 0] [x; y] = [b; d] with `refinements` steps of iterative
   /// refinement against the exact product. False on a non-finite result.
   bool solve(const Vector& b, const Vector& d, Vector& x, Vector& y, int refinements = 0) const;
-  /// The same for the k columns of [B; D] at once, without refinement. False on a
-  /// non-finite result.
+  /// The same for the k columns of [B; D] at once (one pass over the band's factors),
+  /// without refinement. False on a non-finite result.
   bool solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Matrix& Y) const;
   Eigen::Index constraints() const { return G_.rows(); }  ///< c
   /// Entries placed in the banded core and border (bench counter), doubles stored by the band.
@@ -117,7 +117,9 @@ class SparseSaddle {
   long nnz_ = 0;
   Eigen::Index order_ = 0;
   BandLU band_;
-  Matrix B_, C_, X_;  ///< border columns, rows, core^{-1} B
+  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  RowMatrix X_;  ///< core^{-1} B, B the border columns (by rows, as BandLU::solve_rows takes them)
+  Matrix C_;     ///< the border rows
   Eigen::PartialPivLU<Matrix> schur_;
 };
 
