@@ -71,7 +71,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
   const detail::Damping damping{response.rayleigh_mass,
                                 (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K()};
-  p.damped = damping.any();
+  const bool damped = damping.any();
   const std::unique_ptr<detail::NewtonBackend> backend =
       detail::make_newton_backend(chain, p.load, damping, use_sparse_path(options));
   detail::NewtonBackend& nb = *backend;
@@ -171,7 +171,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
       const Eigen::Vector2d x1 = chain.hinge_position(s1.q, p.load.hinge);
       work += 0.5 * (p.history.factor(s.t) + p.history.factor(s1.t)) * F.dot(x1 - x_load);
       x_load = x1;
-      if (p.damped) {
+      if (damped) {
         // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
         // system this is exactly the energy the discrete damping force removes.
         const Vector vm = s.v + s1.v;
@@ -207,7 +207,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
     // is not a result (generalized-alpha did on fine chains under a point step load when
     // it started from a_0 = qdd_0; see starting_pseudo_acceleration).
     max_work = std::max(max_work, std::abs(work));
-    if (!p.damped && max_work > 0 && th.energy_error.back() > kEnergyGrowth * max_work)
+    if (!damped && max_work > 0 && th.energy_error.back() > kEnergyGrowth * max_work)
       fail(IntegrationFailure::Reason::energy_growth,
            "multibody::respond: the energy balance T + V - W grew to " + describe(th.energy_error.back()) +
                " J, more than " + describe(100.0 * kEnergyGrowth) + " % of the work " + describe(max_work) +

@@ -33,7 +33,6 @@ struct Problem {
   const Chain& chain;
   DeadLoad load;
   ring::LoadHistory history;
-  bool damped = false;
 };
 
 /// Result of one attempted step.

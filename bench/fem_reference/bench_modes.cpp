@@ -9,16 +9,11 @@
 #include <vector>
 
 #include "fem_reference/modes.hpp"
+#include "bench/paper.hpp"
 
 namespace {
 
-ring::RingSpec paper_ring() {
-  ring::RingSpec spec;  // R = 10, E = 2.1e11, rho = 7.8e3 (defaults), d = 0.12, pin at 180
-  spec.section.shape = ring::Section::Shape::circle;
-  spec.section.diameter = 0.12;
-  spec.supports.pin = 180.0;
-  return spec;
-}
+using ringbench::paper_ring;
 
 const std::vector<double>& reference() {
   static const std::vector<double> omega = [] {

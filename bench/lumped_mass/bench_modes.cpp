@@ -14,15 +14,11 @@
 #include <string>
 
 #include "lumped_mass/modes.hpp"
+#include "bench/paper.hpp"
 
 namespace {
 
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  return s;
-}
+using ringbench::paper_ring;
 
 double peak_rss_mb() {
   rusage u{};

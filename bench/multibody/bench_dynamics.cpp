@@ -17,19 +17,13 @@
 #include <numeric>
 
 #include "multibody/dynamics.hpp"
+#include "bench/paper.hpp"
 
 namespace {
 
 using Integrator = ring::ResponseOptions::Integrator;
 
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  s.supports.roller = 0.0;
-  return s;
-}
+ring::RingSpec paper_ring() { return ringbench::paper_ring(true); }
 
 ring::ResponseOptions scene(Integrator integrator, double t_end) {
   ring::ResponseOptions r;

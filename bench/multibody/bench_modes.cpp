@@ -7,18 +7,11 @@
 #include <sys/resource.h>
 
 #include "multibody/modes.hpp"
+#include "bench/paper.hpp"
 
 namespace {
 
-ring::RingSpec paper_ring() {
-  ring::RingSpec s;  // Table 1: R = 10 m, d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.diameter = 0.12;
-  s.supports.pin = 180.0;
-  return s;
-}
+using ringbench::paper_ring;
 
 void BM_ComputeModes23(benchmark::State& st) {
   const ring::RingSpec s = paper_ring();
