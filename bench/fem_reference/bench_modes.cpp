@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "fem_reference/modes.hpp"
-#include "bench/paper.hpp"
+#include "tests/support/paper.hpp"
 
 namespace {
 
-using ringbench::paper_ring;
+ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
 
 const std::vector<double>& reference() {
   static const std::vector<double> omega = [] {

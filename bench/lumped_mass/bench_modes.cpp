@@ -14,11 +14,11 @@
 #include <string>
 
 #include "lumped_mass/modes.hpp"
-#include "bench/paper.hpp"
+#include "tests/support/paper.hpp"
 
 namespace {
 
-using ringbench::paper_ring;
+ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
 
 double peak_rss_mb() {
   rusage u{};

@@ -17,13 +17,17 @@
 #include <numeric>
 
 #include "multibody/dynamics.hpp"
-#include "bench/paper.hpp"
+#include "tests/support/paper.hpp"
 
 namespace {
 
 using Integrator = ring::ResponseOptions::Integrator;
 
-ring::RingSpec paper_ring() { return ringbench::paper_ring(true); }
+ring::RingSpec paper_ring() {
+  ring::RingSpec s = ringtest::paper_ring(180.0);
+  s.supports.roller = 0.0;
+  return s;
+}
 
 ring::ResponseOptions scene(Integrator integrator, double t_end) {
   ring::ResponseOptions r;

@@ -7,11 +7,11 @@
 #include <sys/resource.h>
 
 #include "multibody/modes.hpp"
-#include "bench/paper.hpp"
+#include "tests/support/paper.hpp"
 
 namespace {
 
-using ringbench::paper_ring;
+ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
 
 void BM_ComputeModes23(benchmark::State& st) {
   const ring::RingSpec s = paper_ring();

@@ -1,4 +1,5 @@
-// The paper's ring, one definition for every suite (Yin & Wang, Table 1; README "The paper"):
+// The paper's ring, one definition for every suite and benchmark program (Yin & Wang,
+// Table 1; README "The paper"):
 // R = 10 m, solid circle d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3 (the printed
 // 9.8e3 is a misprint).
 #pragma once
@@ -24,6 +25,7 @@ inline ring::RingSpec paper_ring(std::optional<double> pin = std::nullopt) {
   return s;
 }
 
+#ifdef RINGVIB_SOURCE_DIR  // defined for the test programs
 /// The text of a file of the source tree (scenes, data), e.g. "scenes/paper1990.toml".
 inline std::string source_text(const std::string& relative) {
   std::ifstream f(std::string(RINGVIB_SOURCE_DIR) + "/" + relative);
@@ -31,5 +33,6 @@ inline std::string source_text(const std::string& relative) {
   s << f.rdbuf();
   return s.str();
 }
+#endif
 
 }  // namespace ringtest
