@@ -215,21 +215,17 @@ Vector Chain::quadratic_velocity(const Vector& q, const Vector& qd) const {
   return project_midpoints(ep, t, Eigen::Vector2d::Zero(), m_, l_, free_);
 }
 
-Chain::InertiaColumns Chain::inertia_columns(const Vector& q, const Vector& qd, const Matrix& V) const {
+Matrix Chain::mass_times_columns(const Vector& q, const Matrix& V) const {
   check(q);
-  check(qd);
-  if (V.rows() != dofs()) throw std::invalid_argument("multibody: inertia_columns needs dofs() rows");
+  if (V.rows() != dofs()) throw std::invalid_argument("multibody: mass_times_columns needs dofs() rows");
   const Eigen::Matrix2Xd ep = eprimes(q, n_);
-  InertiaColumns out{Matrix(dofs(), V.cols()), Matrix(dofs(), V.cols())};
+  Matrix out(dofs(), V.cols());
   Eigen::Matrix2Xd t(2, n_);
   for (Eigen::Index k = 0; k < V.cols(); ++k) {
     for (int i = 0; i < n_; ++i) t.col(i) = l_ * V(i, k) * ep.col(i);
-    out.mass.col(k) = project_midpoints(
-        ep, t, free_ ? Eigen::Vector2d(V.col(k).tail<2>()) : Eigen::Vector2d::Zero(), m_, l_, free_);
-    out.mass.col(k).head(n_) += jr_ * V.col(k).head(n_);
-    // d/dqd of -l qd_i^2 e(phi_i) along V: -2 l qd_i V_i e(phi_i); e = (cos, sin) = (ep_y, -ep_x).
-    for (int i = 0; i < n_; ++i) t.col(i) = -2.0 * l_ * qd[i] * V(i, k) * Eigen::Vector2d(ep(1, i), -ep(0, i));
-    out.velocity.col(k) = project_midpoints(ep, t, Eigen::Vector2d::Zero(), m_, l_, free_);
+    out.col(k) = project_midpoints(ep, t, free_ ? Eigen::Vector2d(V.col(k).tail<2>()) : Eigen::Vector2d::Zero(),
+                                   m_, l_, free_);
+    out.col(k).head(n_) += jr_ * V.col(k).head(n_);
   }
   return out;
 }

@@ -111,12 +111,9 @@ class Chain {
   /// c_j = m l^2 sum_k (L^T L)_jk sin(phi_j - phi_k) qd_k^2 for the angles, and
   /// -m l sum_k c_k e(phi_k) qd_k^2 with c_k = n - k - 1/2 for (x_0, y_0). O(n).
   Vector quadratic_velocity(const Vector& q, const Vector& qd) const;
-  /// M(q) V and d quadratic_velocity(q, qd) / d qd V for the columns of V (dofs x k),
-  /// with one evaluation of the n sines and cosines: O(n k).
-  struct InertiaColumns {
-    Matrix mass, velocity;
-  };
-  InertiaColumns inertia_columns(const Vector& q, const Vector& qd, const Matrix& V) const;
+  /// M(q) V for the k columns of V (dofs x k), with one evaluation of the n sines and
+  /// cosines. O(n k).
+  Matrix mass_times_columns(const Vector& q, const Matrix& V) const;
   /// Kinetic energy qd^T M(q) qd / 2, J. O(n).
   double kinetic_energy(const Vector& q, const Vector& qd) const;
 

@@ -227,7 +227,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   auto prepare_correction = [&] {
     Matrix E = Matrix::Zero(n, c);
     for (int i = 0; i < c; ++i) E(dep[i], i) = 1.0;
-    if (!nb.solve_columns(ch.inertia_columns(q, v, E).mass, Yq, Yl)) return false;
+    if (!nb.solve_columns(ch.mass_times_columns(q, E), Yq, Yl)) return false;
     Yq = -Yq;
     Yl = -Yl;
     have_y = true;

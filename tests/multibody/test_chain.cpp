@@ -83,6 +83,18 @@ TEST(MultibodyChain, MassMatrixIsTheKineticEnergyOfMidpointVelocities) {
   }
 }
 
+// M(q) times several columns at once (the Newmark step's correction columns) against
+// the dense mass matrix, pinned and free.
+TEST(MultibodyChain, MassTimesColumnsEqualsTheMassMatrix) {
+  for (bool pinned : {true, false}) {
+    const Chain c(paper_ring(pinned), opts(10));
+    const Vector q = perturbed(c, 41);
+    const Matrix V = Matrix::Random(c.dofs(), 3);
+    const Matrix expect = c.mass_matrix(q) * V;
+    EXPECT_LT((c.mass_times_columns(q, V) - expect).norm(), 1e-12 * expect.norm()) << (pinned ? "pinned" : "free");
+  }
+}
+
 TEST(MultibodyChain, PaperMassMatrixEntries) {
   // The paper's eq. (12) with the corrected L^T L: (L^T L)_jj = n - j + 1/4 and
   // (L^T L)_jk = n - max(j,k) + 1/2 (1-based), times m l^2 cos(phi_j - phi_k).
