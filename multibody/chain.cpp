@@ -192,16 +192,8 @@ Eigen::Matrix2Xd eprimes(const Vector& q, int n) {
 }  // namespace
 
 Vector Chain::mass_times(const Vector& q, const Vector& v) const {
-  check(q);
   check(v);
-  // Midpoint velocities V_i = v_t + l sum_j L_ij e'(phi_j) v_j, then M v collects
-  // m V_i back through the same kinematics (L^T) plus the rotary inertia.
-  const Eigen::Matrix2Xd ep = eprimes(q, n_);
-  Eigen::Matrix2Xd t(2, n_);
-  for (int i = 0; i < n_; ++i) t.col(i) = l_ * v[i] * ep.col(i);
-  Vector y = project_midpoints(ep, t, free_ ? Eigen::Vector2d(v.tail<2>()) : Eigen::Vector2d::Zero(), m_, l_, free_);
-  y.head(n_) += jr_ * v.head(n_);
-  return y;
+  return mass_times_columns(q, v);
 }
 
 Vector Chain::quadratic_velocity(const Vector& q, const Vector& qd) const {
@@ -218,6 +210,8 @@ Vector Chain::quadratic_velocity(const Vector& q, const Vector& qd) const {
 Matrix Chain::mass_times_columns(const Vector& q, const Matrix& V) const {
   check(q);
   if (V.rows() != dofs()) throw std::invalid_argument("multibody: mass_times_columns needs dofs() rows");
+  // Midpoint velocities V_i = v_t + l sum_j L_ij e'(phi_j) v_j, then M v collects
+  // m V_i back through the same kinematics (L^T) plus the rotary inertia.
   const Eigen::Matrix2Xd ep = eprimes(q, n_);
   Matrix out(dofs(), V.cols());
   Eigen::Matrix2Xd t(2, n_);

@@ -40,17 +40,13 @@ void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Ve
 }
 
 Kinematic evaluate(const Chain& chain, const Vector& q, bool values, bool hessian) {
-  Kinematic k;
-  if (values && hessian) {  // one pass of sines and cosines for all three
+  if (hessian) {  // one pass of sines and cosines for all three
     Chain::ConstraintKinematics ck = chain.constraint_kinematics(q);
     return {std::move(ck.G), std::move(ck.g), std::move(ck.hess)};
   }
+  Kinematic k;
   k.G = chain.constraint_jacobian(q);
   if (values) k.g = chain.constraints(q);
-  if (!hessian) return k;
-  // The constraints are sums of sinusoids l (a cos phi_j + b sin phi_j) of single angles,
-  // so d^2 g/d phi_j^2 = -(that term) = its derivative at phi_j + pi/2.
-  k.hess_g = chain.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
   return k;
 }
 

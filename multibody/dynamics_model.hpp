@@ -55,7 +55,8 @@ struct Kinematic {
   Vector g;       ///< constraints, m
   Matrix hess_g;  ///< row i, column j: d^2 g_i / d phi_j^2 (c x n; Hessians are diagonal)
 };
-/// G always; g and hess_g only when asked (each costs n sines and cosines).
+/// G always; g when asked; with hess_g, all three from one pass of sines and cosines
+/// (Chain::constraint_kinematics).
 Kinematic evaluate(const Chain& chain, const Vector& q, bool values = true, bool hessian = true);
 
 /// Generalized force of the dead load and (if asked) the diagonal of dPhi/dq. O(n).

@@ -254,23 +254,14 @@ long SparseSaddle::factor_nonzeros() const { return band_.stored(); }
 
 bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
                          int refinements) const {
-  const Eigen::Index n = T_.size(), c = G_.rows(), k = 2 + c;
-  x = Vector::Zero(n);
-  y = Vector::Zero(c);
+  x = Vector::Zero(T_.size());
+  y = Vector::Zero(G_.rows());
   Vector rb = b, rd = d;
-  Vector u(order_), e(k);
+  Matrix dx, dy;
   for (int pass = 0; pass <= refinements; ++pass) {
-    u.setZero();
-    for (Eigen::Index j = 0; j < n; ++j) u[j * stride_ + dq0_] = rb[j];
-    e.setZero();
-    e.tail(c) = rd;
-    if (!u.allFinite() || !e.allFinite()) return false;
-    band_.solve(u.data());
-    const Vector w = schur_.solve(e - C_ * u);
-    u.noalias() -= X_ * w;
-    if (!u.allFinite() || !w.allFinite()) return false;
-    for (Eigen::Index j = 0; j < n; ++j) x[j] += u[j * stride_ + dq0_];
-    y += w.tail(c);
+    if (!solve_columns(rb, rd, dx, dy)) return false;
+    x += dx.col(0);
+    y += dy.col(0);
     if (pass == refinements) break;
     // Residual of the saddle-point system with the exact O(n) product.
     rb = b - T_.times(x) - sc_ * (G_.transpose() * y);

@@ -31,16 +31,15 @@ Linearization linearize_at(const Chain& ch, const detail::DeadLoad& load, const 
                            double s, const Vector& q, const Vector& lambda) {
   const int n = ch.dofs(), c = ch.constraint_count();
   Linearization L;
-  const Matrix G = ch.constraint_jacobian(q);
-  // Diagonal constraint Hessians (dynamics_model.hpp): G at every angle + pi/2.
-  const Matrix hess = ch.constraint_jacobian((q.array() + 0.5 * M_PI).matrix());
+  const Chain::ConstraintKinematics ck = ch.constraint_kinematics(q);
+  const Matrix& G = ck.G;
   Vector dphi;
   detail::load_forces(ch, load, q, L.phi, &dphi);
   L.r = ch.spring_forces(q) + G.transpose() * lambda - s * L.phi;
-  L.g = ch.constraints(q);
+  L.g = ck.g;
   Matrix A = Matrix::Zero(n + c, n + c);
   A.topLeftCorner(n, n) = K;
-  A.diagonal().head(n) += hess.transpose() * lambda - s * dphi;
+  A.diagonal().head(n) += ck.hess.transpose() * lambda - s * dphi;
   L.sc = ch.K() / ch.l();  // puts G on the scale of the springs
   A.topRightCorner(n, c) = L.sc * G.transpose();
   A.bottomLeftCorner(c, n) = L.sc * G;
