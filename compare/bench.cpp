@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "compare/converge.hpp"
+#include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
 #include "compare/registry.hpp"

@@ -29,6 +29,10 @@ struct NonlinearBench {
 /// repeated until 0.3 s or 5 repeats (at least 1), the median time kept. Needs the
 /// converged reference (the reference solver's nonlinear analyses); throws
 /// ring::InputError naming the key when it is not available.
+/// Checks before anything runs that bench can measure the scene's nonlinear analyses:
+/// the reference solver offers them and the loaded point is recorded (response.record,
+/// static.record). Throws ring::InputError naming the key.
+void check_bench_nonlinear(const ring::Scene& scene);
 std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostream* progress);
 
 /// The table, the time to 1 % and 0.1 %, and the multibody/FE time ratios at equal n = 40

@@ -13,6 +13,7 @@
 #include "compare/bench.hpp"
 #include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
+#include "compare/files.hpp"
 #include "compare/gates.hpp"
 #include "compare/guard.hpp"
 #include "compare/nonlinear.hpp"
@@ -57,6 +58,7 @@ class Progress {
 
 ring::Scene load(const CommonArgs& a) {
   ring::Scene s = load_scene(a.scene, a.set);
+  check_scene(s);
   check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
@@ -99,13 +101,6 @@ std::string modes_text(const ring::ModalResult& m) {
   return s.str();
 }
 
-/// Writes the history computed before a failure and reports where it went (exit 3).
-[[noreturn]] void keep_partial(const ring::IntegrationFailure& e, const std::string& path) {
-  write_file(path, history_csv(e.partial()));
-  const double t = e.partial().t.empty() ? 0.0 : e.partial().t.back();
-  throw ring::NumericalError(std::string(e.what()) + "; the history up to t = " + sig4(t) + " s was written to " + path);
-}
-
 std::string format_nonlinear(const NonlinearTable& t, const std::string& format) {
   if (format == "md") return format_markdown(t);
   if (format == "csv") return format_csv(t);
@@ -120,19 +115,13 @@ std::optional<std::string> single_solver(const std::string& option, const ring::
   return std::nullopt;
 }
 
-/// Writes a run's files into a fresh sibling folder, then publishes them into `dir` in
-/// place of the files an earlier run wrote there (output.hpp, publish_folder), so that a
-/// folder holds one run's files and an interrupted run leaves nothing half-written.
-template <class Write>
-void write_into(const std::string& dir, Write write) {
-  std::string base = dir;
-  while (base.size() > 1 && base.back() == '/') base.pop_back();
-  const std::string staging = base + ".tmp-" + std::to_string(getpid());
-  begin_staging(staging);
-  make_dirs(staging);
-  write(staging);
-  publish_folder(staging, base);
-}
+/// The names each command may write into its output folder (Outputs::folder checks that
+/// none of them is taken by a folder, a symlink or a device before anything is computed).
+const std::vector<std::string> kRunNames = {"report", "table", "modes_", "shapes_", "mode_shapes", "difference",
+                                            "error", "response", "static"};
+const std::vector<std::string> kConvergeNames = {"convergence"};
+const std::vector<std::string> kBenchNames = {"bench"};
+const std::vector<std::string> kVtuNames = {"fem_modes"};
 
 /// The scene asks for modes (a table, modes.solvers); commands that compare modes need them.
 bool modal(const ring::Scene& s) { return !s.modes.solvers.empty() || s.table.present; }
@@ -157,7 +146,8 @@ Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
 int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
               const std::string& vtu_dir) {
   const ring::Scene s = load(a);
-  if (!vtu_dir.empty()) check_output_dir(vtu_dir, "--vtu");
+  Outputs files;
+  if (!vtu_dir.empty()) files.folder(vtu_dir, "--vtu", kVtuNames);
   const int k = count.value_or(s.modes.count);
   const SolverEntry& entry = cmp::solver(solver);
   if (!vtu_dir.empty() && !entry.write_vtu)
@@ -167,10 +157,11 @@ int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int>
     throw ring::InputError(a.scene, "--count", std::to_string(k) + " modes asked, but the " + solver +
                                                    " model has only " + std::to_string(entry.elastic_modes(s)) +
                                                    " elastic modes");
+  files.open();
   const ring::ModalResult m = entry.modes(s, k);
   if (!vtu_dir.empty()) {
-    make_dirs(vtu_dir);
-    entry.write_vtu(s, k, vtu_dir);
+    entry.write_vtu(s, k, files.stage());
+    files.publish();
   }
   std::cout << (json ? modal_json(m, false) : modes_text(m));
   return 0;
@@ -191,8 +182,10 @@ int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
 int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper) {
   const ring::Scene s = load(a);
   const Progress p(a.quiet);
-  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
-  if (!junit.empty()) check_output_file(junit, "--junit", a.scene);
+  Outputs files;
+  if (!out_dir.empty()) files.folder(out_dir, "--out", kRunNames);
+  if (!junit.empty()) files.file(junit, "--junit", a.scene);
+  files.open();
   RunReport rep;
   rep.scene = &s;
   int code = 0;
@@ -210,15 +203,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
     }
   }
   if (s.response || s.statics) {
-    NonlinearRun nl;
-    try {
-      nl = run_nonlinear(s, "", p.on() ? &std::cerr : nullptr);
-    } catch (const ring::IntegrationFailure& e) {
-      // Keep what was computed: the partial history goes into the report folder.
-      if (out_dir.empty()) throw;
-      make_dirs(out_dir);
-      keep_partial(e, out_dir + "/response" + (e.partial().solver.empty() ? "" : "_" + e.partial().solver) + ".csv");
-    }
+    NonlinearRun nl = run_nonlinear(s, "", p.on() ? &std::cerr : nullptr);
     // One solver prints what `respond`/`static` print; several (or a reference) the
     // comparison table. The report always has the table.
     if (!nl.histories.empty()) {
@@ -246,24 +231,28 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
       }
     }
   }
-  if (!junit.empty()) write_file(junit, junit_xml(s.title.empty() ? a.scene : s.title, rep.gates));
+  if (!junit.empty()) files.stage_file(junit, junit_xml(s.title.empty() ? a.scene : s.title, rep.gates));
   if (!out_dir.empty()) {
     p.say("writing the report, data and figures to " + out_dir);
-    write_into(out_dir, [&](const std::string& dir) { write_report(dir, rep); });
-    std::cout << "wrote " << out_dir << "/report.md\n";
+    write_report(files.stage(), rep);
   }
+  files.publish();
+  if (!out_dir.empty()) std::cout << "wrote " << out_dir << "/report.md\n";
   return code;
 }
 
 int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format) {
   ring::Scene s = load(a);
   if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
-  if (!csv.empty()) check_output_file(csv, "--csv", a.scene);
+  // --csv - is standard output, as without --csv.
+  const bool to_file = !csv.empty() && csv != "-";
+  Outputs files;
+  if (to_file) files.file(csv, "--csv", a.scene);
   const Progress p(a.quiet);
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
   const auto one = single_solver(solver, s.response_request);
   if (!one) {
-    if (!csv.empty())
+    if (to_file)
       throw ring::InputError(a.scene, "--csv", "the scene runs several solvers (response.solvers); pick one with "
                                                "--solver NAME, or write every history with run --out DIR");
     const NonlinearRun r = run_nonlinear(s, "", progress);
@@ -271,14 +260,14 @@ int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& 
                                   format);
     return 0;
   }
-  try {
-    const ring::TimeHistory h = run_nonlinear(s, *one, progress).histories.front();
-    if (csv.empty()) std::cout << history_csv(h);
-    else write_file(csv, history_csv(h));
-  } catch (const ring::IntegrationFailure& e) {
-    if (csv.empty()) throw;
-    keep_partial(e, csv);
+  files.open();
+  const ring::TimeHistory h = run_nonlinear(s, *one, progress).histories.front();
+  if (!to_file) {
+    std::cout << history_csv(h);
+    return 0;
   }
+  files.stage_file(csv, history_csv(h));
+  files.publish();
   return 0;
 }
 
@@ -303,12 +292,15 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
   require_modes(s, "converge");
   const Progress p(a.quiet);
-  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
+  Outputs files;
+  if (!out_dir.empty()) files.folder(out_dir, "--out", kConvergeNames);
+  files.open();
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
   const ConvergenceStudy c = converge(s, compute_references(s, progress), progress);
   std::cout << convergence_text(c);
   if (!out_dir.empty()) {
-    write_into(out_dir, [&](const std::string& dir) { write_convergence(dir, c); });
+    write_convergence(files.stage(), c);
+    files.publish();
     std::cout << "wrote " << out_dir << "/convergence.csv and convergence.png\n";
   }
   return 0;
@@ -319,7 +311,10 @@ int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   if (!modal(s) && !s.response && !s.statics)
     throw ring::InputError(a.scene, "modes", "`bench` times modes, a [response] or a [static], and the scene has none");
   const Progress p(a.quiet);
-  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
+  if (s.response || s.statics) check_bench_nonlinear(s);
+  Outputs files;
+  if (!out_dir.empty()) files.folder(out_dir, "--out", kBenchNames);
+  files.open();
   std::ostream* progress = p.on() ? &std::cerr : nullptr;
   // The modal sweep for the solvers whose modes the scene lists, the nonlinear sweeps for
   // its [response] and [static].
@@ -331,10 +326,9 @@ int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   const std::vector<NonlinearBench> nonlinear = bench_nonlinear(s, progress);
   for (const NonlinearBench& b : nonlinear) std::cout << (modal_study ? "\n" : "") << bench_nonlinear_text(b);
   if (!out_dir.empty()) {
-    write_into(out_dir, [&](const std::string& dir) {
-      if (modal_study) write_bench(dir, *modal_study);
-      for (const NonlinearBench& b : nonlinear) write_bench_nonlinear(dir, b);
-    });
+    if (modal_study) write_bench(files.stage(), *modal_study);
+    for (const NonlinearBench& b : nonlinear) write_bench_nonlinear(files.stage(), b);
+    files.publish();
     std::cout << "wrote " << out_dir << "/bench*.csv, .txt and .png\n";
   }
   return 0;

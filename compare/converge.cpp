@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <sstream>
 
+#include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
 #include "compare/registry.hpp"

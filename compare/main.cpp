@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 
 #include "compare/commands.hpp"
-#include "compare/output.hpp"
+#include "compare/files.hpp"
 #include "compare/registry.hpp"
 #include "compare/sweep.hpp"
 #include "ring/errors.hpp"
@@ -19,7 +21,16 @@ void add_common(CLI::App* c, cmp::CommonArgs& a) {
   c->add_option("--set", a.set, "override a scene key: section.key=value (value in TOML syntax)");
   c->add_flag("-q,--quiet", a.quiet, "no progress messages on stderr");
   c->add_option("--max-memory", a.max_memory_gib, "cost guard: refuse scenes estimated to need more (GiB, default 8)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            // CLI11's PositiveNumber lets "nan" and "inf" through, which switch the guard off.
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            return end != v.c_str() && *end == '\0' && std::isfinite(x) && x > 0
+                       ? std::string()
+                       : "expected a finite number of GiB > 0, got '" + v + "'";
+          },
+          "GiB > 0"));
   c->add_flag("--force", a.force, "skip the cost guard");
 }
 
@@ -58,7 +69,7 @@ int main(int argc, char** argv) {
 
   auto* respond = app.add_subcommand("respond", "the forced nonlinear response of [response]");
   add_common(respond, a);
-  respond->add_option("--csv", csv, "write the time history to this CSV file (default: stdout)");
+  respond->add_option("--csv", csv, "write the time history to this CSV file (- or default: stdout)");
   respond->add_option("--solver", solver, "only this solver (default: response.solvers)")
       ->check(CLI::IsMember(cmp::solver_names()));
   respond->add_option("--format", format, "the comparison table of several solvers: text | md | csv | json")

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/table.hpp"
 
@@ -37,16 +38,9 @@ void render(const std::string& dir, const std::string& name, const std::string& 
      << "datafile = '" << name << ".dat'\n"
      << script;
   write_file(dir + "/" + name + ".gp", gp.str());
-  // gnuplot writes the PNG under a temporary name (the script on disk keeps its own
-  // output line; the copy piped to gnuplot is redirected), then the PNG is renamed into
-  // place. gnuplot is our direct child, so that a signal handler can stop it
-  // (install_signal_cleanup) before removing its half-written PNG.
-  const std::string tmp = name + ".png.tmp-" + std::to_string(getpid());
-  std::string piped = gp.str();
-  const std::string line = "set output '" + name + ".png'\n";
-  piped.replace(piped.find(line), line.size(), "set output '" + tmp + "'\n");
-  const std::string from = dir + "/" + tmp, to = dir + "/" + name + ".png";
-  register_temporary(from);
+  // The folder is a private stage (files.hpp): gnuplot writes the PNG in place. It is
+  // our direct child, so that a signal handler can stop it (install_signal_cleanup).
+  const std::string piped = gp.str(), to = dir + "/" + name + ".png";
   int in[2], out_pipe[2];
   if (pipe(in) != 0) throw std::runtime_error("cannot run gnuplot for " + name);
   if (pipe(out_pipe) != 0) {
@@ -69,7 +63,6 @@ void render(const std::string& dir, const std::string& name, const std::string& 
   if (pid < 0) {
     close(in[1]);
     close(out_pipe[0]);
-    release_temporary(from);
     throw std::runtime_error("cannot run gnuplot for " + name);
   }
   register_child(pid);
@@ -95,12 +88,9 @@ void render(const std::string& dir, const std::string& name, const std::string& 
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   register_child(0);
-  const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::rename(from.c_str(), to.c_str()) == 0;
-  if (ok) finished_file(to);
-  release_temporary(from);
+  const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && access(to.c_str(), F_OK) == 0;
   if (!ok) {
-    std::remove(from.c_str());
-    throw std::runtime_error("gnuplot failed for " + dir + "/" + name + ".gp: " + (out.empty() ? "no output" : out));
+    throw std::runtime_error("gnuplot failed to draw " + name + ".png: " + (out.empty() ? "no output" : out));
   }
 }
 

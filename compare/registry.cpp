@@ -1,9 +1,13 @@
 #include "compare/registry.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 #include "compare/fem_module.hpp"
+#include "fem_reference/checks.hpp"
+#include "lumped_mass/checks.hpp"
+#include "multibody/checks.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "multibody/dynamics.hpp"
@@ -22,6 +26,11 @@ auto as_input_error(const ring::Scene& s, const std::string& name, F&& f) -> dec
   } catch (const std::invalid_argument& e) {
     throw ring::InputError(s.file, name, e.what());
   }
+}
+
+/// True when the nonlinear request lists the solver.
+bool runs(const ring::NonlinearRequest& q, const std::string& name) {
+  return std::find(q.solvers.begin(), q.solvers.end(), name) != q.solvers.end();
 }
 
 /// Chains and frames: n = 40, 80, ..., 2560 (from enough pieces for the modes asked).
@@ -62,6 +71,14 @@ SolverEntry multibody_entry() {
     const double per_segment = count > 0 ? 1024.0 : 10240.0;
     return (dense ? 12.0 * 8.0 * n * n : per_segment * n) + 8.0 * n * (2.0 * count + 20.0);
   };
+  e.check = [](const ring::Scene& s) {
+    as_input_error(s, "multibody", [&] {
+      if (s.needs("multibody")) multibody::check_modes(s.ring, s.multibody);
+      if (s.statics && runs(s.static_request, "multibody")) multibody::check_static(s.ring, s.multibody, *s.statics);
+      if (s.response && runs(s.response_request, "multibody"))
+        multibody::check_response(s.ring, s.multibody, *s.response);
+    });
+  };
   e.modes = [](const ring::Scene& s, int count) {
     return as_input_error(s, "multibody", [&] { return multibody::compute_modes(s.ring, s.multibody, count); });
   };
@@ -101,6 +118,12 @@ SolverEntry lumped_entry() {
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.lumped.n;
     return 4800.0 * n + 3.0 * 8.0 * n * (2.0 * count + 20.0);
+  };
+  e.check = [](const ring::Scene& s) {
+    as_input_error(s, "lumped", [&] {
+      if (s.statics && runs(s.static_request, "lumped")) lumped::check_static(s.ring, s.lumped, *s.statics);
+      if (s.response && runs(s.response_request, "lumped")) lumped::check_response(s.ring, s.lumped, *s.response);
+    });
   };
   e.modes = [](const ring::Scene& s, int count) {
     return as_input_error(s, "lumped", [&] { return lumped::compute_modes(s.ring, s.lumped, count); });
@@ -149,6 +172,19 @@ SolverEntry fem_entry() {
     const double p = s.fem.reference || s.needs_reference() ? 16.0 : s.fem.degree;
     const double unknowns = 2.0 * p * s.fem.elements;
     return 8.0 * unknowns * (30.0 * p + 2.0 * count + 20.0);
+  };
+  // The reference runs with fem.reference on: its checks are the reference's.
+  e.check = [](const ring::Scene& s) {
+    as_input_error(s, "fem", [&] {
+      ring::FemOptions reference = s.fem;
+      reference.reference = true;
+      if (s.column("fem")) fem::check_modes(s.ring, s.fem);
+      if (s.needs_reference()) fem::check_modes(s.ring, reference);
+      if (s.statics && runs(s.static_request, "fem")) fem::check_static(s.ring, s.fem, *s.statics);
+      if (s.statics && s.static_request.reference) fem::check_static(s.ring, reference, *s.statics);
+      if (s.response && runs(s.response_request, "fem")) fem::check_response(s.ring, s.fem, *s.response);
+      if (s.response && s.response_request.reference) fem::check_response(s.ring, reference, *s.response);
+    });
   };
   e.modes = [](const ring::Scene& s, int count) { return fem_module::modes(s.ring, s.fem, count); };
   e.statics = [](const ring::Scene& s) {
@@ -236,6 +272,11 @@ ring::Scene load_scene(const std::string& path, const std::vector<std::string>& 
 ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
                         const std::vector<std::string>& overrides) {
   return ring::parse_scene(toml_text, name, overrides, scene_schema());
+}
+
+void check_scene(const ring::Scene& scene) {
+  for (const SolverEntry& e : registry())
+    if (e.check) e.check(scene);
 }
 
 ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count) {

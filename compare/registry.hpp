@@ -48,6 +48,10 @@ struct SolverEntry {
   /// Its column of the paper's Table 1 (corrected values), if it has one.
   std::function<std::optional<double>(const ring::PaperRow&)> paper;
 
+  /// Everything the solver refuses before it computes, for every analysis the scene asks
+  /// of it (its modes, statics, response, or the reference). Throws ring::InputError. O(1).
+  std::function<void(const ring::Scene&)> check;
+
   /// Analyses. Each throws ring::InputError (exit 2) for a request that cannot work and
   /// ring::NumericalError (exit 3; ring::IntegrationFailure for a response) on failure.
   std::function<ring::ModalResult(const ring::Scene&, int count)> modes;
@@ -72,6 +76,10 @@ const ring::SceneSchema& scene_schema();
 ring::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
                         const std::vector<std::string>& overrides = {});
+
+/// Every solver's check (SolverEntry::check) for the analyses the scene runs with it: the
+/// scene is refused (ring::InputError, exit 2) before any solver runs, never after.
+void check_scene(const ring::Scene& scene);
 
 /// The `count` lowest elastic modes of a solver with the scene's options.
 ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count);

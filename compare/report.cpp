@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
 #include "compare/response.hpp"

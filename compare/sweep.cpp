@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -16,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/files.hpp"
 #include "compare/guard.hpp"
 #include "compare/nonlinear.hpp"
 #include "compare/output.hpp"
@@ -132,38 +134,142 @@ SweepRow row_from_json(const nlohmann::json& j) {
   return r;
 }
 
-/// Rows already in `file` (a sweep.csv of the same keys) with status ok, by their values.
-std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(const std::string& file,
-                                                                     const std::vector<std::string>& keys) {
+/// The case's scene: the sweep's text with --set, then the case's overrides; checked
+/// like a scene of `run` (every solver's checks, the cost guard).
+ring::Scene case_scene(const std::string& text, const CommonArgs& a, const std::vector<std::string>& overrides) {
+  std::vector<std::string> set = a.set;
+  set.insert(set.end(), overrides.begin(), overrides.end());
+  ring::Scene s = parse_scene(text, a.scene, set);
+  check_scene(s);
+  check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
+  return s;
+}
+
+/// Rows a case adds to the table: a row per mode and column, and per recorded point and
+/// solver of each nonlinear analysis.
+double rows_of(const ring::Scene& s) {
+  double rows = 0.0;
+  if (!s.modes.solvers.empty() || s.table.present)
+    rows += double(s.modes.count) * double(table_solvers(s).size());
+  if (s.response) rows += double(s.response->record.size()) * double(s.response_request.solvers.size());
+  if (s.statics) rows += double(s.statics->record.size()) * double(s.static_request.solvers.size());
+  return std::max(rows, 1.0);
+}
+
+/// Checks every case (exit 2 naming the case) and the sweep's own memory: the table
+/// (a row is ~ 300 bytes in memory plus its CSV and JSON text, ~ 200 bytes per varied
+/// value) and the cases running at once (`jobs` of the largest per-case estimate).
+void check_sweep_cost(const std::string& text, const CommonArgs& a,
+                      const std::vector<std::vector<std::string>>& overrides, const std::vector<std::string>& keys,
+                      int jobs) {
+  const double budget = a.max_memory_gib * double(1ull << 30);
+  auto describe = [&](std::size_t i) {
+    std::string which;
+    for (const auto& x : overrides[i]) which += (which.empty() ? "" : ", ") + x;
+    return "--vary case " + std::to_string(i) + " (" + which + ")";
+  };
+  // The table first, from the first case, so that 10^6 cases are refused before 10^6 parses.
+  const double per_row = 800.0 + 200.0 * double(keys.size());
+  double table = 0.0;
+  try {
+    table = double(overrides.size()) * rows_of(case_scene(text, a, overrides.front())) * per_row;
+  } catch (const ring::InputError& e) {
+    throw ring::InputError("", describe(0), e.what());
+  }
+  if (!a.force && table > budget)
+    throw ring::InputError("", "--vary",
+                           std::to_string(overrides.size()) + " cases: the sweep's table would need about " +
+                               sig4(table / double(1ull << 30)) + " GiB, more than the budget of " +
+                               sig4(a.max_memory_gib) + " GiB (fewer values, --max-memory GiB, or --force)");
+  double largest = 0.0;
+  for (std::size_t i = 0; i < overrides.size(); ++i) {
+    try {
+      largest = std::max(largest, estimate_memory(case_scene(text, a, overrides[i])).bytes);
+    } catch (const ring::InputError& e) {
+      throw ring::InputError("", describe(i), e.what());
+    }
+  }
+  const double at_once = std::min<double>(jobs, double(overrides.size())) * largest;
+  if (!a.force && table + at_once > budget)
+    throw ring::InputError("", "-j",
+                           std::to_string(jobs) + " cases at once need about " +
+                               sig4((table + at_once) / double(1ull << 30)) + " GiB with the table, more than the "
+                               "budget of " + sig4(a.max_memory_gib) + " GiB (fewer jobs with -j N, --max-memory "
+                               "GiB, or --force)");
+}
+
+/// The cases already complete in `file` (a sweep.csv of the same keys), by their values:
+/// a case is kept only if every row it would have is there (rows_of its scene) and ok. A
+/// last line cut short (a crash, a full disk) drops its case; any other malformed line or
+/// value is an input error naming the file and the line.
+std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
+    const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
+    const std::function<double(std::size_t)>& expected_rows) {
   std::map<std::vector<std::string>, std::vector<SweepRow>> done;
-  std::ifstream f(file);
-  std::string line;
-  if (!std::getline(f, line)) return done;
-  const auto head = csv_split(line);
+  std::ifstream f(file, std::ios::binary);
+  if (!f) return done;  // nothing to resume: every case runs
+  std::stringstream all;
+  all << f.rdbuf();
+  const std::string text = all.str();
+  const bool cut = !text.empty() && text.back() != '\n';
+  std::vector<std::string> lines;
+  for (std::size_t start = 0; start < text.size();) {
+    const auto end = text.find('\n', start);
+    lines.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    start = end == std::string::npos ? text.size() : end + 1;
+  }
+  if (lines.empty()) return done;
+  const auto head = csv_split(lines[0]);
   const std::size_t k = keys.size();
   if (head.size() != k + 10 || !std::equal(keys.begin(), keys.end(), head.begin() + 1))
-    throw ring::InputError("", "--resume " + file, "was written by a sweep over other keys");
+    throw ring::InputError(file, "--resume", "was written by a sweep over other keys (its header: " +
+                                                 lines[0].substr(0, 200) + ")");
+  auto bad = [&](std::size_t line, const std::string& what) {
+    return ring::InputError(file, "line " + std::to_string(line + 1), what + "; fix or remove the line, or run "
+                                                                             "without --resume");
+  };
+  auto number_at = [&](const std::string& v, std::size_t line, const std::string& column) {
+    if (v.empty()) return double(NAN);
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (end == v.c_str() || *end != '\0' || !std::isfinite(x))
+      throw bad(line, "the " + column + " '" + v.substr(0, 40) + "' is not a finite number");
+    return x;
+  };
   std::set<std::vector<std::string>> failed;
-  while (std::getline(f, line)) {
-    const auto x = csv_split(line);
-    if (x.size() != head.size()) continue;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    const auto x = csv_split(lines[i]);
+    if (x.size() != head.size()) {
+      if (cut && i + 1 == lines.size()) break;  // the last row, cut short: its case runs again
+      throw bad(i, "expected " + std::to_string(head.size()) + " fields, found " + std::to_string(x.size()));
+    }
     SweepRow r;
-    r.index = std::atoi(x[0].c_str());
     r.values.assign(x.begin() + 1, x.begin() + 1 + k);
     r.solver = x[k + 1];
     r.analysis = x[k + 2];
     r.quantity = x[k + 3];
-    r.value = x[k + 4].empty() ? NAN : std::stod(x[k + 4]);
-    r.error_pct = x[k + 5].empty() ? NAN : std::stod(x[k + 5]);
-    r.unknowns = std::atoll(x[k + 6].c_str());
-    r.seconds = std::atof(x[k + 7].c_str());
+    r.value = number_at(x[k + 4], i, "value");
+    r.error_pct = number_at(x[k + 5], i, "error_pct");
+    const double unknowns = number_at(x[k + 6], i, "unknowns");
+    r.unknowns = std::isfinite(unknowns) ? static_cast<long long>(unknowns) : 0;
+    const double seconds = number_at(x[k + 7], i, "seconds");
+    r.seconds = std::isfinite(seconds) ? seconds : 0.0;
     r.status = x[k + 8];
     r.message = x[k + 9];
-    if (r.status != "ok") failed.insert(r.values);
+    if (r.status != "ok" && r.status != "input-error" && r.status != "numerical-failure")
+      throw bad(i, "the status '" + r.status.substr(0, 40) + "' is not ok, input-error or numerical-failure");
+    if (r.status != "ok" || !std::isfinite(r.value)) failed.insert(r.values);
     done[r.values].push_back(r);
   }
   for (const auto& v : failed) done.erase(v);
-  return done;
+  // Keep only the cases of this sweep that are complete.
+  std::map<std::vector<std::string>, std::vector<SweepRow>> kept;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto it = done.find(cases[i]);
+    if (it != done.end() && double(it->second.size()) == expected_rows(i)) kept[cases[i]] = it->second;
+  }
+  return kept;
 }
 
 /// The solvers whose modes the scene asks for, in table order.
@@ -257,8 +363,8 @@ std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>
   return cases;
 }
 
-std::vector<SweepRow> run_case(const CommonArgs& a, int index, const std::vector<std::string>& overrides,
-                               const std::vector<std::string>& values) {
+std::vector<SweepRow> run_case(const std::string& text, const CommonArgs& a, int index,
+                               const std::vector<std::string>& overrides, const std::vector<std::string>& values) {
   std::vector<SweepRow> rows;
   auto row = [&]() {
     SweepRow r;
@@ -269,10 +375,7 @@ std::vector<SweepRow> run_case(const CommonArgs& a, int index, const std::vector
     return r;
   };
   try {
-    std::vector<std::string> set = a.set;
-    set.insert(set.end(), overrides.begin(), overrides.end());
-    const ring::Scene s = load_scene(a.scene, set);
-    check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
+    const ring::Scene s = case_scene(text, a, overrides);
     if (!s.modes.solvers.empty() || s.table.present) {
       const std::vector<ring::ModalResult> columns = modal_columns(s);
       std::optional<ring::ModalResult> reference;
@@ -365,28 +468,28 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
   const bool distributed = ranks > 1 && mpi::built();
   const bool root = !distributed || mpi::launched_rank() == 0;
 
-  // Everything is checked before anything runs: the cases, each case's scene, the outputs.
+  // Everything is checked before anything runs: the cases, the sweep's own memory, each
+  // case's scene (every solver's checks and the cost guard), the outputs. The scene file
+  // is read once; every case is that text with its overrides.
   std::vector<std::string> keys;
   const auto cases = sweep_cases(args.vary, args.zip, keys);
+  const std::string text = ring::read_scene_text(a.scene);
   std::vector<std::vector<std::string>> overrides;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
+  for (const auto& c : cases) {
     std::vector<std::string> o;
-    for (std::size_t k = 0; k < keys.size(); ++k) o.push_back(keys[k] + "=" + cases[i][k]);
-    std::vector<std::string> set = a.set;
-    set.insert(set.end(), o.begin(), o.end());
-    try {
-      check_cost(load_scene(a.scene, set), Budget{a.max_memory_gib * double(1ull << 30), a.force});
-    } catch (const ring::InputError& e) {
-      std::string which;
-      for (const auto& x : o) which += (which.empty() ? "" : ", ") + x;
-      throw ring::InputError("", "--vary case " + std::to_string(i) + " (" + which + ")", e.what());
-    }
-    overrides.push_back(o);
+    for (std::size_t k = 0; k < keys.size(); ++k) o.push_back(keys[k] + "=" + c[k]);
+    overrides.push_back(std::move(o));
   }
-  if (!args.out.empty()) check_output_dir(args.out, "--out");
+  const int jobs = distributed ? 1 : args.jobs > 0 ? args.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  check_sweep_cost(text, a, overrides, keys, jobs);
+  Outputs files;
+  if (!args.out.empty()) files.folder(args.out, "--out", {"sweep"});
   if (args.resume && args.out.empty()) throw ring::InputError("", "--resume", "needs --out DIR (the sweep to resume)");
+  if (root) files.open();  // locks DIR before --resume reads it
   std::map<std::vector<std::string>, std::vector<SweepRow>> done;
-  if (args.resume) done = done_cases(args.out + "/sweep.csv", keys);
+  if (args.resume)
+    done = done_cases(args.out + "/sweep.csv", keys, cases,
+                      [&](std::size_t i) { return rows_of(case_scene(text, a, overrides[i])); });
   std::vector<int> todo;
   for (std::size_t i = 0; i < cases.size(); ++i)
     if (!done.count(cases[i])) todo.push_back(static_cast<int>(i));
@@ -394,7 +497,7 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
   const bool progress = root && !a.quiet && isatty(STDERR_FILENO);
   std::atomic<int> finished{0}, failed{0};
   auto run = [&](int i) {
-    auto rows = run_case(a, i, overrides[i], cases[i]);
+    auto rows = run_case(text, a, i, overrides[i], cases[i]);
     if (rows.size() == 1 && rows[0].status != "ok") ++failed;
     const int f = ++finished;
     if (progress) {
@@ -417,7 +520,6 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
     for (std::size_t k = 0; k < todo.size(); ++k)
       for (const auto& j : nlohmann::json::parse(texts[k])) results[todo[k]].push_back(row_from_json(j));
   } else {
-    const int jobs = args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
     std::atomic<std::size_t> next{0};
     std::vector<std::thread> pool;
     for (int w = 0; w < std::min<int>(jobs, static_cast<int>(todo.size())); ++w)
@@ -428,33 +530,44 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
   }
   if (progress) std::fprintf(stderr, "\n");
 
+  // Counted from the rows, so that under MPI every rank's failures count.
   std::vector<SweepRow> rows;
-  int all_failed_numerically = 0;
+  int failed_cases = 0, failed_here = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    const auto& r = done.count(cases[i]) ? done[cases[i]] : results[i];
-    if (r.size() == 1 && r[0].status == "numerical-failure") ++all_failed_numerically;
-    rows.insert(rows.end(), r.begin(), r.end());
+    const bool kept = done.count(cases[i]) > 0;
+    const auto& r = kept ? done[cases[i]] : results[i];
+    const bool bad = r.size() == 1 && r[0].status != "ok";
+    failed_cases += bad;
+    failed_here += bad && !kept;
+    for (SweepRow x : r) {
+      x.index = static_cast<int>(i);  // a kept case takes its number in this sweep
+      rows.push_back(std::move(x));
+    }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cerr << "ringvib: sweep: " << cases.size() << " cases, " << todo.size() << " run, "
+            << cases.size() - todo.size() << " resumed, " << failed_here << " failed, in " << sig4(wall) << " s on "
+            << (distributed ? std::to_string(ranks) + " MPI ranks" : "1 process") << "\n";
+  // A sweep in which every case failed is a failure: nothing is published.
+  if (!cases.empty() && failed_cases == static_cast<int>(cases.size()))
+    throw ring::NumericalError("every case of the sweep failed (the first: " + rows.front().message + ")");
   if (args.out.empty()) {
     std::cout << sweep_csv(keys, rows);
-  } else {
-    make_dirs(args.out);
-    write_file(args.out + "/sweep.csv", sweep_csv(keys, rows));
-    write_file(args.out + "/sweep.json", sweep_json(keys, rows));
-    std::ostringstream md;
-    md << "# Sweep of " << a.scene << "\n\n" << cases.size() << " cases over";
-    for (const auto& k : keys) md << " `" << k << "`";
-    md << (args.zip ? " (in lockstep)" : " (all combinations)") << "; " << todo.size() << " run here, "
-       << cases.size() - todo.size() << " kept from an earlier run; " << failed.load() << " failed.\n\n"
-       << "Data: `sweep.csv`, `sweep.json` (one row per case x solver x mode or recorded point).\n";
-    if (plot_sweep(args.out, keys, rows)) md << "\n![sweep](sweep.png)\n";
-    write_file(args.out + "/sweep.md", md.str());
+    return 0;
   }
-  std::cerr << "ringvib: sweep: " << cases.size() << " cases, " << todo.size() << " run, "
-            << cases.size() - todo.size() << " resumed, " << failed.load() << " failed, in " << sig4(wall) << " s on "
-            << (distributed ? std::to_string(ranks) + " MPI ranks" : "1 process") << "\n";
-  return !cases.empty() && all_failed_numerically == static_cast<int>(cases.size()) ? 3 : 0;
+  const std::string& dir = files.stage();
+  write_file(dir + "/sweep.csv", sweep_csv(keys, rows));
+  write_file(dir + "/sweep.json", sweep_json(keys, rows));
+  std::ostringstream md;
+  md << "# Sweep of " << a.scene << "\n\n" << cases.size() << " cases over";
+  for (const auto& k : keys) md << " `" << k << "`";
+  md << (args.zip ? " (in lockstep)" : " (all combinations)") << "; " << todo.size() << " run here, "
+     << cases.size() - todo.size() << " kept from an earlier run; " << failed_cases << " failed.\n\n"
+     << "Data: `sweep.csv`, `sweep.json` (one row per case x solver x mode or recorded point).\n";
+  if (plot_sweep(dir, keys, rows)) md << "\n![sweep](sweep.png)\n";
+  write_file(dir + "/sweep.md", md.str());
+  files.publish();
+  return 0;
 }
 
 }  // namespace cmp

@@ -44,18 +44,20 @@ struct SweepRow {
 std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
                                                   std::vector<std::string>& keys);
 
-/// Runs one case: every analysis the scene lists, as rows. A case that fails is one
-/// row with its status and message; it never throws.
-std::vector<SweepRow> run_case(const CommonArgs& a, int index, const std::vector<std::string>& overrides,
-                               const std::vector<std::string>& values);
+/// Runs one case: the scene `text` (read once by the sweep) with a.set and the case's
+/// overrides, every analysis it lists, as rows. A case that fails is one row with its
+/// status and message; it never throws.
+std::vector<SweepRow> run_case(const std::string& text, const CommonArgs& a, int index,
+                               const std::vector<std::string>& overrides, const std::vector<std::string>& values);
 
 /// The table as CSV (header: case, the varied keys, solver, analysis, quantity, value,
 /// error_pct, unknowns, seconds, status, message) and as JSON ({"keys", "rows": [...]}).
 std::string sweep_csv(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
 std::string sweep_json(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
 
-/// The subcommand. Exit 0 when the sweep completes (failed cases are rows), 3 when every
-/// case failed numerically, 2 for bad input (before anything runs).
+/// The subcommand. Exit 0 when the sweep completes (failed cases are rows); 2 for bad
+/// input, found before any case runs (every case is checked); 3 when every case failed,
+/// and then nothing is published.
 int cmd_sweep(const CommonArgs& a, const SweepArgs& s, int argc, char** argv);
 
 }  // namespace cmp

@@ -1,30 +1,9 @@
-// The FE modes driver: input validation, one discretization (with the inextensible
+// The FE modes driver: one discretization (with the inextensible
 // extrapolation), and the p/h refinement to the converged reference (modes.hpp).
+#include "fem_reference/checks.hpp"
 #include "fem_reference/ring_model.hpp"
 
 namespace fem::detail {
-
-void validate(const ring::RingSpec& spec, const ring::FemOptions& o) {
-  auto need = [](bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument("fem: " + what);
-  };
-  need(spec.radius > 0 && std::isfinite(spec.radius), "ring.radius must be > 0");
-  need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
-  need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
-  need(o.elements >= 4, "fem.elements (=" + std::to_string(o.elements) + ") must be >= 4");
-  need(o.degree >= 2 && o.degree <= 12, "fem.degree (=" + std::to_string(o.degree) + ") must be in 2..12");
-  need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
-  need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
-  need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
-  if (spec.supports.roller) {
-    need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
-             ring::wrap_degrees(*spec.supports.pin - *spec.supports.roller) > 1e-9,
-         "supports.roller must differ from supports.pin");
-    need(ring::on_node(*spec.supports.roller, *spec.supports.pin, o.elements),
-         "supports.roller (=" + std::to_string(*spec.supports.roller) +
-             ") must fall on an FE vertex: pin + k * 360 / fem.elements");
-  }
-}
 
 namespace {
 
@@ -97,7 +76,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
 }  // namespace
 
 Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, bool keep_full) {
-  validate(spec, o);
+  check_modes(spec, o);
   if (count < 1) throw std::invalid_argument("fem: count (=" + std::to_string(count) + ") must be >= 1");
   const auto t0 = std::chrono::steady_clock::now();
   Setup setup;

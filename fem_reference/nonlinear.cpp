@@ -3,6 +3,7 @@
 // (nonlinear.hpp).
 #include "fem_reference/nonlinear.hpp"
 
+#include "fem_reference/checks.hpp"
 #include "fem_reference/newton.hpp"
 #include "fem_reference/static_path.hpp"
 
@@ -13,25 +14,6 @@ namespace {
 constexpr double kResponseBeta = 1e7;
 //// An undamped run that gains more than this fraction of the largest work has failed.
 constexpr double kEnergyGrowth = 1e-2;
-
-void need(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("fem: " + what);
-}
-
-void validate_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::PointLoad& load,
-                        const std::vector<double>& record, const std::string& section) {
-  validate(spec, o);
-  need(o.geometry == Geometry::curved, "the geometrically exact beam needs fem.geometry = \"curved\"");
-  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
-  const double pin = *spec.supports.pin;
-  auto on_vertex = [&](double a, const std::string& key) {
-    need(ring::on_node(a, pin, o.elements), section + "." + key + " (=" + std::to_string(a) +
-                                                ") must fall on an FE vertex: pin + k * 360 / fem.elements");
-  };
-  on_vertex(load.angle, "at");
-  for (double a : record) on_vertex(a, "record");
-  need(std::isfinite(load.force[0]) && std::isfinite(load.force[1]), section + ".force must be finite");
-}
 
 Setup make_setup(const ring::RingSpec& spec, const ring::FemOptions& o, double beta) {
   Setup s;
@@ -112,13 +94,8 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   return r;
 }
 
-void validate_statics(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  validate_nonlinear(spec, o, st.load, st.record, "static");
-  need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
-}
-
 ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  validate_statics(spec, o, st);
+  check_static(spec, o, st);
   const auto t0 = std::chrono::steady_clock::now();
   Setup setup = make_setup(spec, o, kInextensibleBeta);
   const ContinuationOptions continuation;
@@ -319,12 +296,7 @@ double peak_change(const ring::TimeHistory& a, const ring::TimeHistory& b) {
 }
 
 ring::TimeHistory response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  validate_nonlinear(spec, o, rs.load, rs.record, "response");
-  need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
-  need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
-  need(rs.integrator != ring::ResponseOptions::Integrator::energy_momentum,
-       "response.integrator = \"energy-momentum\" is not offered by the FE beam (newmark or generalized-alpha)");
-  need(rs.dt > 0 && rs.t_end >= rs.dt, "response.dt must be > 0 and <= response.t_end");
+  check_response(spec, o, rs);
   const auto t0 = std::chrono::steady_clock::now();
   Setup setup = make_setup(spec, o, kResponseBeta);
   if (!o.reference) return respond_once(spec, setup, rs);
@@ -358,7 +330,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& op
 
 StaticPath trace_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics,
                         const ContinuationOptions& continuation) {
-  detail::validate_statics(spec, options, statics);
+  check_static(spec, options, statics);
   if (options.reference)
     throw std::invalid_argument("fem::trace_static: traces one discretization (fem.reference must be false)");
   if (continuation.max_arc_steps < 1)

@@ -218,9 +218,6 @@ FESystem<1, spacedim> make_fe(const Setup& s) {
   return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree), 2);
 }
 
-/// Throws std::invalid_argument for a ring or options no FE solve can work with.
-void validate(const ring::RingSpec& spec, const ring::FemOptions& o);
-
 /// Frequencies, shapes and residual of one discretization (with the inextensible
 /// extrapolation when asked). `full` receives the full DoF vectors if not null.
 struct Solved {

@@ -1,5 +1,7 @@
 #include "lumped_mass/nonlinear.hpp"
 
+#include "lumped_mass/checks.hpp"
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
@@ -48,12 +50,6 @@ Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   auto need = [&](bool ok, const std::string& msg) {
     if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
   };
-  need(o.variant == ring::LumpedOptions::Variant::chain,
-       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no nonlinear model here; use \"chain\"");
-  need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
-  need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
-       "radius, E, rho, area and inertia must be > 0");
-  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
   Chain c;
   c.n = o.n;
   c.l = 2.0 * kPi * spec.radius / c.n;
@@ -315,9 +311,8 @@ std::string contact_message(const Chain& c, const Contact& k) {
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                 const ring::StaticOptions& statics) {
   const auto t0 = std::chrono::steady_clock::now();
+  check_static(spec, options, statics);
   const Chain c = make_chain(spec, options, "statics");
-  if (c.roller < 0) throw std::invalid_argument("lumped statics: needs a roller as well as the pin");
-  if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
   const int at = load_hinge(c, statics.load, "static.at");
   const auto rec = record_hinges(c, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
@@ -390,13 +385,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                           const ring::ResponseOptions& r) {
   const auto t0 = std::chrono::steady_clock::now();
+  check_response(spec, options, r);
   const Chain c = make_chain(spec, options, "response");
-  if (r.integrator == ring::ResponseOptions::Integrator::generalized_alpha)
-    throw std::invalid_argument(
-        "lumped response: response.integrator = \"generalized-alpha\" is not offered by the lumped chain; use "
-        "\"newmark\" (its midpoint form) or \"energy-momentum\"");
-  if (!(r.dt > 0) || !(r.t_end >= r.dt))
-    throw std::invalid_argument("lumped response: response.dt must be > 0 and <= response.t_end");
   const int at = load_hinge(c, r.load, "response.at");
   const auto rec = record_hinges(c, r.record, "response.record");
   const int N = 2 * c.n, R = c.rows();

@@ -1,5 +1,7 @@
 #include "multibody/dynamics.hpp"
 
+#include "multibody/checks.hpp"
+
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -47,16 +49,7 @@ bool use_sparse_path(const ring::MultibodyOptions& options) {
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
                           const IntegrationControls& controls) {
-  if (!spec.supports.pin)
-    throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
-  if (!(response.dt > 0.0) || !std::isfinite(response.dt))
-    throw std::invalid_argument("multibody::respond: dt must be > 0");
-  if (!(response.t_end >= response.dt) || !std::isfinite(response.t_end))
-    throw std::invalid_argument("multibody::respond: t_end must be >= dt");
-  if (!(response.rho_inf >= 0.0 && response.rho_inf <= 1.0))
-    throw std::invalid_argument("multibody::respond: rho_inf must lie in [0, 1]");
-  if (response.rayleigh_mass < 0 || response.rayleigh_stiffness < 0 || response.hinge_damping < 0)
-    throw std::invalid_argument("multibody::respond: damping coefficients must be >= 0");
+  check_response(spec, options, response);
   if (controls.max_newton < 1 || !(controls.min_dt_factor > 0 && controls.min_dt_factor <= 1))
     throw std::invalid_argument(
         "multibody::respond: controls need max_newton >= 1 and 0 < min_dt_factor <= 1");

@@ -1,6 +1,8 @@
 // The energy-momentum integrator in natural coordinates (energy_momentum.hpp).
 #include "multibody/energy_momentum.hpp"
 
+#include "multibody/checks.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -131,10 +133,7 @@ std::string describe(double t) {
 ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                           const ring::ResponseOptions& response,
                                           const IntegrationControls& controls) {
-  if (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0)
-    throw std::invalid_argument(
-        "multibody::respond: response.integrator = \"energy-momentum\" conserves the undamped energy balance and "
-        "takes no damping; use \"newmark\" for a damped response");
+  check_response(spec, options, response);
   const auto start = std::chrono::steady_clock::now();
   const Chain chain(spec, options, response.load.angle);
   const Natural c =

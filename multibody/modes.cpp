@@ -1,5 +1,7 @@
 #include "multibody/modes.hpp"
 
+#include "multibody/checks.hpp"
+
 #include <Spectra/SymEigsSolver.h>
 
 #include <algorithm>
@@ -234,17 +236,9 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   // Automatic choice: the sparse path also needs few modes relative to r (its Lanczos
   // basis grows with the count; asking for a third of the spectrum or more is the dense
   // path's job, as in the small-problem rule of the dense path itself). Set below.
+  check_modes(spec, options);
   bool sparse = uses_sparse_path(options);
-  if (sparse && options.dependent == Dependent::paper)
-    throw std::invalid_argument(
-        "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "
-        "offered on the dense path only)");
   const Chain chain(spec, options);
-  // Forced sparse path: measured right from n = 10 (every support, with and without rotary
-  // inertia, against the dense path: tests/multibody/test_modes_sparse.cpp), wrong at n = 8.
-  if (sparse && options.method == ring::MultibodyOptions::Method::sparse && chain.n() < 10)
-    throw std::invalid_argument("multibody: method = sparse needs n >= 10 (n = " + std::to_string(chain.n()) +
-                                "); use method = \"dense\" or \"auto\"");
   const int N = chain.dofs(), r = N - chain.constraint_count();
   const int expected_rigid = spec.supports.rigid_modes();
   if (count < 1 || count > r - expected_rigid)

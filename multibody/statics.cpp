@@ -1,5 +1,7 @@
 #include "multibody/statics.hpp"
 
+#include "multibody/checks.hpp"
+
 #include <Eigen/LU>
 #include <cmath>
 #include <sstream>
@@ -150,10 +152,7 @@ bool use_natural_statics(const ring::MultibodyOptions& options) {
 
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics) {
-  if (!spec.supports.pin)
-    throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
-  if (statics.steps < 1)
-    throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
+  check_static(spec, options, statics);
   const Chain ch(spec, options, statics.load.angle);
   const int n = ch.dofs();
   const detail::DeadLoad load{ch.hinge_at(statics.load.angle),
@@ -162,14 +161,6 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   for (double a : statics.record) rec.push_back(ch.hinge_at(a));
   const Matrix K = ch.stiffness_matrix();
   const int gap = detail::contact_gap(ch, spec.section.depth());
-  if (!spec.supports.roller) {
-    // Without a roller the rigid rotation about the pin is free and K is singular in it:
-    // the dead load then turns the ring until it hangs along its line of action.
-    // The tangent stays regular only away from that, so refuse rather than guess.
-    throw std::invalid_argument(
-        "multibody::solve_static: needs a roller as well as a pin (supports.roller), "
-        "otherwise the ring is free to turn about the pin");
-  }
   if (use_natural_statics(options)) return natural::solve_static(ch, spec, statics);
 
   Vector q = ch.q0(), lambda = Vector::Zero(ch.constraint_count());

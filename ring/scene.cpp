@@ -504,7 +504,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
   return s;
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema) {
+std::string read_scene_text(const std::string& path) {
   struct stat st;
   if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
     throw InputError(path, "", "is a folder; expected a scene file (TOML)");
@@ -519,7 +519,11 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (text.size() > kMaxSceneBytes)
     throw InputError(path, "", "is larger than " + std::to_string(kMaxSceneBytes / 1024) +
                                    " KiB; a scene is a short TOML file");
-  return parse_scene(text, path, overrides, schema);
+  return text;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema) {
+  return parse_scene(read_scene_text(path), path, overrides, schema);
 }
 
 }  // namespace ring

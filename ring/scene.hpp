@@ -112,7 +112,12 @@ constexpr std::size_t kMaxNesting = 1000;
 /// model that uses it.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema);
 
-/// Same, from TOML text; `name` is used in messages in place of a file name.
+/// The text of the scene file at `path` (at most kMaxSceneBytes; a FIFO or /dev/stdin is
+/// read once), for a caller that parses it several times (a sweep's cases). Throws
+/// InputError naming the path.
+std::string read_scene_text(const std::string& path);
+
+/// Same as load_scene, from TOML text; `name` is used in messages in place of a file name.
 Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
                   const SceneSchema& schema);
 

@@ -1,0 +1,67 @@
+#include "fem_reference/checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fem {
+namespace {
+
+void need(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("fem: " + what);
+}
+
+/// What the geometrically exact beam needs of every nonlinear analysis.
+void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::PointLoad& load,
+                     const std::vector<double>& record, const std::string& section) {
+  check_modes(spec, o);
+  need(o.geometry == ring::FemOptions::Geometry::curved,
+       "the geometrically exact beam needs fem.geometry = \"curved\"");
+  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
+  const double pin = *spec.supports.pin;
+  auto on_vertex = [&](double a, const std::string& key) {
+    need(ring::on_node(a, pin, o.elements), section + "." + key + " (=" + std::to_string(a) +
+                                                ") must fall on an FE vertex: pin + k * 360 / fem.elements");
+  };
+  on_vertex(load.angle, "at");
+  for (double a : record) on_vertex(a, "record");
+  need(std::isfinite(load.force[0]) && std::isfinite(load.force[1]), section + ".force must be finite");
+}
+
+}  // namespace
+
+void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  need(spec.radius > 0 && std::isfinite(spec.radius), "ring.radius must be > 0");
+  need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
+  need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
+  need(o.elements >= 4, "fem.elements (=" + std::to_string(o.elements) + ") must be >= 4");
+  need(o.degree >= 2 && o.degree <= 12, "fem.degree (=" + std::to_string(o.degree) + ") must be in 2..12");
+  need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
+  need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
+  need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
+  if (spec.supports.roller) {
+    need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
+             ring::wrap_degrees(*spec.supports.pin - *spec.supports.roller) > 1e-9,
+         "supports.roller must differ from supports.pin");
+    need(ring::on_node(*spec.supports.roller, *spec.supports.pin, o.elements),
+         "supports.roller (=" + std::to_string(*spec.supports.roller) +
+             ") must fall on an FE vertex: pin + k * 360 / fem.elements");
+  }
+}
+
+void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  check_nonlinear(spec, o, st.load, st.record, "static");
+  need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
+}
+
+void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  check_nonlinear(spec, o, rs.load, rs.record, "response");
+  need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
+  need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
+  need(rs.integrator != ring::ResponseOptions::Integrator::energy_momentum,
+       "response.integrator = \"energy-momentum\" is not offered by the FE beam (newmark or generalized-alpha)");
+  need(rs.dt > 0 && rs.t_end >= rs.dt, "response.dt must be > 0 and <= response.t_end");
+}
+
+}  // namespace fem

@@ -1,0 +1,42 @@
+#include "lumped_mass/checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lumped {
+namespace {
+
+/// What every nonlinear analysis of the chain needs; `what` is "statics" or "response".
+void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
+  auto need = [&](bool ok, const std::string& msg) {
+    if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
+  };
+  need(o.variant == ring::LumpedOptions::Variant::chain,
+       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no nonlinear model here; use \"chain\"");
+  need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
+  need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
+       "radius, E, rho, area and inertia must be > 0");
+  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
+}
+
+}  // namespace
+
+void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
+  check_chain(spec, options, "statics");
+  if (!spec.supports.roller) throw std::invalid_argument("lumped statics: needs a roller as well as the pin");
+  if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
+}
+
+void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                    const ring::ResponseOptions& r) {
+  check_chain(spec, options, "response");
+  if (r.integrator == ring::ResponseOptions::Integrator::generalized_alpha)
+    throw std::invalid_argument(
+        "lumped response: response.integrator = \"generalized-alpha\" is not offered by the lumped chain; use "
+        "\"newmark\" (its midpoint form) or \"energy-momentum\"");
+  if (!(r.dt > 0) || !(r.t_end >= r.dt))
+    throw std::invalid_argument("lumped response: response.dt must be > 0 and <= response.t_end");
+}
+
+}  // namespace lumped

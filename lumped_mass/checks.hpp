@@ -1,0 +1,20 @@
+// What the lumped-mass models refuse before they compute: a request that can never work is
+// std::invalid_argument naming the key. The nonlinear analyses call these first, and the
+// driver calls them for every analysis a scene asks of the lumped models before any solver
+// runs, so a refusal never comes after another solver's work. O(1).
+#pragma once
+
+#include "ring/analysis.hpp"
+#include "ring/spec.hpp"
+
+namespace lumped {
+
+/// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
+/// material, a pin and a roller, static.steps >= 1.
+void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
+/// Forced response of the chain: as statics without the roller, the integrator "newmark"
+/// (its midpoint form) or "energy-momentum", 0 < dt <= t_end.
+void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                    const ring::ResponseOptions& response);
+
+}  // namespace lumped

@@ -1,0 +1,53 @@
+#include "multibody/checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "multibody/modes.hpp"
+
+namespace multibody {
+
+void check_modes(const ring::RingSpec&, const ring::MultibodyOptions& options) {
+  const bool sparse = uses_sparse_path(options);
+  if (sparse && options.dependent == ring::MultibodyOptions::Dependent::paper)
+    throw std::invalid_argument(
+        "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "
+        "offered on the dense path only)");
+  // Forced sparse path: measured right from n = 10 (every support, with and without rotary
+  // inertia, against the dense path: tests/multibody/test_modes_sparse.cpp), wrong at n = 8.
+  if (sparse && options.method == ring::MultibodyOptions::Method::sparse && options.n < 10)
+    throw std::invalid_argument("multibody: method = sparse needs n >= 10 (n = " + std::to_string(options.n) +
+                                "); use method = \"dense\" or \"auto\"");
+}
+
+void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::StaticOptions& statics) {
+  if (!spec.supports.pin) throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
+  if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
+  // Without a roller the rigid rotation about the pin is free and K is singular in it:
+  // the dead load then turns the ring until it hangs along its line of action. The
+  // tangent stays regular only away from that, so refuse rather than guess.
+  if (!spec.supports.roller)
+    throw std::invalid_argument(
+        "multibody::solve_static: needs a roller as well as a pin (supports.roller), "
+        "otherwise the ring is free to turn about the pin");
+}
+
+void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::ResponseOptions& response) {
+  if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
+  if (!(response.dt > 0.0) || !std::isfinite(response.dt))
+    throw std::invalid_argument("multibody::respond: dt must be > 0");
+  if (!(response.t_end >= response.dt) || !std::isfinite(response.t_end))
+    throw std::invalid_argument("multibody::respond: t_end must be >= dt");
+  if (!(response.rho_inf >= 0.0 && response.rho_inf <= 1.0))
+    throw std::invalid_argument("multibody::respond: rho_inf must lie in [0, 1]");
+  if (response.rayleigh_mass < 0 || response.rayleigh_stiffness < 0 || response.hinge_damping < 0)
+    throw std::invalid_argument("multibody::respond: damping coefficients must be >= 0");
+  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum &&
+      (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0))
+    throw std::invalid_argument(
+        "multibody::respond: response.integrator = \"energy-momentum\" conserves the undamped energy balance and "
+        "takes no damping; use \"newmark\" for a damped response");
+}
+
+}  // namespace multibody

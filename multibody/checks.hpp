@@ -1,0 +1,23 @@
+// What the multibody chain refuses before it computes: a request that can never work is
+// std::invalid_argument naming the key and the valid range. Each analysis calls its check
+// first, and the driver calls them for every analysis a scene asks of the chain before
+// any solver runs, so a refusal never comes after another solver's work. O(1).
+#pragma once
+
+#include "ring/analysis.hpp"
+#include "ring/spec.hpp"
+
+namespace multibody {
+
+/// Linear modes: n >= 4, a positive section and material, method = "sparse" only with
+/// dependent = "robust" and n >= 10.
+void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options);
+/// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1.
+void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                  const ring::StaticOptions& statics);
+/// Forced response: a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
+/// none with the energy-momentum integrator.
+void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                    const ring::ResponseOptions& response);
+
+}  // namespace multibody
