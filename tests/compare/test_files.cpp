@@ -1,0 +1,366 @@
+// The file contract under hostile input (issue 23), through the binary: ringvib touches
+// only its own files, checks every destination before computing, publishes nothing of a
+// failed or interrupted run, leaves no stage, and refuses what it cannot measure instead of
+// printing NaN. The oracle is the README's contract ("Exit codes", "Files a run writes");
+// each test names the probe finding it holds.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "cli.hpp"
+#include "support/paper.hpp"
+
+using ringtest::ringvib;
+using ringtest::source;
+
+namespace {
+
+bool exists(const std::string& p) {
+  struct stat st;
+  return lstat(p.c_str(), &st) == 0;
+}
+
+std::string read(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+std::string shell(const std::string& cmd) {
+  std::string out;
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+  }
+  return out;
+}
+
+/// Anything a run stages below `dir`: its stage folder, a staged single file, or an older
+/// writer's temporary. Empty when nothing is left.
+std::string leftovers(const std::string& dir) {
+  return shell("find " + dir + " \\( -name '.ringvib-stage-*' -o -name '.ringvib-*.tmp*' -o -name '*.tmp-*' \\) "
+               "2>/dev/null");
+}
+
+void expect_input_error(const ringtest::Run& r, const std::string& names) {
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find(names), std::string::npos) << "message does not name " << names << ": " << r.err;
+}
+
+const std::string kMultibody = "scenes/paper1990-multibody.toml";
+
+// Security: a planted manifest line used to delete files outside --out ("../victim"),
+// and a user's file and folder inside it ("sub/keep.txt", "sub").
+TEST(Files, APlantedManifestRemovesNothingButRingvibsOwnFiles) {
+  const std::string base = ringtest::temp_dir(), out = base + "/r";
+  ASSERT_EQ(mkdir(out.c_str(), 0755), 0);
+  ringtest::write(base + "/victim", "precious");
+  ASSERT_EQ(mkdir((out + "/sub").c_str(), 0755), 0);
+  ringtest::write(out + "/sub/keep.txt", "mine");
+  ringtest::write(out + "/notes.txt", "mine");  // a name ringvib could write, but not listed
+  ringtest::write(out + "/.ringvib-files", "../victim\n" + base + "/victim\nsub/keep.txt\nsub\n..\n.\n"
+                                           "report.md/../../victim\n");
+  const auto r = ringvib("run " + source(kMultibody) + " --out " + out + " -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(read(base + "/victim"), "precious");
+  EXPECT_EQ(read(out + "/sub/keep.txt"), "mine");
+  EXPECT_EQ(read(out + "/notes.txt"), "mine");
+  EXPECT_NE(r.err.find("ignored"), std::string::npos) << "the ignored lines are said: " << r.err;
+  EXPECT_TRUE(exists(out + "/report.md"));
+  // The new manifest lists only what this run wrote.
+  const std::string manifest = read(out + "/.ringvib-files");
+  EXPECT_EQ(manifest.find(".."), std::string::npos) << manifest;
+  EXPECT_EQ(manifest.find("sub"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("report.md"), std::string::npos) << manifest;
+  EXPECT_EQ(leftovers(base), "");
+}
+
+// Security: an output path that is a device, FIFO or symlink was renamed over.
+TEST(Files, OutputPathsThatAreNotRegularFilesAreRefusedUpFront) {
+  const std::string dir = ringtest::temp_dir();
+  const std::string forced = source("scenes/paper1990-forced.toml");
+  ASSERT_EQ(mkfifo((dir + "/fifo").c_str(), 0644), 0);
+  ringtest::write(dir + "/target", "target");
+  ASSERT_EQ(symlink((dir + "/target").c_str(), (dir + "/link").c_str()), 0);
+  ASSERT_EQ(symlink((dir + "/nowhere").c_str(), (dir + "/dangling").c_str()), 0);
+  // A character device where mknod is allowed (root, as in CI); /dev/null itself otherwise.
+  const std::string device = mknod((dir + "/null").c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0 ? dir + "/null"
+                                                                                                  : "/dev/null";
+  for (const std::string& path : {dir + "/fifo", dir + "/link", dir + "/dangling", device}) {
+    expect_input_error(ringvib("run " + source(kMultibody) + " --junit " + path), "--junit " + path);
+    expect_input_error(ringvib("respond " + forced + " --csv " + path), "--csv " + path);
+  }
+  struct stat st;
+  ASSERT_EQ(lstat((dir + "/fifo").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  ASSERT_EQ(lstat(device.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  ASSERT_EQ(lstat((dir + "/link").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode));
+  EXPECT_EQ(read(dir + "/target"), "target");
+  // A stream is asked for with -.
+  const auto streamed = ringvib("respond " + forced + " --csv -");
+  ASSERT_EQ(streamed.code, 0) << streamed.err;
+  EXPECT_EQ(streamed.out.rfind("t,", 0), 0u) << streamed.out.substr(0, 80);
+  // --out as a dangling symlink or a loop: refused before computing, nothing made.
+  ASSERT_EQ(symlink((dir + "/loop").c_str(), (dir + "/loop").c_str()), 0);
+  for (const std::string& out : {dir + "/dangling", dir + "/loop", dir + "/dangling/sub"})
+    expect_input_error(ringvib("run " + source(kMultibody) + " --out " + out), "--out " + out);
+  EXPECT_FALSE(exists(dir + "/nowhere"));
+  EXPECT_EQ(leftovers(dir), "");
+}
+
+// Found only after computing: a name ringvib writes taken by a folder; names at the file
+// system's limit (the old ".tmp-PID" suffix passed NAME_MAX).
+TEST(Files, DestinationsAreCheckedBeforeComputing) {
+  const std::string dir = ringtest::temp_dir();
+  ASSERT_EQ(system(("mkdir -p " + dir + "/s/sweep.md " + dir + "/r/report.md").c_str()), 0);
+  expect_input_error(ringvib("sweep " + source(kMultibody) + " --vary 'multibody.n=[40, 80]' --out " + dir + "/s"),
+                     "sweep.md");
+  expect_input_error(ringvib("run " + source(kMultibody) + " --out " + dir + "/r"), "report.md");
+  EXPECT_EQ(shell("LC_ALL=C ls -A " + dir + "/s"), "sweep.md\n");
+  // 250 bytes: a valid name, written whole; 256 bytes: refused up front.
+  const std::string long_name = dir + "/" + std::string(246, 'j') + ".xml";
+  const auto ok = ringvib("run " + source(kMultibody) + " --junit " + long_name + " -q");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(read(long_name).find("<testsuite"), std::string::npos);
+  const std::string too_long = dir + "/" + std::string(252, 'j') + ".xml";
+  expect_input_error(ringvib("run " + source(kMultibody) + " --junit " + too_long), "longer than");
+  expect_input_error(ringvib("run " + source(kMultibody) + " --out " + dir + "/" + std::string(256, 'd')),
+                     "longer than");
+  EXPECT_EQ(leftovers(dir), "");
+}
+
+// Published while failed: a failed response replaced a good run's response.csv with its
+// one-row history.
+TEST(Files, AFailedRunPublishesNothing) {
+  const std::string dir = ringtest::temp_dir(), out = dir + "/f";
+  const std::string forced = source("scenes/paper1990-forced.toml");
+  ASSERT_EQ(ringvib("run " + forced + " --out " + out + " -q").code, 0);
+  const std::string good = read(out + "/response.csv"), manifest = read(out + "/.ringvib-files");
+  ASSERT_GT(std::count(good.begin(), good.end(), '\n'), 100);
+  const auto failed = ringvib("run " + forced + " --set 'response.force=[-1e12, 0.0]' --out " + out + " -q");
+  EXPECT_EQ(failed.code, 3) << failed.err;
+  EXPECT_EQ(read(out + "/response.csv"), good);
+  EXPECT_EQ(read(out + "/.ringvib-files"), manifest);
+  // The same with --csv: the good file stays.
+  ASSERT_EQ(ringvib("respond " + forced + " --csv " + dir + "/h.csv").code, 0);
+  const std::string history = read(dir + "/h.csv");
+  EXPECT_EQ(ringvib("respond " + forced + " --set 'response.force=[-1e12, 0.0]' --csv " + dir + "/h.csv").code, 3);
+  EXPECT_EQ(read(dir + "/h.csv"), history);
+  // A failing run into a new folder leaves no folder.
+  EXPECT_EQ(ringvib("run " + forced + " --set 'response.force=[-1e12, 0.0]' --out " + dir + "/new/deeper -q").code, 3);
+  EXPECT_FALSE(exists(dir + "/new"));
+  EXPECT_EQ(leftovers(dir), "");
+}
+
+// Mixed or stale: a second sweep without a figure kept the first one's sweep.png; a sweep
+// in which every case fails published its table and exited 3.
+TEST(Files, ASweepFolderHoldsOneSweepsFiles) {
+  const std::string out = ringtest::temp_dir() + "/s";
+  ASSERT_EQ(ringvib("sweep " + source(kMultibody) + " --vary 'multibody.n=[40, 80]' --out " + out + " -q").code, 0);
+  ASSERT_TRUE(exists(out + "/sweep.png"));
+  // Values that are not numbers: no figure.
+  const auto second = ringvib("sweep " + source(kMultibody) +
+                              " --vary 'multibody.rotary_inertia=[true, false]' --out " + out + " -q");
+  ASSERT_EQ(second.code, 0) << second.err;
+  EXPECT_FALSE(exists(out + "/sweep.png"));
+  EXPECT_NE(read(out + "/sweep.csv").find("multibody.rotary_inertia"), std::string::npos);
+  const std::string csv = read(out + "/sweep.csv");
+  // Every case fails (the ring touches itself): exit 3, the folder as it was.
+  const auto failing = ringvib("sweep " + source("scenes/paper1990-static.toml") +
+                               " --vary 'static.force=[[-5e5, 0.0], [-6e5, 0.0]]' --out " + out + " -q");
+  EXPECT_EQ(failing.code, 3) << failing.err;
+  EXPECT_EQ(read(out + "/sweep.csv"), csv);
+  EXPECT_EQ(leftovers(out), "");
+}
+
+// Two runs into one folder mixed their files: the second is refused while the first runs.
+TEST(Files, ASecondRunIntoTheSameFolderIsRefused) {
+  const std::string out = ringtest::temp_dir() + "/o";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    const std::string scene = source("scenes/paper1990.toml");
+    execl(ringtest::ringvib_path().c_str(), "ringvib", "run", scene.c_str(), "--out", out.c_str(), "-q",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // The first run holds the folder from the moment its stage exists until it ends.
+  bool held = false;
+  const auto start = std::chrono::steady_clock::now();
+  while (!held && std::chrono::steady_clock::now() - start < std::chrono::seconds(30)) {
+    held = !shell("find " + out + " -maxdepth 1 -name '.ringvib-stage-*' 2>/dev/null").empty();
+    if (!held) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ringtest::Run second;
+  if (held) second = ringvib("run " + source(kMultibody) + " --out " + out);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(held) << "the first run's stage never appeared";
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  // The first run may have ended between the look and the second start: then it ran.
+  if (second.code != 0) expect_input_error(second, "another ringvib run");
+  EXPECT_EQ(leftovers(out), "");
+}
+
+// Interrupted: SIGINT and SIGTERM at random points of a run with --out and of a sweep
+// never leave a published file of the interrupted run, nor a stage. Each attempt writes
+// into a fresh folder over an earlier complete run's files, which must survive intact.
+TEST(Files, AnInterruptedRunPublishesNothing) {
+  const std::string base = ringtest::temp_dir();
+  std::mt19937 random(20261125);  // fixed seed: the same kill times every run
+  int interrupted = 0;
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    const bool sweep = attempt % 2 == 1;
+    const int sig = attempt % 4 < 2 ? SIGINT : SIGTERM;
+    const std::string out = base + "/run" + std::to_string(attempt);
+    std::vector<std::string> args =
+        sweep ? std::vector<std::string>{"sweep", source("scenes/paper1990.toml"), "--vary",
+                                         "multibody.n=[40, 80, 160, 320]", "--out", out, "-q", "-j", "1"}
+              : std::vector<std::string>{"run", source("scenes/paper1990.toml"), "--out", out, "-q"};
+    // An earlier complete run: a marker file that the next run replaces only if it ends.
+    ASSERT_EQ(mkdir(out.c_str(), 0755), 0);
+    const std::string marker = sweep ? "sweep.md" : "report.md";
+    ringtest::write(out + "/" + marker, "earlier run");
+    ringtest::write(out + "/.ringvib-files", marker + "\n");
+    const pid_t pid = fork();
+    if (pid == 0) {
+      const int null = open("/dev/null", O_WRONLY);
+      dup2(null, STDOUT_FILENO);
+      dup2(null, STDERR_FILENO);
+      std::vector<char*> argv{const_cast<char*>("ringvib")};
+      for (auto& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(ringtest::ringvib_path().c_str(), argv.data());
+      _exit(127);
+    }
+    // A run takes ~0.6 s and a sweep ~1.1 s here (README); kill within that span.
+    std::uniform_int_distribution<int> ms(5, sweep ? 1100 : 600);
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms(random)));
+    kill(pid, sig);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    EXPECT_EQ(leftovers(base), "") << "attempt " << attempt;
+    if (WIFSIGNALED(status)) {
+      ++interrupted;
+      EXPECT_EQ(WTERMSIG(status), sig);
+      EXPECT_EQ(read(out + "/" + marker), "earlier run") << "attempt " << attempt;
+      EXPECT_EQ(shell("LC_ALL=C ls -A " + out), ".ringvib-files\n" + marker + "\n") << "attempt " << attempt;
+    } else {
+      // Finished before the signal: the folder holds the new run, whole.
+      EXPECT_EQ(WEXITSTATUS(status), 0) << "attempt " << attempt;
+      EXPECT_NE(read(out + "/" + marker), "earlier run");
+      EXPECT_TRUE(exists(out + (sweep ? "/sweep.csv" : "/table.csv")));
+    }
+  }
+  EXPECT_GE(interrupted, 5) << "the signal should mostly arrive during the run";
+}
+
+// Found only after computing: a solver's refusal came after other solvers had run (and in
+// a sweep became input-error rows with exit 0).
+TEST(Files, SolverRefusalsComeBeforeAnySolverRuns) {
+  const std::string compare = source("scenes/paper1990-forced-compare.toml");
+  const std::string dir = ringtest::temp_dir();
+  expect_input_error(ringvib("respond " + compare + " --set response.integrator=energy-momentum"), "energy-momentum");
+  expect_input_error(ringvib("respond " + compare + " --set response.integrator=generalized-alpha"),
+                     "generalized-alpha");
+  expect_input_error(ringvib("run " + compare + " --set fem.geometry=polygon --out " + dir + "/o"), "curved");
+  EXPECT_FALSE(exists(dir + "/o"));
+  expect_input_error(ringvib("run " + source("scenes/paper1990.toml") +
+                             " --set multibody.method=sparse --set multibody.n=8 --set lumped.n=8 "
+                             "--set fem.elements=8 --set modes.count=3"),
+                     "n >= 10");
+  const auto sweep = ringvib("sweep " + compare + " --vary 'response.integrator=[\"newmark\", \"energy-momentum\"]' "
+                             "--out " + dir + "/s");
+  expect_input_error(sweep, "energy-momentum");
+  EXPECT_NE(sweep.err.find("case 1"), std::string::npos) << sweep.err;
+  EXPECT_FALSE(exists(dir + "/s"));
+}
+
+// Wrong results with exit 0: bench printed every error as nan and "Verdict: holds" when
+// the loaded point was not recorded.
+TEST(Files, BenchRefusesWhatItCannotMeasure) {
+  expect_input_error(ringvib("bench " + source("scenes/paper1990-static-compare.toml") + " --set 'static.record=[]'"),
+                     "static.record");
+  expect_input_error(ringvib("bench " + source("scenes/paper1990-forced-compare.toml") +
+                             " --set 'response.record=[90.0, 180.0]'"),
+                     "response.record");
+}
+
+// Guard: --max-memory nan switched the guard off.
+TEST(Files, MaxMemoryMustBeAFinitePositiveNumber) {
+  for (const char* v : {"nan", "inf", "-1", "0", "1e400", "x"})
+    expect_input_error(ringvib("modes " + source(kMultibody) + " --solver multibody --max-memory " + v),
+                       "--max-memory");
+  expect_input_error(ringvib("modes " + source(kMultibody) + " --solver multibody --max-memory 1e-6"), "GiB");
+}
+
+// The scene is read once: a FIFO (or /dev/stdin) serves a whole sweep.
+TEST(Files, ASweepReadsItsSceneOnce) {
+  const std::string dir = ringtest::temp_dir();
+  ASSERT_EQ(mkfifo((dir + "/scene").c_str(), 0644), 0);
+  const std::string text = ringtest::source_text(kMultibody);
+  std::thread writer([&] {
+    std::ofstream f(dir + "/scene");
+    f << text;
+  });
+  const auto r = ringvib("sweep " + dir + "/scene --vary 'multibody.n=[40, 80, 160]'");
+  writer.join();
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.find("input-error"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n2,160,"), std::string::npos) << r.out;
+}
+
+// --resume kept a case whose rows were cut short, copied old case ids, and a corrupt
+// value gave "failure: stod" (exit 3) instead of naming sweep.csv and its line.
+TEST(Files, ResumeKeepsOnlyCompleteCasesAndNamesACorruptLine) {
+  const std::string out = ringtest::temp_dir() + "/s";
+  const std::string scene = source(kMultibody);
+  ASSERT_EQ(ringvib("sweep " + scene + " --vary 'multibody.n=[40, 80, 160]' --out " + out + " -q").code, 0);
+  const std::string whole = read(out + "/sweep.csv");
+  // Cut in the middle of case 1's rows (a crash, a full disk).
+  std::size_t cut = 0;
+  for (int line = 0; line < 1 + 23 + 11; ++line) cut = whole.find('\n', cut) + 1;
+  ringtest::write(out + "/sweep.csv", whole.substr(0, cut + 7));
+  const auto resumed = ringvib("sweep " + scene + " --vary 'multibody.n=[40, 80, 160]' --out " + out +
+                               " --resume -q");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("3 cases, 2 run, 1 resumed"), std::string::npos) << resumed.err;
+  const std::string again = read(out + "/sweep.csv");
+  EXPECT_EQ(std::count(again.begin(), again.end(), '\n'), std::count(whole.begin(), whole.end(), '\n'));
+  // Resuming a different list renumbers the kept cases.
+  const auto other = ringvib("sweep " + scene + " --vary 'multibody.n=[60, 160]' --out " + out + " --resume -q");
+  ASSERT_EQ(other.code, 0) << other.err;
+  EXPECT_NE(other.err.find("2 cases, 1 run, 1 resumed"), std::string::npos) << other.err;
+  EXPECT_NE(read(out + "/sweep.csv").find("\n1,160,"), std::string::npos);
+  // A corrupt value: exit 2 naming the file and the line.
+  std::string corrupt = read(out + "/sweep.csv");
+  const auto third = corrupt.find('\n', corrupt.find('\n', corrupt.find('\n') + 1) + 1);
+  const auto field = corrupt.find(",mode ", third);
+  ASSERT_NE(field, std::string::npos);
+  corrupt.replace(corrupt.find(',', field + 1) + 1, 3, "x!z");
+  ringtest::write(out + "/sweep.csv", corrupt);
+  const auto bad = ringvib("sweep " + scene + " --vary 'multibody.n=[60, 160]' --out " + out + " --resume -q");
+  expect_input_error(bad, "sweep.csv");
+  EXPECT_NE(bad.err.find("line 4"), std::string::npos) << bad.err;
+}
+
+}  // namespace
