@@ -102,29 +102,21 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
 
 void check_bench_nonlinear(const ring::Scene& scene) {
   const SolverEntry& ref = solver(scene.reference_solver);
-  auto recorded = [](const std::vector<double>& record, double at) {
-    return std::any_of(record.begin(), record.end(), [&](double a) { return std::abs(a - at) < 1e-9; });
+  // One analysis: the reference offers it, and the loaded point is among the recorded.
+  auto check = [&](const std::string& section, bool offered, const std::string& what, const ring::PointLoad& load,
+                   const std::vector<double>& record) {
+    if (!offered)
+      throw ring::InputError(scene.file, section,
+                             "bench needs the converged reference " + what + ", and the " + ref.name +
+                                 " solver has no " + what + " in this build");
+    if (std::none_of(record.begin(), record.end(), [&](double a) { return std::abs(a - load.angle) < 1e-9; }))
+      throw ring::InputError(scene.file, section + ".record",
+                             "bench measures the error at the loaded point (" + sig4(load.angle) + " deg), which " +
+                                 section + ".record does not list; add it");
   };
-  if (scene.response) {
-    if (!ref.response)
-      throw ring::InputError(scene.file, "response",
-                             "bench needs the converged reference response, and the " + ref.name +
-                                 " solver has no forced response in this build");
-    if (!recorded(scene.response->record, scene.response->load.angle))
-      throw ring::InputError(scene.file, "response.record",
-                             "bench measures the error at the loaded point (" + sig4(scene.response->load.angle) +
-                                 " deg), which response.record does not list; add it");
-  }
-  if (scene.statics) {
-    if (!ref.statics)
-      throw ring::InputError(scene.file, "static",
-                             "bench needs the converged reference statics, and the " + ref.name +
-                                 " solver has no statics in this build");
-    if (!recorded(scene.statics->record, scene.statics->load.angle))
-      throw ring::InputError(scene.file, "static.record",
-                             "bench measures the error at the loaded point (" + sig4(scene.statics->load.angle) +
-                                 " deg), which static.record does not list; add it");
-  }
+  if (scene.response)
+    check("response", bool(ref.response), "forced response", scene.response->load, scene.response->record);
+  if (scene.statics) check("static", bool(ref.statics), "statics", scene.statics->load, scene.statics->record);
 }
 
 std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostream* progress) {

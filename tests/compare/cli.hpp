@@ -1,6 +1,7 @@
 // Runs the ringvib executable as a user would and captures what it prints.
 #pragma once
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -52,6 +53,30 @@ inline std::string temp_dir() {
 inline void write(const std::string& path, const std::string& text) {
   std::ofstream f(path);
   f << text;
+}
+
+/// True when something (a file, a folder, a link) is at `path`.
+inline bool exists(const std::string& path) {
+  struct stat st;
+  return lstat(path.c_str(), &st) == 0;
+}
+
+/// What a shell command prints on stdout.
+inline std::string shell(const std::string& cmd) {
+  std::string out;
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+  }
+  return out;
+}
+
+/// Anything a run stages below `dir`: its stage folder, a staged single file, or an older
+/// writer's temporary. Empty when nothing is left.
+inline std::string leftovers(const std::string& dir) {
+  return shell("find " + dir + " \\( -name '.ringvib-stage-*' -o -name '.ringvib-*.tmp*' -o -name '*.tmp-*' \\) "
+               "2>/dev/null");
 }
 
 inline bool empty_dir(const std::string& dir) {

@@ -23,38 +23,19 @@
 #include "cli.hpp"
 #include "support/paper.hpp"
 
+using ringtest::exists;
+using ringtest::leftovers;
 using ringtest::ringvib;
+using ringtest::shell;
 using ringtest::source;
 
 namespace {
-
-bool exists(const std::string& p) {
-  struct stat st;
-  return lstat(p.c_str(), &st) == 0;
-}
 
 std::string read(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   std::stringstream s;
   s << f.rdbuf();
   return s.str();
-}
-
-std::string shell(const std::string& cmd) {
-  std::string out;
-  if (FILE* p = popen(cmd.c_str(), "r")) {
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    pclose(p);
-  }
-  return out;
-}
-
-/// Anything a run stages below `dir`: its stage folder, a staged single file, or an older
-/// writer's temporary. Empty when nothing is left.
-std::string leftovers(const std::string& dir) {
-  return shell("find " + dir + " \\( -name '.ringvib-stage-*' -o -name '.ringvib-*.tmp*' -o -name '*.tmp-*' \\) "
-               "2>/dev/null");
 }
 
 void expect_input_error(const ringtest::Run& r, const std::string& names) {

@@ -22,28 +22,10 @@
 #include "support/paper.hpp"
 
 using ringtest::ringvib;
+using ringtest::exists;
 using ringtest::source;
 
 namespace {
-
-bool exists(const std::string& p) {
-  struct stat st;
-  return stat(p.c_str(), &st) == 0;
-}
-
-/// Anything a run stages below `dir` (its stage folder, a staged file, an older writer's
-/// temporary).
-std::string temporaries(const std::string& dir) {
-  const std::string cmd =
-      "find " + dir + " \\( -name '.ringvib-stage-*' -o -name '.ringvib-*.tmp*' -o -name '*.tmp-*' \\) 2>/dev/null";
-  std::string out;
-  if (FILE* p = popen(cmd.c_str(), "r")) {
-    char buf[512];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    pclose(p);
-  }
-  return out;
-}
 
 void expect_input_error(const ringtest::Run& r, const std::string& names) {
   EXPECT_EQ(r.code, 2) << r.err;
@@ -141,7 +123,7 @@ TEST(Robustness, AFolderHoldsOneRunsFiles) {
   EXPECT_FALSE(exists(out + "/static_shapes.png"));
   EXPECT_TRUE(exists(out + "/table.csv"));
   EXPECT_TRUE(exists(out + "/notes.txt"));
-  EXPECT_EQ(temporaries(out + "/.."), "");
+  EXPECT_EQ(ringtest::leftovers(out + "/.."), "");
 }
 
 // Class 5, signals during the write phase: test_files.cpp, AnInterruptedRunPublishesNothing.
