@@ -1,5 +1,7 @@
 #include "compare/bench.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,11 +44,9 @@ Timed timed_solve(const ring::Scene& s, const SolverEntry& solver, int modes) {
 }  // namespace
 
 std::string fmt_seconds(double s) {
-  char b[32];
-  if (s < 1e-3) std::snprintf(b, sizeof b, "%.1f us", s * 1e6);
-  else if (s < 1.0) std::snprintf(b, sizeof b, "%.2f ms", s * 1e3);
-  else std::snprintf(b, sizeof b, "%.2f s", s);
-  return b;
+  if (s < 1e-3) return fmt::format("{:.1f} us", s * 1e6);
+  if (s < 1.0) return fmt::format("{:.2f} ms", s * 1e3);
+  return fmt::format("{:.2f} s", s);
 }
 
 std::vector<std::string> curve_names(const BenchStudy& b) {
@@ -58,13 +58,10 @@ std::vector<std::string> curve_names(const BenchStudy& b) {
 
 std::string time_to_error_lines(const BenchStudy& b, double second_pct) {
   std::ostringstream s;
-  char line[200];
   for (const auto& c : curve_names(b)) {
     const auto t1 = time_to_error(b, c, 1.0), t2 = time_to_error(b, c, second_pct);
-    std::snprintf(line, sizeof line, "  %-24s 1 %%: %-12s %g %%: %s\n", c.c_str(),
-                  t1 ? fmt_seconds(*t1).c_str() : "not reached", second_pct,
-                  t2 ? fmt_seconds(*t2).c_str() : "not reached");
-    s << line;
+    s << fmt::format("  {:<24} 1 %: {:<12} {:g} %: {}\n", c, t1 ? fmt_seconds(*t1) : "not reached", second_pct,
+                     t2 ? fmt_seconds(*t2) : "not reached");
   }
   return s.str();
 }
@@ -144,15 +141,11 @@ std::string bench_text(const BenchStudy& b) {
   s << "Run time against error, " << b.modes << " lowest modes, error against the converged FE reference\n"
     << "of each model's own continuum (inextensible for the rigid-link chains, extensible for frames and FE)\n"
     << "(solver time inside this process, median of repeats; compare times as ratios)\n\n";
-  char line[200];
-  std::snprintf(line, sizeof line, "%-24s %6s %9s %12s %8s %13s %13s\n", "curve", "size", "unknowns", "time",
-                "repeats", "max |err| %", "mean |err| %");
-  s << line;
-  for (const auto& p : b.points) {
-    std::snprintf(line, sizeof line, "%-24s %6d %9lld %12s %8d %13.3e %13.3e\n", p.curve.c_str(), p.size, p.unknowns,
-                  fmt_seconds(p.seconds).c_str(), p.repeats, p.max_error, p.mean_error);
-    s << line;
-  }
+  s << fmt::format("{:<24} {:>6} {:>9} {:>12} {:>8} {:>13} {:>13}\n", "curve", "size", "unknowns", "time", "repeats",
+                   "max |err| %", "mean |err| %");
+  for (const auto& p : b.points)
+    s << fmt::format("{:<24} {:6d} {:9d} {:>12} {:8d} {:13.3e} {:13.3e}\n", p.curve, p.size, p.unknowns,
+                     fmt_seconds(p.seconds), p.repeats, p.max_error, p.mean_error);
   s << "\nTime to reach a max error of 1 % and of 0.01 % on the " << b.modes << " modes:\n"
     << time_to_error_lines(b, 0.01);
   // The paper's claim: multibody at n = 40 takes about 1/3 of the FE time.

@@ -1,5 +1,7 @@
 #include "compare/bench_nonlinear.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -156,14 +158,10 @@ std::string bench_nonlinear_text(const NonlinearBench& b) {
     << " deg), " << (b.analysis == "response" ? "forced response" : "nonlinear statics")
     << ", against the converged reference " << sig4(b.reference_value) << " m (computed in "
     << fmt_seconds(b.reference_seconds) << ")\n(solver time inside this process, median of repeats; compare times as ratios)\n\n";
-  char line[200];
-  std::snprintf(line, sizeof line, "%-12s %6s %12s %8s %12s\n", "solver", "size", "time", "repeats", "|error| %");
-  s << line;
-  for (const auto& p : st.points) {
-    std::snprintf(line, sizeof line, "%-12s %6d %12s %8d %12.3e\n", p.curve.c_str(), p.size, fmt_seconds(p.seconds).c_str(),
-                  p.repeats, p.max_error);
-    s << line;
-  }
+  s << fmt::format("{:<12} {:>6} {:>12} {:>8} {:>12}\n", "solver", "size", "time", "repeats", "|error| %");
+  for (const auto& p : st.points)
+    s << fmt::format("{:<12} {:6d} {:>12} {:8d} {:12.3e}\n", p.curve, p.size, fmt_seconds(p.seconds), p.repeats,
+                     p.max_error);
   s << "\nTime to reach an error of 1 % and of 0.1 %:\n" << time_to_error_lines(st, 0.1);
   const BenchPoint *m40 = nullptr, *f40 = nullptr;
   for (const auto& p : st.points) {

@@ -1,5 +1,7 @@
 #include "compare/commands.hpp"
 
+#include <fmt/format.h>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -88,16 +90,10 @@ std::string modes_text(const ring::ModalResult& m) {
   s << m.solver << ":";
   for (const auto& [k, v] : m.model) s << " " << k << "=" << model_value(v);
   s << "\nrigid modes: " << m.rigid_modes << "\n\n  mode   omega rad/s        Hz\n";
-  for (std::size_t i = 0; i < m.omega.size(); ++i) {
-    char line[96];
-    std::snprintf(line, sizeof line, "  %4zu  %12s  %8s\n", i + 1, sig4(m.omega[i]).c_str(),
-                  sig4(m.omega[i] / (2 * M_PI)).c_str());
-    s << line;
-  }
-  char tail[128];
-  std::snprintf(tail, sizeof tail, "\n%lld unknowns, solved in %.3g s, max relative eigen-residual %.1e\n", m.unknowns,
-                m.seconds, m.max_residual);
-  s << tail;
+  for (std::size_t i = 0; i < m.omega.size(); ++i)
+    s << fmt::format("  {:4d}  {:>12}  {:>8}\n", i + 1, sig4(m.omega[i]), sig4(m.omega[i] / (2 * M_PI)));
+  s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {:.1e}\n", m.unknowns, m.seconds,
+                   m.max_residual);
   return s.str();
 }
 

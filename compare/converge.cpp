@@ -1,5 +1,7 @@
 #include "compare/converge.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -131,15 +133,10 @@ std::string convergence_text(const ConvergenceStudy& c) {
     << c.reference_estimate << " relative)\n\n";
   for (const auto& x : c.series) {
     s << x.name << ": observed order " << (std::isfinite(x.order) ? pct2(x.order) : std::string("n/a")) << "\n";
-    char line[160];
-    std::snprintf(line, sizeof line, "  %10s  %12s  %12s  %10s\n", x.parameter.c_str(), "max |err| %", "mean |err| %",
-                  "seconds");
-    s << line;
-    for (std::size_t i = 0; i < x.size.size(); ++i) {
-      std::snprintf(line, sizeof line, "  %10.0f  %12.3e  %12.3e  %10.3e\n", x.size[i], x.max_error[i], x.mean_error[i],
-                    x.seconds[i]);
-      s << line;
-    }
+    s << fmt::format("  {:>10}  {:>12}  {:>12}  {:>10}\n", x.parameter, "max |err| %", "mean |err| %", "seconds");
+    for (std::size_t i = 0; i < x.size.size(); ++i)
+      s << fmt::format("  {:10.0f}  {:12.3e}  {:12.3e}  {:10.3e}\n", x.size[i], x.max_error[i], x.mean_error[i],
+                       x.seconds[i]);
     s << "\n";
   }
   return s.str();

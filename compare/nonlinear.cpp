@@ -1,5 +1,7 @@
 #include "compare/nonlinear.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -99,9 +101,7 @@ int point_index(const std::vector<double>& angles, double angle) {
 std::string number_or_na(double v, bool pct) {
   if (!std::isfinite(v)) return "n/a";
   if (pct) return pct2(v);
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
+  return fmt::format("{:.4g}", v);
 }
 
 Cells cells(const NonlinearTable& t) {

@@ -1,5 +1,7 @@
 #include "compare/output.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,16 +14,13 @@ std::string sig4(double v) {
   if (!std::isfinite(v)) return "nan";
   if (v == 0.0) return "0.000";
   const int mag = static_cast<int>(std::floor(std::log10(std::abs(v))));
-  int decimals = std::max(0, 3 - mag);
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  const int decimals = std::max(0, 3 - mag);
+  std::string text = fmt::format("{:.{}f}", v, decimals);
   // Rounding can carry into a new digit (9.9996 -> 10.000): recompute once.
-  const double r = std::atof(buf);
-  if (r != 0.0 && static_cast<int>(std::floor(std::log10(std::abs(r)))) != mag) {
-    decimals = std::max(0, decimals - 1);
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  }
-  return buf;
+  const double r = std::atof(text.c_str());
+  if (r != 0.0 && static_cast<int>(std::floor(std::log10(std::abs(r)))) != mag)
+    text = fmt::format("{:.{}f}", v, std::max(0, decimals - 1));
+  return text;
 }
 
 std::string model_value(const ring::ModelValue& v) {
@@ -34,9 +33,8 @@ std::string model_value(const ring::ModelValue& v) {
 }
 
 std::string pct2(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return std::string(buf) == "-0.00" ? "0.00" : buf;
+  const std::string text = fmt::format("{:.2f}", v);
+  return text == "-0.00" ? "0.00" : text;
 }
 
 }  // namespace cmp

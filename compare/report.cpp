@@ -1,5 +1,7 @@
 #include "compare/report.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -100,10 +102,8 @@ void write_report(const std::string& dir, const RunReport& r) {
     for (const auto& m : all) {
       std::ostringstream model;
       for (const auto& [k, v] : m.model) model << k << "=" << model_value(v) << " ";
-      char row[256];
-      std::snprintf(row, sizeof row, "| %s | %s| %d | %lld | %.3g | %.1e |\n", m.solver.c_str(), model.str().c_str(),
-                    m.rigid_modes, m.unknowns, m.seconds, m.max_residual);
-      md << row;
+      md << fmt::format("| {} | {}| {} | {} | {:.3g} | {:.1e} |\n", m.solver, model.str(), m.rigid_modes, m.unknowns,
+                        m.seconds, m.max_residual);
       put("modes_" + m.solver + ".json", modal_json(m, true));
       put("modes_" + m.solver + ".csv", modal_csv(m));
       if (!m.shapes.empty()) put("shapes_" + m.solver + ".csv", shapes_csv(m));

@@ -1,5 +1,7 @@
 #include "compare/response.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -60,11 +62,7 @@ std::string static_text(const ring::StaticResult& r) {
   std::ostringstream s;
   s << (r.solver.empty() ? "" : r.solver + ": ") << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n"
     << "   angle deg        ux m        uy m\n";
-  for (const auto& d : r.displacements) {
-    char line[96];
-    std::snprintf(line, sizeof line, "  %10.4g  %10.4e  %10.4e\n", d.angle, d.ux, d.uy);
-    s << line;
-  }
+  for (const auto& d : r.displacements) s << fmt::format("  {:10.4g}  {:10.4e}  {:10.4e}\n", d.angle, d.ux, d.uy);
   return s.str();
 }
 
