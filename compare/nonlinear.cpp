@@ -271,7 +271,7 @@ std::string format_json(const NonlinearTable& t) {
   return j.dump(2) + "\n";
 }
 
-void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories) {
+void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories, double radius) {
   std::vector<Series> series;
   for (std::size_t s = 0; s < histories.size(); ++s) {
     const auto& h = histories[s];
@@ -287,7 +287,7 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
   }
   plot_series(dir, "response_history", "Forced response, |u| of the recorded points (solid: the base solver; dashed, dotted: the others in order)", "t (s)",
               "|displacement| (m)", series);
-  std::vector<Series> shapes;
+  std::vector<Series> shapes = {undeformed_ring(radius)};
   for (std::size_t s = 0; s < histories.size(); ++s) {
     const auto& h = histories[s];
     for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
@@ -300,18 +300,13 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
       shapes.push_back(x);
     }
   }
-  if (!shapes.empty())
+  if (shapes.size() > 1)
     plot_series(dir, "response_shapes", "Deformed ring at several instants (solid: the base solver; dashed, dotted, dash-dotted: the others in order)",
                 "x (m)", "y (m)", shapes, false, false, true);
 }
 
 void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, double radius) {
-  Series undeformed{"undeformed", {}, {}, 9, 2};
-  for (int i = 0; i <= 360; ++i) {
-    undeformed.x.push_back(radius * std::cos(i * M_PI / 180.0));
-    undeformed.y.push_back(radius * std::sin(i * M_PI / 180.0));
-  }
-  std::vector<Series> shapes = {undeformed};
+  std::vector<Series> shapes = {undeformed_ring(radius)};
   for (std::size_t s = 0; s < results.size(); ++s) {
     const auto& r = results[s];
     if (r.node_x.empty()) continue;

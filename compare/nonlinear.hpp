@@ -66,7 +66,7 @@ std::string format_json(const NonlinearTable& t);
 /// Figures: the recorded displacements of every solver overlaid against time (the
 /// paper's Figure 4) and the deformed ring of every solver at the snapshot instants
 /// (Figure 5); the deformed ring of every solver under the static load.
-void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories);
+void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories, double radius);
 void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, double radius);
 
 }  // namespace cmp

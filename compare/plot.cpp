@@ -25,6 +25,7 @@ std::string gp_string(const std::string& s) {  // a gnuplot double-quoted string
 
 const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 constexpr int kPalette = 8;
+constexpr const char* kGrey = "#9a9a9a";  ///< Series::kGrey: context (the undeformed ring), not data
 
 }  // namespace
 
@@ -92,6 +93,15 @@ void render(const std::string& dir, const std::string& name, const std::string& 
   if (!ok) {
     throw std::runtime_error("gnuplot failed to draw " + name + ".png: " + (out.empty() ? "no output" : out));
   }
+}
+
+Series undeformed_ring(double radius) {
+  Series ring{"undeformed", {}, {}, Series::kGrey, 2};
+  for (int i = 0; i <= 360; ++i) {
+    ring.x.push_back(radius * std::cos(i * M_PI / 180.0));
+    ring.y.push_back(radius * std::sin(i * M_PI / 180.0));
+  }
+  return ring;
 }
 
 void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius, int count) {
@@ -175,7 +185,8 @@ void plot_series(const std::string& dir, const std::string& name, const std::str
     const bool dense = equal_aspect || s.x.size() > 60;  // markers only where they can be told apart
     g << (i ? ", " : "") << "datafile index " << i << " using 1:2 with "
       << (dense ? "lines lw 2" : "linespoints lw 2 pt 7 ps 0.8") << " dt " << s.dash << " lc rgb '"
-      << kColors[(s.color >= 0 ? s.color : static_cast<int>(i)) % kPalette] << "' title " << gp_string(s.name);
+      << (s.color == Series::kGrey ? kGrey : kColors[(s.color >= 0 ? s.color : static_cast<int>(i)) % kPalette])
+      << "' title " << gp_string(s.name);
   }
   g << "\n";
   render(dir, name, g.str(), d.str(), 1100, 650);

@@ -25,9 +25,14 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
 struct Series {
   std::string name;
   std::vector<double> x, y;
-  int color = -1;       ///< palette index; -1: the series' position
+  static constexpr int kGrey = -2;
+  int color = -1;       ///< palette index; -1: the series' position; kGrey: grey
   int dash = 1;         ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
 };
+/// The undeformed centroid circle of radius `radius` (grey, dashed), drawn under the
+/// deformed rings of the shape figures.
+Series undeformed_ring(double radius);
+
 void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,
                  const std::string& ylabel, const std::vector<Series>& series, bool logx = false, bool logy = false,
                  bool equal_aspect = false);

@@ -155,7 +155,7 @@ void write_report(const std::string& dir, const RunReport& r) {
       put("response_table.csv", format_csv(*r.response_table));
       put("response_table.json", format_json(*r.response_table));
     }
-    if (histories.size() > 1) plot_histories(dir, histories);
+    if (histories.size() > 1) plot_histories(dir, histories, s.ring.radius);
     else plot_response(dir, *r.history, s.ring.radius);
     files.push_back("response_history.png");
     md << "![time histories](response_history.png)\n\n";

@@ -11,17 +11,7 @@
 #include "compare/plot.hpp"
 #include "ring/errors.hpp"
 
-#include "compare/registry.hpp"
-
 namespace cmp {
-
-ring::TimeHistory respond(const ring::Scene& scene) {
-  return solver(scene.response_request.solvers.front()).response(scene);
-}
-
-ring::StaticResult solve_static(const ring::Scene& scene) {
-  return solver(scene.static_request.solvers.front()).statics(scene);
-}
 
 namespace {
 std::string deg_label(double a) {
@@ -78,7 +68,7 @@ void plot_response(const std::string& dir, const ring::TimeHistory& h, double ra
   if (h.snapshot_t.empty()) return;
   // Deformed ring at the snapshots, node positions (the paper's Figure 5 shows one half;
   // for its symmetric load the other half is the mirror image).
-  std::vector<Series> shapes;
+  std::vector<Series> shapes = {undeformed_ring(radius)};
   for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
     Series s{"t = " + sig4(h.snapshot_t[k]) + " s", {}, {}};
     for (std::size_t i = 0; i <= h.snapshot_x[k].size(); ++i) {
@@ -90,7 +80,6 @@ void plot_response(const std::string& dir, const ring::TimeHistory& h, double ra
   }
   plot_series(dir, "response_shapes", "Deformed ring at several instants (node positions)", "x (m)", "y (m)", shapes,
               false, false, true);
-  (void)radius;
 }
 
 }  // namespace cmp

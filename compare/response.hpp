@@ -1,5 +1,5 @@
-// The forced response and the statics of a scene, and their text/CSV/JSON forms.
-// Both run the multibody chain (the paper's section 5).
+// One solver's forced response and statics as text, CSV and JSON, and the figures of one
+// response (the paper's Figures 4 and 5).
 #pragma once
 
 #include <string>
@@ -9,12 +9,6 @@
 #include "ring/scene.hpp"
 
 namespace cmp {
-
-/// Integrates the scene's [response] with its first solver. Throws
-/// ring::IntegrationFailure when the integration stops early.
-ring::TimeHistory respond(const ring::Scene& scene);
-/// Solves the scene's [static].
-ring::StaticResult solve_static(const ring::Scene& scene);
 
 /// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, work,
 /// energy_error, constraint_residual, newton_iterations (README, "The command").
