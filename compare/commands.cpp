@@ -23,25 +23,13 @@
 #include "compare/plot.hpp"
 #include "compare/report.hpp"
 #include "compare/response.hpp"
+#include "compare/runner.hpp"
 #include "compare/registry.hpp"
 #include "compare/table.hpp"
 #include "ring/errors.hpp"
 #include "ring/scene.hpp"
 
 namespace cmp {
-
-/// The solvers whose modes the scene asks for, in column order: the scene's [table]
-/// (base, then against), then any other solver of modes.solvers.
-std::vector<std::string> table_solvers(const ring::Scene& s) {
-  std::vector<std::string> v;
-  if (s.table.present) {
-    v.push_back(s.table.base);
-    for (const auto& o : s.table.against) v.push_back(o);
-  }
-  for (const auto& o : s.modes.solvers)
-    if (std::find(v.begin(), v.end(), o) == v.end()) v.push_back(o);
-  return v;
-}
 
 namespace {
 
@@ -60,29 +48,9 @@ class Progress {
 
 ring::Scene load(const CommonArgs& a) {
   ring::Scene s = load_scene(a.scene, a.set);
-  check_scene(s);
-  check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
+  check_runnable(s, a.max_memory_gib, a.force);
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
-}
-
-/// Everything modal the scene needs, each solver computed once.
-struct ModalRun {
-  std::vector<ring::ModalResult> columns;   ///< in table order
-  std::optional<ring::ModalResult> reference;
-};
-
-ModalRun compute_modal(const ring::Scene& s, const Progress& p) {
-  ModalRun r;
-  for (const auto& name : table_solvers(s)) {
-    p.say("computing " + std::to_string(s.modes.count) + " modes with " + name);
-    r.columns.push_back(solve_modes(s, name, s.modes.count));
-  }
-  if (s.needs_reference()) {
-    p.say("computing the converged FE reference");
-    r.reference = reference_modes(s, s.modes.count);
-  }
-  return r;
 }
 
 std::string modes_text(const ring::ModalResult& m) {
@@ -119,22 +87,11 @@ const std::vector<std::string> kConvergeNames = {"convergence"};
 const std::vector<std::string> kBenchNames = {"bench"};
 const std::vector<std::string> kVtuNames = {"fem_modes"};
 
-/// The scene asks for modes (a table, modes.solvers); commands that compare modes need them.
-bool modal(const ring::Scene& s) { return !s.modes.solvers.empty() || s.table.present; }
-
 void require_modes(const ring::Scene& s, const std::string& command) {
   if (!modal(s))
     throw ring::InputError(s.file, "modes",
                            "`" + command + "` compares natural frequencies, and the scene asks for none (add a "
                            "[modes] or [table] section, or a solver section without [response]/[static])");
-}
-
-Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
-  Table t = build_table(s.title, r.columns, r.reference ? &*r.reference : nullptr, s.modes.count);
-  bool gates_need_paper = false;
-  for (const auto& g : s.gates) gates_need_paper |= g.against == "paper";
-  if (paper || gates_need_paper) t.paper = paper_table();
-  return t;
 }
 
 }  // namespace
@@ -167,7 +124,7 @@ int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
   const ring::Scene s = load(a);
   require_modes(s, "table");
   const Progress p(a.quiet);
-  const Table t = make_table(s, compute_modal(s, p), paper);
+  const Table t = make_table(s, compute_modal(s, p.on() ? &std::cerr : nullptr), paper);
   if (format == "md") std::cout << format_markdown(t);
   else if (format == "csv") std::cout << format_csv(t);
   else if (format == "json") std::cout << format_json(t);
@@ -187,7 +144,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
   int code = 0;
 
   if (modal(s)) {
-    const ModalRun r = compute_modal(s, p);
+    const ModalRun r = compute_modal(s, p.on() ? &std::cerr : nullptr);
     rep.modal = r.columns;
     rep.reference = r.reference;
     rep.table = make_table(s, r, paper);

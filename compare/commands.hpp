@@ -19,10 +19,6 @@ struct CommonArgs {
   bool force = false;            ///< --force: skip the cost guard
 };
 
-/// The solvers whose modes the scene asks for, in table column order: the scene's
-/// [table] (base, then against), then any other solver of modes.solvers.
-std::vector<std::string> table_solvers(const ring::Scene& s);
-
 int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper);
 int cmd_table(const CommonArgs& a, bool paper, const std::string& format);
 int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,

@@ -23,6 +23,7 @@
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
 #include "compare/registry.hpp"
+#include "compare/runner.hpp"
 #include "compare/sweep_mpi.hpp"
 #include "compare/table.hpp"
 #include "ring/errors.hpp"
@@ -140,8 +141,7 @@ ring::Scene case_scene(const std::string& text, const CommonArgs& a, const std::
   std::vector<std::string> set = a.set;
   set.insert(set.end(), overrides.begin(), overrides.end());
   ring::Scene s = parse_scene(text, a.scene, set);
-  check_scene(s);
-  check_cost(s, Budget{a.max_memory_gib * double(1ull << 30), a.force});
+  check_runnable(s, a.max_memory_gib, a.force);
   return s;
 }
 
@@ -149,8 +149,7 @@ ring::Scene case_scene(const std::string& text, const CommonArgs& a, const std::
 /// solver of each nonlinear analysis.
 double rows_of(const ring::Scene& s) {
   double rows = 0.0;
-  if (!s.modes.solvers.empty() || s.table.present)
-    rows += double(s.modes.count) * double(table_solvers(s).size());
+  if (modal(s)) rows += double(s.modes.count) * double(table_solvers(s).size());
   if (s.response) rows += double(s.response->record.size()) * double(s.response_request.solvers.size());
   if (s.statics) rows += double(s.statics->record.size()) * double(s.static_request.solvers.size());
   return std::max(rows, 1.0);
@@ -272,13 +271,6 @@ std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
   return kept;
 }
 
-/// The solvers whose modes the scene asks for, in table order.
-std::vector<ring::ModalResult> modal_columns(const ring::Scene& s) {
-  std::vector<ring::ModalResult> v;
-  for (const auto& name : table_solvers(s)) v.push_back(solve_modes(s, name, s.modes.count));
-  return v;
-}
-
 bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
   // Against the first varied key (when its values are numbers): per solver and per
   // combination of the other keys, the max |error| over the case's rows (or, without a
@@ -376,11 +368,11 @@ std::vector<SweepRow> run_case(const std::string& text, const CommonArgs& a, int
   };
   try {
     const ring::Scene s = case_scene(text, a, overrides);
-    if (!s.modes.solvers.empty() || s.table.present) {
-      const std::vector<ring::ModalResult> columns = modal_columns(s);
-      std::optional<ring::ModalResult> reference;
-      if (s.needs_reference()) reference = reference_modes(s, s.modes.count);
-      const Table t = build_table(s.title, columns, reference ? &*reference : nullptr, s.modes.count);
+    if (modal(s)) {
+      const ModalRun m = compute_modal(s, nullptr);
+      const std::vector<ring::ModalResult>& columns = m.columns;
+      const std::optional<ring::ModalResult>& reference = m.reference;
+      const Table t = make_table(s, m, false);
       for (std::size_t c = 0; c < columns.size(); ++c)
         for (int i = 0; i < t.rows; ++i) {
           SweepRow r = row();
