@@ -115,7 +115,7 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// (see bench/multibody/bench_dynamics.cpp for both). Mean Newton iterations per step,
 /// 20 kN scene, dt = 0.01 s, first 2 s: generalized-alpha 3.5 (n = 40), 3.35 (640,
 /// 2560, 10^4); newmark 3.14 (40), 3.12 (640), 3.11 (2560); over 1000 steps at n = 10^4
-/// 3.50 and 3.41 (multibody/README.md, "Newton iterations per step").
+/// 3.50 and 3.41 (docs/measured.md).
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
 /// IntegrationFailure (a ring::NumericalError) when the integration cannot continue.

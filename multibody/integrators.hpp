@@ -58,7 +58,7 @@ struct StepOutcome {
 /// overshoot); a point step load gives every mode the acceleration F_k / m_k, the chain's
 /// w_max grows like n^2, and the spurious velocity of the loaded hinge spins its segments
 /// once h^2 |qdd_0| exceeds their length: +1.6 J at n = 640, +30 J at 1280, +1.3e3 J at
-/// 2560 of T + V - W after the first step of the 20 kN scene (multibody/README.md,
+/// 2560 of T + V - W after the first step of the 20 kN scene (docs/measured.md,
 /// "Energy growth is a failure"). With this start the balance stays <= 0. Newmark, which
 /// does not overshoot, kept the start's +-qdd_0 in every unresolved mode (the trapezoidal
 /// rule does not damp them): its energy balance reached +1.2e-4 of the work at n = 40,

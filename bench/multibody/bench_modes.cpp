@@ -1,6 +1,6 @@
 // Time of the 23 lowest modes of the paper's ring (pinned, rotary inertia on) on the
 // dense path, n = 40, 160, 640, 2000, and the sparse path from n = 40 to 10^6 (with the
-// process's peak RSS; run one n per process for a per-n peak, multibody/README.md);
+// process's peak RSS; run one n per process for a per-n peak, docs/measured.md);
 // phases timed separately (assembly + reduction, then the whole compute_modes). Run, Release build:
 //   build/bin/bench_multibody_modes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -30,7 +30,7 @@ void BM_ComputeModes23(benchmark::State& st) {
   st.counters["solver_s"] = benchmark::Counter(solver_seconds, benchmark::Counter::kAvgIterations);
   st.counters["omega1"] = r.omega[0];
   // Peak resident set of the whole process so far (Linux: KiB): per-n only when one n
-  // runs per process (--benchmark_filter), as in multibody/README.md.
+  // runs per process (--benchmark_filter), as in docs/measured.md.
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   st.counters["peak_rss_MiB"] = static_cast<double>(u.ru_maxrss) / 1024.0;

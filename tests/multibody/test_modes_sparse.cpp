@@ -2,7 +2,7 @@
 // independent oracles of ring_oracle.hpp from n = 8 to n = 10^5 (pinned and free,
 // with and without rotary inertia), against the dense path where both run, and its
 // normwise backward error; both of its eigensolvers (the eigen layer's and the
-// hand-written one, issue 12) against the oracles and against each other. No timing assertions (timings are in multibody/README.md).
+// hand-written one, issue 12) against the oracles and against each other. No timing assertions (timings are in docs/measured.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>
