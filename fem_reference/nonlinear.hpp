@@ -91,7 +91,9 @@
 // and hold exactly), Newton iterations. A run whose T + V - W grows by more than 1 % of
 // the largest work plus the round-off bound (ring/energy_guard.hpp, the rule of every
 // solver's response; damped runs too) is a failed integration (ring::IntegrationFailure),
-// as a Newton failure or a non-finite state is. `energy-momentum` and hinge damping are not offered
+// as a Newton failure or a non-finite state is. Newmark starts from the consistent
+// acceleration M qdd_0 = F g(0); generalized-alpha from the acceleration its first step's
+// Newton matrix filters (nonlinear.cpp), as the multibody chain's integrators do. `energy-momentum` and hinge damping are not offered
 // (std::invalid_argument): the FE beam has no hinges.
 //
 // ## Converged references (fem.reference = true)
