@@ -88,9 +88,12 @@
 // generalized-alpha (Chung & Hulbert 1993, rho_inf); full Newton per step. Recorded per
 // step: kinetic 1/2 v^T M v, strain V(q), work (trapezoidal sum of F g . dq), the energy
 // balance T + V + dissipated - work, constraint residual 0 (the constraints are linear
-// and hold exactly), Newton iterations. Undamped, a run that gains more than 1 % of the
-// largest work (energy balance > 0.01 max |work|) is a failed integration (ring::IntegrationFailure), as a Newton failure
-// or a non-finite state is. `energy-momentum` and hinge damping are not offered
+// and hold exactly), Newton iterations. A run whose T + V - W grows by more than 1 % of
+// the largest work plus the round-off bound (ring/energy_guard.hpp, the rule of every
+// solver's response; damped runs too) is a failed integration (ring::IntegrationFailure),
+// as a Newton failure or a non-finite state is. Newmark starts from the consistent
+// acceleration M qdd_0 = F g(0); generalized-alpha from the acceleration its first step's
+// Newton matrix filters (nonlinear.cpp), as the multibody chain's integrators do. `energy-momentum` and hinge damping are not offered
 // (std::invalid_argument): the FE beam has no hinges.
 //
 // ## Converged references (fem.reference = true)

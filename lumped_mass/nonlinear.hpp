@@ -60,7 +60,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 /// ring::TimeHistory (energies, constraint residual max |c_j|, Newton iterations, six
 /// snapshots). Throws ring::IntegrationFailure (with the history so far) when Newton
 /// fails at a step that cannot be halved further, a value is not finite, the ring
-/// touches itself, or the undamped energy balance error exceeds 1 % of the largest work.
+/// touches itself, or T + V - W grows by more than 1 % of the largest work plus the
+/// round-off bound of ring/energy_guard.hpp (the rule of every solver's response).
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                           const ring::ResponseOptions& response);
 

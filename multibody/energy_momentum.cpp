@@ -13,6 +13,7 @@
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
 #include "multibody/natural.hpp"
+#include "ring/energy_guard.hpp"
 
 namespace multibody {
 namespace {
@@ -189,6 +190,8 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
     throw IntegrationFailure(why, th.t.empty() ? 0.0 : th.t.back(), th, msg);
   };
   record(0, 0);
+  ring::EnergyGuard guard(spec, c.n, response.load.force);
+  guard.start(th.kinetic.back(), th.strain.back(), th.work.back());
 
   BandedKkt kkt(c);
   Work buffers(c);
@@ -218,6 +221,7 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
         continue;
       }
       work += f * c.F.dot(hinge(x1, c.load) - hinge(x, c.load));
+      guard.step(hs, f);
       v = 2.0 / hs * (x1 - x) - v;
       x.swap(x1);
       lambda.swap(l1);
@@ -242,6 +246,13 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
     }
     t = t_target;
     record(iterations, k);
+    // The scheme conserves the balance to round-off; a gain is a failure as for the other
+    // integrators (the one rule: ring/energy_guard.hpp).
+    const ring::EnergyGuard::Verdict verdict =
+        guard.check(th.kinetic.back(), th.strain.back(), work);
+    if (verdict.gained)
+      fail(IntegrationFailure::Reason::energy_growth,
+           "multibody::respond (energy-momentum): " + ring::describe(verdict, t));
   }
   th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return th;
