@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@
 #include "multibody/energy_momentum.hpp"
 #include "multibody/integrators.hpp"
 #include "multibody/newton_backend.hpp"
+#include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 
 namespace multibody {
@@ -27,12 +29,91 @@ using detail::StepOutcome;
 /// below, the O(n^2) box loop is as fast (both well under the step's cost).
 constexpr int kGridContact = 128;
 
-std::string describe(double t) {
-  std::ostringstream s;
-  s.precision(6);
-  s << t;
-  return s.str();
-}
+/// The chain's newmark and generalized-alpha steps for the time-stepping driver
+/// (paths/time_stepping.hpp): the dense or O(n) Newton backend, the dead load's work
+/// (trapezoidal in time; exact for a constant force) and the damping's dissipation.
+class ChainStepper : public paths::Stepper {
+ public:
+  ChainStepper(const Chain& chain, const Problem& p, const Coefficients& co, const IntegrationControls& controls,
+               detail::NewtonBackend& nb, bool partitioned, bool damped, const std::vector<double>& record,
+               double depth, State start)
+      : chain_(chain), p_(p), co_(co), controls_(controls), nb_(nb), partitioned_(partitioned), damped_(damped),
+        gap_(detail::contact_gap(chain, depth)), depth_(depth), s_(std::move(start)) {
+    for (double a : record) rec_.push_back(chain.hinge_at(a));
+    x_load_ = chain.hinge_position(s_.q, p.load.hinge);
+  }
+
+  paths::StepOutcome try_step(double, double h) override {
+    h_ = h;
+    const StepOutcome o = partitioned_ ? detail::step_partitioned(p_, co_, s_, h, controls_, nb_, s1_)
+                                       : detail::step_index3(p_, co_, s_, h, controls_, nb_, s1_);
+    if (!o.converged) nb_.invalidate();  // the next try builds a Newton matrix of this state
+    return {o.converged, o.reused, o.iterations, 0.5 * (p_.history.factor(s_.t) + p_.history.factor(s1_.t))};
+  }
+
+  void accept(double t) override {
+    const Eigen::Vector2d x1 = chain_.hinge_position(s1_.q, p_.load.hinge);
+    work_ += 0.5 * (p_.history.factor(s_.t) + p_.history.factor(s1_.t)) * p_.load.force.dot(x1 - x_load_);
+    x_load_ = x1;
+    if (damped_) {
+      // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
+      // system this is exactly the energy the discrete damping force removes.
+      const Vector vm = s_.v + s1_.v;
+      dissipated_ += 0.25 * h_ * vm.dot(nb_.damping_times(vm));
+    }
+    s_ = std::move(s1_);
+    s_.t = t;  // no round-off drift of the sub-steps
+  }
+
+  bool finite() const override { return s_.q.allFinite() && s_.v.allFinite(); }
+
+  paths::Sample sample() const override {
+    paths::Sample out;
+    const Eigen::Matrix2Xd hp = chain_.hinge_positions(s_.q);
+    for (int h : rec_) {
+      const Eigen::Vector2d u = hp.col(h) - chain_.hinge_rest(h);
+      out.ux.push_back(u.x());
+      out.uy.push_back(u.y());
+    }
+    out.kinetic = chain_.kinetic_energy(s_.q, s_.v);
+    out.strain = chain_.spring_energy(s_.q);
+    out.work = work_;
+    out.dissipated = dissipated_;
+    out.constraint_residual = chain_.constraints(s_.q).cwiseAbs().maxCoeff();
+    return out;
+  }
+
+  void shape(std::vector<double>& x, std::vector<double>& y) const override {
+    const Eigen::Matrix2Xd hp = chain_.hinge_positions(s_.q);
+    x.assign(hp.row(0).begin(), hp.row(0).end());
+    y.assign(hp.row(1).begin(), hp.row(1).end());
+  }
+
+  std::optional<std::string> contact() const override {
+    // Above kGridContact segments the uniform grid (same pairs, same result, O(n)).
+    const Eigen::Matrix2Xd hp = chain_.hinge_positions(s_.q);
+    const auto cp = chain_.n() >= kGridContact ? detail::closest_nonadjacent_grid(hp, chain_.l(), gap_, depth_)
+                                               : detail::closest_nonadjacent(hp, gap_, depth_);
+    if (cp.distance >= depth_) return std::nullopt;
+    std::ostringstream m;
+    m << detail::describe_contact(cp) << " (section depth " << depth_ << " m)";
+    return m.str();
+  }
+
+ private:
+  const Chain& chain_;
+  const Problem& p_;
+  const Coefficients& co_;
+  const IntegrationControls& controls_;
+  detail::NewtonBackend& nb_;
+  const bool partitioned_, damped_;
+  const int gap_;
+  const double depth_;
+  std::vector<int> rec_;
+  State s_, s1_;
+  double h_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
+  Eigen::Vector2d x_load_;
+};
 
 }  // namespace
 
@@ -69,21 +150,6 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
 
-  std::vector<int> rec;
-  for (double a : response.record) rec.push_back(chain.hinge_at(a));
-  const int gap = detail::contact_gap(chain, spec.section.depth());
-  const double depth = spec.section.depth();
-
-  ring::TimeHistory th;
-  th.record_angles = response.record;
-  th.ux.assign(rec.size(), {});
-  th.uy.assign(rec.size(), {});
-  const long steps = std::lround(response.t_end / response.dt);
-  std::vector<long> snap_steps;
-  for (int i = 0; i < controls.snapshots; ++i)
-    snap_steps.push_back(controls.snapshots == 1 ? steps
-                                                 : std::lround(double(steps) * i / (controls.snapshots - 1)));
-
   State s;
   s.q = chain.q0();
   s.v = Vector::Zero(n);
@@ -95,120 +161,23 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   // Newmark's qdd_0 (its partitioned step reads only the independent angles' qdd_0).
   detail::starting_pseudo_acceleration(p, co, response.dt, nb, s);
   if (partitioned) s.qdd = s.a;
-  const Eigen::Vector2d F = p.load.force;
-  double work = 0.0, dissipated = 0.0;
+
+  ChainStepper stepper(chain, p, co, controls, nb, partitioned, damped, response.record, spec.section.depth(),
+                       std::move(s));
+  // A run that gains energy has failed, whatever the integrator: its history is not a
+  // result (generalized-alpha did on fine chains under a point step load when it started
+  // from a_0 = qdd_0; see starting_pseudo_acceleration). The rule: energy_guard.hpp.
   ring::EnergyGuard guard(spec, chain.n(), response.load.force);
-  Eigen::Vector2d x_load = chain.hinge_position(s.q, p.load.hinge);
-
-  auto record = [&](const State& st, int iterations, long k) {
-    th.t.push_back(st.t);
-    const Eigen::Matrix2Xd hp = chain.hinge_positions(st.q);
-    for (size_t i = 0; i < rec.size(); ++i) {
-      const Eigen::Vector2d u = hp.col(rec[i]) - chain.hinge_rest(rec[i]);
-      th.ux[i].push_back(u.x());
-      th.uy[i].push_back(u.y());
-    }
-    const double T = chain.kinetic_energy(st.q, st.v), V = chain.spring_energy(st.q);
-    th.kinetic.push_back(T);
-    th.strain.push_back(V);
-    th.work.push_back(work);
-    th.energy_error.push_back(T + V + dissipated - work);
-    th.constraint_residual.push_back(chain.constraints(st.q).cwiseAbs().maxCoeff());
-    th.newton_iterations.push_back(iterations);
-    for (long ks : snap_steps)
-      if (ks == k) {
-        th.snapshot_t.push_back(st.t);
-        th.snapshot_x.emplace_back(hp.row(0).begin(), hp.row(0).end());
-        th.snapshot_y.emplace_back(hp.row(1).begin(), hp.row(1).end());
-        break;
-      }
-  };
-  auto fail = [&](IntegrationFailure::Reason why, const std::string& msg) {
-    throw IntegrationFailure(why, th.t.empty() ? 0.0 : th.t.back(), th, msg);
-  };
-  record(s, 0, 0);
-  guard.start(th.kinetic.back(), th.strain.back(), th.work.back());
-
-  const double min_dt = controls.min_dt_factor * response.dt;
-  double h = response.dt;
-  int successes = 0;
-  for (long k = 1; k <= steps; ++k) {
-    const double t_target = response.dt * k;
-    int iterations = 0;
-    // Sub-steps (after halving) end exactly on the grid; a remainder below 1e-7 dt is
-    // round-off and is snapped. Never leave a sliver: accelerations come from
-    // (q - q_hat) / (beta h^2), so a step of 1e-9 dt would turn round-off into garbage;
-    // a remainder between h and 2 h is split into two equal steps.
-    while (t_target - s.t > 1e-7 * response.dt) {
-      const double remaining = t_target - s.t;
-      const bool last = remaining <= h * (1.0 + 1e-9);
-      const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
-      State s1;
-      const StepOutcome o = partitioned ? detail::step_partitioned(p, co, s, hs, controls, nb, s1)
-                                        : detail::step_index3(p, co, s, hs, controls, nb, s1);
-      iterations += o.iterations;
-      if (!o.converged) {
-        nb.invalidate();
-        if (o.reused) continue;  // first try again with a Newton matrix of this state
-        h = 0.5 * hs;
-        successes = 0;
-        if (h < min_dt)
-          fail(IntegrationFailure::Reason::step_too_small,
-               "multibody::respond: Newton did not converge at t = " + describe(s.t) +
-                   " s even with the step halved to " + describe(h) + " s (minimum " +
-                   describe(min_dt) + " s)");
-        continue;
-      }
-      // Work of the dead load (trapezoidal in time; exact for a constant force) and
-      // energy dissipated by damping.
-      const Eigen::Vector2d x1 = chain.hinge_position(s1.q, p.load.hinge);
-      const double f_mean = 0.5 * (p.history.factor(s.t) + p.history.factor(s1.t));
-      work += f_mean * F.dot(x1 - x_load);
-      guard.step(hs, f_mean);
-      x_load = x1;
-      if (damped) {
-        // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
-        // system this is exactly the energy the discrete damping force removes.
-        const Vector vm = s.v + s1.v;
-        dissipated += 0.25 * hs * vm.dot(nb.damping_times(vm));
-      }
-      s = std::move(s1);
-      if (last) s.t = t_target;  // no round-off drift of the sub-steps
-      if (!s.q.allFinite() || !s.v.allFinite())
-        fail(IntegrationFailure::Reason::not_finite,
-             "multibody::respond: non-finite state at t = " + describe(s.t) + " s");
-      if (controls.check_contact) {
-        // Above kGridContact segments the uniform grid (same pairs, same result, O(n)).
-        const Eigen::Matrix2Xd hp = chain.hinge_positions(s.q);
-        const auto cp = chain.n() >= kGridContact
-                            ? detail::closest_nonadjacent_grid(hp, chain.l(), gap, depth)
-                            : detail::closest_nonadjacent(hp, gap, depth);
-        if (cp.distance < depth) {
-          std::ostringstream m;
-          m << "multibody::respond: the ring touches itself at t = " << describe(s.t)
-            << " s: " << detail::describe_contact(cp) << " (section depth " << depth
-            << " m); the chain model does not include contact";
-          fail(IntegrationFailure::Reason::self_contact, m.str());
-        }
-      }
-      if (h < response.dt && ++successes >= 2) {
-        h = std::min(2.0 * h, response.dt);
-        successes = 0;
-      }
-    }
-    s.t = t_target;
-    record(s, iterations, k);
-    // A run that gains energy has failed, whatever the integrator: its history is not a
-    // result (generalized-alpha did on fine chains under a point step load when it
-    // started from a_0 = qdd_0; see starting_pseudo_acceleration). The rule: energy_guard.hpp.
-    const ring::EnergyGuard::Verdict verdict =
-        guard.check(th.kinetic.back(), th.strain.back(), work);
-    if (verdict.gained)
-      fail(IntegrationFailure::Reason::energy_growth,
-           "multibody::respond: " + ring::describe(verdict, s.t) +
-               " (try response.integrator = \"energy-momentum\" or \"newmark\")");
-  }
-  return th;
+  paths::Grid grid;
+  grid.dt = response.dt;
+  grid.t_end = response.t_end;
+  grid.snapshots = controls.snapshots;
+  grid.min_dt_factor = controls.min_dt_factor;
+  grid.check_contact = controls.check_contact;
+  grid.guard = &guard;
+  grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
+  grid.who = "multibody::respond";
+  return paths::integrate(stepper, grid, response.record);
 }
 
 }  // namespace multibody

@@ -110,7 +110,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
     const Sample s = record(t, iterations, k);
     if (grid.guard) {
       const auto v = grid.guard->check(s.kinetic, s.strain, s.work);
-      if (v.gained) fail(Reason::energy_growth, ring::describe(v, t));
+      if (v.gained) fail(Reason::energy_growth, ring::describe(v, t) + grid.energy_hint);
     }
   }
   return th;

@@ -85,6 +85,7 @@ struct Grid {
   /// feeds it every accepted sub-step and checks it at every grid point.
   ring::EnergyGuard* guard = nullptr;
   bool check_contact = true;   ///< call the contact hook after every sub-step
+  std::string energy_hint;     ///< appended to the energy guard's message (what to try instead)
   std::string who;             ///< the solver, named first in every message ("multibody::respond")
 };
 
