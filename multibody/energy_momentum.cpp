@@ -13,6 +13,7 @@
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
 #include "multibody/natural.hpp"
+#include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 
 namespace multibody {
@@ -122,12 +123,78 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
   return out;
 }
 
-std::string describe(double t) {
-  std::ostringstream s;
-  s.precision(6);
-  s << t;
-  return s.str();
-}
+/// The discrete-gradient step in hinge positions for the time-stepping driver
+/// (paths/time_stepping.hpp); the load's work at the step's midpoint factor.
+class EnergyMomentumStepper : public paths::Stepper {
+ public:
+  EnergyMomentumStepper(const Chain& chain, const Natural& c, const ring::ResponseOptions& response, double depth)
+      : chain_(chain), c_(c), response_(response), gap_(detail::contact_gap(chain, depth)), depth_(depth),
+        x_(rest(chain)), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())), kkt_(c), buffers_(c) {
+    for (double a : response.record) rec_.push_back(chain.hinge_at(a));
+  }
+
+  paths::StepOutcome try_step(double t, double h) override {
+    h_ = h;
+    x1_ = x_ + h * v_;
+    l1_ = lambda_;
+    f_ = response_.load.history.factor(t + 0.5 * h);
+    const Step st = step(c_, x_, v_, h, f_, x1_, l1_, kkt_, buffers_);
+    return {st.converged, false, st.iterations, f_};
+  }
+
+  void accept(double) override {
+    work_ += f_ * c_.F.dot(hinge(x1_, c_.load) - hinge(x_, c_.load));
+    v_ = 2.0 / h_ * (x1_ - x_) - v_;
+    x_.swap(x1_);
+    lambda_.swap(l1_);
+  }
+
+  bool finite() const override { return x_.allFinite() && v_.allFinite(); }
+
+  paths::Sample sample() const override {
+    paths::Sample out;
+    for (int h : rec_) {
+      const Eigen::Vector2d u = hinge(x_, h) - chain_.hinge_rest(h);
+      out.ux.push_back(u.x());
+      out.uy.push_back(u.y());
+    }
+    out.kinetic = 0.5 * v_.dot(mass_times(c_, v_));
+    out.strain = spring_energy(c_, x_);
+    out.work = work_;
+    out.constraint_residual = constraints(c_, x_).head(c_.n).cwiseAbs().maxCoeff();
+    return out;
+  }
+
+  void shape(std::vector<double>& x, std::vector<double>& y) const override {
+    x.clear();
+    y.clear();
+    for (int j = 0; j < c_.n; ++j) {
+      x.push_back(x_(2 * j));
+      y.push_back(x_(2 * j + 1));
+    }
+  }
+
+  std::optional<std::string> contact() const override {
+    Eigen::Matrix2Xd hp(2, c_.n);
+    for (int j = 0; j < c_.n; ++j) hp.col(j) = hinge(x_, j);
+    const auto cp = c_.n >= 128 ? detail::closest_nonadjacent_grid(hp, c_.l, gap_, depth_)
+                                : detail::closest_nonadjacent(hp, gap_, depth_);
+    if (cp.distance >= depth_) return std::nullopt;
+    return detail::describe_contact(cp);
+  }
+
+ private:
+  const Chain& chain_;
+  const Natural& c_;
+  const ring::ResponseOptions& response_;
+  const int gap_;
+  const double depth_;
+  std::vector<int> rec_;
+  Vec x_, v_, lambda_, x1_, l1_;
+  BandedKkt kkt_;
+  Work buffers_;
+  double h_ = 0.0, f_ = 0.0, work_ = 0.0;
+};
 
 }  // namespace
 
@@ -140,120 +207,21 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   const Natural c =
       make_natural(chain, response.load.angle, Eigen::Vector2d(response.load.force[0], response.load.force[1]));
 
-  std::vector<int> rec;
-  for (double a : response.record) rec.push_back(chain.hinge_at(a));
-  const int gap = detail::contact_gap(chain, spec.section.depth());
-  const double depth = spec.section.depth();
-  const long steps = std::lround(response.t_end / response.dt);
-  std::vector<long> snap_steps;
-  for (int i = 0; i < controls.snapshots; ++i)
-    snap_steps.push_back(controls.snapshots == 1 ? steps : std::lround(double(steps) * i / (controls.snapshots - 1)));
-
-  Vec x = rest(chain), v = Vec::Zero(2 * c.n), lambda = Vec::Zero(c.rows());
-  double work = 0.0, t = 0.0;
-
-  ring::TimeHistory th;
+  EnergyMomentumStepper stepper(chain, c, response, spec.section.depth());
+  // The scheme conserves the balance to round-off; a gain is a failure as for the other
+  // integrators (the one rule: ring/energy_guard.hpp).
+  ring::EnergyGuard guard(spec, c.n, response.load.force);
+  paths::Grid grid;
+  grid.dt = response.dt;
+  grid.t_end = response.t_end;
+  grid.snapshots = controls.snapshots;
+  grid.min_dt_factor = controls.min_dt_factor;
+  grid.check_contact = controls.check_contact;
+  grid.guard = &guard;
+  grid.who = "multibody::respond (energy-momentum)";
+  ring::TimeHistory th = paths::integrate(stepper, grid, response.record);
   th.solver = "multibody";
   th.unknowns = c.size();
-  th.record_angles = response.record;
-  th.ux.assign(rec.size(), {});
-  th.uy.assign(rec.size(), {});
-  auto record = [&](int iterations, long k) {
-    th.t.push_back(t);
-    for (std::size_t i = 0; i < rec.size(); ++i) {
-      const Eigen::Vector2d u = hinge(x, rec[i]) - chain.hinge_rest(rec[i]);
-      th.ux[i].push_back(u.x());
-      th.uy[i].push_back(u.y());
-    }
-    const double T = 0.5 * v.dot(mass_times(c, v)), V = spring_energy(c, x);
-    th.kinetic.push_back(T);
-    th.strain.push_back(V);
-    th.work.push_back(work);
-    th.energy_error.push_back(T + V - work);
-    th.constraint_residual.push_back(constraints(c, x).head(c.n).cwiseAbs().maxCoeff());
-    th.newton_iterations.push_back(iterations);
-    for (long ks : snap_steps)
-      if (ks == k) {
-        th.snapshot_t.push_back(t);
-        std::vector<double> sx, sy;
-        for (int j = 0; j < c.n; ++j) {
-          sx.push_back(x(2 * j));
-          sy.push_back(x(2 * j + 1));
-        }
-        th.snapshot_x.push_back(sx);
-        th.snapshot_y.push_back(sy);
-        break;
-      }
-  };
-  auto fail = [&](IntegrationFailure::Reason why, const std::string& msg) {
-    th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    throw IntegrationFailure(why, th.t.empty() ? 0.0 : th.t.back(), th, msg);
-  };
-  record(0, 0);
-  ring::EnergyGuard guard(spec, c.n, response.load.force);
-  guard.start(th.kinetic.back(), th.strain.back(), th.work.back());
-
-  BandedKkt kkt(c);
-  Work buffers(c);
-  Vec x1, l1;
-  const double min_dt = controls.min_dt_factor * response.dt;
-  double h = response.dt;
-  int successes = 0;
-  for (long k = 1; k <= steps; ++k) {
-    const double t_target = response.dt * k;
-    int iterations = 0;
-    while (t_target - t > 1e-7 * response.dt) {
-      const double remaining = t_target - t;
-      const bool last = remaining <= h * (1.0 + 1e-9);
-      const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
-      x1 = x + hs * v;
-      l1 = lambda;
-      const double f = response.load.history.factor(t + 0.5 * hs);
-      const Step st = step(c, x, v, hs, f, x1, l1, kkt, buffers);
-      iterations += st.iterations;
-      if (!st.converged) {
-        h = 0.5 * hs;
-        successes = 0;
-        if (h < min_dt)
-          fail(IntegrationFailure::Reason::step_too_small,
-               "multibody::respond (energy-momentum): Newton did not converge at t = " + describe(t) +
-                   " s even with the step halved to " + describe(h) + " s");
-        continue;
-      }
-      work += f * c.F.dot(hinge(x1, c.load) - hinge(x, c.load));
-      guard.step(hs, f);
-      v = 2.0 / hs * (x1 - x) - v;
-      x.swap(x1);
-      lambda.swap(l1);
-      t = last ? t_target : t + hs;
-      if (!x.allFinite() || !v.allFinite())
-        fail(IntegrationFailure::Reason::not_finite,
-             "multibody::respond (energy-momentum): non-finite state at t = " + describe(t) + " s");
-      if (controls.check_contact) {
-        Eigen::Matrix2Xd hp(2, c.n);
-        for (int j = 0; j < c.n; ++j) hp.col(j) = hinge(x, j);
-        const auto cp = c.n >= 128 ? detail::closest_nonadjacent_grid(hp, c.l, gap, depth)
-                                   : detail::closest_nonadjacent(hp, gap, depth);
-        if (cp.distance < depth)
-          fail(IntegrationFailure::Reason::self_contact,
-               "multibody::respond (energy-momentum): the ring touches itself at t = " + describe(t) +
-                   " s: " + detail::describe_contact(cp) + "; the chain model does not include contact");
-      }
-      if (h < response.dt && ++successes >= 2) {
-        h = std::min(2.0 * h, response.dt);
-        successes = 0;
-      }
-    }
-    t = t_target;
-    record(iterations, k);
-    // The scheme conserves the balance to round-off; a gain is a failure as for the other
-    // integrators (the one rule: ring/energy_guard.hpp).
-    const ring::EnergyGuard::Verdict verdict =
-        guard.check(th.kinetic.back(), th.strain.back(), work);
-    if (verdict.gained)
-      fail(IntegrationFailure::Reason::energy_growth,
-           "multibody::respond (energy-momentum): " + ring::describe(verdict, t));
-  }
   th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return th;
 }
