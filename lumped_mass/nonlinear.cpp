@@ -10,10 +10,12 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
+#include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 #include "ring/errors.hpp"
 
@@ -383,6 +385,133 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
   return out;
 }
 
+namespace {
+
+/// The chain's midpoint step (a Newton solve on the constrained midpoint equations,
+/// x_1 = x_0 + h v_m, v_1 = 2 v_m - v_0) for the time-stepping driver
+/// (paths/time_stepping.hpp); the load's work and the damping at the step's midpoint.
+class MidpointStepper : public paths::Stepper {
+ public:
+  MidpointStepper(const Chain& c, const ring::ResponseOptions& r, double radius, Vec F, Sparse M, Sparse Cd,
+                  std::vector<int> rec)
+      : c_(c), r_(r), radius_(radius), F_(std::move(F)), M_(std::move(M)), Cd_(std::move(Cd)), rec_(std::move(rec)),
+        ch_(r.hinge_damping), damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || r.hinge_damping > 0),
+        x_(c.rest), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())) {}
+
+  paths::StepOutcome try_step(double t, double hh) override {
+    const int N = 2 * c_.n, R = c_.rows();
+    const double tm = t + 0.5 * hh;
+    const double scale = 2.0 / (hh * hh) * c_.m;  // balances the constraint rows
+    hh_ = hh;
+    f_ = r_.load.history.factor(tm);
+    const Vec Fm = F_ * f_;
+    x1_ = x_ + hh * v_;
+    l1_ = lambda_;
+    paths::StepOutcome out;
+    out.load_factor = f_;
+    for (int it = 0; it < 20; ++it) {
+      ++out.iterations;
+      const Vec xm = 0.5 * (x_ + x1_), vm = (x1_ - x_) / hh;
+      const Springs sp = springs(c_, xm, 0.5);
+      Triplets trip = sp.hess;
+      constraint_hessian(c_, l1_ * scale, 0.5, trip);
+      jacobian(c_, xm, N, scale, true, trip);
+      jacobian(c_, x1_, N, scale, false, trip);
+      Vec res = (2.0 / (hh * hh)) * (M_ * (x1_ - x_ - hh * v_)) + sp.grad - Fm;
+      if (damped_) res += Cd_ * vm;
+      if (ch_ > 0)
+        for (int j = 0; j < c_.n; ++j) {
+          const Turn tm_ = turn(c_, xm, j, false);
+          const double rate = (turn(c_, x1_, j, false).theta - turn(c_, x_, j, false).theta) / hh;
+          for (int i = 0; i < 6; ++i) {
+            res[dof(c_, j, i)] += ch_ * rate * tm_.grad[i];
+            for (int q = 0; q < 6; ++q)
+              trip.emplace_back(dof(c_, j, i), dof(c_, j, q), ch_ / hh * tm_.grad[i] * tm_.grad[q]);
+          }
+        }
+      Triplets gt;
+      jacobian(c_, xm, 0, 1.0, true, gt);
+      Sparse GT(N, R);
+      GT.setFromTriplets(gt.begin(), gt.end());
+      res += GT * (l1_ * scale);
+      Sparse A(N + R, N + R);
+      A.setFromTriplets(trip.begin(), trip.end());
+      Sparse Mt = (2.0 / (hh * hh)) * M_;
+      if (damped_) Mt += Cd_ / hh;
+      Mt.conservativeResize(N + R, N + R);
+      A += Mt;
+      const Newton step = newton_update(c_, A, res, scale, 1e-11 * radius_, radius_, x1_, l1_);
+      if (step == Newton::iterating) continue;
+      out.converged = step == Newton::converged;
+      break;
+    }
+    return out;
+  }
+
+  void accept(double) override {
+    const Vec dx = x1_ - x_, vm = dx / hh_;
+    work_ += f_ * F_.dot(dx);
+    if (damped_) dissipated_ += hh_ * vm.dot(Cd_ * vm);
+    if (ch_ > 0)
+      for (int j = 0; j < c_.n; ++j) {
+        const double rate = (turn(c_, x1_, j, false).theta - turn(c_, x_, j, false).theta) / hh_;
+        dissipated_ += hh_ * ch_ * rate * rate;
+      }
+    v_ = 2.0 * vm - v_;
+    x_ = x1_;
+    lambda_ = l1_;
+  }
+
+  bool finite() const override { return x_.allFinite() && v_.allFinite(); }
+
+  paths::Sample sample() const override {
+    paths::Sample out;
+    for (int h : rec_) {
+      const Vec2 u = c_.at(x_, h) - c_.at(c_.rest, h);
+      out.ux.push_back(u.x());
+      out.uy.push_back(u.y());
+    }
+    out.kinetic = 0.5 * v_.dot(M_ * v_);
+    out.strain = springs(c_, x_, 0.0).energy;
+    out.work = work_;
+    out.dissipated = dissipated_;
+    out.constraint_residual = constraints(c_, x_).head(c_.n).cwiseAbs().maxCoeff();
+    return out;
+  }
+
+  void shape(std::vector<double>& x, std::vector<double>& y) const override {
+    x.clear();
+    y.clear();
+    for (int j = 0; j < c_.n; ++j) {
+      x.push_back(x_[2 * j]);
+      y.push_back(x_[2 * j + 1]);
+    }
+  }
+
+  std::optional<std::string> contact() const override {
+    const Contact k = closest_nonadjacent(c_, x_);
+    if (k.distance >= c_.depth) return std::nullopt;
+    std::ostringstream s;
+    s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c_.depth
+      << " m)";
+    return s.str();
+  }
+
+ private:
+  const Chain& c_;
+  const ring::ResponseOptions& r_;
+  const double radius_;
+  const Vec F_;
+  const Sparse M_, Cd_;
+  const std::vector<int> rec_;
+  const double ch_;
+  const bool damped_;
+  Vec x_, v_, lambda_, x1_, l1_;
+  double hh_ = 0.0, f_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
+};
+
+}  // namespace
+
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                           const ring::ResponseOptions& r) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -403,141 +532,20 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
     K0.setFromTriplets(s0.hess.begin(), s0.hess.end());
     Cd = r.rayleigh_mass * M + r.rayleigh_stiffness * K0;
   }
-  const double ch = r.hinge_damping;
-  const bool damped = r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || ch > 0;
 
-  ring::TimeHistory h;
+  // The balance error of the midpoint rule is O(h^2) of the spring energy, of either
+  // sign; a gain beyond the one rule's bound (ring/energy_guard.hpp) is a failed
+  // integration, not a result.
+  ring::EnergyGuard guard(spec, c.n, r.load.force);
+  MidpointStepper stepper(c, r, spec.radius, F, M, Cd, rec);
+  paths::Grid grid;
+  grid.dt = r.dt;
+  grid.t_end = r.t_end;
+  grid.guard = &guard;
+  grid.who = "lumped response";
+  ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
   h.solver = "lumped";
   h.unknowns = N + R;
-  h.record_angles = r.record;
-  h.ux.assign(rec.size(), {});
-  h.uy.assign(rec.size(), {});
-  const long long steps = std::llround(r.t_end / r.dt);
-  std::vector<long long> snap_steps;
-  for (int k = 0; k < 6; ++k) snap_steps.push_back(std::llround(k * steps / 5.0));
-
-  Vec x = c.rest, v = Vec::Zero(N), lambda = Vec::Zero(R);
-  double work = 0.0, dissipated = 0.0;
-  ring::EnergyGuard guard(spec, c.n, r.load.force);
-  auto record = [&](double t, int iterations) {
-    h.t.push_back(t);
-    for (std::size_t p = 0; p < rec.size(); ++p) {
-      const Vec2 u = c.at(x, rec[p]) - c.at(c.rest, rec[p]);
-      h.ux[p].push_back(u.x());
-      h.uy[p].push_back(u.y());
-    }
-    const double T = 0.5 * v.dot(M * v), V = springs(c, x, 0.0).energy;
-    h.kinetic.push_back(T);
-    h.strain.push_back(V);
-    h.work.push_back(work);
-    h.energy_error.push_back(T + V + dissipated - work);
-    h.constraint_residual.push_back(constraints(c, x).head(c.n).cwiseAbs().maxCoeff());
-    h.newton_iterations.push_back(iterations);
-  };
-  auto fail = [&](ring::IntegrationFailure::Reason why, const std::string& msg) {
-    h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    throw ring::IntegrationFailure(why, h.t.empty() ? 0.0 : h.t.back(), h, "lumped response: " + msg);
-  };
-  record(0.0, 0);
-  guard.start(h.kinetic.back(), h.strain.back(), h.work.back());
-  auto snapshot = [&](long long step) {
-    if (std::find(snap_steps.begin(), snap_steps.end(), step) == snap_steps.end()) return;
-    h.snapshot_t.push_back(h.t.back());
-    std::vector<double> sx, sy;
-    for (int j = 0; j < c.n; ++j) {
-      sx.push_back(x[2 * j]);
-      sy.push_back(x[2 * j + 1]);
-    }
-    h.snapshot_x.push_back(sx);
-    h.snapshot_y.push_back(sy);
-  };
-  snapshot(0);
-
-  double t = 0.0;
-  for (long long step = 1; step <= steps; ++step) {
-    const double t_next = step * r.dt;
-    int iterations = 0;
-    double hstep = r.dt;
-    while (t < t_next - 1e-12 * r.dt) {
-      hstep = std::min(hstep, t_next - t);
-      const double hh = hstep, tm = t + 0.5 * hh;
-      const double scale = 2.0 / (hh * hh) * c.m;  // balances the constraint rows
-      const Vec Fm = F * r.load.history.factor(tm);
-      Vec x1 = x + hh * v, l1 = lambda;
-      bool ok = false;
-      for (int it = 0; it < 20; ++it) {
-        ++iterations;
-        const Vec xm = 0.5 * (x + x1), vm = (x1 - x) / hh;
-        const Springs sp = springs(c, xm, 0.5);
-        Triplets trip = sp.hess;
-        constraint_hessian(c, l1 * scale, 0.5, trip);
-        jacobian(c, xm, N, scale, true, trip);
-        jacobian(c, x1, N, scale, false, trip);
-        Vec res = (2.0 / (hh * hh)) * (M * (x1 - x - hh * v)) + sp.grad - Fm;
-        if (damped) res += Cd * vm;
-        if (ch > 0)
-          for (int j = 0; j < c.n; ++j) {
-            const Turn tm_ = turn(c, xm, j, false);
-            const double rate = (turn(c, x1, j, false).theta - turn(c, x, j, false).theta) / hh;
-            for (int i = 0; i < 6; ++i) {
-              res[dof(c, j, i)] += ch * rate * tm_.grad[i];
-              for (int q = 0; q < 6; ++q)
-                trip.emplace_back(dof(c, j, i), dof(c, j, q), ch / hh * tm_.grad[i] * tm_.grad[q]);
-            }
-          }
-        Triplets gt;
-        jacobian(c, xm, 0, 1.0, true, gt);
-        Sparse GT(N, R);
-        GT.setFromTriplets(gt.begin(), gt.end());
-        res += GT * (l1 * scale);
-        Sparse A(N + R, N + R);
-        A.setFromTriplets(trip.begin(), trip.end());
-        Sparse Mt = (2.0 / (hh * hh)) * M;
-        if (damped) Mt += Cd / hh;
-        Mt.conservativeResize(N + R, N + R);
-        A += Mt;
-        const Newton step = newton_update(c, A, res, scale, 1e-11 * spec.radius, spec.radius, x1, l1);
-        if (step == Newton::iterating) continue;
-        ok = step == Newton::converged;
-        break;
-      }
-      if (!ok) {
-        hstep /= 2.0;
-        if (hstep < 1e-6 * r.dt)
-          fail(ring::IntegrationFailure::Reason::step_too_small,
-               "Newton does not converge at t = " + std::to_string(t) + " s even with dt = " + std::to_string(hstep) +
-                   " s");
-        continue;
-      }
-      const Vec dx = x1 - x, vm = dx / hh;
-      work += Fm.dot(dx);
-      guard.step(hh, r.load.history.factor(tm));
-      if (damped) dissipated += hh * vm.dot(Cd * vm);
-      if (ch > 0)
-        for (int j = 0; j < c.n; ++j) {
-          const double rate = (turn(c, x1, j, false).theta - turn(c, x, j, false).theta) / hh;
-          dissipated += hh * ch * rate * rate;
-        }
-      v = 2.0 * vm - v;
-      x = x1;
-      lambda = l1;
-      t += hh;
-      if (!x.allFinite() || !v.allFinite())
-        fail(ring::IntegrationFailure::Reason::not_finite, "a non-finite state at t = " + std::to_string(t) + " s");
-      hstep = std::min(2.0 * hstep, r.dt);
-    }
-    t = t_next;
-    record(t_next, iterations);
-    snapshot(step);
-    const Contact k = closest_nonadjacent(c, x);
-    if (k.distance < c.depth) fail(ring::IntegrationFailure::Reason::self_contact, contact_message(c, k));
-    // The balance error of the midpoint rule is O(h^2) of the spring energy, of either
-    // sign; a gain beyond the one rule's bound (ring/energy_guard.hpp) is a failed
-    // integration, not a result.
-    const ring::EnergyGuard::Verdict verdict =
-        guard.check(h.kinetic.back(), h.strain.back(), work);
-    if (verdict.gained) fail(ring::IntegrationFailure::Reason::energy_growth, ring::describe(verdict, t_next));
-  }
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;
 }
