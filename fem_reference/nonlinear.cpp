@@ -6,6 +6,7 @@
 #include "fem_reference/checks.hpp"
 #include "fem_reference/newton.hpp"
 #include "fem_reference/static_path.hpp"
+#include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 
 namespace fem::detail {
@@ -118,190 +119,190 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
   return r;
 }
 
-/// One time integration with one discretization (the file comment's scheme).
+/// The beam's Newmark / generalized-alpha step (Chung & Hulbert 1993; Newmark's average
+/// acceleration is am = af = 0) for the time-stepping driver (paths/time_stepping.hpp):
+/// full Newton on the generalized-midpoint balance, the load's work by the trapezoidal
+/// rule, the damping's dissipation by the trapezoidal rule on v^T C v.
+class BeamStepper : public paths::Stepper {
+ public:
+  BeamStepper(const RingModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
+      : model_(model), rs_(rs), radius_(spec.radius), N_(model.n_free()),
+        F_(model.vertex_force(model.vertex_of(rs.load.angle), rs.load.force)), M_(model.mass()),
+        damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), S_(model.sparsity()) {
+    if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
+      am_ = (2.0 * rs.rho_inf - 1.0) / (rs.rho_inf + 1.0);
+      af_ = rs.rho_inf / (rs.rho_inf + 1.0);
+      gamma_ = 0.5 - am_ + af_;
+      beta_ = 0.25 * (1.0 - am_ + af_) * (1.0 - am_ + af_);
+    }
+    for (double a : rs.record) record_vertex_.push_back(model.vertex_of(a));
+    for (auto* v : {&q_, &v_, &a_, &q1_, &v1_, &a1_, &Cv_, &tmp_, &internal_, &qa_, &va_, &aa_}) v->reinit(N_);
+    // Start from rest. The acceleration is M qdd_0 = F g(0) (no internal or damping force
+    // in the rest state). Newmark starts there. Generalized-alpha starts from the
+    // acceleration that its first step's Newton matrix filters, as the multibody chain's
+    // (multibody/integrators.hpp, starting_pseudo_acceleration):
+    //   [(1 - af) K_t(0) + c_m M + c_c C] a_0 = c_m F g(0),
+    // per undamped linear mode a_0 = c qdd_0 / (c + w^2), c = c_m / (1 - af): qdd_0
+    // (1 + O(w^2 dt^2)) in the modes the step resolves (second order kept), -> 0 where
+    // w dt >> 1. Started at qdd_0, the method's velocity overshoot in the unresolved modes
+    // (the point step load gives every mode the acceleration F_k / m_k) gained energy in the
+    // first step, the more the smaller rho_inf (its am < 0 from rho_inf < 0.5): on the 20 kN
+    // scene (40 cubic elements, dt = 0.01 s) T + V - W after one step was +65 J (rho_inf = 0),
+    // +20 J (0.25), +3.3 J (0.5), +1.1 J (0.6) against a work of 67-78 J, and Rayleigh
+    // damping b = 0.05 s made it +650 J at rho_inf = 0.8.
+    SparseDirectUMFPACK lu;
+    a_ = F_;
+    if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
+      lu.initialize(newton_matrix(q_, rs.dt));
+      a_ *= (1.0 - am_) / (beta_ * rs.dt * rs.dt) * rs.load.history.factor(0.0);
+    } else {
+      lu.initialize(M_);
+      a_ *= rs.load.history.factor(0.0);
+    }
+    lu.solve(a_);
+  }
+
+  paths::StepOutcome try_step(double t, double h) override {
+    const double g_alpha = rs_.load.history.factor(t + h - af_ * h);
+    g_mean_ = 0.5 * (rs_.load.history.factor(t) + rs_.load.history.factor(t + h));
+    h_ = h;
+    q1_ = q_;
+    const int it = newton(q1_, radius_, [&](const Vector<double>& x, Vector<double>& res) -> SparseMatrix<double>& {
+      kinematics(x, h);
+      qa_ = x;
+      qa_.sadd(1.0 - af_, af_, q_);
+      va_ = v1_;
+      va_.sadd(1.0 - af_, af_, v_);
+      aa_ = a1_;
+      aa_.sadd(1.0 - am_, am_, a_);
+      newton_matrix(qa_, h);
+      res.reinit(N_);
+      M_.vmult(res, aa_);
+      res += internal_;
+      if (damped_) {
+        damping(va_, Cv_);
+        res += Cv_;
+      }
+      res.add(-g_alpha, F_);
+      return S_;
+    });
+    if (it < 0) return {false, false, kMaxNewton, g_mean_};
+    kinematics(q1_, h);
+    return {true, false, it, g_mean_};
+  }
+
+  void accept(double) override {
+    tmp_ = q1_;
+    tmp_ -= q_;
+    work_ += g_mean_ * (F_ * tmp_);
+    if (damped_) {
+      damping(v_, Cv_);
+      double p = v_ * Cv_;
+      damping(v1_, Cv_);
+      p += v1_ * Cv_;
+      dissipated_ += 0.5 * h_ * p;
+    }
+    q_ = q1_;
+    v_ = v1_;
+    a_ = a1_;
+    strain_ = model_.beam_energy(q_, nullptr, nullptr);
+  }
+
+  bool finite() const override { return std::isfinite(q_.l2_norm()) && std::isfinite(v_.l2_norm()); }
+
+  paths::Sample sample() const override {
+    paths::Sample out;
+    const Vector<double> full = model_.expand(q_);
+    for (unsigned int vertex : record_vertex_) {
+      const auto u = model_.vertex_displacement(full, vertex);
+      out.ux.push_back(u[0]);
+      out.uy.push_back(u[1]);
+    }
+    Vector<double> Mv(N_);
+    M_.vmult(Mv, v_);
+    out.kinetic = 0.5 * (v_ * Mv);
+    out.strain = strain_;
+    out.work = work_;
+    out.dissipated = dissipated_;
+    return out;
+  }
+
+  void shape(std::vector<double>& x, std::vector<double>& y) const override {
+    const Vector<double> full = model_.expand(q_);
+    x.clear();
+    y.clear();
+    for (unsigned int k = 0; k < model_.cells(); ++k) {
+      const auto X = model_.vertex_position(k);
+      const auto u = model_.vertex_displacement(full, k);
+      x.push_back(X[0] + u[0]);
+      y.push_back(X[1] + u[1]);
+    }
+  }
+
+ private:
+  /// a_1 and v_1 from Newmark's relations for the end position x of a step of h:
+  /// a_1 = (x - q - h v) / (beta h^2) - (1/(2 beta) - 1) a, v_1 = v + h ((1 - gamma) a + gamma a_1).
+  void kinematics(const Vector<double>& x, double h) {
+    a1_ = x;
+    a1_.add(-1.0, q_, -h, v_);
+    a1_ *= 1.0 / (beta_ * h * h);
+    a1_.add(-(0.5 / beta_ - 1.0), a_);
+    v1_ = v_;
+    v1_.add((1.0 - gamma_) * h, a_, gamma_ * h, a1_);
+  }
+  /// The Newton matrix of a step of h at the generalized midpoint x (internal forces there
+  /// into internal_): (1 - af) K_t(x) + c_m M + c_c C.
+  SparseMatrix<double>& newton_matrix(const Vector<double>& x, double h) {
+    const double c_m = (1.0 - am_) / (beta_ * h * h), c_c = (1.0 - af_) * gamma_ / (beta_ * h);
+    model_.beam_energy(x, &internal_, &S_);
+    S_ *= (1.0 - af_);
+    S_.add(c_m, M_);
+    if (rs_.rayleigh_mass > 0) S_.add(c_c * rs_.rayleigh_mass, M_);
+    if (rs_.rayleigh_stiffness > 0) S_.add(c_c * rs_.rayleigh_stiffness, model_.stiffness());
+    return S_;
+  }
+  /// out = C x, C = a M + b K0.
+  void damping(const Vector<double>& x, Vector<double>& out) {
+    M_.vmult(out, x);
+    out *= rs_.rayleigh_mass;
+    if (rs_.rayleigh_stiffness > 0) {
+      model_.stiffness().vmult(tmp_, x);
+      out.add(rs_.rayleigh_stiffness, tmp_);
+    }
+  }
+
+  const RingModel& model_;
+  const ring::ResponseOptions& rs_;
+  const double radius_;
+  const unsigned int N_;
+  const Vector<double> F_;
+  const SparseMatrix<double>& M_;
+  const bool damped_;
+  double am_ = 0.0, af_ = 0.0, gamma_ = 0.5, beta_ = 0.25;
+  std::vector<unsigned int> record_vertex_;
+  SparseMatrix<double> S_;
+  Vector<double> q_, v_, a_, q1_, v1_, a1_, Cv_, tmp_, internal_, qa_, va_, aa_;
+  double h_ = 0.0, g_mean_ = 0.0, work_ = 0.0, dissipated_ = 0.0, strain_ = 0.0;
+};
+
+/// One time integration with one discretization. The beam takes no sub-steps: a step
+/// whose Newton fails ends the run (step_too_small), and the reference refines dt itself.
 ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, const ring::ResponseOptions& rs) {
-  using Integrator = ring::ResponseOptions::Integrator;
   const auto t0 = std::chrono::steady_clock::now();
   const RingModel model(spec, setup);
-  const unsigned int N = model.n_free();
-  const Vector<double> F = model.vertex_force(model.vertex_of(rs.load.angle), rs.load.force);
-  const SparseMatrix<double>& M = model.mass();
-  const bool damped = rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0;
-  // Generalized-alpha (Chung & Hulbert 1993); Newmark average acceleration is am = af = 0.
-  double am = 0.0, af = 0.0, gamma = 0.5, beta = 0.25;
-  if (rs.integrator == Integrator::generalized_alpha) {
-    am = (2.0 * rs.rho_inf - 1.0) / (rs.rho_inf + 1.0);
-    af = rs.rho_inf / (rs.rho_inf + 1.0);
-    gamma = 0.5 - am + af;
-    beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
-  }
-  const double dt = rs.dt;
-  const long long steps = std::llround(rs.t_end / dt);
-
-  ring::TimeHistory h;
-  h.solver = "fem";
-  h.unknowns = N;
-  h.record_angles = rs.record;
-  h.ux.resize(rs.record.size());
-  h.uy.resize(rs.record.size());
-  std::vector<unsigned int> record_vertex;
-  for (double a : rs.record) record_vertex.push_back(model.vertex_of(a));
-  std::vector<long long> snap_steps;
-  for (int k = 0; k < 6; ++k) snap_steps.push_back(std::llround(k * steps / 5.0));
-
-  Vector<double> q(N), v(N), a(N), Cv(N), tmp(N);
-  auto damping = [&](const Vector<double>& x, Vector<double>& out) {  // C x
-    M.vmult(out, x);
-    out *= rs.rayleigh_mass;
-    if (rs.rayleigh_stiffness > 0) {
-      model.stiffness().vmult(tmp, x);
-      out.add(rs.rayleigh_stiffness, tmp);
-    }
-  };
-  double work = 0.0, dissipated = 0.0, strain = 0.0;
+  BeamStepper stepper(model, spec, rs);
+  // A gain is a failed integration, not a result (the one rule: ring/energy_guard.hpp).
   ring::EnergyGuard guard(spec, int(setup.elements * setup.subdivisions * setup.degree), rs.load.force);
-  auto record = [&](double t, int iterations) {
-    const Vector<double> full = model.expand(q);
-    h.t.push_back(t);
-    for (std::size_t i = 0; i < record_vertex.size(); ++i) {
-      const auto u = model.vertex_displacement(full, record_vertex[i]);
-      h.ux[i].push_back(u[0]);
-      h.uy[i].push_back(u[1]);
-    }
-    M.vmult(tmp, v);
-    const double T = 0.5 * (v * tmp);
-    h.kinetic.push_back(T);
-    h.strain.push_back(strain);
-    h.work.push_back(work);
-    h.energy_error.push_back(T + strain + dissipated - work);
-    h.constraint_residual.push_back(0.0);
-    h.newton_iterations.push_back(iterations);
-  };
-  auto snapshot = [&](long long step) {
-    if (std::find(snap_steps.begin(), snap_steps.end(), step) == snap_steps.end()) return;
-    const Vector<double> full = model.expand(q);
-    h.snapshot_t.push_back(h.t.back());
-    std::vector<double> sx, sy;
-    for (unsigned int k = 0; k < model.cells(); ++k) {
-      const auto X = model.vertex_position(k);
-      const auto u = model.vertex_displacement(full, k);
-      sx.push_back(X[0] + u[0]);
-      sy.push_back(X[1] + u[1]);
-    }
-    h.snapshot_x.push_back(sx);
-    h.snapshot_y.push_back(sy);
-  };
-  auto fail = [&](ring::IntegrationFailure::Reason why, const std::string& msg) {
-    h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    throw ring::IntegrationFailure(why, h.t.empty() ? 0.0 : h.t.back(), h, "fem response: " + msg);
-  };
-
-  SparseMatrix<double> S(model.sparsity());
-  Vector<double> internal(N), qa(N), va(N), aa(N), r(N);
-  const double c_m = (1.0 - am) / (beta * dt * dt), c_c = (1.0 - af) * gamma / (beta * dt);
-  // The Newton matrix of a step at the generalized midpoint x (internal forces there into
-  // `internal`): (1 - af) K_t(x) + c_m M + c_c C.
-  auto newton_matrix = [&](const Vector<double>& x) -> SparseMatrix<double>& {
-    model.beam_energy(x, &internal, &S);
-    S *= (1.0 - af);
-    S.add(c_m, M);
-    if (rs.rayleigh_mass > 0) S.add(c_c * rs.rayleigh_mass, M);
-    if (rs.rayleigh_stiffness > 0) S.add(c_c * rs.rayleigh_stiffness, model.stiffness());
-    return S;
-  };
-
-  // Start from rest. The acceleration is M qdd_0 = F g(0) (no internal or damping force
-  // in the rest state). Newmark starts there. Generalized-alpha starts from the
-  // acceleration that its first step's Newton matrix filters, as the multibody chain's
-  // (multibody/integrators.hpp, starting_pseudo_acceleration):
-  //   [(1 - af) K_t(0) + c_m M + c_c C] a_0 = c_m F g(0),
-  // per undamped linear mode a_0 = c qdd_0 / (c + w^2), c = c_m / (1 - af): qdd_0
-  // (1 + O(w^2 dt^2)) in the modes the step resolves (second order kept), -> 0 where
-  // w dt >> 1. Started at qdd_0, the method's velocity overshoot in the unresolved modes
-  // (the point step load gives every mode the acceleration F_k / m_k) gained energy in the
-  // first step, the more the smaller rho_inf (its am < 0 from rho_inf < 0.5): on the 20 kN
-  // scene (40 cubic elements, dt = 0.01 s) T + V - W after one step was +65 J (rho_inf = 0),
-  // +20 J (0.25), +3.3 J (0.5), +1.1 J (0.6) against a work of 67-78 J, and Rayleigh
-  // damping b = 0.05 s made it +650 J at rho_inf = 0.8.
-  if (rs.integrator == Integrator::generalized_alpha) {
-    SparseDirectUMFPACK lu;
-    lu.initialize(newton_matrix(q));
-    a = F;
-    a *= c_m * rs.load.history.factor(0.0);
-    lu.solve(a);
-  } else {
-    SparseDirectUMFPACK lu;
-    lu.initialize(M);
-    a = F;
-    a *= rs.load.history.factor(0.0);
-    lu.solve(a);
-  }
-  record(0.0, 0);
-  guard.start(h.kinetic.back(), h.strain.back(), h.work.back());
-  snapshot(0);
-
-  double g_old = rs.load.history.factor(0.0);
-  for (long long step = 1; step <= steps; ++step) {
-    const double t_next = step * dt, t_alpha = t_next - af * dt;
-    const double g_alpha = rs.load.history.factor(t_alpha), g_next = rs.load.history.factor(t_next);
-    const Vector<double> q_old = q, v_old = v, a_old = a;
-    // Predictor q = q_old: then a_{n+1} and v_{n+1} follow from Newmark's relations.
-    auto kinematics = [&](const Vector<double>& x) {
-      // a_{n+1} = (x - q_n - dt v_n) / (beta dt^2) - (1/(2 beta) - 1) a_n
-      a = x;
-      a.add(-1.0, q_old, -dt, v_old);
-      a *= 1.0 / (beta * dt * dt);
-      a.add(-(0.5 / beta - 1.0), a_old);
-      v = v_old;
-      v.add((1.0 - gamma) * dt, a_old, gamma * dt, a);
-    };
-    q = q_old;
-    const int it = newton(q, spec.radius, [&](const Vector<double>& x, Vector<double>& res) -> SparseMatrix<double>& {
-      kinematics(x);
-      qa = x;
-      qa.sadd(1.0 - af, af, q_old);
-      va = v;
-      va.sadd(1.0 - af, af, v_old);
-      aa = a;
-      aa.sadd(1.0 - am, am, a_old);
-      newton_matrix(qa);
-      res.reinit(N);
-      M.vmult(res, aa);
-      res += internal;
-      if (damped) {
-        damping(va, Cv);
-        res += Cv;
-      }
-      res.add(-g_alpha, F);
-      return S;
-    });
-    if (it < 0)
-      fail(ring::IntegrationFailure::Reason::step_too_small,
-           "Newton did not converge in " + std::to_string(kMaxNewton) + " iterations at t = " + std::to_string(t_next) +
-               " s (dt = " + std::to_string(dt) + " s; try a smaller response.dt)");
-    kinematics(q);
-    if (!std::isfinite(q.l2_norm()) || !std::isfinite(v.l2_norm()))
-      fail(ring::IntegrationFailure::Reason::not_finite, "a non-finite state at t = " + std::to_string(t_next) + " s");
-    tmp = q;
-    tmp -= q_old;
-    work += 0.5 * (g_old + g_next) * (F * tmp);
-    guard.step(dt, 0.5 * (g_old + g_next));
-    g_old = g_next;
-    if (damped) {  // trapezoidal rule on v^T C v
-      damping(v_old, Cv);
-      double p = v_old * Cv;
-      damping(v, Cv);
-      p += v * Cv;
-      dissipated += 0.5 * dt * p;
-    }
-    strain = model.beam_energy(q, nullptr, nullptr);
-    record(t_next, it);
-    snapshot(step);
-    // A gain is a failed integration, not a result (the one rule: ring/energy_guard.hpp).
-    const ring::EnergyGuard::Verdict verdict =
-        guard.check(h.kinetic.back(), h.strain.back(), work);
-    if (verdict.gained) fail(ring::IntegrationFailure::Reason::energy_growth, ring::describe(verdict, t_next));
-  }
+  paths::Grid grid;
+  grid.dt = rs.dt;
+  grid.t_end = rs.t_end;
+  grid.min_dt_factor = 1.0;
+  grid.check_contact = false;
+  grid.guard = &guard;
+  grid.who = "fem response";
+  ring::TimeHistory h = paths::integrate(stepper, grid, rs.record);
+  h.solver = "fem";
+  h.unknowns = model.n_free();
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;
 }

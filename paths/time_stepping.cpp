@@ -87,9 +87,12 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
         h = 0.5 * hs;
         successes = 0;
         if (h < min_dt)
-          fail(Reason::step_too_small, "Newton did not converge at t = " + seconds(t) +
-                                           " s even with the step halved to " + seconds(h) + " s (minimum " +
-                                           seconds(min_dt) + " s)");
+          fail(Reason::step_too_small,
+               grid.min_dt_factor >= 1.0
+                   ? "Newton did not converge at t = " + seconds(t) + " s in a step of " + seconds(hs) +
+                         " s (this solver does not shorten its steps; try a smaller response.dt)"
+                   : "Newton did not converge at t = " + seconds(t) + " s even with the step halved to " +
+                         seconds(h) + " s (minimum " + seconds(min_dt) + " s)");
         continue;
       }
       retried = false;

@@ -79,7 +79,7 @@ struct Grid {
   double dt = 0.0;             ///< the recorded step, s (> 0)
   double t_end = 0.0;          ///< s (>= dt)
   int snapshots = 6;           ///< deformed shapes stored, evenly spaced over the grid (>= 0)
-  double min_dt_factor = 1e-6; ///< smallest sub-step, as a fraction of dt
+  double min_dt_factor = 1e-6; ///< smallest sub-step, as a fraction of dt (1: no sub-steps)
   int regrow_after = 2;        ///< successful halved sub-steps before the step doubles
   /// The energy guard (ring/energy_guard.hpp), or null for none; the driver starts it,
   /// feeds it every accepted sub-step and checks it at every grid point.
