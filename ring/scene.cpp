@@ -393,23 +393,134 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   return s;
 }
 
-/// The TOML parser recurses once per dotted-key part and per nested table or array, and
-/// overflows the stack somewhere past 20,000 levels: a line that nests or dots more than
-/// kMaxNesting times is refused before parsing (no scene comes near it).
+}  // namespace
+
+// The TOML parser (and the printing and freeing of what it built) recurses once per level
+// of nesting, and overflows the stack somewhere past 20,000 levels; toml++ itself stops
+// nested arrays and inline tables at 256 levels, but not tables made by dotted keys. So the
+// text is scanned once, as the parser will read it, and refused where a point lies deeper
+// than kMaxNesting levels: the parts of the current [table] header or of a dotted key, plus
+// the arrays and inline tables open around it (and the dotted keys that opened them). Dots
+// and brackets inside strings and comments, and the dots of numbers, do not nest: a record
+// list of 1001 angles is two levels deep. The scan is linear and keeps no recursion of its
+// own; on malformed text it may be less exact, but only up to where the parser fails too.
 void check_nesting(const std::string& text, const std::string& name) {
-  std::size_t line = 1, count = 0;
-  for (char ch : text) {
-    if (ch == '\n') {
+  struct Frame {
+    char open;          // '[' an array, '{' an inline table
+    std::size_t level;  // the level of its elements (an inline table: of its keys' base)
+  };
+  std::vector<Frame> open;
+  std::size_t line = 1;
+  std::size_t header = 0;  // parts of the current [table] header
+  std::size_t parts = 0;   // parts of the key being read (0: none started)
+  std::size_t here = 0;    // level of the value being read
+  bool key = true;         // reading a key (else a value)
+  bool in_header = false;
+  auto refuse = [&](const std::string& what) {
+    throw InputError(name, "line " + std::to_string(line),
+                     what + " more than " + std::to_string(kMaxNesting) + " levels deep; a scene does not nest that deep");
+  };
+  auto base = [&]() -> std::size_t { return in_header ? 0 : open.empty() ? header : open.back().level; };
+  // Skips the string that starts at text[i] (a quote); returns the index after it. A
+  // single-line string ends at its closing quote or before a newline (where the parser
+  // fails); a multi-line one ("""...""" or '''...''', up to two more quotes belong to it)
+  // counts the lines it spans.
+  auto skip_string = [&](std::size_t i, bool multi_allowed) {
+    const char q = text[i];
+    const bool multi = multi_allowed && text.compare(i, 3, std::string(3, q)) == 0;
+    std::size_t j = i + (multi ? 3 : 1);
+    while (j < text.size()) {
+      const char c = text[j];
+      if (c == '\\' && q == '"') {
+        if (j + 1 < text.size() && text[j + 1] == '\n') {
+          if (!multi) return j + 1;
+          ++line;
+        }
+        j += 2;
+      } else if (c == '\n') {
+        if (!multi) return j;
+        ++line;
+        ++j;
+      } else if (c == q && (!multi || text.compare(j, 3, std::string(3, q)) == 0)) {
+        j += multi ? 3 : 1;
+        for (int extra = 0; multi && extra < 2 && j < text.size() && text[j] == q; ++extra) ++j;
+        return j;
+      } else {
+        ++j;
+      }
+    }
+    return j;
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
       ++line;
-      count = 0;
-    } else if (ch == '.' || ch == '[' || ch == '{') {
-      if (++count > kMaxNesting)
-        throw InputError(name, "line " + std::to_string(line),
-                         "more than " + std::to_string(kMaxNesting) +
-                             " dotted-key parts or nested brackets on one line; a scene does not nest that deep");
+      if (open.empty()) {  // a statement ends (inside an array, the value goes on)
+        key = true;
+        in_header = false;
+        parts = 0;
+      }
+      ++i;
+    } else if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+    } else if (c == '"' || c == '\'') {
+      if (key) parts = std::max<std::size_t>(parts, 1);
+      i = skip_string(i, !key);
+    } else if (key) {
+      if (c == '[' && open.empty() && !in_header && parts == 0) {  // [table] or [[array of tables]]
+        in_header = true;
+        i += text.compare(i, 2, "[[") == 0 ? 2 : 1;
+        continue;
+      }
+      if (c == ']' && in_header) {
+        header = parts;
+        in_header = false;
+        parts = 0;
+        i += text.compare(i, 2, "]]") == 0 ? 2 : 1;
+        continue;
+      }
+      if (c == '}' && !open.empty() && open.back().open == '{') {  // {} or a trailing comma
+        open.pop_back();
+        key = false;
+        here = open.empty() ? here : open.back().level;
+      } else if (c == '=') {
+        here = base() + std::max<std::size_t>(parts, 1);
+        key = false;
+        parts = 0;
+      } else if (c == '.') {
+        parts = std::max<std::size_t>(parts, 1) + 1;
+      } else if (c == ',' && !open.empty() && open.back().open == '{') {
+        parts = 0;
+      } else {
+        parts = std::max<std::size_t>(parts, 1);
+      }
+      if (base() + parts > kMaxNesting) refuse(in_header ? "a [table] header" : "a dotted key");
+      ++i;
+    } else {  // a value: only arrays and inline tables nest
+      if (c == '[' || c == '{') {
+        open.push_back({c, here + 1});
+        if (open.back().level > kMaxNesting) refuse("an array or inline table");
+        if (c == '{') {
+          key = true;
+          parts = 0;
+        } else {
+          here = open.back().level;
+        }
+      } else if ((c == ']' || c == '}') && !open.empty()) {
+        open.pop_back();
+        if (!open.empty()) here = open.back().level;
+      } else if (c == ',' && !open.empty() && open.back().open == '{') {
+        key = true;
+        parts = 0;
+      }
+      ++i;
     }
   }
 }
+
+namespace {
 
 /// Applies one "a.b.c=value" override to the parsed document.
 std::string apply_override(toml::table& root, const std::string& spec, const std::string& file) {
@@ -420,6 +531,12 @@ std::string apply_override(toml::table& root, const std::string& spec, const std
   toml::table parsed;
   if (value.find_first_of("\n\r") != std::string::npos)
     throw InputError(file, "--set " + path, "the value spans several lines; give one key=value per --set");
+  try {
+    check_nesting("v = " + value, file);
+  } catch (const InputError&) {
+    throw InputError(file, "--set " + path,
+                     "the value nests more than " + std::to_string(kMaxNesting) + " levels deep (dotted keys, arrays, tables)");
+  }
   try {
     parsed = toml::parse("v = " + value);
   } catch (const toml::parse_error&) {

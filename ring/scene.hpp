@@ -99,9 +99,15 @@ struct Scene {
   bool runs_nonlinear(const std::string& solver) const;
 };
 
-/// Largest scene file read (bytes), and the deepest nesting or dotting on one line.
+/// Largest scene file read (bytes), and the deepest nesting of tables and arrays (dotted-key
+/// parts, [table] header parts, open arrays and inline tables) at any point of it.
 constexpr std::size_t kMaxSceneBytes = 1 << 20;
 constexpr std::size_t kMaxNesting = 1000;
+
+/// Refuses TOML text nested deeper than kMaxNesting at some point (InputError naming `name`
+/// and the line), before a parser recurses into it. Dots and brackets in strings, comments
+/// and numbers do not count. O(size of text).
+void check_nesting(const std::string& text, const std::string& name);
 
 /// Reads and validates a scene against the known solvers. `overrides` are
 /// "section.key=value" with the value in TOML syntax (a bare word is taken as a string).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "ring/errors.hpp"
 #include "compare/registry.hpp"
@@ -184,5 +185,83 @@ TEST(SceneSet, ResolvedSceneRoundTrips) {
 TEST(SceneSet, OverrideIsValidatedAndNamed) { expect_rejected(kPaper, "multibody.n (from --set)", ">= 4", {"multibody.n=2"}); }
 TEST(SceneSet, OverrideWithoutEquals) { expect_rejected(kPaper, "--set multibody.n", "section.key=value", {"multibody.n"}); }
 TEST(SceneSet, OverrideUnknownKey) { expect_rejected(kPaper, "multibody.rotary", "did you mean 'rotary_inertia'", {"multibody.rotary=true"}); }
+
+// ---- the nesting guard (ring::check_nesting): real nesting only ----
+// The oracle is the TOML grammar (toml.io, v1.0.0): a dotted key's parts, a [table]
+// header's parts and open arrays and inline tables nest; dots and brackets in strings,
+// comments and numbers do not.
+
+std::string repeat(const std::string& s, int n) {
+  std::string o;
+  for (int i = 0; i < n; ++i) o += s;
+  return o;
+}
+
+/// "a.a. ... .a" with `parts` parts.
+std::string dotted(int parts) { return "a" + repeat(".a", parts - 1); }
+
+void expect_too_deep(const std::string& text, const std::string& line) {
+  try {
+    ring::check_nesting(text, "deep.toml");
+    ADD_FAILURE() << "accepted nesting past " << ring::kMaxNesting << " levels";
+  } catch (const ring::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("deep.toml: " + line + ": ", 0), 0u) << m;
+    EXPECT_NE(m.find("levels deep"), std::string::npos) << m;
+  }
+}
+
+TEST(SceneNesting, RecordListOf1001AnglesIsRead) {
+  // 1001 angles on the n = 40 chain's nodes (every 9 degrees from the pin): 1001 dots on a line.
+  std::string record;
+  for (int i = 0; i < 1001; ++i) record += (i ? ", " : "") + std::to_string(9 * (i % 40)) + ".0";
+  const ring::Scene s =
+      cmp::parse_scene(kRollered + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\nrecord = [" + record + "]\n", "p.toml");
+  ASSERT_TRUE(s.statics);
+  EXPECT_EQ(s.statics->record.size(), 1001u);
+}
+
+TEST(SceneNesting, DotsAndBracketsInCommentsAndStringsDoNotNest) {
+  const std::string ruler = "# " + repeat(".", 2000) + repeat("[{", 1500) + "\n";
+  const std::string title = repeat(".[{", 1200);
+  const std::string text = ruler + replace(kPaper, "title = \"t\"", "title = \"" + title + "\\\"[[[\"") +
+                           "# a comment with \" and ''' inside " + repeat("[", 1200) + "\n";
+  const ring::Scene s = cmp::parse_scene(text, "p.toml");
+  EXPECT_EQ(s.title, title + "\"[[[");
+  // Multi-line strings (with quotes and escaped quotes inside) and literal strings.
+  for (const std::string& v : {"\"\"\"" + repeat("[.", 1500) + "\\\"\"\"\n" + repeat("{", 1500) + "\"\"\"\"\"",
+                              "'''" + repeat("[", 1500) + "\n''" + repeat(".", 1500) + "'''''",
+                              "'" + repeat("\\[", 1500) + "'"})
+    EXPECT_NO_THROW(ring::check_nesting("x = " + v + "\n", "p.toml")) << v;
+  // A quoted key's dots are part of one name.
+  EXPECT_NO_THROW(ring::check_nesting("\"" + dotted(2000) + "\" = 1\n", "p.toml"));
+}
+
+TEST(SceneNesting, DottedKeysAndHeadersUpToTheLimit) {
+  EXPECT_NO_THROW(ring::check_nesting(dotted(1000) + " = 1\n", "p.toml"));
+  EXPECT_NO_THROW(ring::check_nesting("[" + dotted(1000) + "]\n", "p.toml"));
+  expect_too_deep(dotted(1001) + " = 1\n", "line 1");
+  expect_too_deep("x = 1\n[" + dotted(1001) + "]\n", "line 2");
+  expect_too_deep("[[" + dotted(50000) + "]]\n", "line 1");
+  // A key under a header nests below it.
+  expect_too_deep("[" + dotted(600) + "]\n" + dotted(401) + " = 1\n", "line 2");
+  EXPECT_NO_THROW(ring::check_nesting("[" + dotted(600) + "]\n" + dotted(400) + " = 1\n", "p.toml"));
+}
+
+TEST(SceneNesting, ArraysAndInlineTablesAddUpAcrossLines) {
+  // One bracket per line: a count per line never saw more than one. The key x is level 1,
+  // the elements of its 999th array level 1000.
+  expect_too_deep("x = " + repeat("[\n", 1000) + "1" + repeat("]", 1000) + "\n", "line 1000");
+  EXPECT_NO_THROW(ring::check_nesting("x = " + repeat("[\n", 999) + "1" + repeat("]", 999) + "\n", "p.toml"));
+  // Dotted keys inside inline tables inside arrays: 600 + 600 levels, on different lines.
+  expect_too_deep("x = [\n{" + dotted(600) + " = [\n{" + dotted(600) + " = 1}]}]\n", "line 3");
+  EXPECT_NO_THROW(ring::check_nesting("x = [\n{" + dotted(400) + " = [\n{" + dotted(400) + " = 1}]}]\n", "p.toml"));
+  // Closed brackets no longer count: 2000 arrays side by side are two levels deep.
+  EXPECT_NO_THROW(ring::check_nesting("y = [" + repeat("[1.5], ", 2000) + "]\n", "p.toml"));
+}
+
+TEST(SceneNesting, OverrideValuesAreGuardedToo) {
+  expect_rejected(kPaper, "--set x", "levels deep", {"x={" + dotted(1001) + " = 1}"});
+}
 
 }  // namespace
