@@ -24,7 +24,8 @@ struct SweepArgs {
   int jobs = 0;                   ///< threads (0: all cores; under MPI: per rank, default 1)
 };
 
-/// One row of the sweep's table. `values` are the varied keys' values, as given.
+/// One row of the sweep's table. `values` are the varied keys' values as TOML text
+/// (sweep_cases).
 struct SweepRow {
   int index = 0;                       ///< case number, 0-based, in product (or zip) order
   std::vector<std::string> values;
@@ -39,8 +40,12 @@ struct SweepRow {
   std::string message;
 };
 
-/// The cases of the --vary lists: each a list of "key=value" overrides. Throws
-/// ring::InputError for a malformed --vary, or lists of different lengths with zip.
+/// The cases of the --vary lists: each case the values of `keys` in order. A --vary is
+/// KEY=[v1, v2, ...] with the list in TOML (it may span lines); each value comes back as
+/// one line of TOML text that reads back to the same value (ring::toml_array_items: the
+/// form the table shows and the case's override uses). Throws ring::InputError for a
+/// malformed --vary, a key given twice or inside another (ring.section and
+/// ring.section.diameter), lists of different lengths with zip, or more than INT_MAX cases.
 std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
                                                   std::vector<std::string>& keys);
 

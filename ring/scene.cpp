@@ -3,7 +3,10 @@
 #include "ring/scene.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -560,7 +563,160 @@ std::string apply_override(toml::table& root, const std::string& spec, const std
   return path;
 }
 
+/// A TOML string as a basic string ("..." with escapes): one line, whatever it holds.
+void append_quoted(std::string& o, std::string_view s) {
+  o += '"';
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    switch (c) {
+      case '"': o += "\\\""; break;
+      case '\\': o += "\\\\"; break;
+      case '\b': o += "\\b"; break;
+      case '\t': o += "\\t"; break;
+      case '\n': o += "\\n"; break;
+      case '\f': o += "\\f"; break;
+      case '\r': o += "\\r"; break;
+      default:
+        if (c < 0x20 || c == 0x7f) {
+          char u[8];
+          std::snprintf(u, sizeof u, "\\u%04X", static_cast<unsigned>(c));
+          o += u;
+        } else {
+          o += ch;  // UTF-8 as the parser validated it
+        }
+    }
+  }
+  o += '"';
+}
+
+void append_toml(std::string& o, const toml::node& n) {
+  if (const auto* v = n.as_string()) {
+    append_quoted(o, v->get());
+  } else if (const auto* v = n.as_integer()) {
+    o += std::to_string(v->get());
+  } else if (const auto* v = n.as_floating_point()) {
+    const double x = v->get();
+    if (std::isnan(x)) {
+      o += "nan";
+    } else if (std::isinf(x)) {
+      o += x > 0 ? "inf" : "-inf";
+    } else {
+      // The shortest digits that read back to the same double (0.1, 1e-300, 5e-324).
+      char buf[64];
+      const auto r = std::to_chars(buf, buf + sizeof buf, x);
+      const std::string t(buf, r.ptr);
+      o += t;
+      if (t.find_first_of(".e") == std::string::npos) o += ".0";  // stays a float
+    }
+  } else if (const auto* v = n.as_boolean()) {
+    o += v->get() ? "true" : "false";
+  } else if (const auto* v = n.as_array()) {
+    o += '[';
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      if (i) o += ", ";
+      append_toml(o, *v->get(i));
+    }
+    o += ']';
+  } else if (const auto* v = n.as_table()) {
+    o += '{';
+    bool first = true;
+    for (const auto& [k, x] : *v) {
+      o += first ? " " : ", ";
+      first = false;
+      const std::string_view key = k.str();
+      const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+      });
+      if (bare) o += key;
+      else append_quoted(o, key);
+      o += " = ";
+      append_toml(o, x);
+    }
+    o += first ? "}" : " }";
+  } else {  // a date, a time or a date-time: toml++ prints them as TOML does
+    std::ostringstream t;
+    if (const auto* d = n.as_date()) t << *d;
+    else if (const auto* d = n.as_time()) t << *d;
+    else if (const auto* d = n.as_date_time()) t << *d;
+    o += t.str();
+  }
+}
+
+/// The same TOML value (type and value; NaN equals NaN, 0.0 and -0.0 differ).
+bool same_value(const toml::node& a, const toml::node& b) {
+  if (a.type() != b.type()) return false;
+  if (const auto* x = a.as_floating_point()) {
+    const double p = x->get(), q = b.as_floating_point()->get();
+    return (std::isnan(p) && std::isnan(q)) || (p == q && std::signbit(p) == std::signbit(q));
+  }
+  if (const auto* x = a.as_array()) {
+    const auto* y = b.as_array();
+    if (x->size() != y->size()) return false;
+    for (std::size_t i = 0; i < x->size(); ++i)
+      if (!same_value(*x->get(i), *y->get(i))) return false;
+    return true;
+  }
+  if (const auto* x = a.as_table()) {
+    const auto* y = b.as_table();
+    if (x->size() != y->size()) return false;
+    for (const auto& [k, v] : *x) {
+      const toml::node* w = y->get(k.str());
+      if (!w || !same_value(v, *w)) return false;
+    }
+    return true;
+  }
+  if (const auto* x = a.as_string()) return x->get() == b.as_string()->get();
+  if (const auto* x = a.as_integer()) return x->get() == b.as_integer()->get();
+  if (const auto* x = a.as_boolean()) return x->get() == b.as_boolean()->get();
+  if (const auto* x = a.as_date()) return x->get() == b.as_date()->get();
+  if (const auto* x = a.as_time()) return x->get() == b.as_time()->get();
+  if (const auto* x = a.as_date_time()) return x->get() == b.as_date_time()->get();
+  return false;
+}
+
+std::string toml_text(const toml::node& value) {
+  std::string o;
+  append_toml(o, value);
+  return o;
+}
+
 }  // namespace
+
+std::vector<std::string> toml_array_items(const std::string& text, const std::string& where) {
+  const std::string doc = "v = " + text;
+  try {
+    check_nesting(doc, "");
+  } catch (const InputError&) {
+    throw InputError("", where, "the values nest more than " + std::to_string(kMaxNesting) + " levels deep");
+  }
+  toml::table parsed;
+  try {
+    parsed = toml::parse(doc);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    const auto column = b.line == 1 && b.column > 4 ? b.column - 4 : b.column;  // without "v = "
+    throw InputError("", where,
+                     "expected [v1, v2, ...], a TOML array (strings in quotes): " + std::string(e.description()) +
+                         " (line " + std::to_string(b.line) + ", column " + std::to_string(column) + " of the list)");
+  }
+  const toml::array* list = parsed.size() == 1 ? parsed.get_as<toml::array>("v") : nullptr;
+  if (!list) throw InputError("", where, "expected [v1, v2, ...], one TOML array and nothing after it");
+  if (list->empty()) throw InputError("", where, "expected a non-empty list of values");
+  std::vector<std::string> items;
+  for (const auto& element : *list) {
+    std::string item = toml_text(element);
+    // Every item is read back as an override will read it: the same value, or a refusal.
+    bool same = false;
+    try {
+      const toml::table back = toml::parse("v = " + item);
+      same = back.size() == 1 && back.get("v") && same_value(element, *back.get("v"));
+    } catch (const toml::parse_error&) {
+    }
+    if (!same) throw InputError("", where, "the value " + item.substr(0, 80) + " does not read back as itself from TOML text");
+    items.push_back(std::move(item));
+  }
+  return items;
+}
 
 bool Scene::column(const std::string& solver) const {
   auto in = [&](const std::vector<std::string>& v) { return std::find(v.begin(), v.end(), solver) != v.end(); };

@@ -264,4 +264,54 @@ TEST(SceneNesting, OverrideValuesAreGuardedToo) {
   expect_rejected(kPaper, "--set x", "levels deep", {"x={" + dotted(1001) + " = 1}"});
 }
 
+// ---- --vary lists (ring::toml_array_items) ----
+// Each item is TOML text that reads back to the same value; the expected texts follow the
+// TOML grammar, and the values read back through --set are compared with the C++
+// compiler's reading of the same literals.
+
+TEST(VaryItems, EveryKindOfValueReadsBackAsItself) {
+  const auto items = ring::toml_array_items(
+      "[0.1, 1e-300, 5e-324, 1.7976931348623157e308, -0.0, 1e4, 2.5e-3, 42, -7, true, \"a\\\"b\", 'lit\\n', "
+      "\"\"\"two\nlines\"\"\", \"tab\\t\\u0001 \xc3\xa9\", {diameter = 0.01}, {\"odd key\" = 1, b.c = 2}, "
+      "[1, [2.5, \"x\"]], [], {}]",
+      "--vary k");
+  const std::vector<std::string> expected = {
+      "0.1", "1e-300", "5e-324", "1.7976931348623157e+308", "-0.0", "10000.0", "0.0025", "42", "-7", "true",
+      "\"a\\\"b\"", "\"lit\\\\n\"", "\"two\\nlines\"", "\"tab\\t\\u0001 \xc3\xa9\"", "{ diameter = 0.01 }",
+      "{ b = { c = 2 }, \"odd key\" = 1 }", "[1, [2.5, \"x\"]]", "[]", "{}"};
+  EXPECT_EQ(items, expected);
+}
+
+TEST(VaryItems, FloatsKeepFullPrecisionThroughTheOverride) {
+  const auto items = ring::toml_array_items("[0.1, 1e-300, 0.30000000000000004, 2.1e11]", "--vary ring.E");
+  const double want[] = {0.1, 1e-300, 0.30000000000000004, 2.1e11};
+  ASSERT_EQ(items.size(), 4u);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const ring::Scene s = cmp::parse_scene(kPaper, "p.toml", {"ring.E=" + items[i]});
+    EXPECT_EQ(s.ring.E, want[i]) << items[i];  // exactly: the same double
+  }
+  const auto section = ring::toml_array_items("[{diameter = 0.01}]", "k");
+  EXPECT_EQ(cmp::parse_scene(kPaper, "p.toml", {"ring.section=" + section[0]}).ring.section.diameter, 0.01);
+  const auto title = ring::toml_array_items("[\"a\\\"b\"]", "k");
+  EXPECT_EQ(cmp::parse_scene(kPaper, "p.toml", {"title=" + title[0]}).title, "a\"b");
+}
+
+TEST(VaryItems, MultiLineListsWithComments) {
+  EXPECT_EQ(ring::toml_array_items("[\n  40,  # coarse\n  80,\n]  # done", "k"), (std::vector<std::string>{"40", "80"}));
+}
+
+TEST(VaryItems, WhatIsNotOneNonEmptyArrayIsRefused) {
+  for (const std::string& bad : {std::string("40"), std::string("[]"), std::string("[chain, frame]"), std::string("[1, 2"),
+                                std::string("[1] x"), std::string("[1]\nw = 3"), std::string("[1]\n[t]"), std::string(""),
+                                std::string("[\"unterminated]"), "[" + repeat("[", 300) + repeat("]", 300) + "]",
+                                "[{" + dotted(1001) + " = 1}]"}) {
+    try {
+      ring::toml_array_items(bad, "--vary k");
+      ADD_FAILURE() << "accepted " << bad.substr(0, 80);
+    } catch (const ring::InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("--vary k: ", 0), 0u) << e.what();
+    }
+  }
+}
+
 }  // namespace
