@@ -6,15 +6,21 @@
 // given twice or inside another is refused; a case's value wins over --set.
 #include <gtest/gtest.h>
 
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -309,6 +315,125 @@ TEST(SweepVary, ARecordListOf1001AnglesRuns) {
   const auto rows = csv_rows(r.out);
   ASSERT_EQ(rows.size(), 1u + 1001);
   EXPECT_EQ(column(rows, "status"), std::vector<std::string>(1001, "ok"));
+}
+
+// ---- under mpirun (issue 23): failures of every rank counted, signals ----
+
+/// The launcher prefix for two ranks (root allowed in CI containers; two ranks on a
+/// machine with fewer cores), or "" when mpirun is not installed.
+std::string mpirun_prefix() {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) return "";
+  return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 --oversubscribe";
+}
+
+/// The processes whose parent is `parent` (from /proc).
+std::vector<pid_t> children_of(pid_t parent) {
+  std::vector<pid_t> v;
+  if (DIR* d = opendir("/proc")) {
+    while (const dirent* e = readdir(d)) {
+      const pid_t pid = static_cast<pid_t>(std::atoi(e->d_name));
+      if (pid <= 0) continue;
+      const std::string stat = read("/proc/" + std::string(e->d_name) + "/stat");
+      const auto close = stat.rfind(')');  // "pid (comm) state ppid ..."
+      if (close == std::string::npos) continue;
+      std::istringstream rest(stat.substr(close + 1));
+      std::string state;
+      long ppid = 0;
+      if (rest >> state >> ppid && ppid == parent) v.push_back(pid);
+    }
+    closedir(d);
+  }
+  return v;
+}
+
+/// True when one of the ranks under `launcher` runs rank 0's case thread (named
+/// "ringvib-cases", started once MPI has started on every rank: compare/sweep_mpi.hpp).
+bool cases_running(pid_t launcher) {
+  for (const pid_t rank : children_of(launcher)) {
+    const std::string tasks = "/proc/" + std::to_string(rank) + "/task";
+    if (DIR* d = opendir(tasks.c_str())) {
+      bool found = false;
+      while (const dirent* e = readdir(d)) found |= read(tasks + "/" + e->d_name + "/comm") == "ringvib-cases\n";
+      closedir(d);
+      if (found) return true;
+    }
+  }
+  return false;
+}
+
+TEST(SweepMpi, EveryFailedCaseIsCountedWhicheverRankRanIt) {
+  const std::string mpirun = mpirun_prefix();
+  if (mpirun.empty()) GTEST_SKIP() << "mpirun is not installed";
+  // 5e5 N and more are far past the load at which the ring touches itself (P R^2 / EI ~ 7.5):
+  // every case fails. Eight cases of ~ 0.05 s each: both ranks get some.
+  const auto r = ringvib("sweep " + source("scenes/paper1990-static.toml") +
+                             " --vary 'static.force=[[-5e5, 0.0], [-6e5, 0.0], [-7e5, 0.0], [-8e5, 0.0], [-9e5, 0.0], "
+                             "[-1e6, 0.0], [-2e6, 0.0], [-3e6, 0.0]]'",
+                         mpirun);
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("8 cases, 8 run, 0 resumed, 8 failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("every case of the sweep failed"), std::string::npos) << r.err;
+}
+
+// A signal to the ranks ends mpirun with 128 + signal (Open MPI reports the first rank
+// that died of a signal that way); a signal to mpirun itself ends it with 1, Open MPI's
+// own abort code (compare/sweep_mpi.cpp). Either way nothing is published and the
+// folder the run made is removed.
+TEST(SweepMpi, ASignalPublishesNothingAndEndsWith128PlusSignalWhenItReachesTheRanks) {
+  const std::string mpirun = mpirun_prefix();
+  if (mpirun.empty()) GTEST_SKIP() << "mpirun is not installed";
+  const auto probe = ringvib("sweep " + source("scenes/paper1990-static.toml") + " --vary 'multibody.n=[40]'", mpirun);
+  if (probe.err.find("on 2 MPI ranks") == std::string::npos) GTEST_SKIP() << "ringvib is built without MPI";
+  const std::string base = ringtest::temp_dir();
+  // 200 cases of dense chains (n = 400 ... 1196): minutes of work, stopped long before.
+  std::string list;
+  for (int i = 0; i < 200; ++i) list += (i ? ", " : "") + std::to_string(400 + 4 * i);
+  int run = 0;
+  for (const int sig : {SIGTERM, SIGINT}) {
+    for (const bool to_mpirun : {false, true}) {
+      const std::string out = base + "/run" + std::to_string(run++);
+      const pid_t pid = fork();
+      if (pid == 0) {
+        const int null = open("/dev/null", O_RDWR);
+        dup2(null, STDIN_FILENO);
+        dup2(null, STDOUT_FILENO);
+        dup2(null, STDERR_FILENO);
+        setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+        setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+        const std::string scene = source("scenes/paper1990-static.toml"), vary = "multibody.n=[" + list + "]";
+        execlp("mpirun", "mpirun", "-np", "2", "--oversubscribe", ringtest::ringvib_path().c_str(), "sweep",
+               scene.c_str(), "--vary", vary.c_str(), "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
+        _exit(127);
+      }
+      // Wait until the cases run (an event, not a time: the limit only stops a hang).
+      // Not earlier: ranks that die while they start MPI can leave mpirun 4.1.4 hanging
+      // in its own shutdown (compare/sweep_mpi.cpp).
+      bool running = false;
+      const auto start = std::chrono::steady_clock::now();
+      while (!running && std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
+        running = cases_running(pid);
+        int st = 0;
+        if (!running && waitpid(pid, &st, WNOHANG) == pid) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+      ASSERT_TRUE(running) << "the sweep never started its cases";
+      if (to_mpirun) {
+        kill(pid, sig);
+      } else {
+        for (const pid_t rank : children_of(pid)) kill(rank, sig);
+      }
+      int status = 0;
+      waitpid(pid, &status, 0);
+      ASSERT_TRUE(WIFEXITED(status)) << status;
+      if (to_mpirun)
+        EXPECT_TRUE(WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 128 + sig)
+            << "signal " << sig << " to mpirun: exit " << WEXITSTATUS(status);
+      else
+        EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << "signal " << sig << " to the ranks";
+      EXPECT_FALSE(exists(out)) << "signal " << sig << (to_mpirun ? " to mpirun" : " to the ranks")
+                                << ": the folder the run made is left";
+    }
+  }
 }
 
 }  // namespace
