@@ -219,6 +219,13 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
   s.ring.section = read_section(r, *rt);
+  // Sizes that are positive but whose area or second moment under- or overflows a double
+  // (a diameter of 1e-300 m gives A = 0) leave nothing to compute with.
+  const double area = s.ring.section.area(), inertia = s.ring.section.inertia();
+  if (!std::isnormal(area) || !std::isnormal(inertia))
+    r.fail("ring.section", rt->get("section"),
+           "area " + fmt_num(area) + " m^2 and inertia " + fmt_num(inertia) +
+               " m^4 are not positive normal doubles: the section's sizes under- or overflow");
   const double depth_ratio = s.ring.section.depth() / s.ring.radius;
   if (depth_ratio >= 1.0)
     r.fail("ring.section", rt->get("section"),

@@ -91,6 +91,11 @@ TEST(SceneReject, NegativeRadius) { expect_rejected(replace(kPaper, "radius = 10
 TEST(SceneReject, YoungsModulusAsString) { expect_rejected(replace(kPaper, "E = 2.1e11", "E = \"steel\""), "ring.E", "expected a number"); }
 TEST(SceneReject, ZeroDensity) { expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 0"), "ring.rho"); }
 TEST(SceneReject, ZeroDiameter) { expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 0.0"), "ring.section.diameter"); }
+TEST(SceneReject, SectionWhoseAreaUnderflows) {
+  // pi/4 (1e-300)^2 is below the smallest double: found by SweepFuzz.
+  expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 1e-300"), "ring.section", "under- or overflow");
+  expect_rejected(kPaper, "ring.section", "under- or overflow", {"ring.section={shape=\"general\", area=1e-310, inertia=1.0}"});
+}
 TEST(SceneReject, SectionAsThickAsTheRing) {
   expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 12.0"), "ring.section", "not small against the radius");
 }
