@@ -182,10 +182,8 @@ void check_sweep_cost(const std::string& text, const CommonArgs& a,
                                "GiB, or --force)");
 }
 
-/// The cases already complete in `file` (a sweep.csv of the same keys), by their values:
-/// a case is kept only if every row it would have is there (rows_of its scene) and ok. A
-/// last line cut short (a crash, a full disk) drops its case; any other malformed line or
-/// value is an input error naming the file and the line.
+}  // namespace
+
 std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
     const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
     const std::function<double(std::size_t)>& expected_rows) {
@@ -255,6 +253,8 @@ std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
   }
   return kept;
 }
+
+namespace {
 
 /// The solvers whose modes the scene asks for, in table order.
 std::vector<ring::ModalResult> modal_columns(const ring::Scene& s) {

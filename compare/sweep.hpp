@@ -9,6 +9,8 @@
 //       --vary 'ring.section=[{diameter=0.01}, {diameter=0.1}]' --out out/sweep
 #pragma once
 
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,15 @@ struct SweepRow {
 /// ring.section.diameter), lists of different lengths with zip, or more than INT_MAX cases.
 std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
                                                   std::vector<std::string>& keys);
+
+/// The cases already complete in `file` (a sweep.csv of the same keys; `--resume`), by
+/// their values: a case of `cases` is kept only if every row it would have is there
+/// (`expected_rows(i)` for case i) and ok. A missing file keeps nothing; a last line cut
+/// short (a crash, a full disk) drops its case; any other malformed line or value is a
+/// ring::InputError naming the file and the line.
+std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
+    const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
+    const std::function<double(std::size_t)>& expected_rows);
 
 /// Runs one case: the scene `text` (read once by the sweep) with a.set and the case's
 /// overrides, every analysis it lists, as rows. A case that fails is one row with its
