@@ -234,6 +234,8 @@ std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
     r.value = number_at(x[k + 4], i, "value");
     r.error_pct = number_at(x[k + 5], i, "error_pct");
     const double unknowns = number_at(x[k + 6], i, "unknowns");
+    if (std::isfinite(unknowns) && !(std::abs(unknowns) < 9.2e18))  // the cast below needs it
+      throw bad(i, "the unknowns '" + x[k + 6].substr(0, 40) + "' is out of range");
     r.unknowns = std::isfinite(unknowns) ? static_cast<long long>(unknowns) : 0;
     const double seconds = number_at(x[k + 7], i, "seconds");
     r.seconds = std::isfinite(seconds) ? seconds : 0.0;

@@ -206,6 +206,23 @@ TEST(SweepFuzz, RandomVaryListsGiveCasesOrAnInputError) {
   EXPECT_GT(rejected, 300);
 }
 
+// Found by fuzz_sweep: an unknowns value beyond long long was cast (undefined behaviour).
+TEST(SweepFuzz, ResumeUnknownsBeyondACountAreAnInputError) {
+  const std::string file = std::string("/tmp/ringvib-fuzz-") + std::to_string(getpid()) + "-unknowns.csv";
+  {
+    std::ofstream f(file);
+    f << "case,multibody.n,solver,analysis,quantity,value,error_pct,unknowns,seconds,status,message\n"
+         "0,40,multibody,static,u at 0.000 deg,0.5,,5.5e46,0.01,ok,\n";
+  }
+  try {
+    cmp::done_cases(file, {"multibody.n"}, {{"40"}}, [](std::size_t) { return 1.0; });
+    ADD_FAILURE() << "accepted unknowns = 5.5e46";
+  } catch (const ring::InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(file + ": line 2: ", 0), 0u) << e.what();
+  }
+  std::remove(file.c_str());
+}
+
 TEST(SweepFuzz, MutatedResumeFilesGiveKeptCasesOrAnInputError) {
   // A sweep.csv of 6 cases x 4 rows, as a sweep writes it; then mutated lines and bytes.
   const std::vector<std::string> keys = {"multibody.n", "static.force"};
