@@ -288,8 +288,9 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
     curves[label].name = label;
   }
   for (const auto& [key, xy] : per_case) {
+    const auto& which = key;  // a lambda may not capture a structured binding before C++20 (clang)
     const auto& r = *std::find_if(rows.begin(), rows.end(), [&](const SweepRow& x) {
-      return x.index == key.first && x.solver == key.second;
+      return x.index == which.first && x.solver == which.second;
     });
     std::string label = r.solver;
     for (std::size_t i = 1; i < keys.size(); ++i) label += ", " + keys[i] + " = " + r.values[i];
