@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <set>
@@ -31,42 +32,25 @@
 namespace cmp {
 namespace {
 
-/// Splits the inside of a TOML array at its top-level commas (quotes, brackets and
-/// braces nest).
-std::vector<std::string> split_array(const std::string& text, const std::string& option) {
-  std::string t = text;
-  auto trim = [](std::string s) {
-    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+/// A --vary key as the override will use it: dotted parts without the spaces around
+/// them ("ring. section" is ring.section), none empty.
+std::string vary_key(const std::string& text) {
+  auto trim = [](const std::string& x) {
+    const auto p = x.find_first_not_of(" \t"), q = x.find_last_not_of(" \t");
+    return p == std::string::npos ? std::string() : x.substr(p, q - p + 1);
   };
-  t = trim(t);
-  if (t.size() < 2 || t.front() != '[' || t.back() != ']')
-    throw ring::InputError("", "--vary " + option, "expected KEY=[v1, v2, ...] (a TOML array of values)");
-  std::vector<std::string> items;
-  std::string cur;
-  int depth = 0;
-  char quote = 0;
-  for (std::size_t i = 1; i + 1 < t.size(); ++i) {
-    const char c = t[i];
-    if (quote) {
-      if (c == quote) quote = 0;
-    } else if (c == '"' || c == '\'') {
-      quote = c;
-    } else if (c == '[' || c == '{') {
-      ++depth;
-    } else if (c == ']' || c == '}') {
-      --depth;
-    } else if (c == ',' && depth == 0) {
-      items.push_back(trim(cur));
-      cur.clear();
-      continue;
-    }
-    cur += c;
+  std::string key;
+  std::size_t start = 0;
+  for (;;) {
+    const auto dot = text.find('.', start);
+    const std::string part = trim(text.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (part.empty())
+      throw ring::InputError("", "--vary " + text.substr(0, 80),
+                             "expected KEY=[v1, v2, ...] with KEY a scene key such as multibody.n");
+    key += (key.empty() ? "" : ".") + part;
+    if (dot == std::string::npos) return key;
+    start = dot + 1;
   }
-  if (!trim(cur).empty()) items.push_back(trim(cur));
-  if (items.empty() || std::any_of(items.begin(), items.end(), [](const std::string& s) { return s.empty(); }))
-    throw ring::InputError("", "--vary " + option, "expected a non-empty list of values, none of them empty");
-  return items;
 }
 
 std::string csv_field(const std::string& s) {
@@ -197,10 +181,8 @@ void check_sweep_cost(const std::string& text, const CommonArgs& a,
                                "GiB, or --force)");
 }
 
-/// The cases already complete in `file` (a sweep.csv of the same keys), by their values:
-/// a case is kept only if every row it would have is there (rows_of its scene) and ok. A
-/// last line cut short (a crash, a full disk) drops its case; any other malformed line or
-/// value is an input error naming the file and the line.
+}  // namespace
+
 std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
     const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
     const std::function<double(std::size_t)>& expected_rows) {
@@ -251,6 +233,8 @@ std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
     r.value = number_at(x[k + 4], i, "value");
     r.error_pct = number_at(x[k + 5], i, "error_pct");
     const double unknowns = number_at(x[k + 6], i, "unknowns");
+    if (std::isfinite(unknowns) && !(std::abs(unknowns) < 9.2e18))  // the cast below needs it
+      throw bad(i, "the unknowns '" + x[k + 6].substr(0, 40) + "' is out of range");
     r.unknowns = std::isfinite(unknowns) ? static_cast<long long>(unknowns) : 0;
     const double seconds = number_at(x[k + 7], i, "seconds");
     r.seconds = std::isfinite(seconds) ? seconds : 0.0;
@@ -270,6 +254,8 @@ std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
   }
   return kept;
 }
+
+namespace {
 
 bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, const std::vector<SweepRow>& rows) {
   // Against the first varied key (when its values are numbers): per solver and per
@@ -294,8 +280,9 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
     curves[label].name = label;
   }
   for (const auto& [key, xy] : per_case) {
+    const auto& which = key;  // a lambda may not capture a structured binding before C++20 (clang)
     const auto& r = *std::find_if(rows.begin(), rows.end(), [&](const SweepRow& x) {
-      return x.index == key.first && x.solver == key.second;
+      return x.index == which.first && x.solver == which.second;
     });
     std::string label = r.solver;
     for (std::size_t i = 1; i < keys.size(); ++i) label += ", " + keys[i] + " = " + r.values[i];
@@ -318,15 +305,28 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
 }  // namespace
 
 std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
-                                                  std::vector<std::string>& keys) {
+                                                  std::vector<std::string>& keys, double max_cases) {
   if (vary.empty()) throw ring::InputError("", "--vary", "expected at least one --vary KEY=[v1, v2, ...]");
   std::vector<std::vector<std::string>> lists;
   keys.clear();
   for (const auto& v : vary) {
     const auto eq = v.find('=');
-    if (eq == std::string::npos || eq == 0) throw ring::InputError("", "--vary " + v, "expected KEY=[v1, v2, ...]");
-    keys.push_back(v.substr(0, eq));
-    lists.push_back(split_array(v.substr(eq + 1), keys.back()));
+    if (eq == std::string::npos)
+      throw ring::InputError("", "--vary " + v.substr(0, 80), "expected KEY=[v1, v2, ...]");
+    const std::string key = vary_key(v.substr(0, eq));
+    // One list per key, and no key inside another: a case would set the value twice,
+    // and the table's columns would not say which one ran.
+    for (const auto& k : keys) {
+      if (k == key)
+        throw ring::InputError("", "--vary " + key, "given twice; put all its values in one list");
+      const bool inside = key.rfind(k + ".", 0) == 0, outside = k.rfind(key + ".", 0) == 0;
+      if (inside || outside)
+        throw ring::InputError("", "--vary " + key,
+                               "overlaps --vary " + k + " (" + (inside ? key + " is part of " + k : k + " is part of " + key) +
+                                   "), so a case would set it twice; vary one of them (a list of inline tables can vary several keys of a table together)");
+    }
+    keys.push_back(key);
+    lists.push_back(ring::toml_array_items(v.substr(eq + 1), "--vary " + key));
   }
   std::vector<std::vector<std::string>> cases;
   if (zip) {
@@ -341,6 +341,16 @@ std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>
     }
     return cases;
   }
+  // Counted before the product is built: case numbers are ints (SweepRow::index).
+  double count = 1.0;
+  for (const auto& l : lists) count *= double(l.size());
+  if (count > double(std::numeric_limits<int>::max()))
+    throw ring::InputError("", "--vary", sig4(count) + " cases (the product of the lists); a sweep numbers at most " +
+                                             std::to_string(std::numeric_limits<int>::max()) + " (fewer values, or --zip)");
+  if (count > max_cases)
+    throw ring::InputError("", "--vary", sig4(count) + " cases (the product of the lists): their list and table alone "
+                                             "would exceed the memory budget (fewer values, --zip, --max-memory "
+                                             "GiB, or --force)");
   cases.push_back({});
   for (const auto& l : lists) {  // the first key varies slowest
     std::vector<std::vector<std::string>> next;
@@ -464,7 +474,11 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
   // case's scene (every solver's checks and the cost guard), the outputs. The scene file
   // is read once; every case is that text with its overrides.
   std::vector<std::string> keys;
-  const auto cases = sweep_cases(args.vary, args.zip, keys);
+  // A case holds at least a row of the table (~ 1 KB with its values and its CSV and
+  // JSON text, check_sweep_cost): more cases than the budget holds are refused before
+  // the list is built.
+  const double max_cases = a.force ? std::numeric_limits<int>::max() : a.max_memory_gib * double(1ull << 30) / 1e3;
+  const auto cases = sweep_cases(args.vary, args.zip, keys, max_cases);
   const std::string text = ring::read_scene_text(a.scene);
   std::vector<std::vector<std::string>> overrides;
   for (const auto& c : cases) {

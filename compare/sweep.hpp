@@ -9,6 +9,9 @@
 //       --vary 'ring.section=[{diameter=0.01}, {diameter=0.1}]' --out out/sweep
 #pragma once
 
+#include <functional>
+#include <map>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,7 +27,8 @@ struct SweepArgs {
   int jobs = 0;                   ///< threads (0: all cores; under MPI: per rank, default 1)
 };
 
-/// One row of the sweep's table. `values` are the varied keys' values, as given.
+/// One row of the sweep's table. `values` are the varied keys' values as TOML text
+/// (sweep_cases).
 struct SweepRow {
   int index = 0;                       ///< case number, 0-based, in product (or zip) order
   std::vector<std::string> values;
@@ -39,10 +43,26 @@ struct SweepRow {
   std::string message;
 };
 
-/// The cases of the --vary lists: each a list of "key=value" overrides. Throws
-/// ring::InputError for a malformed --vary, or lists of different lengths with zip.
+/// The cases of the --vary lists: each case the values of `keys` in order. A --vary is
+/// KEY=[v1, v2, ...] with the list in TOML (it may span lines); each value comes back as
+/// one line of TOML text that reads back to the same value (ring::toml_array_items: the
+/// form the table shows and the case's override uses). Throws ring::InputError for a
+/// malformed --vary, a key given twice or inside another (ring.section and
+/// ring.section.diameter), lists of different lengths with zip, or more than INT_MAX or
+/// `max_cases` cases (counted before the list is built: the cost guard's bound on a
+/// sweep's cases, check_sweep_cost says the rest).
 std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
-                                                  std::vector<std::string>& keys);
+                                                  std::vector<std::string>& keys,
+                                                  double max_cases = std::numeric_limits<int>::max());
+
+/// The cases already complete in `file` (a sweep.csv of the same keys; `--resume`), by
+/// their values: a case of `cases` is kept only if every row it would have is there
+/// (`expected_rows(i)` for case i) and ok. A missing file keeps nothing; a last line cut
+/// short (a crash, a full disk) drops its case; any other malformed line or value is a
+/// ring::InputError naming the file and the line.
+std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
+    const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
+    const std::function<double(std::size_t)>& expected_rows);
 
 /// Runs one case: the scene `text` (read once by the sweep) with a.set and the case's
 /// overrides, every analysis it lists, as rows. A case that fails is one row with its

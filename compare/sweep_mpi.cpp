@@ -1,6 +1,11 @@
 #include "compare/sweep_mpi.hpp"
 
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <mutex>
 #include <thread>
@@ -30,6 +35,53 @@ bool built() { return true; }
 namespace {
 constexpr int kRequest = 1, kAssign = 2;
 
+// Signals under mpirun (measured with Open MPI 4.1.4, Debian 12; README "ringvib sweep").
+// The run's files are rank 0's alone: it stages them and, on SIGINT, SIGTERM or SIGHUP,
+// its handler (install_signal_cleanup) removes the stage and the folders the run made,
+// then dies of the signal.
+// - A signal to mpirun itself (Ctrl-C in a terminal reaches only mpirun: each rank runs in
+//   a process group of its own): mpirun sends every rank SIGCONT, after
+//   odls_base_sigkill_timeout (1 s) SIGTERM, after 1 s more SIGKILL, and exits 1 whatever
+//   the ranks do: its abort path sets its default error code first and stops waiting for
+//   the ranks' statuses. No program under mpirun can change that code.
+// - A signal to the ranks (kill, pkill, a batch system signalling its tasks): mpirun exits
+//   128 + signal, the code of the first rank that died ("so that prog and orterun prog
+//   yield the same exit code", orte/mca/odls/base).
+// When a worker rank died of mpirun's SIGTERM at once, rank 0 was killed in the middle of
+// its cleanup (the output folder left behind, empty) in 3 of 6 shell runs and in 5 of 5
+// runs of SweepMpi.ASignalPublishesNothing...; with the workers outliving rank 0, in none
+// of 12 and none of 10. So a worker defers these signals by
+// kWorkerGraceSeconds: under mpirun, the SIGKILL 1 s after SIGTERM ends it first; a signal
+// sent to a worker directly still ends it, as that signal, within the grace time.
+// A worker defers only once MPI has started (this function); a signal that reaches the
+// ranks while they start MPI ends them at once, and then mpirun 4.1.4 sometimes hangs in
+// PMIx_server_finalize after both ranks are gone (6 of about 50 tries that signalled the
+// ranks right after rank 0 opened its outputs; rank 0's cleanup had run; kill mpirun).
+constexpr unsigned kWorkerGraceSeconds = 2;
+volatile std::sig_atomic_t g_deferred = 0;
+
+void worker_signal(int sig) {
+  if (g_deferred) return;
+  g_deferred = sig;
+  alarm(kWorkerGraceSeconds);
+}
+
+void worker_alarm(int) {
+  const int sig = g_deferred;
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
+void defer_signals_on_worker() {
+  struct sigaction sa {};
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;
+  sa.sa_handler = worker_signal;
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaction(s, &sa, nullptr);
+  sa.sa_handler = worker_alarm;
+  sigaction(SIGALRM, &sa, nullptr);
+}
+
 void send_text(const std::string& s, int to, int tag) {
   MPI_Send(s.data(), static_cast<int>(s.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
 }
@@ -51,6 +103,7 @@ bool distribute(int argc, char** argv, int n, const std::function<std::string(in
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   if (rank != 0) {
+    defer_signals_on_worker();
     // Request: "<index>\n<result>" for the last case run, or "-1\n" at first.
     std::string message = "-1\n";
     for (;;) {
@@ -72,6 +125,8 @@ bool distribute(int argc, char** argv, int n, const std::function<std::string(in
   };
   // Rank 0's own worker (no MPI calls: MPI_THREAD_FUNNELED).
   std::thread local([&] {
+    // Named, so that a user (top -H) or a test sees that the cases run.
+    pthread_setname_np(pthread_self(), "ringvib-cases");
     for (int i; (i = take()) >= 0;) {
       std::string r = run(i);
       std::lock_guard<std::mutex> lock(m);

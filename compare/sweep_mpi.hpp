@@ -23,7 +23,10 @@ bool built();
 
 /// Runs `n` cases over the ranks; `run(i)` returns case i's result as text. On rank 0
 /// returns true with results[i] for every case; on the other ranks returns false when
-/// the work is done. Call only when built() and launched_size() > 1.
+/// the work is done. Call only when built() and launched_size() > 1. Once MPI has
+/// started, rank 0 runs cases on a thread named "ringvib-cases", and the other ranks
+/// defer SIGINT, SIGTERM and SIGHUP by 2 s, so that rank 0 (which owns the run's files)
+/// always dies first and cleans up; sweep_mpi.cpp says what mpirun does with signals.
 bool distribute(int argc, char** argv, int n, const std::function<std::string(int)>& run,
                 std::vector<std::string>& results);
 

@@ -3,7 +3,10 @@
 #include "ring/scene.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -216,6 +219,13 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
   s.ring.section = read_section(r, *rt);
+  // Sizes that are positive but whose area or second moment under- or overflows a double
+  // (a diameter of 1e-300 m gives A = 0) leave nothing to compute with.
+  const double area = s.ring.section.area(), inertia = s.ring.section.inertia();
+  if (!std::isnormal(area) || !std::isnormal(inertia))
+    r.fail("ring.section", rt->get("section"),
+           "area " + fmt_num(area) + " m^2 and inertia " + fmt_num(inertia) +
+               " m^4 are not positive normal doubles: the section's sizes under- or overflow");
   const double depth_ratio = s.ring.section.depth() / s.ring.radius;
   if (depth_ratio >= 1.0)
     r.fail("ring.section", rt->get("section"),
@@ -393,23 +403,134 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   return s;
 }
 
-/// The TOML parser recurses once per dotted-key part and per nested table or array, and
-/// overflows the stack somewhere past 20,000 levels: a line that nests or dots more than
-/// kMaxNesting times is refused before parsing (no scene comes near it).
+}  // namespace
+
+// The TOML parser (and the printing and freeing of what it built) recurses once per level
+// of nesting, and overflows the stack somewhere past 20,000 levels; toml++ itself stops
+// nested arrays and inline tables at 256 levels, but not tables made by dotted keys. So the
+// text is scanned once, as the parser will read it, and refused where a point lies deeper
+// than kMaxNesting levels: the parts of the current [table] header or of a dotted key, plus
+// the arrays and inline tables open around it (and the dotted keys that opened them). Dots
+// and brackets inside strings and comments, and the dots of numbers, do not nest: a record
+// list of 1001 angles is two levels deep. The scan is linear and keeps no recursion of its
+// own; on malformed text it may be less exact, but only up to where the parser fails too.
 void check_nesting(const std::string& text, const std::string& name) {
-  std::size_t line = 1, count = 0;
-  for (char ch : text) {
-    if (ch == '\n') {
+  struct Frame {
+    char open;          // '[' an array, '{' an inline table
+    std::size_t level;  // the level of its elements (an inline table: of its keys' base)
+  };
+  std::vector<Frame> open;
+  std::size_t line = 1;
+  std::size_t header = 0;  // parts of the current [table] header
+  std::size_t parts = 0;   // parts of the key being read (0: none started)
+  std::size_t here = 0;    // level of the value being read
+  bool key = true;         // reading a key (else a value)
+  bool in_header = false;
+  auto refuse = [&](const std::string& what) {
+    throw InputError(name, "line " + std::to_string(line),
+                     what + " more than " + std::to_string(kMaxNesting) + " levels deep; a scene does not nest that deep");
+  };
+  auto base = [&]() -> std::size_t { return in_header ? 0 : open.empty() ? header : open.back().level; };
+  // Skips the string that starts at text[i] (a quote); returns the index after it. A
+  // single-line string ends at its closing quote or before a newline (where the parser
+  // fails); a multi-line one ("""...""" or '''...''', up to two more quotes belong to it)
+  // counts the lines it spans.
+  auto skip_string = [&](std::size_t i, bool multi_allowed) {
+    const char q = text[i];
+    const bool multi = multi_allowed && text.compare(i, 3, std::string(3, q)) == 0;
+    std::size_t j = i + (multi ? 3 : 1);
+    while (j < text.size()) {
+      const char c = text[j];
+      if (c == '\\' && q == '"') {
+        if (j + 1 < text.size() && text[j + 1] == '\n') {
+          if (!multi) return j + 1;
+          ++line;
+        }
+        j += 2;
+      } else if (c == '\n') {
+        if (!multi) return j;
+        ++line;
+        ++j;
+      } else if (c == q && (!multi || text.compare(j, 3, std::string(3, q)) == 0)) {
+        j += multi ? 3 : 1;
+        for (int extra = 0; multi && extra < 2 && j < text.size() && text[j] == q; ++extra) ++j;
+        return j;
+      } else {
+        ++j;
+      }
+    }
+    return j;
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
       ++line;
-      count = 0;
-    } else if (ch == '.' || ch == '[' || ch == '{') {
-      if (++count > kMaxNesting)
-        throw InputError(name, "line " + std::to_string(line),
-                         "more than " + std::to_string(kMaxNesting) +
-                             " dotted-key parts or nested brackets on one line; a scene does not nest that deep");
+      if (open.empty()) {  // a statement ends (inside an array, the value goes on)
+        key = true;
+        in_header = false;
+        parts = 0;
+      }
+      ++i;
+    } else if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+    } else if (c == '"' || c == '\'') {
+      if (key) parts = std::max<std::size_t>(parts, 1);
+      i = skip_string(i, !key);
+    } else if (key) {
+      if (c == '[' && open.empty() && !in_header && parts == 0) {  // [table] or [[array of tables]]
+        in_header = true;
+        i += text.compare(i, 2, "[[") == 0 ? 2 : 1;
+        continue;
+      }
+      if (c == ']' && in_header) {
+        header = parts;
+        in_header = false;
+        parts = 0;
+        i += text.compare(i, 2, "]]") == 0 ? 2 : 1;
+        continue;
+      }
+      if (c == '}' && !open.empty() && open.back().open == '{') {  // {} or a trailing comma
+        open.pop_back();
+        key = false;
+        here = open.empty() ? here : open.back().level;
+      } else if (c == '=') {
+        here = base() + std::max<std::size_t>(parts, 1);
+        key = false;
+        parts = 0;
+      } else if (c == '.') {
+        parts = std::max<std::size_t>(parts, 1) + 1;
+      } else if (c == ',' && !open.empty() && open.back().open == '{') {
+        parts = 0;
+      } else {
+        parts = std::max<std::size_t>(parts, 1);
+      }
+      if (base() + parts > kMaxNesting) refuse(in_header ? "a [table] header" : "a dotted key");
+      ++i;
+    } else {  // a value: only arrays and inline tables nest
+      if (c == '[' || c == '{') {
+        open.push_back({c, here + 1});
+        if (open.back().level > kMaxNesting) refuse("an array or inline table");
+        if (c == '{') {
+          key = true;
+          parts = 0;
+        } else {
+          here = open.back().level;
+        }
+      } else if ((c == ']' || c == '}') && !open.empty()) {
+        open.pop_back();
+        if (!open.empty()) here = open.back().level;
+      } else if (c == ',' && !open.empty() && open.back().open == '{') {
+        key = true;
+        parts = 0;
+      }
+      ++i;
     }
   }
 }
+
+namespace {
 
 /// Applies one "a.b.c=value" override to the parsed document.
 std::string apply_override(toml::table& root, const std::string& spec, const std::string& file) {
@@ -420,6 +541,12 @@ std::string apply_override(toml::table& root, const std::string& spec, const std
   toml::table parsed;
   if (value.find_first_of("\n\r") != std::string::npos)
     throw InputError(file, "--set " + path, "the value spans several lines; give one key=value per --set");
+  try {
+    check_nesting("v = " + value, file);
+  } catch (const InputError&) {
+    throw InputError(file, "--set " + path,
+                     "the value nests more than " + std::to_string(kMaxNesting) + " levels deep (dotted keys, arrays, tables)");
+  }
   try {
     parsed = toml::parse("v = " + value);
   } catch (const toml::parse_error&) {
@@ -443,7 +570,160 @@ std::string apply_override(toml::table& root, const std::string& spec, const std
   return path;
 }
 
+/// A TOML string as a basic string ("..." with escapes): one line, whatever it holds.
+void append_quoted(std::string& o, std::string_view s) {
+  o += '"';
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    switch (c) {
+      case '"': o += "\\\""; break;
+      case '\\': o += "\\\\"; break;
+      case '\b': o += "\\b"; break;
+      case '\t': o += "\\t"; break;
+      case '\n': o += "\\n"; break;
+      case '\f': o += "\\f"; break;
+      case '\r': o += "\\r"; break;
+      default:
+        if (c < 0x20 || c == 0x7f) {
+          char u[8];
+          std::snprintf(u, sizeof u, "\\u%04X", static_cast<unsigned>(c));
+          o += u;
+        } else {
+          o += ch;  // UTF-8 as the parser validated it
+        }
+    }
+  }
+  o += '"';
+}
+
+void append_toml(std::string& o, const toml::node& n) {
+  if (const auto* v = n.as_string()) {
+    append_quoted(o, v->get());
+  } else if (const auto* v = n.as_integer()) {
+    o += std::to_string(v->get());
+  } else if (const auto* v = n.as_floating_point()) {
+    const double x = v->get();
+    if (std::isnan(x)) {
+      o += "nan";
+    } else if (std::isinf(x)) {
+      o += x > 0 ? "inf" : "-inf";
+    } else {
+      // The shortest digits that read back to the same double (0.1, 1e-300, 5e-324).
+      char buf[64];
+      const auto r = std::to_chars(buf, buf + sizeof buf, x);
+      const std::string t(buf, r.ptr);
+      o += t;
+      if (t.find_first_of(".e") == std::string::npos) o += ".0";  // stays a float
+    }
+  } else if (const auto* v = n.as_boolean()) {
+    o += v->get() ? "true" : "false";
+  } else if (const auto* v = n.as_array()) {
+    o += '[';
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      if (i) o += ", ";
+      append_toml(o, *v->get(i));
+    }
+    o += ']';
+  } else if (const auto* v = n.as_table()) {
+    o += '{';
+    bool first = true;
+    for (const auto& [k, x] : *v) {
+      o += first ? " " : ", ";
+      first = false;
+      const std::string_view key = k.str();
+      const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+      });
+      if (bare) o += key;
+      else append_quoted(o, key);
+      o += " = ";
+      append_toml(o, x);
+    }
+    o += first ? "}" : " }";
+  } else {  // a date, a time or a date-time: toml++ prints them as TOML does
+    std::ostringstream t;
+    if (const auto* d = n.as_date()) t << *d;
+    else if (const auto* d = n.as_time()) t << *d;
+    else if (const auto* d = n.as_date_time()) t << *d;
+    o += t.str();
+  }
+}
+
+/// The same TOML value (type and value; NaN equals NaN, 0.0 and -0.0 differ).
+bool same_value(const toml::node& a, const toml::node& b) {
+  if (a.type() != b.type()) return false;
+  if (const auto* x = a.as_floating_point()) {
+    const double p = x->get(), q = b.as_floating_point()->get();
+    return (std::isnan(p) && std::isnan(q)) || (p == q && std::signbit(p) == std::signbit(q));
+  }
+  if (const auto* x = a.as_array()) {
+    const auto* y = b.as_array();
+    if (x->size() != y->size()) return false;
+    for (std::size_t i = 0; i < x->size(); ++i)
+      if (!same_value(*x->get(i), *y->get(i))) return false;
+    return true;
+  }
+  if (const auto* x = a.as_table()) {
+    const auto* y = b.as_table();
+    if (x->size() != y->size()) return false;
+    for (const auto& [k, v] : *x) {
+      const toml::node* w = y->get(k.str());
+      if (!w || !same_value(v, *w)) return false;
+    }
+    return true;
+  }
+  if (const auto* x = a.as_string()) return x->get() == b.as_string()->get();
+  if (const auto* x = a.as_integer()) return x->get() == b.as_integer()->get();
+  if (const auto* x = a.as_boolean()) return x->get() == b.as_boolean()->get();
+  if (const auto* x = a.as_date()) return x->get() == b.as_date()->get();
+  if (const auto* x = a.as_time()) return x->get() == b.as_time()->get();
+  if (const auto* x = a.as_date_time()) return x->get() == b.as_date_time()->get();
+  return false;
+}
+
+std::string toml_text(const toml::node& value) {
+  std::string o;
+  append_toml(o, value);
+  return o;
+}
+
 }  // namespace
+
+std::vector<std::string> toml_array_items(const std::string& text, const std::string& where) {
+  const std::string doc = "v = " + text;
+  try {
+    check_nesting(doc, "");
+  } catch (const InputError&) {
+    throw InputError("", where, "the values nest more than " + std::to_string(kMaxNesting) + " levels deep");
+  }
+  toml::table parsed;
+  try {
+    parsed = toml::parse(doc);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    const auto column = b.line == 1 && b.column > 4 ? b.column - 4 : b.column;  // without "v = "
+    throw InputError("", where,
+                     "expected [v1, v2, ...], a TOML array (strings in quotes): " + std::string(e.description()) +
+                         " (line " + std::to_string(b.line) + ", column " + std::to_string(column) + " of the list)");
+  }
+  const toml::array* list = parsed.size() == 1 ? parsed.get_as<toml::array>("v") : nullptr;
+  if (!list) throw InputError("", where, "expected [v1, v2, ...], one TOML array and nothing after it");
+  if (list->empty()) throw InputError("", where, "expected a non-empty list of values");
+  std::vector<std::string> items;
+  for (const auto& element : *list) {
+    std::string item = toml_text(element);
+    // Every item is read back as an override will read it: the same value, or a refusal.
+    bool same = false;
+    try {
+      const toml::table back = toml::parse("v = " + item);
+      same = back.size() == 1 && back.get("v") && same_value(element, *back.get("v"));
+    } catch (const toml::parse_error&) {
+    }
+    if (!same) throw InputError("", where, "the value " + item.substr(0, 80) + " does not read back as itself from TOML text");
+    items.push_back(std::move(item));
+  }
+  return items;
+}
 
 bool Scene::column(const std::string& solver) const {
   auto in = [&](const std::vector<std::string>& v) { return std::find(v.begin(), v.end(), solver) != v.end(); };

@@ -99,9 +99,15 @@ struct Scene {
   bool runs_nonlinear(const std::string& solver) const;
 };
 
-/// Largest scene file read (bytes), and the deepest nesting or dotting on one line.
+/// Largest scene file read (bytes), and the deepest nesting of tables and arrays (dotted-key
+/// parts, [table] header parts, open arrays and inline tables) at any point of it.
 constexpr std::size_t kMaxSceneBytes = 1 << 20;
 constexpr std::size_t kMaxNesting = 1000;
+
+/// Refuses TOML text nested deeper than kMaxNesting at some point (InputError naming `name`
+/// and the line), before a parser recurses into it. Dots and brackets in strings, comments
+/// and numbers do not count. O(size of text).
+void check_nesting(const std::string& text, const std::string& name);
 
 /// Reads and validates a scene against the known solvers. `overrides` are
 /// "section.key=value" with the value in TOML syntax (a bare word is taken as a string).
@@ -116,6 +122,16 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 /// read once), for a caller that parses it several times (a sweep's cases). Throws
 /// InputError naming the path.
 std::string read_scene_text(const std::string& path);
+
+/// The elements of a TOML array given as text (a `--vary` list: "[v1, v2, ...]", which may
+/// span lines and hold comments), each as one line of TOML text that an override
+/// "key=<item>" reads back to exactly the same value: integers in decimal, floats in the
+/// shortest form that reads back to the same double (0.1, 1e-300; 1e4 becomes 10000.0),
+/// strings as basic strings with escapes ("a\"b"), booleans, arrays and inline tables
+/// inline (`{ diameter = 0.01 }`, keys in order). Every item is read back and compared.
+/// Throws InputError naming `where` for text that is not one non-empty TOML array, or
+/// nests deeper than kMaxNesting.
+std::vector<std::string> toml_array_items(const std::string& text, const std::string& where);
 
 /// Same as load_scene, from TOML text; `name` is used in messages in place of a file name.
 Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,

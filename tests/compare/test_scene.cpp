@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "ring/errors.hpp"
 #include "compare/registry.hpp"
@@ -90,6 +91,11 @@ TEST(SceneReject, NegativeRadius) { expect_rejected(replace(kPaper, "radius = 10
 TEST(SceneReject, YoungsModulusAsString) { expect_rejected(replace(kPaper, "E = 2.1e11", "E = \"steel\""), "ring.E", "expected a number"); }
 TEST(SceneReject, ZeroDensity) { expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 0"), "ring.rho"); }
 TEST(SceneReject, ZeroDiameter) { expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 0.0"), "ring.section.diameter"); }
+TEST(SceneReject, SectionWhoseAreaUnderflows) {
+  // pi/4 (1e-300)^2 is below the smallest double: found by SweepFuzz.
+  expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 1e-300"), "ring.section", "under- or overflow");
+  expect_rejected(kPaper, "ring.section", "under- or overflow", {"ring.section={shape=\"general\", area=1e-310, inertia=1.0}"});
+}
 TEST(SceneReject, SectionAsThickAsTheRing) {
   expect_rejected(replace(kPaper, "diameter = 0.12", "diameter = 12.0"), "ring.section", "not small against the radius");
 }
@@ -184,5 +190,133 @@ TEST(SceneSet, ResolvedSceneRoundTrips) {
 TEST(SceneSet, OverrideIsValidatedAndNamed) { expect_rejected(kPaper, "multibody.n (from --set)", ">= 4", {"multibody.n=2"}); }
 TEST(SceneSet, OverrideWithoutEquals) { expect_rejected(kPaper, "--set multibody.n", "section.key=value", {"multibody.n"}); }
 TEST(SceneSet, OverrideUnknownKey) { expect_rejected(kPaper, "multibody.rotary", "did you mean 'rotary_inertia'", {"multibody.rotary=true"}); }
+
+// ---- the nesting guard (ring::check_nesting): real nesting only ----
+// The oracle is the TOML grammar (toml.io, v1.0.0): a dotted key's parts, a [table]
+// header's parts and open arrays and inline tables nest; dots and brackets in strings,
+// comments and numbers do not.
+
+std::string repeat(const std::string& s, int n) {
+  std::string o;
+  for (int i = 0; i < n; ++i) o += s;
+  return o;
+}
+
+/// "a.a. ... .a" with `parts` parts.
+std::string dotted(int parts) { return "a" + repeat(".a", parts - 1); }
+
+void expect_too_deep(const std::string& text, const std::string& line) {
+  try {
+    ring::check_nesting(text, "deep.toml");
+    ADD_FAILURE() << "accepted nesting past " << ring::kMaxNesting << " levels";
+  } catch (const ring::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("deep.toml: " + line + ": ", 0), 0u) << m;
+    EXPECT_NE(m.find("levels deep"), std::string::npos) << m;
+  }
+}
+
+TEST(SceneNesting, RecordListOf1001AnglesIsRead) {
+  // 1001 angles on the n = 40 chain's nodes (every 9 degrees from the pin): 1001 dots on a line.
+  std::string record;
+  for (int i = 0; i < 1001; ++i) record += (i ? ", " : "") + std::to_string(9 * (i % 40)) + ".0";
+  const ring::Scene s =
+      cmp::parse_scene(kRollered + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\nrecord = [" + record + "]\n", "p.toml");
+  ASSERT_TRUE(s.statics);
+  EXPECT_EQ(s.statics->record.size(), 1001u);
+}
+
+TEST(SceneNesting, DotsAndBracketsInCommentsAndStringsDoNotNest) {
+  const std::string ruler = "# " + repeat(".", 2000) + repeat("[{", 1500) + "\n";
+  const std::string title = repeat(".[{", 1200);
+  const std::string text = ruler + replace(kPaper, "title = \"t\"", "title = \"" + title + "\\\"[[[\"") +
+                           "# a comment with \" and ''' inside " + repeat("[", 1200) + "\n";
+  const ring::Scene s = cmp::parse_scene(text, "p.toml");
+  EXPECT_EQ(s.title, title + "\"[[[");
+  // Multi-line strings (with quotes and escaped quotes inside) and literal strings.
+  for (const std::string& v : {"\"\"\"" + repeat("[.", 1500) + "\\\"\"\"\n" + repeat("{", 1500) + "\"\"\"\"\"",
+                              "'''" + repeat("[", 1500) + "\n''" + repeat(".", 1500) + "'''''",
+                              "'" + repeat("\\[", 1500) + "'"})
+    EXPECT_NO_THROW(ring::check_nesting("x = " + v + "\n", "p.toml")) << v;
+  // A quoted key's dots are part of one name.
+  EXPECT_NO_THROW(ring::check_nesting("\"" + dotted(2000) + "\" = 1\n", "p.toml"));
+}
+
+TEST(SceneNesting, DottedKeysAndHeadersUpToTheLimit) {
+  EXPECT_NO_THROW(ring::check_nesting(dotted(1000) + " = 1\n", "p.toml"));
+  EXPECT_NO_THROW(ring::check_nesting("[" + dotted(1000) + "]\n", "p.toml"));
+  expect_too_deep(dotted(1001) + " = 1\n", "line 1");
+  expect_too_deep("x = 1\n[" + dotted(1001) + "]\n", "line 2");
+  expect_too_deep("[[" + dotted(50000) + "]]\n", "line 1");
+  // A key under a header nests below it.
+  expect_too_deep("[" + dotted(600) + "]\n" + dotted(401) + " = 1\n", "line 2");
+  EXPECT_NO_THROW(ring::check_nesting("[" + dotted(600) + "]\n" + dotted(400) + " = 1\n", "p.toml"));
+}
+
+TEST(SceneNesting, ArraysAndInlineTablesAddUpAcrossLines) {
+  // One bracket per line: a count per line never saw more than one. The key x is level 1,
+  // the elements of its 999th array level 1000.
+  expect_too_deep("x = " + repeat("[\n", 1000) + "1" + repeat("]", 1000) + "\n", "line 1000");
+  EXPECT_NO_THROW(ring::check_nesting("x = " + repeat("[\n", 999) + "1" + repeat("]", 999) + "\n", "p.toml"));
+  // Dotted keys inside inline tables inside arrays: 600 + 600 levels, on different lines.
+  expect_too_deep("x = [\n{" + dotted(600) + " = [\n{" + dotted(600) + " = 1}]}]\n", "line 3");
+  EXPECT_NO_THROW(ring::check_nesting("x = [\n{" + dotted(400) + " = [\n{" + dotted(400) + " = 1}]}]\n", "p.toml"));
+  // Closed brackets no longer count: 2000 arrays side by side are two levels deep.
+  EXPECT_NO_THROW(ring::check_nesting("y = [" + repeat("[1.5], ", 2000) + "]\n", "p.toml"));
+}
+
+TEST(SceneNesting, OverrideValuesAreGuardedToo) {
+  expect_rejected(kPaper, "--set x", "levels deep", {"x={" + dotted(1001) + " = 1}"});
+}
+
+// ---- --vary lists (ring::toml_array_items) ----
+// Each item is TOML text that reads back to the same value; the expected texts follow the
+// TOML grammar, and the values read back through --set are compared with the C++
+// compiler's reading of the same literals.
+
+TEST(VaryItems, EveryKindOfValueReadsBackAsItself) {
+  const auto items = ring::toml_array_items(
+      "[0.1, 1e-300, 5e-324, 1.7976931348623157e308, -0.0, 1e4, 2.5e-3, 42, -7, true, \"a\\\"b\", 'lit\\n', "
+      "\"\"\"two\nlines\"\"\", \"tab\\t\\u0001 \xc3\xa9\", {diameter = 0.01}, {\"odd key\" = 1, b.c = 2}, "
+      "[1, [2.5, \"x\"]], [], {}]",
+      "--vary k");
+  const std::vector<std::string> expected = {
+      "0.1", "1e-300", "5e-324", "1.7976931348623157e+308", "-0.0", "10000.0", "0.0025", "42", "-7", "true",
+      "\"a\\\"b\"", "\"lit\\\\n\"", "\"two\\nlines\"", "\"tab\\t\\u0001 \xc3\xa9\"", "{ diameter = 0.01 }",
+      "{ b = { c = 2 }, \"odd key\" = 1 }", "[1, [2.5, \"x\"]]", "[]", "{}"};
+  EXPECT_EQ(items, expected);
+}
+
+TEST(VaryItems, FloatsKeepFullPrecisionThroughTheOverride) {
+  const auto items = ring::toml_array_items("[0.1, 1e-300, 0.30000000000000004, 2.1e11]", "--vary ring.E");
+  const double want[] = {0.1, 1e-300, 0.30000000000000004, 2.1e11};
+  ASSERT_EQ(items.size(), 4u);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const ring::Scene s = cmp::parse_scene(kPaper, "p.toml", {"ring.E=" + items[i]});
+    EXPECT_EQ(s.ring.E, want[i]) << items[i];  // exactly: the same double
+  }
+  const auto section = ring::toml_array_items("[{diameter = 0.01}]", "k");
+  EXPECT_EQ(cmp::parse_scene(kPaper, "p.toml", {"ring.section=" + section[0]}).ring.section.diameter, 0.01);
+  const auto title = ring::toml_array_items("[\"a\\\"b\"]", "k");
+  EXPECT_EQ(cmp::parse_scene(kPaper, "p.toml", {"title=" + title[0]}).title, "a\"b");
+}
+
+TEST(VaryItems, MultiLineListsWithComments) {
+  EXPECT_EQ(ring::toml_array_items("[\n  40,  # coarse\n  80,\n]  # done", "k"), (std::vector<std::string>{"40", "80"}));
+}
+
+TEST(VaryItems, WhatIsNotOneNonEmptyArrayIsRefused) {
+  for (const std::string& bad : {std::string("40"), std::string("[]"), std::string("[chain, frame]"), std::string("[1, 2"),
+                                std::string("[1] x"), std::string("[1]\nw = 3"), std::string("[1]\n[t]"), std::string(""),
+                                std::string("[\"unterminated]"), "[" + repeat("[", 300) + repeat("]", 300) + "]",
+                                "[{" + dotted(1001) + " = 1}]"}) {
+    try {
+      ring::toml_array_items(bad, "--vary k");
+      ADD_FAILURE() << "accepted " << bad.substr(0, 80);
+    } catch (const ring::InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("--vary k: ", 0), 0u) << e.what();
+    }
+  }
+}
 
 }  // namespace
