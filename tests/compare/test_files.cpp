@@ -345,3 +345,24 @@ TEST(Files, ResumeKeepsOnlyCompleteCasesAndNamesACorruptLine) {
 }
 
 }  // namespace
+
+namespace {
+
+// Guard: a sweep's own table was not estimated (10 keys x 100 values: bad_alloc). The
+// case count is bounded before the list is built, the table and the cases at once after.
+TEST(Files, ASweepsOwnMemoryIsInTheBudget) {
+  std::string values;
+  for (int i = 0; i < 100; ++i) values += (i ? ", " : "") + std::to_string(40 + 2 * i);
+  std::string vary;
+  for (const char* key : {"multibody.n", "lumped.n", "fem.elements", "modes.count", "ring.radius"})
+    vary += std::string(" --vary '") + key + "=[" + values + "]'";
+  expect_input_error(ringvib("sweep " + source(kMultibody) + vary), "--vary");  // 10^10 cases
+  // Three cases are more than a budget of 1e-6 GiB (~1 KB) holds.
+  expect_input_error(ringvib("sweep " + source(kMultibody) + " --vary 'multibody.n=[40, 80, 160]' --max-memory 1e-6"),
+                     "memory budget");
+  EXPECT_EQ(ringvib("sweep " + source(kMultibody) + " --vary 'multibody.n=[40, 80, 160]' --max-memory 1e-6 --force -q")
+                .code,
+            0);
+}
+
+}  // namespace
