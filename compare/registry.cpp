@@ -61,15 +61,20 @@ SolverEntry multibody_entry() {
   e.converge_steps = 5;
   e.richardson = true;
   e.paper = [](const ring::PaperRow& r) { return r.mb_corrected; };
-  // Dense: a few n x n matrices; O(n) modes: ~1 KiB per segment (measured 1 GB at 10^6)
-  // plus the Lanczos basis, n x (2 count + 20) doubles; O(n) nonlinear solves (count = 0):
-  // ~10 KiB per segment, the sparse LU's factors (statics measured 352 MB at n = 4e4).
+  // Working memory beyond the process (compare/guard.cpp adds that), fitted to the peak
+  // RSS measured at n = 200 ... 10^6 (README "Cost guard"; tests/compare/test_memory_estimate.cpp
+  // holds it within [1, 1.5] of the measured peak). Measured: dense modes 49 n^2 bytes
+  // (LAPACK's n x n pencil and workspace); O(n) modes n (360 + 30 count) (the band
+  // factors and the Lanczos basis of up to 4 count + 60 vectors); nonlinear: dense
+  // response 42-47 n^2, dense statics 21 n^2, O(n) response 2.07-2.09 KB and O(n)
+  // statics 0.83-0.84 KB per segment. Used: those with 3-20 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
-    const bool dense = s.multibody.method == ring::MultibodyOptions::Method::dense ||
-                       (s.multibody.method == ring::MultibodyOptions::Method::automatic && n <= 256 && count > 0);
-    const double per_segment = count > 0 ? 1024.0 : 10240.0;
-    return (dense ? 12.0 * 8.0 * n * n : per_segment * n) + 8.0 * n * (2.0 * count + 20.0);
+    if (count > 0) return multibody::uses_sparse_path(s.multibody) ? n * (420.0 + 33.0 * count) : 52.0 * n * n;
+    double bytes = 0.0;
+    if (s.response) bytes = std::max(bytes, multibody::use_sparse_path(s.multibody) ? 2200.0 * n : 50.0 * n * n);
+    if (s.statics) bytes = std::max(bytes, multibody::use_natural_statics(s.multibody) ? 900.0 * n : 25.0 * n * n);
+    return bytes;
   };
   e.check = [](const ring::Scene& s) {
     as_input_error(s, "multibody", [&] {
@@ -114,10 +119,23 @@ SolverEntry lumped_entry() {
   e.curve = [](const ring::Scene& s) { return "lumped (" + ring::to_string(s.lumped.variant) + ")"; };
   e.converge_steps = 5;
   e.paper = [](const ring::PaperRow& r) { return r.lm_corrected; };
-  // Sparse factorization: measured 468 MB at n = 10^5 (~4.7 KB per node), plus the basis.
+  // Working memory per node, fitted to the peak RSS measured at n = 10^3 ... 6 10^5: the
+  // sparse LU's peak, or (from ~20 modes up) the factors plus the Lanczos basis,
+  // 40 bytes per node and mode. Modes, with count 23: chain 4.1-4.4 KB, frame 5.8-5.9 KB,
+  // frame-consistent 7.8-8.3 KB per node (linear up to n = 6 10^5, 4.6 GB); the nonlinear
+  // chain 4.5 KB (statics) to 5.0 KB (response). Used: those with ~3 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.lumped.n;
-    return 4800.0 * n + 3.0 * 8.0 * n * (2.0 * count + 20.0);
+    if (count == 0) return 5200.0 * n;
+    auto per_node = [count](double factor_peak, double with_basis) {
+      return std::max(factor_peak, with_basis + 40.0 * count);
+    };
+    switch (s.lumped.variant) {
+      case ring::LumpedOptions::Variant::chain: return n * per_node(4370.0, 3990.0);
+      case ring::LumpedOptions::Variant::frame: return n * per_node(6110.0, 4250.0);
+      case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(8560.0, 7600.0);
+    }
+    return 0.0;
   };
   e.check = [](const ring::Scene& s) {
     as_input_error(s, "lumped", [&] {
@@ -166,12 +184,19 @@ SolverEntry fem_entry() {
   };
   e.converge_steps = 4;
   e.paper = [](const ring::PaperRow& r) { return r.fe_corrected; };
-  // Unknowns 2 p N; UMFPACK fill and ARPACK basis ~ (30 p + 2 count + 20) doubles per unknown
-  // (measured ~1.7 KB per unknown at p = 3 with 23 modes). The reference raises p to 16.
+  // Working memory per unknown (2 p N of them), fitted to the peak RSS measured at
+  // N p = 2400 ... 96 000 unknowns, p = 3 ... 12 (the deal.II plug-in itself is the
+  // guard's): modes, UMFPACK's factors and the eigen-solve, 4.05 KB (p = 3), 5.65 KB
+  // (6), 9.57 KB (12) with 23 modes, + 85 bytes per mode above ~23 (ARPACK's basis and
+  // the refinement's long double vectors outgrow the factorization's peak); nonlinear,
+  // Newton's tangent and factors, 3.5-4.5 KB (p = 3) and 6.6-7.6 KB (p = 8). Used: a fit
+  // in p with ~4 % to spare. The reference raises p to 16.
   e.memory = [](const ring::Scene& s, int count) {
     const double p = s.fem.reference || s.needs_reference() ? 16.0 : s.fem.degree;
     const double unknowns = 2.0 * p * s.fem.elements;
-    return 8.0 * unknowns * (30.0 * p + 2.0 * count + 20.0);
+    if (count == 0) return unknowns * (2680.0 + 650.0 * p);
+    const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
+    return unknowns * (factor_peak + 85.0 * std::max(0, count - 23));
   };
   // The reference runs with fem.reference on: its checks are the reference's.
   e.check = [](const ring::Scene& s) {

@@ -7,8 +7,9 @@ namespace fem::detail {
 
 namespace {
 
+/// `refining`: a step of the reference refinement (not the user's own discretization).
 Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int count, bool keep_full,
-                  bool refine = true) {
+                  bool refine = true, bool refining = false) {
   const int rigid = spec.supports.rigid_modes();
   auto run = [&](double EA, std::vector<double>& lambda, double& max_res, ring::ModalResult& r,
                  std::vector<Vector<double>>* full) {
@@ -19,6 +20,24 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
       throw std::invalid_argument("fem: count (=" + std::to_string(count) + ") must be <= unknowns - rigid modes (=" +
                                   std::to_string(static_cast<int>(model.n_free()) - rigid) + ") for " +
                                   std::to_string(setup.cells()) + " cells of degree " + std::to_string(setup.degree));
+    // Too fine for double precision: the eigen-solve would return wrong frequencies
+    // (ring_model.hpp, kPrecisionLimit). The ratio grows like cells^4, so the largest
+    // discretization of this degree that stays below the limit has about
+    // cells (limit / ratio)^(1/4) cells.
+    const double ratio = model.precision_ratio();
+    if (!(ratio <= kPrecisionLimit)) {
+      std::ostringstream m;
+      m.precision(3);
+      m << setup.cells() << " cells of degree " << setup.degree
+        << " are too fine for double precision: the stiffness spans " << ratio / kPrecisionLimit
+        << " times more of the spectrum than the eigen-solve resolves (eps lambda_max / |sigma| = " << ratio
+        << ", limit " << kPrecisionLimit << "), and its lowest frequencies would be wrong";
+      if (refining) throw ring::NumericalError("fem: the reference refinement reached " + m.str());
+      const int most = static_cast<int>(setup.cells() * std::pow(kPrecisionLimit / ratio, 0.25));
+      throw std::invalid_argument("fem: fem.elements (=" + std::to_string(setup.elements) + ") with fem.degree (=" +
+                                  std::to_string(setup.degree) + "): " + m.str() + "; use at most about " +
+                                  std::to_string(most) + " elements of this degree, or a lower degree");
+    }
     EigenPairs pairs;
     try {
       pairs = model.solve(wanted, refine);
@@ -34,6 +53,20 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
       if (!std::isfinite(pairs.lambda[i]) || (static_cast<int>(i) >= rigid && !(pairs.lambda[i] > 0)))
         throw ring::NumericalError("fem: eigenvalue " + std::to_string(pairs.lambda[i]) + " of mode " +
                                    std::to_string(i + 1) + " is not positive and finite");
+    // Refined pairs whose residual stayed large are not a result (kAcceptedResidual).
+    if (refine)
+      for (unsigned int i = rigid; i < wanted; ++i)
+        if (!(pairs.residual[i] <= kAcceptedResidual)) {
+          std::ostringstream m;
+          m.precision(3);
+          m << "fem: the eigen-solve lost its accuracy: mode " << i + 1 - rigid << " keeps a relative residual of "
+            << pairs.residual[i] << " after refinement (accepted: " << kAcceptedResidual << "; " << setup.cells()
+            << " cells of degree " << setup.degree << ", precision ratio " << ratio << " of " << kPrecisionLimit
+            << "): use fewer elements or a lower degree";
+          throw ring::NumericalError(m.str());
+        }
+    // With accurate pairs, a rigid eigenvalue far from zero is the discretization's: the
+    // polar fields approximate the rigid translations only.
     if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > 1e-2 * pairs.lambda[rigid])
       throw ring::NumericalError("fem: the mesh is too coarse to represent the " + std::to_string(rigid) +
                                  " rigid modes (lowest elastic/rigid eigenvalue ratio < 100)");
@@ -104,7 +137,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
       // Raw pairs carry ~1e-7 round-off; refine them only once the changes get near it.
       // (The inextensible penalty makes raw pairs far noisier: always refine them.)
       refined = !o.extensible || (refinements > 1 && previous_change < kRefineBelowChange);
-      Solved next = solve_once(spec, setup, o.extensible, count, false, refined);
+      Solved next = solve_once(spec, setup, o.extensible, count, false, refined, true);
       double change = 0.0;
       for (int i = 0; i < count; ++i)
         change = std::max(change, std::abs(next.result.omega[i] - s.result.omega[i]) / next.result.omega[i]);
@@ -122,7 +155,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
     }
     if (keep_full || !refined) {
       const double estimate = s.result.error_estimate;
-      s = solve_once(spec, setup, o.extensible, count, keep_full);
+      s = solve_once(spec, setup, o.extensible, count, keep_full, true, true);
       s.result.error_estimate = estimate;
     }
   }

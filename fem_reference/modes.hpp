@@ -59,7 +59,11 @@
 // lowest frequencies with relative errors ~ eps lambda_max / lambda ~ 1e-7. Every
 // solve is therefore refined: Rayleigh-Ritz on the computed span with Gram matrices
 // accumulated in long double from the strain fields (no cancellation against the stiff
-// entries), one subspace-iteration step q -= (K - sigma M)^{-1} r, Ritz again. The
+// entries), subspace-iteration steps q -= (K - sigma M)^{-1} r with Ritz after each
+// until the residuals are below 1e-11 or stop halving (ring_model.hpp). A discretization
+// too fine for double precision (eps lambda_max / |sigma| > kPrecisionLimit) is refused
+// before the solve (std::invalid_argument), and a refined elastic pair whose residual
+// stays above kAcceptedResidual is a ring::NumericalError (README, "The precision limit"). The
 // reported max_residual is ||K q - lambda M q||_* / (||K q||_* + lambda ||M q||_*) in
 // the dual norm of K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm in which
 // the residual bounds the frequency error; the Euclidean norm of a double vector's

@@ -49,7 +49,7 @@ EigenPairs RingModel::solve(unsigned int n_wanted, bool refine_pairs) const {
       raw.q.push_back(vectors[i]);
     }
   }
-  EigenPairs out = refine_pairs ? refine(std::move(raw), inverse) : std::move(raw);
+  EigenPairs out = refine_pairs ? refine(std::move(raw), n_wanted, inverse) : std::move(raw);
   out.residual.resize(n_compute, std::numeric_limits<double>::quiet_NaN());
   out.lambda.resize(n_wanted);
   out.q.resize(n_wanted);
@@ -57,7 +57,7 @@ EigenPairs RingModel::solve(unsigned int n_wanted, bool refine_pairs) const {
   return out;
 }
 
-EigenPairs RingModel::refine(EigenPairs raw, const SparseDirectUMFPACK& shifted_inverse) const {
+EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDirectUMFPACK& shifted_inverse) const {
   const unsigned int m = raw.q.size(), N = n_free_;
   std::vector<Vector<double>>& X = raw.q;
   std::vector<std::vector<Real>> KX(m), MX(m);
@@ -100,33 +100,46 @@ EigenPairs RingModel::refine(EigenPairs raw, const SparseDirectUMFPACK& shifted_
     for (unsigned int i = 0; i < N; ++i) r[i] = KX[k][i] - static_cast<Real>(raw.lambda[k]) * MX[k][i];
     return to_double(r);
   };
-  ritz();
-  for (unsigned int round = 0; round < kRefinementRounds; ++round) {
-    // One step of subspace (inverse) iteration, q -= (K - sigma M)^{-1} r: damps the
-    // error along mode j by (lambda - sigma) / (lambda_j - sigma); Ritz then removes
-    // the error inside the span.
-    for (unsigned int k = 0; k < m; ++k) {
-      Vector<double> z(N);
-      shifted_inverse.vmult(z, residual_vector(k));
-      X[k] -= z;
-    }
-    ritz();
-  }
-  auto dual_norm = [&](const Vector<double>& r) {
-    Vector<double> z(N);
-    shifted_inverse.vmult(z, r);
-    return std::sqrt(std::max(0.0, r * z));
-  };
-  // Denominator: for an eigenpair K q = lambda M q and (K - sigma M)^{-1} M q =
-  // q / (lambda - sigma), so ||K q||_* + lambda ||M q||_* = 2 lambda sqrt(q^T M q / (lambda - sigma))
-  // up to O(residual); this saves two solves per pair.
-  raw.residual.resize(m);
-  for (unsigned int k = 0; k < m; ++k) {
+  // Denominator of the relative residual: for an eigenpair K q = lambda M q and
+  // (K - sigma M)^{-1} M q = q / (lambda - sigma), so ||K q||_* + lambda ||M q||_* =
+  // 2 lambda sqrt(q^T M q / (lambda - sigma)) up to O(residual); this saves two solves per pair.
+  auto denominator = [&](unsigned int k) {
     Real qmq = 0;
     for (unsigned int i = 0; i < N; ++i) qmq += X[k][i] * MX[k][i];
     const double lambda = std::abs(raw.lambda[k]);
-    const double denominator = 2.0 * lambda * std::sqrt(static_cast<double>(qmq) / (lambda - sigma_));
-    raw.residual[k] = dual_norm(residual_vector(k)) / denominator;
+    return 2.0 * lambda * std::sqrt(static_cast<double>(qmq) / (lambda - sigma_));
+  };
+  // Every pair's residual r, z = (K - sigma M)^{-1} r and the relative dual norm
+  // sqrt(r^T z) / denominator (infinite if r^T z < 0: the solve is garbage); the worst
+  // of the wanted elastic pairs.
+  raw.residual.assign(m, 0.0);
+  std::vector<Vector<double>> Z(m, Vector<double>(N));
+  auto residuals = [&]() {
+    double worst = 0.0;
+    for (unsigned int k = 0; k < m; ++k) {
+      const Vector<double> r = residual_vector(k);
+      shifted_inverse.vmult(Z[k], r);
+      const double rz = r * Z[k];
+      raw.residual[k] = rz >= 0 ? std::sqrt(rz) / denominator(k) : std::numeric_limits<double>::infinity();
+      // The stopping rule looks at the wanted elastic pairs: a rigid one's relative
+      // residual divides by lambda ~ 0, the guard pairs converge last.
+      if (k < wanted && !(std::abs(raw.lambda[k]) < kRigidBelow * std::abs(sigma_)))
+        worst = std::max(worst, raw.residual[k]);
+    }
+    return worst;
+  };
+  ritz();
+  double worst = residuals();
+  // Subspace (inverse) iteration q -= (K - sigma M)^{-1} r damps the error along mode j
+  // by (lambda - sigma) / (lambda_j - sigma); Ritz then removes the error inside the span.
+  // Until refined, or until a correction no longer halves the worst residual (round-off).
+  for (unsigned int round = 0; round < kMaxRefinementRounds && worst > kRefinedResidual; ++round) {
+    for (unsigned int k = 0; k < m; ++k) X[k] -= Z[k];
+    ritz();
+    const double next = residuals();
+    const bool halved = next < 0.5 * worst;
+    worst = next;
+    if (!halved) break;
   }
   return raw;
 }

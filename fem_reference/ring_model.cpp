@@ -245,6 +245,16 @@ void RingModel::assemble() {
   }
 }
 
+double RingModel::precision_ratio() const {
+  std::vector<double> k(n_free_, 0.0), m(n_free_, 0.0);
+  for (auto it = K_.begin(); it != K_.end(); ++it) k[it->row()] += std::abs(it->value());
+  for (auto it = M_.begin(); it != M_.end(); ++it) m[it->row()] += it->value();
+  double lambda_max = 0.0;
+  for (unsigned int i = 0; i < n_free_; ++i)
+    lambda_max = std::max(lambda_max, m[i] > 0 ? k[i] / m[i] : std::numeric_limits<double>::infinity());
+  return std::numeric_limits<double>::epsilon() * lambda_max / std::abs(sigma_);
+}
+
 void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const {
   const Vector<double> full = expand(q);
   const Real EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();

@@ -65,8 +65,28 @@ constexpr int kReferenceMaxSteps = 40;
 constexpr unsigned int kGuardModes = 8;
 /// Reference runs refine the eigenpairs once successive frequencies change by less.
 constexpr double kRefineBelowChange = 1e-5;
-/// Subspace-iteration corrections in refine().
-constexpr unsigned int kRefinementRounds = 1;
+/// Subspace-iteration corrections in refine(): until every pair's residual is below
+/// kRefinedResidual or stops halving, at most this many.
+constexpr unsigned int kMaxRefinementRounds = 8;
+constexpr double kRefinedResidual = 1e-11;
+/// |lambda| below this times |sigma| is a rigid mode for refine()'s stopping rule (the
+/// lowest elastic eigenvalue is >= 2.6 |sigma|; rigid ones are round-off, <= 1e-4 |sigma|).
+constexpr double kRigidBelow = 1e-2;
+/// A refined elastic pair whose residual (refine()) stays above this is not a result:
+/// the eigen-solve has lost its accuracy (measured, the frequency error is 1e-2 to 1e-1
+/// of the residual near the precision limit: 10^4 cells of degree 8, residual 1.9e-2,
+/// frequency 0.09 % off; 3000 of degree 12 with one correction, 6.6e-3 and 0.007 %).
+constexpr double kAcceptedResidual = 1e-4;
+/// Largest eps lambda_max / |sigma| (precision_ratio()) that the eigen-solve resolves.
+/// The shift-invert solve factors K - sigma M in double; when its spectrum spans more
+/// than ~1/eps the factorization no longer represents the low end of the operator.
+/// Measured on the paper's pinned ring (lambda_max by row sums, below): ratio 2.0e4
+/// (10^4 cells, p = 6) and 2.8e4 (3000, p = 12): the lowest frequencies to 1e-7 after the
+/// refinement; 1.6e5 (10^4, p = 8): 0.09 % off, residual 2e-2; 2.1e5 (5000, p = 12),
+/// 8.2e5 (7000, p = 12), 3.4e6 (10^4, p = 12): wrong by 4 % to 40 times (lambda_1 = 234
+/// instead of 6.17 at 10^4), iterative refinement of a solve against apply() diverging
+/// 16-fold per step. The limit sits between the last good and the first bad ratio.
+constexpr double kPrecisionLimit = 6e4;
 /// Relative round-off of refined frequencies (measured, see the estimate below).
 constexpr double kRoundOffFloor = 1e-12;
 /// Inextensible limit: EA -> beta EI / R^2 for these beta, then Richardson in 1/beta.
@@ -108,6 +128,13 @@ class RingModel {
   RingModel(const ring::RingSpec& spec, const Setup& setup);
 
   unsigned int n_free() const { return n_free_; }
+  /// eps lambda_max / |sigma|: how much of the shifted operator's low end double
+  /// precision resolves (sigma ~ -EI / (rho A R^4), the ring's bending scale; the lowest
+  /// elastic eigenvalue is 2.6 |sigma| or more). lambda_max is estimated by the row sums
+  /// max_i sum_j |K_ij| / sum_j M_ij (Gershgorin with the row-sum lumped mass; within a
+  /// few times the true one). Above kPrecisionLimit the eigen-solve cannot be trusted.
+  /// It grows like cells^4 (bending) and like p^6 to p^8 in the degree. O(nnz).
+  double precision_ratio() const;
   /// The `n` lowest eigenpairs, refined (see refine()). Dense LAPACK (O(N^3)) up to
   /// kDenseLimit unknowns, ARPACK shift-invert on UMFPACK above (O(N p^2)
   /// factorization + O(N p) per Lanczos step).
@@ -172,12 +199,16 @@ class RingModel {
   /// membrane part (the assembled product cancels to ~eps lambda_max / lambda). O(N p).
   void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const;
   /// Improves raw eigenpairs: Rayleigh-Ritz on their span with Gram matrices from
-  /// apply(), one subspace-iteration correction q -= (K - sigma M)^{-1} r, Ritz again.
+  /// apply(), then subspace-iteration corrections q -= (K - sigma M)^{-1} r, each
+  /// followed by Ritz, until the residuals are below kRefinedResidual or stop halving
+  /// (at most kMaxRefinementRounds; one is enough up to ~10^5 unknowns, near the precision
+  /// limit each contracts by ~10: 3000 cells of degree 12, 6.6e-3 after one, 5e-7 after four).
   /// Residuals ||r||_* / (||K q||_* + lambda ||M q||_*) in the dual norm of
   /// K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm that bounds the
   /// frequency error; the Euclidean norm would only show the round-off of the stiff
-  /// entries. O(m^2 N) for m pairs.
-  EigenPairs refine(EigenPairs raw, const SparseDirectUMFPACK& shifted_inverse) const;
+  /// entries. A pair whose r^T (K - sigma M)^{-1} r comes out negative (the solve no
+  /// longer represents the operator) gets an infinite residual. O(rounds m^2 N) for m pairs.
+  EigenPairs refine(EigenPairs raw, unsigned int wanted, const SparseDirectUMFPACK& shifted_inverse) const;
 
   const ring::RingSpec& spec_;
   const Setup setup_;

@@ -159,9 +159,11 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
                               {statics.load.force[0], statics.load.force[1]}};
   std::vector<int> rec;
   for (double a : statics.record) rec.push_back(ch.hinge_at(a));
-  const Matrix K = ch.stiffness_matrix();
   const int gap = detail::contact_gap(ch, spec.section.depth());
   if (use_natural_statics(options)) return natural::solve_static(ch, spec, statics);
+  // The dense path's n x n stiffness, built only here: before the O(n) path's dispatch it
+  // was allocated there too (80 GB at n = 10^5: std::bad_alloc at once).
+  const Matrix K = ch.stiffness_matrix();
 
   Vector q = ch.q0(), lambda = Vector::Zero(ch.constraint_count());
   ring::StaticResult res;

@@ -61,16 +61,17 @@
 //
 // r cannot be zero (M, R > 0), and it is far below any resolved response: on the 20 kN
 // scene (n = 40, dt = 0.01 s, 500 steps) r = 1.5e-4 J against kTolerance max |W| = 630 J;
-// at n = 10^4 and 1000 steps ~15 J (the n^4 of the strain term; for the multibody chain's
-// angle coordinates that bound is loose by 10^4: the strain energy of rounding measured
-// 1.4e-22 J at n = 400 against 8 n^4 EI dx^2 / (2 pi R)^3 = 2e-18 J). Where r is not small,
+// at n = 10^4 and 1000 steps ~15 J (the n^4 of the strain term, a bound for hinge
+// positions; for the multibody chain's angle coordinates it is loose by 10^7: the strain
+// energy of rounding measured 1.4e-22 J at n = 400 against 8 n^4 EI dx^2 / (2 pi R)^3 =
+// 2.2e-15 J). Where r is not small,
 // the state cannot resolve the response and no energy balance can be judged
 // (ring.rho = 1e15: E_1 = 1.8e-8 J and a first-order term of 1.4e-5 J at 0.35 s, against
 // a work of 2.1e-6 J; dt = 1e-9 s: the motion of 1e-7 s is below eps R). Measured margins
 // (the gain over the allowance, the worst step): 0.10 for the roller, 0.01 for
 // ring.rho = 1e15, 0.005 for dt = 1e-9 s (tests/compare/test_energy_guard_cli.cpp).
 // kResolution = 16: measured, rounding puts positions off by up to 11 eps R (the closure
-// residual of the multibody chain, a sum of n segments, at n = 2000; 1-3 eps R at n = 40
+// residual of the multibody chain, a sum of n segments, at n = 2000; 1-4 eps R at n = 40
 // and 10^4; the roller's work 0.9 eps R |F|; the lumped chain's kinetic energy at
 // dt = 1e-9 s, 1.3 M (eps R / h)^2 / 2). The FE beam's coordinates are displacements,
 // whose rounding is relative to u, not R: for it r is an upper bound, as for the others.

@@ -1,0 +1,147 @@
+// The cost guard's memory estimate (compare/guard.cpp, the solvers' SolverEntry::memory)
+// against the peak resident memory of the ringvib process that does exactly that work,
+// for every solver and analysis path, at two sizes each: the estimate must never be
+// below the measured peak (else the guard lets through a scene that runs out of memory,
+// as the lumped frame-consistent chain did at n = 1.2e6) and at most 1.5 times it (else
+// it refuses scenes that fit). Oracle: the kernel's accounting of the child, ru_maxrss of
+// wait4(). Sizes stay at a few hundred MB and a few seconds each.
+//
+// Each run prints "estimate / measured" (MB); README "Cost guard" records them.
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "compare/guard.hpp"
+#include "compare/registry.hpp"
+
+namespace {
+
+using ringtest::source;
+
+/// Runs ringvib with `args` (no shell), output to /dev/null; returns the exit code and
+/// the child's peak resident set in bytes.
+struct Measured {
+  int code = -1;
+  double peak_bytes = 0.0;
+};
+
+Measured run_measured(const std::vector<std::string>& args) {
+  std::vector<std::string> all = {ringtest::ringvib_path()};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, STDIN_FILENO);
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  Measured m;
+  int status = 0;
+  struct rusage ru {};
+  if (pid < 0 || wait4(pid, &status, 0, &ru) != pid) return m;
+  m.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  m.peak_bytes = 1024.0 * double(ru.ru_maxrss);  // Linux: kilobytes
+  return m;
+}
+
+const char* kRing = R"(
+[ring]
+radius = 10.0
+E = 2.1e11
+rho = 7.8e3
+section = { shape = "circle", diameter = 0.12 }
+)";
+
+/// A scene with only `solver` in it and one analysis: modes, response or statics.
+std::string scene(const std::string& solver, const std::string& analysis) {
+  std::string s = std::string("title = \"memory\"\n") + kRing;
+  if (analysis == "modes") return s + "[supports]\npin = 180.0\n[" + solver + "]\n[modes]\ncount = 23\nsolvers = [\"" +
+                                  solver + "\"]\n";
+  s += "[supports]\npin = 180.0\nroller = 0.0\n[" + solver + "]\n";
+  if (analysis == "respond")
+    return s + "[response]\nsolvers = [\"" + solver +
+           "\"]\nat = 0.0\nforce = [-20e3, 0.0]\ndt = 0.01\nt_end = 0.02\nrecord = [0.0, 90.0]\n";
+  return s + "[static]\nsolvers = [\"" + solver + "\"]\nat = 0.0\nforce = [-20e3, 0.0]\nsteps = 1\nrecord = [0.0, 90.0]\n";
+}
+
+struct Case {
+  std::string name, solver, analysis;  ///< analysis: the ringvib command (modes, respond, static)
+  std::vector<std::vector<std::string>> sizes;  ///< two sets of --set overrides
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+/// Every solver, every analysis path the estimate distinguishes.
+const std::vector<Case> kCases = {
+    {"multibody_modes_dense", "multibody", "modes",
+     {{"multibody.n=1000", "multibody.method=\"dense\""}, {"multibody.n=2000", "multibody.method=\"dense\""}}},
+    {"multibody_modes_sparse", "multibody", "modes", {{"multibody.n=100000"}, {"multibody.n=250000"}}},
+    {"multibody_response_dense", "multibody", "respond",
+     {{"multibody.n=400", "multibody.method=\"dense\""}, {"multibody.n=800", "multibody.method=\"dense\""}}},
+    {"multibody_response_sparse", "multibody", "respond", {{"multibody.n=30000"}, {"multibody.n=100000"}}},
+    {"multibody_statics_dense", "multibody", "static",
+     {{"multibody.n=400", "multibody.method=\"dense\""}, {"multibody.n=800", "multibody.method=\"dense\""}}},
+    {"multibody_statics_sparse", "multibody", "static", {{"multibody.n=40000"}, {"multibody.n=100000"}}},
+    {"multibody_response_history", "multibody", "respond",
+     {{"response.dt=1e-5", "response.t_end=1.0"}, {"response.dt=1e-5", "response.t_end=3.0"}}},
+    {"lumped_chain_modes", "lumped", "modes", {{"lumped.n=10000"}, {"lumped.n=30000"}}},
+    {"lumped_frame_modes", "lumped", "modes",
+     {{"lumped.n=10000", "lumped.variant=\"frame\""}, {"lumped.n=30000", "lumped.variant=\"frame\""}}},
+    {"lumped_frame_consistent_modes", "lumped", "modes",
+     {{"lumped.n=10000", "lumped.variant=\"frame-consistent\""},
+      {"lumped.n=30000", "lumped.variant=\"frame-consistent\""}}},
+    {"lumped_response", "lumped", "respond", {{"lumped.n=10000"}, {"lumped.n=30000"}}},
+    {"fem_modes", "fem", "modes",
+     {{"fem.elements=1000", "fem.degree=3"}, {"fem.elements=500", "fem.degree=12"}}},
+    {"fem_response", "fem", "respond",
+     {{"fem.elements=400", "fem.degree=3"}, {"fem.elements=4000", "fem.degree=3"}}},
+    {"fem_statics", "fem", "static", {{"fem.elements=400", "fem.degree=3"}, {"fem.elements=4000", "fem.degree=3"}}},
+};
+
+class MemoryEstimate : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MemoryEstimate, NeverBelowThePeakAndAtMostOneAndAHalfTimesIt) {
+  const Case& c = GetParam();
+  const std::string dir = ringtest::temp_dir();
+  const std::string path = dir + "/scene.toml";
+  ringtest::write(path, scene(c.solver, c.analysis));
+  for (const auto& sets : c.sizes) {
+    std::string label = c.name;
+    for (const auto& s : sets) label += " " + s;
+    SCOPED_TRACE(label);
+    const double estimate = cmp::estimate_memory(cmp::load_scene(path, sets)).bytes;
+    std::vector<std::string> args = {c.analysis, path, "--solver", c.solver, "--force", "-q"};
+    for (const auto& s : sets) {
+      args.push_back("--set");
+      args.push_back(s);
+    }
+    const Measured m = run_measured(args);
+    ASSERT_EQ(m.code, 0) << "ringvib " << c.analysis << " failed";
+    ASSERT_GT(m.peak_bytes, 0.0);
+    std::printf("%-64s estimate %8.1f MB, measured %8.1f MB, ratio %.3f\n", label.c_str(), estimate / 1e6,
+                m.peak_bytes / 1e6, estimate / m.peak_bytes);
+    EXPECT_GE(estimate, m.peak_bytes) << "the estimate is below the measured peak";
+    EXPECT_LE(estimate, 1.5 * m.peak_bytes) << "the estimate is more than 1.5 times the measured peak";
+  }
+  std::remove(path.c_str());
+  rmdir(dir.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(EverySolverAndPath, MemoryEstimate, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& i) { return i.param.name; });
+
+}  // namespace
