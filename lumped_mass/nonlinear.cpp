@@ -480,12 +480,7 @@ class MidpointStepper : public paths::Stepper {
   }
 
   void shape(std::vector<double>& x, std::vector<double>& y) const override {
-    x.clear();
-    y.clear();
-    for (int j = 0; j < c_.n; ++j) {
-      x.push_back(x_[2 * j]);
-      y.push_back(x_[2 * j + 1]);
-    }
+    paths::interleaved_shape(x_, c_.n, x, y);
   }
 
   std::optional<std::string> contact() const override {

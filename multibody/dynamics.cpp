@@ -168,6 +168,13 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   // result (generalized-alpha did on fine chains under a point step load when it started
   // from a_0 = qdd_0; see starting_pseudo_acceleration). The rule: energy_guard.hpp.
   ring::EnergyGuard guard(spec, chain.n(), response.load.force);
+  paths::Grid grid = detail::response_grid(response, controls, guard, "multibody::respond");
+  grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
+  return paths::integrate(stepper, grid, response.record);
+}
+
+paths::Grid detail::response_grid(const ring::ResponseOptions& response, const IntegrationControls& controls,
+                                  ring::EnergyGuard& guard, const std::string& who) {
   paths::Grid grid;
   grid.dt = response.dt;
   grid.t_end = response.t_end;
@@ -175,9 +182,8 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   grid.min_dt_factor = controls.min_dt_factor;
   grid.check_contact = controls.check_contact;
   grid.guard = &guard;
-  grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
-  grid.who = "multibody::respond";
-  return paths::integrate(stepper, grid, response.record);
+  grid.who = who;
+  return grid;
 }
 
 }  // namespace multibody

@@ -67,6 +67,7 @@
 
 #include <string>
 
+#include "paths/time_stepping.hpp"
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
 #include "ring/analysis.hpp"
@@ -122,5 +123,12 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
                           const IntegrationControls& controls = {});
+
+namespace detail {
+/// The time-stepping driver's grid of a response (paths/time_stepping.hpp) under the
+/// chain's controls, with `guard` and `who` for the messages.
+paths::Grid response_grid(const ring::ResponseOptions& response, const IntegrationControls& controls,
+                          ring::EnergyGuard& guard, const std::string& who);
+}  // namespace detail
 
 }  // namespace multibody

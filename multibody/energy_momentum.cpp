@@ -166,12 +166,7 @@ class EnergyMomentumStepper : public paths::Stepper {
   }
 
   void shape(std::vector<double>& x, std::vector<double>& y) const override {
-    x.clear();
-    y.clear();
-    for (int j = 0; j < c_.n; ++j) {
-      x.push_back(x_(2 * j));
-      y.push_back(x_(2 * j + 1));
-    }
+    paths::interleaved_shape(x_, c_.n, x, y);
   }
 
   std::optional<std::string> contact() const override {
@@ -211,15 +206,9 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   // The scheme conserves the balance to round-off; a gain is a failure as for the other
   // integrators (the one rule: ring/energy_guard.hpp).
   ring::EnergyGuard guard(spec, c.n, response.load.force);
-  paths::Grid grid;
-  grid.dt = response.dt;
-  grid.t_end = response.t_end;
-  grid.snapshots = controls.snapshots;
-  grid.min_dt_factor = controls.min_dt_factor;
-  grid.check_contact = controls.check_contact;
-  grid.guard = &guard;
-  grid.who = "multibody::respond (energy-momentum)";
-  ring::TimeHistory th = paths::integrate(stepper, grid, response.record);
+  ring::TimeHistory th = paths::integrate(
+      stepper, detail::response_grid(response, controls, guard, "multibody::respond (energy-momentum)"),
+      response.record);
   th.solver = "multibody";
   th.unknowns = c.size();
   th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

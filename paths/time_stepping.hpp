@@ -89,6 +89,18 @@ struct Grid {
   std::string who;             ///< the solver, named first in every message ("multibody::respond")
 };
 
+/// The node positions of a state stored as (x_0, y_0, x_1, y_1, ...), n nodes, as
+/// Stepper::shape gives them. V: anything with operator[] (an Eigen vector, a std::vector).
+template <class V>
+void interleaved_shape(const V& state, int n, std::vector<double>& x, std::vector<double>& y) {
+  x.resize(n);
+  y.resize(n);
+  for (int j = 0; j < n; ++j) {
+    x[j] = state[2 * j];
+    y[j] = state[2 * j + 1];
+  }
+}
+
 /// Integrates from the stepper's initial (accepted) state at t = 0 over the grid.
 /// Returns the history of the recorded points (`record_angles`, degrees). Throws
 /// ring::IntegrationFailure (with the partial history) as above.

@@ -1,6 +1,8 @@
 // Runs the ringvib executable as a user would and captures what it prints.
 #pragma once
 
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace ringtest {
 
@@ -77,6 +81,41 @@ inline std::string shell(const std::string& cmd) {
 inline std::string leftovers(const std::string& dir) {
   return shell("find " + dir + " \\( -name '.ringvib-stage-*' -o -name '.ringvib-*.tmp*' -o -name '*.tmp-*' \\) "
                "2>/dev/null");
+}
+
+/// Starts `program ARGS` (no shell) with standard input, output and error on /dev/null
+/// and `env` set in the child; returns its pid.
+inline pid_t spawn(const std::vector<std::string>& command,
+                   const std::vector<std::pair<std::string, std::string>>& env = {}) {
+  std::vector<std::string> all = command;
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, STDIN_FILENO);
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
+    execvp(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Waits at most `seconds` for `pid` to end and returns its wait status; a child still
+/// running then is killed (SIGKILL, with its process group's other members it started)
+/// and -1 is returned, so that a hang fails a test instead of stalling the suite.
+inline int wait_bounded(pid_t pid, double seconds) {
+  int status = 0;
+  for (double waited = 0.0; waited < seconds; waited += 0.01) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return status;
+    usleep(10000);
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return -1;
 }
 
 inline bool empty_dir(const std::string& dir) {

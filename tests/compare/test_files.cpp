@@ -174,16 +174,7 @@ TEST(Files, ASweepFolderHoldsOneSweepsFiles) {
 // Two runs into one folder mixed their files: the second is refused while the first runs.
 TEST(Files, ASecondRunIntoTheSameFolderIsRefused) {
   const std::string out = ringtest::temp_dir() + "/o";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int null = open("/dev/null", O_WRONLY);
-    dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
-    const std::string scene = source("scenes/paper1990.toml");
-    execl(ringtest::ringvib_path().c_str(), "ringvib", "run", scene.c_str(), "--out", out.c_str(), "-q",
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
+  const pid_t pid = ringtest::spawn({ringtest::ringvib_path(), "run", source("scenes/paper1990.toml"), "--out", out, "-q"});
   // The first run holds the folder from the moment its stage exists until it ends.
   bool held = false;
   const auto start = std::chrono::steady_clock::now();
@@ -193,8 +184,7 @@ TEST(Files, ASecondRunIntoTheSameFolderIsRefused) {
   }
   ringtest::Run second;
   if (held) second = ringvib("run " + source(kMultibody) + " --out " + out);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  const int status = ringtest::wait_bounded(pid, 300.0);
   ASSERT_TRUE(held) << "the first run's stage never appeared";
   EXPECT_EQ(WEXITSTATUS(status), 0);
   // The first run may have ended between the look and the second start: then it ran.
@@ -222,23 +212,14 @@ TEST(Files, AnInterruptedRunPublishesNothing) {
     const std::string marker = sweep ? "sweep.md" : "report.md";
     ringtest::write(out + "/" + marker, "earlier run");
     ringtest::write(out + "/.ringvib-files", marker + "\n");
-    const pid_t pid = fork();
-    if (pid == 0) {
-      const int null = open("/dev/null", O_WRONLY);
-      dup2(null, STDOUT_FILENO);
-      dup2(null, STDERR_FILENO);
-      std::vector<char*> argv{const_cast<char*>("ringvib")};
-      for (auto& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      execv(ringtest::ringvib_path().c_str(), argv.data());
-      _exit(127);
-    }
+    args.insert(args.begin(), ringtest::ringvib_path());
+    const pid_t pid = ringtest::spawn(args);
     // A run takes ~0.6 s and a sweep ~1.1 s here (README); kill within that span.
     std::uniform_int_distribution<int> ms(5, sweep ? 1100 : 600);
     std::this_thread::sleep_for(std::chrono::milliseconds(ms(random)));
     kill(pid, sig);
-    int status = 0;
-    waitpid(pid, &status, 0);
+    const int status = ringtest::wait_bounded(pid, 60.0);
+    ASSERT_NE(status, -1) << "attempt " << attempt << ": the run did not end after the signal";
     EXPECT_EQ(leftovers(base), "") << "attempt " << attempt;
     if (WIFSIGNALED(status)) {
       ++interrupted;

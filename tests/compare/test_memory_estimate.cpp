@@ -37,18 +37,7 @@ struct Measured {
 Measured run_measured(const std::vector<std::string>& args) {
   std::vector<std::string> all = {ringtest::ringvib_path()};
   all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int null = open("/dev/null", O_RDWR);
-    dup2(null, STDIN_FILENO);
-    dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  const pid_t pid = ringtest::spawn(all);
   Measured m;
   int status = 0;
   struct rusage ru {};

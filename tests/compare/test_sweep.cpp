@@ -392,19 +392,10 @@ TEST(SweepMpi, ASignalPublishesNothingAndEndsWith128PlusSignalWhenItReachesTheRa
   for (const int sig : {SIGTERM, SIGINT}) {
     for (const bool to_mpirun : {false, true}) {
       const std::string out = base + "/run" + std::to_string(run++);
-      const pid_t pid = fork();
-      if (pid == 0) {
-        const int null = open("/dev/null", O_RDWR);
-        dup2(null, STDIN_FILENO);
-        dup2(null, STDOUT_FILENO);
-        dup2(null, STDERR_FILENO);
-        setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-        setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-        const std::string scene = source("scenes/paper1990-static.toml"), vary = "multibody.n=[" + list + "]";
-        execlp("mpirun", "mpirun", "-np", "2", "--oversubscribe", ringtest::ringvib_path().c_str(), "sweep",
-               scene.c_str(), "--vary", vary.c_str(), "--out", out.c_str(), "-q", static_cast<char*>(nullptr));
-        _exit(127);
-      }
+      const pid_t pid = ringtest::spawn({"mpirun", "-np", "2", "--oversubscribe", ringtest::ringvib_path(), "sweep",
+                                         source("scenes/paper1990-static.toml"), "--vary",
+                                         "multibody.n=[" + list + "]", "--out", out, "-q"},
+                                        {{"OMPI_ALLOW_RUN_AS_ROOT", "1"}, {"OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1"}});
       // Wait until the cases run (an event, not a time: the limit only stops a hang).
       // Not earlier: ranks that die while they start MPI can leave mpirun 4.1.4 hanging
       // in its own shutdown (compare/sweep_mpi.cpp).
@@ -422,8 +413,9 @@ TEST(SweepMpi, ASignalPublishesNothingAndEndsWith128PlusSignalWhenItReachesTheRa
       } else {
         for (const pid_t rank : children_of(pid)) kill(rank, sig);
       }
-      int status = 0;
-      waitpid(pid, &status, 0);
+      // mpirun sends SIGKILL 2 s after a signal at the latest; a minute is a hang.
+      const int status = ringtest::wait_bounded(pid, 60.0);
+      ASSERT_NE(status, -1) << "mpirun did not end within 60 s of the signal (killed)";
       ASSERT_TRUE(WIFEXITED(status)) << status;
       if (to_mpirun)
         EXPECT_TRUE(WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 128 + sig)
