@@ -170,7 +170,9 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   ring::EnergyGuard guard(spec, chain.n(), response.load.force);
   paths::Grid grid = detail::response_grid(response, controls, guard, "multibody::respond");
   grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
-  return paths::integrate(stepper, grid, response.record);
+  ring::TimeHistory th = paths::integrate(stepper, grid, response.record);
+  th.unknowns = chain.dofs() + chain.constraint_count();  // angles and multipliers of the Newton system
+  return th;
 }
 
 paths::Grid detail::response_grid(const ring::ResponseOptions& response, const IntegrationControls& controls,

@@ -167,6 +167,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
 
   Vector q = ch.q0(), lambda = Vector::Zero(ch.constraint_count());
   ring::StaticResult res;
+  res.unknowns = ch.dofs() + ch.constraint_count();  // angles and multipliers of the Newton system
   double s = 0.0, ds = 1.0 / statics.steps;
   const double ds_min = 1e-6 / statics.steps;
   double s_limit = -1.0;  // load factor of the limit point, once one is met
