@@ -102,6 +102,9 @@ TEST(Files, OutputPathsThatAreNotRegularFilesAreRefusedUpFront) {
   ASSERT_EQ(symlink((dir + "/loop").c_str(), (dir + "/loop").c_str()), 0);
   for (const std::string& out : {dir + "/dangling", dir + "/loop", dir + "/dangling/sub"})
     expect_input_error(ringvib("run " + source(kMultibody) + " --out " + out), "--out " + out);
+  // --vtu as well (refused before the FE plug-in is loaded).
+  expect_input_error(ringvib("modes " + source("scenes/paper1990.toml") + " --solver fem --vtu " + dir + "/dangling"),
+                     "--vtu " + dir + "/dangling");
   EXPECT_FALSE(exists(dir + "/nowhere"));
   EXPECT_EQ(leftovers(dir), "");
 }
