@@ -1,7 +1,8 @@
 #include "compare/guard.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include <fmt/format.h>
 
 #include "compare/registry.hpp"
 #include "ring/errors.hpp"
@@ -9,11 +10,7 @@
 namespace cmp {
 namespace {
 
-std::string gib(double bytes) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.3g GiB", bytes / double(1ull << 30));
-  return b;
-}
+std::string gib(double bytes) { return fmt::format("{:.3g} GiB", bytes / double(1ull << 30)); }
 
 }  // namespace
 
