@@ -333,9 +333,11 @@ void Outputs::folder(const std::string& dir_given, const std::string& option,
 }
 
 void Outputs::file(const std::string& path, const std::string& option, const std::string& scene) {
-  if (path == "-") return;
+  // A command that offers standard output (respond --csv -) prints instead of calling this.
+  if (path == "-")
+    throw ring::InputError("", option + " -", "standard output is not offered for this option; give a file name");
   check_output_file(path, option, scene);
-  files_.push_back({path, option, "", false});
+  files_.push_back({path, "", false});
 }
 
 void Outputs::open() {

@@ -65,7 +65,8 @@ class Outputs {
   /// (it will be made, with its parents) or a folder, reachable and writable; a dangling
   /// symlink or a loop is refused. At most one folder. Throws ring::InputError.
   void folder(const std::string& dir, const std::string& option, const std::vector<std::string>& prefixes);
-  /// A single output file (check_output_file); "-" is standard output and is not staged.
+  /// A single output file (check_output_file); "-" is refused (a command that offers
+  /// standard output handles it before calling this).
   void file(const std::string& path, const std::string& option, const std::string& scene);
 
   /// Makes the folder if it is missing, locks it against a second run (ring::InputError if
@@ -81,7 +82,7 @@ class Outputs {
 
  private:
   struct Single {
-    std::string path, option, temp;
+    std::string path, temp;
     bool staged = false;
   };
   /// publish() with the signals blocked; true when a signal arrived and all was undone.

@@ -94,7 +94,8 @@ TEST(Files, OutputPathsThatAreNotRegularFilesAreRefusedUpFront) {
   ASSERT_EQ(lstat((dir + "/link").c_str(), &st), 0);
   EXPECT_TRUE(S_ISLNK(st.st_mode));
   EXPECT_EQ(read(dir + "/target"), "target");
-  // A stream is asked for with -.
+  // A stream is asked for with -, where it is offered (--junit goes to a file: exit 2).
+  expect_input_error(ringvib("run " + source(kMultibody) + " --junit -"), "--junit -");
   const auto streamed = ringvib("respond " + forced + " --csv -");
   ASSERT_EQ(streamed.code, 0) << streamed.err;
   EXPECT_EQ(streamed.out.rfind("t,", 0), 0u) << streamed.out.substr(0, 80);
