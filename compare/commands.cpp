@@ -40,7 +40,8 @@ class Progress {
   void say(const std::string& what) const {
     if (on_) std::cerr << "ringvib: " << what << "\n";
   }
-  bool on() const { return on_; }
+  /// Where the solvers' progress goes: stderr, or null when off.
+  std::ostream* stream() const { return on_ ? &std::cerr : nullptr; }
 
  private:
   bool on_;
@@ -124,7 +125,7 @@ int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
   const ring::Scene s = load(a);
   require_modes(s, "table");
   const Progress p(a.quiet);
-  const Table t = make_table(s, compute_modal(s, p.on() ? &std::cerr : nullptr), paper);
+  const Table t = make_table(s, compute_modal(s, p.stream()), paper);
   if (format == "md") std::cout << format_markdown(t);
   else if (format == "csv") std::cout << format_csv(t);
   else if (format == "json") std::cout << format_json(t);
@@ -144,7 +145,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
   int code = 0;
 
   if (modal(s)) {
-    const ModalRun r = compute_modal(s, p.on() ? &std::cerr : nullptr);
+    const ModalRun r = compute_modal(s, p.stream());
     rep.modal = r.columns;
     rep.reference = r.reference;
     rep.table = make_table(s, r, paper);
@@ -156,7 +157,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
     }
   }
   if (s.response || s.statics) {
-    NonlinearRun nl = run_nonlinear(s, "", p.on() ? &std::cerr : nullptr);
+    NonlinearRun nl = run_nonlinear(s, "", p.stream());
     // One solver prints what `respond`/`static` print; several (or a reference) the
     // comparison table. The report always has the table.
     if (!nl.histories.empty()) {
@@ -202,7 +203,7 @@ int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& 
   Outputs files;
   if (to_file) files.file(csv, "--csv", a.scene);
   const Progress p(a.quiet);
-  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  std::ostream* progress = p.stream();
   const auto one = single_solver(solver, s.response_request);
   if (!one) {
     if (to_file)
@@ -228,7 +229,7 @@ int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const 
   const ring::Scene s = load(a);
   if (!s.statics) throw ring::InputError(a.scene, "static", "the scene has no [static] section");
   const Progress p(a.quiet);
-  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  std::ostream* progress = p.stream();
   const auto one = single_solver(solver, s.static_request);
   if (!one) {
     const NonlinearRun r = run_nonlinear(s, "", progress);
@@ -248,7 +249,7 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   Outputs files;
   if (!out_dir.empty()) files.folder(out_dir, "--out", kConvergeNames);
   files.open();
-  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  std::ostream* progress = p.stream();
   const ConvergenceStudy c = converge(s, compute_references(s, progress), progress);
   std::cout << convergence_text(c);
   if (!out_dir.empty()) {
@@ -268,7 +269,7 @@ int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   Outputs files;
   if (!out_dir.empty()) files.folder(out_dir, "--out", kBenchNames);
   files.open();
-  std::ostream* progress = p.on() ? &std::cerr : nullptr;
+  std::ostream* progress = p.stream();
   // The modal sweep for the solvers whose modes the scene lists, the nonlinear sweeps for
   // its [response] and [static].
   std::optional<BenchStudy> modal_study;

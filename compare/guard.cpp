@@ -15,11 +15,9 @@ std::string gib(double bytes) { return fmt::format("{:.3g} GiB", bytes / double(
 }  // namespace
 
 // The process itself, measured as the peak RSS of `ringvib modes` / `respond` / `static`
-// on the smallest models: 7.8-8.8 MiB; with the FE plug-in (deal.II and its libraries,
-// loaded when a scene uses the FE solver) 162.7 MiB. The solvers' own memory
-// (SolverEntry::memory) comes on top.
+// on the smallest models: 7.8-8.8 MiB. The code a solver loads on first use
+// (SolverEntry::code_bytes) and the solvers' own memory (SolverEntry::memory) come on top.
 constexpr double kProcessBytes = 9.5 * (1 << 20);
-constexpr double kFemPluginBytes = 160.0 * (1 << 20);
 
 Estimate estimate_memory(const ring::Scene& s) {
   Estimate worst;
@@ -36,10 +34,10 @@ Estimate estimate_memory(const ring::Scene& s) {
     const double steps = std::ceil(s.response->t_end / s.response->dt) + 1.0;
     history = steps * 48.0 * (7.0 + 2.0 * s.response->record.size());
   }
-  bool fem = false;
+  double code = 0.0;
   for (const SolverEntry& e : registry()) {
     const bool modes = s.needs(e.name), nonlinear = s.runs_nonlinear(e.name);
-    if ((modes || nonlinear) && e.name == s.reference_solver) fem = true;
+    if (modes || nonlinear) code += e.code_bytes;
     if (e.memory && modes) consider(e.memory(s, s.modes.count), e.size_key, "the " + e.name + " modes");
     if (e.memory && nonlinear) {
       // Every response solver's history is kept until the comparison is written.
@@ -50,7 +48,7 @@ Estimate estimate_memory(const ring::Scene& s) {
     }
   }
   if (s.response) consider(history * s.response_request.solvers.size(), "response.t_end", "the response history");
-  worst.bytes += kProcessBytes + (fem ? kFemPluginBytes : 0.0);
+  worst.bytes += kProcessBytes + code;
   return worst;
 }
 

@@ -45,12 +45,16 @@ struct SolverEntry {
   /// Estimated peak memory (bytes) of `count` modes (count 0: the nonlinear solves) under
   /// the scene's options, for the cost guard (guard.hpp); calibrated in the README.
   std::function<double(const ring::Scene&, int count)> memory;
+  /// Memory of the code the solver loads on first use (a plug-in and its libraries), for
+  /// the cost guard; 0 for a solver linked into ringvib.
+  double code_bytes = 0.0;
   /// Its column of the paper's Table 1 (corrected values), if it has one.
   std::function<std::optional<double>(const ring::PaperRow&)> paper;
 
-  /// Everything the solver refuses before it computes, for every analysis the scene asks
-  /// of it (its modes, statics, response, or the reference). Throws ring::InputError. O(1).
-  std::function<void(const ring::Scene&)> check;
+  /// What the solver refuses before it computes, per analysis, under the scene's options
+  /// (check_scene calls them for the analyses the scene runs with the solver, and with
+  /// reference_scene for the reference). Throw std::invalid_argument. O(1). Empty: none.
+  std::function<void(const ring::Scene&)> check_modes, check_static, check_response;
 
   /// Analyses. Each throws ring::InputError (exit 2) for a request that cannot work and
   /// ring::NumericalError (exit 3; ring::IntegrationFailure for a response) on failure.
@@ -77,9 +81,13 @@ ring::Scene load_scene(const std::string& path, const std::vector<std::string>& 
 ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
                         const std::vector<std::string>& overrides = {});
 
-/// Every solver's check (SolverEntry::check) for the analyses the scene runs with it: the
-/// scene is refused (ring::InputError, exit 2) before any solver runs, never after.
+/// Every solver's checks (SolverEntry::check_*) for the analyses the scene runs with it,
+/// and the reference solver's for the references it asks for: the scene is refused
+/// (ring::InputError naming the solver or analysis, exit 2) before any solver runs.
 void check_scene(const ring::Scene& scene);
+
+/// The scene the converged references run: the reference solver's reference option on.
+ring::Scene reference_scene(const ring::Scene& scene);
 
 /// The `count` lowest elastic modes of a solver with the scene's options.
 ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count);

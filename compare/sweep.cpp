@@ -142,36 +142,42 @@ double rows_of(const ring::Scene& s) {
 /// Checks every case (exit 2 naming the case) and the sweep's own memory: the table
 /// (a row is ~ 300 bytes in memory plus its CSV and JSON text, ~ 200 bytes per varied
 /// value) and the cases running at once (`jobs` of the largest per-case estimate).
-void check_sweep_cost(const std::string& text, const CommonArgs& a,
-                      const std::vector<std::vector<std::string>>& overrides, const std::vector<std::string>& keys,
-                      int jobs) {
+/// Each case's scene is parsed and checked once here; returns the rows each case adds
+/// to the table (rows_of), which --resume needs.
+std::vector<double> check_sweep_cost(const std::string& text, const CommonArgs& a,
+                                     const std::vector<std::vector<std::string>>& overrides,
+                                     const std::vector<std::string>& keys, int jobs) {
   const double budget = a.max_memory_gib * double(1ull << 30);
   auto describe = [&](std::size_t i) {
     std::string which;
     for (const auto& x : overrides[i]) which += (which.empty() ? "" : ", ") + x;
     return "--vary case " + std::to_string(i) + " (" + which + ")";
   };
-  // The table first, from the first case, so that 10^6 cases are refused before 10^6 parses.
   const double per_row = 800.0 + 200.0 * double(keys.size());
-  double table = 0.0;
-  try {
-    table = double(overrides.size()) * rows_of(case_scene(text, a, overrides.front())) * per_row;
-  } catch (const ring::InputError& e) {
-    throw ring::InputError("", describe(0), e.what());
-  }
-  if (!a.force && table > budget)
-    throw ring::InputError("", "--vary",
-                           std::to_string(overrides.size()) + " cases: the sweep's table would need about " +
-                               sig4(table / double(1ull << 30)) + " GiB, more than the budget of " +
-                               sig4(a.max_memory_gib) + " GiB (fewer values, --max-memory GiB, or --force)");
+  auto refuse_table = [&](double table) {
+    if (!a.force && table > budget)
+      throw ring::InputError("", "--vary",
+                             std::to_string(overrides.size()) + " cases: the sweep's table would need about " +
+                                 sig4(table / double(1ull << 30)) + " GiB, more than the budget of " +
+                                 sig4(a.max_memory_gib) + " GiB (fewer values, --max-memory GiB, or --force)");
+  };
+  std::vector<double> rows(overrides.size());
   double largest = 0.0;
   for (std::size_t i = 0; i < overrides.size(); ++i) {
     try {
-      largest = std::max(largest, estimate_memory(case_scene(text, a, overrides[i])).bytes);
+      const ring::Scene s = case_scene(text, a, overrides[i]);
+      rows[i] = rows_of(s);
+      largest = std::max(largest, estimate_memory(s).bytes);
     } catch (const ring::InputError& e) {
       throw ring::InputError("", describe(i), e.what());
     }
+    // The first case's table times the count first, so that 10^6 cases of a scene whose
+    // table cannot fit are refused before 10^6 parses.
+    if (i == 0) refuse_table(double(overrides.size()) * rows[0] * per_row);
   }
+  double table = 0.0;
+  for (double r : rows) table += r * per_row;
+  refuse_table(table);
   const double at_once = std::min<double>(jobs, double(overrides.size())) * largest;
   if (!a.force && table + at_once > budget)
     throw ring::InputError("", "-j",
@@ -179,6 +185,7 @@ void check_sweep_cost(const std::string& text, const CommonArgs& a,
                                sig4((table + at_once) / double(1ull << 30)) + " GiB with the table, more than the "
                                "budget of " + sig4(a.max_memory_gib) + " GiB (fewer jobs with -j N, --max-memory "
                                "GiB, or --force)");
+  return rows;
 }
 
 }  // namespace
@@ -487,15 +494,14 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
     overrides.push_back(std::move(o));
   }
   const int jobs = distributed ? 1 : args.jobs > 0 ? args.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  check_sweep_cost(text, a, overrides, keys, jobs);
+  const std::vector<double> rows_per_case = check_sweep_cost(text, a, overrides, keys, jobs);
   Outputs files;
   if (!args.out.empty()) files.folder(args.out, "--out", {"sweep"});
   if (args.resume && args.out.empty()) throw ring::InputError("", "--resume", "needs --out DIR (the sweep to resume)");
   if (root) files.open();  // locks DIR before --resume reads it
   std::map<std::vector<std::string>, std::vector<SweepRow>> done;
   if (args.resume)
-    done = done_cases(args.out + "/sweep.csv", keys, cases,
-                      [&](std::size_t i) { return rows_of(case_scene(text, a, overrides[i])); });
+    done = done_cases(args.out + "/sweep.csv", keys, cases, [&](std::size_t i) { return rows_per_case[i]; });
   std::vector<int> todo;
   for (std::size_t i = 0; i < cases.size(); ++i)
     if (!done.count(cases[i])) todo.push_back(static_cast<int>(i));

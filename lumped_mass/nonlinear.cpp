@@ -302,10 +302,10 @@ int load_hinge(const Chain& c, const ring::PointLoad& load, const std::string& k
   return h;
 }
 
-std::string contact_message(const Chain& c, const Contact& k) {
+/// Where the ring touches itself: the two hinges and their distance.
+std::string contact_where(const Chain& c, const Contact& k) {
   std::ostringstream s;
-  s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth
-    << " m): the ring touches itself, and the chain model has no contact";
+  s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
   return s.str();
 }
 
@@ -368,7 +368,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
     ++out.steps;
     const Contact k = closest_nonadjacent(c, x);
     if (k.distance < c.depth)
-      throw ring::NumericalError("lumped statics: at load factor " + std::to_string(s) + " " + contact_message(c, k));
+      throw ring::NumericalError("lumped statics: at load factor " + std::to_string(s) + " " + contact_where(c, k) +
+                                 ": the ring touches itself, and the chain model has no contact");
     ds = std::min(2.0 * ds, 1.0 / statics.steps);
   }
   for (std::size_t p = 0; p < rec.size(); ++p) {
@@ -486,10 +487,7 @@ class MidpointStepper : public paths::Stepper {
   std::optional<std::string> contact() const override {
     const Contact k = closest_nonadjacent(c_, x_);
     if (k.distance >= c_.depth) return std::nullopt;
-    std::ostringstream s;
-    s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c_.depth
-      << " m)";
-    return s.str();
+    return contact_where(c_, k);
   }
 
  private:

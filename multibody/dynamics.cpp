@@ -25,9 +25,6 @@ using detail::Problem;
 using detail::State;
 using detail::StepOutcome;
 
-/// Segments from which the contact test uses the grid of closest_nonadjacent_grid:
-/// below, the O(n^2) box loop is as fast (both well under the step's cost).
-constexpr int kGridContact = 128;
 
 /// The chain's newmark and generalized-alpha steps for the time-stepping driver
 /// (paths/time_stepping.hpp): the dense or O(n) Newton backend, the dead load's work
@@ -90,10 +87,7 @@ class ChainStepper : public paths::Stepper {
   }
 
   std::optional<std::string> contact() const override {
-    // Above kGridContact segments the uniform grid (same pairs, same result, O(n)).
-    const Eigen::Matrix2Xd hp = chain_.hinge_positions(s_.q);
-    const auto cp = chain_.n() >= kGridContact ? detail::closest_nonadjacent_grid(hp, chain_.l(), gap_, depth_)
-                                               : detail::closest_nonadjacent(hp, gap_, depth_);
+    const auto cp = detail::closest_contact(chain_.hinge_positions(s_.q), chain_.l(), gap_, depth_);
     if (cp.distance >= depth_) return std::nullopt;
     std::ostringstream m;
     m << detail::describe_contact(cp) << " (section depth " << depth_ << " m)";

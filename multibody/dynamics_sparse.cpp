@@ -286,6 +286,11 @@ bool SparseSaddle::solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Ma
   return X.allFinite() && Y.allFinite();
 }
 
+ClosestPair closest_contact(const Eigen::Matrix2Xd& hinges, double l, int min_gap, double reach) {
+  return hinges.cols() >= kGridContact ? closest_nonadjacent_grid(hinges, l, min_gap, reach)
+                                       : closest_nonadjacent(hinges, min_gap, reach);
+}
+
 ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& p, double l, int min_gap,
                                      double reach) {
   const int n = static_cast<int>(p.cols());

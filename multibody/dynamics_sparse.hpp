@@ -131,4 +131,10 @@ class SparseSaddle {
 ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& hinges, double l, int min_gap,
                                      double reach);
 
+/// The contact test of every response step: closest_nonadjacent below kGridContact
+/// segments (the O(n^2) box loop is as fast there, both well under a step's cost), the
+/// grid above (same pairs, same result, O(n)).
+constexpr int kGridContact = 128;
+ClosestPair closest_contact(const Eigen::Matrix2Xd& hinges, double l, int min_gap, double reach);
+
 }  // namespace multibody::detail

@@ -172,8 +172,7 @@ class EnergyMomentumStepper : public paths::Stepper {
   std::optional<std::string> contact() const override {
     Eigen::Matrix2Xd hp(2, c_.n);
     for (int j = 0; j < c_.n; ++j) hp.col(j) = hinge(x_, j);
-    const auto cp = c_.n >= 128 ? detail::closest_nonadjacent_grid(hp, c_.l, gap_, depth_)
-                                : detail::closest_nonadjacent(hp, gap_, depth_);
+    const auto cp = detail::closest_contact(hp, c_.l, gap_, depth_);
     if (cp.distance >= depth_) return std::nullopt;
     return detail::describe_contact(cp);
   }
