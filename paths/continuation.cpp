@@ -1,0 +1,334 @@
+// The continuation driver (continuation.hpp): load stepping, arc-length continuation,
+// the limit point, end events.
+#include "paths/continuation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace paths {
+namespace {
+
+constexpr int kMaxNewton = 25;
+/// The arc length adapts towards this many corrector iterations per step.
+constexpr int kTargetIterations = 5;
+/// A failed arc step halves the length; this many failures in a row end the path.
+constexpr int kMaxArcHalvings = 30;
+/// The limit point's bracket (in arc length) is narrowed to this fraction of the step
+/// that contains it; the load factor there is then exact to ~|s''| (1e-6 len)^2.
+constexpr double kLimitBracket = 1e-6;
+constexpr int kMaxLimitEvaluations = 60;
+/// A corrector's change of the load factor below this is converged (s is O(1)).
+constexpr double kLoadTolerance = 1e-12;
+
+std::string number(double x, int digits = 9) {
+  std::ostringstream o;
+  o << std::setprecision(digits) << x;
+  return o.str();
+}
+
+/// The path's unit tangent at a state (unit on the arc unknowns u), oriented forward,
+/// and ds/dtau along it (tau: the arc length).
+struct Tangent {
+  Vector t;
+  double rate = 0.0;
+};
+
+/// One path from rest: run() is load_stepping(), then continuation() if needed.
+class Follower {
+ public:
+  Follower(Equilibrium& eq, const Continuation& options)
+      : eq_(eq), options_(options), N_(eq.size()), m_(eq.arc_size()), ds_(1.0 / std::max(1, options.steps)) {}
+
+  Trace run(const State& rest) {
+    State state = rest;
+    out_.state = rest;
+    Vector last_step;
+    if (!options_.from_start && load_stepping(state, last_step)) return std::move(out_);
+    if (last_step.size() == 0) {
+      // No load step taken: the load-raising direction is dz/ds at the state itself.
+      if (!load_tangent(state, last_step)) {
+        stall(state.s);
+        return std::move(out_);
+      }
+    }
+    continuation(state, last_step);
+    return std::move(out_);
+  }
+
+ private:
+  /// Newton at the fixed load factor x.s from x.z (updated). Iterations, or -1. With
+  /// `dzds`, also dz/ds at the solution, from the last factorization.
+  int newton_at(State& x, Vector* dzds) {
+    const Vector start = x.z, w = Vector::Zero(m_);
+    for (int it = 1; it <= kMaxNewton; ++it) {
+      if (!eq_.linearize(x, w, 1.0, r_)) return -1;
+      y_.resize(N_ + 1);
+      y_.head(N_) = -r_;
+      y_(N_) = 0.0;
+      if (!eq_.solve(y_)) return -1;
+      x.z += y_.head(N_);
+      if (eq_.move(x.z - start) > 1.0) return -1;  // left the basin
+      if (eq_.converged(y_.head(N_), it)) {
+        if (dzds && !solve_unit(*dzds)) return -1;
+        return it;
+      }
+    }
+    return -1;
+  }
+
+  /// The last factorization applied to (0, 1): the tangent of its border.
+  bool solve_unit(Vector& t) {
+    y_.setZero(N_ + 1);
+    y_(N_) = 1.0;
+    if (!eq_.solve(y_)) return false;
+    t = y_;
+    return true;
+  }
+
+  /// dz/ds at the equilibrium x (one factorization with the border of a fixed load).
+  bool load_tangent(const State& x, Vector& dzds) {
+    if (!eq_.linearize(x, Vector::Zero(m_), 1.0, r_) || !solve_unit(dzds)) return false;
+    dzds.conservativeResize(N_);
+    return true;
+  }
+
+  /// A solution y of a bordered system whose border was w (w . y_u = y_s's row) as the
+  /// path's unit tangent: normalized on u, rate = ds/dtau.
+  bool to_tangent(const Vector& y, Tangent& out) const {
+    const double norm = y.head(m_).norm();
+    if (!std::isfinite(norm) || !std::isfinite(y(N_)) || norm == 0.0) return false;
+    out.t = y.head(N_) / norm;
+    out.rate = y(N_) / norm;
+    return true;
+  }
+
+  /// The tangent at x oriented by `forward` (its u part): one factorization.
+  bool tangent_at(const State& x, const Vector& forward, Tangent& out) {
+    const Vector w = forward.head(m_).normalized();
+    Vector y;
+    return eq_.linearize(x, w, 0.0, r_) && solve_unit(y) && to_tangent(y, out);
+  }
+
+  /// One arc step of length `len` from `from` along `tangent` (the corrector of the
+  /// header); false (`to` unusable) when it does not converge. On success the last
+  /// factorization's border is the chord: `ahead` is the tangent at `to`, oriented by it.
+  bool arc_step(const State& from, const Tangent& tangent, double len, State& to, int& iterations, Tangent& ahead) {
+    to.z = from.z + len * tangent.t;
+    to.s = from.s + len * tangent.rate;
+    const Vector predicted = to.z.head(m_);
+    for (iterations = 1; iterations <= kMaxNewton; ++iterations) {
+      const Vector d = (to.z.head(m_) - from.z.head(m_)) / len;
+      if (!eq_.linearize(to, d, 0.0, r_)) return false;
+      y_.resize(N_ + 1);
+      y_.head(N_) = -r_;
+      y_(N_) = -0.5 * len * (d.squaredNorm() - 1.0);
+      if (!eq_.solve(y_)) return false;
+      to.z += y_.head(N_);
+      to.s += y_(N_);
+      if (!std::isfinite(to.s)) return false;
+      // A corrector that moves a whole step away from the predicted point has left it
+      // for another part of the path (or of the sphere): the step is too long.
+      if ((to.z.head(m_) - predicted).norm() > len) return false;
+      if (eq_.converged(y_.head(N_), iterations) && std::abs(y_(N_)) <= kLoadTolerance) {
+        Vector y;
+        return solve_unit(y) && to_tangent(y, ahead);
+      }
+    }
+    return false;
+  }
+
+  /// Records the accepted `to`; false (and the trace ended) when the ring touched itself.
+  bool accept(const State& from, const State& to) {
+    ++out_.steps;
+    if (const auto touch = eq_.accept(from, to)) {
+      out_.end = Trace::End::contact;
+      out_.end_load = from.s + touch->at * (to.s - from.s);
+      out_.contact = touch->where;
+      out_.state = from;
+      return false;
+    }
+    out_.state = to;
+    return true;
+  }
+
+  void reached(const State& x) {
+    out_.end = Trace::End::reached;
+    out_.end_load = x.s;
+    out_.state = x;
+  }
+
+  void stall(double s) {
+    out_.end = Trace::End::stalled;
+    out_.end_load = s;
+  }
+
+  /// Load stepping from the state; false when a load level cannot be passed (the state
+  /// is then the last equilibrium and `last_step` the change of z into it).
+  bool load_stepping(State& state, Vector& last_step) {
+    double step = ds_;
+    State trial;
+    Vector dzds;
+    while (state.s < 1.0 - 1e-14) {
+      trial.z = state.z;
+      trial.s = std::min(1.0, state.s + step);
+      const int it = newton_at(trial, &dzds);
+      // A step whose end, looked at in the direction of the step, has the load falling
+      // has jumped over a limit point onto the path beyond it: like a failed Newton, it
+      // is cut. (A step that moves nothing, under a zero load, jumped nowhere.)
+      const Vector change = trial.z - state.z;
+      const bool jumped = it >= 0 && change.head(m_).norm() > 0.0 && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
+      if (it < 0 || jumped) {
+        step *= 0.5;
+        if (step < ds_ / (1 << options_.max_halvings)) return false;
+        continue;
+      }
+      out_.iterations += it;
+      const State from = state;
+      state = trial;
+      last_step = change;
+      if (!accept(from, state)) return true;
+      step = std::min(ds_, 2.0 * step);
+    }
+    reached(state);
+    return true;
+  }
+
+  /// Narrows the first maximum of s between `from` (rate > 0) and the step of length
+  /// `len` whose end has rate `rate_end` <= 0; returns the largest s met.
+  double locate_limit(const State& from, const Tangent& tangent, double len, double s_end, double rate_end) {
+    // Regula falsi with the Illinois modification on the rate ds/dtau as a function of
+    // the arc length tau from `from`: each evaluation is an arc step of length tau and
+    // the tangent there. ds/dtau is smooth and crosses zero linearly at a limit point.
+    double lo = 0.0, hi = len, r_lo = tangent.rate, r_hi = rate_end, best = std::max(from.s, s_end);
+    int side = 0;
+    State x;
+    Tangent tx;
+    auto evaluate = [&](double tau) {
+      int it = 0;
+      if (!arc_step(from, tangent, tau, x, it, tx)) return false;
+      out_.iterations += it;
+      return true;
+    };
+    for (int k = 0; k < kMaxLimitEvaluations && hi - lo > kLimitBracket * len; ++k) {
+      double tau = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
+      if (!(tau > lo && tau < hi)) tau = 0.5 * (lo + hi);
+      // A step inside a converged one should converge; if not, bisect instead.
+      if (!evaluate(tau)) {
+        tau = 0.5 * (lo + hi);
+        if (!evaluate(tau)) break;
+      }
+      best = std::max(best, x.s);
+      if (tx.rate > 0.0) {
+        lo = tau;
+        r_lo = tx.rate;
+        if (side == 1) r_hi *= 0.5;
+        side = 1;
+      } else {
+        hi = tau;
+        r_hi = tx.rate;
+        if (side == -1) r_lo *= 0.5;
+        side = -1;
+      }
+    }
+    return best;
+  }
+
+  /// Arc-length continuation from `state` in the direction `forward` (a change of z)
+  /// until the path reaches the full load or ends.
+  void continuation(State state, const Vector& forward) {
+    out_.continuation = true;
+    out_.stepping_stopped = state.s;
+    Tangent tangent;
+    if (!tangent_at(state, forward, tangent)) {
+      stall(state.s);
+      return;
+    }
+    // First length: the last load step's change, or (from rest) the arc that raises the
+    // load by one increment along the tangent; within the model's basin.
+    double len = out_.steps > 0 ? forward.head(m_).norm() : ds_ / std::max(std::abs(tangent.rate), 1e-300);
+    if (const double m = eq_.move(len * tangent.t); m > 1.0) len /= m;
+    int halvings = 0;
+    State next;
+    Tangent ahead;
+    while (out_.arc_steps < options_.max_arc_steps) {
+      int it = 0;
+      if (!arc_step(state, tangent, len, next, it, ahead)) {
+        if (++halvings > kMaxArcHalvings) {
+          stall(state.s);
+          return;
+        }
+        len *= 0.5;
+        continue;
+      }
+      halvings = 0;
+      out_.iterations += it;
+      if (state.s < 1.0 && next.s >= 1.0) {
+        // The path crosses the full load: Newton at s = 1 from the interpolated point.
+        const double w = (1.0 - state.s) / (next.s - state.s);
+        State full{state.z + w * (next.z - state.z), 1.0};
+        const int f = newton_at(full, nullptr);
+        if (f >= 0) {
+          out_.iterations += f;
+          ++out_.arc_steps;
+          if (accept(state, full)) reached(full);
+          return;
+        }
+      }
+      ++out_.arc_steps;
+      if (!accept(state, next)) return;
+      if (std::isnan(out_.limit) && tangent.rate > 0.0 && ahead.rate <= 0.0)
+        out_.limit = locate_limit(state, tangent, len, next.s, ahead.rate);
+      // The next length: towards kTargetIterations corrector iterations (at most doubled
+      // or halved), shorter (down to half) after a load change above one increment, and
+      // a chord within the model's basin.
+      double scale = std::clamp(std::sqrt(static_cast<double>(kTargetIterations) / it), 0.5, 2.0);
+      const double load_change = std::abs(next.s - state.s);
+      if (load_change > 0.0) scale = std::min(scale, std::max(0.5, ds_ / load_change));
+      scale = std::min(scale, 1.0 / eq_.move(next.z - state.z));
+      len *= scale;
+      state = std::move(next);
+      tangent = std::move(ahead);
+    }
+    out_.end = Trace::End::arc_steps_exhausted;
+    out_.end_load = state.s;
+  }
+
+  Equilibrium& eq_;
+  const Continuation& options_;
+  const Eigen::Index N_, m_;
+  const double ds_;  ///< the requested load increment 1 / steps
+  Vector r_, y_;
+  Trace out_;
+};
+
+}  // namespace
+
+Trace follow(Equilibrium& eq, const State& rest, const Continuation& options) { return Follower(eq, options).run(rest); }
+
+std::string failure_message(const Trace& t, const Continuation& options) {
+  const bool limit = !std::isnan(t.limit);
+  std::string m;
+  if (limit) m = "past a limit point at load factor " + number(t.limit) + ", the equilibrium path (arc-length continuation) ";
+  const std::string stopped =
+      limit ? "" : "load stepping stopped at load factor " + number(t.stepping_stopped) + " and the arc-length continuation ";
+  switch (t.end) {
+    case Trace::End::contact:
+      m += std::string(limit ? "reaches self-contact: " : "") + "the ring touches itself at load factor " +
+           number(t.end_load) + ": " + t.contact;
+      break;
+    case Trace::End::arc_steps_exhausted:
+      m += stopped + "did not come back to the full load within " + std::to_string(options.max_arc_steps) +
+           " arc-length steps (reached load factor " + number(t.end_load) + ")";
+      break;
+    case Trace::End::stalled:
+      m += stopped + "stalled at load factor " + number(t.end_load) + " (the arc length was halved " +
+           std::to_string(kMaxArcHalvings) + " times without a converged step)";
+      break;
+    case Trace::End::reached: m += "reached the full load"; break;
+  }
+  return m;
+}
+
+}  // namespace paths

@@ -1,0 +1,123 @@
+// The one continuation driver of the nonlinear statics, shared by every solver. It holds
+// the policy; a solver supplies its equilibrium through `Equilibrium` (its residual and
+// its bordered Jacobian at a point), as the time-stepping driver gets one step through
+// `Stepper`:
+//
+// - **Load stepping** from rest to the full load in `steps` increments, each solved by
+//   full Newton at a fixed load factor s. A load level that Newton cannot reach, or
+//   whose equilibrium, looked at in the direction of the step, has the load falling
+//   (the step jumped over a limit point onto the path beyond it), is retried with half
+//   the increment; the increment doubles again after each success, never beyond
+//   1 / steps. A level that 1 / 2^max_halvings of the increment cannot pass hands over to
+//   the continuation.
+// - **Arc-length continuation** (Crisfield 1981, cylindrical: the Euclidean length of
+//   the change of the displacement unknowns u per step is fixed, the load factor is an
+//   unknown): predictor along the path's tangent, corrector by Newton on the
+//   equilibrium bordered by the arc condition c = (|u - u_0|^2 - len^2) / (2 len) = 0.
+//   Its Jacobian [J dR/ds; (u - u_0)^T / len 0] is regular at a limit point, where J
+//   alone is singular; the solver factorizes it as it can. The length adapts towards
+//   five corrector iterations per step (at most doubled or halved), shorter after a
+//   load change above one increment, and so that no step moves the model more than its
+//   basin (Equilibrium::move); a failed step halves it, 30 failures in a row end the
+//   path (stalled). When the path crosses the full load, Newton at s = 1 from the
+//   interpolated point finishes it.
+// - **The limit point** (the first maximum of s along the path) is located by regula
+//   falsi (Illinois) on ds/dtau over the arc step that contains it, to 1e-6 of the step.
+// - **Self-contact** is the model's hook (Equilibrium::accept), called for every
+//   accepted equilibrium with the one before it: contact ends the path, as a result
+//   the caller reports.
+//
+// A Newton solve (a load level or an arc step) fails after 25 iterations, on a
+// non-finite value or a failed factorization, or when its iterate leaves the basin of
+// the point it started from (Equilibrium::move > 1); an arc corrector also fails when it
+// moves farther than the step's length from its predicted point (it left for another
+// part of the path).
+//
+// Cost: per Newton iteration one linearization and factorization of the model; one
+// more solve with it per accepted step (the tangent).
+//
+// Usage:
+//   class MyEquilibrium : public paths::Equilibrium { ... };
+//   paths::Trace t = paths::follow(eq, {.steps = 20});
+//   if (t.end != paths::Trace::End::reached) throw ring::NumericalError("x: " + paths::failure_message(t, options));
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace paths {
+
+using Vector = Eigen::VectorXd;
+
+/// A point (z, s) of the path: the model's unknowns and the load factor.
+struct State {
+  Vector z;
+  double s = 0.0;
+};
+
+/// What an accepted step met: contact, somewhere along the way between two equilibria.
+struct Touch {
+  double at = 1.0;    ///< where along the step, 0 (its start) to 1 (its end)
+  std::string where;  ///< the model's description (which parts, how close, why it ends)
+};
+
+/// One discretization's equilibrium R(z, s) = 0 at load factor s. The unknowns
+/// z = (u, m): u, the first arc_size() of them, displacements or angles (they measure
+/// the arc length), m the rest (constraint multipliers).
+class Equilibrium {
+ public:
+  virtual ~Equilibrium() = default;
+  virtual Eigen::Index size() const = 0;
+  virtual Eigen::Index arc_size() const { return size(); }
+  /// Writes R(x.z, x.s) into r (size()) and factorizes the bordered Jacobian
+  ///   B = [dR/dz  dR/ds; (w^T 0)  ws]      (w: arc_size() values, on u only).
+  /// False when R is not finite or B cannot be factorized.
+  virtual bool linearize(const State& x, const Vector& w, double ws, Vector& r) = 0;
+  /// y := B^-1 y (size() + 1 values) with the last factorization; false when the
+  /// result is not finite.
+  virtual bool solve(Vector& y) = 0;
+  /// The size of a change dz of the unknowns against what one step may move (the
+  /// basin of a Newton solve: 1 is the most).
+  virtual double move(const Vector& dz) const = 0;
+  /// Newton's stopping rule after the correction dz (`iteration` 1, 2, ...: a rule with
+  /// memory starts afresh at 1).
+  virtual bool converged(const Vector& dz, int iteration) = 0;
+  /// An accepted equilibrium `to`, reached from the accepted `from`: the model records
+  /// it and says whether the ring touched itself on the way.
+  virtual std::optional<Touch> accept(const State& from, const State& to) = 0;
+};
+
+/// The policy knobs.
+struct Continuation {
+  int steps = 20;            ///< load increments from rest to the full load (>= 1)
+  bool from_start = false;   ///< arc-length continuation from rest (no load stepping)
+  int max_arc_steps = 2000;  ///< arc steps before the path is declared not to come back
+  int max_halvings = 10;     ///< a load increment halved this often hands over to the arc
+};
+
+/// How a path ended and where.
+struct Trace {
+  enum class End { reached, contact, arc_steps_exhausted, stalled };
+  End end = End::reached;
+  State state;     ///< the last accepted equilibrium (reached: at s = 1)
+  int steps = 0;   ///< accepted load and arc steps
+  int arc_steps = 0;
+  int iterations = 0;  ///< Newton iterations of accepted steps and of the limit's location
+  bool continuation = false;  ///< the arc-length continuation ran
+  double limit = std::numeric_limits<double>::quiet_NaN();  ///< first maximum of s, if met
+  double stepping_stopped = 0.0;  ///< load factor where load stepping handed over
+  double end_load = 0.0;          ///< where the path ended (contact: the load factor of the touch)
+  std::string contact;            ///< Touch::where
+};
+
+/// Follows the path of `eq` from `rest` (an equilibrium at s = 0) to the full load
+/// (s = 1) or to an end event; never throws for a path that ends early (see Trace::end).
+Trace follow(Equilibrium& eq, const State& rest, const Continuation& options);
+
+/// Why a path that did not reach the full load ended, in one sentence without the
+/// solver's name: "past a limit point at load factor 0.94, the equilibrium path ...".
+std::string failure_message(const Trace& t, const Continuation& options);
+
+}  // namespace paths

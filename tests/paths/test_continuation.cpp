@@ -1,0 +1,149 @@
+// The continuation driver (paths/continuation.hpp) against closed forms: a one-degree
+// snap-through spring f(u) = u (u - 1)(u - 2) under the load s P. Its equilibrium path
+// f(u) = s P has a maximum of the load at u = 1 - 1/sqrt(3), f = 2 / (3 sqrt(3)), a
+// minimum at u = 1 + 1/sqrt(3), and rises again beyond: load stepping must stop at the
+// maximum, the arc-length continuation carry the path through both turns to the full
+// load, and the limit point come out at its closed-form value. A second unknown tied to
+// the first by a multiplier checks that only the arc unknowns measure the arc.
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <cmath>
+#include <functional>
+
+#include "paths/continuation.hpp"
+
+namespace {
+
+double f(double u) { return u * (u - 1.0) * (u - 2.0); }
+double df(double u) { return 3.0 * u * u - 6.0 * u + 2.0; }
+
+/// Unknowns (u, lambda) with R = (f(u) - s P + lambda, lambda - c u): the multiplier-like
+/// second unknown carries c u, so the path is f(u) + c u = s P; only u measures the arc.
+class Snap : public paths::Equilibrium {
+ public:
+  explicit Snap(double P, double c = 0.0) : P_(P), c_(c) {}
+  std::function<bool(const paths::State&)> touches;  ///< contact hook: true at a state that touches
+  std::vector<paths::State> accepted;
+
+  Eigen::Index size() const override { return 2; }
+  Eigen::Index arc_size() const override { return 1; }
+  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const double u = x.z(0), lambda = x.z(1);
+    r.resize(2);
+    r << f(u) - x.s * P_ + lambda, lambda - c_ * u;
+    B_ << df(u), 1.0, -P_,  //
+        -c_, 1.0, 0.0,      //
+        w(0), 0.0, ws;
+    lu_.compute(B_);
+    return std::abs(lu_.determinant()) > 1e-300;
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y);
+    return y.allFinite();
+  }
+  double move(const paths::Vector& dz) const override { return std::abs(dz(0)) / 0.5; }
+  bool converged(const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-13; }
+  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
+    accepted.push_back(to);
+    if (touches && touches(to)) return paths::Touch{1.0, "u passed " + std::to_string(to.z(0))};
+    (void)from;
+    return std::nullopt;
+  }
+
+ private:
+  double P_, c_;
+  Eigen::Matrix3d B_;
+  Eigen::PartialPivLU<Eigen::Matrix3d> lu_;
+};
+
+paths::State rest() { return {paths::Vector::Zero(2), 0.0}; }
+
+// The root of u^3 - 3 u^2 + 2 u = 1 beyond the minimum (Newton to round-off).
+double far_root(double P) {
+  double u = 2.5;
+  for (int k = 0; k < 50; ++k) u -= (f(u) - P) / df(u);
+  return u;
+}
+
+const double kLimit = 2.0 / (3.0 * std::sqrt(3.0));  // f at u = 1 - 1/sqrt(3)
+
+TEST(Continuation, PassesBothTurnsOfASnapThroughToTheFullLoad) {
+  Snap snap(1.0);
+  const paths::Continuation options{20};
+  const paths::Trace t = paths::follow(snap, rest(), options);
+  ASSERT_EQ(t.end, paths::Trace::End::reached) << paths::failure_message(t, options);
+  EXPECT_TRUE(t.continuation);
+  // Load stepping stops within one halved increment (1/20 / 2^10) below the limit.
+  EXPECT_LE(t.stepping_stopped, kLimit);
+  EXPECT_GT(t.stepping_stopped, kLimit - 0.05);
+  // The limit's bracket is 1e-6 of a step (~0.1): s there within |s''| (1e-7)^2 ~ 1e-13;
+  // 1e-10 allows the corrector's 1e-13 tolerance.
+  EXPECT_NEAR(t.limit, kLimit, 1e-10);
+  EXPECT_DOUBLE_EQ(t.state.s, 1.0);
+  EXPECT_NEAR(t.state.z(0), far_root(1.0), 1e-12);  // Newton at s = 1: 1e-13 correction
+  // Every accepted point is on the path (the corrector's tolerance, 1e-13 on u).
+  for (const auto& x : snap.accepted) EXPECT_NEAR(f(x.z(0)), x.s, 1e-11) << "u = " << x.z(0);
+  EXPECT_GT(t.arc_steps, 0);
+  EXPECT_EQ(t.steps, static_cast<int>(snap.accepted.size()));
+}
+
+TEST(Continuation, LoadSteppingAloneBelowTheLimitLoad) {
+  Snap snap(0.3);  // below the maximum 0.385: twenty plain load steps
+  const paths::Trace t = paths::follow(snap, rest(), {20});
+  ASSERT_EQ(t.end, paths::Trace::End::reached);
+  EXPECT_FALSE(t.continuation);
+  EXPECT_EQ(t.steps, 20);
+  EXPECT_TRUE(std::isnan(t.limit));
+  double u = 0.0;  // the root below the maximum
+  for (int k = 0; k < 50; ++k) u -= (f(u) - 0.3) / df(u);
+  EXPECT_NEAR(t.state.z(0), u, 1e-12);
+}
+
+TEST(Continuation, FromRestTheSameEquilibrium) {
+  Snap a(1.0), b(1.0);
+  paths::Continuation arc{20};
+  arc.from_start = true;
+  const paths::Trace stepped = paths::follow(a, rest(), {20}), traced = paths::follow(b, rest(), arc);
+  ASSERT_EQ(traced.end, paths::Trace::End::reached);
+  EXPECT_EQ(traced.stepping_stopped, 0.0);
+  EXPECT_NEAR(traced.state.z(0), stepped.state.z(0), 1e-12);
+  EXPECT_NEAR(traced.limit, kLimit, 1e-10);
+}
+
+// Only u measures the arc: a multiplier unknown that carries c u changes the path to
+// f(u) + c u = s P (limit at df = -c) but not the arc lengths' meaning.
+TEST(Continuation, MultipliersAreNotPartOfTheArc) {
+  const double c = 0.5, P = 1.0;
+  Snap snap(P, c);
+  const paths::Trace t = paths::follow(snap, rest(), {20});
+  ASSERT_EQ(t.end, paths::Trace::End::reached);
+  const double u1 = 1.0 - std::sqrt((1.0 - c) / 3.0);  // 3u^2 - 6u + 2 + c = 0
+  EXPECT_NEAR(t.limit, (f(u1) + c * u1) / P, 1e-10);
+  EXPECT_NEAR(t.state.z(1), c * t.state.z(0), 1e-12);
+}
+
+TEST(Continuation, ContactEndsThePathAsAResult) {
+  Snap snap(1.0);
+  snap.touches = [](const paths::State& x) { return x.z(0) > 1.2; };
+  const paths::Continuation options{20};
+  const paths::Trace t = paths::follow(snap, rest(), options);
+  ASSERT_EQ(t.end, paths::Trace::End::contact);
+  EXPECT_NEAR(t.limit, kLimit, 1e-10);  // the touch is past the maximum
+  EXPECT_LT(t.end_load, kLimit);
+  const std::string m = paths::failure_message(t, options);
+  EXPECT_NE(m.find("past a limit point at load factor 0.3849"), std::string::npos) << m;
+  EXPECT_NE(m.find("touches itself"), std::string::npos) << m;
+}
+
+TEST(Continuation, ReportsAPathThatDoesNotComeBackWithinTheArcStepBound) {
+  Snap snap(1.0);
+  paths::Continuation options{20};
+  options.max_arc_steps = 3;
+  const paths::Trace t = paths::follow(snap, rest(), options);
+  ASSERT_EQ(t.end, paths::Trace::End::arc_steps_exhausted);
+  EXPECT_EQ(t.arc_steps, 3);
+  EXPECT_NE(paths::failure_message(t, options).find("within 3 arc-length steps"), std::string::npos);
+}
+
+}  // namespace
