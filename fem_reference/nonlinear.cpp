@@ -36,13 +36,14 @@ StaticSolve static_at(const ring::RingSpec& spec, const ring::FemOptions& o, Set
   StaticSolve b = trace_path(spec, setup, st, continuation);
   auto extrapolate = [](double lo, double hi) { return 2.0 * hi - lo; };
   // Both paths meet the limit point, or (close to a limit at the full load) only one.
-  b.limit = std::isnan(a.limit) ? b.limit : std::isnan(b.limit) ? a.limit : extrapolate(a.limit, b.limit);
-  b.iterations += a.iterations;
-  if (a.end != StaticSolve::End::reached && b.end == StaticSolve::End::reached) {
-    a.limit = b.limit;  // report the path that failed
+  double &la = a.trace.limit, &lb = b.trace.limit;
+  lb = std::isnan(la) ? lb : std::isnan(lb) ? la : extrapolate(la, lb);
+  b.trace.iterations += a.trace.iterations;
+  if (!a.reached() && b.reached()) {
+    la = lb;  // report the path that failed
     return a;
   }
-  if (b.end != StaticSolve::End::reached) return b;
+  if (!b.reached()) return b;
   for (std::size_t i = 0; i < b.record.size(); ++i)
     for (int c = 0; c < 2; ++c) b.record[i][c] = extrapolate(a.record[i][c], b.record[i][c]);
   for (std::size_t i = 0; i < b.node_x.size(); ++i) {
@@ -86,8 +87,8 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   ring::StaticResult r;
   r.solver = "fem";
   r.unknowns = sol.unknowns;
-  r.steps = sol.steps;
-  r.newton_iterations = sol.iterations;
+  r.steps = sol.trace.steps;
+  r.newton_iterations = sol.trace.iterations;
   for (std::size_t i = 0; i < st.record.size(); ++i) r.displacements.push_back({st.record[i], sol.record[i][0], sol.record[i][1]});
   r.node_x = std::move(sol.node_x);
   r.node_y = std::move(sol.node_y);
@@ -101,7 +102,7 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
   const ContinuationOptions continuation;
   auto solve = [&](const Setup& s) {
     StaticSolve sol = static_at(spec, o, s, st, continuation);
-    if (sol.end != StaticSolve::End::reached) throw ring::NumericalError(failure_message(sol, continuation));
+    if (!sol.reached()) throw ring::NumericalError(failure_message(sol, continuation));
     return sol;
   };
   StaticSolve sol;
@@ -368,10 +369,10 @@ StaticPath trace_static(const ring::RingSpec& spec, const ring::FemOptions& opti
       detail::static_at(spec, options, detail::make_setup(spec, options, detail::kInextensibleBeta), statics, continuation);
   StaticPath path;
   path.points = sol.path;
-  path.limit_load_factor = sol.limit;
-  path.continuation = sol.continuation;
-  path.arc_steps = sol.arc_steps;
-  path.reached = sol.end == detail::StaticSolve::End::reached;
+  path.limit_load_factor = sol.trace.limit;
+  path.continuation = sol.trace.continuation;
+  path.arc_steps = sol.trace.arc_steps;
+  path.reached = sol.reached();
   if (path.reached) {
     path.result = detail::to_result(std::move(sol), statics);
     path.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

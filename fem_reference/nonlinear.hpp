@@ -30,36 +30,22 @@
 // forces at vertices; record points must be vertices.
 //
 // ## Statics
-// The equilibrium path from rest, s the load factor (load = s F, full load at s = 1):
-//  1. Load stepping s = k / steps with full Newton on the consistent tangent (UMFPACK).
-//     An increment is halved when Newton fails (25 iterations, a non-finite value, an
-//     iterate more than R/10 away from the start in any value of q: near a limit point
-//     Newton can land on a distant branch) or when the step has jumped over a limit:
-//     the path tangent at its end, oriented along the step, has ds/dtau <= 0. When a
-//     load level cannot be passed with 1/1024 of an increment, the continuation takes over.
-//  2. Arc-length continuation (Crisfield 1981, cylindrical: |q - q0| = len, no load term
-//     in the arc; q holds displacements only, so the norm has one unit). Predictor
-//     along the unit tangent t, from [K -F; w^T 0] (t, ts) = (0, 1) with w the last
-//     step's direction (from rest: F, which raises the load while K is positive
-//     definite), so t is oriented forward and ds/dtau = ts/|t|. Corrector: Newton on
-//     (grad V(q) - s F, (|q - q0|^2 - len^2) / (2 len)) = 0 in (q, s), whose Jacobian
-//     is the bordered matrix [K -F; (q - q0)^T/len 0], factorized as a whole by UMFPACK:
-//     it is regular at a limit point, where K alone is singular (block elimination with
-//     K^-1 would lose all digits there). A step whose corrector moves farther than len
-//     from the predicted point fails; failed steps halve len (30 times in a row end the
-//     path); len then adapts towards 5 iterations (x0.5 .. x2), shrinks (down to x0.5)
-//     after a step that changed s by more than one requested increment, and is kept to
-//     R/10 of change in any value of q per step.
-//  3. Limit point: the first accepted step across which ds/dtau changes sign from + to -
-//     brackets a maximum of s. Regula falsi (Illinois) on ds/dtau as a function of the
-//     arc length from the step's start (each evaluation an arc step and a tangent)
-//     narrows it to 1e-6 of the step; the load factor there is the limit load factor,
-//     exact to the Newton tolerance (s varies quadratically about the maximum).
-//  4. The path ends when it crosses s = 1 (Newton at s = 1 from the interpolated point:
-//     the result, as from load stepping), or with ring::NumericalError: self-contact,
-//     or no return to the full load within 2000 arc steps, or a stalled continuation.
-//     Past a limit point the message reads "past a limit point at load factor L, the
-//     equilibrium path (arc-length continuation) ..." (the multibody chain's wording).
+// The equilibrium path from rest, s the load factor (load = s F, full load at s = 1),
+// followed by the shared continuation driver (paths/continuation.hpp: load stepping,
+// Crisfield's cylindrical arc length through limit points, the limit point located,
+// self-contact as an end event). The beam supplies (static_path.cpp):
+//  - the residual grad V(q) - s F and the bordered tangent [K -F; w^T ws], factorized as
+//    a whole by UMFPACK: it is regular at a limit point, where K alone is singular
+//    (block elimination with K^-1 would lose all digits there); q holds displacements
+//    only, so the arc norm has one unit;
+//  - its basin: no value of q moves more than R/10 in a step (near a limit point Newton
+//    can otherwise land on a distant branch; and a maximum and a minimum of s are never
+//    skipped together); Newton converged at a correction below 1e-12 R;
+//  - self-contact along the chord between accepted equilibria (below).
+// A path that does not reach the full load is a ring::NumericalError: self-contact, no
+// return within 2000 arc steps, or a stalled continuation; past a limit point the
+// message reads "past a limit point at load factor L, the equilibrium path (arc-length
+// continuation) ..." (every solver's wording: the driver's).
 // Self-contact, after every accepted step: the deformed centreline, sampled at most
 // depth/2 apart, as a closed polygon; two edges whose nearest ends are at least 2 depths
 // apart along the ring and closer than the section depth (or crossing) have touched.
@@ -78,9 +64,9 @@
 // extensible (p = 5, 6): 0.9517406, 2.4e-5 lower. Where load stepping alone works
 // (P R^2/EI = 7), continuation from rest reaches the same equilibrium to 2e-13 of the
 // displacement.
-// Cost: per load step one more factorization (the tangent check); per arc step ~4-5
-// Newton iterations (assembly + sparse LU of the bordered matrix) and a self-contact
-// check, O(2 pi R / depth) expected (a uniform grid of buckets).
+// Cost: per Newton iteration an assembly and a sparse LU of the bordered matrix; per
+// accepted step one more solve (the tangent) and a self-contact check, O(2 pi R / depth)
+// expected (a uniform grid of buckets).
 //
 // ## Dynamics
 // M a + C v + f(q) = F g(t) from rest, f = grad V, C = a M + b K0 (Rayleigh, K0 the
@@ -112,6 +98,7 @@
 #include <string>
 #include <vector>
 
+#include "paths/continuation.hpp"
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
@@ -137,14 +124,9 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& op
 // ---- Internal: the traced equilibrium path (tests and diagnostics; NOT in the plug-in
 // ABI, plugin.hpp, and not used by the ringvib command). ----
 
-/// How solve_static's continuation runs (defaults: what solve_static does).
-struct ContinuationOptions {
-  /// Skip load stepping: arc-length continuation from the rest state (for tests: the same
-  /// equilibrium must come out either way).
-  bool from_start = false;
-  /// Arc-length steps allowed before the path is declared not to return to the full load.
-  int max_arc_steps = 2000;
-};
+/// How solve_static's continuation runs (defaults: what solve_static does; `steps`
+/// comes from statics.steps).
+using ContinuationOptions = paths::Continuation;
 
 /// The equilibrium path of one discretization, from rest, in path order.
 struct StaticPath {
