@@ -7,11 +7,13 @@
 #include <Eigen/Dense>
 
 #include <cassert>
+#include <memory>
 
 #include <vector>
 
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_sparse.hpp"
+#include "multibody/statics.hpp"
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 
@@ -185,9 +187,9 @@ class NewtonStop {
   double R_, previous_ = 0.0;
 };
 
-/// Nonlinear statics of `chain` in hinge positions (statics_natural.cpp): load stepping
-/// with full Newton, one BandedKkt factorization per iteration, O(n); no arc-length continuation (a
-/// limit point is a ring::NumericalError). Same result type as multibody::solve_static.
-ring::StaticResult solve_static(const Chain& chain, const ring::RingSpec& spec, const ring::StaticOptions& st);
+/// The chain's static equilibrium in hinge positions for the continuation driver
+/// (statics_natural.cpp): one BandedKkt factorization per Newton iteration, O(n).
+std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::StaticOptions& st,
+                                                              double depth);
 
 }  // namespace multibody::natural

@@ -3,28 +3,30 @@
 //
 //   K theta + G(phi)^T lambda = s Phi(phi),   g(phi) = 0,   s: load factor 0 -> 1,
 //
-// by load stepping with full Newton (analytic tangent K + sum_k lambda_k Hess g_k
-// - s dPhi/dphi). An increment whose Newton iteration fails (no convergence in 25
-// iterations, or a step turning a segment by more than 0.5 rad) is halved. When the
-// increment falls below 1e-6 of the requested one (a limit point in the load), the
-// solver switches to arc-length continuation (Crisfield 1981, cylindrical: the norm of
-// the change of the angles per step is fixed, the load factor is an unknown) from the
-// last equilibrium and follows the path through the limit point until it comes back to
-// the full load (then a final Newton at s = 1), or reports why not.
-// Self-contact (non-adjacent segments closer than the section depth) ends the solve
-// with a ring::NumericalError naming the load factor (and the limit point, if the path
-// went through one): the chain model has no contact. Measured: the diametral load along
-// the pin-roller line has no limit point up to contact (P R^2/EI ~ 7.5); a load at 90
-// deg pushing toward the centre has one at P R^2/EI ~ 7.5, past which the top snaps
-// down onto the bottom. Kinematics from multibody/chain.hpp unchanged.
+// followed from rest by the shared continuation driver (paths/continuation.hpp: load
+// stepping with full Newton, Crisfield's arc length through limit points, the limit
+// point located). Either backend supplies the equilibrium: the dense path in the
+// paper's segment angles (analytic tangent K + sum_k lambda_k Hess g_k - s dPhi/dphi,
+// the bordered matrix by dense LU), the O(n) path in hinge positions (natural.hpp: the
+// banded KKT factorization, the arc's border by block elimination). The arc length is
+// measured on the angles (dense) or the positions (O(n)); a step may turn no segment by
+// more than detail::kBasin. Self-contact (non-adjacent segments closer than the section
+// depth) ends the path with a ring::NumericalError naming the load factor (and the limit
+// point, if the path went through one): the chain model has no contact.
 #pragma once
 
+#include <memory>
+#include <optional>
+
+#include "paths/continuation.hpp"
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
 #include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
+
+class Chain;
 
 /// Segments from which MultibodyOptions::Method::automatic solves statics on the O(n)
 /// path (hinge positions, natural.hpp); below it the dense path, which alone has the
@@ -37,15 +39,36 @@ constexpr int kSparseStaticsCrossover = 1000;
 /// True when solve_static takes the O(n) path for these options.
 bool use_natural_statics(const ring::MultibodyOptions& options);
 
+namespace detail {
+
+/// The chain's static equilibrium in one backend's unknowns, for the continuation driver;
+/// the self-contact check (the end of the path) is common to both.
+class StaticEquilibrium : public paths::Equilibrium {
+ public:
+  StaticEquilibrium(const Chain& chain, double depth);
+  /// Every hinge's position for the unknowns z (ring-centred frame, m).
+  virtual Eigen::Matrix2Xd hinges(const paths::Vector& z) const = 0;
+  /// The unknowns of the undeformed ring, unloaded.
+  virtual paths::Vector rest() const = 0;
+  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override;
+
+ protected:
+  const Chain& chain_;
+  const double depth_;
+  const int gap_;
+};
+
+}  // namespace detail
+
 /// Static equilibrium under `statics.load` (its history is ignored: full load).
 /// Returns the displacements of the recorded points (ring-centred frame, m), the
 /// number of accepted load steps, the total Newton iterations, and every hinge's
 /// deformed position. Cost: O(n^3) per Newton iteration on the dense path, O(n) on the
-/// O(n) path (multibody.method = "sparse", or "auto" from kSparseStaticsCrossover).
-/// Requires a pin and a roller (otherwise the rigid rotation about the pin is free).
-/// Throws std::invalid_argument for inputs that can never work and
-/// ring::NumericalError when no equilibrium path reaches the full load or the ring
-/// touches itself.
+/// O(n) path (multibody.method = "sparse", or "auto" from kSparseStaticsCrossover); both
+/// pass limit points. Requires a pin and a roller (otherwise the rigid rotation about the
+/// pin is free). Throws std::invalid_argument for inputs that can never work and
+/// ring::NumericalError when the equilibrium path does not reach the full load (the ring
+/// touches itself; no return past a limit point).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics);
 

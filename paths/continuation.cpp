@@ -70,7 +70,7 @@ class Follower {
       if (!eq_.solve(y_)) return -1;
       x.z += y_.head(N_);
       if (eq_.move(x.z - start) > 1.0) return -1;  // left the basin
-      if (eq_.converged(y_.head(N_), it)) {
+      if (eq_.converged(x, y_.head(N_), it)) {
         if (dzds && !solve_unit(*dzds)) return -1;
         return it;
       }
@@ -131,7 +131,7 @@ class Follower {
       // A corrector that moves a whole step away from the predicted point has left it
       // for another part of the path (or of the sphere): the step is too long.
       if ((to.z.head(m_) - predicted).norm() > len) return false;
-      if (eq_.converged(y_.head(N_), iterations) && std::abs(y_(N_)) <= kLoadTolerance) {
+      if (eq_.converged(to, y_.head(N_), iterations) && std::abs(y_(N_)) <= kLoadTolerance) {
         Vector y;
         return solve_unit(y) && to_tangent(y, ahead);
       }

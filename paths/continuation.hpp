@@ -81,9 +81,9 @@ class Equilibrium {
   /// The size of a change dz of the unknowns against what one step may move (the
   /// basin of a Newton solve: 1 is the most).
   virtual double move(const Vector& dz) const = 0;
-  /// Newton's stopping rule after the correction dz (`iteration` 1, 2, ...: a rule with
-  /// memory starts afresh at 1).
-  virtual bool converged(const Vector& dz, int iteration) = 0;
+  /// Newton's stopping rule after the correction dz that reached x (`iteration` 1, 2,
+  /// ...: a rule with memory starts afresh at 1).
+  virtual bool converged(const State& x, const Vector& dz, int iteration) = 0;
   /// An accepted equilibrium `to`, reached from the accepted `from`: the model records
   /// it and says whether the ring touched itself on the way.
   virtual std::optional<Touch> accept(const State& from, const State& to) = 0;
