@@ -33,7 +33,7 @@ class BeamEquilibrium : public paths::Equilibrium {
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override;
   bool solve(paths::Vector& y) override;
   double move(const paths::Vector& dz) const override { return dz.cwiseAbs().maxCoeff() / (kMaxArcMove * radius_); }
-  bool converged(const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-12 * radius_; }
+  bool converged(const paths::State&, const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-12 * radius_; }
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override;
   /// The record and the deformed vertices at the end of a path that reached the full load.
   void finish(const paths::Vector& z);

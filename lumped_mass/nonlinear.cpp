@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "paths/continuation.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 #include "ring/errors.hpp"
@@ -311,6 +312,79 @@ std::string contact_where(const Chain& c, const Contact& k) {
 
 }  // namespace
 
+namespace {
+
+/// The chain's equilibrium grad V(x) + G(x)^T lambda - s F = 0, c(x) = 0 for the
+/// continuation driver (paths/continuation.hpp). Unknowns z = (x, lambda), lambda in
+/// units of `scale` = EI / l^3 (the constraint rows and columns scaled to the stiffness,
+/// so that the KKT matrix is balanced for the LU's pivoting); the bordered KKT matrix
+/// [A -F; w^T ws] by one sparse LU (its pattern: the band, the closing corners, the
+/// border's row and column).
+class ChainStatics : public paths::Equilibrium {
+ public:
+  ChainStatics(const Chain& c, Vec F, double scale, double radius)
+      : c_(c), F_(std::move(F)), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius) {}
+  Eigen::Index size() const override { return S_; }
+  Eigen::Index arc_size() const override { return N_; }
+  bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const Vec x = s.z.head(N_), lambda = s.z.tail(S_ - N_);
+    const Springs sp = springs(c_, x, 1.0);
+    Triplets t = sp.hess;
+    constraint_hessian(c_, lambda * scale_, 1.0, t);
+    jacobian(c_, x, N_, scale_, true, t);
+    jacobian(c_, x, N_, scale_, false, t);
+    Triplets gt;
+    jacobian(c_, x, 0, 1.0, true, gt);
+    Sparse GT(N_, S_ - N_);
+    GT.setFromTriplets(gt.begin(), gt.end());
+    r.resize(S_);
+    r << sp.grad + GT * (lambda * scale_) - s.s * F_, scale_ * constraints(c_, x);
+    for (int i = 0; i < N_; ++i) {
+      if (F_[i] != 0.0) t.emplace_back(i, S_, -F_[i]);
+      if (w[i] != 0.0) t.emplace_back(S_, i, w[i]);
+    }
+    t.emplace_back(S_, S_, ws);
+    Sparse A(S_ + 1, S_ + 1);
+    A.setFromTriplets(t.begin(), t.end());
+    lu_.compute(A);
+    return r.allFinite() && lu_.info() == Eigen::Success;
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y).eval();
+    return y.allFinite();
+  }
+  /// The largest change of a link's direction, |dx_{j+1} - dx_j| / l (rad, to first
+  /// order), against half a radian: a rigid motion moves nothing, and the bound does not
+  /// shrink with the links.
+  double move(const paths::Vector& dz) const override {
+    double turn = 0.0;
+    for (int j = 0; j < c_.n; ++j) {
+      const int k = (j + 1) % c_.n;
+      turn = std::max(turn, std::hypot(dz[2 * k] - dz[2 * j], dz[2 * k + 1] - dz[2 * j + 1]) / c_.l);
+    }
+    return turn / 0.5;
+  }
+  /// No hinge moved by more than 1e-12 R, and the links hold to 1e-10 R.
+  bool converged(const paths::State& s, const paths::Vector& dz, int) override {
+    return dz.head(N_).cwiseAbs().maxCoeff() <= 1e-12 * radius_ &&
+           constraints(c_, s.z.head(N_)).head(c_.n).cwiseAbs().maxCoeff() <= 1e-10 * radius_;
+  }
+  std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
+    const Contact k = closest_nonadjacent(c_, to.z.head(N_));
+    if (k.distance >= c_.depth) return std::nullopt;
+    return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
+  }
+
+ private:
+  const Chain& c_;
+  const Vec F_;
+  const int N_, S_;
+  const double scale_, radius_;
+  Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
+};
+
+}  // namespace
+
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                 const ring::StaticOptions& statics) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -322,56 +396,17 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
   Vec F = Vec::Zero(N);
   F[2 * at] = statics.load.force[0];
   F[2 * at + 1] = statics.load.force[1];
-  // Rows and columns of the constraints scaled to the stiffness (EI / l^3) so that the
-  // KKT matrix is balanced for the LU's pivoting.
-  const double scale = spec.EI() / (c.l * c.l * c.l);
-
-  Vec x = c.rest, lambda = Vec::Zero(R);
+  ChainStatics eq(c, F, spec.EI() / (c.l * c.l * c.l), spec.radius);
+  paths::State rest{paths::Vector::Zero(N + R), 0.0};
+  rest.z.head(N) = c.rest;
+  const paths::Continuation policy{statics.steps};
+  const paths::Trace path = paths::follow(eq, rest, policy);
+  if (path.end != paths::Trace::End::reached)
+    throw ring::NumericalError("lumped statics: " + paths::failure_message(path, policy));
+  const Vec x = path.state.z.head(N);
   ring::StaticResult out;
-  double s = 0.0, ds = 1.0 / statics.steps;
-  const double min_ds = 1e-6 / statics.steps;
-  while (s < 1.0 - 1e-14) {
-    const double target = std::min(1.0, s + ds);
-    Vec xt = x, lt = lambda;
-    bool ok = false;
-    int iterations = 0;
-    for (int it = 0; it < 25; ++it) {
-      ++iterations;
-      const Springs sp = springs(c, xt, 1.0);
-      Triplets t = sp.hess;
-      constraint_hessian(c, lt * scale, 1.0, t);
-      jacobian(c, xt, N, scale, true, t);
-      jacobian(c, xt, N, scale, false, t);
-      Sparse A(N + R, N + R);
-      A.setFromTriplets(t.begin(), t.end());
-      Triplets gt;
-      jacobian(c, xt, 0, 1.0, true, gt);
-      Sparse GT(N, R);
-      GT.setFromTriplets(gt.begin(), gt.end());
-      const Newton step = newton_update(c, A, sp.grad + GT * (lt * scale) - target * F, scale, 1e-12 * spec.radius,
-                                        spec.radius, xt, lt);
-      if (step == Newton::iterating) continue;
-      ok = step == Newton::converged;
-      break;
-    }
-    out.newton_iterations += iterations;
-    if (!ok) {
-      ds /= 2.0;
-      if (ds < min_ds)
-        throw ring::NumericalError("lumped statics: no equilibrium found beyond load factor " + std::to_string(s) +
-                                   " (a limit point, or the load is too large for the chain)");
-      continue;
-    }
-    x = xt;
-    lambda = lt;
-    s = target;
-    ++out.steps;
-    const Contact k = closest_nonadjacent(c, x);
-    if (k.distance < c.depth)
-      throw ring::NumericalError("lumped statics: at load factor " + std::to_string(s) + " " + contact_where(c, k) +
-                                 ": the ring touches itself, and the chain model has no contact");
-    ds = std::min(2.0 * ds, 1.0 / statics.steps);
-  }
+  out.steps = path.steps;
+  out.newton_iterations = path.iterations;
   for (std::size_t p = 0; p < rec.size(); ++p) {
     const Vec2 u = c.at(x, rec[p]) - c.at(c.rest, rec[p]);
     out.displacements.push_back({statics.record[p], u.x(), u.y()});

@@ -17,10 +17,13 @@
 //  - A dead force F f(t) at one hinge.
 //
 // ## Statics: grad V(x) + G(x)^T lambda = s F, c(x) = 0, s: 0 -> 1
-// Load stepping with full Newton on (x, lambda) (tangent: the spring Hessian
-// k sum (grad theta grad theta^T + (theta - theta0) Hess theta) plus sum lambda_j Hess c_j),
-// an increment halved when Newton fails (25 iterations, a hinge moving more than l/2 in
-// one iteration, a non-finite value).
+// Followed from rest by the shared continuation driver (paths/continuation.hpp: load
+// stepping with full Newton, Crisfield's arc length through limit points, the limit
+// point located), on (x, lambda) with the tangent k sum (grad theta grad theta^T +
+// (theta - theta0) Hess theta) plus sum lambda_j Hess c_j, bordered for the arc and
+// factorized as one sparse LU. The arc length is measured on the hinge positions; a step
+// turns no link by more than half a radian; converged when no hinge moves by more than
+// 1e-12 R and the links hold to 1e-10 R. Self-contact ends the path.
 //
 // ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
 //   M (v_{n+1} - v_n) / h = F f(t_{n+1/2}) - grad V(x_m) - C v_m - G(x_m)^T lambda,
@@ -50,8 +53,8 @@ namespace lumped {
 /// Static equilibrium of the chain under `statics.load` (full load). Requires a pin and a
 /// roller, the `chain` variant, and the load and record points on hinges.
 /// Throws std::invalid_argument for inputs that can never work and ring::NumericalError
-/// when no load step reaches the full load (a limit point: no arc-length here) or the
-/// ring touches itself.
+/// when the equilibrium path does not reach the full load (the ring touches itself; no
+/// return past a limit point).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                 const ring::StaticOptions& statics);
 

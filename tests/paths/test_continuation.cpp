@@ -43,7 +43,7 @@ class Snap : public paths::Equilibrium {
     return y.allFinite();
   }
   double move(const paths::Vector& dz) const override { return std::abs(dz(0)) / 0.5; }
-  bool converged(const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-13; }
+  bool converged(const paths::State&, const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-13; }
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
     accepted.push_back(to);
     if (touches && touches(to)) return paths::Touch{1.0, "u passed " + std::to_string(to.z(0))};
