@@ -2,8 +2,9 @@
 # Process wall time and peak memory of ringvib commands, median of N runs (default 5),
 # wall time from the shell's clock (includes /usr/bin/time's own start, about 1 ms),
 # peak memory from /usr/bin/time -v. Usage: bench/process.sh [N] -- ARGS...   (one command)
-# or without arguments: the two commands of the README's benchmark (a multibody-only
-# scene and the full paper table).
+# or without arguments: the README's benchmark (a multibody-only scene, the full paper
+# table and run, and a tiny FE scene, which is mostly the FE plug-in's start: dlopen of
+# libringvib_fem.so and the ~200 libraries deal.II pulls in).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=5
@@ -32,4 +33,6 @@ else
   measure modes scenes/paper1990-multibody.toml --solver multibody
   measure run scenes/paper1990-multibody.toml
   measure table scenes/paper1990.toml
+  measure run scenes/paper1990.toml --paper
+  measure modes scenes/paper1990.toml --solver fem --set fem.elements=8 --set modes.count=5
 fi
