@@ -41,8 +41,8 @@ const fem::Plugin& fem_plugin() {
     // Lazy binding: the plug-in's own calls into deal.II resolve when first made, not all
     // at load (about 45 ms of a 0.25 s tiny FE run, bench/process.sh). 117 of the ~200
     // libraries deal.II pulls in are linked with BIND_NOW by Debian and resolve at load
-    // anyway. A symbol missing at call time would abort, not report; the plug-in is built
-    // with this executable and fem_plugin_test calls every entry point.
+    // anyway. A symbol missing at call time would abort, not report: fem_plugin_test opens
+    // the same plug-in with RTLD_NOW, which fails on any missing symbol.
     void* h = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!h) {
       failure = std::string("the FE solver is not available: cannot load ") + path + " (" + dlerror() +
