@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include <Eigen/QR>
 #include <nlohmann/json.hpp>
 
 #include "compare/grid.hpp"
@@ -22,20 +23,41 @@ Column pair_column(const ring::ModalResult& base, const ring::ModalResult& other
   Column c;
   c.solver = other.solver;
   const bool by_mac = has_shapes(base) && has_shapes(other);
-  const std::vector<int> p = by_mac ? pair_by_mac(base, other) : std::vector<int>();
+  const Pairing p = by_mac ? pair_modes(base, other) : Pairing{};
   for (int i = 0; i < rows; ++i) {
-    const int j = by_mac ? p[i] : i;
-    if (j < 0 || j >= static_cast<int>(other.omega.size())) {
-      c.omega.push_back(NAN);
-      c.mode.push_back(0);
-      c.mac.push_back(NAN);
-      continue;
-    }
-    c.omega.push_back(other.omega[j]);
-    c.mode.push_back(j + 1);
-    c.mac.push_back(by_mac ? ring::mac(base.shapes[i], other.shapes[j]) : NAN);
+    const int j = by_mac ? p.mode[i] : i;
+    const bool paired = j >= 0 && j < static_cast<int>(other.omega.size());
+    c.omega.push_back(paired ? other.omega[j] : NAN);
+    c.mode.push_back(paired ? j + 1 : 0);
+    c.mac.push_back(paired && by_mac ? p.mac[i] : NAN);
+    c.subspace.push_back(paired && by_mac && p.subspace[i]);
   }
   return c;
+}
+
+/// The shapes of `modes` as columns (radial then tangential at every station).
+Eigen::MatrixXd shape_matrix(const ring::ModalResult& r, const std::vector<int>& modes) {
+  Eigen::MatrixXd A(2 * ring::kStations, modes.size());
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    const ring::ModeShape& s = r.shapes[modes[k]];
+    for (int i = 0; i < ring::kStations; ++i) {
+      A(i, k) = s.radial[i];
+      A(ring::kStations + i, k) = s.tangential[i];
+    }
+  }
+  return A;
+}
+
+/// Consecutive modes within kDegenerate of each other's frequency.
+std::vector<std::vector<int>> clusters(const ring::ModalResult& r) {
+  std::vector<std::vector<int>> out;
+  for (int j = 0; j < static_cast<int>(r.omega.size()); ++j) {
+    if (j > 0 && std::abs(r.omega[j] - r.omega[j - 1]) <= kDegenerate * std::abs(r.omega[j]))
+      out.back().push_back(j);
+    else
+      out.push_back({j});
+  }
+  return out;
 }
 
 std::string label(const std::string& solver) {
@@ -70,12 +92,15 @@ std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
       const Column& col = t.columns[c];
       std::string v = sig4(col.omega[i]);
       if (with_flags && col.mode[i] != i + 1) v += "*";
+      if (with_flags && c > 0 && col.subspace[i]) v += "=";
       if (with_flags && weak(col.mac[i])) v += "?";
       r.push_back(v);
       if (c > 0) r.push_back(pct2(col.diff_pct[i]));
       if (t.reference) r.push_back(pct2(col.error_pct[i]));
     }
-    if (t.reference) r.push_back(sig4(t.reference->omega[i]) + (with_flags && weak(t.reference->mac[i]) ? "?" : ""));
+    if (t.reference)
+      r.push_back(sig4(t.reference->omega[i]) + (with_flags && t.reference->subspace[i] ? "=" : "") +
+                  (with_flags && weak(t.reference->mac[i]) ? "?" : ""));
     if (!t.paper.empty())
       for (const auto& col : t.columns) {
         const auto p = i < static_cast<int>(t.paper.size()) ? paper_value(t.paper[i], col.solver) : std::nullopt;
@@ -94,17 +119,31 @@ bool any_reordered(const Table& t) {
   return false;
 }
 
+bool any_subspace(const Table& t) {
+  for (std::size_t c = 1; c < t.columns.size(); ++c)
+    for (int i = 0; i < t.rows; ++i)
+      if (t.columns[c].subspace[i]) return true;
+  return t.reference && std::find(t.reference->subspace.begin(), t.reference->subspace.end(), true) !=
+                            t.reference->subspace.end();
+}
+
 std::string footnotes(const Table& t) {
   std::ostringstream s;
   s << "rad/s. diff % = (" << label(t.columns[0].solver) << " - other) / other * 100 (the paper's definition)";
   if (t.reference) s << "; error % = (value - reference) / reference * 100, reference = converged FE";
   s << ".\n";
   if (any_reordered(t)) s << "* paired by MAC with a mode of another number in that solver's own order.\n";
+  if (any_subspace(t))
+    s << "= one of a double frequency (equal to " << kDegenerate << " relative), compared as a subspace: its MAC is\n"
+      << "  cos^2 of the base mode's angle to the pair's plane (each solver may return any basis of it).\n";
   if (!t.paper.empty()) s << "paper = Yin & Wang Table 1 (corrected values, README \"The paper\"); vs paper % = (computed - paper) / paper * 100.\n";
   double worst = 1.0;
-  for (const auto& c : t.columns)
+  auto count = [&](const Column& c) {
     for (double m : c.mac)
       if (std::isfinite(m)) worst = std::min(worst, m);
+  };
+  for (const auto& c : t.columns) count(c);
+  if (t.reference) count(*t.reference);
   s << "Lowest MAC of any paired mode: " << sig4(worst) << ".\n";
   if (worst < kWeakMac)
     s << "? paired with MAC < " << kWeakMac << ": the shapes differ, so its difference or error compares unlike "
@@ -114,26 +153,55 @@ std::string footnotes(const Table& t) {
 
 }  // namespace
 
-std::vector<int> pair_by_mac(const ring::ModalResult& base, const ring::ModalResult& other) {
-  const int nb = static_cast<int>(base.omega.size()), no = static_cast<int>(other.omega.size());
-  struct Pair { double mac; int i, j; };
+Pairing pair_modes(const ring::ModalResult& base, const ring::ModalResult& other) {
+  const int nb = static_cast<int>(base.omega.size());
+  const std::vector<std::vector<int>> groups = clusters(other);
+  const Eigen::MatrixXd B = shape_matrix(base, [&] {
+    std::vector<int> all(nb);
+    for (int i = 0; i < nb; ++i) all[i] = i;
+    return all;
+  }());
+  const Eigen::VectorXd norms = B.colwise().squaredNorm();
+  struct Pair { double mac; int i, g; };
   std::vector<Pair> pairs;
-  for (int i = 0; i < nb; ++i)
-    for (int j = 0; j < no; ++j) pairs.push_back({ring::mac(base.shapes[i], other.shapes[j]), i, j});
-  // Strongest first; ties broken by closeness in mode number, so that degenerate
-  // pairs (free ring) keep their order.
-  std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
-    if (std::abs(a.mac - b.mac) > 1e-6) return a.mac > b.mac;
-    return std::abs(a.i - a.j) < std::abs(b.i - b.j);
-  });
-  std::vector<int> of_base(nb, -1);
-  std::vector<bool> used(no, false);
-  for (const auto& p : pairs) {
-    if (of_base[p.i] >= 0 || used[p.j]) continue;
-    of_base[p.i] = p.j;
-    used[p.j] = true;
+  for (int g = 0; g < static_cast<int>(groups.size()); ++g) {
+    // cos^2 of each base mode's angle to the cluster's span: |Q^T b|^2 / |b|^2 with Q an
+    // orthonormal basis of the members' shapes (thin QR).
+    const Eigen::MatrixXd A = shape_matrix(other, groups[g]);
+    const Eigen::MatrixXd Q = A.householderQr().householderQ() * Eigen::MatrixXd::Identity(A.rows(), A.cols());
+    const Eigen::VectorXd projected = (Q.transpose() * B).colwise().squaredNorm();
+    for (int i = 0; i < nb; ++i) pairs.push_back({norms[i] > 0 ? projected[i] / norms[i] : 0.0, i, g});
   }
-  return of_base;
+  // Strongest first; ties broken by closeness in mode number, so that equal MACs keep
+  // the order.
+  std::stable_sort(pairs.begin(), pairs.end(), [&](const Pair& a, const Pair& b) {
+    if (std::abs(a.mac - b.mac) > 1e-6) return a.mac > b.mac;
+    return std::abs(a.i - groups[a.g].front()) < std::abs(b.i - groups[b.g].front());
+  });
+  std::vector<int> group_of(nb, -1);
+  std::vector<double> mac(nb, 0.0);
+  std::vector<std::size_t> taken(groups.size(), 0);
+  for (const auto& p : pairs) {
+    if (group_of[p.i] >= 0 || taken[p.g] == groups[p.g].size()) continue;
+    group_of[p.i] = p.g;
+    mac[p.i] = p.mac;
+    ++taken[p.g];
+  }
+  // Each cluster hands its members to its base modes in order.
+  Pairing out{std::vector<int>(nb, -1), std::vector<double>(nb, NAN), std::vector<bool>(nb, false)};
+  std::vector<std::size_t> next(groups.size(), 0);
+  for (int i = 0; i < nb; ++i) {
+    const int g = group_of[i];
+    if (g < 0) continue;
+    out.mode[i] = groups[g][next[g]++];
+    out.mac[i] = mac[i];
+    out.subspace[i] = groups[g].size() > 1;
+  }
+  return out;
+}
+
+std::vector<int> pair_by_mac(const ring::ModalResult& base, const ring::ModalResult& other) {
+  return pair_modes(base, other).mode;
 }
 
 Table build_table(const std::string& title, const std::vector<ring::ModalResult>& results,

@@ -18,7 +18,8 @@ struct Column {
   std::string solver;
   std::vector<double> omega;      ///< [row], rad/s (the paired mode of this solver)
   std::vector<int> mode;          ///< [row], 1-based mode number in this solver's own order
-  std::vector<double> mac;        ///< [row], MAC with the base mode (1 for the base)
+  std::vector<double> mac;        ///< [row], MAC with the base mode (1 for the base; see pair_modes)
+  std::vector<bool> subspace;     ///< [row], paired against a (near-)degenerate cluster
   std::vector<double> diff_pct;   ///< [row], (base - this) / this * 100 (empty for the base)
   std::vector<double> error_pct;  ///< [row], (this - reference) / reference * 100 (if a reference)
 };
@@ -31,10 +32,29 @@ struct Table {
   std::vector<ring::PaperRow> paper;        ///< with --paper: Table 1 as published
 };
 
+/// Modes whose frequencies agree to this relative tolerance are one (near-)degenerate
+/// cluster: a free ring's (or a ring on a foundation's) double frequencies, equal to
+/// round-off in every solver, whose two members are any basis of their plane.
+constexpr double kDegenerate = 1e-6;
+
+/// How `other`'s modes pair with `base`'s, per base mode: the index in `other` (-1: none
+/// left), the MAC of the pairing, and whether it was made against a cluster of `other`.
+struct Pairing {
+  std::vector<int> mode;
+  std::vector<double> mac;
+  std::vector<bool> subspace;
+};
+
 /// Pairs the modes of `other` with those of `base` by the modal assurance criterion on the
-/// common stations: each base mode takes the unpaired mode of `other` with the largest MAC,
-/// strongest pairs first (greedy assignment). Returns, per base mode, the index in `other`.
-/// O(k^2 kStations) for k modes.
+/// common stations, (near-)degenerate clusters of `other` (kDegenerate) as subspaces: a
+/// base mode's MAC with a cluster is cos^2 of its angle to the cluster's span (the
+/// projection onto an orthonormal basis of the members' shapes; a single mode's is the
+/// ordinary MAC), so a double frequency pairs at 1 whatever basis each solver picked for
+/// it. Strongest pairs first (greedy); a cluster takes as many base modes as it has
+/// members, handing them its members in order. O(k^2 kStations) for k modes.
+Pairing pair_modes(const ring::ModalResult& base, const ring::ModalResult& other);
+
+/// pair_modes' indices alone.
 std::vector<int> pair_by_mac(const ring::ModalResult& base, const ring::ModalResult& other);
 
 /// Builds the table from computed results (the base first in `results`).

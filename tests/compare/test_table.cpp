@@ -6,6 +6,7 @@
 #include "compare/gates.hpp"
 #include "compare/output.hpp"
 #include "compare/table.hpp"
+#include "ring/sampling.hpp"
 
 namespace {
 
@@ -53,6 +54,54 @@ TEST(Table, PairsByMacNotByOrder) {
   EXPECT_EQ(t.columns[1].mode[0], 2);
   EXPECT_NEAR(t.columns[1].mac[0], 1.0, 1e-12);
   EXPECT_NE(cmp::format_text(t).find("2.020*"), std::string::npos) << cmp::format_text(t);
+}
+
+/// A result of modes with radial shapes cos(w (a - phase)), one per (w, phase) (radians).
+ring::ModalResult waves(const std::string& solver, const std::vector<double>& omega,
+                        const std::vector<std::pair<int, double>>& modes) {
+  ring::ModalResult r;
+  r.solver = solver;
+  r.omega = omega;
+  for (const auto& [w, phase] : modes) {
+    ring::ModeShape s;
+    for (int i = 0; i < ring::kStations; ++i) {
+      const double a = ring::station_angle(i) * M_PI / 180.0 - phase;
+      s.radial.push_back(std::cos(w * a));
+      s.tangential.push_back(-std::sin(w * a) / w);
+    }
+    r.shapes.push_back(s);
+  }
+  return r;
+}
+
+// Oracle: plane geometry. A double frequency's two modes are any basis of their plane:
+// the base returns cos 2a, sin 2a, the other solver the same plane turned by 20 deg.
+// Member by member the MAC is cos^2(2 x 20 deg) = 0.587 (what the free ring showed:
+// "Lowest MAC 0.5012" for frequencies equal to 1e-12); as a subspace the angle between
+// each base mode and the other's plane is 0: MAC 1 (to round-off, 1e-12). A pair split
+// by 1e-3 (a pinned ring's) is two modes, compared member by member.
+TEST(Table, DoubleFrequenciesArePairedAsSubspaces) {
+  const double turn = 20.0 * M_PI / 180.0, quarter = M_PI / 4.0;
+  const auto base = waves("multibody", {2.0, 2.0, 3.0}, {{2, 0.0}, {2, quarter}, {3, 0.0}});
+  const auto other = waves("lumped", {2.1, 2.1 * (1 + 1e-12), 3.1}, {{2, turn}, {2, turn + quarter}, {3, 0.0}});
+  EXPECT_NEAR(ring::mac(base.shapes[0], other.shapes[0]), std::pow(std::cos(2 * turn), 2), 1e-12);
+  const cmp::Pairing p = cmp::pair_modes(base, other);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(p.mode[i], i);
+    EXPECT_NEAR(p.mac[i], 1.0, 1e-12);
+    EXPECT_TRUE(p.subspace[i]);
+  }
+  EXPECT_EQ(p.mode[2], 2);
+  EXPECT_FALSE(p.subspace[2]);
+  const cmp::Table t = cmp::build_table("t", {base, other}, nullptr, 3);
+  const std::string text = cmp::format_text(t);
+  EXPECT_NE(text.find("Lowest MAC of any paired mode: 1.000"), std::string::npos) << text;
+  EXPECT_NE(text.find("2.100="), std::string::npos) << text;
+
+  const auto split = waves("lumped", {2.1, 2.1 * (1 + 1e-3), 3.1}, {{2, turn}, {2, turn + quarter}, {3, 0.0}});
+  const cmp::Pairing q = cmp::pair_modes(base, split);
+  EXPECT_FALSE(q.subspace[0]);
+  EXPECT_NEAR(q.mac[0], std::pow(std::cos(2 * turn), 2), 1e-12);
 }
 
 // Oracle: the paper prints 4 significant digits: 2.463, 11.30, 101.5, 232.5.
