@@ -41,7 +41,13 @@ std::string GateResult::name() const {
 
 std::string GateResult::line() const {
   std::ostringstream s;
-  s << (pass ? "PASS " : "FAIL ") << name() << ": worst ";
+  s << (pass ? "PASS " : "FAIL ") << name() << ": ";
+  if (!std::isnan(weak_mac)) {
+    s << "mode " << worst_mode << " is paired with MAC " << sig4(weak_mac) << " < " << kWeakMac
+      << ": unlike shapes, no error to bound";
+    return s.str();
+  }
+  s << "worst ";
   if (gate.analysis == "modes") s << "mode " << worst_mode;
   else s << "point " << sig4(worst_point) << " deg";
   s << ", " << pct2(worst_pct) << " % " << (pass ? "<=" : ">") << " " << gate.max_pct << " %";
@@ -109,8 +115,15 @@ std::vector<GateResult> evaluate_gates(const std::vector<ring::Gate>& gates, con
       } else if (other) {
         ref = other->omega[i];
       }
-      const double v = std::abs((col->omega[i] - ref) / ref * 100.0);
       evaluated = true;
+      const double mac = std::min(col->mac[i], g.against == "paper" || !other ? 1.0 : other->mac[i]);
+      if (weak_mac(col->mac[i]) || weak_mac(mac)) {  // unlike modes: the gate cannot hold
+        r.worst_pct = INFINITY;
+        r.worst_mode = i + 1;
+        r.weak_mac = weak_mac(col->mac[i]) ? col->mac[i] : mac;
+        break;
+      }
+      const double v = std::abs((col->omega[i] - ref) / ref * 100.0);
       if (!std::isfinite(v)) {  // a NaN fails the gate, at this mode
         r.worst_pct = INFINITY;
         r.worst_mode = i + 1;

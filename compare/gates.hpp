@@ -2,6 +2,7 @@
 // mode range. `ringvib run` exits 1 when one fails.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ struct GateResult {
   int worst_mode = 0;     ///< 1-based (modes)
   double worst_point = 0; ///< degrees (response, static)
   double worst_pct = 0;   ///< |value| at the worst mode, %
+  double weak_mac = NAN;  ///< modes: the MAC below kWeakMac that made worst_mode incomparable
   std::string name() const;  ///< "multibody vs reference, modes 1-23, max 6%"
   std::string line() const;  ///< "PASS multibody vs reference ...: worst mode 23, 5.12 % <= 6 %"
 };

@@ -65,10 +65,10 @@ std::string label(const std::string& solver) {
   return e ? e->label : solver;
 }
 
-/// Below this MAC a pairing compares unlike shapes: marked "?" in the table itself.
-constexpr double kWeakMac = 0.5;
+bool weak(double mac) { return weak_mac(mac); }
 
-bool weak(double mac) { return std::isfinite(mac) && mac < kWeakMac; }
+/// A difference or error, or "unlike" where a pairing below kWeakMac made it meaningless.
+std::string pct_cell(double v) { return std::isnan(v) ? "unlike" : pct2(v); }
 
 /// Rows of cells; the first row is the header.
 std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
@@ -95,8 +95,8 @@ std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
       if (with_flags && c > 0 && col.subspace[i]) v += "=";
       if (with_flags && weak(col.mac[i])) v += "?";
       r.push_back(v);
-      if (c > 0) r.push_back(pct2(col.diff_pct[i]));
-      if (t.reference) r.push_back(pct2(col.error_pct[i]));
+      if (c > 0) r.push_back(pct_cell(col.diff_pct[i]));
+      if (t.reference) r.push_back(pct_cell(col.error_pct[i]));
     }
     if (t.reference)
       r.push_back(sig4(t.reference->omega[i]) + (with_flags && t.reference->subspace[i] ? "=" : "") +
@@ -146,8 +146,8 @@ std::string footnotes(const Table& t) {
   if (t.reference) count(*t.reference);
   s << "Lowest MAC of any paired mode: " << sig4(worst) << ".\n";
   if (worst < kWeakMac)
-    s << "? paired with MAC < " << kWeakMac << ": the shapes differ, so its difference or error compares unlike "
-      << "modes (refine the coarser model, or compare fewer modes).\n";
+    s << "? paired with MAC < " << kWeakMac << ": the shapes differ, so no difference or error is given (\"unlike\"): "
+      << "refine the coarser model, or compare fewer modes.\n";
   return s.str();
 }
 
@@ -212,12 +212,19 @@ Table build_table(const std::string& title, const std::vector<ring::ModalResult>
   const ring::ModalResult& base = results.front();
   for (const auto& r : results) t.columns.push_back(pair_column(base, r, rows));
   if (reference) t.reference = pair_column(base, *reference, rows);
+  // A pairing below kWeakMac compares unlike modes: no difference or error (NaN).
   const auto& b = t.columns.front().omega;
   for (std::size_t c = 1; c < t.columns.size(); ++c)
-    for (int i = 0; i < rows; ++i) t.columns[c].diff_pct.push_back((b[i] - t.columns[c].omega[i]) / t.columns[c].omega[i] * 100.0);
+    for (int i = 0; i < rows; ++i) {
+      const Column& col = t.columns[c];
+      t.columns[c].diff_pct.push_back(weak(col.mac[i]) ? NAN : (b[i] - col.omega[i]) / col.omega[i] * 100.0);
+    }
   if (reference)
     for (auto& c : t.columns)
-      for (int i = 0; i < rows; ++i) c.error_pct.push_back((c.omega[i] - t.reference->omega[i]) / t.reference->omega[i] * 100.0);
+      for (int i = 0; i < rows; ++i) {
+        const double ref = t.reference->omega[i];
+        c.error_pct.push_back(weak(c.mac[i]) || weak(t.reference->mac[i]) ? NAN : (c.omega[i] - ref) / ref * 100.0);
+      }
   return t;
 }
 

@@ -20,8 +20,8 @@ struct Column {
   std::vector<int> mode;          ///< [row], 1-based mode number in this solver's own order
   std::vector<double> mac;        ///< [row], MAC with the base mode (1 for the base; see pair_modes)
   std::vector<bool> subspace;     ///< [row], paired against a (near-)degenerate cluster
-  std::vector<double> diff_pct;   ///< [row], (base - this) / this * 100 (empty for the base)
-  std::vector<double> error_pct;  ///< [row], (this - reference) / reference * 100 (if a reference)
+  std::vector<double> diff_pct;   ///< [row], (base - this) / this * 100 (empty for the base; NaN: unlike)
+  std::vector<double> error_pct;  ///< [row], (this - reference) / reference * 100 (if a reference; NaN: unlike)
 };
 
 struct Table {
@@ -31,6 +31,11 @@ struct Table {
   std::optional<Column> reference;          ///< paired with the base like any column
   std::vector<ring::PaperRow> paper;        ///< with --paper: Table 1 as published
 };
+
+/// Below this MAC a pairing compares unlike shapes: marked "?" in the table, with no
+/// difference or error (the cell says "unlike"), and a gate over that mode fails.
+constexpr double kWeakMac = 0.5;
+inline bool weak_mac(double mac) { return mac < kWeakMac; }  // false for NaN (no shapes)
 
 /// Modes whose frequencies agree to this relative tolerance are one (near-)degenerate
 /// cluster: a free ring's (or a ring on a foundation's) double frequencies, equal to

@@ -172,4 +172,29 @@ TEST(Table, WeakPairingsAreMarkedInTheTable) {
   EXPECT_EQ(cmp::format_text(good).find('?'), std::string::npos);
 }
 
+// Oracle: orthogonal shapes (cos 4a against cos 2a: MAC 0) are unlike modes. Their
+// "difference" is no datum: the table gives none (NaN in CSV/JSON, "unlike" in the
+// cell), an error against a reference paired that weakly is none either, and a gate
+// over that mode fails naming the MAC instead of passing on a number that compares
+// nothing (the sweep wrote such errors of 28-254 % as data).
+TEST(Table, NoDifferenceOrErrorAgainstAWeakPartner) {
+  const auto base = fake("multibody", {2.0, 4.0}, {2, 3});
+  const auto weak = fake("fem", {2.1, 4.1}, {4, 3});
+  const auto ref = fake("reference", {2.05, 4.05}, {2, 5});
+  const cmp::Table t = cmp::build_table("t", {base, weak}, &ref, 2);
+  EXPECT_TRUE(std::isnan(t.columns[1].diff_pct[0]));
+  EXPECT_TRUE(std::isnan(t.columns[0].error_pct[1]));  // the reference's mode 2 is unlike
+  EXPECT_NEAR(t.columns[1].diff_pct[1], (4.0 - 4.1) / 4.1 * 100.0, 1e-12);
+  EXPECT_NE(cmp::format_text(t).find("unlike"), std::string::npos) << cmp::format_text(t);
+  ring::Gate g;
+  g.solver = "fem";
+  g.against = "reference";
+  g.max_pct = 100.0;
+  const auto r = cmp::evaluate_gates({g}, t);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_FALSE(r[0].pass);
+  EXPECT_EQ(r[0].worst_mode, 1);
+  EXPECT_NE(r[0].line().find("paired with MAC"), std::string::npos) << r[0].line();
+}
+
 }  // namespace
