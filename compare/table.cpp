@@ -268,8 +268,9 @@ std::string format_csv(const Table& t) {
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       const Column& col = t.columns[c];
       s << "," << col.omega[i] << "," << col.mode[i] << "," << col.mac[i];
-      if (c > 0) s << "," << col.diff_pct[i];
-      if (t.reference) s << "," << col.error_pct[i];
+      auto cell = [&](double v) { s << ","; if (!std::isnan(v)) s << v; };  // NaN: unlike modes, no datum
+      if (c > 0) cell(col.diff_pct[i]);
+      if (t.reference) cell(col.error_pct[i]);
     }
     if (t.reference) s << "," << t.reference->omega[i];
     if (!t.paper.empty())
@@ -293,8 +294,8 @@ std::string format_json(const Table& t) {
       r[col.solver] = col.omega[i];
       r[col.solver + "_mode"] = col.mode[i];
       if (std::isfinite(col.mac[i])) r[col.solver + "_mac"] = col.mac[i];
-      if (c > 0) r[col.solver + "_diff_pct"] = col.diff_pct[i];
-      if (t.reference) r[col.solver + "_error_pct"] = col.error_pct[i];
+      if (c > 0 && !std::isnan(col.diff_pct[i])) r[col.solver + "_diff_pct"] = col.diff_pct[i];
+      if (t.reference && !std::isnan(col.error_pct[i])) r[col.solver + "_error_pct"] = col.error_pct[i];
       if (!t.paper.empty() && i < static_cast<int>(t.paper.size()))
         if (auto p = paper_value(t.paper[i], col.solver)) {
           r["paper_" + col.solver] = *p;
