@@ -7,6 +7,7 @@
 #include "compare/fem_module.hpp"
 #include "fem_reference/checks.hpp"
 #include "lumped_mass/checks.hpp"
+#include "multibody/backend.hpp"
 #include "multibody/checks.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
@@ -70,10 +71,14 @@ SolverEntry multibody_entry() {
   // statics 0.83-0.84 KB per segment. Used: those with 3-20 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
-    if (count > 0) return multibody::uses_sparse_path(s.multibody) ? n * (420.0 + 33.0 * count) : 52.0 * n * n;
+    auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, a) == multibody::Backend::banded; };
+    if (count > 0)
+      return multibody::backend(s.multibody, s.ring.supports, count) == multibody::Backend::banded
+                 ? n * (420.0 + 33.0 * count)
+                 : 52.0 * n * n;
     double bytes = 0.0;
-    if (s.response) bytes = std::max(bytes, multibody::use_sparse_path(s.multibody) ? 2200.0 * n : 50.0 * n * n);
-    if (s.statics) bytes = std::max(bytes, multibody::use_natural_statics(s.multibody) ? 900.0 * n : 25.0 * n * n);
+    if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 2200.0 * n : 50.0 * n * n);
+    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 900.0 * n : 25.0 * n * n);
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) { multibody::check_modes(s.ring, s.multibody); };

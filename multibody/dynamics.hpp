@@ -59,7 +59,7 @@
 // with L the midpoint cumulative sum, whose bidiagonal relations make the saddle-point
 // system banded plus a border of 2 + c unknowns (dynamics_sparse.hpp): O(n) time and
 // memory per Newton iteration, and the self-contact test uses a uniform grid (O(n)).
-// `automatic` takes sparse from n = kSparseDynamicsCrossover. The two are backends of one
+// `automatic` chooses by backend.hpp (Analysis::response). The two are backends of one
 // interface (newton_backend.hpp), chosen once per run; the integrators' steps are in
 // integrators.hpp. The two paths give the
 // same histories to ~1e-12 of the peak displacement (tests at n = 40, 160, 1280).
@@ -90,16 +90,6 @@ struct IntegrationControls {
   bool check_contact = true;
 };
 
-/// Segments from which MultibodyOptions::Method::automatic takes the O(n) sparse path
-/// (dynamics_sparse.hpp). Measured (bench/multibody/bench_dynamics.cpp, CPU time per
-/// step, 20 kN scene): n = 40 dense 68/85 us vs sparse 67/100 us (generalized-alpha /
-/// newmark); n = 60-80 equal within the noise of a loaded machine (500-step runs);
-/// n = 160 dense 703/742 us vs sparse 417/477 us. So the crossover lies near 80-100.
-constexpr int kSparseDynamicsCrossover = 100;
-
-/// True when respond() takes the O(n) structured/sparse path for these options.
-bool use_sparse_path(const ring::MultibodyOptions& options);
-
 /// Forced response from rest in the undeformed state (phi = phi0, phi' = 0).
 /// Requires a pin (and normally a roller; without one the rigid rotation about the
 /// pin is left to the dynamics). The load acts at `response.load.angle`, which must be
@@ -110,13 +100,10 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// balance error T + V + D - W (J; D the energy dissipated by damping, midpoint rule
 /// per step), constraint
 /// residual max |g| (m), Newton iterations of the step (summed over sub-steps).
-/// Cost per step: dense path O(n^2) per Newton iteration (3 to 7) plus an O(n^3)
-/// factorization whenever the kept Newton matrix is refreshed (measured: 44 us per step
-/// at n = 40 with generalized-alpha, 36 ms at n = 640); sparse path O(n) per iteration
-/// (see bench/multibody/bench_dynamics.cpp for both). Mean Newton iterations per step,
-/// 20 kN scene, dt = 0.01 s, first 2 s: generalized-alpha 3.5 (n = 40), 3.35 (640,
-/// 2560, 10^4); newmark 3.14 (40), 3.12 (640), 3.11 (2560); over 1000 steps at n = 10^4
-/// 3.50 and 3.41 (docs/measured.md).
+/// Cost per step: dense path O(n^2) per Newton iteration plus an O(n^3) factorization
+/// whenever the kept Newton matrix is refreshed; sparse path O(n) per iteration; 3 to 4
+/// Newton iterations per step (times and counts: docs/measured.md, "multibody: forced
+/// response").
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
 /// IntegrationFailure (a ring::NumericalError) when the integration cannot continue.

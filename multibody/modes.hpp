@@ -18,7 +18,7 @@
 // Cost: O(r^3) for the Cholesky factorizations (S and the M_0 check), O(r^2) per Lanczos
 // step; O(r^3) eigenvectors on the small path.
 //
-// ## Sparse path (MultibodyOptions::method = sparse, or automatic above kSparseThreshold)
+// ## Sparse path (the banded backend of backend.hpp: method = sparse, or auto from n = 257)
 // Same pencil, never formed: K and M(q0) only as O(n) operators in chain coordinates,
 // and S = K + s M solved in O(n) on the null space of J by a Riccati sweep with a border
 // of <= 6 unknowns (shifted_solve.hpp). The eigenpairs come either from the eigen layer
@@ -70,22 +70,13 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "multibody/backend.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/linear_model.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
-
-/// MultibodyOptions::Method::automatic takes the sparse path above this n (robust only):
-/// where the sparse path is measured faster (multibody/README.md, "Crossover"); both are
-/// within 1e-12 of the independent oracles on either side
-/// (tests/multibody/test_modes_sparse.cpp), so the switch costs no accuracy.
-constexpr int kSparseThreshold = 256;
-/// True when solve_modes may take the sparse large-n path for these options (automatic:
-/// n > kSparseThreshold, robust; solve_modes then also requires count + rigid + 2 <= r / 3,
-/// else dense).
-bool uses_sparse_path(const ring::MultibodyOptions& options);
 
 /// The eigensolver of the sparse path (file comment): the eigen layer's Spectra
 /// Lanczos, or the hand-written one of lanczos.hpp.

@@ -160,7 +160,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   std::vector<int> rec;
   for (double a : statics.record) rec.push_back(ch.hinge_at(a));
   const int gap = detail::contact_gap(ch, spec.section.depth());
-  if (use_natural_statics(options)) return natural::solve_static(ch, spec, statics);
+  if (backend(options, Analysis::statics) == Backend::banded) return natural::solve_static(ch, spec, statics);
   // The dense path's n x n stiffness, built only here: before the O(n) path's dispatch it
   // was allocated there too (80 GB at n = 10^5: std::bad_alloc at once).
   const Matrix K = ch.stiffness_matrix();

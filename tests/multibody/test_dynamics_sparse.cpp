@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "multibody/backend.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/dynamics_model.hpp"
@@ -269,11 +270,14 @@ TEST(MultibodySparseDynamics, SelfContactReportedOnBothPaths) {
 }
 
 TEST(MultibodySparseDynamics, AutomaticChoosesByCrossover) {
-  EXPECT_FALSE(multibody::use_sparse_path(opts(40, ring::MultibodyOptions::Method::automatic)));
-  EXPECT_TRUE(multibody::use_sparse_path(
-      opts(multibody::kSparseDynamicsCrossover, ring::MultibodyOptions::Method::automatic)));
-  EXPECT_TRUE(multibody::use_sparse_path(opts(40, ring::MultibodyOptions::Method::sparse)));
-  EXPECT_FALSE(multibody::use_sparse_path(opts(4000, ring::MultibodyOptions::Method::dense)));
+  auto banded = [](const ring::MultibodyOptions& o) {
+    return multibody::backend(o, multibody::Analysis::response) == multibody::Backend::banded;
+  };
+  EXPECT_FALSE(banded(opts(40, ring::MultibodyOptions::Method::automatic)));
+  EXPECT_TRUE(banded(
+      opts(multibody::kSparseResponseCrossover, ring::MultibodyOptions::Method::automatic)));
+  EXPECT_TRUE(banded(opts(40, ring::MultibodyOptions::Method::sparse)));
+  EXPECT_FALSE(banded(opts(4000, ring::MultibodyOptions::Method::dense)));
 }
 
 }  // namespace
