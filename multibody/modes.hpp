@@ -56,8 +56,8 @@
 // omega = the `count` lowest elastic modes in rad/s ascending; shapes = hinge
 // displacements sampled with ring::sample_polygon (anchor = hinge 0's angle, the pin's or
 // 0 deg for a free ring); unknowns = r; seconds = solver wall time (assembly, reduction,
-// factorizations, eigensolver, eigenvectors; not the sampling at the 360 stations, which
-// costs ~10 us per mode in ring::sample_polygon);
+// factorizations, eigensolver, eigenvectors; not the sampling at the 360 stations,
+// O(n) per mode in ring::sample_polygon);
 // max_residual = max over the returned modes of
 // ||K_0 x - w^2 M_0 x|| / (||K_0 x|| + w^2 ||M_0 x||).
 //
@@ -82,8 +82,8 @@ namespace multibody {
 /// Lanczos, or the hand-written one of lanczos.hpp.
 enum class SparseEigensolver { library, hand_written };
 /// The one solve_modes(spec, options, count) and compute_modes use: the hand-written
-/// Lanczos, 2.3x faster at n = 10^6 with frequencies that agree with the library's to
-/// ~1e-12 (multibody/README.md, "Large n").
+/// Lanczos, measured faster at large n with frequencies that agree with the library's to
+/// ~1e-12 (docs/measured.md, "Time and memory, 23 modes").
 constexpr SparseEigensolver kDefaultSparseEigensolver = SparseEigensolver::hand_written;
 /// Spectra's relative Ritz-residual bound on the library path (modal::LanczosOptions::tol).
 constexpr double kLibraryLanczosTol = 1e-10;
