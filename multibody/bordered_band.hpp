@@ -6,21 +6,16 @@
 //       [C  D]   B: m x b, C: b x m, D: b x b, the border of b unknowns (b small),
 //
 // and factor it as P = L U (LAPACK's band LU with partial pivoting, BandLU) and the Schur
-// complement S = D - C P^-1 B (dense LU with partial pivoting). A z = f is then
+// complement S = D - C P^-1 B (dense LU with partial pivoting); A z = f is then
 //   P u = f_P,   S w = f_D - C u,   z_P = u - (P^-1 B) w,   z_D = w.
-// Only the border columns with entries in the band are solved for (P^-1 B, stored by rows
-// so that BandLU::solve_rows does all of them in one pass over the band's factors), and C
-// keeps only the band columns that border rows reach; which ones is the matrix's
-// structure, fixed at construction from its pattern.
-//
-// Singularity (the one test): factor() fails on a non-finite entry, an exactly zero pivot
-// of the band, or a Schur complement that is not finite or has an exactly zero pivot. An
-// ill-conditioned matrix factors: the caller's Newton iteration or refinement judges the
-// solution (and its finiteness).
-//
-// Cost, with b' <= b solved border columns: factor O(m kl (kl + ku) + m b' (2 kl + ku)
-// + b^3); solve O(m (2 kl + ku + b') k) for k right-hand sides; memory
-// O(m (2 kl + ku + 1 + b')).
+// Only the b' border columns with entries in the band are solved for (P^-1 B by rows: one
+// pass of BandLU::solve_rows over the factors for all), and C keeps only the band columns
+// that border rows reach: the structure, fixed at construction from the pattern.
+// Singular (the one test): a non-finite entry, an exactly zero pivot of the band, or a
+// Schur complement that is not finite or has an exactly zero pivot. An ill-conditioned
+// matrix factors; the caller's Newton iteration or refinement judges the solution.
+// Cost: factor O(m kl (kl + ku) + m b' (2 kl + ku) + b^3); solve O(m (2 kl + ku + b') k)
+// for k right-hand sides; memory O(m (2 kl + ku + 1 + b')).
 #pragma once
 
 #include <Eigen/Dense>
@@ -67,7 +62,22 @@ class BorderedBand {
   /// allowed). It fixes the band's widths, the border columns with entries in the band
   /// and the band columns that border rows reach. A zero matrix. O(entries + storage).
   template <class Visit>
-  BorderedBand(Eigen::Index core, Eigen::Index border, Visit visit);
+  BorderedBand(Eigen::Index core, Eigen::Index border, Visit visit)
+      : core_(core), border_(border), solved_(border, -1), reached_(core, -1) {
+    visit([&](Eigen::Index i, Eigen::Index j) {
+      ++entries_;
+      if (i < core && j < core) {
+        kl_ = std::max(kl_, static_cast<int>(i - j));
+        ku_ = std::max(ku_, static_cast<int>(j - i));
+      } else if (i < core) {
+        solved_[j - core] = 0;
+      } else if (j < core) {
+        reached_[j] = 0;
+      }
+    });
+    number();
+    clear();
+  }
 
   Eigen::Index order() const { return core_ + border_; }
   /// Zero matrix (before assembly). O(storage).
@@ -113,23 +123,5 @@ class BorderedBand {
   Eigen::MatrixXd C_, D_;       ///< C on the reached columns; D, then S = D - C P^-1 B
   Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
 };
-
-template <class Visit>
-BorderedBand::BorderedBand(Eigen::Index core, Eigen::Index border, Visit visit)
-    : core_(core), border_(border), solved_(border, -1), reached_(core, -1) {
-  visit([&](Eigen::Index i, Eigen::Index j) {
-    ++entries_;
-    if (i < core && j < core) {
-      kl_ = std::max(kl_, static_cast<int>(i - j));
-      ku_ = std::max(ku_, static_cast<int>(j - i));
-    } else if (i < core) {
-      solved_[j - core] = 0;
-    } else if (j < core) {
-      reached_[j] = 0;
-    }
-  });
-  number();
-  clear();
-}
 
 }  // namespace multibody::detail

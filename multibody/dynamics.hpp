@@ -19,22 +19,18 @@
 //    partitioning. The c dependent angles are the best-conditioned columns of G at the
 //    start of each step (column-pivoted QR), the Newmark formulas act on the others,
 //    and g(phi) = 0, G phi' = 0, G phi'' + Gdot phi' = 0 give the dependent positions,
-//    velocities and accelerations exactly. (Newmark with gamma = 1/2 applied to the
-//    index-3 form with multipliers is unstable: Cardona & Geradin 1989; we saw the
-//    energy grow 1000-fold in 5 s and Newton fail at t = 3.5 s with dt = 0.005.)
-//    It starts from the accelerations filtered by the first step's Newton matrix, as
-//    generalized-alpha's a_0 below (phi''_0 in the modes the step resolves; the
-//    consistent phi''_0 left +-phi''_0 oscillating in every unresolved mode).
+//    velocities and accelerations exactly (Newmark with gamma = 1/2 applied to the
+//    index-3 form with multipliers is unstable: Cardona & Geradin 1989). It starts from
+//    the accelerations filtered by the first step's Newton matrix, as generalized-alpha's
+//    a_0 below.
 //  - generalized-alpha: Chung & Hulbert (1993) parameters from rho_inf, on the index-3
 //    form with multipliers, as Arnold & Bruls (2007, Multibody Syst. Dyn. 18:185):
 //    equilibrium and constraints at t_{n+1}, a pseudo-acceleration a with
 //    (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) phi''_{n+1} + alpha_f phi''_n,
 //    consistent initial accelerations phi''_0 (the index-1 problem at t = 0), and a_0
 //    from the first step's Newton matrix S: S a_0 = c (M phi''_0) with the constraints,
-//    c = (1 - alpha_m) / ((1 - alpha_f) beta h^2); per mode a_0 = c phi''_0 / (c + w^2).
-//    (a_0 = phi''_0, the usual start, makes the scheme overshoot in velocity in every
-//    mode with w h >> 1: under a point step load on a fine chain it gained energy from
-//    the first step and the run failed from n ~ 640; multibody/README.md.)
+//    c = (1 - alpha_m) / ((1 - alpha_f) beta h^2); per mode a_0 = c phi''_0 / (c + w^2)
+//    (why not a_0 = phi''_0: integrators.hpp, starting_pseudo_acceleration).
 // Both solve, per Newton iteration, the saddle-point system [T G^T; G 0] with T the
 // analytic tangent of dynamics_model.hpp; rows of g and columns of lambda are scaled by
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
@@ -61,8 +57,8 @@
 // memory per Newton iteration, and the self-contact test uses a uniform grid (O(n)).
 // `automatic` chooses by backend.hpp (Analysis::response). The two are backends of one
 // interface (newton_backend.hpp), chosen once per run; the integrators' steps are in
-// integrators.hpp. The two paths give the
-// same histories to ~1e-12 of the peak displacement (tests at n = 40, 160, 1280).
+// integrators.hpp. The two paths give the same histories to ~1e-12 of the peak
+// displacement (tests at n = 40, 160, 1280).
 #pragma once
 
 #include <string>

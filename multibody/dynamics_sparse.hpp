@@ -15,8 +15,7 @@
 // (dq, y_t, s_t, dlambda) of order n (1 + 4 terms) + c. Interleaved segment by segment
 // it is banded (bandwidths ~2 stride and stride) except for the springs' two cyclic
 // corner entries and the c constraint rows and columns; those form a border of 2 + c
-// unknowns: a BorderedBand (bordered_band.hpp; Eigen's SparseLU, tried first, pivoted
-// on the dense border rows and was far slower). Solves can be refined against the exact
+// unknowns: a BorderedBand (bordered_band.hpp). Solves can be refined against the exact
 // O(n) product T x; Newton corrections are not (the iteration itself refines them), the
 // consistent initial accelerations are (twice).
 #pragma once

@@ -56,8 +56,8 @@
 // omega = the `count` lowest elastic modes in rad/s ascending; shapes = hinge
 // displacements sampled with ring::sample_polygon (anchor = hinge 0's angle, the pin's or
 // 0 deg for a free ring); unknowns = r; seconds = solver wall time (assembly, reduction,
-// factorizations, eigensolver, eigenvectors; not the sampling at the 360 stations,
-// O(n) per mode in ring::sample_polygon);
+// factorizations, eigensolver, eigenvectors; not the sampling at the 360 stations by
+// ring::sample_polygon);
 // max_residual = max over the returned modes of
 // ||K_0 x - w^2 M_0 x|| / (||K_0 x|| + w^2 ||M_0 x||).
 //

@@ -173,26 +173,6 @@ double turns_a_link_by(const Natural& c, const Vec& dx) {
   return worst;
 }
 
-BandedOrder banded_order(const Natural& c) {
-  const int N = 2 * c.n;
-  Eigen::VectorXi perm = Eigen::VectorXi::Constant(c.size(), -1);
-  int next = 0;
-  auto put_hinge = [&](int k) {
-    perm(2 * k) = next++;
-    perm(2 * k + 1) = next++;
-  };
-  for (int k = 1; k <= c.n - 2; ++k) {
-    perm(N + k - 1) = next++;  // link k-1, between hinges k-1 and k
-    put_hinge(k);
-  }
-  perm(N + c.n - 2) = next++;  // link n-2
-  const int band = next;
-  for (int k : {c.n - 1, 0}) put_hinge(k);
-  perm(N + c.n - 1) = next++;
-  for (int row = c.n; row < c.rows(); ++row) perm(N + row) = next++;  // pin, roller
-  return {perm, band};
-}
-
 bool NewtonStop::converged(double step, double constraint) {
   constexpr double kTolerance = 1e-12, kFloor = 1e-9;
   const bool at_floor = step <= kFloor * R_ && step > 0.25 * previous_;
@@ -233,10 +213,23 @@ void kkt_pattern(const Natural& c, Visit visit) {
 
 }  // namespace
 
-BandedKkt::BandedKkt(const Natural& c) {
-  const BandedOrder order = banded_order(c);
-  perm_ = order.perm;
-  band_ = detail::BorderedBand(order.band, c.size() - order.band, [&](auto mark) {
+BandedKkt::BandedKkt(const Natural& c) : perm_(Eigen::VectorXi::Constant(c.size(), -1)) {
+  const int N = 2 * c.n;  // the order of natural.hpp: the band in chain order, the border
+  int next = 0;
+  auto put_hinge = [&](int k) {
+    perm_(2 * k) = next++;
+    perm_(2 * k + 1) = next++;
+  };
+  for (int k = 1; k <= c.n - 2; ++k) {
+    perm_(N + k - 1) = next++;  // link k-1, between hinges k-1 and k
+    put_hinge(k);
+  }
+  perm_(N + c.n - 2) = next++;  // link n-2
+  const int band = next;
+  for (int k : {c.n - 1, 0}) put_hinge(k);
+  perm_(N + c.n - 1) = next++;
+  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller
+  band_ = detail::BorderedBand(band, c.size() - band, [&](auto mark) {
     kkt_pattern(c, [&](int i, int j) { mark(perm_[i], perm_[j]); });
   });
 }

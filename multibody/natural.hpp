@@ -59,33 +59,18 @@ void mass_times(const Natural& c, const Vec& v, Vec& out);
 Vec constraints(const Natural& c, const Vec& x);
 /// The same into `g` (resized; no allocation when it has the size).
 void constraints(const Natural& c, const Vec& x, Vec& g);
-/// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
-/// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
-/// border. The band: link 0, hinge 1, link 1, hinge 2, ..., link n-3, hinge n-2, link n-2
-/// (chain order; lower and upper widths 7, from the springs, which couple hinge k with
-/// k +- 2). The border: hinges n-1 and 0 (the two hinges that close the cycle: every
-/// spring and link that wraps around touches one of them), link n-1 and the pin's two
-/// rows (which couple only these two hinges), the roller's row. Only the border's four
-/// hinge coordinates and the roller's row (unless its hinge is n-1 or 0) have entries
-/// in the band, so at most five columns are solved for in the Schur complement. An LU in this order (with pivoting
-/// inside the band) fills only the band and the border's rows and columns: O(n) memory
-/// and time, whatever the pivots. Needs n >= 4.
-struct BandedOrder {
-  Eigen::VectorXi perm;  ///< perm[old] = new
-  int band = 0;          ///< unknowns in the band; the border follows
-};
-BandedOrder banded_order(const Natural& c);
-
-/// The chain's KKT matrix (unknowns as in banded_order's comment), assembled straight
-/// into its factorization's storage and factored in banded_order as a
-/// detail::BorderedBand (band LU with partial pivoting, Schur border). O(n) time and
-/// memory per assembly, factorization and solve, whatever the pivots. (A general sparse
-/// LU with a fill-reducing ordering such as COLAMD ignores the pivoting that a weak
-/// diagonal forces, as the statics' KKT matrix has: its fill grows far beyond O(n).)
-/// The structure is the KKT matrix's pattern (kkt_pattern in natural.cpp: a spring
-/// couples hinges k-1, k, k+1; link i couples hinges i, i+1 with its multiplier; the pin
-/// and roller rows couple their hinge), fixed at construction. Usage, per Newton
-/// iteration:
+/// The chain's KKT matrix, assembled straight into its factorization's storage: a
+/// detail::BorderedBand in a symmetric order of the unknowns (natural order: hinge
+/// coordinates 2k, 2k + 1, then the multipliers from 2n: links, pin, roller). The band:
+/// link 0, hinge 1, link 1, ..., hinge n-2, link n-2 (chain order; widths 7, from the
+/// springs, which couple hinge k with k +- 2). The border: hinges n-1 and 0 (every spring
+/// and link that wraps around touches one of them), link n-1, the pin's two rows, the
+/// roller's row; only its four hinge coordinates and the roller's row have entries in the
+/// band. The LU (pivoting inside the band) fills only the band and the border: O(n) time
+/// and memory per assembly, factorization and solve, whatever the pivots (a general
+/// sparse LU with COLAMD ignores the pivoting that the statics' weak diagonal forces, and
+/// fills far beyond O(n)). The pattern (kkt_pattern in natural.cpp) is fixed at
+/// construction; n >= 4. Usage, per Newton iteration:
 ///   kkt.clear(); kkt.add(i, j, v) ...; if (kkt.factor()) dz = kkt.solve(rhs);
 class BandedKkt {
  public:

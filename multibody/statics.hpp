@@ -27,11 +27,6 @@
 
 namespace multibody {
 
-// The O(n) path (hinge positions, natural.hpp) is the banded backend of
-// backend(options, Analysis::statics) (backend.hpp: method = "sparse", or "auto" from
-// kSparseStaticsCrossover); below it the dense path, which alone has the arc-length
-// continuation through limit points.
-
 /// Static equilibrium under `statics.load` (its history is ignored: full load).
 /// Returns the displacements of the recorded points (ring-centred frame, m), the
 /// number of accepted load steps, the total Newton iterations, and every hinge's
