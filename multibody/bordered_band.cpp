@@ -39,8 +39,6 @@ void BandLU::solve_many(double* b, Eigen::Index ld, Eigen::Index k) const {
   dgbtrs_("N", &n, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), b, &ldb, &info, 1);
 }
 
-void BandLU::solve(double* b) const { solve_many(b, N_, 1); }
-
 void BandLU::solve_rows(double* b, int k) const {
   const Eigen::Index kv = kl_ + ku_;
   // L: dgbtrs's row interchanges and multipliers (rows kv + 1 .. kv + kl of column j).
@@ -102,7 +100,7 @@ bool BorderedBand::factor() {
 }
 
 void BorderedBand::solve(double* z, int k) const {
-  if (k == 1) band_.solve(z);  // u = P^-1 f_P (dgbtrs; the same result as solve_rows)
+  if (k == 1) band_.solve_many(z, core_, 1);  // u = P^-1 f_P (dgbtrs; the same result as solve_rows)
   else band_.solve_rows(z, k);
   if (border_ == 0) return;
   Eigen::Map<RowMatrix> u(z, core_, k), w(z + core_ * k, border_, k);

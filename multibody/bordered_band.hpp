@@ -33,14 +33,12 @@ class BandLU {
   void resize(Eigen::Index N, int kl, int ku);  ///< zero matrix of order N
   /// Entry (i, j), |i - j| within the band (before factor()).
   double& at(Eigen::Index i, Eigen::Index j) { return ab_[size_t(j) * ldab_ + kl_ + ku_ + i - j]; }
-  bool factor();                 ///< false on a non-finite entry or an exactly zero pivot
-  void solve(double* b) const;   ///< in place
+  bool factor();  ///< false on a non-finite entry or an exactly zero pivot
   /// k right-hand sides, column q at b + q ld, in place.
   void solve_many(double* b, Eigen::Index ld, Eigen::Index k) const;
   /// k right-hand sides stored by rows (row i at b + i k), in place: dgbtrs's operations
-  /// in its order, so the same result bit for bit, but one pass over the factors for all
-  /// k (dgbtrs runs its triangular band solve, dtbsv, once per right-hand side: at large
-  /// N each pass streams the factors from memory).
+  /// in its order (the same result bit for bit) in one pass over the factors for all k,
+  /// where dgbtrs streams them from memory once per right-hand side.
   void solve_rows(double* b, int k) const;
   long stored() const { return static_cast<long>(ab_.size()); }
 

@@ -49,16 +49,12 @@
 // itself; the model has no contact).
 // MultibodyOptions: n, rotary_inertia and method are used; `dependent` is not (the
 // partition is chosen by pivoting at every step).
-// method: `dense` forms the n x n tangent (O(n^2) per Newton iteration, O(n^3) per
-// factorization); `sparse` keeps the same equations, iterates and policies but
-// never forms an n x n matrix: the tangent is diag + cyclic springs + m l^2 U^T (L^T L) W
-// with L the midpoint cumulative sum, whose bidiagonal relations make the saddle-point
-// system banded plus a border of 2 + c unknowns (dynamics_sparse.hpp): O(n) time and
-// memory per Newton iteration, and the self-contact test uses a uniform grid (O(n)).
-// `automatic` chooses by backend.hpp (Analysis::response). The two are backends of one
-// interface (newton_backend.hpp), chosen once per run; the integrators' steps are in
-// integrators.hpp. The two paths give the same histories to ~1e-12 of the peak
-// displacement (tests at n = 40, 160, 1280).
+// method (backend.hpp, Analysis::response): the dense backend forms the n x n tangent
+// (O(n^2) per Newton iteration, O(n^3) per factorization); the banded one keeps the same
+// equations, iterates and policies in O(n) time and memory per iteration
+// (dynamics_sparse.hpp) and tests self-contact on a uniform grid. Both implement
+// newton_backend.hpp, chosen once per run, and give the same histories to ~1e-12 of the
+// peak displacement (tests at n = 40, 160, 1280); the steps are in integrators.hpp.
 #pragma once
 
 #include <string>

@@ -84,9 +84,7 @@ void inertia_terms_structured(const Chain& chain, const Vector& q, const Vector&
   r.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) r[j] = ml2 * Ep.col(j).dot(Y.col(j)) + jr * qdd[j];
   if (!T) return;
-  if (T->diag.size() != n) {
-    T->diag = Vector::Zero(n);
-  }
+  if (T->diag.size() != n) T->diag = Vector::Zero(n);
   LowRankTerm t;
   t.coef = ml2;
   t.left = Ep;
