@@ -7,6 +7,7 @@
 #include "compare/fem_module.hpp"
 #include "fem_reference/checks.hpp"
 #include "lumped_mass/checks.hpp"
+#include "multibody/backend.hpp"
 #include "multibody/checks.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
@@ -66,14 +67,19 @@ SolverEntry multibody_entry() {
   // holds it within [1, 1.5] of the measured peak). Measured: dense modes 49 n^2 bytes
   // (LAPACK's n x n pencil and workspace); O(n) modes n (360 + 30 count) (the band
   // factors and the Lanczos basis of up to 4 count + 60 vectors); nonlinear: dense
-  // response 42-47 n^2, dense statics 21 n^2, O(n) response 2.07-2.09 KB and O(n)
-  // statics 0.83-0.84 KB per segment. Used: those with 3-20 % to spare.
+  // response 42-47 n^2, dense statics 21 n^2, O(n) response 1.54-1.64 KB (newmark, the
+  // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 0.83-0.84 KB per
+  // segment. Used: those with 3-20 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
-    if (count > 0) return multibody::uses_sparse_path(s.multibody) ? n * (420.0 + 33.0 * count) : 52.0 * n * n;
+    auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, a) == multibody::Backend::banded; };
+    if (count > 0)
+      return multibody::backend(s.multibody, s.ring.supports, count) == multibody::Backend::banded
+                 ? n * (420.0 + 33.0 * count)
+                 : 52.0 * n * n;
     double bytes = 0.0;
-    if (s.response) bytes = std::max(bytes, multibody::use_sparse_path(s.multibody) ? 2200.0 * n : 50.0 * n * n);
-    if (s.statics) bytes = std::max(bytes, multibody::use_natural_statics(s.multibody) ? 900.0 * n : 25.0 * n * n);
+    if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * n * n);
+    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 900.0 * n : 25.0 * n * n);
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) { multibody::check_modes(s.ring, s.multibody); };

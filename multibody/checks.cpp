@@ -4,12 +4,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "multibody/modes.hpp"
+#include "multibody/backend.hpp"
 
 namespace multibody {
 
 void check_modes(const ring::RingSpec&, const ring::MultibodyOptions& options) {
-  const bool sparse = uses_sparse_path(options);
+  const bool sparse = backend(options, Analysis::modes) == Backend::banded;
   if (sparse && options.dependent == ring::MultibodyOptions::Dependent::paper)
     throw std::invalid_argument(
         "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "

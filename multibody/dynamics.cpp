@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "multibody/backend.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
@@ -111,14 +112,6 @@ class ChainStepper : public paths::Stepper {
 
 }  // namespace
 
-bool use_sparse_path(const ring::MultibodyOptions& options) {
-  switch (options.method) {
-    case ring::MultibodyOptions::Method::dense: return false;
-    case ring::MultibodyOptions::Method::sparse: return true;
-    default: return options.n >= kSparseDynamicsCrossover;
-  }
-}
-
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
                           const IntegrationControls& controls) {
@@ -138,9 +131,9 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const detail::Damping damping{response.rayleigh_mass,
                                 (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K()};
   const bool damped = damping.any();
-  const std::unique_ptr<detail::NewtonBackend> backend =
-      detail::make_newton_backend(chain, p.load, damping, use_sparse_path(options));
-  detail::NewtonBackend& nb = *backend;
+  const bool banded = backend(options, Analysis::response) == Backend::banded;
+  const std::unique_ptr<detail::NewtonBackend> newton = detail::make_newton_backend(chain, p.load, damping, banded);
+  detail::NewtonBackend& nb = *newton;
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
 

@@ -19,22 +19,18 @@
 //    partitioning. The c dependent angles are the best-conditioned columns of G at the
 //    start of each step (column-pivoted QR), the Newmark formulas act on the others,
 //    and g(phi) = 0, G phi' = 0, G phi'' + Gdot phi' = 0 give the dependent positions,
-//    velocities and accelerations exactly. (Newmark with gamma = 1/2 applied to the
-//    index-3 form with multipliers is unstable: Cardona & Geradin 1989; we saw the
-//    energy grow 1000-fold in 5 s and Newton fail at t = 3.5 s with dt = 0.005.)
-//    It starts from the accelerations filtered by the first step's Newton matrix, as
-//    generalized-alpha's a_0 below (phi''_0 in the modes the step resolves; the
-//    consistent phi''_0 left +-phi''_0 oscillating in every unresolved mode).
+//    velocities and accelerations exactly (Newmark with gamma = 1/2 applied to the
+//    index-3 form with multipliers is unstable: Cardona & Geradin 1989). It starts from
+//    the accelerations filtered by the first step's Newton matrix, as generalized-alpha's
+//    a_0 below.
 //  - generalized-alpha: Chung & Hulbert (1993) parameters from rho_inf, on the index-3
 //    form with multipliers, as Arnold & Bruls (2007, Multibody Syst. Dyn. 18:185):
 //    equilibrium and constraints at t_{n+1}, a pseudo-acceleration a with
 //    (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) phi''_{n+1} + alpha_f phi''_n,
 //    consistent initial accelerations phi''_0 (the index-1 problem at t = 0), and a_0
 //    from the first step's Newton matrix S: S a_0 = c (M phi''_0) with the constraints,
-//    c = (1 - alpha_m) / ((1 - alpha_f) beta h^2); per mode a_0 = c phi''_0 / (c + w^2).
-//    (a_0 = phi''_0, the usual start, makes the scheme overshoot in velocity in every
-//    mode with w h >> 1: under a point step load on a fine chain it gained energy from
-//    the first step and the run failed from n ~ 640; multibody/README.md.)
+//    c = (1 - alpha_m) / ((1 - alpha_f) beta h^2); per mode a_0 = c phi''_0 / (c + w^2)
+//    (why not a_0 = phi''_0: integrators.hpp, starting_pseudo_acceleration).
 // Both solve, per Newton iteration, the saddle-point system [T G^T; G 0] with T the
 // analytic tangent of dynamics_model.hpp; rows of g and columns of lambda are scaled by
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
@@ -53,16 +49,12 @@
 // itself; the model has no contact).
 // MultibodyOptions: n, rotary_inertia and method are used; `dependent` is not (the
 // partition is chosen by pivoting at every step).
-// method: `dense` forms the n x n tangent (O(n^2) per Newton iteration, O(n^3) per
-// factorization); `sparse` keeps the same equations, iterates and policies but
-// never forms an n x n matrix: the tangent is diag + cyclic springs + m l^2 U^T (L^T L) W
-// with L the midpoint cumulative sum, whose bidiagonal relations make the saddle-point
-// system banded plus a border of 2 + c unknowns (dynamics_sparse.hpp): O(n) time and
-// memory per Newton iteration, and the self-contact test uses a uniform grid (O(n)).
-// `automatic` takes sparse from n = kSparseDynamicsCrossover. The two are backends of one
-// interface (newton_backend.hpp), chosen once per run; the integrators' steps are in
-// integrators.hpp. The two paths give the
-// same histories to ~1e-12 of the peak displacement (tests at n = 40, 160, 1280).
+// method (backend.hpp, Analysis::response): the dense backend forms the n x n tangent
+// (O(n^2) per Newton iteration, O(n^3) per factorization); the banded one keeps the same
+// equations, iterates and policies in O(n) time and memory per iteration
+// (dynamics_sparse.hpp) and tests self-contact on a uniform grid. Both implement
+// newton_backend.hpp, chosen once per run, and give the same histories to ~1e-12 of the
+// peak displacement (tests at n = 40, 160, 1280); the steps are in integrators.hpp.
 #pragma once
 
 #include <string>
@@ -90,16 +82,6 @@ struct IntegrationControls {
   bool check_contact = true;
 };
 
-/// Segments from which MultibodyOptions::Method::automatic takes the O(n) sparse path
-/// (dynamics_sparse.hpp). Measured (bench/multibody/bench_dynamics.cpp, CPU time per
-/// step, 20 kN scene): n = 40 dense 68/85 us vs sparse 67/100 us (generalized-alpha /
-/// newmark); n = 60-80 equal within the noise of a loaded machine (500-step runs);
-/// n = 160 dense 703/742 us vs sparse 417/477 us. So the crossover lies near 80-100.
-constexpr int kSparseDynamicsCrossover = 100;
-
-/// True when respond() takes the O(n) structured/sparse path for these options.
-bool use_sparse_path(const ring::MultibodyOptions& options);
-
 /// Forced response from rest in the undeformed state (phi = phi0, phi' = 0).
 /// Requires a pin (and normally a roller; without one the rigid rotation about the
 /// pin is left to the dynamics). The load acts at `response.load.angle`, which must be
@@ -110,13 +92,10 @@ bool use_sparse_path(const ring::MultibodyOptions& options);
 /// balance error T + V + D - W (J; D the energy dissipated by damping, midpoint rule
 /// per step), constraint
 /// residual max |g| (m), Newton iterations of the step (summed over sub-steps).
-/// Cost per step: dense path O(n^2) per Newton iteration (3 to 7) plus an O(n^3)
-/// factorization whenever the kept Newton matrix is refreshed (measured: 44 us per step
-/// at n = 40 with generalized-alpha, 36 ms at n = 640); sparse path O(n) per iteration
-/// (see bench/multibody/bench_dynamics.cpp for both). Mean Newton iterations per step,
-/// 20 kN scene, dt = 0.01 s, first 2 s: generalized-alpha 3.5 (n = 40), 3.35 (640,
-/// 2560, 10^4); newmark 3.14 (40), 3.12 (640), 3.11 (2560); over 1000 steps at n = 10^4
-/// 3.50 and 3.41 (docs/measured.md).
+/// Cost per step: dense path O(n^2) per Newton iteration plus an O(n^3) factorization
+/// whenever the kept Newton matrix is refreshed; sparse path O(n) per iteration; 3 to 4
+/// Newton iterations per step (times and counts: docs/measured.md, "multibody: forced
+/// response").
 /// Throws std::invalid_argument for a spec/options that can never work (no pin, odd
 /// n with a roller, dt <= 0, rho_inf outside [0, 1], load not on a hinge) and
 /// IntegrationFailure (a ring::NumericalError) when the integration cannot continue.

@@ -13,7 +13,8 @@
 //   d xi/dv     = 2 S diag(v)
 //   d(G^T lambda)/dq = diag_j(lambda . d^2 g/d phi_j^2): g is a sum of sinusoids
 //     l (a cos phi_j + b sin phi_j) of single angles, so its Hessians are diagonal and
-//     d^2 g / d phi_j^2 = (column j of G) evaluated at phi_j + pi/2
+//     d^2 g / d phi_j^2 is minus segment j's term (Chain::constraint_kinematics returns
+//     them with g and G)
 //   d Phi/dq    = diag_j(-l e(phi_j) . F) for the segments before the loaded hinge.
 #pragma once
 

@@ -84,9 +84,7 @@ void inertia_terms_structured(const Chain& chain, const Vector& q, const Vector&
   r.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) r[j] = ml2 * Ep.col(j).dot(Y.col(j)) + jr * qdd[j];
   if (!T) return;
-  if (T->diag.size() != n) {
-    T->diag = Vector::Zero(n);
-  }
+  if (T->diag.size() != n) T->diag = Vector::Zero(n);
   LowRankTerm t;
   t.coef = ml2;
   t.left = Ep;
@@ -111,111 +109,48 @@ StructuredMatrix mass_structured(const Chain& chain, const Vector& q) {
   return M;
 }
 
-// ---- banded LU with partial pivoting: LAPACK's dgbtrf/dgbtrs ----
-// A(i, j) is stored at ab[j * ldab + kv + i - j], kv = kl + ku, ldab = 2 kl + ku + 1 (LAPACK's
-// band storage: the kl extra rows hold the fill of the row interchanges). O(N kl (kl + ku))
-// to factor, O(N (2 kl + ku)) to solve.
-extern "C" {
-void dgbtrf_(const int* m, const int* n, const int* kl, const int* ku, double* ab, const int* ldab, int* ipiv,
-             int* info);
-void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku, const int* nrhs, const double* ab,
-             const int* ldab, const int* ipiv, double* b, const int* ldb, int* info, std::size_t trans_len);
-}
+// Unknowns, segment by segment: per term (y_x, y_y), dq_j, per term (s_x, s_y) (the order
+// with the narrowest band; one term: lower 5, upper 5). Rows in the same order: the y
+// relations, the equation of dq_j, the s relations. The term's coefficient goes into its
+// W rows (y carries force units), so the equation rows of dq_j hold the unit vectors
+// U_j. The border: z0 = dq_{n-1} and z1 = dq_0 (the springs' cyclic corner entries move
+// to them: row dq_0 holds -k z0, row z0 says z0 - dq_{n-1} = 0), then the multipliers.
+namespace {
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+int stride(int terms) { return 1 + 4 * terms; }
+Eigen::Index dq_index(Eigen::Index j, int terms) { return j * stride(terms) + 2 * terms; }
 
-void BandLU::resize(Eigen::Index N, int kl, int ku) {
-  N_ = N;
-  kl_ = kl;
-  ku_ = ku;
-  ldab_ = 2 * kl + ku + 1;
-  ab_.assign(size_t(N) * ldab_, 0.0);
-  ipiv_.assign(N, 0);
-}
-
-bool BandLU::factor() {
-  for (double x : ab_)
-    if (!std::isfinite(x)) return false;
-  const int n = static_cast<int>(N_);
-  int info = 0;
-  dgbtrf_(&n, &n, &kl_, &ku_, ab_.data(), &ldab_, ipiv_.data(), &info);
-  return info == 0;  // info > 0: an exactly zero pivot
-}
-
-void BandLU::solve_many(double* b, Eigen::Index ld, Eigen::Index k) const {
-  const int n = static_cast<int>(N_), nrhs = static_cast<int>(k), ldb = static_cast<int>(ld);
-  int info = 0;
-  dgbtrs_("N", &n, &kl_, &ku_, &nrhs, ab_.data(), &ldab_, ipiv_.data(), b, &ldb, &info, 1);
-}
-
-void BandLU::solve(double* b) const { solve_many(b, N_, 1); }
-
-void BandLU::solve_rows(double* b, int k) const {
-  const Eigen::Index kv = kl_ + ku_;
-  // L: dgbtrs's row interchanges and multipliers (rows kv + 1 .. kv + kl of column j).
-  for (Eigen::Index j = 0; j + 1 < N_; ++j) {
-    double* bj = b + j * k;
-    const Eigen::Index p = ipiv_[j] - 1, lm = std::min<Eigen::Index>(kl_, N_ - 1 - j);
-    if (p != j) std::swap_ranges(bj, bj + k, b + p * k);
-    const double* l = &ab_[size_t(j) * ldab_ + kv + 1];
-    for (Eigen::Index i = 0; i < lm; ++i)
-      for (int q = 0; q < k; ++q) bj[(i + 1) * k + q] -= l[i] * bj[q];
-  }
-  // U, upper bandwidth kv, column by column from the last (dtbsv's order).
-  for (Eigen::Index j = N_ - 1; j >= 0; --j) {
-    double* bj = b + j * k;
-    const double* u = &ab_[size_t(j) * ldab_ + kv - j];  // u[i] = U(i, j), j - kv <= i <= j
-    for (int q = 0; q < k; ++q) bj[q] /= u[j];
-    for (Eigen::Index i = j - 1; i >= std::max<Eigen::Index>(0, j - kv); --i)
-      for (int q = 0; q < k; ++q) b[i * k + q] -= bj[q] * u[i];
-  }
-}
-
-// Unknowns, segment by segment: dq_j, then per term (y_x, y_y, s_x, s_y)_j. Rows in the
-// same order: the equation of dq_j, the y and s relations. The term's coefficient goes
-// into its W rows (y carries force units), so the equation rows of dq_j hold the unit
-// vectors U_j. This core is banded (lower bandwidth 2 stride - 1, upper stride). The two
-// cyclic corner entries of the springs and the constraint rows/columns form a border of
-// k = 2 + c unknowns (z0 = dq_{n-1}, z1 = dq_0, the multipliers), eliminated by the
-// Schur complement S = D - C core^{-1} B (k x k) of the bordered system.
-bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc) {
+/// Calls put(i, j, v) for every entry of the bordered saddle-point matrix, the springs'
+/// entries also when T.cyclic = 0: the pattern depends on n, the terms and c only.
+template <class Put>
+void saddle_entries(const StructuredMatrix& T, const Matrix& G, double sc, Put put) {
   const Eigen::Index n = T.size(), c = G.rows();
   const int nt = static_cast<int>(T.terms.size());
-  stride_ = 1 + 4 * nt;
-  order_ = n * stride_;
-  T_ = T;
-  G_ = G;
-  sc_ = sc;
-  // Within a segment's block: the y of every term, dq_j, then the s of every term. This
-  // order gives the narrowest band (one term: lower 5, upper 5).
-  std::vector<Eigen::Triplet<double>> tr;
-  tr.reserve(size_t(n) * (3 + 14 * nt));
-  auto put = [&](Eigen::Index i, Eigen::Index j, double v) { tr.emplace_back(i, j, v); };
-  auto dq = [&](Eigen::Index j) { return j * stride_ + 2 * nt; };
-  auto yv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 2 * t + comp; };
-  auto sv = [&](Eigen::Index j, int t, int comp) { return j * stride_ + 2 * nt + 1 + 2 * t + comp; };
-  dq0_ = 2 * nt;
+  const Eigen::Index core = n * stride(nt);
+  auto dq = [&](Eigen::Index j) { return dq_index(j, nt); };
+  auto yv = [&](Eigen::Index j, int t, int a) { return j * stride(nt) + 2 * t + a; };
+  auto sv = [&](Eigen::Index j, int t, int a) { return dq(j) + 1 + 2 * t + a; };
   for (Eigen::Index j = 0; j < n; ++j) {
     const Eigen::Index row = dq(j);
-    put(row, dq(j), T.diag[j] + 2.0 * T.cyclic);
-    if (T.cyclic != 0.0) {
-      if (j > 0) put(row, dq(j - 1), -T.cyclic);
-      if (j + 1 < n) put(row, dq(j + 1), -T.cyclic);
-    }
+    put(row, row, T.diag[j] + 2.0 * T.cyclic);
+    if (j > 0) put(row, dq(j - 1), -T.cyclic);
+    if (j + 1 < n) put(row, dq(j + 1), -T.cyclic);
     for (int t = 0; t < nt; ++t) {
       const LowRankTerm& term = T.terms[t];
       for (int a = 0; a < 2; ++a) {
         put(row, sv(j, t, a), term.left(a, j));
         // y_j - y_{j-1} - (coef/2) (W_j dq_j + W_{j-1} dq_{j-1}) = 0
         const Eigen::Index ry = yv(j, t, a);
-        put(ry, yv(j, t, a), 1.0);
-        put(ry, dq(j), -0.5 * term.coef * term.right(a, j));
+        put(ry, ry, 1.0);
+        put(ry, row, -0.5 * term.coef * term.right(a, j));
         if (j > 0) {
           put(ry, yv(j - 1, t, a), -1.0);
           put(ry, dq(j - 1), -0.5 * term.coef * term.right(a, j - 1));
         }
         // s_j - s_{j+1} - (y_j + y_{j+1}) / 2 = 0
         const Eigen::Index rs = sv(j, t, a);
-        put(rs, sv(j, t, a), 1.0);
-        put(rs, yv(j, t, a), -0.5);
+        put(rs, rs, 1.0);
+        put(rs, ry, -0.5);
         if (j + 1 < n) {
           put(rs, sv(j + 1, t, a), -1.0);
           put(rs, yv(j + 1, t, a), -0.5);
@@ -223,34 +158,34 @@ bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc)
       }
     }
   }
-  int kl = 0, ku = 0;
-  for (const auto& e : tr) {
-    kl = std::max<int>(kl, int(e.row() - e.col()));
-    ku = std::max<int>(ku, int(e.col() - e.row()));
-  }
-  band_.resize(order_, kl, ku);
-  for (const auto& e : tr) band_.at(e.row(), e.col()) += e.value();
-  nnz_ = static_cast<long>(tr.size());
-  if (!band_.factor()) return false;
-  // Border: B (order x k), C (k x order), D (k x k).
-  const Eigen::Index k = 2 + c;
-  X_ = RowMatrix::Zero(order_, k);  // B, then core^{-1} B in place
-  C_ = Matrix::Zero(k, order_);
-  Matrix D = Matrix::Zero(k, k);
-  X_(dq(0), 0) = -T.cyclic;
-  X_(dq(n - 1), 1) = -T.cyclic;
-  C_(0, dq(n - 1)) = -1.0;
-  C_(1, dq(0)) = -1.0;
-  D(0, 0) = D(1, 1) = 1.0;
+  put(dq(0), core, -T.cyclic);
+  put(dq(n - 1), core + 1, -T.cyclic);
+  put(core, dq(n - 1), -1.0);
+  put(core + 1, dq(0), -1.0);
+  put(core, core, 1.0);
+  put(core + 1, core + 1, 1.0);
   for (Eigen::Index i = 0; i < c; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) X_(dq(j), 2 + i) = C_(2 + i, dq(j)) = sc * G(i, j);
-  nnz_ += 2 + 2 * n * c;
-  band_.solve_rows(X_.data(), static_cast<int>(k));
-  schur_.compute(D - C_ * X_);
-  return std::isfinite(schur_.rcond()) && schur_.rcond() > 1e-300;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      put(dq(j), core + 2 + i, sc * G(i, j));
+      put(core + 2 + i, dq(j), sc * G(i, j));
+    }
 }
+}  // namespace
 
-long SparseSaddle::factor_nonzeros() const { return band_.stored(); }
+bool SparseSaddle::factor(const StructuredMatrix& T, const Matrix& G, double sc) {
+  const int nt = static_cast<int>(T.terms.size());
+  if (T.size() != T_.size() || nt != static_cast<int>(T_.terms.size()) || G.rows() != G_.rows())
+    band_ = BorderedBand(T.size() * stride(nt), 2 + G.rows(), [&](auto mark) {
+      saddle_entries(T, G, sc, [&](Eigen::Index i, Eigen::Index j, double) { mark(i, j); });
+    });
+  else
+    band_.clear();
+  T_ = T;
+  G_ = G;
+  sc_ = sc;
+  saddle_entries(T, G, sc, [&](Eigen::Index i, Eigen::Index j, double v) { band_.add(i, j, v); });
+  return band_.factor();
+}
 
 bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
                          int refinements) const {
@@ -272,17 +207,15 @@ bool SparseSaddle::solve(const Vector& b, const Vector& d, Vector& x, Vector& y,
 
 bool SparseSaddle::solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Matrix& Y) const {
   const Eigen::Index n = T_.size(), c = G_.rows(), k = B.cols();
-  RowMatrix u = RowMatrix::Zero(order_, k);
-  Matrix e = Matrix::Zero(2 + c, k);
-  for (Eigen::Index j = 0; j < n; ++j) u.row(j * stride_ + dq0_) = B.row(j);
-  e.bottomRows(c) = D;
-  if (!u.allFinite() || !e.allFinite()) return false;
-  band_.solve_rows(u.data(), static_cast<int>(k));
-  const Matrix w = schur_.solve(e - C_ * u);
-  u.noalias() -= X_ * w;
+  const int nt = static_cast<int>(T_.terms.size());
+  RowMatrix z = RowMatrix::Zero(band_.order(), k);  // by rows, as BorderedBand::solve takes them
+  for (Eigen::Index j = 0; j < n; ++j) z.row(dq_index(j, nt)) = B.row(j);
+  z.bottomRows(c) = D;
+  if (!z.allFinite()) return false;
+  band_.solve(z.data(), static_cast<int>(k));
   X.resize(n, k);
-  for (Eigen::Index j = 0; j < n; ++j) X.row(j) = u.row(j * stride_ + dq0_);
-  Y = w.bottomRows(c);
+  for (Eigen::Index j = 0; j < n; ++j) X.row(j) = z.row(dq_index(j, nt));
+  Y = z.bottomRows(c);
   return X.allFinite() && Y.allFinite();
 }
 

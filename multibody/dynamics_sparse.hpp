@@ -15,17 +15,15 @@
 // (dq, y_t, s_t, dlambda) of order n (1 + 4 terms) + c. Interleaved segment by segment
 // it is banded (bandwidths ~2 stride and stride) except for the springs' two cyclic
 // corner entries and the c constraint rows and columns; those form a border of 2 + c
-// unknowns eliminated through a small Schur complement. (Eigen's SparseLU, tried
-// first, pivoted on the dense border rows and cost 3 s per step at n = 2560.) Solves can
-// be refined against the exact O(n) product T x; Newton corrections are not (the
-// iteration itself refines them), the consistent initial accelerations are (twice).
+// unknowns: a BorderedBand (bordered_band.hpp). Solves can be refined against the exact
+// O(n) product T x; Newton corrections are not (the iteration itself refines them), the
+// consistent initial accelerations are (twice).
 #pragma once
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCore>
-#include <memory>
 #include <vector>
 
+#include "multibody/bordered_band.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 
@@ -65,38 +63,12 @@ void inertia_terms_structured(const Chain& chain, const Vector& q, const Vector&
 /// M(q) as a structured matrix (m l^2 U^T A U + Jr I). O(n).
 StructuredMatrix mass_structured(const Chain& chain, const Vector& q);
 
-/// Banded LU with partial pivoting by LAPACK (dgbtrf/dgbtrs) in LAPACK's band storage:
-/// lower bandwidth kl, upper ku. O(N kl (kl + ku)) to factor, O(N (2 kl + ku)) to solve.
-class BandLU {
- public:
-  void resize(Eigen::Index N, int kl, int ku);  ///< zero matrix of order N
-  /// Entry (i, j), |i - j| within the band (before factor()).
-  double& at(Eigen::Index i, Eigen::Index j) { return ab_[size_t(j) * ldab_ + kl_ + ku_ + i - j]; }
-  bool factor();                 ///< false on a zero or non-finite pivot
-  void solve(double* b) const;   ///< in place
-  /// k right-hand sides, column q at b + q ld, in place.
-  void solve_many(double* b, Eigen::Index ld, Eigen::Index k) const;
-  /// k right-hand sides stored by rows (row i at b + i k), in place: dgbtrs's operations
-  /// in its order, so the same result bit for bit, but one pass over the factors for all
-  /// k (dgbtrs runs its triangular band solve, dtbsv, once per right-hand side: at large
-  /// N each pass streams the factors from memory).
-  void solve_rows(double* b, int k) const;
-  long stored() const { return static_cast<long>(ab_.size()); }
-
- private:
-  Eigen::Index N_ = 0;
-  int kl_ = 0, ku_ = 0, ldab_ = 1;
-  std::vector<double> ab_;
-  std::vector<int> ipiv_;  ///< LAPACK's 1-based row interchanges
-};
-
-/// The factorized saddle-point matrix [T sc G^T; sc G 0] of a structured T: the banded
-/// core (dq, y, s) by BandLU, the spring's two cyclic corner entries and the c
-/// constraint rows as a border of 2 + c unknowns by its Schur complement. O(n) time and
-/// memory.
+/// The factorized saddle-point matrix [T sc G^T; sc G 0] of a structured T as a
+/// BorderedBand: the banded core (dq, y, s), and the springs' two cyclic corner entries
+/// and the c constraint rows as a border of 2 + c unknowns. O(n) time and memory.
 class SparseSaddle {
  public:
-  /// Factors; false on a singular core or Schur complement.
+  /// Factors; false when the matrix is singular by BorderedBand's test.
   bool factor(const StructuredMatrix& T, const Matrix& G, double sc);
   /// Solves [T sc G^T; sc G 0] [x; y] = [b; d] with `refinements` steps of iterative
   /// refinement against the exact product. False on a non-finite result.
@@ -105,22 +77,15 @@ class SparseSaddle {
   /// without refinement. False on a non-finite result.
   bool solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Matrix& Y) const;
   Eigen::Index constraints() const { return G_.rows(); }  ///< c
-  /// Entries placed in the banded core and border (bench counter), doubles stored by the band.
-  long nonzeros() const { return nnz_; }
-  long factor_nonzeros() const;
+  /// Entries of the bordered matrix's pattern and doubles stored (bench counters).
+  long nonzeros() const { return band_.entries(); }
+  long factor_nonzeros() const { return band_.stored(); }
 
  private:
   StructuredMatrix T_;
   Matrix G_;
   double sc_ = 1.0;
-  int stride_ = 1, dq0_ = 0;  ///< unknowns per segment; offset of dq_j in its block
-  long nnz_ = 0;
-  Eigen::Index order_ = 0;
-  BandLU band_;
-  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  RowMatrix X_;  ///< core^{-1} B, B the border columns (by rows, as BandLU::solve_rows takes them)
-  Matrix C_;     ///< the border rows
-  Eigen::PartialPivLU<Matrix> schur_;
+  BorderedBand band_;  ///< its structure depends on n, the number of terms and c only
 };
 
 /// closest_nonadjacent (dynamics_model.hpp) with a uniform grid of cell size l + reach

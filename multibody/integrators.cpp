@@ -11,10 +11,9 @@ namespace {
 
 /// The partitioned step refreshes its Newton matrix after a correction above this (rad):
 /// its Jacobian changes fast with the iterate at large n (the dependent angles' rates sum
-/// over the whole chain), so a kept matrix contracts poorly after a large correction.
-/// Measured on the 20 kN scene (dt = 0.01, 2 s; iterations per step, wall): n = 2560:
-/// 1e-2: 3.23, 4.24 ms per step; 1e-3: 3.11, 4.31 ms; 1e-4: 3.02, 4.44 ms; n = 40: 3.50, 3.14,
-/// 3.11.
+/// over the whole chain), so a kept matrix contracts poorly after a large correction
+/// (iterations and time per step for 1e-2 .. 1e-4: docs/measured.md, "Newton iterations
+/// per step").
 constexpr double kRefreshPartitioned = 1e-3;
 
 /// Decides, iteration by iteration, whether the kept Newton matrix is still good enough.

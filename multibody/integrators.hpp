@@ -55,15 +55,11 @@ struct StepOutcome {
 /// in q and v: tests/multibody/test_dynamics.cpp), and -> 0 where w h >> 1. Why not
 /// a_0 = qdd_0: a mode with w h >> 1 started there leaves the first steps with the
 /// velocity ~ h (1 - gamma) qdd_0 instead of ~ qdd_0 / w (the method's velocity
-/// overshoot); a point step load gives every mode the acceleration F_k / m_k, the chain's
-/// w_max grows like n^2, and the spurious velocity of the loaded hinge spins its segments
-/// once h^2 |qdd_0| exceeds their length: +1.6 J at n = 640, +30 J at 1280, +1.3e3 J at
-/// 2560 of T + V - W after the first step of the 20 kN scene (docs/measured.md,
-/// "Energy growth is a failure"). With this start the balance stays <= 0. Newmark, which
-/// does not overshoot, kept the start's +-qdd_0 in every unresolved mode (the trapezoidal
-/// rule does not damp them): its energy balance reached +1.2e-4 of the work at n = 40,
-/// and its Newton needed 4.06 iterations per step at n = 2560 instead of 3.11. Cost: one
-/// factorization of the Newton matrix (O(n) sparse, O(n^3) dense).
+/// overshoot); a point step load gives every mode the acceleration F_k / m_k and the
+/// chain's w_max grows like n^2, so fine chains gained energy from the first step; Newmark,
+/// which does not overshoot, kept +-qdd_0 in every unresolved mode (docs/measured.md,
+/// "Starting acceleration"). Cost: one factorization of the Newton matrix (O(n) sparse,
+/// O(n^3) dense).
 void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, NewtonBackend& nb,
                                   State& s);
 
@@ -87,9 +83,9 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
 /// (c = 1 / (beta h^2), c' = gamma / (beta h); the dependent accelerations' change with q
 /// that T's c I leaves out). It is applied by Woodbury's formula: c extra solves with each
 /// factorization, O(c n) per iteration. (The dependent velocities' share, (dxi/dv + C) E
-/// V_v^T, is left out: measured, it changes no iteration count.) The rank-c term grows
-/// like n, since three angles close a loop of n segments: without it Newton was linear
-/// and took 6.0 iterations per step at n = 640 and 19 at 2560. Its first iteration
+/// V_v^T, is left out: it changes no iteration count, docs/measured.md.) The rank-c term
+/// grows like n, since three angles close a loop of n segments: without it Newton is
+/// linear (docs/measured.md, "Newton iterations per step"). Its first iteration
 /// applies Newmark's formulas to every angle, as the index-3 form does (no dependent
 /// rates): from the predictor the partitioned equations are far from linear at large n
 /// (at n = 10^4 their first correction did not shrink the second), the index-3 ones are

@@ -106,17 +106,6 @@ SparsePairs library_pairs(ShiftedSolve& sp, int nev) {
   return out;
 }
 
-}  // namespace
-
-bool uses_sparse_path(const ring::MultibodyOptions& options) {
-  using Method = ring::MultibodyOptions::Method;
-  if (options.method == Method::sparse) return true;
-  if (options.method == Method::dense) return false;
-  return options.dependent == Dependent::robust && options.n > kSparseThreshold;
-}
-
-namespace {
-
 /// One of the two eigen-solution paths of solve_modes (modes.hpp), chosen once: the
 /// computed pairs, their M-normalized vectors, the operator norms of the backward error,
 /// the reduced products K0 x and M0 x of the residuals, and the chain-coordinate shapes.
@@ -233,11 +222,7 @@ class SparsePath final : public ModesPath {
 ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options, int count,
                           SparseEigensolver eigensolver) {
   const auto start = std::chrono::steady_clock::now();
-  // Automatic choice: the sparse path also needs few modes relative to r (its Lanczos
-  // basis grows with the count; asking for a third of the spectrum or more is the dense
-  // path's job, as in the small-problem rule of the dense path itself). Set below.
   check_modes(spec, options);
-  bool sparse = uses_sparse_path(options);
   const Chain chain(spec, options);
   const int N = chain.dofs(), r = N - chain.constraint_count();
   const int expected_rigid = spec.supports.rigid_modes();
@@ -245,9 +230,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     throw std::invalid_argument("multibody: count = " + std::to_string(count) +
                                 " must satisfy 1 <= count <= " + std::to_string(r - expected_rigid) +
                                 " (elastic modes of the n = " + std::to_string(chain.n()) + " chain)");
-  if (sparse && options.method == ring::MultibodyOptions::Method::automatic &&
-      3 * std::min(r, count + expected_rigid + 2) > r)
-    sparse = false;
+  const bool sparse = backend(options, spec.supports, count) == Backend::banded;
   const double s = modal::bending_scale(spec);
   const int nev = std::min(r, count + expected_rigid + 2);
   std::unique_ptr<ModesPath> path;

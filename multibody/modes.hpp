@@ -18,7 +18,7 @@
 // Cost: O(r^3) for the Cholesky factorizations (S and the M_0 check), O(r^2) per Lanczos
 // step; O(r^3) eigenvectors on the small path.
 //
-// ## Sparse path (MultibodyOptions::method = sparse, or automatic above kSparseThreshold)
+// ## Sparse path (the banded backend of backend.hpp: method = sparse, or auto from n = 257)
 // Same pencil, never formed: K and M(q0) only as O(n) operators in chain coordinates,
 // and S = K + s M solved in O(n) on the null space of J by a Riccati sweep with a border
 // of <= 6 unknowns (shifted_solve.hpp). The eigenpairs come either from the eigen layer
@@ -56,8 +56,8 @@
 // omega = the `count` lowest elastic modes in rad/s ascending; shapes = hinge
 // displacements sampled with ring::sample_polygon (anchor = hinge 0's angle, the pin's or
 // 0 deg for a free ring); unknowns = r; seconds = solver wall time (assembly, reduction,
-// factorizations, eigensolver, eigenvectors; not the sampling at the 360 stations, which
-// costs ~10 us per mode in ring::sample_polygon);
+// factorizations, eigensolver, eigenvectors; not the sampling at the 360 stations by
+// ring::sample_polygon);
 // max_residual = max over the returned modes of
 // ||K_0 x - w^2 M_0 x|| / (||K_0 x|| + w^2 ||M_0 x||).
 //
@@ -70,6 +70,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "multibody/backend.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/linear_model.hpp"
 #include "ring/results.hpp"
@@ -77,22 +78,12 @@
 
 namespace multibody {
 
-/// MultibodyOptions::Method::automatic takes the sparse path above this n (robust only):
-/// where the sparse path is measured faster (multibody/README.md, "Crossover"); both are
-/// within 1e-12 of the independent oracles on either side
-/// (tests/multibody/test_modes_sparse.cpp), so the switch costs no accuracy.
-constexpr int kSparseThreshold = 256;
-/// True when solve_modes may take the sparse large-n path for these options (automatic:
-/// n > kSparseThreshold, robust; solve_modes then also requires count + rigid + 2 <= r / 3,
-/// else dense).
-bool uses_sparse_path(const ring::MultibodyOptions& options);
-
 /// The eigensolver of the sparse path (file comment): the eigen layer's Spectra
 /// Lanczos, or the hand-written one of lanczos.hpp.
 enum class SparseEigensolver { library, hand_written };
 /// The one solve_modes(spec, options, count) and compute_modes use: the hand-written
-/// Lanczos, 2.3x faster at n = 10^6 with frequencies that agree with the library's to
-/// ~1e-12 (multibody/README.md, "Large n").
+/// Lanczos, measured faster at large n with frequencies that agree with the library's to
+/// ~1e-12 (docs/measured.md, "Time and memory, 23 modes").
 constexpr SparseEigensolver kDefaultSparseEigensolver = SparseEigensolver::hand_written;
 /// Spectra's relative Ritz-residual bound on the library path (modal::LanczosOptions::tol).
 constexpr double kLibraryLanczosTol = 1e-10;

@@ -173,26 +173,6 @@ double turns_a_link_by(const Natural& c, const Vec& dx) {
   return worst;
 }
 
-BandedOrder banded_order(const Natural& c) {
-  const int N = 2 * c.n;
-  Eigen::VectorXi perm = Eigen::VectorXi::Constant(c.size(), -1);
-  int next = 0;
-  auto put_hinge = [&](int k) {
-    perm(2 * k) = next++;
-    perm(2 * k + 1) = next++;
-  };
-  for (int k = 1; k <= c.n - 2; ++k) {
-    perm(N + k - 1) = next++;  // link k-1, between hinges k-1 and k
-    put_hinge(k);
-  }
-  perm(N + c.n - 2) = next++;  // link n-2
-  const int band = next;
-  for (int k : {c.n - 1, 0}) put_hinge(k);
-  perm(N + c.n - 1) = next++;
-  for (int row = c.n; row < c.rows(); ++row) perm(N + row) = next++;  // pin, roller
-  return {perm, band};
-}
-
 bool NewtonStop::converged(double step, double constraint) {
   constexpr double kTolerance = 1e-12, kFloor = 1e-9;
   const bool at_floor = step <= kFloor * R_ && step > 0.25 * previous_;
@@ -233,57 +213,25 @@ void kkt_pattern(const Natural& c, Visit visit) {
 
 }  // namespace
 
-BandedKkt::BandedKkt(const Natural& c) {
-  BandedOrder order = banded_order(c);
-  perm_ = std::move(order.perm);
-  core_ = order.band;
-  const int b = c.size() - core_;
-  solved_ = Eigen::VectorXi::Constant(b, -1);
-  reached_ = Eigen::VectorXi::Constant(core_, -1);
-  kkt_pattern(c, [&](int i, int j) {
-    const int r = perm_[i], col = perm_[j];
-    if (r < core_ && col < core_) {
-      kl_ = std::max(kl_, r - col);
-      ku_ = std::max(ku_, col - r);
-    } else if (r < core_) {
-      solved_[col - core_] = 0;
-    } else if (col < core_) {
-      reached_[col] = 0;
-    }
-  });
-  auto number = [](Eigen::VectorXi& used) {
-    std::vector<int> of;
-    for (int k = 0; k < used.size(); ++k)
-      if (used[k] >= 0) {
-        used[k] = static_cast<int>(of.size());
-        of.push_back(k);
-      }
-    return Eigen::Map<Eigen::VectorXi>(of.data(), static_cast<Eigen::Index>(of.size())).eval();
+BandedKkt::BandedKkt(const Natural& c) : perm_(Eigen::VectorXi::Constant(c.size(), -1)) {
+  const int N = 2 * c.n;  // the order of natural.hpp: the band in chain order, the border
+  int next = 0;
+  auto put_hinge = [&](int k) {
+    perm_(2 * k) = next++;
+    perm_(2 * k + 1) = next++;
   };
-  border_of_ = number(solved_);
-  band_of_ = number(reached_);
-  clear();
-}
-
-void BandedKkt::clear() {
-  const int b = static_cast<int>(solved_.size());
-  band_.resize(core_, kl_, ku_);
-  X_.setZero(core_, border_of_.size());
-  C_.setZero(b, band_of_.size());
-  D_.setZero(b, b);
-}
-
-bool BandedKkt::factor() {
-  if (!band_.factor()) return false;
-  band_.solve_rows(X_.data(), static_cast<int>(X_.cols()));
-  // D - C band^-1 B on the band columns that C reaches.
-  Eigen::MatrixXd Xr(band_of_.size(), X_.cols());
-  for (Eigen::Index q = 0; q < band_of_.size(); ++q) Xr.row(q) = X_.row(band_of_[q]);
-  const Eigen::MatrixXd CX = C_ * Xr;
-  for (Eigen::Index q = 0; q < border_of_.size(); ++q) D_.col(border_of_[q]) -= CX.col(q);
-  schur_.compute(D_);
-  const double pivot = schur_.matrixLU().diagonal().cwiseAbs().minCoeff();
-  return std::isfinite(pivot) && pivot > 0.0;
+  for (int k = 1; k <= c.n - 2; ++k) {
+    perm_(N + k - 1) = next++;  // link k-1, between hinges k-1 and k
+    put_hinge(k);
+  }
+  perm_(N + c.n - 2) = next++;  // link n-2
+  const int band = next;
+  for (int k : {c.n - 1, 0}) put_hinge(k);
+  perm_(N + c.n - 1) = next++;
+  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller
+  band_ = detail::BorderedBand(band, c.size() - band, [&](auto mark) {
+    kkt_pattern(c, [&](int i, int j) { mark(perm_[i], perm_[j]); });
+  });
 }
 
 Vec BandedKkt::solve(const Vec& rhs) const {
@@ -293,17 +241,9 @@ Vec BandedKkt::solve(const Vec& rhs) const {
 }
 
 void BandedKkt::solve(Vec& z, Vec& scratch) const {
-  const int m = core_;
   scratch.resize(z.size());
   for (Eigen::Index i = 0; i < z.size(); ++i) scratch[perm_[i]] = z[i];
   band_.solve(scratch.data());
-  const auto f = scratch.head(m);
-  Vec g = scratch.tail(z.size() - m);
-  for (Eigen::Index q = 0; q < band_of_.size(); ++q) g -= C_.col(q) * f[band_of_[q]];
-  const Vec y = schur_.solve(g);
-  auto fx = scratch.head(m);
-  for (Eigen::Index q = 0; q < border_of_.size(); ++q) fx -= X_.col(q) * y[border_of_[q]];
-  scratch.tail(z.size() - m) = y;
   for (Eigen::Index i = 0; i < z.size(); ++i) z[i] = scratch[perm_[i]];
 }
 

@@ -8,11 +8,10 @@
 
 #include <cassert>
 #include <memory>
-
 #include <vector>
 
+#include "multibody/bordered_band.hpp"
 #include "multibody/chain.hpp"
-#include "multibody/dynamics_sparse.hpp"
 #include "multibody/statics.hpp"
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
@@ -65,46 +64,27 @@ void mass_times(const Natural& c, const Vec& v, Vec& out);
 Vec constraints(const Natural& c, const Vec& x);
 /// The same into `g` (resized; no allocation when it has the size).
 void constraints(const Natural& c, const Vec& x, Vec& g);
-/// A symmetric permutation of the KKT unknowns (hinge coordinates 2k, 2k + 1, then the
-/// multipliers from 2n: links, pin, roller) that makes the KKT matrix banded with a
-/// border. The band: link 0, hinge 1, link 1, hinge 2, ..., link n-3, hinge n-2, link n-2
-/// (chain order; lower and upper widths 7, from the springs, which couple hinge k with
-/// k +- 2). The border: hinges n-1 and 0 (the two hinges that close the cycle: every
-/// spring and link that wraps around touches one of them), link n-1 and the pin's two
-/// rows (which couple only these two hinges), the roller's row. Only the border's four
-/// hinge coordinates and the roller's row (unless its hinge is n-1 or 0) have entries
-/// in the band, so at most five columns are solved for in the Schur complement. An LU in this order (with pivoting
-/// inside the band) fills only the band and the border's rows and columns: O(n) memory
-/// and time, whatever the pivots. Needs n >= 4.
-struct BandedOrder {
-  Eigen::VectorXi perm;  ///< perm[old] = new
-  int band = 0;          ///< unknowns in the band; the border follows
-};
-BandedOrder banded_order(const Natural& c);
-
-/// The chain's KKT matrix (unknowns as in banded_order's comment), assembled straight
-/// into its factorization's storage and factored in banded_order: the band by LAPACK's
-/// banded LU with partial pivoting (detail::BandLU), the border by its Schur complement.
-/// O(n) time and memory per assembly, factorization and solve, whatever the pivots. (A
-/// general sparse LU with a fill-reducing ordering such as COLAMD ignores the pivoting
-/// that a weak diagonal forces, as the statics' KKT matrix has: its fill grew far beyond
-/// O(n), minutes per factorization at n = 10^4; Eigen's SparseLU in this order is O(n)
-/// but its supernodal overhead costs ~7x the band LU at this bandwidth.)
-///
-/// The storage follows the KKT matrix's structural pattern (kkt_pattern in natural.cpp:
-/// a spring couples hinges k-1, k, k+1; link i couples hinges i, i+1 with its
-/// multiplier; the pin and roller rows couple their hinge), fixed at construction: the
-/// band's widths, the border columns with entries in the band (the only ones solved
-/// for), the band columns that border rows reach. Usage, per Newton iteration:
+/// The chain's KKT matrix, assembled straight into its factorization's storage: a
+/// detail::BorderedBand in a symmetric order of the unknowns (natural order: hinge
+/// coordinates 2k, 2k + 1, then the multipliers from 2n: links, pin, roller). The band:
+/// link 0, hinge 1, link 1, ..., hinge n-2, link n-2 (chain order; widths 7, from the
+/// springs, which couple hinge k with k +- 2). The border: hinges n-1 and 0 (every spring
+/// and link that wraps around touches one of them), link n-1, the pin's two rows, the
+/// roller's row; only its four hinge coordinates and the roller's row have entries in the
+/// band. The LU (pivoting inside the band) fills only the band and the border: O(n) time
+/// and memory per assembly, factorization and solve, whatever the pivots (a general
+/// sparse LU with COLAMD ignores the pivoting that the statics' weak diagonal forces, and
+/// fills far beyond O(n)). The pattern (kkt_pattern in natural.cpp) is fixed at
+/// construction; n >= 4. Usage, per Newton iteration:
 ///   kkt.clear(); kkt.add(i, j, v) ...; if (kkt.factor()) dz = kkt.solve(rhs);
 class BandedKkt {
  public:
   explicit BandedKkt(const Natural& c);
   /// Zero matrix (before assembly). O(n).
-  void clear();
+  void clear() { band_.clear(); }
   /// A(i, j) += v, i and j in the natural order (hinge coordinates, then multipliers);
   /// (i, j) must be in the structural pattern. O(1).
-  void add(int i, int j, double v) { add_permuted(perm_[i], perm_[j], v); }
+  void add(int i, int j, double v) { band_.add(perm_[i], perm_[j], v); }
   /// A(dofs[a], dofs[b]) += block(a, b) for all a, b: add() with each unknown mapped
   /// once.
   template <int K>
@@ -112,11 +92,11 @@ class BandedKkt {
     int p[K];
     for (int a = 0; a < K; ++a) p[a] = perm_[dofs[a]];
     for (int b = 0; b < K; ++b)
-      for (int a = 0; a < K; ++a) add_permuted(p[a], p[b], block(a, b));
+      for (int a = 0; a < K; ++a) band_.add(p[a], p[b], block(a, b));
   }
-  /// Factors the assembled matrix (which it overwrites); false if the factorization fails
-  /// (a zero pivot of the band or a singular border).
-  bool factor();
+  /// Factors the assembled matrix (which it overwrites); false when it is singular
+  /// (BorderedBand's test).
+  bool factor() { return band_.factor(); }
   /// A^-1 rhs with the last factorization.
   Vec solve(const Vec& rhs) const;
   /// z = A^-1 z in place, with `scratch` for the permuted copy (resized; no allocation
@@ -124,36 +104,8 @@ class BandedKkt {
   void solve(Vec& z, Vec& scratch) const;
 
  private:
-  /// A(r, col) += v in banded_order's numbering.
-  void add_permuted(int r, int col, double v) {
-    if (r < core_ && col < core_) {
-      assert(col - r <= ku_ && r - col <= kl_);
-      band_.at(r, col) += v;
-    } else if (r < core_) {
-      assert(solved_[col - core_] >= 0);
-      X_(r, solved_[col - core_]) += v;
-    } else if (col < core_) {
-      assert(reached_[col] >= 0);
-      C_(r - core_, reached_[col]) += v;
-    } else {
-      D_(r - core_, col - core_) += v;
-    }
-  }
-
-  Eigen::VectorXi perm_;      ///< perm_[old] = new
-  int core_ = 0;              ///< unknowns in the band; the border follows
-  int kl_ = 0, ku_ = 0;       ///< the band's lower and upper widths
-  Eigen::VectorXi solved_;    ///< per border unknown: its column in X_, or -1 (no entries in the band)
-  Eigen::VectorXi border_of_; ///< per column of X_: its border unknown
-  Eigen::VectorXi reached_;   ///< per band unknown: its column in C_, or -1 (no border row reaches it)
-  Eigen::VectorXi band_of_;   ///< per column of C_: its band unknown
-  detail::BandLU band_;
-  /// The border's columns in the band (B, then band^-1 B after factor()), the border
-  /// rows on the band columns they reach (C), the border block (D, then its Schur
-  /// complement D - C band^-1 B); X_ by rows, as BandLU::solve_rows takes it.
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> X_;
-  Eigen::MatrixXd C_, D_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
+  Eigen::VectorXi perm_;  ///< perm_[old] = new
+  detail::BorderedBand band_;
 };
 
 /// Adds the constraint gradients G(x), times `scale`, to a KKT matrix whose multipliers

@@ -92,21 +92,13 @@ class AngleStatics : public detail::StaticEquilibrium {
 
 }  // namespace
 
-bool use_natural_statics(const ring::MultibodyOptions& options) {
-  switch (options.method) {
-    case ring::MultibodyOptions::Method::dense: return false;
-    case ring::MultibodyOptions::Method::sparse: return true;
-    default: return options.n >= kSparseStaticsCrossover;
-  }
-}
-
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics) {
   check_static(spec, options, statics);
   const Chain ch(spec, options, statics.load.angle);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
-  if (use_natural_statics(options))
+  if (backend(options, Analysis::statics) == Backend::banded)
     eq = natural::static_equilibrium(ch, statics, depth);
   else
     eq = std::make_unique<AngleStatics>(

@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 
+#include "multibody/backend.hpp"
 #include "paths/continuation.hpp"
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
@@ -27,17 +28,6 @@
 namespace multibody {
 
 class Chain;
-
-/// Segments from which MultibodyOptions::Method::automatic solves statics on the O(n)
-/// path (hinge positions, natural.hpp); below it the dense path, which alone has the
-/// arc-length continuation through limit points. The O(n) path is faster from n ~ 160
-/// (20 load steps at p = 5: 0.16 s dense vs 0.06 s at n = 320, 0.98 s vs 0.12 s at 640;
-/// 3.0 s at n = 10^4), so the crossover keeps continuation where the dense path costs
-/// seconds at most.
-constexpr int kSparseStaticsCrossover = 1000;
-
-/// True when solve_static takes the O(n) path for these options.
-bool use_natural_statics(const ring::MultibodyOptions& options);
 
 namespace detail {
 

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "multibody/backend.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/dynamics_model.hpp"
@@ -130,37 +131,6 @@ TEST(MultibodySparseDynamics, SaddleSolveEqualsDenseLU) {
     EXPECT_LE((X.col(k) - x).cwiseAbs().maxCoeff(), 1e-13 * x.cwiseAbs().maxCoeff()) << k;
     EXPECT_LE((Y.col(k) - y).cwiseAbs().maxCoeff(), 1e-13 * y.cwiseAbs().maxCoeff()) << k;
   }
-}
-
-// BandLU::solve_rows (all right-hand sides in one pass over the factors) does dgbtrs's
-// operations in its order: the same solution bit for bit as solve_many (LAPACK), with a
-// backward-stable residual, on random band matrices with pivoting (weak diagonals).
-TEST(MultibodySparseDynamics, BandSolveRowsEqualsLapack) {
-  std::mt19937 gen(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int kl : {0, 1, 3, 7})
-    for (int ku : {0, 2, 7})
-      for (int k : {1, 2, 5}) {
-        const int N = 60;
-        Matrix A = Matrix::Zero(N, N);
-        for (int j = 0; j < N; ++j)
-          for (int i = std::max(0, j - ku); i <= std::min(N - 1, j + kl); ++i) A(i, j) = u(gen) + (i == j ? 0.1 : 0.0);
-        multibody::detail::BandLU lu;
-        lu.resize(N, kl, ku);
-        for (int j = 0; j < N; ++j)
-          for (int i = std::max(0, j - ku); i <= std::min(N - 1, j + kl); ++i) lu.at(i, j) = A(i, j);
-        ASSERT_TRUE(lu.factor());
-        const Matrix R = Matrix::Random(N, k);
-        Matrix byc = R;  // column-major, for dgbtrs
-        lu.solve_many(byc.data(), N, k);
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> byr = R;
-        lu.solve_rows(byr.data(), k);
-        const std::string tag = "kl " + std::to_string(kl) + " ku " + std::to_string(ku) + " k " + std::to_string(k);
-        EXPECT_EQ(Matrix(byr), byc) << tag;
-        // Backward stable: residual ~ eps ||A|| ||x|| (bound 1e-12; random band matrices
-        // may be ill-conditioned, so the solution itself is not compared).
-        EXPECT_LE((A * byc - R).norm(), 1e-12 * A.norm() * byc.norm()) << tag;
-      }
 }
 
 // The grid contact search returns exactly what the O(n^2) loop returns, on rings
@@ -300,11 +270,14 @@ TEST(MultibodySparseDynamics, SelfContactReportedOnBothPaths) {
 }
 
 TEST(MultibodySparseDynamics, AutomaticChoosesByCrossover) {
-  EXPECT_FALSE(multibody::use_sparse_path(opts(40, ring::MultibodyOptions::Method::automatic)));
-  EXPECT_TRUE(multibody::use_sparse_path(
-      opts(multibody::kSparseDynamicsCrossover, ring::MultibodyOptions::Method::automatic)));
-  EXPECT_TRUE(multibody::use_sparse_path(opts(40, ring::MultibodyOptions::Method::sparse)));
-  EXPECT_FALSE(multibody::use_sparse_path(opts(4000, ring::MultibodyOptions::Method::dense)));
+  auto banded = [](const ring::MultibodyOptions& o) {
+    return multibody::backend(o, multibody::Analysis::response) == multibody::Backend::banded;
+  };
+  EXPECT_FALSE(banded(opts(40, ring::MultibodyOptions::Method::automatic)));
+  EXPECT_TRUE(banded(
+      opts(multibody::kSparseResponseCrossover, ring::MultibodyOptions::Method::automatic)));
+  EXPECT_TRUE(banded(opts(40, ring::MultibodyOptions::Method::sparse)));
+  EXPECT_FALSE(banded(opts(4000, ring::MultibodyOptions::Method::dense)));
 }
 
 }  // namespace

@@ -266,8 +266,10 @@ TEST(MultibodyStaticsSparse, TenThousandSegmentsConvergeToTheElasticaAtSecondOrd
   RecordProperty("err_along_n10000", sci(e_along.back()));
   EXPECT_NEAR(fitted_order(ns, e_along), 2.0, 0.05) << "errors " << e_along[0] << ", " << e_along[1];
   EXPECT_NEAR(fitted_order(ns, e_across), 2.0, 0.05) << "errors " << e_across[0] << ", " << e_across[1];
-  EXPECT_TRUE(multibody::use_natural_statics(chain_options(10000, Method::automatic)));
-  EXPECT_FALSE(multibody::use_natural_statics(chain_options(40, Method::automatic)));
+  EXPECT_EQ(multibody::backend(chain_options(10000, Method::automatic), multibody::Analysis::statics),
+            multibody::Backend::banded);
+  EXPECT_EQ(multibody::backend(chain_options(40, Method::automatic), multibody::Analysis::statics),
+            multibody::Backend::dense);
 }
 
 // The load factor of the limit point named in a "past a limit point at load factor X"

@@ -1,0 +1,55 @@
+// Dense or banded: the one rule that picks the multibody backend of each analysis.
+//
+// Dense: segment angles with n x n matrices, O(n^2) memory, O(n^3) per factorization.
+// Banded: nothing of size n^2, O(n) per solve (ShiftedSolve's sweep for the modes;
+// BorderedBands for the response, SparseSaddle, and the statics, natural::BandedKkt).
+// multibody.method = "dense" or "sparse" forces one for every analysis; "auto" takes the
+// banded one from the analysis's crossover on (evidence: docs/measured.md):
+//
+//   analysis  banded from n  why
+//   modes     257            as fast as the dense full eigensolver from a few hundred;
+//                            robust dependent angles only, at most a third of the spectrum
+//   statics   1000           faster from n ~ 160, but only the dense path continues
+//                            through limit points: kept where it costs seconds at most
+//   response  100            time per step equal near n = 80-100
+//
+// The energy-momentum response is banded whatever this says (hinge positions only).
+#pragma once
+
+#include <algorithm>
+
+#include "ring/spec.hpp"
+
+namespace multibody {
+
+enum class Backend { dense, banded };
+enum class Analysis { modes, statics, response };
+
+/// The table: from this many segments on, "auto" is "sparse".
+constexpr int kSparseModesCrossover = 257, kSparseStaticsCrossover = 1000, kSparseResponseCrossover = 100;
+constexpr int sparse_crossover(Analysis a) {
+  return a == Analysis::modes ? kSparseModesCrossover
+                              : (a == Analysis::statics ? kSparseStaticsCrossover : kSparseResponseCrossover);
+}
+
+/// The backend of `analysis` for these options (file comment). O(1).
+inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis) {
+  using Method = ring::MultibodyOptions::Method;
+  if (options.method != Method::automatic) return options.method == Method::sparse ? Backend::banded : Backend::dense;
+  if (analysis == Analysis::modes && options.dependent != ring::MultibodyOptions::Dependent::robust)
+    return Backend::dense;
+  return options.n >= sparse_crossover(analysis) ? Backend::banded : Backend::dense;
+}
+
+/// The modes' backend for `count` modes with these supports: "auto" also stays dense when
+/// the pairs computed, min(r, count + rigid modes + 2), exceed a third of the
+/// r = n [+ 2 free] - c unknowns. O(1).
+inline Backend backend(const ring::MultibodyOptions& options, const ring::Supports& supports, int count) {
+  const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2);
+  if (options.method == ring::MultibodyOptions::Method::automatic &&
+      3 * std::min(r, count + supports.rigid_modes() + 2) > r)
+    return Backend::dense;
+  return backend(options, Analysis::modes);
+}
+
+}  // namespace multibody
