@@ -12,7 +12,7 @@
 #include "fem_reference/nonlinear.hpp"
 #include "fem_reference/ring_model.hpp"
 #include "ring/errors.hpp"
-#include "tests/fem_reference/paper_ring.hpp"
+#include "support/paper.hpp"
 #include "tests/support/close.hpp"
 #include "tests/support/elastica.hpp"
 
@@ -23,7 +23,7 @@ using namespace dealii;
 
 /// The paper's ring held as in its section 5: pin at A (180 deg), roller at C (0 deg).
 ring::RingSpec held_ring() {
-  ring::RingSpec s = femtest::paper_ring(180.0);
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   return s;
 }
