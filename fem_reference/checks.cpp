@@ -59,8 +59,10 @@ void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const
   check_nonlinear(spec, o, rs.load, rs.record, "response");
   need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
   need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
-  need(rs.integrator != ring::ResponseOptions::Integrator::energy_momentum,
-       "response.integrator = \"energy-momentum\" is not offered by the FE beam (newmark or generalized-alpha)");
+  need(rs.integrator == ring::ResponseOptions::Integrator::newmark ||
+           rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha,
+       "response.integrator = \"" + ring::to_string(rs.integrator) +
+           "\" is not offered by the FE beam (accepted: \"newmark\", \"generalized-alpha\")");
   need(rs.dt > 0 && rs.t_end >= rs.dt, "response.dt must be > 0 and <= response.t_end");
 }
 

@@ -334,10 +334,11 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
       r.fail(t->contains("t_end") ? "response.t_end" : "response.dt", t->contains("t_end") ? t->get("t_end") : t->get("dt"),
              "t_end/dt = " + fmt_num(o.t_end / o.dt) + " steps exceeds 1e8");
     const std::string integrator =
-        r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha", "energy-momentum"});
+        r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha", "energy-momentum", "midpoint"});
     o.integrator = integrator == "newmark"             ? ResponseOptions::Integrator::newmark
                  : integrator == "generalized-alpha" ? ResponseOptions::Integrator::generalized_alpha
-                                                      : ResponseOptions::Integrator::energy_momentum;
+                 : integrator == "energy-momentum"   ? ResponseOptions::Integrator::energy_momentum
+                                                      : ResponseOptions::Integrator::midpoint;
     o.rho_inf = r.number(*t, sec, "rho_inf", 0.8, 0.0, 1.0);
     o.record = read_record(r, *t, sec);
     o.rayleigh_mass = r.number(*t, sec, "rayleigh_mass", 0.0, 0.0, HUGE_VAL);
