@@ -102,6 +102,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
     r.omega.push_back(std::sqrt(l));
   }
   r.max_residual = max_res;
+  r.residual_norm = kDualResidualNorm;  // not the 2-norm: modes.hpp
   r.rigid_modes = spec.supports.rigid_modes();
   return out;
 }
