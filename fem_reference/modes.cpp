@@ -67,9 +67,11 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
         }
     // With accurate pairs, a rigid eigenvalue far from zero is the discretization's: the
     // polar fields approximate the rigid translations only.
-    if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > 1e-2 * pairs.lambda[rigid])
+    // Rigid modes are counted, not recognized by a threshold (ring_model.hpp, kRigidSeparation).
+    if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > kRigidSeparation * pairs.lambda[rigid])
       throw ring::NumericalError("fem: the mesh is too coarse to represent the " + std::to_string(rigid) +
-                                 " rigid modes (lowest elastic/rigid eigenvalue ratio < 100)");
+                                 " rigid modes (lowest elastic/rigid eigenvalue ratio < " +
+                                 std::to_string(static_cast<int>(1.0 / kRigidSeparation)) + ")");
     lambda.assign(pairs.lambda.begin() + rigid, pairs.lambda.end());
     max_res = 0.0;
     r.shapes.clear();

@@ -117,6 +117,7 @@ EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDi
   // sqrt(r^T z) / denominator (infinite if r^T z < 0: the solve is garbage); the worst
   // of the wanted elastic pairs.
   raw.residual.assign(m, 0.0);
+  const unsigned int rigid = static_cast<unsigned int>(spec_.supports.rigid_modes());
   std::vector<Vector<double>> Z(m, Vector<double>(N));
   auto residuals = [&]() {
     double worst = 0.0;
@@ -126,8 +127,9 @@ EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDi
       const double rz = r * Z[k];
       raw.residual[k] = rz >= 0 ? std::sqrt(rz) / denominator(k) : std::numeric_limits<double>::infinity();
       // The stopping rule looks at the wanted elastic pairs: a rigid one's relative
-      // residual divides by lambda ~ 0, the guard pairs converge last.
-      if (k < wanted && !(std::abs(raw.lambda[k]) < kRigidBelow * std::abs(sigma_)))
+      // residual divides by lambda ~ 0 (the lowest `rigid` pairs: kRigidSeparation), the
+      // guard pairs converge last.
+      if (k < wanted && k >= rigid)
         worst = std::max(worst, raw.residual[k]);
     }
     return worst;
