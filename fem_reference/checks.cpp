@@ -36,7 +36,9 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
   need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
   need(o.elements >= 4, "fem.elements (=" + std::to_string(o.elements) + ") must be >= 4");
-  need(o.degree >= 2 && o.degree <= 12, "fem.degree (=" + std::to_string(o.degree) + ") must be in 2..12");
+  need(o.degree >= kMinDegree && o.degree <= kMaxDegree, "fem.degree (=" + std::to_string(o.degree) +
+                                                              ") must be in " + std::to_string(kMinDegree) + ".." +
+                                                              std::to_string(kMaxDegree));
   need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
   need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
   need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");

@@ -124,7 +124,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
   int refinements = 0;
   if (o.reference) {
     // p-refinement (exponential convergence on these smooth, piecewise analytic modes),
-    // h-refinement once p reaches kReferenceMaxDegree. Stop when the largest relative
+    // h-refinement once p reaches kMaxDegree. Stop when the largest relative
     // change of the requested frequencies is below the tolerance.
     double previous_change = 0.0;
     bool refined = true;
@@ -133,7 +133,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
         throw ring::NumericalError("fem: reference not converged after " + std::to_string(kReferenceMaxSteps) +
                                    " refinements (degree " + std::to_string(setup.degree) + ", cells " +
                                    std::to_string(setup.cells()) + ")");
-      if (setup.degree < kReferenceMaxDegree)
+      if (setup.degree < kMaxDegree)
         ++setup.degree;
       else
         setup.subdivisions *= 2;

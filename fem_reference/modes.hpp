@@ -86,9 +86,10 @@ inline const char* const kDualResidualNorm = "dual norm of K - sigma M";
 /// Natural frequencies and mode shapes of the ring (see the file comment for the model).
 /// \param spec    ring, section, material, supports (pin/roller must fall on vertices:
 ///                the pin is vertex 0; the roller must satisfy ring::on_node).
-/// \param options elements >= 4, degree 2..12; reference = true refines p (then h) until
-///                the `count` frequencies change by less than options.tolerance (relative,
-///                > 0) between successive refinements and reports error_estimate.
+/// \param options elements >= 4, degree kMinDegree..kMaxDegree (checks.hpp: 2..16);
+///                reference = true refines p (to kMaxDegree, then h) until the `count`
+///                frequencies change by less than options.tolerance (relative, > 0)
+///                between successive refinements and reports error_estimate.
 /// \param count   elastic modes wanted, 1 <= count <= unknowns - rigid modes.
 /// \return solver "fem"; model {elements, cells, subdivisions, degree, geometry,
 ///         extensible, rotary_inertia, reference, refinements} (the final discretization); rigid_modes; omega ascending

@@ -47,6 +47,7 @@
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
+#include "fem_reference/checks.hpp"
 #include "fem_reference/modes.hpp"
 
 namespace fem::detail {
@@ -57,9 +58,7 @@ using Geometry = ring::FemOptions::Geometry;
 constexpr double kPi = 3.14159265358979323846;
 /// Above this many free unknowns the dense O(N^3) LAPACK solve gives way to ARPACK.
 constexpr unsigned int kDenseLimit = 150;
-/// Highest degree the reference refinement raises p to before it refines h instead
-/// (FE_Q uses Gauss-Lobatto support points, well conditioned at these degrees).
-constexpr int kReferenceMaxDegree = 16;
+/// Refinements a reference may take (p up to fem::kMaxDegree, checks.hpp, then h).
 constexpr int kReferenceMaxSteps = 40;
 /// Extra eigenpairs computed above the wanted ones for the refinement (refine()).
 constexpr unsigned int kGuardModes = 8;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem_reference/checks.hpp"
 #include "fem_reference/modes.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/paper_table.hpp"
@@ -32,6 +33,26 @@ TEST(FemFreeRing, MatchesExtensibleClosedFormK2To13) {
     EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-8)) << "k = " << k;
     EXPECT_TRUE(IsClose(r.omega[2 * (k - 2) + 1], exact, 1e-8)) << "k = " << k << " (second of the pair)";
   }
+}
+
+// The degree cap (fem_reference/checks.hpp, kMaxDegree) is what the reference refines to
+// and what a user may ask for: at the cap the free ring matches the closed form as the
+// reference does (1e-8, the bound above; measured 1.5e-12 at p = 16 against 2.2e-12 at
+// p = 8, 40 elements), and one degree more is refused (std::invalid_argument).
+TEST(FemFreeRing, TheDegreeCapIsUsableAndOneMoreIsRefused) {
+  const auto spec = ringtest::free_ring();
+  FemOptions o;
+  o.degree = fem::kMaxDegree;
+  const auto r = fem::compute_modes(spec, o, 24);
+  EXPECT_EQ(r.rigid_modes, 3);
+  ASSERT_EQ(r.omega.size(), 24u);
+  for (int k = 2; k <= 13; ++k) {
+    const double exact = ring::closed_form::free_ring_extensible(spec, k)[0];
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-8)) << "k = " << k;
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2) + 1], exact, 1e-8)) << "k = " << k << " (second of the pair)";
+  }
+  o.degree = fem::kMaxDegree + 1;
+  EXPECT_THROW(fem::compute_modes(spec, o, 24), std::invalid_argument);
 }
 
 // extensible = false: the inextensible limit (penalty + Richardson extrapolation, see
