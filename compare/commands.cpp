@@ -47,8 +47,17 @@ class Progress {
   bool on_;
 };
 
-ring::Scene load(const CommonArgs& a) {
+/// `only`: the request of a nonlinear command that --solver NAME narrows to that solver
+/// (nullptr otherwise). The command then runs that solver alone and no reference
+/// (run_nonlinear), so the checks and the cost guard see only it: a solver the command does
+/// not run cannot refuse the scene (the multibody chain has no "midpoint" integrator).
+ring::Scene load(const CommonArgs& a, ring::NonlinearRequest ring::Scene::*only = nullptr,
+                 const std::string& solver = "") {
   ring::Scene s = load_scene(a.scene, a.set);
+  if (only && !solver.empty()) {
+    (s.*only).solvers = {solver};
+    (s.*only).reference = false;
+  }
   check_runnable(s, a.max_memory_gib, a.force);
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
@@ -61,8 +70,8 @@ std::string modes_text(const ring::ModalResult& m) {
   s << "\nrigid modes: " << m.rigid_modes << "\n\n  mode   omega rad/s        Hz\n";
   for (std::size_t i = 0; i < m.omega.size(); ++i)
     s << fmt::format("  {:4d}  {:>12}  {:>8}\n", i + 1, sig4(m.omega[i]), sig4(m.omega[i] / (2 * M_PI)));
-  s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {:.1e}\n", m.unknowns, m.seconds,
-                   m.max_residual);
+  s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {:.1e} ({})\n", m.unknowns,
+                   m.seconds, m.max_residual, m.residual_norm);
   return s.str();
 }
 
@@ -196,7 +205,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
 }
 
 int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format) {
-  ring::Scene s = load(a);
+  ring::Scene s = load(a, &ring::Scene::response_request, solver);
   if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
   // --csv - is standard output, as without --csv.
   const bool to_file = !csv.empty() && csv != "-";
@@ -226,7 +235,7 @@ int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& 
 }
 
 int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const std::string& format) {
-  const ring::Scene s = load(a);
+  const ring::Scene s = load(a, &ring::Scene::static_request, solver);
   if (!s.statics) throw ring::InputError(a.scene, "static", "the scene has no [static] section");
   const Progress p(a.quiet);
   std::ostream* progress = p.stream();

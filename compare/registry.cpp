@@ -158,6 +158,7 @@ SolverEntry fem_entry() {
   e.label = "FE";
   e.size_key = "fem.elements";
   e.size_name = "elements";
+  e.integer_ranges["degree"] = {fem::kMinDegree, fem::kMaxDegree};
   e.size = [](const ring::Scene& s) { return s.fem.elements; };
   e.set_size = [](ring::Scene& s, int n) { s.fem.elements = n; };
   // C0 elements of degree p: p nodes per cell and two displacement components.
@@ -187,9 +188,9 @@ SolverEntry fem_entry() {
   // (6), 9.57 KB (12) with 23 modes, + 85 bytes per mode above ~23 (ARPACK's basis and
   // the refinement's long double vectors outgrow the factorization's peak); nonlinear,
   // Newton's tangent and factors, 3.5-4.5 KB (p = 3) and 6.6-7.6 KB (p = 8). Used: a fit
-  // in p with ~4 % to spare. The reference raises p to 16.
+  // in p with ~4 % to spare. The reference raises p to fem::kMaxDegree (checks.hpp).
   e.memory = [](const ring::Scene& s, int count) {
-    const double p = s.fem.reference || s.needs_reference() ? 16.0 : s.fem.degree;
+    const double p = s.fem.reference || s.needs_reference() ? fem::kMaxDegree : s.fem.degree;
     const double unknowns = 2.0 * p * s.fem.elements;
     if (count == 0) return unknowns * (2680.0 + 650.0 * p);
     const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
@@ -272,7 +273,8 @@ const ring::SceneSchema& scene_schema() {
   static const ring::SceneSchema schema = [] {
     ring::SceneSchema s;
     for (const auto& e : registry())
-      s.solvers.push_back({e.name, e.size_key, e.size, e.elastic_modes, bool(e.statics), bool(e.response)});
+      s.solvers.push_back(
+          {e.name, e.size_key, e.size, e.elastic_modes, bool(e.statics), bool(e.response), e.integer_ranges});
     s.default_solver = registry().front().name;  // the paper's method
     s.reference_solver = "fem";
     return s;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,8 @@ struct SolverEntry {
   std::string label;      ///< column header in tables ("lumped mass", "FE")
   std::string size_key;   ///< the discretization key ("multibody.n", "fem.elements")
   std::string size_name;  ///< what the size counts, in tables ("n", "elements")
+  /// Integer options of its section whose range only the solver knows (ring::SolverSchema).
+  std::map<std::string, std::pair<long long, long long>> integer_ranges;
 
   /// Pieces around the ring (nodes at anchor + 360 k / size), and the scene with it changed.
   std::function<int(const ring::Scene&)> size;

@@ -36,7 +36,9 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
   need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
   need(o.elements >= 4, "fem.elements (=" + std::to_string(o.elements) + ") must be >= 4");
-  need(o.degree >= 2 && o.degree <= 12, "fem.degree (=" + std::to_string(o.degree) + ") must be in 2..12");
+  need(o.degree >= kMinDegree && o.degree <= kMaxDegree, "fem.degree (=" + std::to_string(o.degree) +
+                                                              ") must be in " + std::to_string(kMinDegree) + ".." +
+                                                              std::to_string(kMaxDegree));
   need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
   need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
   need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
@@ -59,8 +61,10 @@ void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const
   check_nonlinear(spec, o, rs.load, rs.record, "response");
   need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
   need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
-  need(rs.integrator != ring::ResponseOptions::Integrator::energy_momentum,
-       "response.integrator = \"energy-momentum\" is not offered by the FE beam (newmark or generalized-alpha)");
+  need(rs.integrator == ring::ResponseOptions::Integrator::newmark ||
+           rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha,
+       "response.integrator = \"" + ring::to_string(rs.integrator) +
+           "\" is not offered by the FE beam (accepted: \"newmark\", \"generalized-alpha\")");
   need(rs.dt > 0 && rs.t_end >= rs.dt, "response.dt must be > 0 and <= response.t_end");
 }
 

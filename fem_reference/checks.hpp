@@ -10,14 +10,26 @@
 
 namespace fem {
 
-/// Linear modes: positive geometry and material, elements >= 4, degree in 2..12,
+/// The element degrees p (of the bending field; the curved tangential field has p + 1) the
+/// FE beam offers: fem.degree must lie in kMinDegree..kMaxDegree, and the converged
+/// references (modes, statics, response) raise p up to kMaxDegree before they split cells.
+/// The cap is the modes reference's (FE_Q on Gauss-Lobatto points stays well conditioned
+/// there) and holds for every analysis: at p = 16 the free ring's k = 2..13 match the closed
+/// form to 1.5e-12 and the squeezed ring the elastica to 1.5e-12 (fem_validation_test,
+/// fem_nonlinear_test: TheDegreeCap...). Higher degrees also lower the elements that double
+/// precision resolves (modes.hpp, kPrecisionLimit). The driver's memory estimate of a
+/// reference run takes p = kMaxDegree, and the scene reader takes the range from the registry.
+constexpr int kMinDegree = 2;
+constexpr int kMaxDegree = 16;
+
+/// Linear modes: positive geometry and material, elements >= 4, degree in kMinDegree..kMaxDegree,
 /// tolerances in (0, 1) for a reference, a roller only with a pin, on an FE vertex.
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& options);
 /// Nonlinear statics: as modes, plus the curved geometry, a pin and a roller, the load and
 /// the record points on FE vertices, a finite force.
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics);
 /// Forced response: as statics without the roller, no rotary inertia, no hinge damping,
-/// the integrator "newmark" or "generalized-alpha", 0 < dt <= t_end.
+/// the integrator "newmark" or "generalized-alpha" (no other), 0 < dt <= t_end.
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::ResponseOptions& response);
 
 }  // namespace fem

@@ -67,9 +67,11 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
         }
     // With accurate pairs, a rigid eigenvalue far from zero is the discretization's: the
     // polar fields approximate the rigid translations only.
-    if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > 1e-2 * pairs.lambda[rigid])
+    // Rigid modes are counted, not recognized by a threshold (ring_model.hpp, kRigidSeparation).
+    if (rigid > 0 && std::abs(pairs.lambda[rigid - 1]) > kRigidSeparation * pairs.lambda[rigid])
       throw ring::NumericalError("fem: the mesh is too coarse to represent the " + std::to_string(rigid) +
-                                 " rigid modes (lowest elastic/rigid eigenvalue ratio < 100)");
+                                 " rigid modes (lowest elastic/rigid eigenvalue ratio < " +
+                                 std::to_string(static_cast<int>(1.0 / kRigidSeparation)) + ")");
     lambda.assign(pairs.lambda.begin() + rigid, pairs.lambda.end());
     max_res = 0.0;
     r.shapes.clear();
@@ -102,6 +104,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
     r.omega.push_back(std::sqrt(l));
   }
   r.max_residual = max_res;
+  r.residual_norm = kDualResidualNorm;  // not the 2-norm: modes.hpp
   r.rigid_modes = spec.supports.rigid_modes();
   return out;
 }
@@ -121,7 +124,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
   int refinements = 0;
   if (o.reference) {
     // p-refinement (exponential convergence on these smooth, piecewise analytic modes),
-    // h-refinement once p reaches kReferenceMaxDegree. Stop when the largest relative
+    // h-refinement once p reaches kMaxDegree. Stop when the largest relative
     // change of the requested frequencies is below the tolerance.
     double previous_change = 0.0;
     bool refined = true;
@@ -130,7 +133,7 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
         throw ring::NumericalError("fem: reference not converged after " + std::to_string(kReferenceMaxSteps) +
                                    " refinements (degree " + std::to_string(setup.degree) + ", cells " +
                                    std::to_string(setup.cells()) + ")");
-      if (setup.degree < kReferenceMaxDegree)
+      if (setup.degree < kMaxDegree)
         ++setup.degree;
       else
         setup.subdivisions *= 2;

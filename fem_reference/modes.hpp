@@ -63,11 +63,14 @@
 // until the residuals are below 1e-11 or stop halving (ring_model.hpp). A discretization
 // too fine for double precision (eps lambda_max / |sigma| > kPrecisionLimit) is refused
 // before the solve (std::invalid_argument), and a refined elastic pair whose residual
-// stays above kAcceptedResidual is a ring::NumericalError (README, "The precision limit"). The
-// reported max_residual is ||K q - lambda M q||_* / (||K q||_* + lambda ||M q||_*) in
-// the dual norm of K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm in which
-// the residual bounds the frequency error; the Euclidean norm of a double vector's
-// residual cannot drop below ~ eps lambda_max / lambda here.
+// stays above kAcceptedResidual is a ring::NumericalError (README, "The precision limit").
+//
+// max_residual: NOT the 2-norm ratio of ring::ModalResult's definition, which this model
+// cannot report meaningfully: for a double vector q it cannot drop below
+// ~ eps lambda_max / lambda ~ 1e-6 here, however accurate the pair. The FE reports the
+// same ratio ||K q - lambda M q||_* / (||K q||_* + lambda ||M q||_*) in the dual norm of
+// K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm in which the residual
+// bounds the frequency error, and says so: residual_norm = kDualResidualNorm.
 #pragma once
 
 #include <string>
@@ -77,17 +80,22 @@
 
 namespace fem {
 
+/// ring::ModalResult::residual_norm of every FE modal result (see the file comment).
+inline const char* const kDualResidualNorm = "dual norm of K - sigma M";
+
 /// Natural frequencies and mode shapes of the ring (see the file comment for the model).
 /// \param spec    ring, section, material, supports (pin/roller must fall on vertices:
 ///                the pin is vertex 0; the roller must satisfy ring::on_node).
-/// \param options elements >= 4, degree 2..12; reference = true refines p (then h) until
-///                the `count` frequencies change by less than options.tolerance (relative,
-///                > 0) between successive refinements and reports error_estimate.
+/// \param options elements >= 4, degree kMinDegree..kMaxDegree (checks.hpp: 2..16);
+///                reference = true refines p (to kMaxDegree, then h) until the `count`
+///                frequencies change by less than options.tolerance (relative, > 0)
+///                between successive refinements and reports error_estimate.
 /// \param count   elastic modes wanted, 1 <= count <= unknowns - rigid modes.
 /// \return solver "fem"; model {elements, cells, subdivisions, degree, geometry,
 ///         extensible, rotary_inertia, reference, refinements} (the final discretization); rigid_modes; omega ascending
 ///         (rad/s, elastic only); shapes at ring::kStations stations; unknowns (free
-///         unknowns after constraints); seconds; max_residual; error_estimate.
+///         unknowns after constraints); seconds; max_residual in the dual norm
+///         (residual_norm = kDualResidualNorm); error_estimate.
 /// \throws std::invalid_argument for options or count that can never work,
 ///         ring::NumericalError for a failed factorization, eigen-solve or refinement.
 /// Cost: O(N (p+1)^2) assembly and, for N > 150, ARPACK with O(N p) work per

@@ -72,7 +72,7 @@ auto refine_until(Setup& setup, double tolerance, Solve&& solve, Change&& change
     if (refinements > kReferenceMaxSteps)
       throw ring::NumericalError("fem: " + what + " reference not converged after " +
                                  std::to_string(kReferenceMaxSteps) + " refinements");
-    if (setup.degree < 12)
+    if (setup.degree < kMaxDegree)
       ++setup.degree;
     else
       setup.subdivisions *= 2;

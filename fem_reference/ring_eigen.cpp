@@ -1,6 +1,7 @@
 // The eigen-solve of the linear ring model: dense LAPACK or ARPACK shift-invert, then the
 // extended-precision refinement of the pairs (ring_model.hpp).
 #include "fem_reference/ring_model.hpp"
+#include "modal/subspace.hpp"
 
 namespace fem::detail {
 
@@ -26,8 +27,11 @@ EigenPairs RingModel::solve(unsigned int n_wanted, bool refine_pairs) const {
     raw.q = std::move(vectors);
   } else {
     // Shift-invert Lanczos about sigma: the eigenvalues nearest sigma (the lowest)
-    // converge first.
-    const unsigned int ncv = std::min(N - 1, std::max(2 * n_compute + 2, n_compute + 20));
+    // converge first. The basis size is the project's one rule (modal/subspace.hpp); deal.II's
+    // ArpackSolver asserts more than ARPACK itself needs (ncv > 2 nev + 1 and ncv < N, in
+    // debug builds), so one vector more where the rule gives 2 nev + 1 (or N).
+    const unsigned int rule = static_cast<unsigned int>(modal::subspace_size(int(n_compute), int(N)));
+    const unsigned int ncv = std::min(N - 1, std::max(rule, 2 * n_compute + 2));
     SolverControl control(std::max(1000u, 10 * N), 1e-12);
     ArpackSolver::AdditionalData data(ncv, ArpackSolver::largest_magnitude, true);
     ArpackSolver arpack(control, data);
@@ -113,6 +117,7 @@ EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDi
   // sqrt(r^T z) / denominator (infinite if r^T z < 0: the solve is garbage); the worst
   // of the wanted elastic pairs.
   raw.residual.assign(m, 0.0);
+  const unsigned int rigid = static_cast<unsigned int>(spec_.supports.rigid_modes());
   std::vector<Vector<double>> Z(m, Vector<double>(N));
   auto residuals = [&]() {
     double worst = 0.0;
@@ -122,8 +127,9 @@ EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDi
       const double rz = r * Z[k];
       raw.residual[k] = rz >= 0 ? std::sqrt(rz) / denominator(k) : std::numeric_limits<double>::infinity();
       // The stopping rule looks at the wanted elastic pairs: a rigid one's relative
-      // residual divides by lambda ~ 0, the guard pairs converge last.
-      if (k < wanted && !(std::abs(raw.lambda[k]) < kRigidBelow * std::abs(sigma_)))
+      // residual divides by lambda ~ 0 (the lowest `rigid` pairs: kRigidSeparation), the
+      // guard pairs converge last.
+      if (k < wanted && k >= rigid)
         worst = std::max(worst, raw.residual[k]);
     }
     return worst;

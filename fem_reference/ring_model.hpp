@@ -47,6 +47,7 @@
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
+#include "fem_reference/checks.hpp"
 #include "fem_reference/modes.hpp"
 
 namespace fem::detail {
@@ -57,9 +58,7 @@ using Geometry = ring::FemOptions::Geometry;
 constexpr double kPi = 3.14159265358979323846;
 /// Above this many free unknowns the dense O(N^3) LAPACK solve gives way to ARPACK.
 constexpr unsigned int kDenseLimit = 150;
-/// Highest degree the reference refinement raises p to before it refines h instead
-/// (FE_Q uses Gauss-Lobatto support points, well conditioned at these degrees).
-constexpr int kReferenceMaxDegree = 16;
+/// Refinements a reference may take (p up to fem::kMaxDegree, checks.hpp, then h).
 constexpr int kReferenceMaxSteps = 40;
 /// Extra eigenpairs computed above the wanted ones for the refinement (refine()).
 constexpr unsigned int kGuardModes = 8;
@@ -69,9 +68,14 @@ constexpr double kRefineBelowChange = 1e-5;
 /// kRefinedResidual or stops halving, at most this many.
 constexpr unsigned int kMaxRefinementRounds = 8;
 constexpr double kRefinedResidual = 1e-11;
-/// |lambda| below this times |sigma| is a rigid mode for refine()'s stopping rule (the
-/// lowest elastic eigenvalue is >= 2.6 |sigma|; rigid ones are round-off, <= 1e-4 |sigma|).
-constexpr double kRigidBelow = 1e-2;
+/// Rigid modes are the supports' count of lowest pairs (spec.supports.rigid_modes()), not
+/// a threshold on lambda: on the exact circle the polar fields only approximate the rigid
+/// translations, whose lambda is the discretization's error, up to 0.1 EI/(rho A R^4) on
+/// 4 cells of degree 2, 1e-3 on 40 of degree 2, 4e-7 on 40 of degree 3 (measured, free
+/// ring), mostly far above the round-off that modal::is_rigid recognizes. A discretization
+/// whose highest rigid lambda is not below kRigidSeparation times the lowest elastic one
+/// cannot represent the rigid modes and is refused (modes.cpp).
+constexpr double kRigidSeparation = 1e-2;
 /// A refined elastic pair whose residual (refine()) stays above this is not a result:
 /// the eigen-solve has lost its accuracy (measured, the frequency error is 1e-2 to 1e-1
 /// of the residual near the precision limit: 10^4 cells of degree 8, residual 1.9e-2,

@@ -31,10 +31,15 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& r) {
   check_chain(spec, options, "response");
-  if (r.integrator == ring::ResponseOptions::Integrator::generalized_alpha)
+  using Integrator = ring::ResponseOptions::Integrator;
+  if (r.integrator == Integrator::energy_momentum)
     throw std::invalid_argument(
-        "lumped response: response.integrator = \"generalized-alpha\" is not offered by the lumped chain; use "
-        "\"newmark\" (its midpoint form) or \"energy-momentum\"");
+        "lumped response: response.integrator = \"energy-momentum\" is not offered by the lumped chain: its "
+        "scheme is the implicit midpoint rule, which does not conserve energy; use \"midpoint\" (accepted: "
+        "\"midpoint\", \"newmark\")");
+  if (r.integrator != Integrator::midpoint && r.integrator != Integrator::newmark)
+    throw std::invalid_argument("lumped response: response.integrator = \"" + ring::to_string(r.integrator) +
+                                "\" is not offered by the lumped chain (accepted: \"midpoint\", \"newmark\")");
   if (!(r.dt > 0) || !(r.t_end >= r.dt))
     throw std::invalid_argument("lumped response: response.dt must be > 0 and <= response.t_end");
 }

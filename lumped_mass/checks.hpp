@@ -12,8 +12,10 @@ namespace lumped {
 /// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
 /// material, a pin and a roller, static.steps >= 1.
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
-/// Forced response of the chain: as statics without the roller, the integrator "newmark"
-/// (its midpoint form) or "energy-momentum", 0 < dt <= t_end.
+/// Forced response of the chain: as statics without the roller, the integrator "midpoint"
+/// or "newmark" (the same implicit midpoint rule, nonlinear.hpp), 0 < dt <= t_end.
+/// "energy-momentum" is refused: the midpoint rule does not conserve the energy of the
+/// chain's non-quadratic springs, and the refusal names "midpoint".
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& response);
 

@@ -62,7 +62,7 @@ struct Eigenpairs {
                                ///< constraints and condensation (elastic_dofs() + rigid), both paths
   long long system_order = 0;  ///< sparse path: order of the factorized mixed system (0 for dense)
   long long factor_nonzeros = 0;  ///< sparse path: nonzeros of the factors (0 for dense)
-  double max_residual = 0.0;   ///< largest relative residual of the elastic pairs, see residuals()
+  double max_residual = 0.0;   ///< largest relative residual of the elastic pairs (residuals())
 };
 
 /// Elastic modes available: admissible DOFs minus rigid modes.
@@ -78,7 +78,9 @@ Eigenpairs solve(const Model& model, int count, Method method = Method::automati
 
 /// Relative residual of each pair, ||P (K x - lambda M x)|| / (||K x|| + lambda ||M x||),
 /// P the orthogonal projector onto the admissible DOFs (null space of C and S; the
-/// constraint forces are removed), maxed with ||[C; S] x|| / ||x||. O(n) per pair.
+/// constraint forces are removed): ModalResult::max_residual's definition (ring/results.hpp).
+/// How well the pairs satisfy C x = 0 and S x = 0 is not part of it (the solver builds them
+/// in the admissible space; tests/lumped_mass/solver_test.cpp bounds the drift). O(n) per pair.
 std::vector<double> residuals(const Model& model, const Eigenpairs& pairs);
 
 }  // namespace lumped

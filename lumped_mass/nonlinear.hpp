@@ -33,9 +33,9 @@
 // G(x_m)(x_{n+1} - x_n) exactly, so the constraint forces do no work and the
 // constraints hold to round-off at every step; the energy balance error comes only
 // from the midpoint rule on the non-quadratic spring energy (O(h^2), no drift for
-// undamped runs). Offered for response.integrator = "newmark" and "energy-momentum"
-// (the same scheme; energy is conserved up to that O(h^2) spring term);
-// "generalized-alpha" is not offered (std::invalid_argument).
+// undamped runs). Offered for response.integrator = "midpoint" and "newmark" (the same
+// scheme); "energy-momentum" (the name of a scheme that conserves energy, which this one
+// does not) and "generalized-alpha" are refused (std::invalid_argument, checks.hpp).
 // Damping: Rayleigh C = a M + b K0 (K0 the stiffness at rest) and hinge dampers c on
 // the turning rate, both at the midpoint velocity; the dissipated energy is summed.
 //

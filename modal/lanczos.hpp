@@ -53,18 +53,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "modal/subspace.hpp"
 #include "ring/errors.hpp"
 
 namespace modal {
 
 /// Outcome of a compute() (Spectra's CompInfo).
 enum class Status { NotComputed, Successful, NotConverging, NumericalIssue };
-
-/// The one Lanczos subspace rule: ncv = min(n, max(2 nev + 1, nev + 20)) basis vectors
-/// for nev wanted pairs of an n-dimensional problem (ARPACK's advice ncv >= 2 nev, plus
-/// a floor of 20 extra vectors that lets one pass converge the ring's separated spectra).
-/// \param nev 1 <= nev <= n - 1, else std::invalid_argument naming the range.
-int subspace_size(int nev, int n);
 
 struct LanczosOptions {
   int max_restarts = 1000;         ///< implicit restarts before NotConverging

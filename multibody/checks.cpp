@@ -43,6 +43,10 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions&, c
     throw std::invalid_argument("multibody::respond: rho_inf must lie in [0, 1]");
   if (response.rayleigh_mass < 0 || response.rayleigh_stiffness < 0 || response.hinge_damping < 0)
     throw std::invalid_argument("multibody::respond: damping coefficients must be >= 0");
+  if (response.integrator == ring::ResponseOptions::Integrator::midpoint)
+    throw std::invalid_argument(
+        "multibody::respond: response.integrator = \"midpoint\" is not offered by the multibody chain (accepted: "
+        "\"newmark\", \"generalized-alpha\", \"energy-momentum\")");
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum &&
       (response.rayleigh_mass > 0 || response.rayleigh_stiffness > 0 || response.hinge_damping > 0))
     throw std::invalid_argument(

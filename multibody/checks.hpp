@@ -16,7 +16,8 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
 /// Forced response: a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
-/// none with the energy-momentum integrator.
+/// none with the energy-momentum integrator; the integrator "newmark", "generalized-alpha"
+/// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here).
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response);
 

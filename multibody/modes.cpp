@@ -190,7 +190,7 @@ class SparsePath final : public ModesPath {
   }
   // The unreduced K and M (N = r + c: the c constrained directions barely move the
   // largest eigenvalue), O(n) per product.
-  std::pair<double, double> norms(const ModalSolution& sol) override {
+  std::pair<double, double> norms(const ModalSolution&) override {
     const int N = chain_.dofs();
     ShiftedSolve::Workspace ws;
     return {modal::norm_estimate([&](const Vector& v) { Vector y(N); sp_.k_times(v, y); return y; }, N),

@@ -28,6 +28,9 @@ struct ModeShape {
   std::vector<double> tangential;
 };
 
+/// ModalResult::residual_norm of the one definition of ModalResult::max_residual.
+inline const char* const kResidual2Norm = "2-norm";
+
 /// A value describing a model (JSON scalar).
 using ModelValue = std::variant<long long, double, bool, std::string>;
 
@@ -40,8 +43,18 @@ struct ModalResult {
   std::vector<ModeShape> shapes;              ///< same order as omega
   long long unknowns = 0;                     ///< size of the eigenproblem solved
   double seconds = 0.0;                       ///< solver wall time (process-internal)
-  /// Largest relative eigen-residual ||K x - w^2 M x|| / (||K x|| + w^2 ||M x||) seen.
+  /// The one residual of a modal result: over the returned (elastic) pairs, the largest
+  ///   ||K x - w^2 M x|| / (||K x|| + w^2 ||M x||)   (modal::relative_residual),
+  /// in the 2-norm of the solver's admissible coordinates: the constraints eliminated, or
+  /// the residual projected onto the admissible space so that constraint forces do not
+  /// count. Rigid pairs are not included. For a double-precision vector this ratio has a
+  /// rounding floor ~eps ||K|| / w^2 that grows with the discretization whatever the
+  /// solver (modal/modes.hpp); a solver whose floor would hide every digit reports the
+  /// same ratio in another norm and names it in residual_norm.
   double max_residual = 0.0;
+  /// The norm of max_residual: kResidual2Norm (the definition above), or the solver's own,
+  /// documented where it is computed ("dual norm of K - sigma M": fem_reference/modes.hpp).
+  std::string residual_norm = kResidual2Norm;
   /// Estimated remaining relative error (reference runs only; 0 if not estimated).
   double error_estimate = 0.0;
 };

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <stdexcept>
 #include <sstream>
 
 #include <sys/stat.h>
@@ -200,6 +201,16 @@ NonlinearRequest read_request(const Reader& r, const toml::table& t, const std::
   return q;
 }
 
+/// The solver's own range of an integer option of its section (SolverSchema::integer_ranges).
+std::pair<long long, long long> solver_range(const SceneSchema& schema, const std::string& solver,
+                                             const std::string& key) {
+  if (const SolverSchema* s = schema.find(solver)) {
+    const auto it = s->integer_ranges.find(key);
+    if (it != s->integer_ranges.end()) return it->second;
+  }
+  throw std::logic_error("scene reader: the solver schema gives no range for " + solver + "." + key);
+}
+
 Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
   s.reference_solver = schema.reference_solver;
@@ -264,7 +275,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     r.known_keys(*ft, "fem", {"elements", "degree", "geometry", "extensible", "rotary_inertia", "reference",
                               "tolerance", "response_tolerance"});
     s.fem.elements = static_cast<int>(r.integer(*ft, "fem", "elements", 40, 4, 10000000));
-    s.fem.degree = static_cast<int>(r.integer(*ft, "fem", "degree", 3, 2, 12));
+    const auto [degree_lo, degree_hi] = solver_range(schema, "fem", "degree");
+    s.fem.degree = static_cast<int>(r.integer(*ft, "fem", "degree", 3, degree_lo, degree_hi));
     s.fem.geometry = r.choice(*ft, "fem", "geometry", "curved", {"curved", "polygon"}) == "polygon"
                          ? FemOptions::Geometry::polygon : FemOptions::Geometry::curved;
     s.fem.extensible = r.boolean(*ft, "fem", "extensible", true);
@@ -334,10 +346,11 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
       r.fail(t->contains("t_end") ? "response.t_end" : "response.dt", t->contains("t_end") ? t->get("t_end") : t->get("dt"),
              "t_end/dt = " + fmt_num(o.t_end / o.dt) + " steps exceeds 1e8");
     const std::string integrator =
-        r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha", "energy-momentum"});
+        r.choice(*t, sec, "integrator", "newmark", {"newmark", "generalized-alpha", "energy-momentum", "midpoint"});
     o.integrator = integrator == "newmark"             ? ResponseOptions::Integrator::newmark
                  : integrator == "generalized-alpha" ? ResponseOptions::Integrator::generalized_alpha
-                                                      : ResponseOptions::Integrator::energy_momentum;
+                 : integrator == "energy-momentum"   ? ResponseOptions::Integrator::energy_momentum
+                                                      : ResponseOptions::Integrator::midpoint;
     o.rho_inf = r.number(*t, sec, "rho_inf", 0.8, 0.0, 1.0);
     o.record = read_record(r, *t, sec);
     o.rayleigh_mass = r.number(*t, sec, "rayleigh_mass", 0.0, 0.0, HUGE_VAL);

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ring/analysis.hpp"
@@ -57,6 +59,10 @@ struct SolverSchema {
   std::function<long long(const Scene&)> elastic_modes;
   bool statics = false;               ///< offers nonlinear statics
   bool response = false;              ///< offers the forced nonlinear response
+  /// Integer options of its section whose valid range is the solver's own, by key (fem:
+  /// "degree", fem_reference/checks.hpp): the reader refuses a value outside
+  /// [first, second], naming the key, before any solver runs.
+  std::map<std::string, std::pair<long long, long long>> integer_ranges;
 };
 
 /// All the solvers a scene may name.

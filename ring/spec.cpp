@@ -98,6 +98,7 @@ std::string to_string(ResponseOptions::Integrator i) {
     case ResponseOptions::Integrator::newmark: return "newmark";
     case ResponseOptions::Integrator::generalized_alpha: return "generalized-alpha";
     case ResponseOptions::Integrator::energy_momentum: return "energy-momentum";
+    case ResponseOptions::Integrator::midpoint: return "midpoint";
   }
   return "";
 }

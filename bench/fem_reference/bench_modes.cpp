@@ -13,20 +13,20 @@
 
 namespace {
 
-ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
+using ringtest::pinned_ring;
 
 const std::vector<double>& reference() {
   static const std::vector<double> omega = [] {
     ring::FemOptions o;
     o.reference = true;
     o.tolerance = 1e-11;
-    return fem::compute_modes(paper_ring(), o, 23).omega;
+    return fem::compute_modes(pinned_ring(), o, 23).omega;
   }();
   return omega;
 }
 
 void BM_Reference(benchmark::State& state) {
-  const auto spec = paper_ring();
+  const auto spec = pinned_ring();
   ring::FemOptions o;
   o.reference = true;
   ring::ModalResult r;
@@ -41,7 +41,7 @@ BENCHMARK(BM_Reference)->Unit(benchmark::kMillisecond);
 
 // args: degree p, elements
 void BM_TimeVsError(benchmark::State& state) {
-  const auto spec = paper_ring();
+  const auto spec = pinned_ring();
   ring::FemOptions o;
   o.degree = static_cast<int>(state.range(0));
   o.elements = static_cast<int>(state.range(1));

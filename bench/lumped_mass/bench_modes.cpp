@@ -18,7 +18,7 @@
 
 namespace {
 
-ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
+using ringtest::pinned_ring;
 
 double peak_rss_mb() {
   rusage u{};
@@ -31,7 +31,7 @@ void BM_LumpedModes(benchmark::State& state) {
   o.variant = static_cast<ring::LumpedOptions::Variant>(state.range(0));
   o.n = static_cast<int>(state.range(1));
   const auto method = static_cast<lumped::Method>(state.range(2));
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pinned_ring();
   ring::ModalResult r;
   for (auto _ : state) {
     r = lumped::compute_modes(spec, o, 9, method);

@@ -23,11 +23,7 @@ namespace {
 
 using Integrator = ring::ResponseOptions::Integrator;
 
-ring::RingSpec paper_ring() {
-  ring::RingSpec s = ringtest::paper_ring(180.0);
-  s.supports.roller = 0.0;
-  return s;
-}
+using ringtest::pin_roller_ring;
 
 ring::ResponseOptions scene(Integrator integrator, double t_end) {
   ring::ResponseOptions r;
@@ -55,7 +51,7 @@ void time_per_step(benchmark::State& state, Integrator integrator) {
     ring::TimeHistory th;
     // A run that stops (IntegrationFailure): count the steps it made.
     try {
-      th = multibody::respond(paper_ring(), o, r);
+      th = multibody::respond(pin_roller_ring(), o, r);
     } catch (const multibody::IntegrationFailure& f) {
       th = f.partial();
     }
@@ -95,7 +91,7 @@ void long_run(benchmark::State& state, Integrator integrator) {
     ring::TimeHistory th;
     // A run that stops with IntegrationFailure: time and count what was integrated.
     try {
-      th = multibody::respond(paper_ring(), o, r);
+      th = multibody::respond(pin_roller_ring(), o, r);
     } catch (const multibody::IntegrationFailure& f) {
       th = f.partial();
     }
@@ -133,7 +129,7 @@ void paper_scene(benchmark::State& state, Integrator integrator) {
   o.n = 40;
   const ring::ResponseOptions r = scene(integrator, 5.0);
   for (auto _ : state) {
-    const ring::TimeHistory th = multibody::respond(paper_ring(), o, r);
+    const ring::TimeHistory th = multibody::respond(pin_roller_ring(), o, r);
     benchmark::DoNotOptimize(th.ux.data());
   }
 }

@@ -11,10 +11,10 @@
 
 namespace {
 
-ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
+using ringtest::pinned_ring;
 
 void BM_ComputeModes23(benchmark::State& st) {
-  const ring::RingSpec s = paper_ring();
+  const ring::RingSpec s = pinned_ring();
   ring::MultibodyOptions o;
   o.n = static_cast<int>(st.range(0));
   o.rotary_inertia = st.range(1) != 0;
@@ -54,7 +54,7 @@ BENCHMARK(BM_ComputeModes23)
 // modes, pinned paper ring, rotary inertia): lib = 0 the hand-written Lanczos
 // (multibody/lanczos.hpp), lib = 1 the eigen layer's Spectra Lanczos (modal/lanczos.hpp).
 void BM_SparseEigensolver(benchmark::State& st) {
-  const ring::RingSpec s = paper_ring();
+  const ring::RingSpec s = pinned_ring();
   ring::MultibodyOptions o;
   o.n = static_cast<int>(st.range(0));
   o.method = ring::MultibodyOptions::Method::sparse;
@@ -76,7 +76,7 @@ BENCHMARK(BM_SparseEigensolver)
     ->Unit(benchmark::kMillisecond);
 
 void BM_Linearize(benchmark::State& st) {
-  const ring::RingSpec s = paper_ring();
+  const ring::RingSpec s = pinned_ring();
   ring::MultibodyOptions o;
   o.n = static_cast<int>(st.range(0));
   const multibody::Chain c(s, o);

@@ -115,6 +115,19 @@ TEST(Cli, ModesJsonContract) {
   EXPECT_EQ(ringvib("modes " + dir + "/mb.toml --solver multibody --count 38").code, 2);  // n - 3 = 37
 }
 
+// max_residual has one definition (ring/results.hpp): the 2-norm relative residual, and
+// every result names its norm; the chains report that definition itself.
+TEST(Cli, ModesJsonNamesTheResidualNorm) {
+  for (const char* solver : {"multibody", "lumped"}) {
+    const auto r = ringvib("modes " + source("scenes/free-ring.toml") + " --solver " + solver + " --json --count 4");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["residual_norm"], "2-norm") << solver;
+    EXPECT_GE(j["max_residual"].get<double>(), 0.0) << solver;
+    EXPECT_LT(j["max_residual"].get<double>(), 1e-6) << solver;  // n = 40: far above any floor
+  }
+}
+
 // A multibody-only scene never loads the FE module: with the module path pointing at
 // nothing it still succeeds, while a scene that needs FE then fails with exit 2.
 TEST(Cli, MultibodyOnlySceneNeverLoadsFe) {

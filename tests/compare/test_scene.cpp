@@ -8,6 +8,7 @@
 
 #include "ring/errors.hpp"
 #include "compare/registry.hpp"
+#include "fem_reference/checks.hpp"
 
 namespace {
 
@@ -130,6 +131,14 @@ TEST(SceneReject, MoreModesThanTheModelHas) {
   expect_rejected(replace(kPaper, "n = 40\n[lumped]", "n = 10\n[lumped]"), "modes.count", "only 7 elastic modes");
 }
 TEST(SceneReject, FemDegreeOne) { expect_rejected(kPaper + "[fem]\ndegree = 1\n", "fem.degree"); }
+// The reader takes the FE beam's own degree range (fem_reference/checks.hpp) from the
+// registry: the cap is accepted, one more is refused naming the key and the range.
+TEST(SceneReject, FemDegreeAboveTheFeCap) {
+  const int cap = fem::kMaxDegree;
+  EXPECT_EQ(cmp::parse_scene(kPaper + "[fem]\ndegree = " + std::to_string(cap) + "\n", "cap.toml").fem.degree, cap);
+  expect_rejected(kPaper + "[fem]\ndegree = " + std::to_string(cap + 1) + "\n", "fem.degree",
+                  "[" + std::to_string(fem::kMinDegree) + ", " + std::to_string(cap) + "]");
+}
 TEST(SceneReject, TableComparesBaseWithItself) {
   expect_rejected(kPaper + "[table]\nbase = \"multibody\"\nagainst = [\"multibody\"]\n", "table.against");
 }

@@ -22,12 +22,12 @@
 #include "fem_reference/self_contact.hpp"
 #include "multibody/statics.hpp"
 #include "ring/errors.hpp"
-#include "tests/fem_reference/paper_ring.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
 ring::RingSpec held_ring() {
-  ring::RingSpec s = femtest::paper_ring(180.0);
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   return s;
 }

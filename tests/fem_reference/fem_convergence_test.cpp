@@ -13,7 +13,7 @@
 
 #include "fem_reference/modes.hpp"
 #include "ring/closed_form.hpp"
-#include "tests/fem_reference/paper_ring.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -21,7 +21,7 @@ class FemConvergence : public ::testing::TestWithParam<int> {};
 
 TEST_P(FemConvergence, FittedOrderIsTwoPMinusTwo) {
   const int p = GetParam();
-  const auto spec = femtest::paper_ring(std::nullopt);
+  const auto spec = ringtest::free_ring();
   // k = 4 (modes 5 and 6); 32, 64, 128 cells are in the asymptotic range for p = 2..4
   // and stay above the ~1e-12 round-off floor.
   const double exact = ring::closed_form::free_ring_extensible(spec, 4)[0];

@@ -11,7 +11,7 @@
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
 #include "fem_reference/plugin.hpp"
-#include "tests/fem_reference/paper_ring.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -26,7 +26,7 @@ TEST(FemPlugin, DlopenGivesTheSameNumbers) {
   const fem::Plugin* plugin = load();
   ASSERT_NE(plugin, nullptr) << dlerror();
   EXPECT_EQ(plugin->abi_version, 2);
-  const auto spec = femtest::paper_ring(180.0);
+  const auto spec = ringtest::pinned_ring();
   ring::FemOptions o;
   ring::ModalResult out;
   std::string error;
@@ -40,7 +40,7 @@ TEST(FemPlugin, DlopenGivesTheSameNumbers) {
 }
 
 ring::RingSpec held() {
-  ring::RingSpec s = femtest::paper_ring(180.0);
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   return s;
 }
@@ -84,7 +84,7 @@ TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {
 TEST(FemPlugin, ErrorsBecomeCodesNotExceptions) {
   const fem::Plugin* plugin = load();
   ASSERT_NE(plugin, nullptr);
-  const auto spec = femtest::paper_ring(180.0);
+  const auto spec = ringtest::pinned_ring();
   ring::FemOptions o;
   o.degree = 1;
   ring::ModalResult out;
@@ -99,7 +99,7 @@ TEST(FemPlugin, WritesVtu) {
   const auto dir = std::filesystem::temp_directory_path() / "ringvib_fem_vtu_test";
   std::filesystem::create_directories(dir);
   std::string error;
-  ASSERT_EQ(plugin->write_vtu(femtest::paper_ring(180.0), ring::FemOptions{}, 3, dir.string(), error), 0) << error;
+  ASSERT_EQ(plugin->write_vtu(ringtest::pinned_ring(), ring::FemOptions{}, 3, dir.string(), error), 0) << error;
   EXPECT_GT(std::filesystem::file_size(dir / "fem_modes.vtu"), 1000u);
   std::filesystem::remove_all(dir);
 }

@@ -8,7 +8,7 @@
 #include "fem_reference/modes.hpp"
 #include "ring/closed_form.hpp"
 #include "tests/support/close.hpp"
-#include "tests/fem_reference/paper_ring.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -19,7 +19,7 @@ std::string scientific(double x) {
 }
 
 TEST(FemStress, HundredThousandUnknownsTwentyThreeModes) {
-  const auto spec = femtest::paper_ring(180.0);
+  const auto spec = ringtest::pinned_ring();
   ring::FemOptions o;
   o.elements = 20480;  // degree 2: 3 + 2 unknowns per cell -> 102 400 - 2 constrained
   o.degree = 2;
@@ -50,7 +50,7 @@ TEST(FemStress, NearThePrecisionLimitRigidModesAndFrequenciesHold) {
   ring::FemOptions fine;
   fine.elements = 3000;
   fine.degree = 12;
-  const auto free_spec = femtest::paper_ring(std::nullopt);
+  const auto free_spec = ringtest::free_ring();
   const auto f = fem::compute_modes(free_spec, fine, 24);
   EXPECT_EQ(f.rigid_modes, 3);
   double worst = 0.0;
@@ -65,7 +65,7 @@ TEST(FemStress, NearThePrecisionLimitRigidModesAndFrequenciesHold) {
   // frequency was 6.5e-5 off at this size (residual 6.6e-3).
   EXPECT_LT(worst, 1e-7);
 
-  const auto pinned_spec = femtest::paper_ring(180.0);
+  const auto pinned_spec = ringtest::pinned_ring();
   const auto p = fem::compute_modes(pinned_spec, fine, 5);
   EXPECT_EQ(p.rigid_modes, 1);
   ring::FemOptions coarse;
@@ -84,7 +84,7 @@ TEST(FemStress, BeyondThePrecisionLimitTheDiscretizationIsRefused) {
   o.elements = 10000;
   o.degree = 12;
   try {
-    fem::compute_modes(femtest::paper_ring(180.0), o, 23);
+    fem::compute_modes(ringtest::pinned_ring(), o, 23);
     ADD_FAILURE() << "10^4 elements of degree 12 were solved";
   } catch (const std::invalid_argument& e) {
     const std::string m = e.what();

@@ -5,12 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem_reference/checks.hpp"
 #include "fem_reference/modes.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/paper_table.hpp"
 #include "ring/sampling.hpp"
 #include "tests/support/close.hpp"
-#include "tests/fem_reference/paper_ring.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -20,7 +21,7 @@ using ringtest::IsClose;
 // Free ring: the lowest 24 elastic modes are the flexural pairs k = 2..13 (the
 // extensional branches start at the breathing mode, 519 rad/s, above k = 13's 260).
 TEST(FemFreeRing, MatchesExtensibleClosedFormK2To13) {
-  const auto spec = femtest::paper_ring(std::nullopt);
+  const auto spec = ringtest::free_ring();
   FemOptions o;
   o.reference = true;
   const auto r = fem::compute_modes(spec, o, 24);
@@ -34,10 +35,30 @@ TEST(FemFreeRing, MatchesExtensibleClosedFormK2To13) {
   }
 }
 
+// The degree cap (fem_reference/checks.hpp, kMaxDegree) is what the reference refines to
+// and what a user may ask for: at the cap the free ring matches the closed form as the
+// reference does (1e-8, the bound above; measured 1.5e-12 at p = 16 against 2.2e-12 at
+// p = 8, 40 elements), and one degree more is refused (std::invalid_argument).
+TEST(FemFreeRing, TheDegreeCapIsUsableAndOneMoreIsRefused) {
+  const auto spec = ringtest::free_ring();
+  FemOptions o;
+  o.degree = fem::kMaxDegree;
+  const auto r = fem::compute_modes(spec, o, 24);
+  EXPECT_EQ(r.rigid_modes, 3);
+  ASSERT_EQ(r.omega.size(), 24u);
+  for (int k = 2; k <= 13; ++k) {
+    const double exact = ring::closed_form::free_ring_extensible(spec, k)[0];
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-8)) << "k = " << k;
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2) + 1], exact, 1e-8)) << "k = " << k << " (second of the pair)";
+  }
+  o.degree = fem::kMaxDegree + 1;
+  EXPECT_THROW(fem::compute_modes(spec, o, 24), std::invalid_argument);
+}
+
 // extensible = false: the inextensible limit (penalty + Richardson extrapolation, see
 // modes.hpp) against Hoppe's inextensional formula, k = 2..13.
 TEST(FemFreeRing, InextensibleLimitMatchesHoppe) {
-  const auto spec = femtest::paper_ring(std::nullopt);
+  const auto spec = ringtest::free_ring();
   FemOptions o;
   o.degree = 8;  // discretization error < 1e-11 for k <= 13 (FemFreeRing above, same mesh)
   o.extensible = false;
@@ -57,7 +78,7 @@ TEST(FemFreeRing, InextensibleLimitMatchesHoppe) {
 // (u - w')/R = (B + k A) sin(k theta) / R), i.e. M = rho A I2 + rho I / R^2 [k^2 k; k 1].
 // The lower root of det(K - lambda M) = 0 is the oracle (derived here, not in ring/).
 TEST(FemFreeRing, RotaryInertiaMatchesTwoByTwoClosedForm) {
-  const auto spec = femtest::paper_ring(std::nullopt);
+  const auto spec = ringtest::free_ring();
   FemOptions o;
   o.degree = 8;
   o.rotary_inertia = true;
@@ -83,7 +104,7 @@ TEST(FemFreeRing, RotaryInertiaMatchesTwoByTwoClosedForm) {
 // tangential/radial amplitude ratio the closed form's B/A. This pins down the sign
 // conventions (w outward, u counter-clockwise) of the stations.
 TEST(FemFreeRing, ShapeOfK2IsTheClosedFormWave) {
-  const auto spec = femtest::paper_ring(std::nullopt);
+  const auto spec = ringtest::free_ring();
   FemOptions o;
   o.degree = 6;
   const auto r = fem::compute_modes(spec, o, 2);
@@ -111,7 +132,7 @@ TEST(FemFreeRing, ShapeOfK2IsTheClosedFormWave) {
 // Pinned paper ring: the reference converges the 23 lowest frequencies to 1e-9.
 // Oracle: an independent, finer discretization (60 cells of degree 12) of the same model.
 TEST(FemPinnedRing, ReferenceConvergesTo1e9WithSmallResiduals) {
-  const auto spec = femtest::paper_ring(180.0);
+  const auto spec = ringtest::pinned_ring();
   FemOptions o;
   o.reference = true;
   const auto r = fem::compute_modes(spec, o, 23);
@@ -119,6 +140,7 @@ TEST(FemPinnedRing, ReferenceConvergesTo1e9WithSmallResiduals) {
   ASSERT_EQ(r.omega.size(), 23u);
   EXPECT_LT(r.error_estimate, 1e-9);
   EXPECT_LT(r.max_residual, 1e-10);  // the issue's bound (dual-norm residual, see modes.hpp)
+  EXPECT_EQ(r.residual_norm, fem::kDualResidualNorm);  // and the result says which norm (ring/results.hpp)
   FemOptions fine;
   fine.elements = 60;
   fine.degree = 12;
@@ -134,7 +156,7 @@ TEST(FemPinnedRing, ReferenceConvergesTo1e9WithSmallResiduals) {
 // against the paper's FE column (fe_corrected). Bounds from the issue: modes 1-9
 // within 0.1 %, all 23 within 1.2 % (the rest is SAP5's cubic/linear elements).
 TEST(FemPolygon, FortyChordsMatchPaperFeColumn) {
-  const auto spec = femtest::paper_ring(180.0);
+  const auto spec = ringtest::pinned_ring();
   FemOptions o;
   o.geometry = FemOptions::Geometry::polygon;
   o.reference = true;
@@ -153,7 +175,7 @@ TEST(FemPolygon, FortyChordsMatchPaperFeColumn) {
 // of the pinned ring that is symmetric about the pin-roller diameter already satisfies,
 // so those modes must reappear unchanged; no rigid mode is left.
 TEST(FemSupports, RollerKeepsTheSymmetricModesOfThePinnedRing) {
-  auto pinned = femtest::paper_ring(180.0);
+  auto pinned = ringtest::pinned_ring();
   auto rolled = pinned;
   rolled.supports.roller = 0.0;
   FemOptions o;
@@ -174,7 +196,7 @@ TEST(FemSupports, RollerKeepsTheSymmetricModesOfThePinnedRing) {
 }
 
 TEST(FemInput, RejectsWhatCanNeverWork) {
-  const auto spec = femtest::paper_ring(180.0);
+  const auto spec = ringtest::pinned_ring();
   FemOptions o;
   o.degree = 1;
   EXPECT_THROW(fem::compute_modes(spec, o, 5), std::invalid_argument);

@@ -1,4 +1,4 @@
-// Rings shared by the lumped-mass suites.
+// Options shared by the lumped-mass suites (the rings: support/paper.hpp).
 #pragma once
 
 #include "ring/spec.hpp"
@@ -6,8 +6,6 @@
 
 namespace lumptest {
 
-using ringtest::paper_ring;  // free
-inline ring::RingSpec pinned_ring(double pin = 180.0) { return ringtest::paper_ring(pin); }
 inline ring::LumpedOptions options(int n, ring::LumpedOptions::Variant v) {
   ring::LumpedOptions o;
   o.n = n;

@@ -61,7 +61,7 @@ class LumpedConvergence : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LumpedConvergence, FreeRingFittedOrder) {
   const Case c = GetParam();
-  const ring::RingSpec spec = lumptest::paper_ring();
+  const ring::RingSpec spec = ringtest::free_ring();
   const std::vector<int> ns{40, 80, 160, 320};
   for (int k : {2, 3, 4}) {
     std::vector<double> err;

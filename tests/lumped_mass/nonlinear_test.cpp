@@ -22,7 +22,7 @@ using ringtest::IsClose;
 
 /// The paper's ring pinned at A (180 deg), roller at C (0 deg), as in section 5.
 ring::RingSpec held_ring() {
-  ring::RingSpec s = ringtest::paper_ring(180.0);
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   return s;
 }

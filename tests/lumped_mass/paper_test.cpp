@@ -19,7 +19,7 @@ std::vector<ring::PaperRow> table() {
 TEST(LumpedPaper, ChainReproducesLumpedMassColumnModes1To9) {
   const auto rows = table();
   const ring::ModalResult r =
-      lumped::compute_modes(lumptest::pinned_ring(), lumptest::options(40, lumptest::kChain), 20);
+      lumped::compute_modes(ringtest::pinned_ring(), lumptest::options(40, lumptest::kChain), 20);
   EXPECT_EQ(r.rigid_modes, 1);  // pinned: free to turn about the pin
   for (const auto& row : rows) {
     if (!row.lm_corrected || row.mode > 20) continue;
@@ -38,7 +38,7 @@ TEST(LumpedPaper, ChainReproducesLumpedMassColumnModes1To9) {
 TEST(LumpedPaper, FrameConsistentReproducesSap5ColumnAll23Modes) {
   const auto rows = table();
   const ring::ModalResult r =
-      lumped::compute_modes(lumptest::pinned_ring(), lumptest::options(40, lumptest::kConsistent), 23);
+      lumped::compute_modes(ringtest::pinned_ring(), lumptest::options(40, lumptest::kConsistent), 23);
   EXPECT_EQ(r.rigid_modes, 1);
   ASSERT_EQ(r.omega.size(), 23u);
   for (const auto& row : rows) {

@@ -24,7 +24,7 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 ring::RingSpec with_supports(const std::string& s) {
-  ring::RingSpec spec = lumptest::paper_ring();
+  ring::RingSpec spec = ringtest::free_ring();
   if (s != "free") spec.supports.pin = 180.0;
   if (s == "roller") spec.supports.roller = 0.0;
   return spec;
@@ -129,7 +129,7 @@ INSTANTIATE_TEST_SUITE_P(
 // linear curvature's quadratic energy.
 TEST(LumpedModel, FactoredStiffnessEqualsAssembled) {
   for (auto v : {kChain, kFrame, kConsistent}) {
-    const lumped::Model m = lumped::assemble(lumptest::pinned_ring(), lumptest::options(12, v));
+    const lumped::Model m = lumped::assemble(ringtest::pinned_ring(), lumptest::options(12, v));
     const MatrixXd K(m.K), F = MatrixXd(m.B).transpose() * m.D.asDiagonal() * MatrixXd(m.B);
     EXPECT_LT((K - F).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff()) << name(v);
   }
@@ -138,7 +138,7 @@ TEST(LumpedModel, FactoredStiffnessEqualsAssembled) {
 // Masses: every variant carries the ring's mass 2 pi R rho A in each direction
 // (rigid translation x: x^T M x = total mass). Oracle: the ring's mass.
 TEST(LumpedModel, TranslationCarriesRingMass) {
-  const ring::RingSpec spec = lumptest::paper_ring();
+  const ring::RingSpec spec = ringtest::free_ring();
   const double total = 2.0 * M_PI * spec.radius * spec.rhoA();
   for (auto v : {kChain, kFrame, kConsistent}) {
     const lumped::Model m = lumped::assemble(spec, lumptest::options(24, v));
@@ -151,7 +151,7 @@ TEST(LumpedModel, TranslationCarriesRingMass) {
 }
 
 TEST(LumpedModel, RejectsWhatCanNeverWork) {
-  ring::RingSpec spec = lumptest::pinned_ring();
+  ring::RingSpec spec = ringtest::pinned_ring();
   EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(3, kChain), 1), std::invalid_argument);
   EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 0), std::invalid_argument);
   // The chain has n - 3 elastic modes whatever the supports.
@@ -163,7 +163,7 @@ TEST(LumpedModel, RejectsWhatCanNeverWork) {
   EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 5), std::invalid_argument);
   spec.supports.roller = 180.0;  // on the pin
   EXPECT_THROW(lumped::compute_modes(spec, lumptest::options(40, kChain), 5), std::invalid_argument);
-  ring::RingSpec bad = lumptest::paper_ring();
+  ring::RingSpec bad = ringtest::free_ring();
   bad.E = 0.0;
   EXPECT_THROW(lumped::compute_modes(bad, lumptest::options(40, kFrame), 5), std::invalid_argument);
 }
@@ -176,7 +176,7 @@ TEST(LumpedModel, RejectsWhatCanNeverWork) {
 // Pinned at a corner, roller at the opposite one: the centre moves at d1'/2 along the
 // diagonal, the midpoints' speeds^2 add up to 3 l^2 delta'^2 / 4, omega^2 = 16 EI/(3 rho A l^4).
 TEST(LumpedModel, SmallestChainIsTheRhombusMode) {
-  ring::RingSpec spec = lumptest::pinned_ring();
+  ring::RingSpec spec = ringtest::pinned_ring();
   spec.supports.roller = 0.0;
   const double l = M_PI * spec.radius / 2.0;
   const double free_w2 = 16.0 * spec.EI() / (spec.rhoA() * std::pow(l, 4));
@@ -184,7 +184,7 @@ TEST(LumpedModel, SmallestChainIsTheRhombusMode) {
   EXPECT_EQ(r.rigid_modes, 0);
   ASSERT_EQ(r.omega.size(), 1u);
   EXPECT_TRUE(ringtest::IsClose(r.omega[0], std::sqrt(free_w2 / 3.0), 1e-12));  // rounding only
-  const ring::ModalResult f = lumped::compute_modes(lumptest::paper_ring(), lumptest::options(4, kChain), 1);
+  const ring::ModalResult f = lumped::compute_modes(ringtest::free_ring(), lumptest::options(4, kChain), 1);
   EXPECT_EQ(f.rigid_modes, 3);
   EXPECT_TRUE(ringtest::IsClose(f.omega[0], std::sqrt(free_w2), 1e-12));
 }
@@ -197,7 +197,7 @@ TEST(LumpedModel, SmallestChainIsTheRhombusMode) {
 // every variant for k = 2, 3 (convergence_test: largest 2.4e-4, chain k = 3).
 TEST(LumpedModel, SlendernessExtremes) {
   for (double d : {0.001, 2.0}) {
-    ring::RingSpec spec = lumptest::paper_ring();
+    ring::RingSpec spec = ringtest::free_ring();
     spec.section.diameter = d;
     for (auto v : {kChain, kFrame, kConsistent}) {
       const LumpedOptions o = lumptest::options(160, v);
@@ -220,7 +220,7 @@ TEST(LumpedModel, SlendernessExtremes) {
 // move; the roller (station 0, opposite the pin) moves only along the pin-roller line,
 // i.e. radially at 0 deg. Oracle: the support definitions of the README.
 TEST(LumpedModel, ShapesHonourSupports) {
-  ring::RingSpec spec = lumptest::pinned_ring();
+  ring::RingSpec spec = ringtest::pinned_ring();
   spec.supports.roller = 0.0;
   for (auto v : {kChain, kFrame, kConsistent}) {
     const ring::ModalResult r = lumped::compute_modes(spec, lumptest::options(40, v), 9);

@@ -26,7 +26,7 @@ class LumpedVsMultibody : public ::testing::TestWithParam<Case> {};
 
 TEST_P(LumpedVsMultibody, AllElasticModesAgree) {
   const Case c = GetParam();
-  ring::RingSpec spec = lumptest::paper_ring();
+  ring::RingSpec spec = ringtest::free_ring();
   if (std::string(c.supports) != "free") spec.supports.pin = 180.0;
   if (std::string(c.supports) == "roller") spec.supports.roller = 0.0;
   ring::MultibodyOptions mo;
@@ -84,7 +84,7 @@ INSTANTIATE_TEST_SUITE_P(Chains, LumpedVsMultibody,
 // oracle with ~2000x less rounding, exposing which solver carries the error. Lumped
 // must agree with it to 1e-10 for EVERY mode (its dense path: SVD, eps sqrt(kappa)).
 TEST(LumpedVsMultibodyArbiter, ExtendedPrecisionArbiter) {
-  const ring::RingSpec spec = lumptest::pinned_ring();
+  const ring::RingSpec spec = ringtest::pinned_ring();
   ring::MultibodyOptions mo;
   mo.n = 160;
   mo.rotary_inertia = false;

@@ -1,5 +1,5 @@
-// Shared by the multibody suites: the paper's ring as section 5 holds it, and a number
-// format for RecordProperty.
+// Shared by the multibody suites: the section-5 load, the energy balance of a history, a fitted
+// slope and a number format for RecordProperty.
 #pragma once
 
 #include <algorithm>
@@ -35,13 +35,6 @@ inline double loglog_slope(const std::vector<double>& x, const std::vector<doubl
     sxy += lx * ly;
   }
   return (m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
-
-/// The paper's ring pinned at A (180 deg) with the roller at C (0 deg), as in section 5.
-inline ring::RingSpec paper_ring() {
-  ring::RingSpec s = ringtest::paper_ring(180.0);
-  s.supports.roller = 0.0;
-  return s;
 }
 
 /// The reconstructed section-5 load (issue 7): a 20 kN step at C (0 deg) toward the pin,

@@ -43,9 +43,7 @@ TEST(MultibodyBackend, EveryAnalysisSwitchesAtItsCrossover) {
 // "auto" keeps the modes dense when a third of the spectrum or more is wanted, for every
 // support, exactly where solve_modes's own rule did.
 TEST(MultibodyBackend, ModesStayDenseForAThirdOfTheSpectrum) {
-  ring::RingSpec free = mbtest::paper_ring(), pinned = mbtest::paper_ring(), held = mbtest::paper_ring();
-  free.supports = {};
-  pinned.supports.roller.reset();
+  const ring::RingSpec free = ringtest::free_ring(), pinned = ringtest::pinned_ring(), held = ringtest::pin_roller_ring();
   for (const ring::RingSpec* spec : {&free, &pinned, &held})
     for (int n : {256, 258, 300, 1000}) {  // even: the roller sits opposite the pin
       const multibody::Chain chain(*spec, opts(n));

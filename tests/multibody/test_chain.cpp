@@ -7,6 +7,7 @@
 #include <random>
 
 #include "multibody/chain.hpp"
+#include "support/paper.hpp"
 #include "tests/support/close.hpp"
 
 namespace {
@@ -15,16 +16,8 @@ using multibody::Chain;
 using multibody::Matrix;
 using multibody::Vector;
 
-ring::RingSpec paper_ring(bool pinned = true) {
-  ring::RingSpec s;  // Table 1 of the paper: R = 10 m, circle d = 0.12 m, steel
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
-  if (pinned) s.supports.pin = 180.0;
-  return s;
-}
+/// The paper's ring, pinned at 180 deg or free.
+ring::RingSpec pinned_or_free(bool pinned) { return pinned ? ringtest::pinned_ring() : ringtest::free_ring(); }
 
 ring::MultibodyOptions opts(int n, bool rot = true) {
   ring::MultibodyOptions o;
@@ -49,7 +42,7 @@ constexpr double kFd = 1e-7;
 
 TEST(MultibodyChain, RestGeometryIsTheRegularPolygon) {
   for (bool pinned : {true, false}) {
-    const Chain c(paper_ring(pinned), opts(40), std::optional<double>(pinned ? std::nullopt : std::optional<double>(30.0)));
+    const Chain c(pinned_or_free(pinned), opts(40), std::optional<double>(pinned ? std::nullopt : std::optional<double>(30.0)));
     const Vector q = c.q0();
     const auto p = c.hinge_positions(q);
     const double rp = c.l() / (2.0 * std::sin(M_PI / c.n()));
@@ -67,7 +60,7 @@ TEST(MultibodyChain, RestGeometryIsTheRegularPolygon) {
 
 TEST(MultibodyChain, MassMatrixIsTheKineticEnergyOfMidpointVelocities) {
   for (bool pinned : {true, false}) {
-    const Chain c(paper_ring(pinned), opts(12));
+    const Chain c(pinned_or_free(pinned), opts(12));
     const Vector q = perturbed(c, 7);
     const Vector qd = perturbed(c, 8, 1.0) - c.q0();
     // Oracle: midpoint velocities by central differences of midpoints(), plus Jr qd^2.
@@ -87,7 +80,7 @@ TEST(MultibodyChain, MassMatrixIsTheKineticEnergyOfMidpointVelocities) {
 // the dense mass matrix, pinned and free.
 TEST(MultibodyChain, MassTimesColumnsEqualsTheMassMatrix) {
   for (bool pinned : {true, false}) {
-    const Chain c(paper_ring(pinned), opts(10));
+    const Chain c(pinned_or_free(pinned), opts(10));
     const Vector q = perturbed(c, 41);
     const Matrix V = Matrix::Random(c.dofs(), 3);
     const Matrix expect = c.mass_matrix(q) * V;
@@ -98,7 +91,7 @@ TEST(MultibodyChain, MassTimesColumnsEqualsTheMassMatrix) {
 TEST(MultibodyChain, PaperMassMatrixEntries) {
   // The paper's eq. (12) with the corrected L^T L: (L^T L)_jj = n - j + 1/4 and
   // (L^T L)_jk = n - max(j,k) + 1/2 (1-based), times m l^2 cos(phi_j - phi_k).
-  const Chain c(paper_ring(), opts(9, false));
+  const Chain c(ringtest::pinned_ring(), opts(9, false));
   const Vector q = perturbed(c, 3);
   const Matrix M = c.mass_matrix(q);
   const int n = c.n();
@@ -111,7 +104,7 @@ TEST(MultibodyChain, PaperMassMatrixEntries) {
 
 TEST(MultibodyChain, QuadraticVelocityFromLagrange) {
   for (bool pinned : {true, false}) {
-    const Chain c(paper_ring(pinned), opts(10));
+    const Chain c(pinned_or_free(pinned), opts(10));
     const Vector q = perturbed(c, 11);
     const Vector qd = perturbed(c, 12, 1.0) - c.q0();
     // c = Mdot qd - (1/2) d/dq (qd^T M qd), both by central differences of mass_matrix.
@@ -128,7 +121,7 @@ TEST(MultibodyChain, QuadraticVelocityFromLagrange) {
 }
 
 TEST(MultibodyChain, ForcesAndJacobiansByFiniteDifferences) {
-  ring::RingSpec s = paper_ring();
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   const Chain c(s, opts(10));
   ASSERT_EQ(c.roller_hinge().value_or(-1), 5);
@@ -162,7 +155,7 @@ TEST(MultibodyChain, ForcesAndJacobiansByFiniteDifferences) {
 // unknowns).
 TEST(MultibodyChain, ConstraintKinematicsInOnePass) {
   for (bool pinned : {true, false}) {
-    ring::RingSpec s = paper_ring(pinned);
+    ring::RingSpec s = pinned_or_free(pinned);
     if (pinned) s.supports.roller = 0.0;
     const Chain c(s, opts(10));
     ASSERT_EQ(c.constraint_count(), pinned ? 3 : 2);
@@ -182,12 +175,12 @@ TEST(MultibodyChain, ConstraintKinematicsInOnePass) {
 }
 
 TEST(MultibodyChain, RejectsWhatCanNeverWork) {
-  EXPECT_THROW(Chain(paper_ring(), opts(3)), std::invalid_argument);
-  ring::RingSpec s = paper_ring();
+  EXPECT_THROW(Chain(ringtest::pinned_ring(), opts(3)), std::invalid_argument);
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 1.0;  // not a hinge of the 40-gon anchored at 180 deg
   EXPECT_THROW(Chain(s, opts(40)), std::invalid_argument);
-  EXPECT_THROW(Chain(paper_ring(), opts(40), 181.0), std::invalid_argument);
-  EXPECT_EQ(Chain(paper_ring(), opts(40), 0.0).hinge_at(0.0), 20);
+  EXPECT_THROW(Chain(ringtest::pinned_ring(), opts(40), 181.0), std::invalid_argument);
+  EXPECT_EQ(Chain(ringtest::pinned_ring(), opts(40), 0.0).hinge_at(0.0), 20);
 }
 
 }  // namespace

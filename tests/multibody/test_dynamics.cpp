@@ -21,7 +21,7 @@
 namespace {
 
 using mbtest::sci;
-using mbtest::paper_ring;
+using ringtest::pin_roller_ring;
 
 using Integrator = ring::ResponseOptions::Integrator;
 
@@ -158,7 +158,7 @@ double relative_deviation(const ring::TimeHistory& th, const Linear& lin, int p)
 }
 
 TEST_P(MultibodyDynamicsSmallLoad, EqualsLinearModalSuperposition) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const ring::ResponseOptions r = paper_scene(20.0, GetParam(), 0.0025);
   const ring::TimeHistory th = multibody::respond(spec, n_segments(40), r);
   const Linear exact = modal_superposition(spec, 40, r, th.t, false);
@@ -193,7 +193,7 @@ TEST_P(MultibodyDynamicsSmallLoad, EqualsLinearModalSuperposition) {
 // again the same integrator applied mode by mode, to the geometric nonlinearity
 // (bound 1e-3 of the peak as above).
 TEST_P(MultibodyDynamicsSmallLoad, HistoriesAndObliqueLoadsFollowTheModes) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   using Kind = ring::LoadHistory::Kind;
   for (Kind kind : {Kind::ramp, Kind::half_sine, Kind::harmonic}) {
     ring::ResponseOptions r = paper_scene(20.0, GetParam(), 0.005, 3.0);
@@ -238,7 +238,7 @@ double history_difference(const ring::TimeHistory& coarse, const ring::TimeHisto
 std::vector<double> successive_differences(Integrator integrator, double t_end,
                                            const std::vector<double>& dts,
                                            const ring::LoadHistory& history = {}, int n = 40) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   std::vector<ring::TimeHistory> runs;
   for (double dt : dts) {
     ring::ResponseOptions r = paper_scene(20e3, integrator, dt, t_end);
@@ -318,7 +318,7 @@ namespace {
 class MultibodyDynamicsPaperScene : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(MultibodyDynamicsPaperScene, ConstraintsHoldAndEnergyBalances) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const ring::TimeHistory th = multibody::respond(spec, n_segments(40), paper_scene(20e3, GetParam()));
   ASSERT_EQ(th.t.size(), 501u);
   double worst_g = 0.0, worst_e = 0.0, max_w = 0.0;
@@ -368,7 +368,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, MultibodyDynamicsPaperScene,
 // includes the dissipated energy; with newmark (no algorithmic dissipation) its error
 // stays below 1e-3 of the largest work, as undamped.
 TEST(MultibodyDynamics, DampedResponseSettlesOnTheStaticEquilibrium) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   ring::ResponseOptions r = paper_scene(20e3, Integrator::newmark, 0.01, 8.0);
   r.rayleigh_mass = 4.0;
   r.hinge_damping = 1e4;
@@ -397,7 +397,7 @@ TEST(MultibodyDynamics, DampedResponseSettlesOnTheStaticEquilibrium) {
 // right; it must end in an IntegrationFailure that carries the partial history and
 // names the time reached.
 TEST(MultibodyDynamics, FailedStepsAreHalvedAndReported) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const ring::ResponseOptions r = paper_scene(20e3, Integrator::newmark, 0.01, 0.5);
   multibody::IntegrationControls ctl;
   ctl.max_newton = 3;
@@ -430,7 +430,7 @@ TEST(MultibodyDynamics, FailedStepsAreHalvedAndReported) {
 }
 
 TEST(MultibodyDynamics, RejectsInputsThatCannotWork) {
-  ring::RingSpec spec = paper_ring();
+  ring::RingSpec spec = pin_roller_ring();
   ring::ResponseOptions r = paper_scene();
   r.dt = 0.0;
   EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);

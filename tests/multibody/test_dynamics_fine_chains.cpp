@@ -50,7 +50,7 @@ double first_peak(const ring::TimeHistory& th) {
 TEST(MultibodyDynamicsFineChains, GeneralizedAlphaDoesNotGainEnergy) {
   for (int n : {640, 1280}) {
     const ring::TimeHistory th =
-        multibody::respond(mbtest::paper_ring(), segments(n), mbtest::forced_scene(Integrator::generalized_alpha, 1.6));
+        multibody::respond(ringtest::pin_roller_ring(), segments(n), mbtest::forced_scene(Integrator::generalized_alpha, 1.6));
     ASSERT_EQ(th.t.size(), 161u);
     double max_w = 0.0, excess = -1e300;
     for (size_t i = 0; i < th.t.size(); ++i) max_w = std::max(max_w, std::abs(th.work[i]));
@@ -69,7 +69,7 @@ TEST(MultibodyDynamicsFineChains, GeneralizedAlphaDoesNotGainEnergy) {
 // 7e-4 m, against the error sum 8.5e-3 m. Generalized-alpha's consistent start gave
 // 3.485 m.
 TEST(MultibodyDynamicsFineChains, FirstPeakAt1280AgreesWithNewmark) {
-  const ring::RingSpec spec = mbtest::paper_ring();
+  const ring::RingSpec spec = ringtest::pin_roller_ring();
   auto peak = [&](Integrator integ, double dt) {
     ring::ResponseOptions r = mbtest::forced_scene(integ, 1.6);
     r.dt = dt;
@@ -99,7 +99,7 @@ namespace {
 TEST(MultibodyDynamicsFineChains, NewtonIterationsPerStep) {
   auto mean_iterations = [](Integrator integ, int n) {
     const ring::TimeHistory th =
-        multibody::respond(mbtest::paper_ring(), segments(n), mbtest::forced_scene(integ, 2.0));
+        multibody::respond(ringtest::pin_roller_ring(), segments(n), mbtest::forced_scene(integ, 2.0));
     double sum = 0.0;
     for (size_t i = 1; i < th.newton_iterations.size(); ++i) sum += th.newton_iterations[i];
     return sum / double(th.t.size() - 1);

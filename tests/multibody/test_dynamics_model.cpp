@@ -11,7 +11,7 @@
 
 namespace {
 
-using mbtest::paper_ring;
+using ringtest::pin_roller_ring;
 
 using multibody::Chain;
 using multibody::Matrix;
@@ -48,7 +48,7 @@ constexpr double kFdTol = 1e-7;
 TEST(MultibodyDynamicsModel, InertiaTangentMatchesFiniteDifferences) {
   ring::MultibodyOptions o;
   o.n = 12;
-  const Chain ch(paper_ring(), o, 0.0);
+  const Chain ch(pin_roller_ring(), o, 0.0);
   const State s = random_state(ch, 7);
   const int n = ch.dofs();
   auto f = [&](const Vector& q, const Vector& v) -> Vector {
@@ -81,7 +81,7 @@ TEST(MultibodyDynamicsModel, InertiaTangentMatchesFiniteDifferences) {
 TEST(MultibodyDynamicsModel, ConstraintAndLoadTangentsMatchFiniteDifferences) {
   ring::MultibodyOptions o;
   o.n = 12;
-  const Chain ch(paper_ring(), o, 0.0);
+  const Chain ch(pin_roller_ring(), o, 0.0);
   const State s = random_state(ch, 11);
   const int n = ch.dofs();
   const multibody::detail::DeadLoad load{ch.hinge_at(0.0), {-2e4, 3e3}};

@@ -21,7 +21,7 @@
 namespace {
 
 using mbtest::sci;
-using mbtest::paper_ring;
+using ringtest::pin_roller_ring;
 
 using multibody::Matrix;
 using multibody::Vector;
@@ -46,7 +46,7 @@ TEST(MultibodySparseDynamics, StructuredTangentEqualsDenseTangent) {
     ring::MultibodyOptions o;
     o.n = 12;
     o.rotary_inertia = rotary;
-    const multibody::Chain ch(paper_ring(), o, 0.0);
+    const multibody::Chain ch(pin_roller_ring(), o, 0.0);
     std::mt19937 gen(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     const int n = ch.n();
@@ -84,7 +84,7 @@ TEST(MultibodySparseDynamics, StructuredTangentEqualsDenseTangent) {
 TEST(MultibodySparseDynamics, SaddleSolveEqualsDenseLU) {
   ring::MultibodyOptions o;
   o.n = 50;
-  const multibody::Chain ch(paper_ring(), o, 0.0);
+  const multibody::Chain ch(pin_roller_ring(), o, 0.0);
   const int n = ch.n(), c = ch.constraint_count();
   std::mt19937 gen(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -202,8 +202,8 @@ class SparseVsDense : public ::testing::TestWithParam<std::tuple<int, Integrator
 TEST_P(SparseVsDense, PaperSceneHistoriesAgree) {
   const auto [n, integrator] = GetParam();
   const ring::ResponseOptions r = paper_scene(integrator);
-  const auto dense = multibody::respond(paper_ring(), opts(n, ring::MultibodyOptions::Method::dense), r);
-  const auto sparse = multibody::respond(paper_ring(), opts(n, ring::MultibodyOptions::Method::sparse), r);
+  const auto dense = multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::dense), r);
+  const auto sparse = multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::sparse), r);
   ASSERT_EQ(dense.t.size(), sparse.t.size());
   const Diff d = compare(sparse, dense);
   RecordProperty("max_rel_displacement_diff", sci(d.u));
@@ -233,8 +233,8 @@ TEST(MultibodySparseDynamics, DampedSceneAgrees) {
     r.rayleigh_mass = 0.5;
     r.rayleigh_stiffness = 1e-3;
     r.hinge_damping = 1e4;
-    const auto dense = multibody::respond(paper_ring(), opts(40, ring::MultibodyOptions::Method::dense), r);
-    const auto sparse = multibody::respond(paper_ring(), opts(40, ring::MultibodyOptions::Method::sparse), r);
+    const auto dense = multibody::respond(pin_roller_ring(), opts(40, ring::MultibodyOptions::Method::dense), r);
+    const auto sparse = multibody::respond(pin_roller_ring(), opts(40, ring::MultibodyOptions::Method::sparse), r);
     const Diff d = compare(sparse, dense);
     EXPECT_LE(d.u, 1e-8);
     EXPECT_LE(d.energy, 1e-8);
@@ -253,13 +253,13 @@ TEST(MultibodySparseDynamics, SelfContactReportedOnBothPaths) {
     r.load.force = {-150e3, 0.0};
     double t_dense = -1, t_sparse = -2;
     try {
-      multibody::respond(paper_ring(), opts(n, ring::MultibodyOptions::Method::dense), r);
+      multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::dense), r);
     } catch (const multibody::IntegrationFailure& f) {
       EXPECT_EQ(f.reason(), multibody::IntegrationFailure::Reason::self_contact);
       t_dense = f.t_reached();
     }
     try {
-      multibody::respond(paper_ring(), opts(n, ring::MultibodyOptions::Method::sparse), r);
+      multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::sparse), r);
     } catch (const multibody::IntegrationFailure& f) {
       EXPECT_EQ(f.reason(), multibody::IntegrationFailure::Reason::self_contact);
       t_sparse = f.t_reached();

@@ -16,7 +16,7 @@
 namespace {
 
 using mbtest::sci;
-using mbtest::paper_ring;
+using ringtest::pin_roller_ring;
 
 using Integrator = ring::ResponseOptions::Integrator;
 using Method = ring::MultibodyOptions::Method;
@@ -43,7 +43,7 @@ ring::MultibodyOptions opts(int n, Method m) {
 multibody::IntegrationFailure::Reason run_or_partial(const ring::MultibodyOptions& o, const ring::ResponseOptions& r,
                                                      ring::TimeHistory& th) {
   try {
-    th = multibody::respond(paper_ring(), o, r);
+    th = multibody::respond(pin_roller_ring(), o, r);
   } catch (const multibody::IntegrationFailure& f) {
     th = f.partial();
     return f.reason();

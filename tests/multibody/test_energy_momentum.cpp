@@ -37,7 +37,7 @@ TEST(MultibodyEnergyMomentum, ConservesTheEnergyBalanceForAnyStep) {
     o.n = c.n;
     ring::ResponseOptions r = mbtest::forced_scene(Integrator::energy_momentum, c.t_end);
     r.dt = c.dt;
-    const auto h = multibody::respond(mbtest::paper_ring(), o, r);
+    const auto h = multibody::respond(ringtest::pin_roller_ring(), o, r);
     const Balance b = balance(h);
     RecordProperty("balance_n" + std::to_string(c.n) + "_dt" + mbtest::sci(c.dt), mbtest::sci(b.worst / b.work));
     RecordProperty("iterations_n" + std::to_string(c.n) + "_dt" + mbtest::sci(c.dt), mbtest::sci(b.iterations));
@@ -52,8 +52,8 @@ TEST(MultibodyEnergyMomentum, ConservesTheEnergyBalanceForAnyStep) {
 // agree within their time errors: 0.2 % (measured 0.00 %: 3.0969 both, the n = 40 peak).
 TEST(MultibodyEnergyMomentum, AgreesWithNewmarkOnThePapersScene) {
   const ring::MultibodyOptions o;
-  const auto em = multibody::respond(mbtest::paper_ring(), o, mbtest::forced_scene(Integrator::energy_momentum, 1.5));
-  const auto nm = multibody::respond(mbtest::paper_ring(), o, mbtest::forced_scene(Integrator::newmark, 1.5));
+  const auto em = multibody::respond(ringtest::pin_roller_ring(), o, mbtest::forced_scene(Integrator::energy_momentum, 1.5));
+  const auto nm = multibody::respond(ringtest::pin_roller_ring(), o, mbtest::forced_scene(Integrator::newmark, 1.5));
   auto peak = [](const ring::TimeHistory& h) {
     double p = 0.0;
     for (std::size_t k = 0; k < h.t.size(); ++k) p = std::max(p, std::hypot(h.ux[0][k], h.uy[0][k]));
@@ -78,7 +78,7 @@ TEST(MultibodyEnergyMomentum, IsSecondOrderInDt) {
     r.record = {0.0};
     r.load.history.kind = ring::LoadHistory::Kind::half_sine;
     r.load.history.period = 1.0;
-    return multibody::respond(mbtest::paper_ring(), o, r).ux[0].back();
+    return multibody::respond(ringtest::pin_roller_ring(), o, r).ux[0].back();
   };
   const double u1 = at(0.005), u2 = at(0.0025), u3 = at(0.00125), u4 = at(0.000625);
   const double order = std::log(std::abs((u1 - u2) / (u3 - u4))) / std::log(4.0);
@@ -89,7 +89,7 @@ TEST(MultibodyEnergyMomentum, IsSecondOrderInDt) {
 TEST(MultibodyEnergyMomentum, RefusesDamping) {
   ring::ResponseOptions r = mbtest::forced_scene(Integrator::energy_momentum, 0.1);
   r.hinge_damping = 10.0;
-  EXPECT_THROW(multibody::respond(mbtest::paper_ring(), ring::MultibodyOptions{}, r), std::invalid_argument);
+  EXPECT_THROW(multibody::respond(ringtest::pin_roller_ring(), ring::MultibodyOptions{}, r), std::invalid_argument);
 }
 
 }  // namespace

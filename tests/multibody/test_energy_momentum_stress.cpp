@@ -21,7 +21,7 @@ TEST(MultibodyEnergyMomentumStress, HundredThousandStepsKeepTheBalance) {
   o.n = 40;
   ring::ResponseOptions r = mbtest::forced_scene(Integrator::energy_momentum, 5000.0);
   r.dt = 0.05;
-  const auto h = multibody::respond(mbtest::paper_ring(), o, r);
+  const auto h = multibody::respond(ringtest::pin_roller_ring(), o, r);
   ASSERT_EQ(h.t.size(), 100001u);
   const mbtest::Balance b = mbtest::balance(h);
   RecordProperty("balance", mbtest::sci(b.worst / b.work));
@@ -42,7 +42,7 @@ TEST(MultibodyEnergyMomentumStress, TenThousandSegmentsAtBothEndsOfTheStepRange)
     o.n = 10000;
     ring::ResponseOptions r = mbtest::forced_scene(Integrator::energy_momentum, c.t_end);
     r.dt = c.dt;
-    const auto h = multibody::respond(mbtest::paper_ring(), o, r);
+    const auto h = multibody::respond(ringtest::pin_roller_ring(), o, r);
     const mbtest::Balance b = mbtest::balance(h);
     EXPECT_LT(b.worst, 1e-9 * b.work) << "dt = " << c.dt;
     EXPECT_LT(b.constraint, 1e-12 * 10.0) << "dt = " << c.dt;

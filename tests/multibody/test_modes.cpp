@@ -21,20 +21,11 @@ namespace {
 
 using Dep = ring::MultibodyOptions::Dependent;
 
-// The paper's ring (Table 1): R = 10 m, solid circle d = 0.12 m, E = 2.1e11 Pa,
-// rho = 7.8e3 kg/m^3 (README "The paper": the printed 9.8e3 is a misprint), pinned at 180 deg.
-/// The Table 1 ring, pinned at 180 degrees.
-ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
-ring::RingSpec free_ring() {
-  ring::RingSpec s = paper_ring();
-  s.supports.pin.reset();
-  return s;
-}
-ring::RingSpec roller_ring() {
-  ring::RingSpec s = paper_ring();
-  s.supports.roller = 0.0;  // diametrically opposite the pin, as in the paper's section 5
-  return s;
-}
+// The paper's ring (Table 1, support/paper.hpp) pinned at 180 deg, free, or pinned with
+// the roller at 0 deg (diametrically opposite, as in the paper's section 5).
+using ringtest::free_ring;
+using ringtest::pin_roller_ring;
+using ringtest::pinned_ring;
 using Method = ring::MultibodyOptions::Method;
 ring::MultibodyOptions opts(int n, bool rot = true, Dep d = Dep::robust, Method m = Method::automatic) {
   ring::MultibodyOptions o;
@@ -51,7 +42,7 @@ oracle::ChainParams params(const ring::RingSpec& s, int n, bool rot) {
 TEST(MultibodyModes, PaperTableOneN40) {
   const auto rows = ring::read_paper_table(RINGVIB_SOURCE_DIR "/compare/data/table1.csv");
   ASSERT_EQ(rows.size(), 23u);
-  const auto r = multibody::compute_modes(paper_ring(), opts(40), 23);
+  const auto r = multibody::compute_modes(pinned_ring(), opts(40), 23);
   EXPECT_EQ(r.rigid_modes, 1);  // rotation about the pin (README "The paper", "Support")
   ASSERT_EQ(r.omega.size(), 23u);
   ASSERT_EQ(r.shapes.size(), 23u);
@@ -74,7 +65,7 @@ TEST(MultibodyModes, PaperTableOneN40) {
 }
 
 TEST(MultibodyModes, PaperAndRobustDependentCoordinatesAgreeAtN40) {
-  for (const auto& spec : {paper_ring(), free_ring(), roller_ring()}) {
+  for (const auto& spec : {pinned_ring(), free_ring(), pin_roller_ring()}) {
     for (bool rot : {true, false}) {
       const int count = 23;
       SCOPED_TRACE(std::string(spec.supports.free() ? "free" : spec.supports.roller ? "roller" : "pin") + (rot ? " rotary" : ""));
@@ -135,7 +126,7 @@ TEST(MultibodyModes, FreeRingConvergesToClosedFormWithOrderTwo) {
 TEST(MultibodyModes, ResidualsAndMassOrthonormality) {
   // robust at n = 40 and 160; paper at n = 40 only: its residuals grow with cond(J_2)
   // (2e-10 .. 8e-10 at n = 160, recorded by the stress test MultibodyStress).
-  for (const auto& spec : {paper_ring(), free_ring(), roller_ring()}) {
+  for (const auto& spec : {pinned_ring(), free_ring(), pin_roller_ring()}) {
     for (Dep d : {Dep::robust, Dep::paper}) {
       for (int n : {40, 160}) {
         if (d == Dep::paper && n > 40) continue;
@@ -169,8 +160,8 @@ TEST(MultibodyModes, ResidualsAndMassOrthonormality) {
 
 TEST(MultibodyModes, PinPlusRollerHasNoRigidModeAndInterlaces) {
   for (bool rot : {true, false}) {
-    const auto pin = multibody::compute_modes(paper_ring(), opts(40, rot), 30);
-    const auto rol = multibody::compute_modes(roller_ring(), opts(40, rot), 29);
+    const auto pin = multibody::compute_modes(pinned_ring(), opts(40, rot), 30);
+    const auto rol = multibody::compute_modes(pin_roller_ring(), opts(40, rot), 29);
     EXPECT_EQ(rol.rigid_modes, 0);
     EXPECT_EQ(pin.rigid_modes, 1);
     // Cauchy interlacing for one added constraint (Rayleigh's theorem): with the pinned
@@ -212,8 +203,8 @@ TEST(MultibodyModes, FreeRingShapesHaveTheirWaveNumber) {
 // frequency, with and without rotary inertia) against formulations that share no code
 // with multibody/ and have no ill-conditioning (ring_oracle.hpp).
 void check_against_oracles(int n, bool rot, Method method = Method::automatic) {
-  const auto pin = multibody::compute_modes(paper_ring(), opts(n, rot, Dep::robust, method), 23);
-  const auto ref = oracle::pinned_chain_omegas(params(paper_ring(), n, rot), 23);
+  const auto pin = multibody::compute_modes(pinned_ring(), opts(n, rot, Dep::robust, method), 23);
+  const auto ref = oracle::pinned_chain_omegas(params(pinned_ring(), n, rot), 23);
   EXPECT_EQ(pin.rigid_modes, 1);
   double worst = 0;
   for (int i = 0; i < 23; ++i) worst = std::max(worst, ringtest::rel(pin.omega[i], ref[i]));
@@ -237,7 +228,7 @@ TEST(MultibodyModes, AccurateAgainstIndependentFormulationN640) {
 }
 
 TEST(MultibodyModes, SparsePathMatchesDenseAtN160) {
-  for (const auto& spec : {paper_ring(), free_ring(), roller_ring()}) {
+  for (const auto& spec : {pinned_ring(), free_ring(), pin_roller_ring()}) {
     for (bool rot : {true, false}) {
       SCOPED_TRACE(std::string(spec.supports.free() ? "free" : spec.supports.roller ? "roller" : "pin") + (rot ? " rotary" : ""));
       const auto d = multibody::compute_modes(spec, opts(160, rot, Dep::robust, Method::dense), 23);
@@ -275,17 +266,17 @@ TEST(MultibodyModes, OraclesConvergeToTheContinuum) {
 }
 
 TEST(MultibodyModes, RejectsWhatCanNeverWork) {
-  EXPECT_THROW(multibody::compute_modes(paper_ring(), opts(40), 0), std::invalid_argument);
-  EXPECT_THROW(multibody::compute_modes(paper_ring(), opts(40), 38), std::invalid_argument);  // 37 elastic
-  EXPECT_NO_THROW(multibody::compute_modes(paper_ring(), opts(40), 37));
-  EXPECT_THROW(multibody::compute_modes(paper_ring(), opts(3), 1), std::invalid_argument);
+  EXPECT_THROW(multibody::compute_modes(pinned_ring(), opts(40), 0), std::invalid_argument);
+  EXPECT_THROW(multibody::compute_modes(pinned_ring(), opts(40), 38), std::invalid_argument);  // 37 elastic
+  EXPECT_NO_THROW(multibody::compute_modes(pinned_ring(), opts(40), 37));
+  EXPECT_THROW(multibody::compute_modes(pinned_ring(), opts(3), 1), std::invalid_argument);
   // the paper's dependent angles exist on the dense path only
-  EXPECT_THROW(multibody::compute_modes(paper_ring(), opts(40, true, Dep::paper, Method::sparse), 5),
+  EXPECT_THROW(multibody::compute_modes(pinned_ring(), opts(40, true, Dep::paper, Method::sparse), 5),
                std::invalid_argument);
   // smallest chain: the pinned square has 4 - 2 - 1 = 1 elastic mode
-  const auto sq = multibody::compute_modes(paper_ring(), opts(4), 1);
+  const auto sq = multibody::compute_modes(pinned_ring(), opts(4), 1);
   EXPECT_EQ(sq.rigid_modes, 1);
-  EXPECT_TRUE(ringtest::IsClose(sq.omega[0], oracle::pinned_chain_omegas(params(paper_ring(), 4, true), 1)[0], 1e-12));
+  EXPECT_TRUE(ringtest::IsClose(sq.omega[0], oracle::pinned_chain_omegas(params(pinned_ring(), 4, true), 1)[0], 1e-12));
 }
 
 }  // namespace

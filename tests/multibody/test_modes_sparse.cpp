@@ -19,18 +19,10 @@ namespace {
 using Dep = ring::MultibodyOptions::Dependent;
 using Method = ring::MultibodyOptions::Method;
 
-/// The Table 1 ring, pinned at 180 degrees.
-ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
-ring::RingSpec free_ring() {
-  ring::RingSpec s = paper_ring();
-  s.supports.pin.reset();
-  return s;
-}
-ring::RingSpec roller_ring() {
-  ring::RingSpec s = paper_ring();
-  s.supports.roller = 0.0;
-  return s;
-}
+// The Table 1 ring pinned at 180 deg, free, or pinned with the roller at 0 deg.
+using ringtest::free_ring;
+using ringtest::pin_roller_ring;
+using ringtest::pinned_ring;
 ring::MultibodyOptions opts(int n, bool rot, Method m) {
   ring::MultibodyOptions o;
   o.n = n;
@@ -52,7 +44,7 @@ void check_oracles(int n, multibody::SparseEigensolver eigensolver = multibody::
               "residual", "rigid");
   for (bool pinned : {true, false}) {
     for (bool rot : {true, false}) {
-      const ring::RingSpec s = pinned ? paper_ring() : free_ring();
+      const ring::RingSpec s = pinned ? pinned_ring() : free_ring();
       const int count = std::min(23, n - 3);
       const auto sol = multibody::solve_modes(s, opts(n, rot, Method::sparse), count, eigensolver);
       const oracle::ChainParams p{n, s.radius, s.EI(), s.rhoA(), rot};
@@ -83,7 +75,7 @@ TEST(MultibodySparse, AgainstOraclesN100000) { check_oracles(100000); }
 // Dense and sparse are independent algorithms (dense Cholesky of K0 + s M0 vs Riccati
 // sweeps + bordering + own Lanczos); issue 8 asks 1e-10 relative where both run.
 void check_dense_sparse(int n) {
-  for (const auto& spec : {paper_ring(), free_ring(), roller_ring()}) {
+  for (const auto& spec : {pinned_ring(), free_ring(), pin_roller_ring()}) {
     for (bool rot : {true, false}) {
       SCOPED_TRACE(name(spec) + (rot ? " rotary" : "") + " n = " + std::to_string(n));
       const int count = std::min(23, n - 4);
@@ -123,7 +115,7 @@ TEST(MultibodySparse, LibraryLanczosAgainstOraclesN100000) {
 TEST(MultibodySparse, LibraryLanczosAgreesWithHandWritten) {
   using multibody::SparseEigensolver;
   for (int n : {10, 160, 2000, 20000}) {
-    for (const auto& spec : {paper_ring(), free_ring(), roller_ring()}) {
+    for (const auto& spec : {pinned_ring(), free_ring(), pin_roller_ring()}) {
       for (bool rot : {true, false}) {
         SCOPED_TRACE(name(spec) + (rot ? " rotary" : "") + " n = " + std::to_string(n));
         const int count = std::min(23, n - 4);

@@ -18,8 +18,8 @@ namespace {
 
 using Dep = ring::MultibodyOptions::Dependent;
 
-/// The Table 1 ring, pinned at 180 degrees.
-ring::RingSpec paper_ring() { return ringtest::paper_ring(180.0); }
+// The Table 1 ring, pinned at 180 degrees.
+using ringtest::pinned_ring;
 
 const std::vector<int> kNs{4, 5, 6, 8, 10, 16, 32, 64, 128, 256, 512, 1024, 2000};
 
@@ -33,7 +33,7 @@ struct Outcome {
 };
 
 Outcome run(int n, bool rot, Dep d) {
-  const ring::RingSpec s = paper_ring();
+  const ring::RingSpec s = pinned_ring();
   const int count = std::min(23, n - 3);
   ring::MultibodyOptions o;
   o.n = n;
@@ -105,7 +105,7 @@ TEST(MultibodyStress, SparsePathUpToN20000) {
               "residual", "rigid", "seconds");
   for (int n : {4000, 10000, 20000}) {
     for (bool pinned : {true, false}) {
-      ring::RingSpec s = paper_ring();
+      ring::RingSpec s = pinned_ring();
       if (!pinned) s.supports.pin.reset();
       ring::MultibodyOptions o;
       o.n = n;

@@ -25,7 +25,7 @@
 namespace {
 
 using mbtest::sci;
-using mbtest::paper_ring;
+using ringtest::pin_roller_ring;
 
 struct Diametral {
   double along, across;
@@ -33,7 +33,7 @@ struct Diametral {
 
 /// The diametral load p = P R^2 / EI at C toward the pin, recorded at 0, 90, 180, 270 deg.
 ring::StaticOptions diametral_load(double p, int steps = 20) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   ring::StaticOptions st;
   st.load.angle = 0.0;
   st.load.force = {-p * spec.EI() / (spec.radius * spec.radius), 0.0};
@@ -45,7 +45,7 @@ ring::StaticOptions diametral_load(double p, int steps = 20) {
 /// The ring on its pin and roller pressed at its crown (90 deg) toward the centre with
 /// p = P R^2 / EI, recorded at the crown.
 ring::StaticOptions pressed_crown(double p, int steps) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   ring::StaticOptions st;
   st.load.angle = 90.0;
   st.record = {90.0};
@@ -64,7 +64,7 @@ ring::MultibodyOptions chain_options(int n, ring::MultibodyOptions::Method metho
 /// Chain result for p = P R^2 / EI with n segments, in units of R.
 Diametral chain_diametral(double p, int n, int steps = 20,
                           ring::MultibodyOptions::Method method = ring::MultibodyOptions::Method::automatic) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const ring::StaticResult r = multibody::solve_static(spec, chain_options(n, method), diametral_load(p, steps));
   return {-r.displacements[0].ux / spec.radius,
           (r.displacements[1].uy - r.displacements[3].uy) / spec.radius};
@@ -122,7 +122,7 @@ TEST(MultibodyStaticsElastica, ReferenceHasTheLinearLimit) {
 // discretization error at n = 320 is ~1e-5 relative (see the convergence test) and the
 // nonlinear correction ~1e-4 relative at this p; tolerance 5e-4.
 TEST(MultibodyStatics, SmallLoadGivesTheLinearRingFormulas) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const double P = 20.0;
   const auto lin = ring::closed_form::diametral_load(spec, P);
   const double p = P * spec.radius * spec.radius / spec.EI();
@@ -134,7 +134,7 @@ TEST(MultibodyStatics, SmallLoadGivesTheLinearRingFormulas) {
 // The loaded ring is symmetric about AC: the points at 90 and 270 deg mirror each other
 // (oracle: the geometry), and the pin does not move.
 TEST(MultibodyStatics, DeformedShapeIsSymmetricAboutTheLoadLine) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   ring::MultibodyOptions o;
   o.n = 40;
   ring::StaticOptions st;
@@ -154,7 +154,7 @@ TEST(MultibodyStatics, DeformedShapeIsSymmetricAboutTheLoadLine) {
 }
 
 TEST(MultibodyStatics, RejectsInputsThatCannotWork) {
-  ring::RingSpec spec = paper_ring();
+  ring::RingSpec spec = pin_roller_ring();
   ring::MultibodyOptions o;
   ring::StaticOptions st;
   st.load.force = {-1e3, 0.0};
@@ -170,7 +170,7 @@ TEST(MultibodyStatics, RejectsInputsThatCannotWork) {
 
 // A load far beyond self-contact: the static path must stop with a clear report.
 TEST(MultibodyStatics, SelfContactIsReportedNotSolvedThrough) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   ring::MultibodyOptions o;
   ring::StaticOptions st;
   st.load.angle = 0.0;
@@ -197,7 +197,7 @@ namespace {
 // load factor 0.87 < 0.94, so the load did pass a maximum) onto the bottom of the ring:
 // a self-contact, which must be reported as such, naming the limit point.
 TEST(MultibodyStatics, ContinuationPassesTheLimitPointOfAPressedArch) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const ring::MultibodyOptions o;
   EXPECT_NO_THROW(multibody::solve_static(spec, o, pressed_crown(7.0, 28)));
   try {
@@ -222,7 +222,7 @@ using Method = ring::MultibodyOptions::Method;
 // positions, 1e-9 rad on angles -> ~1e-8 m on a 10 m ring; bound 1e-9 relative to the
 // largest displacement; measured <= 1e-12 m on displacements of ~10 m).
 TEST(MultibodyStaticsSparse, BothPathsGiveTheSameEquilibrium) {
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   for (int n : {40, 160})
     for (double p : {1.0, 5.0}) {
       const auto st = diametral_load(p);
@@ -252,7 +252,7 @@ TEST(MultibodyStaticsSparse, BothPathsGiveTheSameEquilibrium) {
 TEST(MultibodyStaticsSparse, TenThousandSegmentsConvergeToTheElasticaAtSecondOrder) {
   const double p = 5.0;
   const elastica::DiametralResult ref = elastica::diametral(p);
-  const ring::RingSpec spec = paper_ring();
+  const ring::RingSpec spec = pin_roller_ring();
   const std::vector<int> ns{2560, 10000};
   std::vector<double> e_along, e_across;
   for (int n : ns) {
@@ -282,7 +282,7 @@ double limit_in(const std::string& message) {
 
 std::string static_failure(const ring::MultibodyOptions& o, const ring::StaticOptions& st) {
   try {
-    multibody::solve_static(paper_ring(), o, st);
+    multibody::solve_static(pin_roller_ring(), o, st);
   } catch (const ring::NumericalError& e) {
     return e.what();
   }

@@ -9,12 +9,12 @@
 
 namespace {
 
-using ringtest::paper_ring;
+using ringtest::free_ring;
 
 // Oracle: the formula evaluated by an independent implementation (Python 3.11, math
 // module, written from Soedel eq. 6.6.14 without this code), to 1e-15.
 TEST(ClosedForm, FreeRingInextensionalPaperRing) {
-  const auto s = paper_ring();
+  const auto s = free_ring();
   EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_inextensional(s, 2), 4.176859328030314, 1e-13));
   EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_inextensional(s, 3), 11.813942219650084, 1e-13));
   EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_inextensional(s, 13), 260.74246929512196, 1e-13));
@@ -24,7 +24,7 @@ TEST(ClosedForm, FreeRingInextensionalPaperRing) {
 // Oracle: the 2x2 characteristic polynomial solved in Python (same source); the lower root
 // there loses ~5 digits to cancellation, hence 1e-9.
 TEST(ClosedForm, FreeRingExtensibleBranches) {
-  const auto s = paper_ring();
+  const auto s = free_ring();
   const auto w2 = ring::closed_form::free_ring_extensible(s, 2);
   EXPECT_TRUE(ringtest::IsClose(w2[0], 4.176811210819966, 1e-9));
   EXPECT_TRUE(ringtest::IsClose(w2[1], 1160.2520682767242, 1e-12));
@@ -36,7 +36,7 @@ TEST(ClosedForm, FreeRingExtensibleBranches) {
 // Oracle: the breathing mode of a ring is c/R with c = sqrt(E/rho) (Love, sec. 294);
 // k = 1 has a rigid translation.
 TEST(ClosedForm, BreathingAndTranslation) {
-  const auto s = paper_ring();
+  const auto s = free_ring();
   EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_extensible(s, 0)[1], std::sqrt(s.E / s.rho) / s.radius, 1e-14));
   EXPECT_EQ(ring::closed_form::free_ring_extensible(s, 1)[0], 0.0);
 }
@@ -44,7 +44,7 @@ TEST(ClosedForm, BreathingAndTranslation) {
 // Oracle: making the ring axially rigid (A -> large at fixed I and rho A) must recover
 // the inextensional formula; the flexural branch is lower by O(I/(A R^2)).
 TEST(ClosedForm, ExtensibleTendsToInextensional) {
-  ring::RingSpec s = paper_ring();
+  ring::RingSpec s = free_ring();
   s.section.shape = ring::Section::Shape::general;
   s.section.area_ = 1e6;
   s.section.inertia_ = 1.0e-5;
@@ -60,7 +60,7 @@ TEST(ClosedForm, ExtensibleTendsToInextensional) {
 // Oracle: Roark's Formulas for Stress and Strain, 7th ed., Table 9.2 case 1, prints the
 // coefficients 0.1488 and 0.1366 of P R^3 / EI (4 digits: 5e-4 relative).
 TEST(ClosedForm, DiametralLoadMatchesRoark) {
-  const auto s = paper_ring();
+  const auto s = free_ring();
   const double c = 1000.0 * std::pow(s.radius, 3) / s.EI();
   const auto d = ring::closed_form::diametral_load(s, 1000.0);
   EXPECT_TRUE(ringtest::IsClose(d.along / c, 0.1488, 5e-4));

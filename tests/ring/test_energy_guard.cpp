@@ -18,7 +18,7 @@ using ring::EnergyGuard;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 ring::RingSpec paper() {
-  ring::RingSpec s = ringtest::paper_ring(180.0);
+  ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   return s;
 }

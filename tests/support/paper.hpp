@@ -1,11 +1,10 @@
-// The paper's ring, one definition for every suite and benchmark program (Yin & Wang,
-// Table 1; README "The paper"):
-// R = 10 m, solid circle d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3 (the printed
-// 9.8e3 is a misprint).
+// The paper's ring, one definition for every suite and benchmark program, each helper
+// named by the supports it sets (Yin & Wang, Table 1; README "The paper"): R = 10 m,
+// solid circle d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3 (the printed 9.8e3 is a
+// misprint).
 #pragma once
 
 #include <fstream>
-#include <optional>
 #include <sstream>
 #include <string>
 
@@ -13,15 +12,30 @@
 
 namespace ringtest {
 
-/// The paper's ring, free (no pin) unless `pin` is given (the paper pins it at 180 deg).
-inline ring::RingSpec paper_ring(std::optional<double> pin = std::nullopt) {
+/// The paper's ring with no support: free, three rigid modes.
+inline ring::RingSpec free_ring() {
   ring::RingSpec s;
   s.radius = 10.0;
   s.E = 2.1e11;
   s.rho = 7.8e3;
   s.section.shape = ring::Section::Shape::circle;
   s.section.diameter = 0.12;
+  return s;
+}
+
+/// The paper's ring pinned at `pin` degrees (the paper pins it at A, 180 deg): one rigid
+/// mode, the rotation about the pin.
+inline ring::RingSpec pinned_ring(double pin = 180.0) {
+  ring::RingSpec s = free_ring();
   s.supports.pin = pin;
+  return s;
+}
+
+/// The paper's ring as its section 5 holds it: pinned at A (180 deg), a roller at C
+/// (0 deg) moving along AC. No rigid mode.
+inline ring::RingSpec pin_roller_ring() {
+  ring::RingSpec s = pinned_ring(180.0);
+  s.supports.roller = 0.0;
   return s;
 }
 

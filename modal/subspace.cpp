@@ -1,6 +1,8 @@
-#include "modal/lanczos.hpp"
+#include "modal/subspace.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace modal {
 
