@@ -68,8 +68,9 @@ SolverEntry multibody_entry() {
   // (LAPACK's n x n pencil and workspace); O(n) modes n (360 + 30 count) (the band
   // factors and the Lanczos basis of up to 4 count + 60 vectors); nonlinear: dense
   // response 42-47 n^2, dense statics 21 n^2, O(n) response 1.54-1.64 KB (newmark, the
-  // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 0.83-0.84 KB per
-  // segment. Used: those with 3-20 % to spare.
+  // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 1.00-1.02 KB per
+  // segment (n = 4 10^4, 10^5: the continuation driver's states, tangent and bordered
+  // solve; 0.83-0.84 KB with plain load stepping). Used: those with 3-20 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
     auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, a) == multibody::Backend::banded; };
@@ -79,7 +80,7 @@ SolverEntry multibody_entry() {
                  : 52.0 * n * n;
     double bytes = 0.0;
     if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * n * n);
-    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 900.0 * n : 25.0 * n * n);
+    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : 25.0 * n * n);
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) { multibody::check_modes(s.ring, s.multibody); };
