@@ -18,21 +18,26 @@ namespace {
 using ring::FemOptions;
 using ringtest::IsClose;
 
+/// The free ring's 24 lowest elastic modes are its flexural pairs k = 2..13, each within
+/// 1e-8 of the extensible closed form, and three rigid modes.
+void expect_free_ring_k2_to_13(const ring::RingSpec& spec, const ring::ModalResult& r) {
+  EXPECT_EQ(r.rigid_modes, 3);
+  ASSERT_EQ(r.omega.size(), 24u);
+  for (int k = 2; k <= 13; ++k) {
+    const double exact = ring::closed_form::free_ring_extensible(spec, k)[0];
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-8)) << "k = " << k;
+    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2) + 1], exact, 1e-8)) << "k = " << k << " (second of the pair)";
+  }
+}
+
 // Free ring: the lowest 24 elastic modes are the flexural pairs k = 2..13 (the
 // extensional branches start at the breathing mode, 519 rad/s, above k = 13's 260).
 TEST(FemFreeRing, MatchesExtensibleClosedFormK2To13) {
   const auto spec = ringtest::free_ring();
   FemOptions o;
   o.reference = true;
-  const auto r = fem::compute_modes(spec, o, 24);
-  EXPECT_EQ(r.rigid_modes, 3);
-  ASSERT_EQ(r.omega.size(), 24u);
-  for (int k = 2; k <= 13; ++k) {
-    const double exact = ring::closed_form::free_ring_extensible(spec, k)[0];
-    // 1e-8: the acceptance bound; the reference stops at 1e-9 relative change.
-    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-8)) << "k = " << k;
-    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2) + 1], exact, 1e-8)) << "k = " << k << " (second of the pair)";
-  }
+  // 1e-8: the acceptance bound; the reference stops at 1e-9 relative change.
+  expect_free_ring_k2_to_13(spec, fem::compute_modes(spec, o, 24));
 }
 
 // The degree cap (fem_reference/checks.hpp, kMaxDegree) is what the reference refines to
@@ -43,14 +48,7 @@ TEST(FemFreeRing, TheDegreeCapIsUsableAndOneMoreIsRefused) {
   const auto spec = ringtest::free_ring();
   FemOptions o;
   o.degree = fem::kMaxDegree;
-  const auto r = fem::compute_modes(spec, o, 24);
-  EXPECT_EQ(r.rigid_modes, 3);
-  ASSERT_EQ(r.omega.size(), 24u);
-  for (int k = 2; k <= 13; ++k) {
-    const double exact = ring::closed_form::free_ring_extensible(spec, k)[0];
-    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2)], exact, 1e-8)) << "k = " << k;
-    EXPECT_TRUE(IsClose(r.omega[2 * (k - 2) + 1], exact, 1e-8)) << "k = " << k << " (second of the pair)";
-  }
+  expect_free_ring_k2_to_13(spec, fem::compute_modes(spec, o, 24));
   o.degree = fem::kMaxDegree + 1;
   EXPECT_THROW(fem::compute_modes(spec, o, 24), std::invalid_argument);
 }
