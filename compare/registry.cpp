@@ -75,7 +75,7 @@ SolverEntry multibody_entry() {
     const double n = s.multibody.n;
     auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, a) == multibody::Backend::banded; };
     if (count > 0)
-      return multibody::backend(s.multibody, s.ring.supports, count) == multibody::Backend::banded
+      return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
                  ? n * (420.0 + 33.0 * count)
                  : 52.0 * n * n;
     double bytes = 0.0;
@@ -108,8 +108,7 @@ SolverEntry lumped_entry() {
   e.set_size = [](ring::Scene& s, int n) { s.lumped.n = n; };
   e.elastic_modes = [](const ring::Scene& s) -> long long {
     const long long n = s.lumped.n;
-    const auto& sup = s.ring.supports;
-    const int held = (sup.pin ? 2 : 0) + (sup.roller ? 1 : 0) + sup.rigid_modes();
+    const int held = s.ring.supports.constraint_rows() + s.ring.rigid_modes();
     switch (s.lumped.variant) {
       case ring::LumpedOptions::Variant::chain: return n - 3;
       case ring::LumpedOptions::Variant::frame: return 2 * n - held;
@@ -139,6 +138,7 @@ SolverEntry lumped_entry() {
     }
     return 0.0;
   };
+  e.check_modes = [](const ring::Scene& s) { lumped::check_modes(s.ring, s.lumped); };
   e.check_static = [](const ring::Scene& s) { lumped::check_static(s.ring, s.lumped, *s.statics); };
   e.check_response = [](const ring::Scene& s) { lumped::check_response(s.ring, s.lumped, *s.response); };
   e.modes = [](const ring::Scene& s, int count) {
@@ -164,8 +164,7 @@ SolverEntry fem_entry() {
   e.set_size = [](ring::Scene& s, int n) { s.fem.elements = n; };
   // C0 elements of degree p: p nodes per cell and two displacement components.
   e.elastic_modes = [](const ring::Scene& s) -> long long {
-    const auto& sup = s.ring.supports;
-    const int held = (sup.pin ? 2 : 0) + (sup.roller ? 1 : 0) + sup.rigid_modes();
+    const int held = s.ring.supports.constraint_rows() + s.ring.rigid_modes();
     return 2LL * s.fem.elements * s.fem.degree - held;
   };
   e.inextensible = [](const ring::Scene& s) { return !s.fem.extensible; };

@@ -19,6 +19,7 @@ void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, cons
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
   need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
+  ring::refuse_terms_beyond_paper(spec, "fem " + section);
   const double pin = *spec.supports.pin;
   auto on_vertex = [&](double a, const std::string& key) {
     need(ring::on_node(a, pin, o.elements), section + "." + key + " (=" + std::to_string(a) +
@@ -42,6 +43,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
   need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
   need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
+  ring::refuse_terms_beyond_paper(spec, "fem modes");
   if (spec.supports.roller) {
     need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
              ring::wrap_degrees(*spec.supports.pin - *spec.supports.roller) > 1e-9,

@@ -10,7 +10,7 @@ namespace {
 /// `refining`: a step of the reference refinement (not the user's own discretization).
 Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int count, bool keep_full,
                   bool refine = true, bool refining = false) {
-  const int rigid = spec.supports.rigid_modes();
+  const int rigid = spec.rigid_modes();
   auto run = [&](double EA, std::vector<double>& lambda, double& max_res, ring::ModalResult& r,
                  std::vector<Vector<double>>* full) {
     setup.EA = EA;
@@ -105,7 +105,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
   }
   r.max_residual = max_res;
   r.residual_norm = kDualResidualNorm;  // not the 2-norm: modes.hpp
-  r.rigid_modes = spec.supports.rigid_modes();
+  r.rigid_modes = spec.rigid_modes();
   return out;
 }
 

@@ -117,7 +117,7 @@ EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDi
   // sqrt(r^T z) / denominator (infinite if r^T z < 0: the solve is garbage); the worst
   // of the wanted elastic pairs.
   raw.residual.assign(m, 0.0);
-  const unsigned int rigid = static_cast<unsigned int>(spec_.supports.rigid_modes());
+  const unsigned int rigid = static_cast<unsigned int>(spec_.rigid_modes());
   std::vector<Vector<double>> Z(m, Vector<double>(N));
   auto residuals = [&]() {
     double worst = 0.0;

@@ -68,7 +68,7 @@ constexpr double kRefineBelowChange = 1e-5;
 /// kRefinedResidual or stops halving, at most this many.
 constexpr unsigned int kMaxRefinementRounds = 8;
 constexpr double kRefinedResidual = 1e-11;
-/// Rigid modes are the supports' count of lowest pairs (spec.supports.rigid_modes()), not
+/// Rigid modes are the supports' count of lowest pairs (spec.rigid_modes()), not
 /// a threshold on lambda: on the exact circle the polar fields only approximate the rigid
 /// translations, whose lambda is the discretization's error, up to 0.1 EI/(rho A R^4) on
 /// 4 cells of degree 2, 1e-3 on 40 of degree 2, 4e-7 on 40 of degree 3 (measured, free

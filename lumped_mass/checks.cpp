@@ -18,9 +18,14 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
        "radius, E, rho, area and inertia must be > 0");
   need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
+  ring::refuse_terms_beyond_paper(spec, "lumped " + what);
 }
 
 }  // namespace
+
+void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions&) {
+  ring::refuse_terms_beyond_paper(spec, "lumped modes");
+}
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
   check_chain(spec, options, "statics");

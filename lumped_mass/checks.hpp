@@ -9,6 +9,8 @@
 
 namespace lumped {
 
+/// Linear modes: the paper's supports only, for now (RingSpec::terms_beyond_paper).
+void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
 /// material, a pin and a roller, static.steps >= 1.
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);

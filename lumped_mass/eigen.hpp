@@ -38,7 +38,7 @@
 // lambda < modal::kRigidThreshold * EI/(rho A R^4) counts as rigid.
 // The lowest elastic omega^2 of any supported or free ring is >= ~2 EI/(rho A R^4)
 // (free ring k = 2: 7.2; pinned ring: 2.5 in these units), while a rigid mode's
-// lambda is roundoff; the count must equal Supports::rigid_modes(), or NumericalError.
+// lambda is roundoff; the count must equal RingSpec::rigid_modes(), or NumericalError.
 #pragma once
 
 #include <Eigen/Dense>

@@ -232,7 +232,7 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   m.anchor_deg = spec.supports.pin.value_or(0.0);
   m.side = 2.0 * M_PI * spec.radius / m.n;
   m.circumradius = m.side / (2.0 * std::sin(M_PI / m.n));
-  m.expected_rigid = spec.supports.rigid_modes();
+  m.expected_rigid = spec.rigid_modes();
   m.lambda_scale = spec.EI() / (spec.rhoA() * std::pow(spec.radius, 4));
   const std::vector<Vec2> p = polygon(m.n, m.anchor_deg, m.circumradius);
   if (options.variant == ring::LumpedOptions::Variant::chain)

@@ -1,4 +1,5 @@
 #include "lumped_mass/modes.hpp"
+#include "lumped_mass/checks.hpp"
 
 #include <chrono>
 
@@ -13,6 +14,7 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
 
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count,
                                 Method method) {
+  check_modes(spec, options);
   const auto t0 = std::chrono::steady_clock::now();
   const Model model = assemble(spec, options);
   const Eigenpairs pairs = solve(model, count, method);

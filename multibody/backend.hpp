@@ -41,13 +41,15 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
   return options.n >= sparse_crossover(analysis) ? Backend::banded : Backend::dense;
 }
 
-/// The modes' backend for `count` modes with these supports: "auto" also stays dense when
-/// the pairs computed, min(r, count + rigid modes + 2), exceed a third of the
-/// r = n [+ 2 free] - c unknowns. O(1).
-inline Backend backend(const ring::MultibodyOptions& options, const ring::Supports& supports, int count) {
+/// The modes' backend for `count` modes of `spec`: "auto" also stays dense when the pairs
+/// computed, min(r, count + rigid modes + 2), exceed a third of the r = n [+ 2 free] - c
+/// unknowns, and when the spec has terms beyond the paper's (supports.pins, clamp,
+/// springs, masses, foundation), which only the dense path assembles. O(1).
+inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, int count) {
+  const ring::Supports& supports = spec.supports;
   const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2);
   if (options.method == ring::MultibodyOptions::Method::automatic &&
-      3 * std::min(r, count + supports.rigid_modes() + 2) > r)
+      (3 * std::min(r, count + spec.rigid_modes() + 2) > r || !spec.paper_terms_only()))
     return Backend::dense;
   return backend(options, Analysis::modes);
 }

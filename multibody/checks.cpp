@@ -8,8 +8,17 @@
 
 namespace multibody {
 
-void check_modes(const ring::RingSpec&, const ring::MultibodyOptions& options) {
+void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   const bool sparse = backend(options, Analysis::modes) == Backend::banded;
+  // The paper's dependent angles are chosen for its pin and roller; further constraint rows
+  // (pins, a clamp) need the robust null-space basis, and the O(n) path assembles none of
+  // the terms beyond the paper's ring (backend.hpp keeps "auto" dense for them).
+  if (options.dependent == ring::MultibodyOptions::Dependent::paper && !spec.supports.paper_only())
+    throw std::invalid_argument(
+        "multibody: dependent = \"paper\" takes the paper's pin and roller only; use dependent = \"robust\" with "
+        "supports.pins, supports.clamp or supports.springs");
+  if (options.method == ring::MultibodyOptions::Method::sparse && !spec.paper_terms_only())
+    ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) modes path)");
   if (sparse && options.dependent == ring::MultibodyOptions::Dependent::paper)
     throw std::invalid_argument(
         "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "
@@ -22,6 +31,7 @@ void check_modes(const ring::RingSpec&, const ring::MultibodyOptions& options) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::StaticOptions& statics) {
+  ring::refuse_terms_beyond_paper(spec, "multibody statics");
   if (!spec.supports.pin) throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
   // Without a roller the rigid rotation about the pin is free and K is singular in it:
@@ -34,6 +44,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions&, con
 }
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::ResponseOptions& response) {
+  ring::refuse_terms_beyond_paper(spec, "multibody response");
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
     throw std::invalid_argument("multibody::respond: dt must be > 0");

@@ -47,11 +47,17 @@ double j2_condition(const Matrix& J, int n) {
   return sv[0] / sv[1];
 }
 
-LinearModel linearize(const Chain& chain, Dependent dependent) {
+LinearModel linearize(const Chain& chain, Dependent dependent, const detail::LinearTerms* terms) {
   const Vector q0 = chain.q0();
-  const Matrix M = chain.mass_matrix(q0);
-  const Matrix K = chain.stiffness_matrix();
-  const Matrix J = chain.constraint_jacobian(q0);
+  Matrix M = chain.mass_matrix(q0);
+  Matrix K = chain.stiffness_matrix();
+  Matrix J = chain.constraint_jacobian(q0);
+  if (terms) {
+    K += terms->K;
+    M += terms->M;
+    J.conservativeResize(J.rows() + terms->J.rows(), Eigen::NoChange);
+    J.bottomRows(terms->J.rows()) = terms->J;
+  }
   const int N = chain.dofs(), c = static_cast<int>(J.rows()), r = N - c;
   LinearModel lm;
   lm.j2_condition = j2_condition(J, chain.n());

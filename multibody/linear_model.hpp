@@ -23,6 +23,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "multibody/attachments.hpp"
 #include "multibody/chain.hpp"
 #include "ring/spec.hpp"
 
@@ -48,9 +49,12 @@ struct LinearModel {
 };
 
 /// Assembles K0 and M0 (and the implicit D) for `chain` with the given dependent-coordinate
-/// choice. Cost O(n^2 c) time, O(n^2) memory (c = constraints, 2 or 3).
-/// Throws ring::NumericalError if the paper's block J_2 is singular.
-LinearModel linearize(const Chain& chain, ring::MultibodyOptions::Dependent dependent);
+/// choice, with `terms` (attachments.hpp: foundation, springs, masses, further pins, a
+/// clamp) added to K, M(q0) and the constraint rows when given (robust only). Cost
+/// O(n^2 c) time, O(n^2) memory (c = constraints). Throws ring::NumericalError if the
+/// paper's block J_2 is singular.
+LinearModel linearize(const Chain& chain, ring::MultibodyOptions::Dependent dependent,
+                      const detail::LinearTerms* terms = nullptr);
 
 /// 2-norm condition number of the paper's block J_2 (the last two angle columns of the
 /// closure rows of J, c x dofs). O(1).

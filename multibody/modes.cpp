@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <stdexcept>
 #include <string>
@@ -129,9 +130,10 @@ class ModesPath {
 /// The dense path: K0, M0 and D formed (O(n^2) memory, O(n^3) time).
 class DensePath final : public ModesPath {
  public:
-  DensePath(const Chain& chain, Dependent dependent, double s) : chain_(chain), dependent_(dependent), s_(s) {}
+  DensePath(const Chain& chain, Dependent dependent, double s, const detail::LinearTerms* terms)
+      : chain_(chain), dependent_(dependent), s_(s), terms_(terms) {}
   void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
-    model = linearize(chain_, dependent_);
+    model = linearize(chain_, dependent_, terms_);
     dense_pairs(model, s_, nev, omega2, vecs);
   }
   void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
@@ -156,6 +158,7 @@ class DensePath final : public ModesPath {
   const Chain& chain_;
   Dependent dependent_;
   double s_;
+  const detail::LinearTerms* terms_;
 };
 
 /// The O(n) path: the shifted constrained solve as the operator, K and M as products,
@@ -224,20 +227,22 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   const auto start = std::chrono::steady_clock::now();
   check_modes(spec, options);
   const Chain chain(spec, options);
-  const int N = chain.dofs(), r = N - chain.constraint_count();
-  const int expected_rigid = spec.supports.rigid_modes();
+  const bool sparse = backend(options, spec, count) == Backend::banded;
+  std::optional<detail::LinearTerms> terms;
+  if (!spec.paper_terms_only()) terms = detail::linear_terms(chain, spec);
+  const int N = chain.dofs(), r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
+  const int expected_rigid = spec.rigid_modes();
   if (count < 1 || count > r - expected_rigid)
     throw std::invalid_argument("multibody: count = " + std::to_string(count) +
                                 " must satisfy 1 <= count <= " + std::to_string(r - expected_rigid) +
                                 " (elastic modes of the n = " + std::to_string(chain.n()) + " chain)");
-  const bool sparse = backend(options, spec.supports, count) == Backend::banded;
   const double s = modal::bending_scale(spec);
   const int nev = std::min(r, count + expected_rigid + 2);
   std::unique_ptr<ModesPath> path;
   if (sparse)
     path = std::make_unique<SparsePath>(chain, s, eigensolver);
   else
-    path = std::make_unique<DensePath>(chain, options.dependent, s);
+    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr);
 
   ModalSolution sol;
   Vector omega2;  // computed eigenvalues, ascending

@@ -27,6 +27,18 @@ std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k) {
   return {std::sqrt(lower / spec.rhoA()), std::sqrt(upper / spec.rhoA())};
 }
 
+double ring_on_foundation_inextensional(const RingSpec& spec, int k) {
+  const double k2 = static_cast<double>(k) * k;
+  const double bending = spec.EI() * k2 * (k2 - 1.0) * (k2 - 1.0) / std::pow(spec.radius, 4);
+  return std::sqrt((bending + spec.foundation.radial * k2 + spec.foundation.tangential) / (spec.rhoA() * (k2 + 1.0)));
+}
+
+std::array<double, 2> point_mass_shift(const RingSpec& spec, double m0, int k) {
+  const double k2 = static_cast<double>(k) * k;
+  const double base = -m0 / (M_PI * spec.radius * spec.rhoA() * (k2 + 1.0));
+  return {base, base * k2};
+}
+
 DiametralDeflection diametral_load(const RingSpec& spec, double P) {
   const double c = P * std::pow(spec.radius, 3) / spec.EI();
   return {(M_PI / 4.0 - 2.0 / M_PI) * c, (2.0 / M_PI - 0.5) * c};

@@ -25,6 +25,25 @@ double free_ring_inextensional(const RingSpec& spec, int k);
 /// in rad/s. k = 0: {0, breathing}; k = 1: {0 (rigid translation), upper}.
 std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k);
 
+/// The free, inextensible thin ring on a Winkler foundation (spec.foundation: radial k_r,
+/// tangential k_t, N/m^2), Euler-Bernoulli, no rotary inertia, k waves (k >= 0):
+/// \f$ \omega_k^2 = \frac{EI\,k^2(k^2-1)^2/R^4 + k_r k^2 + k_t}{\rho A\,(k^2+1)} \f$.
+/// Derivation: the inextensional Fourier mode v = V cos k theta, w = k V sin k theta
+/// (inextensible: strain (v' + w)/R = 0) is exact for a uniform ring on a uniform foundation;
+/// bending energy EI/(2R^3) int (w'' + w)^2, foundation energy R/2 int (k_r w^2 + k_t v^2),
+/// kinetic energy rho A R/2 int (w^2 + v^2) give the Rayleigh quotient above (without the
+/// foundation it is free_ring_inextensional; with it, the flexible-ring tyre model, e.g.
+/// Gong, "A study of in-plane dynamics of tires", TU Delft 1993, ch. 3). k = 0 is the
+/// rotation held by k_t, k = 1 the translation held by (k_r + k_t) / 2.
+double ring_on_foundation_inextensional(const RingSpec& spec, int k);
+
+/// First-order change of omega^2 of the free inextensible ring's mode pair k when a point
+/// mass m0 is attached at polar angle 0 (perturbation of the Rayleigh quotient; the pair
+/// splits into the mode with u_t, the other with u_r at the mass): relative changes
+/// -m0 / (pi R rho A (k^2 + 1)) (tangential) and -m0 k^2 / (pi R rho A (k^2 + 1)) (radial).
+/// Returns {tangential, radial} relative changes, exact to O(m0^2).
+std::array<double, 2> point_mass_shift(const RingSpec& spec, double m0, int k);
+
 /// Linear, inextensible ring squeezed by two equal and opposite forces P along a
 /// diameter (Roark's Formulas, 7th ed., Table 9.2 case 1; Timoshenko, "Strength of
 /// Materials" I, sec. 87), bending energy only:

@@ -144,6 +144,82 @@ void read_gates(const Reader& r, const toml::table& t, Scene& s, const SceneSche
   }
 }
 
+/// The angle of a point key, wrapped to [0, 360).
+double read_angle(const Reader& r, const toml::table& t, const std::string& sec, const std::string& key) {
+  if (!t.contains(key)) r.fail(Reader::dotted(sec, key), &t, "missing: the angle (degrees) of the point");
+  return wrap_degrees(r.number(t, sec, key, 0.0, -360.0, 360.0));
+}
+
+/// [supports]: pin, pins, clamp, roller, springs. `pin` is the first pinned point (the
+/// models' anchor): given, else the clamp, else the first of `pins`.
+void read_supports(const Reader& r, const toml::table& root, RingSpec& ring) {
+  const toml::table* t = r.table(root, "", "supports");
+  if (!t) return;
+  r.known_keys(*t, "supports", {"pin", "pins", "clamp", "roller", "springs"});
+  Supports& sup = ring.supports;
+  std::vector<double> pinned;
+  if (t->contains("pin")) pinned.push_back(read_angle(r, *t, "supports", "pin"));
+  if (t->contains("clamp")) {
+    sup.clamp = read_angle(r, *t, "supports", "clamp");
+    pinned.insert(pinned.begin() + (pinned.empty() ? 0 : 1), *sup.clamp);
+  }
+  for (double a : r.numbers(*t, "supports", "pins", {})) {
+    if (a < -360.0 || a > 360.0) r.fail("supports.pins", t->get("pins"), "angles must lie in [-360, 360] degrees");
+    pinned.push_back(wrap_degrees(a));
+  }
+  for (std::size_t i = 0; i < pinned.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (circular_distance(pinned[i], pinned[j]) < 1e-6) {
+        // A clamp at the pin is the pin clamped; any other coincidence is a mistake.
+        const bool clamp_at_pin = sup.clamp && j == 0 && i == 1 && t->contains("pin");
+        if (clamp_at_pin) {
+          pinned.erase(pinned.begin() + 1);
+          break;
+        }
+        r.fail("supports.pins", t->get("pins") ? t->get("pins") : t,
+               "two supports at " + fmt_num(pinned[i]) + " degrees: list every pinned point once");
+      }
+  if (!pinned.empty()) {
+    sup.pin = pinned.front();
+    sup.pins.assign(pinned.begin() + 1, pinned.end());
+  }
+  if (t->contains("roller")) {
+    if (!sup.pin) r.fail("supports.roller", t->get("roller"), "a roller needs a pin");
+    sup.roller = read_angle(r, *t, "supports", "roller");
+    for (double p : pinned)
+      if (circular_distance(*sup.roller, p) < 1e-6)
+        r.fail("supports.roller", t->get("roller"), "the roller must be at a different angle from every pin");
+  }
+  for (const auto& [name, st] : r.tables(*t, "supports", "springs")) {
+    r.known_keys(*st, name, {"at", "kx", "ky", "kr"});
+    Spring sp;
+    sp.angle = read_angle(r, *st, name, "at");
+    sp.kx = r.number(*st, name, "kx", 0.0, 0.0, HUGE_VAL);
+    sp.ky = r.number(*st, name, "ky", 0.0, 0.0, HUGE_VAL);
+    sp.kr = r.number(*st, name, "kr", 0.0, 0.0, HUGE_VAL);
+    if (sp.kx == 0.0 && sp.ky == 0.0 && sp.kr == 0.0) r.fail(name, st, "a spring needs kx, ky or kr > 0");
+    sup.springs.push_back(sp);
+  }
+}
+
+/// masses = [{at, mass, inertia}, ...] and [foundation] {radial, tangential}.
+void read_attachments(const Reader& r, const toml::table& root, RingSpec& ring) {
+  for (const auto& [name, mt] : r.tables(root, "", "masses")) {
+    r.known_keys(*mt, name, {"at", "mass", "inertia"});
+    PointMass pm;
+    pm.angle = read_angle(r, *mt, name, "at");
+    pm.mass = r.number(*mt, name, "mass", 0.0, 0.0, HUGE_VAL);
+    pm.inertia = r.number(*mt, name, "inertia", 0.0, 0.0, HUGE_VAL);
+    if (pm.mass == 0.0 && pm.inertia == 0.0) r.fail(name, mt, "a point mass needs mass or inertia > 0");
+    ring.masses.push_back(pm);
+  }
+  if (const toml::table* ft = r.table(root, "", "foundation")) {
+    r.known_keys(*ft, "foundation", {"radial", "tangential"});
+    ring.foundation.radial = r.number(*ft, "foundation", "radial", 0.0, 0.0, HUGE_VAL);
+    ring.foundation.tangential = r.number(*ft, "foundation", "tangential", 0.0, 0.0, HUGE_VAL);
+  }
+}
+
 /// Every model that the scene uses must have a node at every support, load and record point.
 void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const SceneSchema& schema) {
   struct Model { std::string name, key; int n; };
@@ -159,6 +235,12 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   struct Point { std::string key; double angle; };
   std::vector<Point> points;
   if (sup.roller) points.push_back({"supports.roller", *sup.roller});
+  for (double p : sup.pins) points.push_back({"supports.pins", p});
+  if (sup.clamp) points.push_back({"supports.clamp", *sup.clamp});
+  for (std::size_t i = 0; i < sup.springs.size(); ++i)
+    points.push_back({"supports.springs[" + std::to_string(i + 1) + "]", sup.springs[i].angle});
+  for (std::size_t i = 0; i < s.ring.masses.size(); ++i)
+    points.push_back({"masses[" + std::to_string(i + 1) + "]", s.ring.masses[i].angle});
   if (s.response) {
     points.push_back({"response.at", s.response->load.angle});
     for (double a : s.response->record) points.push_back({"response.record", a});
@@ -214,7 +296,7 @@ std::pair<long long, long long> solver_range(const SceneSchema& schema, const st
 Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
   s.reference_solver = schema.reference_solver;
-  r.known_keys(root, "", {"title", "ring", "supports", "multibody", "fem", "lumped", "modes", "table", "gates",
+  r.known_keys(root, "", {"title", "ring", "supports", "masses", "foundation", "multibody", "fem", "lumped", "modes", "table", "gates",
                           "response", "static"});
   if (const toml::node* n = root.get("title")) {
     auto t = n->value_exact<std::string>();
@@ -246,17 +328,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     s.warnings.push_back("ring.section: depth/radius = " + fmt_num(depth_ratio) +
                          " > 0.1 stretches the thin-ring (Euler-Bernoulli) assumption");
 
-  // [supports]
-  if (const toml::table* t = r.table(root, "", "supports")) {
-    r.known_keys(*t, "supports", {"pin", "roller"});
-    if (t->contains("pin")) s.ring.supports.pin = wrap_degrees(r.number(*t, "supports", "pin", 0.0, -360.0, 360.0));
-    if (t->contains("roller")) {
-      if (!s.ring.supports.pin) r.fail("supports.roller", t->get("roller"), "a roller needs a pin");
-      s.ring.supports.roller = wrap_degrees(r.number(*t, "supports", "roller", 0.0, -360.0, 360.0));
-      if (circular_distance(*s.ring.supports.roller, *s.ring.supports.pin) < 1e-6)
-        r.fail("supports.roller", t->get("roller"), "the roller must be at a different angle from the pin");
-    }
-  }
+  read_supports(r, root, s.ring);
+  read_attachments(r, root, s.ring);
 
   // Solver sections: each optional, defaults as in the README's scene reference.
   const toml::table* mt = r.table(root, "", "multibody");

@@ -1,7 +1,9 @@
 #include "ring/spec.hpp"
 #include "ring/analysis.hpp"
 
+#include <Eigen/Dense>
 #include <cmath>
+#include <stdexcept>
 
 namespace ring {
 
@@ -48,6 +50,74 @@ double RingSpec::bending_frequency_scale() const {
 }
 
 double RingSpec::slenderness() const { return radius / std::sqrt(I() / A()); }
+
+std::vector<double> Supports::pinned() const {
+  std::vector<double> all;
+  if (pin) all.push_back(*pin);
+  all.insert(all.end(), pins.begin(), pins.end());
+  return all;
+}
+
+int RingSpec::rigid_modes() const {
+  // Rows on the rigid motion (tx, ty, w) of the ring: the displacement of the point at polar
+  // angle a is (tx - w R sin a, ty + w R cos a). A constraint or a positive spring along a
+  // direction d there removes the motion d . u(a); the foundation removes what has radial
+  // or tangential displacement somewhere (radial: both translations; tangential: all three).
+  std::vector<Eigen::RowVector3d> rows;
+  auto along = [&](double deg, double dx, double dy) {
+    const double a = deg * M_PI / 180.0;
+    rows.emplace_back(dx, dy, radius * (-dx * std::sin(a) + dy * std::cos(a)));
+  };
+  for (double p : supports.pinned()) {
+    along(p, 1.0, 0.0);
+    along(p, 0.0, 1.0);
+  }
+  if (supports.clamp) rows.emplace_back(0.0, 0.0, 1.0);
+  if (supports.roller && supports.pin) {
+    const double a = *supports.roller * M_PI / 180.0, a0 = *supports.pin * M_PI / 180.0;
+    const double dx = std::cos(a) - std::cos(a0), dy = std::sin(a) - std::sin(a0);
+    along(*supports.roller, -dy, dx);  // the line's normal
+  }
+  for (const Spring& s : supports.springs) {
+    if (s.kx > 0.0) along(s.angle, 1.0, 0.0);
+    if (s.ky > 0.0) along(s.angle, 0.0, 1.0);
+    if (s.kr > 0.0) rows.emplace_back(0.0, 0.0, 1.0);
+  }
+  if (foundation.radial > 0.0) {
+    rows.emplace_back(1.0, 0.0, 0.0);
+    rows.emplace_back(0.0, 1.0, 0.0);
+  }
+  if (foundation.tangential > 0.0) {
+    rows.emplace_back(1.0, 0.0, 0.0);
+    rows.emplace_back(0.0, 1.0, 0.0);
+    rows.emplace_back(0.0, 0.0, 1.0);
+  }
+  if (rows.empty()) return 3;
+  Eigen::MatrixXd A(rows.size(), 3);
+  for (std::size_t i = 0; i < rows.size(); ++i) A.row(i) = rows[i] / std::max(1.0, rows[i].norm());
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  lu.setThreshold(1e-9);
+  return 3 - static_cast<int>(lu.rank());
+}
+
+void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
+  const std::vector<std::string> keys = spec.terms_beyond_paper();
+  if (keys.empty()) return;
+  std::string list;
+  for (std::size_t i = 0; i < keys.size(); ++i) list += (i ? ", " : "") + keys[i];
+  throw std::invalid_argument(who + " does not take " + list +
+                              " yet (linear modes of the multibody chain do; see the README's solver table)");
+}
+
+std::vector<std::string> RingSpec::terms_beyond_paper() const {
+  std::vector<std::string> keys;
+  if (!supports.pins.empty()) keys.push_back("supports.pins");
+  if (supports.clamp) keys.push_back("supports.clamp");
+  if (!supports.springs.empty()) keys.push_back("supports.springs");
+  if (!masses.empty()) keys.push_back("masses");
+  if (foundation.any()) keys.push_back("foundation");
+  return keys;
+}
 
 double wrap_degrees(double a) {
   double r = std::fmod(a, 360.0);

@@ -32,15 +32,53 @@ struct Section {
   double depth() const;
 };
 
-/// Supports shared by all solvers. No pin = free ring (three rigid modes).
-/// `pin`: both displacements zero, rotation free. `roller` (needs a pin): that
-/// point stays on the line through the pin and itself (the paper's section 5).
+/// An elastic support at a point of the centroid line: springs to the ground in the
+/// global x and y directions and in rotation (any may be 0; all >= 0).
+struct Spring {
+  double angle = 0.0;  ///< degrees (a node of every model)
+  double kx = 0.0;     ///< N/m
+  double ky = 0.0;     ///< N/m
+  double kr = 0.0;     ///< N m/rad, on the rotation of the centroid line's tangent there
+};
+
+/// Supports shared by all solvers. No pin = free ring (three rigid modes, unless springs
+/// or a foundation hold it).
+/// `pin`: the first pinned point (both displacements zero, rotation free); the models
+/// anchor their nodes there. `pins`: further pinned points. `clamp` (a pinned point, `pin`
+/// or one of `pins`): its rotation is zero too. `roller` (needs a pin): that point stays
+/// on the line through the pin and itself (the paper's section 5).
 struct Supports {
   std::optional<double> pin;     ///< degrees
   std::optional<double> roller;  ///< degrees
+  std::vector<double> pins;      ///< degrees, further pins (never `pin` itself)
+  std::optional<double> clamp;   ///< degrees, equal to `pin` or to one of `pins`
+  std::vector<Spring> springs;
   bool free() const { return !pin.has_value(); }
-  /// Rigid modes the supports leave: 3 (free), 1 (pin), 0 (pin + roller).
-  int rigid_modes() const { return !pin ? 3 : (roller ? 0 : 1); }
+  /// Every pinned point: `pin`, then `pins`.
+  std::vector<double> pinned() const;
+  /// Constraint rows on the displacements: 2 per pinned point, 1 for the roller, 1 for
+  /// the clamp's rotation.
+  int constraint_rows() const { return 2 * static_cast<int>(pinned().size()) + (roller ? 1 : 0) + (clamp ? 1 : 0); }
+  /// True for the paper's supports alone: a pin and/or a roller, nothing else.
+  bool paper_only() const { return pins.empty() && !clamp && springs.empty(); }
+};
+
+/// A rigid point mass attached to the centroid line, with its rotary inertia about the
+/// axis normal to the ring's plane (it turns with the centroid line's tangent).
+struct PointMass {
+  double angle = 0.0;    ///< degrees (a node of every model)
+  double mass = 0.0;     ///< kg, >= 0
+  double inertia = 0.0;  ///< kg m^2, >= 0
+};
+
+/// A Winkler foundation over the whole ring: a restoring force per unit length of the
+/// centroid line, -radial * u_r and -tangential * u_t, with u_r, u_t the displacement of
+/// the centroid line from its rest position along the radial and tangential directions of
+/// the undeformed point (fixed directions, also under large displacements).
+struct Foundation {
+  double radial = 0.0;      ///< N/m per metre of ring (N/m^2), >= 0
+  double tangential = 0.0;  ///< N/m per metre of ring (N/m^2), >= 0
+  bool any() const { return radial > 0.0 || tangential > 0.0; }
 };
 
 /// Time history of a load factor f(t) that multiplies a point load's force.
@@ -67,6 +105,8 @@ struct RingSpec {
   double rho = 7.8e3;    ///< kg/m^3
   Section section;
   Supports supports;
+  std::vector<PointMass> masses;
+  Foundation foundation;
 
   double A() const { return section.area(); }
   double I() const { return section.inertia(); }
@@ -77,7 +117,21 @@ struct RingSpec {
   double bending_frequency_scale() const;
   /// R / radius of gyration sqrt(I/A): the slenderness of the ring.
   double slenderness() const;
+  /// Rigid-body motions (two translations, the rotation about the centre) that the
+  /// supports, springs and foundation leave free of constraint and of energy: 3 - the rank
+  /// of their rows on those motions (0 to 3). Every solver counts its rigid modes by it.
+  int rigid_modes() const;
+  /// True for the paper's ring: a pin and/or a roller and nothing of supports.pins,
+  /// supports.clamp, supports.springs, masses or foundation.
+  bool paper_terms_only() const { return supports.paper_only() && masses.empty() && !foundation.any(); }
+  /// The scene keys of the terms beyond the paper's ring that this spec has
+  /// ("supports.clamp", "masses", "foundation", ...), for refusals that name them.
+  std::vector<std::string> terms_beyond_paper() const;
 };
+
+/// Throws std::invalid_argument "`who` does not take KEYS yet" when `spec` has terms beyond
+/// the paper's ring (RingSpec::terms_beyond_paper), for an analysis that lacks them.
+void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);
 
 // ---- Discretization options, one struct per solver (validated by the scene parser) ----
 

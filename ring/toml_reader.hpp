@@ -187,6 +187,23 @@ class Reader {
     return v;
   }
 
+  /// An array of tables (`key = [{...}, ...]` or `[[key]]`), each with its dotted name
+  /// ("supports.springs[2]", 1-based) for the messages of what reads it.
+  std::vector<std::pair<std::string, const toml::table*>> tables(const toml::table& t, const std::string& section,
+                                                                 const std::string& key) const {
+    std::vector<std::pair<std::string, const toml::table*>> v;
+    const toml::node* n = t.get(key);
+    if (!n) return v;
+    const toml::array* a = n->as_array();
+    if (!a) fail(dotted(section, key), n, "expected an array of tables, got " + type_name(*n));
+    for (const auto& e : *a) {
+      const std::string name = dotted(section, key) + "[" + std::to_string(v.size() + 1) + "]";
+      if (!e.is_table()) fail(name, &e, "expected a table, got " + type_name(e));
+      v.emplace_back(name, e.as_table());
+    }
+    return v;
+  }
+
   const std::string& file() const { return file_; }
 
  private:

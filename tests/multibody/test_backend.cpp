@@ -47,12 +47,12 @@ TEST(MultibodyBackend, ModesStayDenseForAThirdOfTheSpectrum) {
   for (const ring::RingSpec* spec : {&free, &pinned, &held})
     for (int n : {256, 258, 300, 1000}) {  // even: the roller sits opposite the pin
       const multibody::Chain chain(*spec, opts(n));
-      const int r = chain.dofs() - chain.constraint_count(), rigid = spec->supports.rigid_modes();
+      const int r = chain.dofs() - chain.constraint_count(), rigid = spec->rigid_modes();
       for (int count = 1; count <= r - rigid; ++count) {
         const bool sparse = n > 256 && 3 * std::min(r, count + rigid + 2) <= r;
-        EXPECT_EQ(multibody::backend(opts(n), spec->supports, count), sparse ? Backend::banded : Backend::dense)
+        EXPECT_EQ(multibody::backend(opts(n), *spec, count), sparse ? Backend::banded : Backend::dense)
             << "n " << n << ", count " << count << ", rigid " << rigid;
-        EXPECT_EQ(multibody::backend(opts(n, Method::sparse), spec->supports, count), Backend::banded);
+        EXPECT_EQ(multibody::backend(opts(n, Method::sparse), *spec, count), Backend::banded);
       }
     }
 }
