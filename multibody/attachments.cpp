@@ -26,8 +26,8 @@ Matrix hinge_map(const Chain& chain, int k) {
   return P;
 }
 
-/// d(rotation of hinge h) / d q: the mean of its two segments' rotations.
-Vector hinge_rotation_map(const Chain& chain, int h) {
+/// d(mean rotation of hinge h's two segments) / d q.
+Vector mean_rotation_map(const Chain& chain, int h) {
   Vector a = Vector::Zero(chain.dofs());
   a[(h + chain.n() - 1) % chain.n()] += 0.5;
   a[h] += 0.5;
@@ -59,6 +59,7 @@ Matrix pull_back(const Chain& chain, const std::vector<Eigen::Matrix2d>& B) {
 LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {
   const int n = chain.n(), N = chain.dofs();
   std::vector<Eigen::Matrix2d> stiff(n, Eigen::Matrix2d::Zero()), mass(n, Eigen::Matrix2d::Zero());
+  std::vector<double> kr(n, 0.0);  // rotational springs to the ground, by hinge (a clamp: infinite)
   LinearTerms t;
   t.K = Matrix::Zero(N, N);
   t.M = Matrix::Zero(N, N);
@@ -73,31 +74,31 @@ LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {
     const ring::Spring& s = spec.supports.springs[i];
     const int h = hinge(chain, s.angle, "supports.springs[" + std::to_string(i + 1) + "]");
     stiff[h].diagonal() += Eigen::Vector2d(s.kx, s.ky);
-    const Vector a = hinge_rotation_map(chain, h);
-    t.K += s.kr * a * a.transpose();
+    kr[h] += s.kr;
   }
+  if (spec.supports.clamp) kr[hinge(chain, *spec.supports.clamp, "supports.clamp")] = HUGE_VAL;
+  // The hinge's rotation psi, condensed: 4K and kr in series on the mean rotation (file comment).
+  const double k4 = 4.0 * chain.K();
+  for (int h = 0; h < n; ++h)
+    if (kr[h] > 0.0) {
+      const Vector a = mean_rotation_map(chain, h);
+      t.K += (std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h])) * a * a.transpose();
+    }
   for (std::size_t i = 0; i < spec.masses.size(); ++i) {
     const ring::PointMass& pm = spec.masses[i];
     const int h = hinge(chain, pm.angle, "masses[" + std::to_string(i + 1) + "]");
     mass[h].diagonal().array() += pm.mass;
-    const Vector a = hinge_rotation_map(chain, h);
+    // psi = 4K / (4K + kr) times the mean rotation: all of it without a spring, none at a clamp.
+    const double follows = std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
+    const Vector a = follows * mean_rotation_map(chain, h);
     t.M += pm.inertia * a * a.transpose();
   }
   t.K += pull_back(chain, stiff);
   t.M += pull_back(chain, mass);
 
-  std::vector<Matrix> rows;
-  for (double p : spec.supports.pins) rows.push_back(hinge_map(chain, hinge(chain, p, "supports.pins")));
-  if (spec.supports.clamp)
-    rows.push_back(hinge_rotation_map(chain, hinge(chain, *spec.supports.clamp, "supports.clamp")).transpose());
-  int count = 0;
-  for (const Matrix& r : rows) count += static_cast<int>(r.rows());
-  t.J.resize(count, N);
-  int at = 0;
-  for (const Matrix& r : rows) {
-    t.J.middleRows(at, r.rows()) = r;
-    at += static_cast<int>(r.rows());
-  }
+  t.J.resize(2 * static_cast<Eigen::Index>(spec.supports.pins.size()), N);
+  for (std::size_t i = 0; i < spec.supports.pins.size(); ++i)
+    t.J.middleRows(2 * static_cast<Eigen::Index>(i), 2) = hinge_map(chain, hinge(chain, spec.supports.pins[i], "supports.pins"));
   return t;
 }
 
