@@ -49,11 +49,13 @@ def main():
     for n in a.n:
         chain = ringvib.modes(scene.with_(multibody__n=n), "multibody", a.modes)
         pair, mac = mac_pairing(chain, reference)
-        if len(set(pair)) != len(pair) or mac.min() < 0.9:
+        # Below a MAC of 0.5 the table calls shapes unlike (compare/table.hpp, kWeakMac).
+        if len(set(pair)) != len(pair) or mac.min() < 0.5:
             raise SystemExit(f"n = {n}: the chain's modes do not pair one to one with the reference's "
                              f"(lowest MAC {mac.min():.3f})")
         ref = reference.omega[pair]
         errors.append(np.abs(chain.omega - ref) / ref * 100.0)
+        print(f"n = {n:5d}: {chain.unknowns} unknowns, {chain.seconds:.3f} s, lowest MAC {mac.min():.3f}")
     errors = np.array(errors)
 
     ns = np.array(a.n, dtype=float)

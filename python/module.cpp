@@ -334,7 +334,14 @@ PYBIND11_MODULE(ringvib, m) {
             cmp::check_runnable(n, max_memory_gib, force);
             if (!n.response) throw ring::InputError(n.file, "response", "the scene has no [response] section");
             const std::string one = single(n, n.response_request, solver, "response.solvers", "response_table");
-            return cmp::run_nonlinear(n, one, nullptr).histories.front();
+            try {
+              return cmp::run_nonlinear(n, one, nullptr).histories.front();
+            } catch (const ring::IntegrationFailure& e) {
+              // The partial history names its solver, as a finished one does.
+              ring::TimeHistory partial = e.partial();
+              if (partial.solver.empty()) partial.solver = one;
+              throw ring::IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
+            }
           });
         }
         return to_python(h);

@@ -19,7 +19,7 @@ def scene_path(name):
     return str(SOURCE / "scenes" / name)
 
 
-def ringvib(*args):
+def command(*args):
     """Runs the command; returns the CompletedProcess (stdout, stderr as text)."""
     return subprocess.run([COMMAND, *map(str, args)], capture_output=True, text=True, stdin=subprocess.DEVNULL,
                           timeout=600)
@@ -27,7 +27,7 @@ def ringvib(*args):
 
 def ringvib_json(*args):
     """Runs the command, expects exit 0, and parses what it prints as JSON."""
-    run = ringvib(*args)
+    run = command(*args)
     assert run.returncode == 0, run.stderr
     return json.loads(run.stdout)
 

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import ringvib
-from conftest import ringvib, ringvib_json, scene_path, sets
+from conftest import command, ringvib_json, scene_path, sets
 
 # (scene, solver, count or None, {key: Python value}, {key: TOML text for --set})
 MODES_CASES = [
@@ -83,7 +83,7 @@ def test_shapes_equal_the_report_json(tmp_path):
     scene = tmp_path / "two.toml"
     scene.write_text(SCENE_TWO_CHAINS)
     out = tmp_path / "out"
-    run = ringvib("run", scene, "--out", out, "--set", "multibody.n=48")
+    run = command("run", scene, "--out", out, "--set", "multibody.n=48")
     assert run.returncode == 0, run.stderr
     s = ringvib.Scene.load(str(scene), set={"multibody.n": 48})
     for solver in ("multibody", "lumped"):
@@ -172,7 +172,7 @@ def test_response_equals_the_commands_csv(solver, integrator):
              "multibody.n": "80", "lumped.n": "80"}
     s = ringvib.Scene.load(scene_path("paper1990-forced.toml"), set=values)
     r = ringvib.respond(s, solver)
-    run = ringvib("respond", scene_path("paper1990-forced.toml"), "--solver", solver, "--csv", "-", *sets(texts))
+    run = command("respond", scene_path("paper1990-forced.toml"), "--solver", solver, "--csv", "-", *sets(texts))
     assert run.returncode == 0, run.stderr
     header, rows = csv_table(run.stdout)
     assert list(r.history.dtype.names) == header
@@ -200,7 +200,7 @@ def test_response_table_equals_the_commands_json():
 def test_solvers_are_the_commands():
     """The registry's names are those `ringvib modes --help` offers for --solver."""
     names = [e["name"] for e in ringvib.solvers()]
-    help_text = ringvib("modes", "--help").stdout
+    help_text = command("modes", "--help").stdout
     assert " | ".join(names) in help_text
     by_name = {e["name"]: e for e in ringvib.solvers()}
     assert by_name["multibody"]["size_key"] == "multibody.n"

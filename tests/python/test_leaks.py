@@ -46,7 +46,7 @@ def test_scenes_and_errors_do_not_leak():
         try:
             s.with_({"multibody.nn": 40})
         except ringvib.InputError as e:
-            assert e.key == "multibody.nn"
+            assert e.key.startswith("multibody.nn")
         else:
             raise AssertionError("an unknown key was accepted")
     del t
