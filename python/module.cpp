@@ -159,6 +159,12 @@ PYBIND11_MODULE(ringvib, m) {
                              "stretched, ...); the module prints nothing.")
       .def_property_readonly("modes_count", [](const Scene& s) { return s.scene.modes.count; },
                              "modes.count: elastic modes computed by default.")
+      .def(py::pickle(  // for a ProcessPoolExecutor: the text, the name and the overrides
+          [](const Scene& s) { return py::make_tuple(s.text, s.name, s.overrides); },
+          [](const py::tuple& t) {
+            return Scene::parse(t[0].cast<std::string>(), t[1].cast<std::string>(),
+                                t[2].cast<std::vector<std::string>>());
+          }))
       .def("__repr__", [](const Scene& s) {
         std::string r = "<ringvib.Scene " + py::repr(py::str(s.scene.file)).cast<std::string>();
         if (!s.overrides.empty()) r += " set " + py::repr(py::cast(s.overrides)).cast<std::string>();

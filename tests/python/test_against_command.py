@@ -10,6 +10,7 @@ different in every run: only its presence is checked.
 """
 import json
 import math
+import pickle
 import tempfile
 import pathlib
 
@@ -205,3 +206,20 @@ def test_solvers_are_the_commands():
     by_name = {e["name"]: e for e in ringvib.solvers()}
     assert by_name["multibody"]["size_key"] == "multibody.n"
     assert set(by_name["multibody"]["analyses"]) == {"modes", "static", "response"}
+
+
+def test_a_scene_pickles():
+    s = ringvib.Scene.load(scene_path("paper1990.toml"), set={"multibody.n": 60})
+    t = pickle.loads(pickle.dumps(s))
+    assert t.toml == s.toml and t.overrides == s.overrides and t.file == s.file
+
+
+def test_the_library_prints_nothing(capfd):
+    """Checked on the file descriptors: a C++ write to stdout or stderr (the FE plug-in and
+    deal.II loading included) would show."""
+    s = ringvib.Scene.load(scene_path("paper1990.toml"), set={"fem.elements": 20, "ring.section": {"shape": "rectangle", "width": 0.1, "height": 1.5}})
+    assert s.warnings  # a thick ring: the command warns on stderr, the module only lists it
+    ringvib.table(s)
+    ringvib.static(ringvib.Scene.load(scene_path("paper1990-static.toml")))
+    ringvib.respond(ringvib.Scene.load(scene_path("paper1990-forced.toml"), set={"response.t_end": 0.1}))
+    assert capfd.readouterr() == ("", "")
