@@ -78,9 +78,12 @@ def main():
         print("matplotlib is not installed: no figure")
         return
     fig, ax = plt.subplots(figsize=(7, 5))
+    colours = plt.cm.viridis(np.linspace(0, 1, a.modes))  # mode 1 dark, mode 23 yellow
     for k in range(a.modes):
-        ax.loglog(ns, errors[:, k], marker="o", lw=1, ms=3, label=f"mode {k + 1}" if k in (0, a.modes - 1) else None)
+        ax.loglog(ns, errors[:, k], marker="o", lw=1, ms=3, color=colours[k])
     ax.loglog(ns, worst[0] * (ns[0] / ns) ** 2, "k--", label="order 2")
+    bar = fig.colorbar(plt.cm.ScalarMappable(cmap="viridis", norm=plt.Normalize(1, a.modes)), ax=ax)
+    bar.set_label("mode")
     ax.set_xlabel("segments n")
     ax.set_ylabel("error against the FE reference (%)")
     ax.set_title(f"Multibody chain, modes 1..{a.modes}: fitted order {overall:.2f}")
