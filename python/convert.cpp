@@ -43,8 +43,10 @@ bool bare_key(const std::string& k) {
 
 std::string toml(const std::string& key, py::handle v) {
   // NumPy's scalars (numpy.bool_, numpy.float64, numpy.int64) as Python's.
-  const bool numpy_bool = !py::isinstance<py::array>(v) && py::hasattr(v, "dtype") && py::str(v.attr("dtype").attr("kind")).cast<std::string>() == "b";
-  if (py::isinstance<py::bool_>(v) || numpy_bool) return py::bool_(py::reinterpret_borrow<py::object>(v)) ? "true" : "false";
+  const bool numpy_bool = !py::isinstance<py::array>(v) && py::hasattr(v, "dtype") &&
+                          py::str(v.attr("dtype").attr("kind")).cast<std::string>() == "b";
+  if (py::isinstance<py::bool_>(v) || numpy_bool)
+    return py::bool_(py::reinterpret_borrow<py::object>(v)) ? "true" : "false";
   if (py::isinstance<py::float_>(v))  // the shortest text that reads back: 0.1, 1e-300, inf, nan
     return py::repr(py::float_(py::reinterpret_borrow<py::object>(v))).cast<std::string>();
   if (py::isinstance<py::int_>(v) || (!py::isinstance<py::str>(v) && py::hasattr(v, "__index__")))
@@ -134,8 +136,9 @@ std::vector<std::string> overrides_from(py::handle mapping) {
   std::vector<std::string> v;
   if (mapping.is_none()) return v;
   if (!py::isinstance<py::dict>(mapping))
-    throw ring::InputError("", "set", "expected a dict {\"section.key\": value}, got a " +
-                                          py::str(mapping.get_type().attr("__name__")).cast<std::string>());
+    throw ring::InputError("", "set",
+                           "expected a dict {\"section.key\": value}, got a " +
+                               py::str(mapping.get_type().attr("__name__")).cast<std::string>());
   for (auto [k, value] : mapping.cast<py::dict>()) {
     if (!py::isinstance<py::str>(k))
       throw ring::InputError("", "set", "keys are \"section.key\" strings, got " + py::repr(k).cast<std::string>());
@@ -179,7 +182,8 @@ Static to_python(const ring::StaticResult& r) {
     ux.push_back(d.ux);
     uy.push_back(d.uy);
   }
-  o.displacements = structured(angle.size(), {{{"angle", &angle}, {"ux", &ux}, {"uy", &uy}}, {}, {"angle", "ux", "uy"}});
+  o.displacements =
+      structured(angle.size(), {{{"angle", &angle}, {"ux", &ux}, {"uy", &uy}}, {}, {"angle", "ux", "uy"}});
   o.nodes = pairs(r.node_x, r.node_y);
   o.unknowns = r.unknowns;
   o.steps = r.steps;
@@ -201,9 +205,9 @@ Response to_python(const ring::TimeHistory& h) {
     c.order.push_back("uy_" + d);
     c.real.push_back({"uy_" + d, &h.uy[p]});
   }
-  for (const auto& [name, col] : {std::pair{"kinetic", &h.kinetic}, std::pair{"strain", &h.strain},
-                                  std::pair{"work", &h.work}, std::pair{"energy_error", &h.energy_error},
-                                  std::pair{"constraint_residual", &h.constraint_residual}}) {
+  for (const auto& [name, col] :
+       {std::pair{"kinetic", &h.kinetic}, std::pair{"strain", &h.strain}, std::pair{"work", &h.work},
+        std::pair{"energy_error", &h.energy_error}, std::pair{"constraint_residual", &h.constraint_residual}}) {
     c.order.push_back(name);
     c.real.push_back({name, col});
   }
@@ -266,17 +270,17 @@ PyObject* new_exception(py::module_& m, const char* name, PyObject* base, const 
 }  // namespace
 
 void register_errors(py::module_& m) {
-  g_input_error = new_exception(
-      m, "InputError", PyExc_ValueError,
-      "Bad input: the message is the command's exit-2 message, naming the file (or the scene's\n"
-      "name), the key and what was expected. Attributes: file, key (str; '' where none).");
-  g_numerical_error = new_exception(
-      m, "NumericalError", PyExc_RuntimeError,
-      "A numerical failure (the command's exit 3): NaN, divergence, Newton not converging, a\n"
-      "path past a limit point to self-contact, energy growth. Attributes: t_reached (s, the\n"
-      "last accepted time step of a failed response, else None), partial (the Response up to\n"
-      "t_reached, else None), load_factor (the load factor a failed static path names last:\n"
-      "where it stopped; else None).");
+  g_input_error =
+      new_exception(m, "InputError", PyExc_ValueError,
+                    "Bad input: the message is the command's exit-2 message, naming the file (or the scene's\n"
+                    "name), the key and what was expected. Attributes: file, key (str; '' where none).");
+  g_numerical_error =
+      new_exception(m, "NumericalError", PyExc_RuntimeError,
+                    "A numerical failure (the command's exit 3): NaN, divergence, Newton not converging, a\n"
+                    "path past a limit point to self-contact, energy growth. Attributes: t_reached (s, the\n"
+                    "last accepted time step of a failed response, else None), partial (the Response up to\n"
+                    "t_reached, else None), load_factor (the load factor a failed static path names last:\n"
+                    "where it stopped; else None).");
   for (PyObject* t : {g_input_error})
     for (const char* a : {"file", "key"}) PyObject_SetAttrString(t, a, py::str("").ptr());
   for (const char* a : {"t_reached", "partial", "load_factor"}) PyObject_SetAttrString(g_numerical_error, a, Py_None);
@@ -288,7 +292,8 @@ void register_errors(py::module_& m) {
       raise(g_input_error, e.what(), {{"file", py::str(e.file())}, {"key", py::str(e.key())}});
     } catch (const ring::IntegrationFailure& e) {
       raise(g_numerical_error, e.what(),
-            {{"t_reached", py::float_(e.t_reached())}, {"partial", py::cast(to_python(e.partial()))},
+            {{"t_reached", py::float_(e.t_reached())},
+             {"partial", py::cast(to_python(e.partial()))},
              {"load_factor", py::none()}});
     } catch (const ring::NumericalError& e) {
       raise(g_numerical_error, e.what(),

@@ -7,14 +7,13 @@
 #include <pybind11/stl.h>
 
 #include <cstdlib>
-#include <stdexcept>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "compare/nonlinear.hpp"
 #include "compare/registry.hpp"
-#include "compare/response.hpp"
 #include "compare/runner.hpp"
 #include "compare/table.hpp"
 #include "python/convert.hpp"
@@ -40,12 +39,6 @@ struct Scene {
   }
 };
 
-/// The checks the command makes before it computes anything (compare/runner.hpp).
-struct Budget {
-  double max_memory_gib;
-  bool force;
-};
-
 /// The scene narrowed to `solver` for one nonlinear analysis, as `ringvib static|respond
 /// --solver NAME` narrows it (compare/commands.cpp): that solver alone and no reference.
 ring::Scene narrowed(ring::Scene s, ring::NonlinearRequest ring::Scene::*request, const std::string& solver) {
@@ -63,7 +56,8 @@ std::string single(const ring::Scene& s, const ring::NonlinearRequest& q, const 
   if (q.solvers.size() == 1 && !q.reference) return q.solvers.front();
   throw ring::InputError(s.file, key,
                          "the scene runs several solvers (or a reference); name one with solver=NAME, or "
-                         "compare them with ringvib." + table_function + "(scene)");
+                         "compare them with ringvib." +
+                             table_function + "(scene)");
 }
 
 /// Runs `f`; a solver's std::invalid_argument ("can never work") becomes the InputError the
@@ -77,9 +71,7 @@ auto input_checked(const ring::Scene& s, F&& f) -> decltype(f()) {
   }
 }
 
-py::object json_rows(const std::string& json) {
-  return py::module_::import("json").attr("loads")(json)["rows"];
-}
+py::object json_rows(const std::string& json) { return py::module_::import("json").attr("loads")(json)["rows"]; }
 
 const char* const kBudgetDoc =
     "max_memory_gib: the cost guard's budget (GiB; the command's --max-memory), force: skip the\n"
@@ -147,18 +139,22 @@ PYBIND11_MODULE(ringvib, m) {
           py::arg("set") = py::none(),
           "The scene with more overrides, applied after this scene's: a dict {'section.key':\n"
           "value}, or keywords with '__' for the dot: s.with_(multibody__n=160).")
-      .def_property_readonly("file", [](const Scene& s) { return s.scene.file; },
-                             "The path it was read from, or the name given to from_toml.")
+      .def_property_readonly(
+          "file", [](const Scene& s) { return s.scene.file; },
+          "The path it was read from, or the name given to from_toml.")
       .def_property_readonly("title", [](const Scene& s) { return s.scene.title; })
-      .def_property_readonly("overrides", [](const Scene& s) { return s.overrides; },
-                             "The overrides as the command's --set arguments ('multibody.n=160').")
-      .def_property_readonly("toml", [](const Scene& s) { return s.scene.resolved_toml; },
-                             "The scene after the overrides, as TOML.")
-      .def_property_readonly("warnings", [](const Scene& s) { return s.scene.warnings; },
-                             "What the command would print as warnings (the thin-ring assumption "
-                             "stretched, ...); the module prints nothing.")
-      .def_property_readonly("modes_count", [](const Scene& s) { return s.scene.modes.count; },
-                             "modes.count: elastic modes computed by default.")
+      .def_property_readonly(
+          "overrides", [](const Scene& s) { return s.overrides; },
+          "The overrides as the command's --set arguments ('multibody.n=160').")
+      .def_property_readonly(
+          "toml", [](const Scene& s) { return s.scene.resolved_toml; }, "The scene after the overrides, as TOML.")
+      .def_property_readonly(
+          "warnings", [](const Scene& s) { return s.scene.warnings; },
+          "What the command would print as warnings (the thin-ring assumption "
+          "stretched, ...); the module prints nothing.")
+      .def_property_readonly(
+          "modes_count", [](const Scene& s) { return s.scene.modes.count; },
+          "modes.count: elastic modes computed by default.")
       .def(py::pickle(  // for a ProcessPoolExecutor: the text, the name and the overrides
           [](const Scene& s) { return py::make_tuple(s.text, s.name, s.overrides); },
           [](const py::tuple& t) {
@@ -189,8 +185,8 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("residual_norm", &Modes::residual_norm)
       .def_readonly("error_estimate", &Modes::error_estimate,
                     "Estimated remaining relative error of a converged reference (0: not estimated).")
-      .def_property_readonly("hz", [](const Modes& o) { return o.omega.attr("__truediv__")(2 * M_PI); },
-                             "omega / 2 pi, Hz.")
+      .def_property_readonly(
+          "hz", [](const Modes& o) { return o.omega.attr("__truediv__")(2 * M_PI); }, "omega / 2 pi, Hz.")
       .def("__repr__", [](const Modes& o) {
         return "<ringvib.Modes " + o.solver + ": " + std::to_string(py::len(o.omega)) + " modes, " +
                std::to_string(o.unknowns) + " unknowns>";
@@ -219,7 +215,8 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("ux", &Response::ux, "Displacement x, m: ndarray (points, steps).")
       .def_readonly("uy", &Response::uy, "Displacement y, m: ndarray (points, steps).")
       .def_readonly("snapshot_t", &Response::snapshot_t, "Instants of the deformed-ring snapshots, s.")
-      .def_readonly("snapshots", &Response::snapshots, "The deformed ring at each snapshot: list of ndarray (nodes, 2), m.")
+      .def_readonly("snapshots", &Response::snapshots,
+                    "The deformed ring at each snapshot: list of ndarray (nodes, 2), m.")
       .def_readonly("unknowns", &Response::unknowns, "Size of the nonlinear system per step.")
       .def_readonly("seconds", &Response::seconds, "Solver wall time, s.")
       .def("__repr__", [](const Response& o) {
@@ -369,12 +366,12 @@ PYBIND11_MODULE(ringvib, m) {
         json = input_checked(s.scene, [&] {
           cmp::check_runnable(s.scene, max_memory_gib, force);
           if (response ? !s.scene.response : !s.scene.statics)
-            throw ring::InputError(s.scene.file, response ? "response" : "static",
-                                   response ? "the scene has no [response] section"
-                                            : "the scene has no [static] section");
+            throw ring::InputError(
+                s.scene.file, response ? "response" : "static",
+                response ? "the scene has no [response] section" : "the scene has no [static] section");
           const cmp::NonlinearRun r = cmp::run_nonlinear(s.scene, "", nullptr);
-          return response ? cmp::format_json(cmp::response_table(
-                                s.scene.title, r.histories, r.history_reference ? &*r.history_reference : nullptr))
+          return response ? cmp::format_json(cmp::response_table(s.scene.title, r.histories,
+                                                                 r.history_reference ? &*r.history_reference : nullptr))
                           : cmp::format_json(cmp::static_table(s.scene.title, r.statics,
                                                                r.static_reference ? &*r.static_reference : nullptr));
         });
