@@ -7,32 +7,13 @@
 #include <sstream>
 
 #include "ring/errors.hpp"
+#include "ring/scene.hpp"
 
 namespace ringvib_py {
 
 namespace {
 
-std::string toml_string(const std::string& s) {
-  std::string o = "\"";
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      case '\t': o += "\\t"; break;
-      case '\r': o += "\\r"; break;
-      default:
-        if (c < 0x20 || c == 0x7f) {
-          char u[8];
-          std::snprintf(u, sizeof u, "\\u%04X", static_cast<unsigned>(c));
-          o += u;
-        } else {
-          o += static_cast<char>(c);  // UTF-8 passes through
-        }
-    }
-  }
-  return o + "\"";
-}
+std::string toml_string(const std::string& s) { return ring::toml_quoted(s); }
 
 bool bare_key(const std::string& k) {
   if (k.empty()) return false;

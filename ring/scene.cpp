@@ -892,4 +892,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   return parse_scene(read_scene_text(path), path, overrides, schema);
 }
 
+std::string toml_quoted(std::string_view s) {
+  std::string o;
+  append_quoted(o, s);
+  return o;
+}
+
 }  // namespace ring
