@@ -78,7 +78,7 @@ SolverEntry multibody_entry() {
   // solve; 0.83-0.84 KB with plain load stepping). Used: those with 3-20 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
-    auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, a) == multibody::Backend::banded; };
+    auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, s.ring, a) == multibody::Backend::banded; };
     if (count > 0)
       return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
                  ? n * (420.0 + 33.0 * count)

@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
+#include "multibody/attachments.hpp"
 #include "multibody/modes.hpp"
+#include "multibody/statics.hpp"
 #include "ring/closed_form.hpp"
 #include "support/close.hpp"
 #include "support/paper.hpp"
@@ -147,6 +150,90 @@ TEST(MultibodyAttachments, RigidModesAreTheMotionsTheSupportsLeave) {
     EXPECT_EQ(c.spec.rigid_modes(), c.rigid) << c.what;
     EXPECT_EQ(modes(c.spec, 40, 4).rigid_modes, c.rigid) << c.what;
   }
+}
+
+// The terms' gradient and Hessian against central differences of their energy, on a chain
+// moved far from rest (angles perturbed by 0.2 rad), free and pinned, with every term.
+TEST(MultibodyAttachments, GradientAndHessianAreThoseOfTheEnergy) {
+  for (bool free : {true, false}) {
+    ring::RingSpec spec = free ? ringtest::free_ring() : ringtest::pinned_ring(0.0);
+    spec.foundation = {500.0, 300.0};
+    spec.supports.springs = {{90.0, 1e4, 2e4, 3e5}};
+    if (!free) spec.supports.clamp = 0.0;
+    ring::MultibodyOptions o;
+    o.n = 12;
+    const multibody::Chain chain(spec, o);
+    const multibody::detail::Attachments terms(chain, spec);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> d(-0.2, 0.2);
+    multibody::Vector q = chain.q0();
+    for (int i = 0; i < q.size(); ++i) q[i] += d(rng);
+    multibody::Vector g = multibody::Vector::Zero(q.size());
+    multibody::Matrix H = multibody::Matrix::Zero(q.size(), q.size());
+    terms.add_stiffness(q, g, &H);
+    const double h = 1e-5;  // central differences: truncation h^2 E'''/6, about 1e-10 of the scale
+    for (int j = 0; j < q.size(); ++j) {
+      multibody::Vector qp = q, qm = q;
+      qp[j] += h;
+      qm[j] -= h;
+      EXPECT_NEAR(g[j], (terms.energy(qp) - terms.energy(qm)) / (2 * h), 1e-6 * (1.0 + g.cwiseAbs().maxCoeff())) << j;
+      multibody::Vector gp = multibody::Vector::Zero(q.size()), gm = gp;
+      terms.add_stiffness(qp, gp, nullptr);
+      terms.add_stiffness(qm, gm, nullptr);
+      const multibody::Vector col = (gp - gm) / (2 * h);
+      EXPECT_LT((H.col(j) - col).cwiseAbs().maxCoeff(), 1e-6 * (1.0 + H.cwiseAbs().maxCoeff()))
+          << "free " << free << " column " << j;
+    }
+  }
+}
+
+// A small radial point load F at 0 deg on the free ring on a foundation: the inextensional
+// Fourier modes a_k (w = a_k cos k theta, v = -a_k sin(k theta)/k) decouple, with stiffness
+// K_k = pi (EI (k^2 - 1)^2 / R^3 + R (k_r + k_t / k^2)) and load F, so w(0) = sum_{k>=1} F / K_k
+// (k = 0 has no inextensional radial mode). The chain's statics converge to it at order 2.
+TEST(MultibodyAttachments, StaticsOnAFoundationConvergeToTheFourierSeries) {
+  ring::RingSpec spec = ringtest::free_ring();
+  spec.foundation = {500.0, 300.0};
+  const double F = 1.0;  // N: w ~ 4e-5 m = 4e-6 R, geometric nonlinearity ~1e-11 relative
+  double exact = 0.0;
+  for (int k = 1; k <= 100000; ++k) {
+    const double k2 = double(k) * k;
+    exact += F / (M_PI * (spec.EI() * (k2 - 1) * (k2 - 1) / std::pow(spec.radius, 3) +
+                          spec.radius * (spec.foundation.radial + spec.foundation.tangential / k2)));
+  }
+  ring::StaticOptions st;
+  st.load.angle = 0.0;
+  st.load.force = {F, 0.0};
+  st.steps = 1;
+  st.record = {0.0};
+  std::vector<double> err;
+  for (int n : {80, 160, 320}) {
+    ring::MultibodyOptions o;
+    o.n = n;
+    const ring::StaticResult r = multibody::solve_static(spec, o, st);
+    err.push_back(ringtest::rel(r.displacements[0].ux, exact));
+  }
+  EXPECT_NEAR(std::log2(err[1] / err[2]), 2.0, 0.15) << err[1] << " " << err[2];
+  EXPECT_LT(err[2], 1e-3);
+}
+
+// Two pins and a clamp hold the ring without a roller: the pinned points stay where they are
+// (to the Newton tolerance) while the loaded crown moves with the load.
+TEST(MultibodyAttachments, StaticsWithPinsAndAClampHoldThePinnedPoints) {
+  ring::RingSpec spec = ringtest::pinned_ring(180.0);
+  spec.supports.pins = {0.0};
+  spec.supports.clamp = 180.0;
+  ring::StaticOptions st;
+  st.load.angle = 90.0;
+  st.load.force = {0.0, -2e4};
+  st.steps = 4;
+  st.record = {0.0, 90.0, 180.0};
+  ring::MultibodyOptions o;
+  o.n = 40;
+  const ring::StaticResult r = multibody::solve_static(spec, o, st);
+  EXPECT_LT(std::hypot(r.displacements[0].ux, r.displacements[0].uy), 1e-10) << "the second pin moved";
+  EXPECT_LT(std::hypot(r.displacements[2].ux, r.displacements[2].uy), 1e-12) << "the pin moved";
+  EXPECT_LT(r.displacements[1].uy, 0.0) << "the crown moves with the load";
 }
 
 receptance::Ring continuum(const ring::RingSpec& spec) { return {spec.radius, spec.EI(), spec.rhoA()}; }
