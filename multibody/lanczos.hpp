@@ -24,7 +24,8 @@
 //
 // ## Cost
 // Per step: two Riccati solves, one M and three S products (O(n)), 2 k N to 4 k N for
-// the reorthogonalization (k = step). Memory: N x (steps + 1) doubles.
+// the reorthogonalization (k = step; the update w -= V h taken 8 columns at a time, see
+// lanczos.cpp). Memory: N x (steps + 1) doubles; the Ritz vectors overwrite the basis.
 #pragma once
 
 #include "multibody/shifted_solve.hpp"
