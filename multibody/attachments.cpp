@@ -17,30 +17,14 @@ int hinge(const Chain& chain, double deg, const std::string& key) {
   return chain.hinge_at(deg);
 }
 
-/// d u_k / d q at the rest n-gon (2 x dofs): columns j < k are c_j = l e'(phi0_j); the
-/// free ring's (x_0, y_0) columns are the identity.
-Matrix hinge_map(const Chain& chain, int k) {
-  Matrix P = Matrix::Zero(2, chain.dofs());
-  for (int j = 0; j < k; ++j) P.col(j) << -chain.l() * std::sin(chain.phi0()[j]), chain.l() * std::cos(chain.phi0()[j]);
-  if (chain.free()) P.rightCols(2).setIdentity();
-  return P;
-}
-
-/// d(rotation of hinge h) / d q: the mean of its two segments' rotations.
-Vector hinge_rotation_map(const Chain& chain, int h) {
-  Vector a = Vector::Zero(chain.dofs());
-  a[(h + chain.n() - 1) % chain.n()] += 0.5;
-  a[h] += 0.5;
-  return a;
-}
-
-/// sum_k P_k^T B[k] P_k through the suffix sums of B (file comment). O(n^2).
-Matrix pull_back(const Chain& chain, const std::vector<Eigen::Matrix2d>& B) {
+/// sum_k (d u_k/dq)^T B[k] (d u_k/dq) at the angles of q, through the suffix sums of B
+/// (file comment). O(n^2).
+Matrix pull_back(const Chain& chain, const Vector& q, const std::vector<Eigen::Matrix2d>& B) {
   const int n = chain.n(), N = chain.dofs();
   std::vector<Eigen::Matrix2d> S(n + 1, Eigen::Matrix2d::Zero());
   for (int k = n - 1; k >= 0; --k) S[k] = S[k + 1] + B[k];
   Eigen::Matrix2Xd c(2, n);
-  for (int j = 0; j < n; ++j) c.col(j) << -chain.l() * std::sin(chain.phi0()[j]), chain.l() * std::cos(chain.phi0()[j]);
+  for (int j = 0; j < n; ++j) c.col(j) << -chain.l() * std::sin(q[j]), chain.l() * std::cos(q[j]);
   Matrix K = Matrix::Zero(N, N);
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j <= i; ++j) K(i, j) = K(j, i) = c.col(i).dot(S[i + 1] * c.col(j));
@@ -54,50 +38,125 @@ Matrix pull_back(const Chain& chain, const std::vector<Eigen::Matrix2d>& B) {
   return K;
 }
 
+/// The mean rotation of hinge h's two segments (h - 1 cyclic) as a row on q: its value is
+/// (q[h-1] + q[h]) / 2.
+void add_mean_rotation(const Chain& chain, int h, double scale, Vector& v) {
+  v[(h + chain.n() - 1) % chain.n()] += 0.5 * scale;
+  v[h] += 0.5 * scale;
+}
+
 }  // namespace
 
-LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {
-  const int n = chain.n(), N = chain.dofs();
-  std::vector<Eigen::Matrix2d> stiff(n, Eigen::Matrix2d::Zero()), mass(n, Eigen::Matrix2d::Zero());
-  LinearTerms t;
-  t.K = Matrix::Zero(N, N);
-  t.M = Matrix::Zero(N, N);
-
+Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
+    : chain_(chain),
+      stiff_(chain.n(), Eigen::Matrix2d::Zero()),
+      mass_(chain.n(), Eigen::Matrix2d::Zero()),
+      rot_k_(chain.n(), 0.0),
+      rot_j_(chain.n(), 0.0),
+      q0_(chain.q0()) {
+  const int n = chain.n();
   if (spec.foundation.any())
     for (int k = 0; k < n; ++k) {
-      const Eigen::Vector2d r = chain.hinge_rest(k).normalized(), tan(-r.y(), r.x());
-      stiff[k] += chain.l() * (spec.foundation.radial * r * r.transpose() +
-                               spec.foundation.tangential * tan * tan.transpose());
+      const Eigen::Vector2d r = chain.hinge_rest(k).normalized(), t(-r.y(), r.x());
+      stiff_[k] += chain.l() * (spec.foundation.radial * r * r.transpose() + spec.foundation.tangential * t * t.transpose());
     }
+  std::vector<double> kr(n, 0.0);  // rotational springs to the ground, by hinge (a clamp: infinite)
   for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
     const ring::Spring& s = spec.supports.springs[i];
     const int h = hinge(chain, s.angle, "supports.springs[" + std::to_string(i + 1) + "]");
-    stiff[h].diagonal() += Eigen::Vector2d(s.kx, s.ky);
-    const Vector a = hinge_rotation_map(chain, h);
-    t.K += s.kr * a * a.transpose();
+    stiff_[h].diagonal() += Eigen::Vector2d(s.kx, s.ky);
+    kr[h] += s.kr;
   }
+  if (spec.supports.clamp) kr[hinge(chain, *spec.supports.clamp, "supports.clamp")] = HUGE_VAL;
+  // psi condensed: 4K and kr in series on the mean rotation, psi = 4K m / (4K + kr) (file comment).
+  const double k4 = 4.0 * chain.K();
+  for (int h = 0; h < n; ++h)
+    if (kr[h] > 0.0) rot_k_[h] = std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h]);
   for (std::size_t i = 0; i < spec.masses.size(); ++i) {
     const ring::PointMass& pm = spec.masses[i];
     const int h = hinge(chain, pm.angle, "masses[" + std::to_string(i + 1) + "]");
-    mass[h].diagonal().array() += pm.mass;
-    const Vector a = hinge_rotation_map(chain, h);
-    t.M += pm.inertia * a * a.transpose();
+    mass_[h].diagonal().array() += pm.mass;
+    const double follows = std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
+    rot_j_[h] += pm.inertia * follows * follows;
   }
-  t.K += pull_back(chain, stiff);
-  t.M += pull_back(chain, mass);
+  for (double p : spec.supports.pins) pins_.push_back(hinge(chain, p, "supports.pins"));
+}
 
-  std::vector<Matrix> rows;
-  for (double p : spec.supports.pins) rows.push_back(hinge_map(chain, hinge(chain, p, "supports.pins")));
-  if (spec.supports.clamp)
-    rows.push_back(hinge_rotation_map(chain, hinge(chain, *spec.supports.clamp, "supports.clamp")).transpose());
-  int count = 0;
-  for (const Matrix& r : rows) count += static_cast<int>(r.rows());
-  t.J.resize(count, N);
-  int at = 0;
-  for (const Matrix& r : rows) {
-    t.J.middleRows(at, r.rows()) = r;
-    at += static_cast<int>(r.rows());
+double Attachments::energy(const Vector& q) const {
+  const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
+  double e = 0.0;
+  for (int k = 0; k < chain_.n(); ++k) {
+    const Eigen::Vector2d u = p.col(k) - chain_.hinge_rest(k);
+    e += 0.5 * u.dot(stiff_[k] * u);
+    if (rot_k_[k] > 0.0) {
+      const int j = (k + chain_.n() - 1) % chain_.n();
+      const double dm = 0.5 * (q[j] - q0_[j] + q[k] - q0_[k]);
+      e += 0.5 * rot_k_[k] * dm * dm;
+    }
   }
+  return e;
+}
+
+void Attachments::add_stiffness(const Vector& q, Vector& grad, Matrix* hess) const {
+  const int n = chain_.n();
+  const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
+  // F_m = sum_{k >= m} B_k u_k; grad_j = c_j . F_{j+1} (file comment).
+  std::vector<Eigen::Vector2d> F(n + 1, Eigen::Vector2d::Zero());
+  for (int k = n - 1; k >= 0; --k) F[k] = F[k + 1] + stiff_[k] * (p.col(k) - chain_.hinge_rest(k));
+  for (int j = 0; j < n; ++j) {
+    const Eigen::Vector2d c(-chain_.l() * std::sin(q[j]), chain_.l() * std::cos(q[j]));
+    grad[j] += c.dot(F[j + 1]);
+  }
+  if (chain_.free()) grad.tail<2>() += F[0];
+  for (int h = 0; h < n; ++h)
+    if (rot_k_[h] > 0.0) {
+      const int j = (h + n - 1) % n;
+      add_mean_rotation(chain_, h, rot_k_[h] * 0.5 * (q[j] - q0_[j] + q[h] - q0_[h]), grad);
+    }
+  if (!hess) return;
+  *hess += pull_back(chain_, q, stiff_);
+  for (int j = 0; j < n; ++j)
+    (*hess)(j, j) -= chain_.l() * (std::cos(q[j]) * F[j + 1].x() + std::sin(q[j]) * F[j + 1].y());
+  for (int h = 0; h < n; ++h)
+    if (rot_k_[h] > 0.0) {
+      Vector a = Vector::Zero(chain_.dofs());
+      add_mean_rotation(chain_, h, 1.0, a);
+      *hess += rot_k_[h] * a * a.transpose();
+    }
+}
+
+Matrix Attachments::rest_mass() const {
+  Matrix M = pull_back(chain_, q0_, mass_);
+  for (int h = 0; h < chain_.n(); ++h)
+    if (rot_j_[h] > 0.0) {
+      Vector a = Vector::Zero(chain_.dofs());
+      add_mean_rotation(chain_, h, 1.0, a);
+      M += rot_j_[h] * a * a.transpose();
+    }
+  return M;
+}
+
+Chain::ConstraintKinematics Attachments::pins(const Vector& q) const {
+  const int rows = pin_rows();
+  Chain::ConstraintKinematics k{Vector(rows), Matrix::Zero(rows, chain_.dofs()), Matrix::Zero(rows, chain_.dofs())};
+  for (std::size_t i = 0; i < pins_.size(); ++i) {
+    const int h = pins_[i], r = 2 * static_cast<int>(i);
+    k.g.segment<2>(r) = chain_.hinge_position(q, h) - chain_.hinge_rest(h);
+    k.G.middleRows(r, 2) = chain_.hinge_jacobian(q, h);
+    for (int j = 0; j < h; ++j) k.hess.block(r, j, 2, 1) = -chain_.l() * Eigen::Vector2d(std::cos(q[j]), std::sin(q[j]));
+  }
+  return k;
+}
+
+LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {
+  const Attachments a(chain, spec);
+  const Vector q0 = chain.q0();
+  LinearTerms t;
+  t.K = Matrix::Zero(chain.dofs(), chain.dofs());
+  Vector grad = Vector::Zero(chain.dofs());
+  a.add_stiffness(q0, grad, &t.K);  // at rest u = 0: no curvature term, no force
+  t.M = a.rest_mass();
+  t.J = a.pins(q0).G;
   return t;
 }
 

@@ -41,6 +41,14 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
   return options.n >= sparse_crossover(analysis) ? Backend::banded : Backend::dense;
 }
 
+/// The backend of `analysis` on `spec`: "auto" also stays dense when the spec has terms
+/// beyond the paper's (supports.pins, clamp, springs, masses, foundation), which only the
+/// dense paths assemble (attachments.hpp). O(1).
+inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, Analysis analysis) {
+  if (options.method == ring::MultibodyOptions::Method::automatic && !spec.paper_terms_only()) return Backend::dense;
+  return backend(options, analysis);
+}
+
 /// The modes' backend for `count` modes of `spec`: "auto" also stays dense when the pairs
 /// computed, min(r, count + rigid modes + 2), exceed a third of the r = n [+ 2 free] - c
 /// unknowns, and when the spec has terms beyond the paper's (supports.pins, clamp,
@@ -48,10 +56,9 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, int count) {
   const ring::Supports& supports = spec.supports;
   const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2);
-  if (options.method == ring::MultibodyOptions::Method::automatic &&
-      (3 * std::min(r, count + spec.rigid_modes() + 2) > r || !spec.paper_terms_only()))
+  if (options.method == ring::MultibodyOptions::Method::automatic && 3 * std::min(r, count + spec.rigid_modes() + 2) > r)
     return Backend::dense;
-  return backend(options, Analysis::modes);
+  return backend(options, spec, Analysis::modes);
 }
 
 }  // namespace multibody

@@ -30,14 +30,17 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
                                 "); use method = \"dense\" or \"auto\"");
 }
 
-void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::StaticOptions& statics) {
-  ring::refuse_terms_beyond_paper(spec, "multibody statics");
-  if (!spec.supports.pin) throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
+void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
+  // The O(n) statics (hinge positions) assemble the paper's terms only; "auto" keeps the rest dense.
+  if (backend(options, spec, Analysis::statics) == Backend::banded && !spec.paper_terms_only())
+    ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
-  // Without a roller the rigid rotation about the pin is free and K is singular in it:
-  // the dead load then turns the ring until it hangs along its line of action. The
-  // tangent stays regular only away from that, so refuse rather than guess.
-  if (!spec.supports.roller)
+  // A rigid motion the supports leave makes K singular in it: the dead load then turns the
+  // ring until it hangs along its line of action. The tangent stays regular only away from
+  // that, so refuse rather than guess.
+  if (!spec.supports.pin && spec.rigid_modes() > 0)
+    throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
+  if (spec.rigid_modes() > 0)
     throw std::invalid_argument(
         "multibody::solve_static: needs a roller as well as a pin (supports.roller), "
         "otherwise the ring is free to turn about the pin");

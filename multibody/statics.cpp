@@ -9,6 +9,7 @@
 
 #include "ring/errors.hpp"
 
+#include "multibody/attachments.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/natural.hpp"
 #include "multibody/dynamics_model.hpp"
@@ -37,25 +38,30 @@ namespace {
 /// multipliers scaled by sc = K / l (G on the scale of the springs), by dense LU: O(n^3).
 class AngleStatics : public detail::StaticEquilibrium {
  public:
-  AngleStatics(const Chain& chain, const detail::DeadLoad& load, double depth)
+  AngleStatics(const Chain& chain, const ring::RingSpec& spec, const detail::DeadLoad& load, double depth)
       : StaticEquilibrium(chain, depth),
         load_(load),
+        terms_(chain, spec),
         K_(chain.stiffness_matrix()),
         n_(chain.dofs()),
-        c_(chain.constraint_count()),
+        c_(chain.constraint_count() + terms_.pin_rows()),
         sc_(chain.K() / chain.l()) {}
   Eigen::Index size() const override { return n_ + c_; }
   Eigen::Index arc_size() const override { return n_; }
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
     const Vector q = x.z.head(n_), lambda = x.z.tail(c_);
-    const Chain::ConstraintKinematics ck = chain_.constraint_kinematics(q);
+    const Chain::ConstraintKinematics ck = constraints(q);
     Vector phi, dphi;
     detail::load_forces(chain_, load_, q, phi, &dphi);
-    r.resize(n_ + c_);
-    r << chain_.spring_forces(q) + ck.G.transpose() * lambda - x.s * phi, ck.g;
-    if (!r.allFinite()) return false;
+    Vector forces = chain_.spring_forces(q);
     Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
     A.topLeftCorner(n_, n_) = K_;
+    Matrix terms_hessian = Matrix::Zero(n_, n_);
+    terms_.add_stiffness(q, forces, &terms_hessian);
+    A.topLeftCorner(n_, n_) += terms_hessian;
+    r.resize(n_ + c_);
+    r << forces + ck.G.transpose() * lambda - x.s * phi, ck.g;
+    if (!r.allFinite()) return false;
     A.diagonal().head(n_) += ck.hess.transpose() * lambda - x.s * dphi;
     A.block(0, n_, n_, c_) = sc_ * ck.G.transpose();
     A.block(n_, 0, c_, n_) = sc_ * ck.G;
@@ -83,7 +89,22 @@ class AngleStatics : public detail::StaticEquilibrium {
   }
 
  private:
+  /// The chain's constraints, then the further pins' rows (attachments.hpp).
+  Chain::ConstraintKinematics constraints(const Vector& q) const {
+    Chain::ConstraintKinematics ck = chain_.constraint_kinematics(q);
+    if (terms_.pin_rows() == 0) return ck;
+    const Chain::ConstraintKinematics p = terms_.pins(q);
+    ck.g.conservativeResize(c_);
+    ck.g.tail(p.g.size()) = p.g;
+    ck.G.conservativeResize(c_, Eigen::NoChange);
+    ck.G.bottomRows(p.G.rows()) = p.G;
+    ck.hess.conservativeResize(c_, Eigen::NoChange);
+    ck.hess.bottomRows(p.hess.rows()) = p.hess;
+    return ck;
+  }
+
   const detail::DeadLoad load_;
+  const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
   const Matrix K_;  ///< the dense path's n x n stiffness, built only here
   const Eigen::Index n_, c_;
   const double sc_;
@@ -98,11 +119,11 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   const Chain ch(spec, options, statics.load.angle);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
-  if (backend(options, Analysis::statics) == Backend::banded)
+  if (backend(options, spec, Analysis::statics) == Backend::banded)
     eq = natural::static_equilibrium(ch, statics, depth);
   else
     eq = std::make_unique<AngleStatics>(
-        ch, detail::DeadLoad{ch.hinge_at(statics.load.angle), {statics.load.force[0], statics.load.force[1]}}, depth);
+        ch, spec, detail::DeadLoad{ch.hinge_at(statics.load.angle), {statics.load.force[0], statics.load.force[1]}}, depth);
   const paths::Continuation policy{statics.steps};
   const paths::Trace path = paths::follow(*eq, {eq->rest(), 0.0}, policy);
   if (path.end != paths::Trace::End::reached)

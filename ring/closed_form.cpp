@@ -16,10 +16,12 @@ std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k) {
   if (k < 0) throw std::invalid_argument("free_ring_extensible: k must be >= 0, got " + std::to_string(k));
   const double R = spec.radius, kk = k;
   const double a = spec.EA() / (R * R), b = spec.EI() / (R * R * R * R);
-  const double k11 = a + b * kk * kk * kk * kk;
-  const double k22 = (a + b) * kk * kk;
-  // det K = a b k^2 (k^2 - 1)^2, written so that the k = 1 zero is exact.
-  const double det = a * b * kk * kk * (kk * kk - 1.0) * (kk * kk - 1.0);
+  const double kr = spec.foundation.radial, kt = spec.foundation.tangential;
+  const double k11 = a + b * kk * kk * kk * kk + kr;
+  const double k22 = (a + b) * kk * kk + kt;
+  // det K = a b k^2 (k^2 - 1)^2 without the foundation, written so that the k = 1 zero is
+  // exact; the foundation adds kr k22' + kt k11' + kr kt (k11', k22' without it).
+  const double det = a * b * kk * kk * (kk * kk - 1.0) * (kk * kk - 1.0) + kr * (k22 - kt) + kt * (k11 - kr) + kr * kt;
   const double tr = k11 + k22;
   const double disc = std::sqrt(std::max(tr * tr - 4.0 * det, 0.0));
   const double upper = 0.5 * (tr + disc);

@@ -23,6 +23,9 @@ double free_ring_inextensional(const RingSpec& spec, int k);
 ///      + \frac{EI}{R^4}\begin{pmatrix}k^4&k^3\\k^3&k^2\end{pmatrix},\ M = \rho A\,I \f$
 /// (Soedel, sec. 6.6; Kirkhope 1976). Returns {flexural (lower), extensional (upper)}
 /// in rad/s. k = 0: {0, breathing}; k = 1: {0 (rigid translation), upper}.
+/// A Winkler foundation (spec.foundation) adds diag(k_r, k_t) to K (its energy
+/// R/2 int (k_r w^2 + k_t u^2) on the same Fourier mode): k = 0 gives {sqrt(k_t/(rho A)),
+/// breathing}; without one the values are the free ring's.
 std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k);
 
 /// The free, inextensible thin ring on a Winkler foundation (spec.foundation: radial k_r,

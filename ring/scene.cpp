@@ -435,10 +435,14 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
     r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "steps", "record"});
-    if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a static analysis needs a pin (the ring is free)");
-    if (!s.ring.supports.roller)
-      r.fail("supports.roller", &root,
-             "a static analysis needs a roller as well as the pin: without it the ring can turn about the pin");
+    // A dead load has an equilibrium only when nothing is left to move rigidly.
+    if (const int rigid = s.ring.rigid_modes(); rigid > 0)
+      r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
+             s.ring.supports.pin
+                 ? "a static analysis needs a roller as well as the pin (or a second pin, a clamp, springs or a "
+                   "foundation): without it the ring can turn about the pin"
+                 : "a static analysis needs a pin (or springs or a foundation that hold the ring): the ring is free (" +
+                       std::to_string(rigid) + " rigid modes)");
     StaticOptions o;
     o.load = read_load(r, *t, sec, false);
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
@@ -890,6 +894,12 @@ std::string read_scene_text(const std::string& path) {
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema) {
   return parse_scene(read_scene_text(path), path, overrides, schema);
+}
+
+std::string toml_quoted(std::string_view s) {
+  std::string o;
+  append_quoted(o, s);
+  return o;
 }
 
 }  // namespace ring

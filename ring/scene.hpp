@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -138,6 +139,9 @@ std::string read_scene_text(const std::string& path);
 /// Throws InputError naming `where` for text that is not one non-empty TOML array, or
 /// nests deeper than kMaxNesting.
 std::vector<std::string> toml_array_items(const std::string& text, const std::string& where);
+
+/// `s` as a TOML basic string ("..." with escapes; one line, whatever it holds).
+std::string toml_quoted(std::string_view s);
 
 /// Same as load_scene, from TOML text; `name` is used in messages in place of a file name.
 Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,

@@ -21,6 +21,9 @@ packages=(
   libxml2-utils            # xmllint: the tests check that JUnit output parses
   time                     # /usr/bin/time -v: peak memory in bench/process.sh
   clang libclang-rt-14-dev # libFuzzer + sanitizers: the scene reader's fuzzer (tests/fuzz)
+  pybind11-dev python3-dev # the Python module (python/)
+  python3-numpy            # its results as NumPy arrays
+  python3-pytest           # its tests (tests/python)
 )
 
 missing=()

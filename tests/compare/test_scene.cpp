@@ -123,6 +123,61 @@ TEST(SceneReject, RollerWithoutPin) { expect_rejected(replace(kPaper, "pin = 180
 TEST(SceneReject, RollerAtThePin) {
   expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nroller = -180.0"), "supports.roller", "different angle");
 }
+// The ring beyond the paper (README, scene reference: supports, masses, foundation).
+TEST(SceneParse, SupportsMassesAndFoundationReadAsWritten) {
+  const ring::Scene s = cmp::parse_scene(
+      replace(replace(kPaper, "pin = 180.0",
+                      "clamp = 90.0\npins = [180.0, 270.0]\nsprings = [{at = 0.0, kx = 1e4, kr = 2e3}]\n"),
+              "title = \"t\"\n", "title = \"t\"\nmasses = [{at = 45.0, mass = 12.5, inertia = 0.5}]\n") +
+          "[foundation]\nradial = 400.0\ntangential = 100.0\n",
+      "good.toml");
+  const ring::Supports& sup = s.ring.supports;
+  ASSERT_TRUE(sup.pin && sup.clamp);
+  EXPECT_EQ(*sup.pin, 90.0) << "without a pin the clamp anchors the nodes";
+  EXPECT_EQ(sup.pins, (std::vector<double>{180.0, 270.0}));
+  ASSERT_EQ(sup.springs.size(), 1u);
+  EXPECT_EQ(sup.springs[0].kx, 1e4);
+  EXPECT_EQ(sup.springs[0].ky, 0.0);
+  EXPECT_EQ(sup.springs[0].kr, 2e3);
+  ASSERT_EQ(s.ring.masses.size(), 1u);
+  EXPECT_EQ(s.ring.masses[0].angle, 45.0);
+  EXPECT_EQ(s.ring.masses[0].inertia, 0.5);
+  EXPECT_EQ(s.ring.foundation.radial, 400.0);
+  EXPECT_EQ(s.ring.foundation.tangential, 100.0);
+  EXPECT_EQ(s.ring.rigid_modes(), 0);
+}
+TEST(SceneParse, AClampAtThePinClampsIt) {
+  const ring::Scene s = cmp::parse_scene(replace(kPaper, "pin = 180.0", "pin = 180.0\nclamp = 180.0"), "good.toml");
+  EXPECT_EQ(*s.ring.supports.pin, 180.0);
+  EXPECT_TRUE(s.ring.supports.pins.empty());
+}
+TEST(SceneReject, TwoPinsAtOnePoint) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\npins = [180.0]"), "supports.pins", "two supports at 180");
+}
+TEST(SceneReject, SpringWithoutStiffness) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nsprings = [{at = 0.0}]"), "supports.springs[1]", "kx, ky or kr");
+}
+TEST(SceneReject, NegativeSpring) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nsprings = [{at = 0.0, ky = -1.0}]"),
+                  "supports.springs[1].ky", ">= 0");
+}
+TEST(SceneReject, SpringOffTheNodes) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nsprings = [{at = 1.0, kx = 1.0}]"),
+                  "supports.springs[1]", "not a node");
+}
+TEST(SceneReject, MassWithoutAPoint) {
+  expect_rejected(replace(kPaper, "title = \"t\"\n", "title = \"t\"\nmasses = [{mass = 1.0}]\n"), "masses[1].at", "missing");
+}
+TEST(SceneReject, MassUnknownKey) {
+  expect_rejected(replace(kPaper, "title = \"t\"\n", "title = \"t\"\nmasses = [{at = 0.0, mas = 1.0}]\n"),
+                  "masses[1].mas", "did you mean 'mass'");
+}
+TEST(SceneReject, NegativeFoundation) {
+  expect_rejected(kPaper + "[foundation]\nradial = -5.0\n", "foundation.radial", ">= 0");
+}
+TEST(SceneReject, ForeignFoundationKey) {
+  expect_rejected(kPaper + "[foundation]\naxial = 5.0\n", "foundation.axial", "unknown key");
+}
 TEST(SceneReject, UnknownSolverName) { expect_rejected(replace(kPaper, "\"lumped\"]", "\"sap5\"]"), "modes.solvers", "\"sap5\""); }
 TEST(SceneReject, SolverListedTwice) { expect_rejected(replace(kPaper, "\"lumped\"]", "\"multibody\"]"), "modes.solvers", "twice"); }
 TEST(SceneReject, UnknownVariant) { expect_rejected(replace(kPaper, "n = 40\n[modes]", "n = 40\nvariant = \"frames\"\n[modes]"), "lumped.variant"); }

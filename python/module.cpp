@@ -1,0 +1,392 @@
+// The `ringvib` Python module: the command's analyses over the registry (compare/), with
+// results as NumPy arrays. Every function does what the command of the same name does with
+// the same scene and overrides (the same checks, the same solver calls), so that each value
+// equals the command's JSON (tests/python). The GIL is released while a solver runs; FE
+// solves take turns (compare/fem_module.cpp), the other solvers run in parallel.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdlib>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "compare/nonlinear.hpp"
+#include "compare/registry.hpp"
+#include "compare/runner.hpp"
+#include "compare/table.hpp"
+#include "python/convert.hpp"
+#include "ring/errors.hpp"
+#include "ring/scene.hpp"
+
+namespace py = pybind11;
+using namespace ringvib_py;
+
+namespace {
+
+/// A scene as the module keeps it: its TOML text (read once), the name messages use (the
+/// path), the overrides in order, and the validated scene they give.
+struct Scene {
+  std::string text, name;
+  std::vector<std::string> overrides;
+  ring::Scene scene;
+
+  static Scene parse(std::string text, std::string name, std::vector<std::string> overrides) {
+    Scene s{std::move(text), std::move(name), std::move(overrides), {}};
+    s.scene = cmp::parse_scene(s.text, s.name, s.overrides);
+    return s;
+  }
+};
+
+/// The scene narrowed to `solver` for one nonlinear analysis, as `ringvib static|respond
+/// --solver NAME` narrows it (compare/commands.cpp): that solver alone and no reference.
+ring::Scene narrowed(ring::Scene s, ring::NonlinearRequest ring::Scene::*request, const std::string& solver) {
+  if (!solver.empty()) {
+    (s.*request).solvers = {solver};
+    (s.*request).reference = false;
+  }
+  return s;
+}
+
+/// The one solver a single-solver result is for: `solver`, or the only one the scene lists.
+std::string single(const ring::Scene& s, const ring::NonlinearRequest& q, const std::string& solver,
+                   const std::string& key, const std::string& table_function) {
+  if (!solver.empty()) return solver;
+  if (q.solvers.size() == 1 && !q.reference) return q.solvers.front();
+  throw ring::InputError(s.file, key,
+                         "the scene runs several solvers (or a reference); name one with solver=NAME, or "
+                         "compare them with ringvib." +
+                             table_function + "(scene)");
+}
+
+/// Runs `f`; a solver's std::invalid_argument ("can never work") becomes the InputError the
+/// command reports with exit 2, naming the scene (compare/main.cpp).
+template <class F>
+auto input_checked(const ring::Scene& s, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw ring::InputError(s.file, "", e.what());
+  }
+}
+
+py::object json_rows(const std::string& json) { return py::module_::import("json").attr("loads")(json)["rows"]; }
+
+const char* const kBudgetDoc =
+    "max_memory_gib: the cost guard's budget (GiB; the command's --max-memory), force: skip the\n"
+    "guard (--force).";
+
+}  // namespace
+
+PYBIND11_MODULE(ringvib, m) {
+  m.doc() =
+      "ringvib: in-plane vibration, statics and forced response of circular rings, computed by\n"
+      "independent solvers (the multibody chain of Yin & Wang 1989/90, lumped masses, deal.II\n"
+      "finite elements). The same analyses as the `ringvib` command, results as NumPy arrays.\n"
+      "SI units: m, kg, s, N, Pa; frequencies angular (rad/s); angles in degrees counter-\n"
+      "clockwise from +x; radial displacement positive outward, tangential counter-clockwise.\n\n"
+      "    import ringvib\n"
+      "    s = ringvib.Scene.load('scenes/paper1990.toml', set={'multibody.n': 160})\n"
+      "    m = ringvib.modes(s, 'multibody')\n"
+      "    m.omega          # rad/s, ascending, rigid modes left out\n\n"
+      "Bad input raises ringvib.InputError (a ValueError), a numerical failure\n"
+      "ringvib.NumericalError. Nothing is printed.";
+  m.attr("__version__") = RINGVIB_VERSION;
+  m.attr("STATIONS") = ring::kStations;
+
+#ifdef RINGVIB_FEM_PLUGIN
+  // The FE plug-in of this build tree, unless the caller named another.
+  setenv("RINGVIB_FEM_MODULE", RINGVIB_FEM_PLUGIN, /*overwrite=*/0);
+#endif
+
+  register_errors(m);
+
+  py::class_<Scene>(m, "Scene",
+                    "A scene: what to compute (README, 'Scene reference'), read and validated once.\n"
+                    "Immutable; Scene.with_() gives a new scene with more overrides.")
+      .def_static(
+          "load",
+          [](const std::string& path, py::object set) {
+            std::vector<std::string> o = overrides_from(set);
+            std::string text = ring::read_scene_text(path);
+            return Scene::parse(std::move(text), path, std::move(o));
+          },
+          py::arg("path"), py::arg("set") = py::none(),
+          "Reads the scene file at `path` (TOML, at most 1 MiB) with the overrides of `set`, a\n"
+          "dict {'section.key': value} (the command's --set; values as Python bool, int, float,\n"
+          "str, list or dict, written as TOML). Raises InputError naming the file and the key.")
+      .def_static(
+          "from_toml",
+          [](const std::string& text, const std::string& name, py::object set) {
+            return Scene::parse(text, name, overrides_from(set));
+          },
+          py::arg("text"), py::arg("name") = "<toml>", py::arg("set") = py::none(),
+          "A scene from TOML text; `name` stands for the file name in messages.")
+      .def(
+          "with_",
+          [](const Scene& s, py::object set, py::kwargs kw) {
+            std::vector<std::string> o = s.overrides;
+            for (const auto& x : overrides_from(set)) o.push_back(x);
+            // multibody__n=160 is multibody.n = 160 (a keyword cannot hold a dot).
+            for (auto [k, v] : kw) {
+              std::string key = k.cast<std::string>();
+              for (std::size_t at; (at = key.find("__")) != std::string::npos;) key.replace(at, 2, ".");
+              o.push_back(override_text(key, v));
+            }
+            return Scene::parse(s.text, s.name, std::move(o));
+          },
+          py::arg("set") = py::none(),
+          "The scene with more overrides, applied after this scene's: a dict {'section.key':\n"
+          "value}, or keywords with '__' for the dot: s.with_(multibody__n=160).")
+      .def_property_readonly(
+          "file", [](const Scene& s) { return s.scene.file; },
+          "The path it was read from, or the name given to from_toml.")
+      .def_property_readonly("title", [](const Scene& s) { return s.scene.title; })
+      .def_property_readonly(
+          "overrides", [](const Scene& s) { return s.overrides; },
+          "The overrides as the command's --set arguments ('multibody.n=160').")
+      .def_property_readonly(
+          "toml", [](const Scene& s) { return s.scene.resolved_toml; }, "The scene after the overrides, as TOML.")
+      .def_property_readonly(
+          "warnings", [](const Scene& s) { return s.scene.warnings; },
+          "What the command would print as warnings (the thin-ring assumption "
+          "stretched, ...); the module prints nothing.")
+      .def_property_readonly(
+          "modes_count", [](const Scene& s) { return s.scene.modes.count; },
+          "modes.count: elastic modes computed by default.")
+      .def(py::pickle(  // for a ProcessPoolExecutor: the text, the name and the overrides
+          [](const Scene& s) { return py::make_tuple(s.text, s.name, s.overrides); },
+          [](const py::tuple& t) {
+            return Scene::parse(t[0].cast<std::string>(), t[1].cast<std::string>(),
+                                t[2].cast<std::vector<std::string>>());
+          }))
+      .def("__repr__", [](const Scene& s) {
+        std::string r = "<ringvib.Scene " + py::repr(py::str(s.scene.file)).cast<std::string>();
+        if (!s.overrides.empty()) r += " set " + py::repr(py::cast(s.overrides)).cast<std::string>();
+        return r + ">";
+      });
+
+  py::class_<Modes>(m, "Modes", "The lowest elastic modes of one solver (`ringvib modes --json`).")
+      .def_readonly("solver", &Modes::solver)
+      .def_readonly("model", &Modes::model, "The discretization (n, degree, ...), as in the JSON's 'model'.")
+      .def_readonly("rigid_modes", &Modes::rigid_modes, "Zero modes found (0 to 3), not numbered.")
+      .def_readonly("omega", &Modes::omega, "Elastic angular frequencies, rad/s, ascending: ndarray (modes,).")
+      .def_readonly("shapes", &Modes::shapes,
+                    "Mode shapes at the common stations: ndarray (modes, 360, 2), [..., 0] radial (outward),\n"
+                    "[..., 1] tangential (counter-clockwise), each mode scaled so that its largest |component|\n"
+                    "is 1 and positive (dimensionless).")
+      .def_readonly("stations_deg", &Modes::stations_deg, "The stations' polar angles, degrees: ndarray (360,).")
+      .def_readonly("unknowns", &Modes::unknowns, "Size of the eigenproblem solved.")
+      .def_readonly("seconds", &Modes::seconds, "Solver wall time, s.")
+      .def_readonly("max_residual", &Modes::max_residual,
+                    "Largest relative eigen-residual ||Kx - w^2 Mx|| / (||Kx|| + w^2 ||Mx||) of the returned\n"
+                    "modes, in the norm residual_norm names (README, `modes --json`).")
+      .def_readonly("residual_norm", &Modes::residual_norm)
+      .def_readonly("error_estimate", &Modes::error_estimate,
+                    "Estimated remaining relative error of a converged reference (0: not estimated).")
+      .def_property_readonly(
+          "hz", [](const Modes& o) { return o.omega.attr("__truediv__")(2 * M_PI); }, "omega / 2 pi, Hz.")
+      .def("__repr__", [](const Modes& o) {
+        return "<ringvib.Modes " + o.solver + ": " + std::to_string(py::len(o.omega)) + " modes, " +
+               std::to_string(o.unknowns) + " unknowns>";
+      });
+
+  py::class_<Static>(m, "Static", "A nonlinear static equilibrium of one solver (`ringvib static --json`).")
+      .def_readonly("solver", &Static::solver)
+      .def_readonly("displacements", &Static::displacements,
+                    "The recorded points: structured ndarray with fields angle (deg), ux, uy (m, ring-centred\n"
+                    "frame).")
+      .def_readonly("nodes", &Static::nodes, "The deformed ring at every node: ndarray (nodes, 2) of x, y (m).")
+      .def_readonly("unknowns", &Static::unknowns, "Size of the nonlinear system.")
+      .def_readonly("steps", &Static::steps, "Load steps (or arc-length steps) taken.")
+      .def_readonly("newton_iterations", &Static::newton_iterations)
+      .def_readonly("seconds", &Static::seconds, "Solver wall time, s.")
+      .def("__repr__", [](const Static& o) { return "<ringvib.Static " + o.solver + ">"; });
+
+  py::class_<Response>(m, "Response", "A forced nonlinear response of one solver (`ringvib respond --csv`).")
+      .def_readonly("solver", &Response::solver)
+      .def_readonly("history", &Response::history,
+                    "One row per accepted step (t = 0 first): structured ndarray with the CSV's columns t (s),\n"
+                    "ux_<deg>, uy_<deg> per recorded point (m, ring-centred frame), kinetic, strain, work,\n"
+                    "energy_error (J), constraint_residual, newton_iterations (int).")
+      .def_readonly("record_angles", &Response::record_angles, "The recorded points, degrees: ndarray (points,).")
+      .def_readonly("t", &Response::t, "Time, s: ndarray (steps,).")
+      .def_readonly("ux", &Response::ux, "Displacement x, m: ndarray (points, steps).")
+      .def_readonly("uy", &Response::uy, "Displacement y, m: ndarray (points, steps).")
+      .def_readonly("snapshot_t", &Response::snapshot_t, "Instants of the deformed-ring snapshots, s.")
+      .def_readonly("snapshots", &Response::snapshots,
+                    "The deformed ring at each snapshot: list of ndarray (nodes, 2), m.")
+      .def_readonly("unknowns", &Response::unknowns, "Size of the nonlinear system per step.")
+      .def_readonly("seconds", &Response::seconds, "Solver wall time, s.")
+      .def("__repr__", [](const Response& o) {
+        return "<ringvib.Response " + o.solver + ": " + std::to_string(py::len(o.t)) + " steps>";
+      });
+
+  m.def(
+      "solvers",
+      [] {
+        py::list out;
+        for (const cmp::SolverEntry& e : cmp::registry()) {
+          py::list analyses;
+          if (e.modes) analyses.append("modes");
+          if (e.statics) analyses.append("static");
+          if (e.response) analyses.append("response");
+          py::dict d;
+          d["name"] = e.name;
+          d["label"] = e.label;
+          d["size_key"] = e.size_key;
+          d["size_name"] = e.size_name;
+          d["analyses"] = analyses;
+          out.append(d);
+        }
+        return out;
+      },
+      "The solver registry, in its order (the paper's method first): a list of dicts with name\n"
+      "(scene and command-line name), label (table header), size_key (the discretization key),\n"
+      "size_name and analyses ('modes', 'static', 'response').");
+
+  m.def(
+      "modes",
+      [](const Scene& s, const std::string& solver, std::optional<int> count, double max_memory_gib, bool force) {
+        ring::ModalResult r;
+        {
+          py::gil_scoped_release free;
+          // As `ringvib modes SCENE --solver NAME [--count K]`.
+          r = input_checked(s.scene, [&] {
+            cmp::check_runnable(s.scene, max_memory_gib, force);
+            const cmp::SolverEntry& e = cmp::solver(solver);
+            const int k = count.value_or(s.scene.modes.count);
+            if (count && *count < 1) throw ring::InputError(s.scene.file, "count", "expected at least 1 mode");
+            if (count && k > e.elastic_modes(s.scene))
+              throw ring::InputError(s.scene.file, "count",
+                                     std::to_string(k) + " modes asked, but the " + solver + " model has only " +
+                                         std::to_string(e.elastic_modes(s.scene)) + " elastic modes");
+            return e.modes(s.scene, k);
+          });
+        }
+        return to_python(r);
+      },
+      py::arg("scene"), py::arg("solver"), py::arg("count") = py::none(), py::kw_only(),
+      py::arg("max_memory_gib") = 8.0, py::arg("force") = false,
+      (std::string("The `count` (default modes.count) lowest elastic modes of `solver` ('multibody',\n"
+                   "'lumped', 'fem') under the scene's options: a Modes (omega in rad/s, shapes at 360\n"
+                   "stations). As `ringvib modes SCENE --solver NAME --json`. ") +
+       kBudgetDoc)
+          .c_str());
+
+  m.def(
+      "table",
+      [](const Scene& s, bool paper, double max_memory_gib, bool force) {
+        std::string json;
+        {
+          py::gil_scoped_release free;
+          json = input_checked(s.scene, [&] {
+            cmp::check_runnable(s.scene, max_memory_gib, force);
+            if (!cmp::modal(s.scene))
+              throw ring::InputError(s.scene.file, "modes",
+                                     "`table` compares natural frequencies, and the scene asks for none (add a "
+                                     "[modes] or [table] section, or a solver section without [response]/[static])");
+            return cmp::format_json(cmp::make_table(s.scene, cmp::compute_modal(s.scene, nullptr), paper));
+          });
+        }
+        return json_rows(json);
+      },
+      py::arg("scene"), py::kw_only(), py::arg("paper") = false, py::arg("max_memory_gib") = 8.0,
+      py::arg("force") = false,
+      (std::string("The comparison table of the scene's solvers, one dict per mode: the rows of\n"
+                   "`ringvib table SCENE --format json` (mode, <solver> in rad/s, <solver>_mode,\n"
+                   "<solver>_mac, <solver>_diff_pct, reference, <solver>_error_pct, and with paper=True\n"
+                   "paper_<solver> and <solver>_vs_paper_pct; percentages in %). pandas.DataFrame(rows)\n"
+                   "makes a frame of it. ") +
+       kBudgetDoc)
+          .c_str());
+
+  m.def(
+      "static",
+      [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
+        ring::StaticResult r;
+        {
+          py::gil_scoped_release free;
+          const ring::Scene n = narrowed(s.scene, &ring::Scene::static_request, solver);
+          r = input_checked(n, [&] {
+            cmp::check_runnable(n, max_memory_gib, force);
+            if (!n.statics) throw ring::InputError(n.file, "static", "the scene has no [static] section");
+            const std::string one = single(n, n.static_request, solver, "static.solvers", "static_table");
+            return cmp::run_nonlinear(n, one, nullptr).statics.front();
+          });
+        }
+        return to_python(r);
+      },
+      py::arg("scene"), py::arg("solver") = "", py::kw_only(), py::arg("max_memory_gib") = 8.0,
+      py::arg("force") = false,
+      (std::string("The nonlinear static equilibrium of the scene's [static] with `solver` (default: the\n"
+                   "one static.solvers lists): a Static. As `ringvib static SCENE [--solver NAME] --json`.\n"
+                   "A path that does not reach the full load raises NumericalError with load_factor. ") +
+       kBudgetDoc)
+          .c_str());
+
+  m.def(
+      "respond",
+      [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
+        ring::TimeHistory h;
+        {
+          py::gil_scoped_release free;
+          const ring::Scene n = narrowed(s.scene, &ring::Scene::response_request, solver);
+          h = input_checked(n, [&] {
+            cmp::check_runnable(n, max_memory_gib, force);
+            if (!n.response) throw ring::InputError(n.file, "response", "the scene has no [response] section");
+            const std::string one = single(n, n.response_request, solver, "response.solvers", "response_table");
+            try {
+              return cmp::run_nonlinear(n, one, nullptr).histories.front();
+            } catch (const ring::IntegrationFailure& e) {
+              // The partial history names its solver, as a finished one does.
+              ring::TimeHistory partial = e.partial();
+              if (partial.solver.empty()) partial.solver = one;
+              throw ring::IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
+            }
+          });
+        }
+        return to_python(h);
+      },
+      py::arg("scene"), py::arg("solver") = "", py::kw_only(), py::arg("max_memory_gib") = 8.0,
+      py::arg("force") = false,
+      (std::string("The forced nonlinear response of the scene's [response] with `solver` (default: the\n"
+                   "one response.solvers lists): a Response whose history has the columns of\n"
+                   "`ringvib respond SCENE [--solver NAME] --csv`. A failed integration raises\n"
+                   "NumericalError with t_reached and the partial Response. ") +
+       kBudgetDoc)
+          .c_str());
+
+  auto nonlinear_table = [](bool response) {
+    return [response](const Scene& s, double max_memory_gib, bool force) {
+      std::string json;
+      {
+        py::gil_scoped_release free;
+        json = input_checked(s.scene, [&] {
+          cmp::check_runnable(s.scene, max_memory_gib, force);
+          if (response ? !s.scene.response : !s.scene.statics)
+            throw ring::InputError(
+                s.scene.file, response ? "response" : "static",
+                response ? "the scene has no [response] section" : "the scene has no [static] section");
+          const cmp::NonlinearRun r = cmp::run_nonlinear(s.scene, "", nullptr);
+          return response ? cmp::format_json(cmp::response_table(s.scene.title, r.histories,
+                                                                 r.history_reference ? &*r.history_reference : nullptr))
+                          : cmp::format_json(cmp::static_table(s.scene.title, r.statics,
+                                                               r.static_reference ? &*r.static_reference : nullptr));
+        });
+      }
+      return json_rows(json);
+    };
+  };
+  m.def("static_table", nonlinear_table(false), py::arg("scene"), py::kw_only(), py::arg("max_memory_gib") = 8.0,
+        py::arg("force") = false,
+        "The comparison of static.solvers (and the reference): the rows of `ringvib static SCENE\n"
+        "--format json` (point in deg, quantity ux | uy | u, <solver> in m, <solver>_diff_pct,\n"
+        "reference, <solver>_error_pct in %; None where not defined).");
+  m.def("response_table", nonlinear_table(true), py::arg("scene"), py::kw_only(), py::arg("max_memory_gib") = 8.0,
+        py::arg("force") = false,
+        "The comparison of response.solvers (and the reference): the rows of `ringvib respond SCENE\n"
+        "--format json` (point in deg, quantity peak_u in m | t_peak in s, <solver>, <solver>_diff_pct,\n"
+        "reference, <solver>_error_pct in %; None where not defined).");
+}
