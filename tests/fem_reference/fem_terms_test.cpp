@@ -1,7 +1,8 @@
 // The FE modes with the terms beyond the paper's ring (fem_reference/modes.hpp, "Terms"):
 // a Winkler foundation, point masses with rotary inertia, elastic supports, further pins
 // and a clamp. Oracles from outside the FE code: the closed forms of ring/closed_form.hpp,
-// first-order perturbation of the Rayleigh quotient derived below, the stiff-spring limit
+// the receptance oracles of tests/support/ring_receptance.hpp (a finite point mass, a
+// clamp), first-order perturbation of the Rayleigh quotient derived below, the stiff-spring limit
 // (a pin, a clamp) with the rate 1/k that the stiffness ratio predicts, the hand count of
 // rigid modes, and a fitted convergence order.
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include "ring/closed_form.hpp"
 #include "support/close.hpp"
 #include "support/paper.hpp"
+#include "support/ring_receptance.hpp"
 
 namespace {
 
@@ -85,6 +87,24 @@ TEST(FemFoundation, ConvergesToTheClosedFormAtOrderTwoPMinusTwo) {
   }
   const double rate = (log_e.back() - log_e.front()) / (log_h.back() - log_h.front());
   EXPECT_NEAR(rate, 4.0, 0.3) << "errors " << std::exp(log_e.front()) << " ... " << std::exp(log_e.back());
+}
+
+// The extensible ring on the same foundation against the 2x2 closed form with diag(k_r, k_t)
+// (closed_form::free_ring_extensible, its flexural branch; k = 0 is the rotation held by
+// k_t, the breathing branches lie far above): k = 0..8, 1e-8 as the free ring's extensible
+// test in fem_validation_test (the reference's accuracy, p = 8 on 40 elements; measured
+// 1.3e-15 .. 1.2e-12).
+TEST(FemFoundation, ExtensibleRingMatchesTwoByTwoClosedFormK0To8) {
+  auto spec = ringtest::free_ring();
+  spec.foundation.radial = 1000.0;
+  spec.foundation.tangential = 300.0;
+  std::vector<double> exact{ring::closed_form::free_ring_extensible(spec, 0)[0]};
+  for (int k = 1; k <= 8; ++k)
+    for (int member = 0; member < 2; ++member) exact.push_back(ring::closed_form::free_ring_extensible(spec, k)[0]);
+  std::sort(exact.begin(), exact.end());
+  const auto r = fem::compute_modes(spec, fine(true), static_cast<int>(exact.size()));
+  EXPECT_EQ(r.rigid_modes, 0);
+  for (std::size_t i = 0; i < exact.size(); ++i) EXPECT_TRUE(IsClose(r.omega[i], exact[i], 1e-8)) << "mode " << i + 1;
 }
 
 // A foundation of zero stiffness is no foundation: today's free ring, three rigid modes,
@@ -216,6 +236,36 @@ TEST(FemSprings, SmallSpringsShiftTheirMemberToFirstOrder) {
   expect_first_order(run(0.0, kr), run(0.0, kr / 2), "spring kr");
 }
 
+
+// A finite point mass (a tenth of the ring's mass, no rotary inertia) at 0 deg on the free
+// inextensible ring, and the inextensible ring clamped at 0 deg, against the receptance
+// oracles of the continuous ring (tests/support/ring_receptance.hpp: Fourier modes, roots
+// of the point receptance; converged to 1e-11 in its series length). Eight modes each;
+// 1e-8 as Hoppe's limit above (the FE's 1/beta extrapolation ~1e-10, discretization at
+// p = 8 ~1e-11; the clamp's jump in moment sits on a vertex, so the order is kept).
+// Measured: point mass 6e-13 .. 5.9e-10, clamp 8e-13 .. 1.8e-9 (mode 8).
+TEST(FemReceptance, PointMassAndClampMatchTheContinuousRing) {
+  const auto free = ringtest::free_ring();
+  const receptance::Ring oracle{free.radius, free.EI(), free.rhoA()};
+  const int n = 8;
+  {
+    auto spec = free;
+    const double m0 = 0.1 * ring_mass(spec);
+    spec.masses.push_back({0.0, m0, 0.0});
+    const auto exact = receptance::point_mass_omegas(oracle, m0, n);
+    const auto r = fem::compute_modes(spec, fine(false), n);
+    EXPECT_EQ(r.rigid_modes, 3);
+    for (int i = 0; i < n; ++i) EXPECT_TRUE(IsClose(r.omega[i], exact[i], 1e-8)) << "point mass, mode " << i + 1;
+  }
+  {
+    auto spec = ringtest::pinned_ring(0.0);
+    spec.supports.clamp = 0.0;
+    const auto exact = receptance::clamped_omegas(oracle, n);
+    const auto r = fem::compute_modes(spec, fine(false), n);
+    EXPECT_EQ(r.rigid_modes, 0);
+    for (int i = 0; i < n; ++i) EXPECT_TRUE(IsClose(r.omega[i], exact[i], 1e-8)) << "clamp, mode " << i + 1;
+  }
+}
 
 /// Largest relative difference of the first n frequencies of a and b.
 double largest_difference(const ring::ModalResult& a, const ring::ModalResult& b, int n) {
