@@ -30,6 +30,52 @@ void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, cons
   need(std::isfinite(load.force[0]) && std::isfinite(load.force[1]), section + ".force must be finite");
 }
 
+/// The supports, springs, masses and foundation of linear modes: finite, >= 0, every point
+/// on an FE vertex (anchor + k 360 / fem.elements), pins and clamp with a pin.
+void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  const ring::Supports& s = spec.supports;
+  const double anchor = s.pin.value_or(0.0);
+  auto on_vertex = [&](double a, const std::string& key) {
+    need(std::isfinite(a), key + " must be finite");
+    need(ring::on_node(a, anchor, o.elements), key + " (=" + std::to_string(a) +
+                                                   ") must fall on an FE vertex: " + (s.pin ? "pin" : "0") +
+                                                   " + k * 360 / fem.elements");
+  };
+  auto non_negative = [&](double v, const std::string& key) {
+    need(std::isfinite(v) && v >= 0.0, key + " (=" + std::to_string(v) + ") must be finite and >= 0");
+  };
+  need(s.pins.empty() || s.pin, "supports.pins needs supports.pin (the first pinned point)");
+  for (double a : s.pins) on_vertex(a, "supports.pins");
+  if (s.clamp) {
+    need(s.pin.has_value(), "supports.clamp needs supports.pin");
+    bool pinned = false;
+    for (double a : s.pinned()) pinned = pinned || ring::wrap_degrees(a - *s.clamp + 1e-9) < 2e-9;
+    need(pinned, "supports.clamp (=" + std::to_string(*s.clamp) + ") must be supports.pin or one of supports.pins");
+  }
+  for (const ring::Spring& k : s.springs) {
+    on_vertex(k.angle, "supports.springs.at");
+    non_negative(k.kx, "supports.springs.kx");
+    non_negative(k.ky, "supports.springs.ky");
+    non_negative(k.kr, "supports.springs.kr");
+  }
+  for (const ring::PointMass& m : spec.masses) {
+    on_vertex(m.angle, "masses.at");
+    non_negative(m.mass, "masses.mass");
+    non_negative(m.inertia, "masses.inertia");
+  }
+  non_negative(spec.foundation.radial, "foundation.radial");
+  non_negative(spec.foundation.tangential, "foundation.tangential");
+  // The polygon (the paper's SAP5 frame) is the check of the paper's ring: its chords'
+  // radial and tangential directions are not the undeformed point's, so it takes none of
+  // the terms beyond the paper.
+  if (o.geometry == ring::FemOptions::Geometry::polygon && !spec.paper_terms_only()) {
+    std::string keys;
+    for (const std::string& k : spec.terms_beyond_paper()) keys += (keys.empty() ? "" : ", ") + k;
+    need(false, "fem.geometry = \"polygon\" (the paper's SAP5 frame) does not take " + keys +
+                    " (fem.geometry = \"curved\" does)");
+  }
+}
+
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
@@ -43,7 +89,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
   need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
   need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
-  ring::refuse_terms_beyond_paper(spec, "fem modes");
+  check_terms(spec, o);
   if (spec.supports.roller) {
     need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
              ring::wrap_degrees(*spec.supports.pin - *spec.supports.roller) > 1e-9,

@@ -23,7 +23,10 @@ constexpr int kMinDegree = 2;
 constexpr int kMaxDegree = 16;
 
 /// Linear modes: positive geometry and material, elements >= 4, degree in kMinDegree..kMaxDegree,
-/// tolerances in (0, 1) for a reference, a roller only with a pin, on an FE vertex.
+/// tolerances in (0, 1) for a reference, a roller only with a pin, on an FE vertex; further
+/// pins and a clamp only with a pin, the clamp at a pinned point; pins, springs and masses on
+/// FE vertices (the message names the key); stiffnesses, masses and foundation moduli
+/// finite and >= 0; the terms beyond the paper's ring only on the curved geometry.
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& options);
 /// Nonlinear statics: as modes, plus the curved geometry, a pin and a roller, the load and
 /// the record points on FE vertices, a finite force.

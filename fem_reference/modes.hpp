@@ -40,9 +40,31 @@
 //
 // Supports are AffineConstraints: pin (both components zero at vertex 0), roller
 // (the component normal to the line pin-roller zero at the roller's vertex, which
-// must be a vertex), free (three rigid modes). Rigid modes are counted, not numbered;
-// on the exact circle rigid translations are represented only approximately by the
-// polar fields, so their computed frequencies are small but not exactly zero.
+// must be a vertex), further pins (both components zero at their vertices), free (three
+// rigid modes without springs or foundation). Rigid modes are spec.rigid_modes(), counted,
+// not numbered; on the exact circle rigid translations are represented only approximately
+// by the polar fields, so their computed frequencies are small but not exactly zero.
+//
+// Terms beyond the paper's ring (exact circle only; the polygon refuses them, checks.cpp).
+// Every point lies on a vertex (anchor + k 360/elements; anchor = the pin, or 0 deg).
+//  - Rotation at a vertex. The field's rotation phi = (u - w')/R is the counter-clockwise
+//    rotation of the centroid line's tangent (the tangent R e_theta + (u' + w) e_theta +
+//    (w' - u) e_r turns by -(w' - u)/R). The C0 elements have no rotation unknown and phi
+//    jumps at a vertex (the interior penalty drives the jump to the discretization error),
+//    so a vertex has one rotation per neighbouring cell.
+//  - clamp: both cells' phi = 0 at the clamp vertex, two AffineConstraints rows (each
+//    eliminates one interior DoF of its cell; the vertex is pinned). The exact solution and
+//    every test function satisfy them, so the interior-penalty form stays consistent.
+//  - springs: kx/2 Ux^2 + ky/2 Uy^2 on the Cartesian displacement of the vertex
+//    (Ux = -u sin a + w cos a, Uy = u cos a + w sin a) and kr/2 {phi}^2 on the mean
+//    {phi} = (phi_left + phi_right)/2 of the two cells' rotations (consistent: the
+//    vertex's natural condition [[M]] = kr phi pairs with {phi} of the test function). A
+//    stiff kr converges to the clamp at rate 1/kr, a stiff kx = ky to a pin
+//    (tests/fem_reference/fem_terms_test.cpp).
+//  - point masses: m/2 (Ux_dot^2 + Uy_dot^2) and J/2 {phi_dot}^2 in the kinetic energy.
+//  - foundation: 1/2 int (k_r w^2 + k_t u^2) ds over every cell, exact on the polar fields
+//    (radial and tangential directions of the undeformed point).
+// These terms enter K and M and the extended-precision operator of the refinement alike.
 //
 // Inextensible limit (extensible = false): EA is replaced by beta EI / R^2 for two
 // large beta (1e6 and 2e6) and the squared frequencies are Richardson-extrapolated to
@@ -84,8 +106,9 @@ namespace fem {
 inline const char* const kDualResidualNorm = "dual norm of K - sigma M";
 
 /// Natural frequencies and mode shapes of the ring (see the file comment for the model).
-/// \param spec    ring, section, material, supports (pin/roller must fall on vertices:
-///                the pin is vertex 0; the roller must satisfy ring::on_node).
+/// \param spec    ring, section, material, supports, springs, masses, foundation (every
+///                point on a vertex: the pin is vertex 0, the others must satisfy
+///                ring::on_node; the terms beyond the paper's ring need the curved geometry).
 /// \param options elements >= 4, degree kMinDegree..kMaxDegree (checks.hpp: 2..16);
 ///                reference = true refines p (to kMaxDegree, then h) until the `count`
 ///                frequencies change by less than options.tolerance (relative, > 0)

@@ -15,6 +15,7 @@ RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
   make_grid();
   setup_constraints();
   setup_reduced_system();
+  setup_point_terms();
   assemble();
 }
 
@@ -105,8 +106,100 @@ void RingModel::setup_constraints() {
       if (std::abs(coef[1 - m]) > 1e-14 * std::abs(coef[m]))
         constraints_.add_entry(dofs[m], dofs[1 - m], -coef[1 - m] / coef[m]);
     }
+    // Further pins: both components zero at their vertices.
+    for (double a : spec_.supports.pins) {
+      const auto dofs = end_dofs(vertex_of(a), 0.0);
+      for (unsigned int c = 0; c < 2; ++c)
+        if (!constraints_.is_constrained(dofs[c])) constraints_.add_line(dofs[c]);
+    }
+    if (spec_.supports.clamp) constrain_rotation(vertex_of(*spec_.supports.clamp));
   }
   constraints_.close();
+}
+
+void RingModel::constrain_rotation(unsigned int v) {
+  // The C0 interior-penalty model has one rotation per cell end, so a clamp is two rows:
+  // phi = 0 at the right end of cell v-1 and at the left end of cell v. The exact
+  // (C1) solution satisfies both and the test functions do too, so the penalty and
+  // moment terms at the clamp vanish and the form stays consistent. Each row eliminates
+  // the interior DoF of its cell with the largest coefficient (degree >= 2: w has one).
+  const unsigned int n = setup_.cells(), dpc = fe_.n_dofs_per_cell();
+  const auto& points = fe_.get_unit_support_points();
+  std::vector<types::global_dof_index> dofs(dpc);
+  const std::array<std::pair<unsigned int, double>, 2> sides{{{(v + n - 1) % n, 1.0}, {v, 0.0}}};
+  for (const auto& [cell, end] : sides) {
+    cells_[cell]->get_dof_indices(dofs);
+    const unsigned int q = end == 0.0 ? nq_ : nq_ + 1;
+    std::vector<double> coef(dpc, 0.0);
+    unsigned int m = dpc;
+    for (unsigned int i = 0; i < dpc; ++i) {
+      const double xi = points[i][0];
+      if (std::abs(xi - end) < 1e-12) continue;  // the clamp's own (pinned) DoFs
+      coef[i] = kinematics(cell, i, q).phi;
+      const bool interior = xi > 1e-12 && xi < 1.0 - 1e-12;
+      if (interior && (m == dpc || std::abs(coef[i]) > std::abs(coef[m]))) m = i;
+    }
+    constraints_.add_line(dofs[m]);
+    for (unsigned int i = 0; i < dpc; ++i)
+      if (i != m && coef[i] != 0.0) constraints_.add_entry(dofs[m], dofs[i], -coef[i] / coef[m]);
+  }
+}
+
+void RingModel::vertex_rotation(unsigned int v, std::vector<types::global_dof_index>& dofs,
+                                std::vector<double>& coef) const {
+  // The rotation at a vertex is the mean of the two cells' end rotations: on the exact
+  // (C1) solution both are the rotation, and the mean keeps the form consistent (the
+  // vertex's natural condition [[M]] = kr {phi} pairs with {phi} of the test function).
+  const unsigned int n = setup_.cells(), dpc = fe_.n_dofs_per_cell();
+  dofs.resize(2 * dpc);
+  coef.resize(2 * dpc);
+  std::vector<types::global_dof_index> side(dpc);
+  cells_[(v + n - 1) % n]->get_dof_indices(side);
+  std::copy(side.begin(), side.end(), dofs.begin());
+  cells_[v]->get_dof_indices(side);
+  std::copy(side.begin(), side.end(), dofs.begin() + dpc);
+  for (unsigned int i = 0; i < dpc; ++i) {
+    coef[i] = 0.5 * kinematics((v + n - 1) % n, i, nq_ + 1).phi;
+    coef[dpc + i] = 0.5 * kinematics(v, i, nq_).phi;
+  }
+}
+
+void RingModel::setup_point_terms() {
+  // Cartesian components of the vertex displacement: U = u t0 + w n0 (curved, t0 =
+  // (-sin a, cos a), n0 = (cos a, sin a)) or (ux, uy) (polygon).
+  auto translation = [&](unsigned int v, unsigned int direction, double stiffness, double mass) {
+    if (stiffness == 0.0 && mass == 0.0) return;
+    const auto d = end_dofs(v, 0.0);
+    PointTerm t{{d[0], d[1]}, {0.0, 0.0}, stiffness, mass};
+    if (setup_.geometry == Geometry::curved) {
+      const double a = theta0_ + v * h_;
+      t.coef = direction == 0 ? std::vector<double>{-std::sin(a), std::cos(a)}
+                              : std::vector<double>{std::cos(a), std::sin(a)};
+    } else {
+      t.coef[direction] = 1.0;
+    }
+    point_terms_.push_back(std::move(t));
+  };
+  auto rotation = [&](unsigned int v, double stiffness, double mass) {
+    if (stiffness == 0.0 && mass == 0.0) return;
+    PointTerm t;
+    vertex_rotation(v, t.dofs, t.coef);
+    t.stiffness = stiffness;
+    t.mass = mass;
+    point_terms_.push_back(std::move(t));
+  };
+  for (const ring::Spring& s : spec_.supports.springs) {
+    const unsigned int v = vertex_of(s.angle);
+    translation(v, 0, s.kx, 0.0);
+    translation(v, 1, s.ky, 0.0);
+    rotation(v, s.kr, 0.0);
+  }
+  for (const ring::PointMass& pm : spec_.masses) {
+    const unsigned int v = vertex_of(pm.angle);
+    translation(v, 0, 0.0, pm.mass);
+    translation(v, 1, 0.0, pm.mass);
+    rotation(v, 0.0, pm.inertia);
+  }
 }
 
 void RingModel::setup_reduced_system() {
@@ -208,6 +301,8 @@ void RingModel::add_local(const FullMatrix<double>& local, const std::vector<typ
 void RingModel::assemble() {
   const double EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
   const double rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
+  // Winkler foundation on the polar fields (curved geometry only: check_modes).
+  const double kt = spec_.foundation.tangential, kr = spec_.foundation.radial;
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
   FullMatrix<double> k_cell(dpc, dpc), m_cell(dpc, dpc);
   std::vector<types::global_dof_index> dofs(dpc);
@@ -219,7 +314,8 @@ void RingModel::assemble() {
       for (unsigned int i = 0; i < dpc; ++i) kin[i] = kinematics(cell, i, q);
       for (unsigned int i = 0; i < dpc; ++i)
         for (unsigned int j = 0; j < dpc; ++j) {
-          k_cell(i, j) += (EA * kin[i].eps * kin[j].eps + EI * kin[i].kappa * kin[j].kappa) * ds_[q];
+          k_cell(i, j) += (EA * kin[i].eps * kin[j].eps + EI * kin[i].kappa * kin[j].kappa +
+                           kt * kin[i].d[0] * kin[j].d[0] + kr * kin[i].d[1] * kin[j].d[1]) * ds_[q];
           m_cell(i, j) += (rhoA * (kin[i].d[0] * kin[j].d[0] + kin[i].d[1] * kin[j].d[1]) +
                            rhoI * kin[i].phi * kin[j].phi) * ds_[q];
         }
@@ -243,12 +339,31 @@ void RingModel::assemble() {
     std::copy(right.begin(), right.end(), pair_dofs.begin() + dpc);
     add_local(k_vertex, pair_dofs, K_);
   }
+  for (const PointTerm& t : point_terms_) {
+    const unsigned int m = t.dofs.size();
+    FullMatrix<double> k_point(m, m), m_point(m, m);
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = 0; j < m; ++j) {
+        k_point(i, j) = t.stiffness * t.coef[i] * t.coef[j];
+        m_point(i, j) = t.mass * t.coef[i] * t.coef[j];
+      }
+    if (t.stiffness > 0.0) add_local(k_point, t.dofs, K_);
+    if (t.mass > 0.0) add_local(m_point, t.dofs, M_);
+  }
 }
 
 double RingModel::precision_ratio() const {
   std::vector<double> k(n_free_, 0.0), m(n_free_, 0.0);
   for (auto it = K_.begin(); it != K_.end(); ++it) k[it->row()] += std::abs(it->value());
   for (auto it = M_.begin(); it != M_.end(); ++it) m[it->row()] += it->value();
+  // Point masses and inertias only lower eigenvalues (a positive semi-definite mass
+  // added), but their rank-one rows c c^T have row sums of either sign: they are left
+  // out of the estimate, which stays an estimate of the ring's own lambda_max.
+  for (const PointTerm& t : point_terms_)
+    for (unsigned int i = 0; i < t.dofs.size(); ++i)
+      for (const auto& [fi, wi] : expansion_[t.dofs[i]])
+        for (unsigned int j = 0; j < t.dofs.size(); ++j)
+          for (const auto& [fj, wj] : expansion_[t.dofs[j]]) m[fi] -= wi * wj * t.mass * t.coef[i] * t.coef[j];
   double lambda_max = 0.0;
   for (unsigned int i = 0; i < n_free_; ++i)
     lambda_max = std::max(lambda_max, m[i] > 0 ? k[i] / m[i] : std::numeric_limits<double>::infinity());
@@ -259,6 +374,7 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
   const Vector<double> full = expand(q);
   const Real EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
   const Real rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
+  const Real kt = spec_.foundation.tangential, kr = spec_.foundation.radial;
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
   kq.assign(n_free_, 0.0L);
   mq.assign(n_free_, 0.0L);
@@ -287,7 +403,8 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
       }
       const Real ds = ds_[qp];
       for (unsigned int i = 0; i < dpc; ++i) {
-        lk[i] += ds * (EA * eps * kin[i].eps + EI * kappa * kin[i].kappa);
+        lk[i] += ds * (EA * eps * kin[i].eps + EI * kappa * kin[i].kappa + kt * d0 * kin[i].d[0] +
+                       kr * d1 * kin[i].d[1]);
         lm[i] += ds * (rhoA * (d0 * kin[i].d[0] + d1 * kin[i].d[1]) + rhoI * phi * kin[i].phi);
       }
     }
@@ -311,6 +428,17 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
     for (unsigned int a = 0; a < 2 * dpc; ++a) lk[a] = mean[a] * J + jump[a] * M + penalty_ * J * jump[a];
     scatter(dofs, 0, dpc, lk, kq);
     scatter(right, dpc, dpc, lk, kq);
+  }
+  for (const PointTerm& t : point_terms_) {
+    Real y = 0;
+    for (unsigned int i = 0; i < t.dofs.size(); ++i) y += t.coef[i] * full[t.dofs[i]];
+    std::vector<Real> lkp(t.dofs.size()), lmp(t.dofs.size());
+    for (unsigned int i = 0; i < t.dofs.size(); ++i) {
+      lkp[i] = t.stiffness * y * t.coef[i];
+      lmp[i] = t.mass * y * t.coef[i];
+    }
+    scatter(t.dofs, 0, t.dofs.size(), lkp, kq);
+    scatter(t.dofs, 0, t.dofs.size(), lmp, mq);
   }
 }
 

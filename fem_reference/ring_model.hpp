@@ -115,6 +115,17 @@ struct Kinematics {
   double eps = 0.0, kappa = 0.0, phi = 0.0;
 };
 
+/// A term concentrated at one vertex, on a linear functional c . x of the local DoFs
+/// `dofs`: strain energy stiffness/2 (c . x)^2 and kinetic energy mass/2 (c . xdot)^2.
+/// Springs kx, ky and a point mass's m act on the Cartesian components of the vertex's
+/// displacement; kr and a point mass's inertia J on the vertex rotation {phi}, the mean of
+/// the rotations phi = (u - w')/R of the two cells that meet there (ring_model.cpp).
+struct PointTerm {
+  std::vector<types::global_dof_index> dofs;
+  std::vector<double> coef;
+  double stiffness = 0.0, mass = 0.0;
+};
+
 /// Lowest eigenpairs of the reduced problem K q = lambda M q, lambda ascending, and
 /// each pair's relative residual (see RingModel::refine).
 struct EigenPairs {
@@ -183,7 +194,16 @@ class RingModel {
   void make_grid();
   void setup_constraints();
   void setup_reduced_system();
+  /// Springs and point masses (spec.supports.springs, spec.masses) as PointTerms.
+  void setup_point_terms();
   void assemble();
+
+  /// The clamp: the rotation phi of both cells that meet at `vertex` is zero (one
+  /// interior DoF of each cell eliminated; the vertex itself is pinned).
+  void constrain_rotation(unsigned int vertex);
+  /// Coefficients of the vertex rotation {phi} = (phi_left + phi_right) / 2 on the local
+  /// DoFs [cell vertex-1 | cell vertex] (the DoFs in `dofs`).
+  void vertex_rotation(unsigned int vertex, std::vector<types::global_dof_index>& dofs, std::vector<double>& coef) const;
 
   /// Kinematics of local shape function i of `cell` at cell quadrature point q
   /// (q = nq, nq+1: the left and right ends of the cell).
@@ -242,6 +262,7 @@ class RingModel {
   unsigned int n_free_ = 0;
   SparsityPattern sparsity_;
   SparseMatrix<double> K_, M_;
+  std::vector<PointTerm> point_terms_;
 };
 
 template <int spacedim = 1>
