@@ -113,8 +113,9 @@ SolverEntry lumped_entry() {
   e.set_size = [](ring::Scene& s, int n) { s.lumped.n = n; };
   // Inertial DOFs (chain: n after the n link rows; frame: the 2n translations and the
   // rotations that carry a point inertia; frame-consistent: all 3n) minus the supports'
-  // constraint rows and the rigid modes. The lumped frame's clamp blocks a massless rotation
-  // (no inertial DOF) unless a point inertia sits there.
+  // constraint rows and the rigid modes. The chain's clamp is a spring (lumped_mass/model.hpp,
+  // as multibody's), no row; the lumped frame's clamp blocks a massless rotation (no inertial
+  // DOF) unless a point inertia sits there.
   e.elastic_modes = [](const ring::Scene& s) -> long long {
     const long long n = s.lumped.n;
     const ring::Supports& sup = s.ring.supports;
@@ -130,7 +131,7 @@ SolverEntry lumped_entry() {
         sup.clamp && std::find(inertial_rotations.begin(), inertial_rotations.end(), node(*sup.clamp)) !=
                          inertial_rotations.end();
     switch (s.lumped.variant) {
-      case ring::LumpedOptions::Variant::chain: return n - held;
+      case ring::LumpedOptions::Variant::chain: return n - held + (sup.clamp ? 1 : 0);
       case ring::LumpedOptions::Variant::frame:
         return 2 * n + static_cast<long long>(inertial_rotations.size()) - held +
                (sup.clamp && !clamp_inertial ? 1 : 0);

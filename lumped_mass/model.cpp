@@ -56,7 +56,7 @@ void check_nonnegative(double v, const std::string& key) {
 /// Support rows: every pinned point (supports.pinned(): the pin at node 0, then `pins`)
 /// blocks both translations of its node; a roller blocks the roller node's displacement
 /// normal to the line through the pin and itself; a clamp on a frame blocks its node's
-/// rotation (the chain's clamp is a row of C, add_terms()).
+/// rotation (the chain's clamp is a spring on its chord rotation, add_terms()).
 SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int dpn, double anchor) {
   const int n = static_cast<int>(p.size());
   Triplets t;
@@ -292,15 +292,23 @@ Row tangent_rotation(const Model& m, const std::vector<Vec2>& p, int h) {
 /// - foundation: lumped at the nodes, each node standing for one side l of ring: rows
 ///   r_k . u_k and t_k . u_k of B with D = k_r l and k_t l (r_k, t_k the radial and
 ///   tangential unit vectors of the undeformed node; fixed directions, ring/spec.hpp);
-/// - elastic support at node h: rows ux_h, uy_h, tangent_rotation(h) of B with D = kx, ky, kr;
-/// - point mass at node h: m on (ux_h, uy_h), J g g^T with g = tangent_rotation(h)
-///   (a frame's rotation with J > 0 becomes inertial: the lumped frame keeps it, not condensed);
-/// - the chain's clamp: one row of C, tangent_rotation(h) = 0, scaled by l to O(1) entries
-///   like the link rows (frames clamp their rotation unknown in S, support_rows()).
+/// - elastic support at node h: rows ux_h, uy_h of B with D = kx, ky; kr: frames a row th_h
+///   with D = kr; the chain see below;
+/// - point mass at node h: m on (ux_h, uy_h); J on the rotation (a frame's rotation with
+///   J > 0 becomes inertial: the lumped frame keeps it, not condensed);
+/// - clamp: frames block th_h in S (support_rows()); the chain see below.
+/// The chain's rotational terms (the convention of multibody/attachments.hpp, so that the two
+/// chains stay one model): the hinge spring EI/l = K stands for the bending from one link's
+/// midpoint to the next; split into two halves 2K from each link to the hinge's own massless
+/// rotation psi, it is the same spring with psi = the chord rotation m (tangent_rotation()).
+/// A spring kr from psi to the ground, psi condensed, is 4K and kr in series on m:
+/// D = 4K kr / (4K + kr) on the row g = tangent_rotation(h), and psi = 4K m / (4K + kr), so a
+/// point inertia J acts as J (4K / (4K + kr))^2 g g^T. A clamp is kr -> infinity: 4K on m
+/// (the constraint m = 0 instead converges at order 1 only: terms_test.cpp's clamped ring).
 /// Zero stiffnesses add no row (D stays positive for the mixed system, eigen.hpp). O(n).
 void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m) {
   const int n = m.n, dpn = m.dofs_per_node;
-  Triplets bt, mt, ct;
+  Triplets bt, mt;
   std::vector<double> d;
   auto stiffness_row = [&](const Row& g, double k) {
     if (k <= 0.0) return;
@@ -316,6 +324,7 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
       stiffness_row({{dpn * k, rx}, {dpn * k + 1, ry}}, f.radial * m.side);
       stiffness_row({{dpn * k, -ry}, {dpn * k + 1, rx}}, f.tangential * m.side);
     }
+  std::vector<double> kr(n, 0.0);  // rotational springs to the ground by node (a clamp: infinite)
   for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
     const ring::Spring& s = spec.supports.springs[i];
     const std::string key = "supports.springs[" + std::to_string(i + 1) + "]";
@@ -325,8 +334,13 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
     check_nonnegative(s.kr, key + ".kr");
     stiffness_row({{dpn * h, 1.0}}, s.kx);
     stiffness_row({{dpn * h + 1, 1.0}}, s.ky);
-    stiffness_row(tangent_rotation(m, p, h), s.kr);
+    kr[h] += s.kr;
   }
+  const bool chain = dpn == 2;
+  if (chain && spec.supports.clamp) kr[node_of(*spec.supports.clamp, m.anchor_deg, n, "supports.clamp")] = HUGE_VAL;
+  const double k4 = 4.0 * spec.EI() / m.side;  // the chain's two half hinge springs 2K in parallel
+  for (int h = 0; h < n; ++h)
+    if (kr[h] > 0.0) stiffness_row(tangent_rotation(m, p, h), !chain ? kr[h] : std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h]));
   for (std::size_t i = 0; i < spec.masses.size(); ++i) {
     const ring::PointMass& pm = spec.masses[i];
     const std::string key = "masses[" + std::to_string(i + 1) + "]";
@@ -335,17 +349,15 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
     check_nonnegative(pm.inertia, key + ".inertia");
     mt.emplace_back(dpn * h, dpn * h, pm.mass);
     mt.emplace_back(dpn * h + 1, dpn * h + 1, pm.mass);
-    if (pm.inertia > 0.0) {
+    // The chain's psi follows the chord rotation by 4K / (4K + kr) (0 at a clamp).
+    const double follows = !chain ? 1.0 : std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
+    const double J = pm.inertia * follows * follows;
+    if (J > 0.0) {
       const Row g = tangent_rotation(m, p, h);
       for (const auto& [a, ca] : g)
-        for (const auto& [b, cb] : g) mt.emplace_back(a, b, pm.inertia * ca * cb);
-      if (dpn == 3) m.massless[3 * h + 2] = 0;
+        for (const auto& [b, cb] : g) mt.emplace_back(a, b, J * ca * cb);
+      if (!chain) m.massless[3 * h + 2] = 0;
     }
-  }
-  if (spec.supports.clamp && dpn == 2) {
-    const int h = node_of(*spec.supports.clamp, m.anchor_deg, n, "supports.clamp");
-    for (const auto& [dof, c] : tangent_rotation(m, p, h)) ct.emplace_back(0, dof, c * m.side);
-    m.C = stacked(m.C, ct, 1);
   }
   if (!d.empty()) {
     const int rows = static_cast<int>(d.size());

@@ -38,7 +38,7 @@ struct Model {
   /// 3j+1, 3j+2 = curvature at the two Gauss points x = l/2 (1 -+ 1/sqrt 3), D = EI l/2
   /// (two-point Gauss integrates the linear curvature's energy exactly).
   /// Then, for every variant, one row per positive stiffness of the spec's terms
-  /// (assemble()): foundation (2 per node), springs kx, ky, kr.
+  /// (assemble()): foundation (2 per node), springs kx, ky, kr, the chain's clamp.
   /// The solvers work with B and D, never with the assembled K: K's entries are of
   /// order EI/l^3 while a smooth mode's K x is of order EI/R^4 |x|, so rounding K costs
   /// eps (R/l)^4 relative accuracy in the low eigenvalues; through B it costs eps (R/l)^2.
@@ -46,9 +46,8 @@ struct Model {
   Eigen::VectorXd D;
   SpMat M;                   ///< mass, N x N, kg (singular for the chain, and the
                              ///< lumped frame's rotation rows are zero)
-  SpMat C;                   ///< internal constraints: chain link lengths (n rows
-                             ///< t_j . (u_{j+1} - u_j) = 0, t_j the unit side vector), then the
-                             ///< chain's clamp (1 row: its chord rotation, scaled by l); 0 x N for frames
+  SpMat C;                   ///< internal constraints: chain link lengths (n x N, rows
+                             ///< t_j . (u_{j+1} - u_j) = 0, t_j the unit side vector); empty (0 x N) for frames
   SpMat S;                   ///< supports: one row per blocked direction, a unit vector on one
                              ///< node's (ux, uy) or on a frame node's rotation alone: 2 rows per
                              ///< pinned point, roller 1 row (normal to pin-roller line), a frame's clamp 1 row
@@ -77,11 +76,17 @@ struct Model {
 /// Terms of every variant (ring/spec.hpp), each written once:
 ///   rotation of the tangent at node h: the frames' rotation unknown th_h; the chain has none
 ///     and uses the chord through the node's neighbours, the mean of its two links' rotations;
-///   pins: both translations of the node in S; clamp: that rotation = 0 (frames: in S, before
-///     any condensation; chain: one row of C);
+///   pins: both translations of the node in S;
 ///   springs: kx, ky on ux_h, uy_h, kr on the rotation (rows of B, D = k);
-///   point masses: m on ux_h, uy_h, J on the rotation (J g g^T for the chain); a lumped-frame
-///     rotation with J > 0 is inertial and kept, not condensed;
+///   point masses: m on ux_h, uy_h, J on the rotation; a lumped-frame rotation with J > 0 is
+///     inertial and kept, not condensed;
+///   clamp: frames: their rotation = 0, in S before any condensation; the chain: kr -> infinity
+///     in the chain's convention below;
+///   the chain's rotational terms follow multibody/attachments.hpp, so both chains are one
+///     model: its hinge spring K = EI/l is two halves 2K from each link to the hinge's own
+///     massless rotation psi; kr from psi to the ground, psi condensed, is 4K and kr in series
+///     on the chord rotation, J acts through psi = 4K/(4K + kr) times it, a clamp is 4K on it
+///     (order 2; a constraint on the chord rotation would be order 1, terms_test.cpp);
 ///   foundation: lumped at the nodes, each standing for one side l of ring: l k_r (r.u)^2 +
 ///     l k_t (t.u)^2, r and t the undeformed node's radial and tangential unit vectors. With the
 ///     nodal (trapezoidal) rule on a periodic integrand the error is the n-gon's O(h^2), like

@@ -52,12 +52,13 @@ ring::RingSpec with_supports(const std::string& s) {
 /// The eigenproblem's dimension counted by hand: inertial DOFs (chain n after its n link
 /// rows, frame 2n translations plus a rotation carrying a point inertia, frame-consistent
 /// 3n) minus the constraint rows: the paper's supports leave n - 3, 2n - 3, 3n - 3 elastic
-/// modes plus the rigid ones; "clamped_terms" removes pin (2) and clamp (1; for the lumped
-/// frame a massless rotation), "free_terms" removes nothing.
+/// modes plus the rigid ones; "clamped_terms" removes pin (2) and clamp (1 for
+/// frame-consistent; for the lumped frame it blocks a massless rotation, for the chain it is
+/// a spring), "free_terms" removes nothing.
 int expected_unknowns(const std::string& s, LumpedOptions::Variant v, int n, int rigid) {
   const int per_node = v == kChain ? 1 : v == kFrame ? 2 : 3;
   const int inertia = v == kFrame ? 1 : 0;  // the point mass's rotation, kept by the lumped frame
-  if (s == "clamped_terms") return per_node * n - 2 - (v == kFrame ? 0 : 1) + inertia;
+  if (s == "clamped_terms") return per_node * n - 2 - (v == kConsistent ? 1 : 0) + inertia;
   if (s == "free_terms") return per_node * n + inertia;
   return per_node * n - 3 + rigid;
 }
