@@ -111,12 +111,30 @@ SolverEntry lumped_entry() {
   e.size_name = "n";
   e.size = [](const ring::Scene& s) { return s.lumped.n; };
   e.set_size = [](ring::Scene& s, int n) { s.lumped.n = n; };
+  // Inertial DOFs (chain: n after the n link rows; frame: the 2n translations and the
+  // rotations that carry a point inertia; frame-consistent: all 3n) minus the supports'
+  // constraint rows and the rigid modes. The chain's clamp is a spring (lumped_mass/model.hpp,
+  // as multibody's), no row; the lumped frame's clamp blocks a massless rotation (no inertial
+  // DOF) unless a point inertia sits there.
   e.elastic_modes = [](const ring::Scene& s) -> long long {
     const long long n = s.lumped.n;
-    const int held = s.ring.supports.constraint_rows() + s.ring.rigid_modes();
+    const ring::Supports& sup = s.ring.supports;
+    const int held = sup.constraint_rows() + s.ring.rigid_modes();
+    const double anchor = sup.pin.value_or(0.0);
+    auto node = [&](double deg) { return std::lround(ring::wrap_degrees(deg - anchor) * n / 360.0) % n; };
+    std::vector<long> inertial_rotations;
+    for (const ring::PointMass& m : s.ring.masses)
+      if (m.inertia > 0.0 && std::find(inertial_rotations.begin(), inertial_rotations.end(), node(m.angle)) ==
+                                 inertial_rotations.end())
+        inertial_rotations.push_back(node(m.angle));
+    const bool clamp_inertial =
+        sup.clamp && std::find(inertial_rotations.begin(), inertial_rotations.end(), node(*sup.clamp)) !=
+                         inertial_rotations.end();
     switch (s.lumped.variant) {
-      case ring::LumpedOptions::Variant::chain: return n - 3;
-      case ring::LumpedOptions::Variant::frame: return 2 * n - held;
+      case ring::LumpedOptions::Variant::chain: return n - held + (sup.clamp ? 1 : 0);
+      case ring::LumpedOptions::Variant::frame:
+        return 2 * n + static_cast<long long>(inertial_rotations.size()) - held +
+               (sup.clamp && !clamp_inertial ? 1 : 0);
       case ring::LumpedOptions::Variant::frame_consistent: return 3 * n - held;
     }
     return 0;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lumped {
 namespace {
@@ -23,8 +25,22 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 
 }  // namespace
 
-void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions&) {
-  ring::refuse_terms_beyond_paper(spec, "lumped modes");
+void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
+  // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
+  if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
+  const double anchor = spec.supports.pin.value_or(0.0);
+  std::vector<std::pair<std::string, double>> points;
+  for (double a : spec.supports.pins) points.emplace_back("supports.pins", a);
+  if (spec.supports.clamp) points.emplace_back("supports.clamp", *spec.supports.clamp);
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i)
+    points.emplace_back("supports.springs[" + std::to_string(i + 1) + "]", spec.supports.springs[i].angle);
+  for (std::size_t i = 0; i < spec.masses.size(); ++i)
+    points.emplace_back("masses[" + std::to_string(i + 1) + "]", spec.masses[i].angle);
+  for (const auto& [key, a] : points)
+    if (!std::isfinite(a) || !ring::on_node(a, anchor, options.n))
+      throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(a) + " deg) is not a node of the n = " +
+                                  std::to_string(options.n) + " model (valid: anchor " + std::to_string(anchor) +
+                                  " deg + 360 k / n)");
 }
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {

@@ -9,7 +9,8 @@
 
 namespace lumped {
 
-/// Linear modes: the paper's supports only, for now (RingSpec::terms_beyond_paper).
+/// Linear modes: every term of RingSpec (supports, masses, foundation) is in the model;
+/// n >= 4 and every point (pins, clamp, springs, masses) a node: anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
 /// material, a pin and a roller, static.steps >= 1.

@@ -19,10 +19,11 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-/// Orthonormal selection T (N x Nr) with S T = 0: free translations and all rotations
+/// Orthonormal selection T (N x Nr) with S T = 0: free translations and rotations
 /// keep their unit columns; a node with one blocked direction d keeps the column
-/// along d rotated by +90 deg; a node with two blocked directions loses both.
-/// Each row of S acts on one node's (ux, uy) (model.hpp). O(N).
+/// along d rotated by +90 deg; a node with two blocked directions loses both; a clamped
+/// frame node loses its rotation. Each row of S acts on one node's (ux, uy) or on its
+/// rotation alone (model.hpp). O(N).
 struct Reduction {
   SpMat T;
   std::vector<char> massless;  // per reduced DOF
@@ -31,15 +32,23 @@ struct Reduction {
 Reduction support_reduction(const Model& m) {
   const int N = static_cast<int>(m.K.rows()), dpn = m.dofs_per_node;
   std::vector<std::vector<std::array<double, 2>>> blocked(m.n);
+  std::vector<char> rotation_blocked(m.n, 0);
   const SpMat St = m.S.transpose();  // column r of St = row r of S
   for (int r = 0; r < St.cols(); ++r) {
     int node = -1;
+    bool rotation = false;
     std::array<double, 2> d{0.0, 0.0};
     for (SpMat::InnerIterator it(St, r); it; ++it) {
       node = static_cast<int>(it.row()) / dpn;
-      d[it.row() % dpn] = it.value();
+      if (it.row() % dpn >= 2)
+        rotation = true;
+      else
+        d[it.row() % dpn] = it.value();
     }
-    blocked[node].push_back(d);
+    if (rotation)
+      rotation_blocked[node] = 1;
+    else
+      blocked[node].push_back(d);
   }
   Reduction red;
   Triplets t;
@@ -57,6 +66,7 @@ Reduction support_reduction(const Model& m) {
       red.massless.push_back(m.massless[dpn * k]);
     }  // two blocked directions: pinned, no column
     for (int r = 2; r < dpn; ++r) {
+      if (rotation_blocked[k]) continue;
       t.emplace_back(dpn * k + r, col++, 1.0);
       red.massless.push_back(m.massless[dpn * k + r]);
     }

@@ -36,9 +36,11 @@
 //
 // Rigid modes: the eigen layer's rule (modal/modes.hpp), an eigenvalue
 // lambda < modal::kRigidThreshold * EI/(rho A R^4) counts as rigid.
-// The lowest elastic omega^2 of any supported or free ring is >= ~2 EI/(rho A R^4)
+// The lowest elastic omega^2 of the paper's rings is >= ~2 EI/(rho A R^4)
 // (free ring k = 2: 7.2; pinned ring: 2.5 in these units), while a rigid mode's
 // lambda is roundoff; the count must equal RingSpec::rigid_modes(), or NumericalError.
+// Springs, masses and a foundation can bring a mode below the threshold only when their
+// stiffness is below ~1e-6 of the ring's own (e.g. k_t < 1e-6 EI/R^4 holding the rotation).
 #pragma once
 
 #include <Eigen/Dense>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace lumped {
 namespace {
@@ -37,17 +38,48 @@ void check_spec(const ring::RingSpec& spec, const ring::LumpedOptions& options) 
       throw std::invalid_argument(std::string(name) + " (=" + std::to_string(v) + ") must be > 0");
 }
 
-/// Support rows: a pin blocks both translations of node 0; a roller blocks the
-/// roller node's displacement normal to the line through the pin and itself.
+/// The node at `deg`, or std::invalid_argument naming `key` (every point of the spec must
+/// be a node: anchor + 360 k / n).
+int node_of(double deg, double anchor, int n, const std::string& key) {
+  if (!std::isfinite(deg) || !ring::on_node(deg, anchor, n))
+    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(deg) + " deg) is not a node of the n = " +
+                                std::to_string(n) + " model (valid: anchor " + std::to_string(anchor) +
+                                " deg + 360 k / n)");
+  return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor) * n / 360.0)) % n;
+}
+
+void check_nonnegative(double v, const std::string& key) {
+  if (!(v >= 0.0) || !std::isfinite(v))
+    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(v) + ") must be finite and >= 0");
+}
+
+/// Support rows: every pinned point (supports.pinned(): the pin at node 0, then `pins`)
+/// blocks both translations of its node; a roller blocks the roller node's displacement
+/// normal to the line through the pin and itself; a clamp on a frame blocks its node's
+/// rotation (the chain's clamp is a spring on its chord rotation, add_terms()).
 SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int dpn, double anchor) {
   const int n = static_cast<int>(p.size());
   Triplets t;
   int rows = 0;
   if (spec.supports.roller && !spec.supports.pin)
     throw std::invalid_argument("supports.roller needs supports.pin");
-  if (spec.supports.pin) {
-    t.emplace_back(rows++, 0, 1.0);
-    t.emplace_back(rows++, 1, 1.0);
+  if (!spec.supports.pin && (!spec.supports.pins.empty() || spec.supports.clamp))
+    throw std::invalid_argument("lumped: supports.pins and supports.clamp need supports.pin (the first pinned point)");
+  for (std::size_t i = 0; i < spec.supports.pinned().size(); ++i) {
+    const double a = spec.supports.pinned()[i];
+    const int k = node_of(a, anchor, n, i == 0 ? "supports.pin" : "supports.pins");
+    t.emplace_back(rows++, dpn * k, 1.0);
+    t.emplace_back(rows++, dpn * k + 1, 1.0);
+  }
+  if (spec.supports.clamp) {
+    const double a = *spec.supports.clamp;
+    const int k = node_of(a, anchor, n, "supports.clamp");
+    bool pinned = false;
+    for (double q : spec.supports.pinned()) pinned = pinned || node_of(q, anchor, n, "supports.pins") == k;
+    if (!pinned)
+      throw std::invalid_argument("lumped: supports.clamp (= " + std::to_string(a) +
+                                  " deg) must be a pinned point (supports.pin or one of supports.pins)");
+    if (dpn == 3) t.emplace_back(rows++, 3 * k + 2, 1.0);
   }
   if (spec.supports.roller) {
     const double r = *spec.supports.roller;
@@ -221,6 +253,129 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
     for (int k = 0; k < n; ++k) m.massless[3 * k + 2] = 1;
 }
 
+/// A linear function of the model's DOFs as (dof, coefficient) pairs.
+using Row = std::vector<std::pair<int, double>>;
+
+/// Rows [A; extra] (extra's row indices count from 0). O(nonzeros).
+SpMat stacked(const SpMat& A, const Triplets& extra, int extra_rows) {
+  Triplets t;
+  t.reserve(A.nonZeros() + extra.size());
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SpMat::InnerIterator it(A, j); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  for (const auto& e : extra) t.emplace_back(static_cast<int>(A.rows()) + e.row(), e.col(), e.value());
+  SpMat S(A.rows() + extra_rows, A.cols());
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+/// Rotation of the centroid line's tangent at node h (rad per m of displacement).
+/// frames: the node's rotation unknown th_h. chain (no rotation unknown): the chord through
+/// the node's neighbours, i.e. the mean of its two links' rotations,
+///   (nu_{h-1} . (u_h - u_{h-1}) + nu_h . (u_{h+1} - u_h)) / (2 l),
+/// nu_j the left normal of side j (a link's rotation is nu_j . du / l, model.hpp).
+Row tangent_rotation(const Model& m, const std::vector<Vec2>& p, int h) {
+  if (m.dofs_per_node == 3) return {{3 * h + 2, 1.0}};
+  const int n = m.n, hm = (h + n - 1) % n, hp = (h + 1) % n;
+  auto normal = [&](int j) {  // left normal of side j, unit
+    const Vec2& a = p[j];
+    const Vec2& b = p[(j + 1) % n];
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    return Vec2{-(b.y - a.y) / len, (b.x - a.x) / len};
+  };
+  const Vec2 na = normal(hm), nb = normal(h);
+  const double c = 1.0 / (2.0 * m.side);
+  return {{2 * hm, -c * na.x}, {2 * hm + 1, -c * na.y}, {2 * h, c * (na.x - nb.x)},
+          {2 * h + 1, c * (na.y - nb.y)}, {2 * hp, c * nb.x},   {2 * hp + 1, c * nb.y}};
+}
+
+/// The spec's terms beyond the bare ring, each once, for every variant:
+/// - foundation: lumped at the nodes, each node standing for one side l of ring: rows
+///   r_k . u_k and t_k . u_k of B with D = k_r l and k_t l (r_k, t_k the radial and
+///   tangential unit vectors of the undeformed node; fixed directions, ring/spec.hpp);
+/// - elastic support at node h: rows ux_h, uy_h of B with D = kx, ky; kr: frames a row th_h
+///   with D = kr; the chain see below;
+/// - point mass at node h: m on (ux_h, uy_h); J on the rotation (a frame's rotation with
+///   J > 0 becomes inertial: the lumped frame keeps it, not condensed);
+/// - clamp: frames block th_h in S (support_rows()); the chain see below.
+/// The chain's rotational terms (the convention of multibody/attachments.hpp, so that the two
+/// chains stay one model): the hinge spring EI/l = K stands for the bending from one link's
+/// midpoint to the next; split into two halves 2K from each link to the hinge's own massless
+/// rotation psi, it is the same spring with psi = the chord rotation m (tangent_rotation()).
+/// A spring kr from psi to the ground, psi condensed, is 4K and kr in series on m:
+/// D = 4K kr / (4K + kr) on the row g = tangent_rotation(h), and psi = 4K m / (4K + kr), so a
+/// point inertia J acts as J (4K / (4K + kr))^2 g g^T. A clamp is kr -> infinity: 4K on m
+/// (the constraint m = 0 instead converges at order 1 only: terms_test.cpp's clamped ring).
+/// Zero stiffnesses add no row (D stays positive for the mixed system, eigen.hpp). O(n).
+void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m) {
+  const int n = m.n, dpn = m.dofs_per_node;
+  Triplets bt, mt;
+  std::vector<double> d;
+  auto stiffness_row = [&](const Row& g, double k) {
+    if (k <= 0.0) return;
+    for (const auto& [dof, c] : g) bt.emplace_back(static_cast<int>(d.size()), dof, c);
+    d.push_back(k);
+  };
+  const ring::Foundation& f = spec.foundation;
+  check_nonnegative(f.radial, "foundation.radial");
+  check_nonnegative(f.tangential, "foundation.tangential");
+  if (f.any())
+    for (int k = 0; k < n; ++k) {
+      const double rr = std::hypot(p[k].x, p[k].y), rx = p[k].x / rr, ry = p[k].y / rr;
+      stiffness_row({{dpn * k, rx}, {dpn * k + 1, ry}}, f.radial * m.side);
+      stiffness_row({{dpn * k, -ry}, {dpn * k + 1, rx}}, f.tangential * m.side);
+    }
+  std::vector<double> kr(n, 0.0);  // rotational springs to the ground by node (a clamp: infinite)
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
+    const ring::Spring& s = spec.supports.springs[i];
+    const std::string key = "supports.springs[" + std::to_string(i + 1) + "]";
+    const int h = node_of(s.angle, m.anchor_deg, n, key);
+    check_nonnegative(s.kx, key + ".kx");
+    check_nonnegative(s.ky, key + ".ky");
+    check_nonnegative(s.kr, key + ".kr");
+    stiffness_row({{dpn * h, 1.0}}, s.kx);
+    stiffness_row({{dpn * h + 1, 1.0}}, s.ky);
+    kr[h] += s.kr;
+  }
+  const bool chain = dpn == 2;
+  if (chain && spec.supports.clamp) kr[node_of(*spec.supports.clamp, m.anchor_deg, n, "supports.clamp")] = HUGE_VAL;
+  const double k4 = 4.0 * spec.EI() / m.side;  // the chain's two half hinge springs 2K in parallel
+  for (int h = 0; h < n; ++h)
+    if (kr[h] > 0.0) stiffness_row(tangent_rotation(m, p, h), !chain ? kr[h] : std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h]));
+  for (std::size_t i = 0; i < spec.masses.size(); ++i) {
+    const ring::PointMass& pm = spec.masses[i];
+    const std::string key = "masses[" + std::to_string(i + 1) + "]";
+    const int h = node_of(pm.angle, m.anchor_deg, n, key);
+    check_nonnegative(pm.mass, key + ".mass");
+    check_nonnegative(pm.inertia, key + ".inertia");
+    mt.emplace_back(dpn * h, dpn * h, pm.mass);
+    mt.emplace_back(dpn * h + 1, dpn * h + 1, pm.mass);
+    // The chain's psi follows the chord rotation by 4K / (4K + kr) (0 at a clamp).
+    const double follows = !chain ? 1.0 : std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
+    const double J = pm.inertia * follows * follows;
+    if (J > 0.0) {
+      const Row g = tangent_rotation(m, p, h);
+      for (const auto& [a, ca] : g)
+        for (const auto& [b, cb] : g) mt.emplace_back(a, b, J * ca * cb);
+      if (!chain) m.massless[3 * h + 2] = 0;
+    }
+  }
+  if (!d.empty()) {
+    const int rows = static_cast<int>(d.size());
+    SpMat Bx(rows, m.B.cols());
+    Bx.setFromTriplets(bt.begin(), bt.end());
+    const SpMat DBx = Eigen::Map<const Eigen::VectorXd>(d.data(), rows).asDiagonal() * Bx;
+    m.K += SpMat(Bx.transpose() * DBx);
+    m.B = stacked(m.B, bt, rows);
+    m.D.conservativeResize(m.D.size() + rows);
+    m.D.tail(rows) = Eigen::Map<const Eigen::VectorXd>(d.data(), rows);
+  }
+  if (!mt.empty()) {
+    SpMat Mx(m.M.rows(), m.M.cols());
+    Mx.setFromTriplets(mt.begin(), mt.end());
+    m.M += Mx;
+  }
+}
+
 }  // namespace
 
 Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
@@ -239,6 +394,7 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
     assemble_chain(spec, p, m.side, m);
   else
     assemble_frame(spec, p, m.side, options.variant == ring::LumpedOptions::Variant::frame_consistent, m);
+  add_terms(spec, p, m);
   m.S = support_rows(spec, p, m.dofs_per_node, m.anchor_deg);
   return m;
 }

@@ -37,6 +37,8 @@ struct Model {
   /// frames: per element j, rows 3j = axial strain (u2 - u1) . t / l, D = EA l, and
   /// 3j+1, 3j+2 = curvature at the two Gauss points x = l/2 (1 -+ 1/sqrt 3), D = EI l/2
   /// (two-point Gauss integrates the linear curvature's energy exactly).
+  /// Then, for every variant, one row per positive stiffness of the spec's terms
+  /// (assemble()): foundation (2 per node), springs kx, ky, kr, the chain's clamp.
   /// The solvers work with B and D, never with the assembled K: K's entries are of
   /// order EI/l^3 while a smooth mode's K x is of order EI/R^4 |x|, so rounding K costs
   /// eps (R/l)^4 relative accuracy in the low eigenvalues; through B it costs eps (R/l)^2.
@@ -46,17 +48,20 @@ struct Model {
                              ///< lumped frame's rotation rows are zero)
   SpMat C;                   ///< internal constraints: chain link lengths (n x N, rows
                              ///< t_j . (u_{j+1} - u_j) = 0, t_j the unit side vector); empty (0 x N) for frames
-  SpMat S;                   ///< supports: one row per blocked direction (a unit vector on one
-                             ///< node's (ux, uy)): pin 2 rows, roller 1 row (normal to pin-roller line)
+  SpMat S;                   ///< supports: one row per blocked direction, a unit vector on one
+                             ///< node's (ux, uy) or on a frame node's rotation alone: 2 rows per
+                             ///< pinned point, roller 1 row (normal to pin-roller line), a frame's clamp 1 row
   std::vector<char> massless;///< per DOF: 1 if it carries no mass and is condensed statically
-                             ///< (the lumped frame's rotations), else 0
-  int expected_rigid = 0;    ///< rigid modes the supports leave (3 free, 1 pin, 0 pin + roller)
+                             ///< (the lumped frame's rotations without a point inertia), else 0
+  int expected_rigid = 0;    ///< rigid modes the spec leaves, RingSpec::rigid_modes() (0 to 3)
   double lambda_scale = 0.0; ///< EI / (rho A R^4), rad^2/s^2: scale of every bending omega^2
 };
 
-/// Builds the chosen variant. Checks (std::invalid_argument, naming the valid range):
-/// n >= 4; positive radius, E, rho, A, I; a roller needs a pin, must fall on a node
-/// (ring::on_node) and differ from the pin node. O(n) time and memory.
+/// Builds the chosen variant. Checks (std::invalid_argument, naming the key and the valid
+/// range): n >= 4; positive radius, E, rho, A, I; a roller needs a pin, must fall on a node
+/// (ring::on_node) and differ from the pin node; pins, clamp, springs and masses on nodes
+/// (anchor + 360 k / n), the clamp at a pinned point, stiffnesses, masses and inertias
+/// finite and >= 0. O(n) time and memory.
 ///
 /// chain: point masses m = rho A l at the side midpoints, rigid massless links (rows of C),
 ///   rotational springs k = EI/l at all n hinges. The spring angle at hinge j is the
@@ -68,6 +73,24 @@ struct Model {
 ///   linear axial (EA), cubic Hermite bending (EI); masses rho A l / 2 per element end on
 ///   the translations only (frame, rotations massless -> condensed) or the consistent
 ///   mass matrix (frame_consistent).
+/// Terms of every variant (ring/spec.hpp), each written once:
+///   rotation of the tangent at node h: the frames' rotation unknown th_h; the chain has none
+///     and uses the chord through the node's neighbours, the mean of its two links' rotations;
+///   pins: both translations of the node in S;
+///   springs: kx, ky on ux_h, uy_h, kr on the rotation (rows of B, D = k);
+///   point masses: m on ux_h, uy_h, J on the rotation; a lumped-frame rotation with J > 0 is
+///     inertial and kept, not condensed;
+///   clamp: frames: their rotation = 0, in S before any condensation; the chain: kr -> infinity
+///     in the chain's convention below;
+///   the chain's rotational terms follow multibody/attachments.hpp, so both chains are one
+///     model: its hinge spring K = EI/l is two halves 2K from each link to the hinge's own
+///     massless rotation psi; kr from psi to the ground, psi condensed, is 4K and kr in series
+///     on the chord rotation, J acts through psi = 4K/(4K + kr) times it, a clamp is 4K on it
+///     (order 2; a constraint on the chord rotation would be order 1, terms_test.cpp);
+///   foundation: lumped at the nodes, each standing for one side l of ring: l k_r (r.u)^2 +
+///     l k_t (t.u)^2, r and t the undeformed node's radial and tangential unit vectors. With the
+///     nodal (trapezoidal) rule on a periodic integrand the error is the n-gon's O(h^2), like
+///     the rest of each model (tests/lumped_mass/terms_test.cpp measures the order).
 Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 
 }  // namespace lumped

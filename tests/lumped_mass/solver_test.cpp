@@ -23,11 +23,44 @@ using ring::LumpedOptions;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
+/// "free", "pin", "roller": the paper's supports. With the terms beyond the paper (every
+/// stiffness ~10-100 times the ring's own scale, so that each term matters):
+/// "clamped_terms": pin + clamp at 180 deg, a spring (kx, ky, kr) at 90, a point mass with
+/// inertia at 270, a radial + tangential foundation; "free_terms": no pin, the foundation,
+/// a point mass with inertia at 0 deg and a kr spring at 90.
 ring::RingSpec with_supports(const std::string& s) {
   ring::RingSpec spec = ringtest::free_ring();
-  if (s != "free") spec.supports.pin = 180.0;
+  if (s != "free" && s != "free_terms") spec.supports.pin = 180.0;
   if (s == "roller") spec.supports.roller = 0.0;
+  const double R = spec.radius, EI = spec.EI(), mass = 2.0 * M_PI * R * spec.rhoA();
+  if (s == "clamped_terms") {
+    spec.supports.clamp = 180.0;
+    spec.supports.springs.push_back({90.0, 50.0 * EI / (R * R * R), 20.0 * EI / (R * R * R), 10.0 * EI / R});
+    spec.masses.push_back({270.0, 0.05 * mass, 0.05 * mass * 0.5 * 0.5});
+  }
+  if (s == "free_terms") {
+    spec.masses.push_back({0.0, 0.05 * mass, 0.05 * mass * 0.5 * 0.5});
+    spec.supports.springs.push_back({90.0, 0.0, 0.0, 10.0 * EI / R});
+  }
+  if (s == "clamped_terms" || s == "free_terms") {
+    spec.foundation.radial = 30.0 * EI / std::pow(R, 4);
+    spec.foundation.tangential = 10.0 * EI / std::pow(R, 4);
+  }
   return spec;
+}
+
+/// The eigenproblem's dimension counted by hand: inertial DOFs (chain n after its n link
+/// rows, frame 2n translations plus a rotation carrying a point inertia, frame-consistent
+/// 3n) minus the constraint rows: the paper's supports leave n - 3, 2n - 3, 3n - 3 elastic
+/// modes plus the rigid ones; "clamped_terms" removes pin (2) and clamp (1 for
+/// frame-consistent; for the lumped frame it blocks a massless rotation, for the chain it is
+/// a spring), "free_terms" removes nothing.
+int expected_unknowns(const std::string& s, LumpedOptions::Variant v, int n, int rigid) {
+  const int per_node = v == kChain ? 1 : v == kFrame ? 2 : 3;
+  const int inertia = v == kFrame ? 1 : 0;  // the point mass's rotation, kept by the lumped frame
+  if (s == "clamped_terms") return per_node * n - 2 - (v == kConsistent ? 1 : 0) + inertia;
+  if (s == "free_terms") return per_node * n + inertia;
+  return per_node * n - 3 + rigid;
 }
 
 std::string name(LumpedOptions::Variant v) {
@@ -95,9 +128,8 @@ TEST_P(LumpedSolver, DenseAndSparseAgree) {
   EXPECT_EQ(std::get<std::string>(s.model.at("method")), "sparse");
   EXPECT_EQ(d.rigid_modes, spec.rigid_modes());
   EXPECT_EQ(s.rigid_modes, spec.rigid_modes());
-  // The eigenproblem's dimension: admissible DOFs (elastic n - 3, 2n - 3, 3n - 3 plus rigid).
-  const int per_node = c.variant == kChain ? 1 : c.variant == kFrame ? 2 : 3;
-  EXPECT_EQ(d.unknowns, per_node * c.n - 3 + spec.rigid_modes());
+  // The eigenproblem's dimension: admissible DOFs (expected_unknowns).
+  EXPECT_EQ(d.unknowns, expected_unknowns(c.supports, c.variant, c.n, spec.rigid_modes()));
   EXPECT_EQ(s.unknowns, d.unknowns);
   ASSERT_EQ(d.omega.size(), 12u);
   ASSERT_EQ(s.omega.size(), 12u);
@@ -118,7 +150,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{kFrame, "free", 40}, Case{kFrame, "pin", 40}, Case{kFrame, "roller", 40},
                       Case{kConsistent, "free", 40}, Case{kConsistent, "pin", 40}, Case{kConsistent, "roller", 40},
                       Case{kChain, "free", 160}, Case{kChain, "pin", 160}, Case{kFrame, "free", 160},
-                      Case{kFrame, "pin", 160}, Case{kConsistent, "free", 160}, Case{kConsistent, "pin", 160}),
+                      Case{kFrame, "pin", 160}, Case{kConsistent, "free", 160}, Case{kConsistent, "pin", 160},
+                      Case{kChain, "clamped_terms", 40}, Case{kFrame, "clamped_terms", 40},
+                      Case{kConsistent, "clamped_terms", 40}, Case{kChain, "free_terms", 40},
+                      Case{kFrame, "free_terms", 40}, Case{kConsistent, "free_terms", 40},
+                      Case{kChain, "clamped_terms", 160}, Case{kFrame, "free_terms", 160}),
     [](const ::testing::TestParamInfo<Case>& i) {
       return name(i.param.variant) + "_" + i.param.supports + "_n" + std::to_string(i.param.n);
     });
