@@ -106,7 +106,7 @@ void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
   std::string list;
   for (std::size_t i = 0; i < keys.size(); ++i) list += (i ? ", " : "") + keys[i];
   throw std::invalid_argument(who + " does not take " + list +
-                              " yet (linear modes of the multibody chain do; see the README's solver table)");
+                              " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
 }
 
 std::vector<std::string> RingSpec::terms_beyond_paper() const {
