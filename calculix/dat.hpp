@@ -1,0 +1,25 @@
+// Reading ccx's .dat file of a *FREQUENCY step with *NODE PRINT U.
+//
+// The file holds the table "E I G E N V A L U E   O U T P U T" (mode number, eigenvalue,
+// frequency in rad/time and cycles/time, imaginary part: 7 significant digits), then for
+// each mode a block "E I G E N V A L U E    N U M B E R   k" with the lines
+// "node ux uy uz" of the printed node set (the beam nodes: ccx prints the mean of the
+// expanded section's nodes). The eigenvectors are normalized to U^T M U = 1.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace calculix {
+
+struct DatMode {
+  double omega = 0.0;  ///< rad/s, from the frequency column
+  std::vector<double> ux, uy, uz;  ///< [node - 1], m per unit modal mass
+};
+
+/// Parses the modes of a .dat text whose nodes are 1 .. nodes. Throws
+/// ring::NumericalError naming `name` and the line for a file that is not what ccx writes
+/// (a missing table, a mode without displacements, a node out of range).
+std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
+
+}  // namespace calculix
