@@ -157,6 +157,8 @@ struct Bad {
   std::string name, csv, shapes, expect;
 };
 
+void PrintTo(const Bad& b, std::ostream* os) { *os << b.name; }
+
 class MalformedImport : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(MalformedImport, IsExit2NamingTheFileLineAndColumn) {
