@@ -167,6 +167,7 @@ RunOutput run(const std::string& deck, const RunOptions& options, const Hooks& h
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail("ccx exited with status " + std::to_string(WEXITSTATUS(status)));
   if (o.log.find("*ERROR") != std::string::npos) fail("ccx reported an error");
   o.dat = read_all(job.path() + "/ring.dat");
+  o.sta = read_all(job.path() + "/ring.sta");
   if (o.dat.empty()) fail("ccx wrote no ring.dat");
   return o;
 }

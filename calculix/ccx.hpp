@@ -31,6 +31,7 @@ struct RunOptions {
 /// What a successful run leaves: the files ringvib reads, and ccx's output.
 struct RunOutput {
   std::string dat;          ///< job.dat
+  std::string sta;          ///< job.sta (the increments of a nonlinear step)
   std::string log;          ///< ccx's standard output and error
   double seconds = 0.0;     ///< wall time of the ccx process
   double cpu_seconds = 0.0; ///< its user + system time

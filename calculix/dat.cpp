@@ -115,4 +115,50 @@ std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, cons
   return modes;
 }
 
+DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name) {
+  std::istringstream in(text);
+  DatStatic out;
+  auto fail = [&](int line, const std::string& what) {
+    throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line) + ": " + what);
+  };
+  int line_no = 0, seen = 0;
+  bool block = false;
+  std::vector<bool> have;
+  auto close = [&](int line) {
+    if (block && seen != nodes)
+      fail(line, "displacements of " + std::to_string(seen) + " of " + std::to_string(nodes) + " nodes");
+  };
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    const auto w = words(line);
+    if (line.find("displacements (vx,vy,vz)") != std::string::npos) {
+      close(line_no);
+      double t = 0.0;
+      if (w.empty() || !to_double(w.back(), t)) fail(line_no, "expected the time at the end of the line");
+      out.time = t;
+      ++out.increments;
+      out.ux.assign(nodes, 0.0);
+      out.uy.assign(nodes, 0.0);
+      have.assign(nodes, false);
+      seen = 0;
+      block = true;
+      continue;
+    }
+    long node = 0;
+    if (block && w.size() == 4 && to_int(w[0], node)) {
+      double x, y, z;
+      if (!to_double(w[1], x) || !to_double(w[2], y) || !to_double(w[3], z)) fail(line_no, "expected: node, ux, uy, uz");
+      if (node < 1 || node > nodes) fail(line_no, "node " + std::to_string(node) + " is not a beam node of the deck");
+      if (have[node - 1]) fail(line_no, "node " + std::to_string(node) + " printed twice");
+      have[node - 1] = true;
+      ++seen;
+      out.ux[node - 1] = x;
+      out.uy[node - 1] = y;
+    }
+  }
+  close(line_no);
+  if (out.increments == 0) fail(line_no, "no displacements (NODE PRINT): no increment converged");
+  return out;
+}
+
 }  // namespace calculix

@@ -22,4 +22,16 @@ struct DatMode {
 /// (a missing table, a mode without displacements, a node out of range).
 std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
 
+/// The last displacement block of a static step's .dat (*NODE PRINT after every
+/// increment: "displacements (vx,vy,vz) for set NALL and time t").
+struct DatStatic {
+  double time = 0.0;        ///< the step time (load factor) of the last block
+  int increments = 0;       ///< blocks printed: the converged increments
+  std::vector<double> ux, uy;  ///< [node - 1], m
+};
+
+/// Parses a static step's .dat of nodes 1 .. nodes. Throws ring::NumericalError naming the
+/// line for a file that is not what ccx writes, or that has no displacements.
+DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
+
 }  // namespace calculix

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
 #include <sstream>
 
 #include "ring/errors.hpp"
@@ -64,8 +65,11 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
   }
 }
 
-Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const FrequencyStep& step,
-                    const std::string& title) {
+namespace {
+
+/// Everything but the step: heading, nodes, elements, material, section, supports.
+Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const std::string& title,
+                const std::string& analysis) {
   check_deck(spec, o);
   using Element = ring::CalculixOptions::Element;
   Deck d;
@@ -87,7 +91,7 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
 
   std::ostringstream s;
   s << "** CalculiX deck written by ringvib (calculix/deck.cpp)" << (title.empty() ? "" : ": " + title) << "\n"
-    << "** In-plane vibration of a circular ring: " << o.elements << " " << type << " beam elements, which ccx\n"
+    << "** " << analysis << " of a circular ring: " << o.elements << " " << type << " beam elements, which ccx\n"
     << "** expands into " << (o.element == Element::b31 ? "8" : "20") << "-node bricks of the section's shape.\n"
     << "** Units SI (m, kg, s, N, Pa); frequencies in the .dat file in rad/s and cycles/s.\n"
     << "*HEADING\n"
@@ -158,12 +162,45 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
     }
   }
 
+  d.text = s.str();
+  return d;
+}
+
+}  // namespace
+
+Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const FrequencyStep& step,
+                    const std::string& title) {
+  Deck d = model_deck(spec, o, title, "In-plane vibration");
+  std::ostringstream s;
   s << "** Step: the " << step.eigenvalues << " lowest eigenvalues (in-plane, rigid and out-of-plane modes\n"
     << "** together; ringvib keeps the in-plane ones). Displacements of the beam nodes go to the\n"
     << "** .dat file (NODE PRINT), those of the expanded bricks to the .frd file (for cgx).\n"
     << "*STEP\n*FREQUENCY\n" << step.eigenvalues << "\n"
     << "*NODE PRINT, NSET=NALL\nU\n*NODE FILE\nU\n*END STEP\n";
-  d.text = s.str();
+  d.text += s.str();
+  return d;
+}
+
+Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
+                 const std::string& title) {
+  Deck d = model_deck(spec, o, title, "Nonlinear statics");
+  const int node = node_at(d.node_angles, st.load.angle);
+  if (node < 0)
+    throw ring::InputError("", "static.at", "angle " + number(st.load.angle) + " is not a node of the calculix model");
+  const double inc = 1.0 / st.steps;
+  std::ostringstream s;
+  s << "** Step: geometrically nonlinear statics (NLGEOM) under the dead point load, in load\n"
+    << "** increments of 1/" << st.steps << " (static.steps; ccx may cut them, down to 1e-5 of that).\n"
+    << "*STEP, NLGEOM, INC=" << std::max(1000, 20 * st.steps) << "\n*STATIC\n"
+    << number(inc) << ", 1.0, " << number(1e-5 * inc) << ", " << number(inc) << "\n"
+    << "** The load at " << number(st.load.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N.\n"
+    << "*CLOAD\n";
+  if (st.load.force[0] != 0.0) s << node + 1 << ", 1, " << number(st.load.force[0]) << "\n";
+  if (st.load.force[1] != 0.0) s << node + 1 << ", 2, " << number(st.load.force[1]) << "\n";
+  if (st.load.force[0] == 0.0 && st.load.force[1] == 0.0) s << node + 1 << ", 1, 0.0\n";
+  s << "** Displacements of the beam nodes after every increment, to the .dat file.\n"
+    << "*NODE PRINT, NSET=NALL\nU\n*END STEP\n";
+  d.text += s.str();
   return d;
 }
 

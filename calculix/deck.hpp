@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace calculix {
@@ -47,6 +48,13 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options
 /// The deck of a frequency analysis. O(elements).
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const FrequencyStep& step,
                     const std::string& title = "");
+
+/// The deck of the nonlinear statics under static.at/static.force: *STEP, NLGEOM with
+/// *STATIC in static.steps equal increments (ccx may cut them), *CLOAD at the load's node,
+/// *NODE PRINT of the beam nodes after every increment. Throws ring::InputError if the
+/// load is not at a node. O(elements).
+Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& step,
+                 const std::string& title = "");
 
 /// Nodes of the model: elements (B31) or 2 elements (B32, B32R).
 int node_count(const ring::CalculixOptions& options);

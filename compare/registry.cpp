@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "calculix/modes.hpp"
+#include "calculix/statics.hpp"
 #include "compare/fem_module.hpp"
 #include "compare/files.hpp"
 #include "fem_reference/checks.hpp"
@@ -286,6 +287,13 @@ SolverEntry calculix_entry() {
   };
   e.modes = [](const ring::Scene& s, int count) {
     return with_scene_file(s, [&] { return calculix::compute_modes(s.ring, s.calculix, count, signal_hooks(), s.title); });
+  };
+  e.check_static = [](const ring::Scene& s) {
+    with_scene_file(s, [&] { calculix::check_static(s.ring, s.calculix, *s.statics); });
+  };
+  e.statics = [](const ring::Scene& s) {
+    return with_scene_file(
+        s, [&] { return calculix::solve_static(s.ring, s.calculix, *s.statics, signal_hooks(), s.title); });
   };
   return e;
 }

@@ -174,6 +174,33 @@ TEST(CalculixDeck, RollerOffTheAxesIsAnEquationNormalToTheLineThroughThePin) {
   EXPECT_NEAR(std::hypot(c[1], c[2]), 1.0, 1e-12);
 }
 
+TEST(CalculixDeck, StaticStepLoadsTheNodeAtTheLoadsAngle) {
+  ring::RingSpec r = paper_ring();
+  r.supports.pin = 180.0;
+  r.supports.roller = 0.0;
+  ring::StaticOptions st;
+  st.load.angle = 90.0;
+  st.load.force = {0.0, -2e4};
+  st.steps = 8;
+  const std::string deck = calculix::static_deck(r, {}, st).text;
+  const Parsed p = parse(deck);
+  EXPECT_NE(deck.find("*STEP, NLGEOM"), std::string::npos);
+  // The *CLOAD line: the node at (0, 10), direction 2, the force.
+  const auto at = deck.find("*CLOAD\n");
+  ASSERT_NE(at, std::string::npos);
+  const auto f = fields(deck.substr(at + 7, deck.find('\n', at + 7) - at - 7));
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_EQ(std::stoi(f[0]), node_near(p, 0.0, 10.0));
+  EXPECT_EQ(f[1], "2");
+  EXPECT_EQ(std::stod(f[2]), -2e4);
+  // Increments of 1/8 of the load, the step ending at 1.
+  const auto inc = fields(deck.substr(deck.find("*STATIC\n") + 8, 80).substr(0, deck.substr(deck.find("*STATIC\n") + 8).find('\n')));
+  EXPECT_EQ(std::stod(inc[0]), 0.125);
+  EXPECT_EQ(std::stod(inc[1]), 1.0);
+  st.load.angle = 91.0;  // not a node
+  EXPECT_THROW(calculix::static_deck(r, {}, st), ring::InputError);
+}
+
 TEST(CalculixDeck, RefusesWhatItCannotExpressNamingTheKey) {
   ring::RingSpec r = paper_ring();
   r.section.shape = ring::Section::Shape::general;
@@ -244,6 +271,27 @@ TEST(CalculixDat, ReadsFrequenciesAndNodeDisplacements) {
   EXPECT_EQ(modes[1].omega, 4.178405);
   EXPECT_EQ(modes[1].ux[1], -7.451822e-04);
   EXPECT_EQ(modes[1].uy[0], 2.927829e-05);
+}
+
+TEST(CalculixDat, AStaticStepsLastIncrementIsTheResult) {
+  const std::string dat = R"(
+ displacements (vx,vy,vz) for set NALL and time  0.5000000E+00
+
+         1  1.000000E-01  0.000000E+00  0.000000E+00
+         2  2.000000E-01  0.000000E+00  0.000000E+00
+
+ displacements (vx,vy,vz) for set NALL and time  0.1000000E+01
+
+         1  3.000000E-01 -1.000000E-02  0.000000E+00
+         2  4.000000E-01  0.000000E+00  0.000000E+00
+)";
+  const auto s = calculix::read_static_dat(dat, 2);
+  EXPECT_EQ(s.time, 1.0);
+  EXPECT_EQ(s.increments, 2);
+  EXPECT_EQ(s.ux[1], 0.4);
+  EXPECT_EQ(s.uy[0], -0.01);
+  EXPECT_THROW(calculix::read_static_dat(dat, 3), ring::NumericalError);
+  EXPECT_THROW(calculix::read_static_dat("no increment\n", 2), ring::NumericalError);
 }
 
 TEST(CalculixDat, AMalformedFileIsANumericalErrorNamingTheLine) {
