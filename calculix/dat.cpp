@@ -161,4 +161,57 @@ DatStatic read_static_dat(const std::string& text, int nodes, const std::string&
   return out;
 }
 
+DatHistory read_history_dat(const std::string& text, const std::vector<int>& nodes, const std::string& name) {
+  std::istringstream in(text);
+  DatHistory out;
+  out.ux.assign(nodes.size(), {});
+  out.uy.assign(nodes.size(), {});
+  auto fail = [&](int line, const std::string& what) {
+    throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line) + ": " + what);
+  };
+  int line_no = 0;
+  std::size_t seen = 0;
+  bool block = false;
+  auto close = [&](int line) {
+    if (block && seen != nodes.size())
+      fail(line, "displacements of " + std::to_string(seen) + " of the " + std::to_string(nodes.size()) +
+                     " recorded nodes");
+  };
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    const auto w = words(line);
+    if (line.find("displacements (vx,vy,vz)") != std::string::npos) {
+      close(line_no);
+      double t = 0.0;
+      if (w.empty() || !to_double(w.back(), t)) fail(line_no, "expected the time at the end of the line");
+      out.t.push_back(t);
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        out.ux[i].push_back(NAN);
+        out.uy[i].push_back(NAN);
+      }
+      seen = 0;
+      block = true;
+      continue;
+    }
+    long node = 0;
+    if (block && w.size() == 4 && to_int(w[0], node)) {
+      double x, y, z;
+      if (!to_double(w[1], x) || !to_double(w[2], y) || !to_double(w[3], z)) fail(line_no, "expected: node, ux, uy, uz");
+      bool found = false;
+      for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (nodes[i] == node) {
+          if (!std::isnan(out.ux[i].back())) fail(line_no, "node " + std::to_string(node) + " printed twice");
+          out.ux[i].back() = x;
+          out.uy[i].back() = y;
+          ++seen;
+          found = true;
+        }
+      if (!found) fail(line_no, "node " + std::to_string(node) + " is not a recorded node");
+    }
+  }
+  close(line_no);
+  if (out.t.empty()) fail(line_no, "no displacements (NODE PRINT): no increment converged");
+  return out;
+}
+
 }  // namespace calculix

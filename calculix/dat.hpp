@@ -34,4 +34,15 @@ struct DatStatic {
 /// line for a file that is not what ccx writes, or that has no displacements.
 DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
 
+/// The displacement history of a dynamic step's .dat (*NODE PRINT of a node set after
+/// every increment).
+struct DatHistory {
+  std::vector<double> t;                    ///< [increment], s
+  std::vector<std::vector<double>> ux, uy;  ///< [node of `nodes`][increment], m
+};
+
+/// Parses the blocks of the nodes `nodes` (1-based numbers, in the order wanted; each must
+/// be printed once per block). Throws ring::NumericalError naming the line.
+DatHistory read_history_dat(const std::string& text, const std::vector<int>& nodes, const std::string& name = "ring.dat");
+
 }  // namespace calculix

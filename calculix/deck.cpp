@@ -181,6 +181,64 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
   return d;
 }
 
+Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::ResponseOptions& rs,
+                   const std::string& title) {
+  check_response_deck(rs);
+  Deck d = model_deck(spec, o, title, "Forced nonlinear response");
+  const int node = node_at(d.node_angles, rs.load.angle);
+  if (node < 0)
+    throw ring::InputError("", "response.at", "angle " + number(rs.load.angle) + " is not a node of the calculix model");
+  std::vector<int> record;
+  for (double a : rs.record) {
+    const int k = node_at(d.node_angles, a);
+    if (k < 0) throw ring::InputError("", "response.record", "angle " + number(a) + " is not a node of the calculix model");
+    record.push_back(k);
+  }
+  std::ostringstream s;
+  s << "** The recorded points (response.record), printed after every increment.\n*NSET, NSET=NREC\n";
+  for (std::size_t i = 0; i < record.size(); ++i) s << record[i] + 1 << (i + 1 < record.size() ? ", " : "\n");
+  // The load factor in time: exact for step and ramp (piecewise linear), sampled at every
+  // time step for the half-sine and the harmonic (ccx interpolates linearly in between).
+  s << "** Load factor in time (response.history = " << ring::to_string(rs.load.history.kind) << ", period "
+    << number(rs.load.history.period) << " s): time, factor.\n*AMPLITUDE, NAME=LOAD\n";
+  const auto& h = rs.load.history;
+  const long steps = std::lround(std::ceil(rs.t_end / rs.dt - 1e-9));
+  if (h.kind == ring::LoadHistory::Kind::step) {
+    s << "0.0, 1.0\n" << number(rs.t_end * 2.0) << ", 1.0\n";
+  } else if (h.kind == ring::LoadHistory::Kind::ramp) {
+    s << "0.0, 0.0\n" << number(h.period) << ", 1.0\n" << number(std::max(rs.t_end, h.period) * 2.0) << ", 1.0\n";
+  } else {
+    for (long k = 0; k <= steps; ++k) {
+      const double t = std::min(k * rs.dt, rs.t_end);
+      s << number(t) << ", " << number(h.factor(t)) << "\n";
+    }
+  }
+  s << "** Step: geometrically nonlinear dynamics (NLGEOM) from rest, fixed time step dt = " << number(rs.dt)
+    << " s\n** to t_end = " << number(rs.t_end) << " s; ALPHA = 0: Newmark's average acceleration.\n"
+    << "*STEP, NLGEOM, INC=" << steps + 10 << "\n*DYNAMIC, DIRECT, ALPHA=0.0\n"
+    << number(rs.dt) << ", " << number(rs.t_end) << "\n"
+    << "** The load at " << number(rs.load.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N times the factor.\n"
+    << "*CLOAD, AMPLITUDE=LOAD\n";
+  if (rs.load.force[0] != 0.0) s << node + 1 << ", 1, " << number(rs.load.force[0]) << "\n";
+  if (rs.load.force[1] != 0.0) s << node + 1 << ", 2, " << number(rs.load.force[1]) << "\n";
+  if (rs.load.force[0] == 0.0 && rs.load.force[1] == 0.0) s << node + 1 << ", 1, 0.0\n";
+  s << "*NODE PRINT, NSET=NREC\nU\n*END STEP\n";
+  d.text += s.str();
+  return d;
+}
+
+void check_response_deck(const ring::ResponseOptions& rs) {
+  if (rs.integrator != ring::ResponseOptions::Integrator::newmark)
+    throw ring::InputError("", "response.integrator",
+                           "the calculix deck writes Newmark's average acceleration (ccx's *DYNAMIC with ALPHA = 0): "
+                           "\"newmark\" only");
+  if (rs.rayleigh_mass != 0.0 || rs.rayleigh_stiffness != 0.0)
+    throw ring::InputError("", rs.rayleigh_mass != 0.0 ? "response.rayleigh_mass" : "response.rayleigh_stiffness",
+                           "the calculix deck writes no damping");
+  if (rs.hinge_damping != 0.0)
+    throw ring::InputError("", "response.hinge_damping", "the calculix deck writes no damping");
+}
+
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
   Deck d = model_deck(spec, o, title, "Nonlinear statics");

@@ -56,6 +56,18 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& opt
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& step,
                  const std::string& title = "");
 
+/// The deck of the forced response: *STEP, NLGEOM with *DYNAMIC, DIRECT, ALPHA = 0
+/// (Newmark's average acceleration, fixed dt to t_end), the load's history as an
+/// *AMPLITUDE, *NODE PRINT of the recorded nodes after every increment. Throws
+/// ring::InputError for what it cannot express (check_response_deck) or points off the
+/// nodes. O(elements + t_end / dt).
+Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options,
+                   const ring::ResponseOptions& response, const std::string& title = "");
+
+/// Refuses response options the deck cannot write: an integrator other than "newmark",
+/// damping (Rayleigh, hinge). ring::InputError naming the key.
+void check_response_deck(const ring::ResponseOptions& response);
+
 /// Nodes of the model: elements (B31) or 2 elements (B32, B32R).
 int node_count(const ring::CalculixOptions& options);
 

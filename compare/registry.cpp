@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "calculix/modes.hpp"
+#include "calculix/response.hpp"
 #include "calculix/statics.hpp"
 #include "compare/fem_module.hpp"
 #include "compare/files.hpp"
@@ -294,6 +295,13 @@ SolverEntry calculix_entry() {
   e.statics = [](const ring::Scene& s) {
     return with_scene_file(
         s, [&] { return calculix::solve_static(s.ring, s.calculix, *s.statics, signal_hooks(), s.title); });
+  };
+  e.check_response = [](const ring::Scene& s) {
+    with_scene_file(s, [&] { calculix::check_response(s.ring, s.calculix, *s.response); });
+  };
+  e.response = [](const ring::Scene& s) {
+    return with_scene_file(
+        s, [&] { return calculix::respond(s.ring, s.calculix, *s.response, signal_hooks(), s.title); });
   };
   return e;
 }

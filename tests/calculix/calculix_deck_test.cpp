@@ -201,6 +201,41 @@ TEST(CalculixDeck, StaticStepLoadsTheNodeAtTheLoadsAngle) {
   EXPECT_THROW(calculix::static_deck(r, {}, st), ring::InputError);
 }
 
+TEST(CalculixDeck, ResponseStepIsNewmarkWithTheLoadsHistory) {
+  ring::RingSpec r = paper_ring();
+  r.supports.pin = 180.0;
+  ring::ResponseOptions rs;
+  rs.load.angle = 0.0;
+  rs.load.force = {-2e4, 0.0};
+  rs.load.history.kind = ring::LoadHistory::Kind::half_sine;
+  rs.load.history.period = 0.5;
+  rs.dt = 0.1;
+  rs.t_end = 1.0;
+  rs.record = {0.0, 90.0};
+  const std::string deck = calculix::response_deck(r, {}, rs).text;
+  EXPECT_NE(deck.find("*STEP, NLGEOM"), std::string::npos);
+  EXPECT_NE(deck.find("*DYNAMIC, DIRECT, ALPHA=0.0\n1.0000000000000e-01, 1.0000000000000e+00\n"), std::string::npos);
+  EXPECT_NE(deck.find("*CLOAD, AMPLITUDE=LOAD\n"), std::string::npos);
+  // The amplitude: (t, sin(pi t / T)) up to T, then 0 (LoadHistory::factor), every dt.
+  std::istringstream in(deck.substr(deck.find("*AMPLITUDE, NAME=LOAD\n") + 22));
+  int rows = 0;
+  for (std::string line; std::getline(in, line) && line[0] != '*';) {
+    if (line.rfind("**", 0) == 0) continue;
+    const auto f = fields(line);
+    const double t = std::stod(f[0]);
+    EXPECT_NEAR(std::stod(f[1]), t < 0.5 ? std::sin(M_PI * t / 0.5) : 0.0, 1e-12) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 11);
+  rs.integrator = ring::ResponseOptions::Integrator::energy_momentum;
+  try {
+    calculix::check_response_deck(rs);
+    FAIL();
+  } catch (const ring::InputError& e) {
+    EXPECT_EQ(e.key(), "response.integrator");
+  }
+}
+
 TEST(CalculixDeck, RefusesWhatItCannotExpressNamingTheKey) {
   ring::RingSpec r = paper_ring();
   r.section.shape = ring::Section::Shape::general;
