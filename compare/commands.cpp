@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "calculix/modes.hpp"
 #include "compare/bench.hpp"
 #include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
@@ -96,6 +97,7 @@ const std::vector<std::string> kRunNames = {"report", "table", "modes_", "shapes
 const std::vector<std::string> kConvergeNames = {"convergence"};
 const std::vector<std::string> kBenchNames = {"bench"};
 const std::vector<std::string> kVtuNames = {"fem_modes"};
+const std::vector<std::string> kDeckNames = {"ring"};
 
 void require_modes(const ring::Scene& s, const std::string& command) {
   if (!modal(s))
@@ -294,6 +296,26 @@ int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
     files.publish();
     std::cout << "wrote " << out_dir << "/bench*.csv, .txt and .png\n";
   }
+  return 0;
+}
+
+int cmd_export_deck(const CommonArgs& a, const std::string& solver, const std::string& out_dir) {
+  // The deck needs neither ccx nor the cost guard: only the reader's checks and the deck's own.
+  const ring::Scene s = load_scene(a.scene, a.set);
+  if (solver != "calculix")
+    throw ring::InputError(a.scene, "--solver", "export-deck writes the deck of an external solver: calculix");
+  Outputs files;
+  files.folder(out_dir, "--out", kDeckNames);
+  calculix::Deck deck;
+  try {
+    deck = calculix::modes_deck(s.ring, s.calculix, s.modes.count, s.title);
+  } catch (const ring::InputError& e) {
+    throw ring::InputError(a.scene, "", e.what());
+  }
+  files.open();
+  write_file(files.stage() + "/ring.inp", deck.text);
+  files.publish();
+  std::cout << "wrote " << out_dir << "/ring.inp (run it with: cd " << out_dir << " && ccx ring)\n";
   return 0;
 }
 

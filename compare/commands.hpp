@@ -30,5 +30,8 @@ int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& 
 int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const std::string& format);
 int cmd_converge(const CommonArgs& a, const std::string& out_dir);
 int cmd_bench(const CommonArgs& a, const std::string& out_dir);
+/// Writes the input deck of an external solver (calculix: DIR/ring.inp, the deck its
+/// column runs for modes.count modes) without running it.
+int cmd_export_deck(const CommonArgs& a, const std::string& solver, const std::string& out_dir);
 
 }  // namespace cmp

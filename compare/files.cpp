@@ -6,6 +6,7 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -39,6 +40,8 @@ struct Entry {
 constexpr int kEntries = 32;
 Entry g_cleanup[kEntries];
 volatile sig_atomic_t g_child = 0;
+constexpr int kChildren = 64;  ///< helper processes at once (a sweep's threads each run one)
+volatile sig_atomic_t g_children[kChildren] = {};
 
 const int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
@@ -121,6 +124,11 @@ void remove_flat(const char* dir, int depth = 0) {
 
 void on_signal(int sig) {
   if (g_child > 0) kill(g_child, SIGKILL);  // the running gnuplot
+  for (const auto& c : g_children)          // helpers such as ccx, before their folders go
+    if (c > 0) {
+      kill(c, SIGKILL);
+      waitpid(c, nullptr, 0);
+    }
   for (const auto& e : g_cleanup)
     if (e.kind == Kind::file) unlink(e.path);
   for (const auto& e : g_cleanup)
@@ -240,8 +248,26 @@ void install_signal_cleanup() {
 
 void register_child(int pid) { g_child = pid; }
 
+void register_temp_folder(const std::string& path) { add_cleanup(Kind::stage, path); }
+void unregister_temp_folder(const std::string& path) { drop_cleanup(path); }
+
+void add_child(int pid) {
+  SignalBlock block;
+  for (auto& c : g_children)
+    if (c == 0) {
+      c = pid;
+      return;
+    }
+}
+
+void remove_child(int pid) {
+  SignalBlock block;
+  for (auto& c : g_children)
+    if (c == pid) c = 0;
+}
+
 bool own_name(const std::string& name) {
-  static const char* kExtensions[] = {".md", ".txt", ".csv", ".json", ".png", ".dat", ".gp", ".vtu", ".xml"};
+  static const char* kExtensions[] = {".md", ".txt", ".csv", ".json", ".png", ".dat", ".gp", ".vtu", ".xml", ".inp"};
   if (name.empty() || name.size() > NAME_MAX || name.front() == '.') return false;
   if (name.find('/') != std::string::npos || name.find('\0') != std::string::npos ||
       name.find("..") != std::string::npos)

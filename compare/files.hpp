@@ -42,7 +42,7 @@ void write_file(const std::string& path, const std::string& content);
 
 /// True when `name` is a file name ringvib writes into an output folder: not empty, not
 /// hidden, no '/', no "..", at most 255 bytes, and one of ringvib's extensions (md, txt,
-/// csv, json, png, dat, gp, vtu, xml).
+/// csv, json, png, dat, gp, vtu, xml, inp).
 bool own_name(const std::string& name);
 
 /// Checks for an output file given as option `option` (e.g. "--csv"): absent or a
@@ -103,5 +103,13 @@ class Outputs {
 void install_signal_cleanup();
 /// The child process a signal must stop first (gnuplot), 0 for none.
 void register_child(int pid);
+/// A helper program's private folder (ccx's job folder, calculix/ccx.hpp) and the
+/// process working in it, for the same cleanup: on a signal the process is killed and the
+/// folder removed with its files (flat), like a stage. Several may be registered at once
+/// (a sweep's threads); the caller unregisters them when it has removed them itself.
+void register_temp_folder(const std::string& path);
+void unregister_temp_folder(const std::string& path);
+void add_child(int pid);
+void remove_child(int pid);
 
 }  // namespace cmp

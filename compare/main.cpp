@@ -101,6 +101,11 @@ int main(int argc, char** argv) {
   sweep->add_flag("--resume", sw.resume, "skip the cases already in --out DIR/sweep.csv with status ok");
   sweep->add_option("-j,--jobs", sw.jobs, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 
+  auto* export_deck = app.add_subcommand("export-deck", "write an external solver's input deck without running it");
+  add_common(export_deck, a);
+  export_deck->add_option("--solver", solver, "calculix")->required()->check(CLI::IsMember({"calculix"}));
+  export_deck->add_option("--out", out, "folder for the deck (ring.inp)")->required();
+
   // An unknown subcommand is named, with the known ones (CLI11 alone says only that a
   // subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {
@@ -133,6 +138,7 @@ int main(int argc, char** argv) {
     if (*converge) return cmp::cmd_converge(a, out);
     if (*bench) return cmp::cmd_bench(a, out);
     if (*sweep) return cmp::cmd_sweep(a, sw, argc, argv);
+    if (*export_deck) return cmp::cmd_export_deck(a, solver, out);
   } catch (const ring::InputError& e) {
     std::cerr << "ringvib: error: " << e.what() << "\n";
     return 2;

@@ -4,7 +4,11 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "calculix/modes.hpp"
+#include "calculix/response.hpp"
+#include "calculix/statics.hpp"
 #include "compare/fem_module.hpp"
+#include "compare/files.hpp"
 #include "fem_reference/checks.hpp"
 #include "lumped_mass/checks.hpp"
 #include "multibody/backend.hpp"
@@ -238,6 +242,88 @@ SolverEntry fem_entry() {
   return e;
 }
 
+/// A ring::InputError thrown without the scene's file (the calculix deck writer, which
+/// knows no scene) gets it.
+template <class F>
+auto with_scene_file(const ring::Scene& s, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const ring::InputError& e) {
+    if (!e.file().empty()) throw;
+    throw ring::InputError(s.file, "", e.what());
+  }
+}
+
+/// ccx's job folder and process, known to ringvib's signal cleanup (compare/files.hpp).
+calculix::Hooks signal_hooks() {
+  calculix::Hooks h;
+  h.folder_made = [](const std::string& dir) { register_temp_folder(dir); };
+  h.folder_removed = [](const std::string& dir) { unregister_temp_folder(dir); };
+  h.child = [](int pid) {
+    static thread_local int running = 0;
+    if (pid > 0) add_child(pid);
+    else remove_child(running);
+    running = pid;
+  };
+  return h;
+}
+
+SolverEntry calculix_entry() {
+  SolverEntry e;
+  e.name = "calculix";
+  e.label = "CalculiX";
+  e.size_key = "calculix.elements";
+  e.size_name = "elements";
+  e.size = [](const ring::Scene& s) { return s.calculix.elements; };
+  e.set_size = [](ring::Scene& s, int n) { s.calculix.elements = n; };
+  // The beam nodes' in-plane degrees of freedom (ux, uy, rotation) bound the in-plane modes.
+  e.elastic_modes = [](const ring::Scene& s) -> long long {
+    const int held = s.ring.supports.constraint_rows() + s.ring.rigid_modes();
+    return 3LL * calculix::node_count(s.calculix) - held;
+  };
+  e.inextensible = [](const ring::Scene&) { return false; };
+  e.curve = [](const ring::Scene& s) { return "calculix (" + ring::to_string(s.calculix.element) + ")"; };
+  e.bench_sweep = [](const ring::Scene& s, int) {
+    std::vector<std::pair<std::string, ring::Scene>> v;
+    for (int n : {40, 80, 160, 320}) {
+      ring::Scene r = s;
+      r.calculix.elements = n;
+      v.emplace_back("calculix (" + ring::to_string(s.calculix.element) + ")", r);
+    }
+    return v;
+  };
+  e.converge_steps = 4;
+  // ccx runs in its own process: ringvib holds the deck and the .dat text, a few KB per
+  // node and mode; ccx's own memory (about 100 MB at 640 B32R elements) is not ringvib's.
+  e.memory = [](const ring::Scene& s, int count) {
+    return calculix::node_count(s.calculix) * (2000.0 + 200.0 * std::max(count, 1));
+  };
+  e.check_modes = [](const ring::Scene& s) {
+    with_scene_file(s, [&] {
+      calculix::check_deck(s.ring, s.calculix);
+      calculix::require_ccx();
+    });
+  };
+  e.modes = [](const ring::Scene& s, int count) {
+    return with_scene_file(s, [&] { return calculix::compute_modes(s.ring, s.calculix, count, signal_hooks(), s.title); });
+  };
+  e.check_static = [](const ring::Scene& s) {
+    with_scene_file(s, [&] { calculix::check_static(s.ring, s.calculix, *s.statics); });
+  };
+  e.statics = [](const ring::Scene& s) {
+    return with_scene_file(
+        s, [&] { return calculix::solve_static(s.ring, s.calculix, *s.statics, signal_hooks(), s.title); });
+  };
+  e.check_response = [](const ring::Scene& s) {
+    with_scene_file(s, [&] { calculix::check_response(s.ring, s.calculix, *s.response); });
+  };
+  e.response = [](const ring::Scene& s) {
+    return with_scene_file(
+        s, [&] { return calculix::respond(s.ring, s.calculix, *s.response, signal_hooks(), s.title); });
+  };
+  return e;
+}
+
 /// Wraps a nonlinear analysis so that its result names the solver and carries the wall
 /// time even where the solver leaves them out.
 template <class Result>
@@ -254,7 +340,7 @@ std::function<Result(const ring::Scene&)> named_and_timed(std::string name,
 }
 
 std::vector<SolverEntry> make_registry() {
-  std::vector<SolverEntry> v = {multibody_entry(), lumped_entry(), fem_entry()};
+  std::vector<SolverEntry> v = {multibody_entry(), lumped_entry(), fem_entry(), calculix_entry()};
   for (auto& e : v) {
     if (!e.bench_sweep) {
       const SolverEntry copy = e;

@@ -116,7 +116,11 @@ void write_report(const std::string& dir, const RunReport& r) {
   }
   if (!r.modal.empty() && !r.modal.front().shapes.empty()) {
     // The paper's Figure 3: base solver first, the others overlaid.
-    plot_mode_shapes(dir, r.modal, s.ring.radius, 9);
+    // Imported columns without shapes are left out of the figure.
+    std::vector<ring::ModalResult> with_shapes;
+    for (const auto& m : r.modal)
+      if (!m.shapes.empty()) with_shapes.push_back(m);
+    plot_mode_shapes(dir, with_shapes, s.ring.radius, 9);
     files.push_back("mode_shapes.png");
     md << "## Mode shapes (the paper's Figure 3)\n\n![mode shapes](mode_shapes.png)\n\n";
   }

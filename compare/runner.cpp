@@ -3,12 +3,15 @@
 #include <algorithm>
 
 #include "compare/guard.hpp"
+#include "compare/imports.hpp"
 #include "compare/registry.hpp"
 
 namespace cmp {
 
 void check_runnable(const ring::Scene& scene, double max_memory_gib, bool force) {
   check_scene(scene);
+  // Imported columns are read now, so that a bad file is refused before anything runs.
+  for (const auto& c : scene.table.imports) read_imported(c);
   check_cost(scene, Budget{max_memory_gib * double(1ull << 30), force});
 }
 
@@ -31,6 +34,7 @@ ModalRun compute_modal(const ring::Scene& s, std::ostream* progress) {
     if (progress) *progress << "ringvib: computing " << s.modes.count << " modes with " << name << "\n";
     r.columns.push_back(solve_modes(s, name, s.modes.count));
   }
+  for (const auto& c : s.table.imports) r.columns.push_back(read_imported(c));
   if (s.needs_reference()) {
     if (progress) *progress << "ringvib: computing the converged FE reference\n";
     r.reference = reference_modes(s, s.modes.count);

@@ -16,7 +16,7 @@ namespace cmp {
 
 /// Every check a scene gets before any solver runs: each solver's own refusals for the
 /// analyses the scene asks of it (check_scene), then the cost guard. Throws
-/// ring::InputError (exit 2).
+/// ring::InputError (exit 2). Imported columns' files are read and checked here too.
 void check_runnable(const ring::Scene& scene, double max_memory_gib, bool force);
 
 /// The solvers whose modes the scene asks for, in column order: the scene's [table]
@@ -28,7 +28,7 @@ bool modal(const ring::Scene& s);
 
 /// Everything modal the scene needs, each solver computed once.
 struct ModalRun {
-  std::vector<ring::ModalResult> columns;   ///< in table order
+  std::vector<ring::ModalResult> columns;   ///< in table order, then the imported columns
   std::optional<ring::ModalResult> reference;
 };
 /// `progress`, if not null, hears one line per solve.

@@ -99,8 +99,57 @@ std::vector<double> read_record(const Reader& r, const toml::table& t, const std
   return rec;
 }
 
+/// A path of the scene resolved against the scene file's folder (absolute paths as given).
+std::string beside_scene(const std::string& scene, const std::string& path) {
+  if (path.empty() || path.front() == '/') return path;
+  const auto slash = scene.find_last_of('/');
+  return slash == std::string::npos ? path : scene.substr(0, slash + 1) + path;
+}
+
+/// [[table.import]]: label, file, shapes. The files themselves are read by the driver
+/// (compare/imports.hpp), which names their lines.
+std::vector<ImportedColumn> read_imports(const Reader& r, const toml::table& t, const SceneSchema& schema) {
+  std::vector<ImportedColumn> out;
+  const toml::node* n = t.get("import");
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a || !a->is_array_of_tables())
+    r.fail("table.import", n, "expected [[table.import]] tables with label and file");
+  for (const auto& e : *a) {
+    const toml::table& it = *e.as_table();
+    const std::string sec = "table.import";
+    r.known_keys(it, sec, {"label", "file", "shapes"});
+    auto text = [&](const std::string& key, bool required) {
+      const toml::node* v = it.get(key);
+      if (!v) {
+        if (required) r.fail(sec + "." + key, &it, "missing: " + std::string(key == "label" ? "the column's name" : "the CSV file (mode, omega or mode, hz)"));
+        return std::string();
+      }
+      auto str = v->value_exact<std::string>();
+      if (!str || str->empty()) r.fail(sec + "." + key, v, "expected a non-empty string");
+      return *str;
+    };
+    ImportedColumn c;
+    c.label = text("label", true);
+    const bool word = std::all_of(c.label.begin(), c.label.end(), [](char ch) {
+      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
+    });
+    if (!word || c.label.size() > 40)
+      r.fail(sec + ".label", it.get("label"), "expected up to 40 letters, digits, '_' or '-' (it names a column and a gate)");
+    if (schema.find(c.label) || c.label == "reference" || c.label == "paper" || c.label == "mode")
+      r.fail(sec + ".label", it.get("label"), "\"" + c.label + "\" names a solver or a column of the table already");
+    for (const auto& o : out)
+      if (o.label == c.label) r.fail(sec + ".label", it.get("label"), "\"" + c.label + "\" is imported twice");
+    c.file = beside_scene(r.file(), text("file", true));
+    c.shapes = beside_scene(r.file(), text("shapes", false));
+    out.push_back(c);
+  }
+  return out;
+}
+
 void read_gates(const Reader& r, const toml::table& t, Scene& s, const SceneSchema& schema) {
-  const std::vector<std::string> names = schema.names();
+  std::vector<std::string> names = schema.names();
+  for (const auto& c : s.table.imports) names.push_back(c.label);
   r.known_keys(t, "gates", names);
   for (const auto& [k, node] : t) {
     const std::string solver(k.str());
@@ -296,8 +345,8 @@ std::pair<long long, long long> solver_range(const SceneSchema& schema, const st
 Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
   s.reference_solver = schema.reference_solver;
-  r.known_keys(root, "", {"title", "ring", "supports", "masses", "foundation", "multibody", "fem", "lumped", "modes", "table", "gates",
-                          "response", "static"});
+  r.known_keys(root, "", {"title", "ring", "supports", "masses", "foundation", "multibody", "fem", "lumped",
+                          "calculix", "modes", "table", "gates", "response", "static"});
   if (const toml::node* n = root.get("title")) {
     auto t = n->value_exact<std::string>();
     if (!t) r.fail("title", n, "expected a string");
@@ -368,6 +417,21 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
                                                : LumpedOptions::Variant::chain;
   }
 
+  if (const toml::table* ct = r.table(root, "", "calculix")) {
+    r.known_keys(*ct, "calculix", {"elements", "element", "section", "timeout", "threads"});
+    s.calculix.elements = static_cast<int>(r.integer(*ct, "calculix", "elements", 160, 4, 1000000));
+    const std::string e = r.choice(*ct, "calculix", "element", "B32R", {"B31", "B32R", "B32"});
+    s.calculix.element = e == "B31"   ? CalculixOptions::Element::b31
+                       : e == "B32" ? CalculixOptions::Element::b32
+                                    : CalculixOptions::Element::b32r;
+    s.calculix.section = r.choice(*ct, "calculix", "section", "equivalent-rectangle",
+                                  {"equivalent-rectangle", "as-given"}) == "as-given"
+                             ? CalculixOptions::Section::as_given
+                             : CalculixOptions::Section::equivalent_rectangle;
+    s.calculix.timeout = r.number(*ct, "calculix", "timeout", 600.0, 0.0, 1e6, true);
+    s.calculix.threads = static_cast<int>(r.integer(*ct, "calculix", "threads", 1, 1, 1024));
+  }
+
   // [modes]: solvers default to those whose section the scene has (multibody if none).
   if (const toml::table* t = r.table(root, "", "modes")) {
     r.known_keys(*t, "modes", {"count", "solvers"});
@@ -390,13 +454,14 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
 
   // [table]
   if (const toml::table* t = r.table(root, "", "table")) {
-    r.known_keys(*t, "table", {"base", "against", "reference"});
+    r.known_keys(*t, "table", {"base", "against", "reference", "import"});
     s.table.present = true;
     s.table.base = r.choice(*t, "table", "base", schema.default_solver, schema.names());
     s.table.against = r.strings(*t, "table", "against", schema.names());
     if (std::find(s.table.against.begin(), s.table.against.end(), s.table.base) != s.table.against.end())
       r.fail("table.against", t->get("against"), "lists the base solver \"" + s.table.base + "\" again");
     s.table.reference = r.boolean(*t, "table", "reference", false);
+    s.table.imports = read_imports(r, *t, schema);
     if (s.modes.solvers.empty()) s.modes.count = 23;  // a table without [modes]: the paper's 23
   }
 
@@ -482,10 +547,10 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
                "compares with \"" + g.against + "\", which " + g.analysis + ".solvers does not list");
       continue;
     }
-    if (!s.column(g.solver))
+    if (!s.column(g.solver) && !s.imported(g.solver))
       r.fail(key, root.at_path("gates").node(),
              "gates a solver the scene does not run (add it to modes.solvers or table.against)");
-    if (g.against != "reference" && g.against != "paper" && !s.column(g.against))
+    if (g.against != "reference" && g.against != "paper" && !s.column(g.against) && !s.imported(g.against))
       r.fail(key + ".against", root.at_path("gates").node(),
              "compares with \"" + g.against + "\", which the scene does not run");
   }
@@ -818,6 +883,12 @@ std::vector<std::string> toml_array_items(const std::string& text, const std::st
 bool Scene::column(const std::string& solver) const {
   auto in = [&](const std::vector<std::string>& v) { return std::find(v.begin(), v.end(), solver) != v.end(); };
   return in(modes.solvers) || (table.present && (table.base == solver || in(table.against)));
+}
+
+bool Scene::imported(const std::string& label) const {
+  for (const auto& c : table.imports)
+    if (c.label == label) return true;
+  return false;
 }
 
 bool Scene::needs_reference() const {

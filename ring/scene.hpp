@@ -21,12 +21,22 @@ struct ModesRequest {
   std::vector<std::string> solvers;   ///< subset of the known solvers (SceneSchema)
 };
 
+/// A column of another code's results ([[table.import]]): frequencies from a CSV file
+/// (`mode,omega` in rad/s or `mode,hz`), optionally its mode shapes at the common
+/// stations (the layout of shapes_<solver>.csv), so that its modes pair by MAC.
+struct ImportedColumn {
+  std::string label;   ///< column name, gate key (gates.<label>); not a solver's name
+  std::string file;    ///< path as resolved against the scene's folder
+  std::string shapes;  ///< "" or the shapes file, resolved the same way
+};
+
 /// The three-way table: the base column, then each other solver and its difference.
 struct TableRequest {
   bool present = false;               ///< the scene has a [table] section
   std::string base;                   ///< default: SceneSchema::default_solver
   std::vector<std::string> against;   ///< other solvers, in column order
   bool reference = false;             ///< add the converged FE reference and errors
+  std::vector<ImportedColumn> imports;  ///< other codes' columns, after the solvers'
 };
 
 /// An accuracy gate for CI: max |value| in percent over modes [first, last].
@@ -83,6 +93,7 @@ struct Scene {
   MultibodyOptions multibody;
   FemOptions fem;
   LumpedOptions lumped;
+  CalculixOptions calculix;
   ModesRequest modes;
   TableRequest table;
   std::vector<Gate> gates;
@@ -97,6 +108,8 @@ struct Scene {
 
   /// True when the solver is a column: in modes.solvers or in the table.
   bool column(const std::string& solver) const;
+  /// True when `label` is an imported column of the table ([[table.import]]).
+  bool imported(const std::string& label) const;
   /// True when the converged modal reference is asked for (table.reference or a gate).
   bool needs_reference() const;
   /// True when some requested output needs this solver's modes (a column, or the

@@ -173,4 +173,16 @@ std::string to_string(ResponseOptions::Integrator i) {
   return "";
 }
 
+std::string to_string(CalculixOptions::Element e) {
+  switch (e) {
+    case CalculixOptions::Element::b31: return "B31";
+    case CalculixOptions::Element::b32r: return "B32R";
+    case CalculixOptions::Element::b32: return "B32";
+  }
+  return "";
+}
+std::string to_string(CalculixOptions::Section s) {
+  return s == CalculixOptions::Section::as_given ? "as-given" : "equivalent-rectangle";
+}
+
 }  // namespace ring

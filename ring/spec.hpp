@@ -162,6 +162,20 @@ struct LumpedOptions {
   Variant variant = Variant::chain;
 };
 
+/// The external CalculiX column (calculix/): beam elements around the ring, expanded by
+/// ccx into 20-node (B32, B32R) or 8-node (B31) bricks of the section's shape.
+struct CalculixOptions {
+  int elements = 160;  ///< beam elements around the ring (>= 4)
+  enum class Element { b31, b32r, b32 };
+  Element element = Element::b32r;  ///< B32R: quadratic, reduced integration (the default)
+  /// equivalent_rectangle: a RECT section with the ring's A and I (width A/h, radial
+  /// height h = sqrt(12 I / A)); as_given: the scene's circle (CIRC) or rectangle (RECT).
+  enum class Section { equivalent_rectangle, as_given };
+  Section section = Section::equivalent_rectangle;
+  double timeout = 600.0;  ///< s, the longest a ccx run may take (then exit 3)
+  int threads = 1;         ///< OMP_NUM_THREADS and CCX_NPROC_* of the ccx process
+};
+
 /// Node angles of a model with n equal pieces: anchor + 360 k / n, k = 0..n-1,
 /// where the anchor is the pin (or, for a free ring, `fallback`).
 std::vector<double> node_angles(const RingSpec& spec, int n, double fallback = 0.0);
@@ -174,5 +188,7 @@ std::string to_string(MultibodyOptions::Dependent d);
 std::string to_string(LumpedOptions::Variant v);
 std::string to_string(FemOptions::Geometry g);
 std::string to_string(LoadHistory::Kind k);
+std::string to_string(CalculixOptions::Element e);
+std::string to_string(CalculixOptions::Section s);
 
 }  // namespace ring

@@ -20,6 +20,7 @@ packages=(
   gnuplot-nox              # figures (pngcairo terminal)
   libxml2-utils            # xmllint: the tests check that JUnit output parses
   time                     # /usr/bin/time -v: peak memory in bench/process.sh
+  calculix-ccx             # ccx: the external FE column (calculix/), and its tests
   clang libclang-rt-14-dev # libFuzzer + sanitizers: the scene reader's fuzzer (tests/fuzz)
   pybind11-dev python3-dev # the Python module (python/)
   python3-numpy            # its results as NumPy arrays

@@ -1,0 +1,52 @@
+// Running the ccx program on a deck in a private temporary folder.
+//
+// - ccx is looked up on the PATH; missing: ring::InputError naming the solver and the
+//   Debian package (exit 2).
+// - The job runs in a fresh folder under $TMPDIR (or /tmp), `ringvib-ccx-XXXXXX`, with
+//   ccx's threads set by OMP_NUM_THREADS, CCX_NPROC_EQUATION_SOLVER, CCX_NPROC_STIFFNESS
+//   and CCX_NPROC_RESULTS; its standard output and error go to a file in that folder.
+// - A run that exits non-zero, dies of a signal, prints "*ERROR" or outlasts the timeout
+//   (then it is killed) is ring::NumericalError (exit 3) with the last lines of its output.
+// - The folder is removed on every exit from run(); a signal to ringvib is the caller's to
+//   handle: Hooks tell it the folder and the child as they come and go (ringvib's signal
+//   handler, compare/files.cpp, kills the child and removes the folder).
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace calculix {
+
+/// What the caller's signal handling must know while ccx runs.
+struct Hooks {
+  std::function<void(const std::string& folder)> folder_made, folder_removed;
+  std::function<void(int pid)> child;  ///< the running ccx; 0 when it ended
+};
+
+struct RunOptions {
+  double timeout = 600.0;  ///< s
+  int threads = 1;
+};
+
+/// What a successful run leaves: the files ringvib reads, and ccx's output.
+struct RunOutput {
+  std::string dat;          ///< job.dat
+  std::string sta;          ///< job.sta (the increments of a nonlinear step)
+  std::string log;          ///< ccx's standard output and error
+  double seconds = 0.0;     ///< wall time of the ccx process
+  double cpu_seconds = 0.0; ///< its user + system time
+};
+
+/// The full path of ccx on the PATH, or "" if there is none.
+std::string find_ccx();
+
+/// Throws ring::InputError (exit 2) naming `solver` and the package when ccx is missing.
+void require_ccx(const std::string& solver = "calculix");
+
+/// Runs ccx on `deck` (job name "ring") and returns its output. Throws as above.
+RunOutput run(const std::string& deck, const RunOptions& options, const Hooks& hooks = {});
+
+/// The last `lines` lines of `text`.
+std::string tail(const std::string& text, int lines);
+
+}  // namespace calculix

@@ -1,0 +1,48 @@
+// Reading ccx's .dat file of a *FREQUENCY step with *NODE PRINT U.
+//
+// The file holds the table "E I G E N V A L U E   O U T P U T" (mode number, eigenvalue,
+// frequency in rad/time and cycles/time, imaginary part: 7 significant digits), then for
+// each mode a block "E I G E N V A L U E    N U M B E R   k" with the lines
+// "node ux uy uz" of the printed node set (the beam nodes: ccx prints the mean of the
+// expanded section's nodes). The eigenvectors are normalized to U^T M U = 1.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace calculix {
+
+struct DatMode {
+  double omega = 0.0;  ///< rad/s, from the frequency column
+  std::vector<double> ux, uy, uz;  ///< [node - 1], m per unit modal mass
+};
+
+/// Parses the modes of a .dat text whose nodes are 1 .. nodes. Throws
+/// ring::NumericalError naming `name` and the line for a file that is not what ccx writes
+/// (a missing table, a mode without displacements, a node out of range).
+std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
+
+/// The last displacement block of a static step's .dat (*NODE PRINT after every
+/// increment: "displacements (vx,vy,vz) for set NALL and time t").
+struct DatStatic {
+  double time = 0.0;        ///< the step time (load factor) of the last block
+  int increments = 0;       ///< blocks printed: the converged increments
+  std::vector<double> ux, uy;  ///< [node - 1], m
+};
+
+/// Parses a static step's .dat of nodes 1 .. nodes. Throws ring::NumericalError naming the
+/// line for a file that is not what ccx writes, or that has no displacements.
+DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
+
+/// The displacement history of a dynamic step's .dat (*NODE PRINT of a node set after
+/// every increment).
+struct DatHistory {
+  std::vector<double> t;                    ///< [increment], s
+  std::vector<std::vector<double>> ux, uy;  ///< [node of `nodes`][increment], m
+};
+
+/// Parses the blocks of the nodes `nodes` (1-based numbers, in the order wanted; each must
+/// be printed once per block). Throws ring::NumericalError naming the line.
+DatHistory read_history_dat(const std::string& text, const std::vector<int>& nodes, const std::string& name = "ring.dat");
+
+}  // namespace calculix

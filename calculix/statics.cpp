@@ -1,0 +1,86 @@
+#include "calculix/statics.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "calculix/dat.hpp"
+#include "calculix/deck.hpp"
+#include "ring/errors.hpp"
+
+namespace calculix {
+namespace {
+
+/// The node (0-based) of the model at `angle`, or -1.
+int node_of(const Deck& d, double angle) {
+  for (std::size_t k = 0; k < d.node_angles.size(); ++k) {
+    const double x = ring::wrap_degrees(d.node_angles[k] - angle);
+    if (std::min(x, 360.0 - x) < 1e-9) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+/// The sum of the ITRS column of ccx's .sta ("STEP INC ATT ITRS TOT TIME STEP TIME INC TIME").
+int newton_iterations(const std::string& sta) {
+  std::istringstream in(sta);
+  int total = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    int step, inc, att, itrs;
+    if (s >> step >> inc >> att >> itrs) total += itrs;
+  }
+  return total;
+}
+
+long long equations(const std::string& log) {
+  const auto at = log.find("number of equations");
+  if (at == std::string::npos) return 0;
+  std::istringstream s(log.substr(at + 19));
+  long long n = 0;
+  s >> n;
+  return n;
+}
+
+}  // namespace
+
+void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
+  check_deck(spec, options);
+  const Deck d = frequency_deck(spec, options, {1});  // the nodes; O(elements)
+  if (node_of(d, st.load.angle) < 0)
+    throw ring::InputError("", "static.at", "angle " + number(st.load.angle) + " is not a node of the calculix model");
+  for (double a : st.record)
+    if (node_of(d, a) < 0)
+      throw ring::InputError("", "static.record", "angle " + number(a) + " is not a node of the calculix model");
+  require_ccx();
+}
+
+ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::CalculixOptions& options,
+                                const ring::StaticOptions& st, const Hooks& hooks, const std::string& title) {
+  const auto start = std::chrono::steady_clock::now();
+  check_static(spec, options, st);
+  const Deck deck = static_deck(spec, options, st, title);
+  const RunOutput out = run(deck.text, {options.timeout, options.threads}, hooks);
+  const int nodes = node_count(options);
+  const DatStatic dat = read_static_dat(out.dat, nodes);
+  if (std::abs(dat.time - 1.0) > 1e-6)
+    throw ring::NumericalError("calculix: ccx stopped at load factor " + std::to_string(dat.time) +
+                               " of 1; the last lines of its output:\n" + tail(out.log, 12));
+  ring::StaticResult r;
+  r.solver = "calculix";
+  r.unknowns = equations(out.log);
+  r.steps = dat.increments;
+  r.newton_iterations = newton_iterations(out.sta);
+  for (double a : st.record) {
+    const int k = node_of(deck, a);
+    r.displacements.push_back({a, dat.ux[k], dat.uy[k]});
+  }
+  for (int k = 0; k < nodes; ++k) {
+    const double t = deck.node_angles[k] * M_PI / 180.0;
+    r.node_x.push_back(spec.radius * std::cos(t) + dat.ux[k]);
+    r.node_y.push_back(spec.radius * std::sin(t) + dat.uy[k]);
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace calculix

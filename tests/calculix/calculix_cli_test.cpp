@@ -1,0 +1,179 @@
+// The calculix column through the binary: exit 2 without ccx (naming the solver and the
+// package), exit 3 with ccx's last lines when it fails or outlasts its timeout, the job
+// folder removed on every exit including a signal, and `export-deck` writing the deck the
+// column runs (the same frequencies when ccx runs it by hand).
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "compare/cli.hpp"
+
+namespace {
+
+using ringtest::ringvib;
+
+const char* kScene = R"(title = "paper ring, calculix"
+[ring]
+radius = 10.0
+E = 2.1e11
+rho = 7.8e3
+section = { shape = "circle", diameter = 0.12 }
+[supports]
+pin = 180.0
+[calculix]
+elements = 40
+[modes]
+count = 8
+solvers = ["calculix"]
+)";
+
+struct Fixture {
+  std::string dir = ringtest::temp_dir();
+  std::string tmp = dir + "/tmp", bin = dir + "/bin", scene = dir + "/scene.toml";
+  Fixture() {
+    mkdir(tmp.c_str(), 0755);
+    mkdir(bin.c_str(), 0755);
+    ringtest::write(scene, kScene);
+  }
+  ~Fixture() { std::system(("rm -rf " + dir).c_str()); }
+  /// A program named ccx in bin/ running `body` (sh).
+  void fake_ccx(const std::string& body) const {
+    ringtest::write(bin + "/ccx", "#!/bin/sh\n" + body + "\n");
+    chmod((bin + "/ccx").c_str(), 0755);
+  }
+  /// The environment of a run: TMPDIR (where the job folder goes) and PATH.
+  std::string env(const std::string& path) const { return "TMPDIR=" + tmp + " PATH=" + path; }
+};
+
+TEST(CalculixCli, WithoutCcxOnThePathExit2NamesTheSolverAndThePackage) {
+  Fixture f;
+  const auto r = ringvib("modes " + f.scene + " --solver calculix", f.env(f.bin));  // bin/ holds no ccx
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("calculix"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("calculix-ccx"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(f.scene), std::string::npos) << r.err;  // the file too
+  EXPECT_TRUE(ringtest::empty_dir(f.tmp));
+}
+
+TEST(CalculixCli, AFailingCcxIsExit3WithItsLastLinesAndNoFolderLeft) {
+  Fixture f;
+  f.fake_ccx("echo 'reading the deck'\necho '*ERROR reading *NODE: a fake failure'\nexit 201");
+  const auto r = ringvib("modes " + f.scene + " --solver calculix", f.env(f.bin + ":/usr/bin:/bin"));
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("exited with status 201"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("*ERROR reading *NODE: a fake failure"), std::string::npos) << r.err;
+  EXPECT_TRUE(ringtest::empty_dir(f.tmp)) << ringtest::shell("ls -A " + f.tmp);
+}
+
+TEST(CalculixCli, ACcxThatPrintsAnErrorButExitsZeroIsExit3) {
+  Fixture f;
+  f.fake_ccx("echo '*ERROR in calinput: at least one fatal error'\nexit 0");
+  const auto r = ringvib("modes " + f.scene + " --solver calculix", f.env(f.bin + ":/usr/bin:/bin"));
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("at least one fatal error"), std::string::npos) << r.err;
+  EXPECT_TRUE(ringtest::empty_dir(f.tmp));
+}
+
+TEST(CalculixCli, ACcxOutlastingItsTimeoutIsKilledAndExit3) {
+  Fixture f;
+  f.fake_ccx("echo 'still factoring'\nexec sleep 30");
+  const auto r = ringvib("modes " + f.scene + " --solver calculix --set calculix.timeout=0.3",
+                         f.env(f.bin + ":/usr/bin:/bin"));
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("did not finish within calculix.timeout"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("still factoring"), std::string::npos) << r.err;
+  EXPECT_TRUE(ringtest::empty_dir(f.tmp));
+}
+
+TEST(CalculixCli, ASignalKillsCcxAndRemovesItsFolder) {
+  Fixture f;
+  const std::string pidfile = f.dir + "/ccx.pid";
+  f.fake_ccx("echo $$ > " + pidfile + "\nexec sleep 30");
+  const pid_t pid = ringtest::spawn({ringtest::ringvib_path(), "modes", f.scene, "--solver", "calculix"},
+                                    {{"TMPDIR", f.tmp}, {"PATH", f.bin + ":/usr/bin:/bin"}});
+  // Wait until ccx runs in its folder.
+  for (int i = 0; i < 500 && !ringtest::exists(pidfile); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(ringtest::exists(pidfile));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_FALSE(ringtest::empty_dir(f.tmp));
+  kill(pid, SIGTERM);
+  const int status = ringtest::wait_bounded(pid, 10.0);
+  ASSERT_NE(status, -1);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_TRUE(ringtest::empty_dir(f.tmp)) << ringtest::shell("ls -A " + f.tmp);
+  std::ifstream p(pidfile);
+  int child = 0;
+  p >> child;
+  ASSERT_GT(child, 0);
+  EXPECT_NE(kill(child, 0), 0) << "ccx (pid " << child << ") still runs";
+}
+
+TEST(CalculixCli, ExportDeckRefusesWhatTheDeckCannotExpressAndWritesNothing) {
+  Fixture f;
+  ringtest::write(f.scene, std::string(kScene) + "");
+  const std::string out = f.dir + "/deck";
+  const auto r = ringvib("export-deck " + f.scene + " --solver calculix --out " + out +
+                             " --set 'ring.section={area = 0.0113, inertia = 1.0e-5}' --set calculix.section=as-given",
+                         f.env("/usr/bin:/bin"));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("calculix.section"), std::string::npos) << r.err;
+  EXPECT_FALSE(ringtest::exists(out));
+}
+
+/// Frequencies (rad/s) of the in-plane modes in a .dat file ccx wrote for a deck whose
+/// nodes are 1..nodes: the eigenvalue table, without modes whose beam nodes do not move in
+/// the plane (the section's twisting).
+std::vector<double> dat_frequencies(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<double> w;
+  bool table = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("E I G E N V A L U E   O U T P U T") != std::string::npos) table = true;
+    if (line.find("P A R T I C I P A T I O N") != std::string::npos) break;
+    std::istringstream s(line);
+    int k;
+    double eig, omega;
+    if (table && (s >> k >> eig >> omega)) w.push_back(omega);
+  }
+  return w;
+}
+
+bool ccx_absent() { return ringtest::shell("command -v ccx").empty(); }
+
+TEST(CalculixCli, TheExportedDeckRunByHandGivesTheColumnsFrequencies) {
+  if (ccx_absent()) GTEST_SKIP() << "ccx is not on the PATH (Debian package calculix-ccx; scripts/install-deps.sh)";
+  Fixture f;
+  const std::string out = f.dir + "/deck";
+  const auto e = ringvib("export-deck " + f.scene + " --solver calculix --out " + out);
+  ASSERT_EQ(e.code, 0) << e.err;
+  ASSERT_TRUE(ringtest::exists(out + "/ring.inp"));
+  // Readable: a comment says what each block is.
+  const std::string deck = ringtest::shell("cat " + out + "/ring.inp");
+  EXPECT_EQ(deck.rfind("** CalculiX deck written by ringvib", 0), 0u);
+  for (const char* block : {"*NODE", "*ELEMENT", "*MATERIAL", "*BEAM SECTION", "*BOUNDARY", "*STEP"}) {
+    const auto at = deck.find(std::string("\n") + block);
+    ASSERT_NE(at, std::string::npos) << block;
+    EXPECT_NE(deck.rfind("\n** ", at), std::string::npos) << "no comment before " << block;
+  }
+  // Run by hand, as a user would, then the column through ringvib.
+  ASSERT_EQ(std::system(("cd " + out + " && OMP_NUM_THREADS=1 ccx ring >ccx.log 2>&1").c_str()), 0);
+  const std::vector<double> by_hand = dat_frequencies(out + "/ring.dat");
+  const auto m = ringvib("modes " + f.scene + " --solver calculix --json");
+  ASSERT_EQ(m.code, 0) << m.err;
+  const auto j = nlohmann::json::parse(m.out);
+  ASSERT_EQ(j["rigid_modes"], 1);
+  const auto omega = j["omega"].get<std::vector<double>>();
+  ASSERT_EQ(omega.size(), 8u);
+  ASSERT_GE(by_hand.size(), 9u);
+  // The same deck: the same printed digits (the pinned ring's rigid mode first; no
+  // twisting mode below the 8th in-plane one at 40 elements).
+  for (std::size_t i = 0; i < omega.size(); ++i) EXPECT_EQ(omega[i], by_hand[i + 1]) << "mode " << i + 1;
+}
+
+}  // namespace
