@@ -17,25 +17,29 @@ int hinge(const Chain& chain, double deg, const std::string& key) {
   return chain.hinge_at(deg);
 }
 
-/// sum_k (d u_k/dq)^T B[k] (d u_k/dq) at the angles of q, through the suffix sums of B
+/// K += sum_k (d u_k/dq)^T B[k] (d u_k/dq) at the angles of q, through the suffix sums of B
 /// (file comment). O(n^2).
-Matrix pull_back(const Chain& chain, const Vector& q, const std::vector<Eigen::Matrix2d>& B) {
+void add_pull_back(const Chain& chain, const Vector& q, const std::vector<Eigen::Matrix2d>& B, Eigen::Ref<Matrix> K) {
   const int n = chain.n(), N = chain.dofs();
   std::vector<Eigen::Matrix2d> S(n + 1, Eigen::Matrix2d::Zero());
   for (int k = n - 1; k >= 0; --k) S[k] = S[k + 1] + B[k];
   Eigen::Matrix2Xd c(2, n);
   for (int j = 0; j < n; ++j) c.col(j) << -chain.l() * std::sin(q[j]), chain.l() * std::cos(q[j]);
-  Matrix K = Matrix::Zero(N, N);
   for (int i = 0; i < n; ++i) {
-    for (int j = 0; j <= i; ++j) K(i, j) = K(j, i) = c.col(i).dot(S[i + 1] * c.col(j));
+    for (int j = 0; j < i; ++j) {
+      const double v = c.col(i).dot(S[i + 1] * c.col(j));
+      K(i, j) += v;
+      K(j, i) += v;
+    }
+    K(i, i) += c.col(i).dot(S[i + 1] * c.col(i));
     if (chain.free()) {
       const Eigen::RowVector2d r = c.col(i).transpose() * S[i + 1];
-      K.block(i, n, 1, 2) = r;
-      K.block(n, i, 2, 1) = r.transpose();
+      K.block(i, n, 1, 2) += r;
+      K.block(n, i, 2, 1) += r.transpose();
     }
   }
-  if (chain.free()) K.bottomRightCorner(2, 2) = S[0];
-  return K;
+  if (chain.free()) K.bottomRightCorner(2, 2) += S[0];
+  (void)N;
 }
 
 /// The mean rotation of hinge h's two segments (h - 1 cyclic) as a row on q: its value is
@@ -80,6 +84,7 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
     rot_j_[h] += pm.inertia * follows * follows;
   }
   for (double p : spec.supports.pins) pins_.push_back(hinge(chain, p, "supports.pins"));
+  has_stiffness_ = spec.foundation.any() || spec.supports.clamp || !spec.supports.springs.empty();
 }
 
 double Attachments::energy(const Vector& q) const {
@@ -97,7 +102,8 @@ double Attachments::energy(const Vector& q) const {
   return e;
 }
 
-void Attachments::add_stiffness(const Vector& q, Vector& grad, Matrix* hess) const {
+void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess) const {
+  if (!has_stiffness_) return;
   const int n = chain_.n();
   const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
   // F_m = sum_{k >= m} B_k u_k; grad_j = c_j . F_{j+1} (file comment).
@@ -114,7 +120,7 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Matrix* hess) con
       add_mean_rotation(chain_, h, rot_k_[h] * 0.5 * (q[j] - q0_[j] + q[h] - q0_[h]), grad);
     }
   if (!hess) return;
-  *hess += pull_back(chain_, q, stiff_);
+  add_pull_back(chain_, q, stiff_, *hess);
   for (int j = 0; j < n; ++j)
     (*hess)(j, j) -= chain_.l() * (std::cos(q[j]) * F[j + 1].x() + std::sin(q[j]) * F[j + 1].y());
   for (int h = 0; h < n; ++h)
@@ -126,7 +132,8 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Matrix* hess) con
 }
 
 Matrix Attachments::rest_mass() const {
-  Matrix M = pull_back(chain_, q0_, mass_);
+  Matrix M = Matrix::Zero(chain_.dofs(), chain_.dofs());
+  add_pull_back(chain_, q0_, mass_, M);
   for (int h = 0; h < chain_.n(); ++h)
     if (rot_j_[h] > 0.0) {
       Vector a = Vector::Zero(chain_.dofs());
@@ -154,7 +161,8 @@ LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {
   LinearTerms t;
   t.K = Matrix::Zero(chain.dofs(), chain.dofs());
   Vector grad = Vector::Zero(chain.dofs());
-  a.add_stiffness(q0, grad, &t.K);  // at rest u = 0: no curvature term, no force
+  Eigen::Ref<Matrix> K(t.K);
+  a.add_stiffness(q0, grad, &K);  // at rest u = 0: no curvature term, no force
   t.M = a.rest_mass();
   t.J = a.pins(q0).G;
   return t;

@@ -50,8 +50,9 @@ class Attachments {
   /// included) at q, J. O(n).
   double energy(const Vector& q) const;
   /// Adds its gradient to `grad` (dofs) and, if not null, its Hessian to `hess` (dofs x
-  /// dofs, dense). O(n) and O(n^2).
-  void add_stiffness(const Vector& q, Vector& grad, Matrix* hess) const;
+  /// dofs, dense, e.g. a block of a bigger matrix). O(n) and O(n^2); nothing without such
+  /// terms.
+  void add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess) const;
   /// The point masses' mass matrix at rest (dofs x dofs, dense). O(n^2).
   Matrix rest_mass() const;
 
@@ -67,6 +68,7 @@ class Attachments {
   std::vector<double> rot_k_, rot_j_;          ///< on the mean rotation m_h: stiffness, inertia
   std::vector<int> pins_;                      ///< hinges of the further pins
   Vector q0_;
+  bool has_stiffness_ = false;                 ///< a foundation, a spring or a clamp
 };
 
 /// The terms linearized about the rest n-gon, for the linear modes.

@@ -56,9 +56,8 @@ class AngleStatics : public detail::StaticEquilibrium {
     Vector forces = chain_.spring_forces(q);
     Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
     A.topLeftCorner(n_, n_) = K_;
-    Matrix terms_hessian = Matrix::Zero(n_, n_);
-    terms_.add_stiffness(q, forces, &terms_hessian);
-    A.topLeftCorner(n_, n_) += terms_hessian;
+    Eigen::Ref<Matrix> stiffness = A.topLeftCorner(n_, n_);
+    terms_.add_stiffness(q, forces, &stiffness);
     r.resize(n_ + c_);
     r << forces + ck.G.transpose() * lambda - x.s * phi, ck.g;
     if (!r.allFinite()) return false;

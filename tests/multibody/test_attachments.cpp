@@ -170,7 +170,8 @@ TEST(MultibodyAttachments, GradientAndHessianAreThoseOfTheEnergy) {
     for (int i = 0; i < q.size(); ++i) q[i] += d(rng);
     multibody::Vector g = multibody::Vector::Zero(q.size());
     multibody::Matrix H = multibody::Matrix::Zero(q.size(), q.size());
-    terms.add_stiffness(q, g, &H);
+    Eigen::Ref<multibody::Matrix> h_ref(H);
+    terms.add_stiffness(q, g, &h_ref);
     const double h = 1e-5;  // central differences: truncation h^2 E'''/6, about 1e-10 of the scale
     for (int j = 0; j < q.size(); ++j) {
       multibody::Vector qp = q, qm = q;
