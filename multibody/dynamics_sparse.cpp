@@ -229,7 +229,11 @@ ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& p, double l, int mi
   const int n = static_cast<int>(p.cols());
   ClosestPair best{reach, -1, -1};
   const double cell = l + reach;
-  auto key = [](long long ix, long long iy) { return (ix << 32) ^ (iy & 0xffffffffLL); };
+  // Shifted as unsigned: a cell left of or below the origin has a negative index, and a
+  // negative left shift is undefined behaviour (UBSan, a free ring's statics).
+  auto key = [](long long ix, long long iy) {
+    return static_cast<long long>((static_cast<unsigned long long>(ix) << 32) ^ (static_cast<unsigned long long>(iy) & 0xffffffffULL));
+  };
   std::unordered_map<long long, std::vector<int>> grid;
   grid.reserve(size_t(n) * 2);
   std::vector<long long> cx(n), cy(n);
