@@ -214,4 +214,13 @@ DatHistory read_history_dat(const std::string& text, const std::vector<int>& nod
   return out;
 }
 
+long long equation_count(const std::string& log) {
+  const auto at = log.find("number of equations");
+  if (at == std::string::npos) return 0;
+  std::istringstream s(log.substr(at + 19));
+  long long n = 0;
+  s >> n;
+  return n;
+}
+
 }  // namespace calculix

@@ -45,4 +45,7 @@ struct DatHistory {
 /// be printed once per block). Throws ring::NumericalError naming the line.
 DatHistory read_history_dat(const std::string& text, const std::vector<int>& nodes, const std::string& name = "ring.dat");
 
+/// ccx's "number of equations" in its log (the size of its system), or 0 if absent.
+long long equation_count(const std::string& log);
+
 }  // namespace calculix

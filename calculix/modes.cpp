@@ -9,20 +9,6 @@
 #include "ring/sampling.hpp"
 
 namespace calculix {
-namespace {
-
-/// ccx's "number of equations" (the size of its eigenproblem), or 0.
-long long equations(const std::string& log) {
-  const auto at = log.find("number of equations");
-  if (at == std::string::npos) return 0;
-  std::istringstream s(log.substr(at + 19));
-  long long n = 0;
-  s >> n;
-  return n;
-}
-
-}  // namespace
-
 int eigenvalues_for(const ring::RingSpec& spec, int count) {
   return spec.rigid_modes() + count + std::max(10, count / 2);
 }
@@ -87,7 +73,7 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
       res.omega.push_back(m.omega);
       res.shapes.push_back(ring::sample_polygon(deck.anchor, m.ux, m.uy));
     }
-    res.unknowns = equations(out.log);
+    res.unknowns = equation_count(out.log);
     // ccx reports no residual: NaN (JSON null), not a perfect 0.
     res.max_residual = std::nan("");
     res.residual_norm = "not reported by ccx";

@@ -35,15 +35,6 @@ std::vector<int> iterations(const std::string& sta) {
   return v;
 }
 
-long long equations(const std::string& log) {
-  const auto at = log.find("number of equations");
-  if (at == std::string::npos) return 0;
-  std::istringstream s(log.substr(at + 19));
-  long long n = 0;
-  s >> n;
-  return n;
-}
-
 }  // namespace
 
 void check_response(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::ResponseOptions& rs) {
@@ -64,7 +55,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::CalculixOption
   const DatHistory dat = read_history_dat(out.dat, nodes);
   ring::TimeHistory h;
   h.solver = "calculix";
-  h.unknowns = equations(out.log);
+  h.unknowns = equation_count(out.log);
   h.record_angles = rs.record;
   const std::vector<int> its = iterations(out.sta);
   h.t.push_back(0.0);

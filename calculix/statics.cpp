@@ -32,15 +32,6 @@ int newton_iterations(const std::string& sta) {
   return total;
 }
 
-long long equations(const std::string& log) {
-  const auto at = log.find("number of equations");
-  if (at == std::string::npos) return 0;
-  std::istringstream s(log.substr(at + 19));
-  long long n = 0;
-  s >> n;
-  return n;
-}
-
 }  // namespace
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
@@ -67,7 +58,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
                                " of 1; the last lines of its output:\n" + tail(out.log, 12));
   ring::StaticResult r;
   r.solver = "calculix";
-  r.unknowns = equations(out.log);
+  r.unknowns = equation_count(out.log);
   r.steps = dat.increments;
   r.newton_iterations = newton_iterations(out.sta);
   for (double a : st.record) {
