@@ -189,13 +189,36 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
   return d;
 }
 
+namespace {
+
+/// The *CLOAD blocks of the point loads (`keyword`: "*CLOAD" or "*CLOAD, AMPLITUDE=LOAD"),
+/// each at its node, in N; pressure and gravity are refused (the deck writes no distributed load
+/// yet). Throws InputError naming `section`'s key.
+std::string point_loads(const Deck& d, const ring::Loads& loads, const std::string& section, const char* keyword) {
+  const char* why = "the calculix deck writes point loads only (no distributed load yet)";
+  if (loads.pressure.any()) throw ring::InputError("", section + ".pressure", why);
+  if (loads.has_gravity()) throw ring::InputError("", section + ".gravity", why);
+  std::ostringstream s;
+  for (std::size_t i = 0; i < loads.points.size(); ++i) {
+    const ring::PointLoad& p = loads.points[i];
+    const int node = node_at(d.node_angles, p.angle);
+    const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    if (node < 0) throw ring::InputError("", key, "angle " + number(p.angle) + " is not a node of the calculix model");
+    s << "** The load at " << number(p.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N.\n" << keyword << "\n";
+    if (p.force[0] != 0.0) s << node + 1 << ", 1, " << number(p.force[0]) << "\n";
+    if (p.force[1] != 0.0) s << node + 1 << ", 2, " << number(p.force[1]) << "\n";
+    if (p.force[0] == 0.0 && p.force[1] == 0.0) s << node + 1 << ", 1, 0.0\n";
+  }
+  return s.str();
+}
+
+}  // namespace
+
 Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::ResponseOptions& rs,
                    const std::string& title) {
   check_response_deck(rs);
   Deck d = model_deck(spec, o, title, "Forced nonlinear response");
-  const int node = node_at(d.node_angles, rs.load.angle);
-  if (node < 0)
-    throw ring::InputError("", "response.at", "angle " + number(rs.load.angle) + " is not a node of the calculix model");
+  const std::string cloads = point_loads(d, rs.loads, "response", "*CLOAD, AMPLITUDE=LOAD");
   std::vector<int> record;
   for (double a : rs.record) {
     const int k = node_at(d.node_angles, a);
@@ -207,9 +230,9 @@ Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, c
   for (std::size_t i = 0; i < record.size(); ++i) s << record[i] + 1 << (i + 1 < record.size() ? ", " : "\n");
   // The load factor in time: exact for step and ramp (piecewise linear), sampled at every
   // time step for the half-sine and the harmonic (ccx interpolates linearly in between).
-  s << "** Load factor in time (response.history = " << ring::to_string(rs.load.history.kind) << ", period "
-    << number(rs.load.history.period) << " s): time, factor.\n*AMPLITUDE, NAME=LOAD\n";
-  const auto& h = rs.load.history;
+  s << "** Load factor in time (response.history = " << ring::to_string(rs.history.kind) << ", period "
+    << number(rs.history.period) << " s): time, factor.\n*AMPLITUDE, NAME=LOAD\n";
+  const auto& h = rs.history;
   const long steps = std::lround(std::ceil(rs.t_end / rs.dt - 1e-9));
   if (h.kind == ring::LoadHistory::Kind::step) {
     s << "0.0, 1.0\n" << number(rs.t_end * 2.0) << ", 1.0\n";
@@ -225,11 +248,7 @@ Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, c
     << " s\n** to t_end = " << number(rs.t_end) << " s; ALPHA = 0: Newmark's average acceleration.\n"
     << "*STEP, NLGEOM, INC=" << steps + 10 << "\n*DYNAMIC, DIRECT, ALPHA=0.0\n"
     << number(rs.dt) << ", " << number(rs.t_end) << "\n"
-    << "** The load at " << number(rs.load.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N times the factor.\n"
-    << "*CLOAD, AMPLITUDE=LOAD\n";
-  if (rs.load.force[0] != 0.0) s << node + 1 << ", 1, " << number(rs.load.force[0]) << "\n";
-  if (rs.load.force[1] != 0.0) s << node + 1 << ", 2, " << number(rs.load.force[1]) << "\n";
-  if (rs.load.force[0] == 0.0 && rs.load.force[1] == 0.0) s << node + 1 << ", 1, 0.0\n";
+    << "** The loads, times the factor LOAD.\n" << cloads;
   s << "*NODE PRINT, NSET=NREC\nU\n*END STEP\n";
   d.text += s.str();
   return d;
@@ -250,20 +269,14 @@ void check_response_deck(const ring::ResponseOptions& rs) {
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
   Deck d = model_deck(spec, o, title, "Nonlinear statics");
-  const int node = node_at(d.node_angles, st.load.angle);
-  if (node < 0)
-    throw ring::InputError("", "static.at", "angle " + number(st.load.angle) + " is not a node of the calculix model");
+  const std::string cloads = point_loads(d, st.loads, "static", "*CLOAD");
   const double inc = 1.0 / st.steps;
   std::ostringstream s;
-  s << "** Step: geometrically nonlinear statics (NLGEOM) under the dead point load, in load\n"
+  s << "** Step: geometrically nonlinear statics (NLGEOM) under the dead point loads, in load\n"
     << "** increments of 1/" << st.steps << " (static.steps; ccx may cut them, down to 1e-5 of that).\n"
     << "*STEP, NLGEOM, INC=" << std::max(1000, 20 * st.steps) << "\n*STATIC\n"
     << number(inc) << ", 1.0, " << number(1e-5 * inc) << ", " << number(inc) << "\n"
-    << "** The load at " << number(st.load.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N.\n"
-    << "*CLOAD\n";
-  if (st.load.force[0] != 0.0) s << node + 1 << ", 1, " << number(st.load.force[0]) << "\n";
-  if (st.load.force[1] != 0.0) s << node + 1 << ", 2, " << number(st.load.force[1]) << "\n";
-  if (st.load.force[0] == 0.0 && st.load.force[1] == 0.0) s << node + 1 << ", 1, 0.0\n";
+    << cloads;
   s << "** Displacements of the beam nodes after every increment, to the .dat file.\n"
     << "*NODE PRINT, NSET=NALL\nU\n*END STEP\n";
   d.text += s.str();

@@ -36,9 +36,7 @@ int newton_iterations(const std::string& sta) {
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
   check_deck(spec, options);
-  const Deck d = frequency_deck(spec, options, {1});  // the nodes; O(elements)
-  if (node_of(d, st.load.angle) < 0)
-    throw ring::InputError("", "static.at", "angle " + number(st.load.angle) + " is not a node of the calculix model");
+  const Deck d = static_deck(spec, options, st, "check");  // the loads at nodes, nothing distributed; O(elements)
   for (double a : st.record)
     if (node_of(d, a) < 0)
       throw ring::InputError("", "static.record", "angle " + number(a) + " is not a node of the calculix model");

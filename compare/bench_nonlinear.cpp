@@ -31,17 +31,25 @@ double loaded_value(const ring::StaticResult& r, double angle) {
   return NAN;
 }
 
+/// Where bench measures the error: the first point load, or the first recorded point under
+/// distributed loads alone.
+double measured_point(const ring::Loads& loads, const std::vector<double>& record) {
+  return loads.points.empty() ? record.front() : loads.points.front().angle;
+}
+
 /// Every support, load and record point of the scene is a node of an n-piece model.
 bool nodes_fit(const ring::Scene& s, int n) {
   const double anchor = s.ring.supports.pin.value_or(0.0);
   std::vector<double> points;
   if (s.ring.supports.roller) points.push_back(*s.ring.supports.roller);
+  for (const ring::Loads* loads : {s.response ? &s.response->loads : nullptr, s.statics ? &s.statics->loads : nullptr})
+    if (loads)
+      for (const auto& p : loads->points) points.push_back(p.angle);
+  for (double p : s.ring.supports.pins) points.push_back(p);
   if (s.response) {
-    points.push_back(s.response->load.angle);
     points.insert(points.end(), s.response->record.begin(), s.response->record.end());
   }
   if (s.statics) {
-    points.push_back(s.statics->load.angle);
     points.insert(points.end(), s.statics->record.begin(), s.statics->record.end());
   }
   for (double a : points)
@@ -105,27 +113,32 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
 void check_bench_nonlinear(const ring::Scene& scene) {
   const SolverEntry& ref = solver(scene.reference_solver);
   // One analysis: the reference offers it, and the loaded point is among the recorded.
-  auto check = [&](const std::string& section, bool offered, const std::string& what, const ring::PointLoad& load,
+  auto check = [&](const std::string& section, bool offered, const std::string& what, const ring::Loads& loads,
                    const std::vector<double>& record) {
     if (!offered)
       throw ring::InputError(scene.file, section,
                              "bench needs the converged reference " + what + ", and the " + ref.name +
                                  " solver has no " + what + " in this build");
-    if (std::none_of(record.begin(), record.end(), [&](double a) { return std::abs(a - load.angle) < 1e-9; }))
+    if (loads.points.empty()) {  // distributed loads alone: measured at the first recorded point
+      if (record.empty()) throw ring::InputError(scene.file, section + ".record", "bench needs a recorded point");
+      return;
+    }
+    const double at = loads.points.front().angle;
+    if (std::none_of(record.begin(), record.end(), [&](double a) { return std::abs(a - at) < 1e-9; }))
       throw ring::InputError(scene.file, section + ".record",
-                             "bench measures the error at the loaded point (" + sig4(load.angle) + " deg), which " +
+                             "bench measures the error at the (first) loaded point (" + sig4(at) + " deg), which " +
                                  section + ".record does not list; add it");
   };
   if (scene.response)
-    check("response", bool(ref.response), "forced response", scene.response->load, scene.response->record);
-  if (scene.statics) check("static", bool(ref.statics), "statics", scene.statics->load, scene.statics->record);
+    check("response", bool(ref.response), "forced response", scene.response->loads, scene.response->record);
+  if (scene.statics) check("static", bool(ref.statics), "statics", scene.statics->loads, scene.statics->record);
 }
 
 std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostream* progress) {
   check_bench_nonlinear(scene);
   std::vector<NonlinearBench> out;
   if (scene.response) {
-    const double at = scene.response->load.angle;
+    const double at = measured_point(scene.response->loads, scene.response->record);
     out.push_back(sweep(
         scene, "response", at, scene.response_request.solvers,
         [&](const ring::Scene& s, const SolverEntry* e) {
@@ -138,7 +151,7 @@ std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostre
         100.0 * scene.fem.response_tolerance, progress));
   }
   if (scene.statics) {
-    const double at = scene.statics->load.angle;
+    const double at = measured_point(scene.statics->loads, scene.statics->record);
     out.push_back(sweep(
         scene, "static", at, scene.static_request.solvers,
         [&](const ring::Scene& s, const SolverEntry* e) {

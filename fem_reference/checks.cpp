@@ -13,8 +13,9 @@ void need(bool ok, const std::string& what) {
 }
 
 /// What the geometrically exact beam needs of every nonlinear analysis.
-void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::PointLoad& load,
+void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::Loads& loads,
                      const std::vector<double>& record, const std::string& section) {
+  const ring::PointLoad& load = ring::one_point_load(loads, section, "fem " + section);
   check_modes(spec, o);
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
@@ -101,12 +102,12 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  check_nonlinear(spec, o, st.load, st.record, "static");
+  check_nonlinear(spec, o, st.loads, st.record, "static");
   need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  check_nonlinear(spec, o, rs.load, rs.record, "response");
+  check_nonlinear(spec, o, rs.loads, rs.record, "response");
   need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
   need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
   need(rs.integrator == ring::ResponseOptions::Integrator::newmark ||

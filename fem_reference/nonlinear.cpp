@@ -128,7 +128,7 @@ class BeamStepper : public paths::Stepper {
  public:
   BeamStepper(const RingModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
       : model_(model), rs_(rs), radius_(spec.radius), N_(model.n_free()),
-        F_(model.vertex_force(model.vertex_of(rs.load.angle), rs.load.force)), M_(model.mass()),
+        F_(model.vertex_force(model.vertex_of(rs.loads.points.front().angle), rs.loads.points.front().force)), M_(model.mass()),
         damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), S_(model.sparsity()) {
     if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
       am_ = (2.0 * rs.rho_inf - 1.0) / (rs.rho_inf + 1.0);
@@ -155,17 +155,17 @@ class BeamStepper : public paths::Stepper {
     a_ = F_;
     if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
       lu.initialize(newton_matrix(q_, rs.dt));
-      a_ *= (1.0 - am_) / (beta_ * rs.dt * rs.dt) * rs.load.history.factor(0.0);
+      a_ *= (1.0 - am_) / (beta_ * rs.dt * rs.dt) * rs.history.factor(0.0);
     } else {
       lu.initialize(M_);
-      a_ *= rs.load.history.factor(0.0);
+      a_ *= rs.history.factor(0.0);
     }
     lu.solve(a_);
   }
 
   paths::StepOutcome try_step(double t, double h) override {
-    const double g_alpha = rs_.load.history.factor(t + h - af_ * h);
-    g_mean_ = 0.5 * (rs_.load.history.factor(t) + rs_.load.history.factor(t + h));
+    const double g_alpha = rs_.history.factor(t + h - af_ * h);
+    g_mean_ = 0.5 * (rs_.history.factor(t) + rs_.history.factor(t + h));
     h_ = h;
     q1_ = q_;
     const int it = newton(q1_, radius_, [&](const Vector<double>& x, Vector<double>& res) -> SparseMatrix<double>& {
@@ -293,7 +293,7 @@ ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, c
   const RingModel model(spec, setup);
   BeamStepper stepper(model, spec, rs);
   // A gain is a failed integration, not a result (the one rule: ring/energy_guard.hpp).
-  ring::EnergyGuard guard(spec, int(setup.elements * setup.subdivisions * setup.degree), rs.load.force);
+  ring::EnergyGuard guard(spec, int(setup.elements * setup.subdivisions * setup.degree), ring::load_scale(spec, rs.loads));
   paths::Grid grid;
   grid.dt = rs.dt;
   grid.t_end = rs.t_end;

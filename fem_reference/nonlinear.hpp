@@ -105,7 +105,7 @@
 
 namespace fem {
 
-/// Static equilibrium under statics.load: the end of the equilibrium path at the full
+/// Static equilibrium under statics.loads: the end of the equilibrium path at the full
 /// load, through limit points if the path comes back to it (file comment, "Statics").
 /// Requires a pin and a roller on FE vertices, curved geometry, load and record points
 /// on vertices. Throws std::invalid_argument for input that can never work and
@@ -131,7 +131,7 @@ using ContinuationOptions = paths::Continuation;
 /// The equilibrium path of one discretization, from rest, in path order.
 struct StaticPath {
   struct Point {
-    double load_factor = 0.0;                   ///< s: the load is s * statics.load.force
+    double load_factor = 0.0;                   ///< s: the load is s times statics.loads
     std::array<double, 2> displacement{0, 0};   ///< of the loaded point, ring-centred frame, m
   };
   std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)

@@ -390,12 +390,13 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
   const auto t0 = std::chrono::steady_clock::now();
   check_static(spec, options, statics);
   const Chain c = make_chain(spec, options, "statics");
-  const int at = load_hinge(c, statics.load, "static.at");
+  const ring::PointLoad& load = ring::one_point_load(statics.loads, "static", "lumped");
+  const int at = load_hinge(c, load, "static.at");
   const auto rec = record_hinges(c, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
   Vec F = Vec::Zero(N);
-  F[2 * at] = statics.load.force[0];
-  F[2 * at + 1] = statics.load.force[1];
+  F[2 * at] = load.force[0];
+  F[2 * at + 1] = load.force[1];
   ChainStatics eq(c, F, spec.EI() / (c.l * c.l * c.l), spec.radius);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
   rest.z.head(N) = c.rest;
@@ -439,7 +440,7 @@ class MidpointStepper : public paths::Stepper {
     const double tm = t + 0.5 * hh;
     const double scale = 2.0 / (hh * hh) * c_.m;  // balances the constraint rows
     hh_ = hh;
-    f_ = r_.load.history.factor(tm);
+    f_ = r_.history.factor(tm);
     const Vec Fm = F_ * f_;
     x1_ = x_ + hh * v_;
     l1_ = lambda_;
@@ -545,12 +546,13 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const auto t0 = std::chrono::steady_clock::now();
   check_response(spec, options, r);
   const Chain c = make_chain(spec, options, "response");
-  const int at = load_hinge(c, r.load, "response.at");
+  const ring::PointLoad& load = ring::one_point_load(r.loads, "response", "lumped");
+  const int at = load_hinge(c, load, "response.at");
   const auto rec = record_hinges(c, r.record, "response.record");
   const int N = 2 * c.n, R = c.rows();
   Vec F = Vec::Zero(N);
-  F[2 * at] = r.load.force[0];
-  F[2 * at + 1] = r.load.force[1];
+  F[2 * at] = load.force[0];
+  F[2 * at + 1] = load.force[1];
   const Sparse M = mass_matrix(c);
   // Rayleigh damping C = a M + b K0, K0 the spring Hessian at rest (no link forces there).
   Sparse Cd(N, N);
@@ -564,7 +566,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   // The balance error of the midpoint rule is O(h^2) of the spring energy, of either
   // sign; a gain beyond the one rule's bound (ring/energy_guard.hpp) is a failed
   // integration, not a result.
-  ring::EnergyGuard guard(spec, c.n, r.load.force);
+  ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, r.loads));
   MidpointStepper stepper(c, r, spec.radius, F, M, Cd, rec);
   paths::Grid grid;
   grid.dt = r.dt;

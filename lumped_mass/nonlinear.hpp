@@ -50,7 +50,7 @@
 
 namespace lumped {
 
-/// Static equilibrium of the chain under `statics.load` (full load). Requires a pin and a
+/// Static equilibrium of the chain under `statics.loads` (full load). Requires a pin and a
 /// roller, the `chain` variant, and the load and record points on hinges.
 /// Throws std::invalid_argument for inputs that can never work and ring::NumericalError
 /// when the equilibrium path does not reach the full load (the ring touches itself; no

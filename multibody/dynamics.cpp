@@ -122,10 +122,10 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
     return respond_energy_momentum(spec, options, response, controls);
 
-  const Chain chain(spec, options, response.load.angle);
+  const ring::PointLoad& load = ring::one_point_load(response.loads, "response", "multibody");
+  const Chain chain(spec, options, load.angle);
   const int n = chain.dofs();
-  Problem p{chain, {chain.hinge_at(response.load.angle), {response.load.force[0], response.load.force[1]}},
-            response.load.history};
+  Problem p{chain, {chain.hinge_at(load.angle), {load.force[0], load.force[1]}}, response.history};
   // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
   // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
   const detail::Damping damping{response.rayleigh_mass,
@@ -154,7 +154,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   // A run that gains energy has failed, whatever the integrator: its history is not a
   // result (generalized-alpha did on fine chains under a point step load when it started
   // from a_0 = qdd_0; see starting_pseudo_acceleration). The rule: energy_guard.hpp.
-  ring::EnergyGuard guard(spec, chain.n(), response.load.force);
+  ring::EnergyGuard guard(spec, chain.n(), ring::load_scale(spec, response.loads));
   paths::Grid grid = detail::response_grid(response, controls, guard, "multibody::respond");
   grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
   ring::TimeHistory th = paths::integrate(stepper, grid, response.record);

@@ -137,7 +137,7 @@ class EnergyMomentumStepper : public paths::Stepper {
     h_ = h;
     x1_ = x_ + h * v_;
     l1_ = lambda_;
-    f_ = response_.load.history.factor(t + 0.5 * h);
+    f_ = response_.history.factor(t + 0.5 * h);
     const Step st = step(c_, x_, v_, h, f_, x1_, l1_, kkt_, buffers_);
     return {st.converged, false, st.iterations, f_};
   }
@@ -197,14 +197,14 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
                                           const IntegrationControls& controls) {
   check_response(spec, options, response);
   const auto start = std::chrono::steady_clock::now();
-  const Chain chain(spec, options, response.load.angle);
-  const Natural c =
-      make_natural(chain, response.load.angle, Eigen::Vector2d(response.load.force[0], response.load.force[1]));
+  const ring::PointLoad& load = ring::one_point_load(response.loads, "response", "multibody");
+  const Chain chain(spec, options, load.angle);
+  const Natural c = make_natural(chain, load.angle, Eigen::Vector2d(load.force[0], load.force[1]));
 
   EnergyMomentumStepper stepper(chain, c, response, spec.section.depth());
   // The scheme conserves the balance to round-off; a gain is a failure as for the other
   // integrators (the one rule: ring/energy_guard.hpp).
-  ring::EnergyGuard guard(spec, c.n, response.load.force);
+  ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, response.loads));
   ring::TimeHistory th = paths::integrate(
       stepper, detail::response_grid(response, controls, guard, "multibody::respond (energy-momentum)"),
       response.record);

@@ -115,14 +115,15 @@ class AngleStatics : public detail::StaticEquilibrium {
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics) {
   check_static(spec, options, statics);
-  const Chain ch(spec, options, statics.load.angle);
+  const ring::PointLoad& load = ring::one_point_load(statics.loads, "static", "multibody");
+  const Chain ch(spec, options, load.angle);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
   if (backend(options, spec, Analysis::statics) == Backend::banded)
     eq = natural::static_equilibrium(ch, statics, depth);
   else
     eq = std::make_unique<AngleStatics>(
-        ch, spec, detail::DeadLoad{ch.hinge_at(statics.load.angle), {statics.load.force[0], statics.load.force[1]}}, depth);
+        ch, spec, detail::DeadLoad{ch.hinge_at(load.angle), {load.force[0], load.force[1]}}, depth);
   const paths::Continuation policy{statics.steps};
   const paths::Trace path = paths::follow(*eq, {eq->rest(), 0.0}, policy);
   if (path.end != paths::Trace::End::reached)

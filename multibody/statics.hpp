@@ -50,7 +50,7 @@ class StaticEquilibrium : public paths::Equilibrium {
 
 }  // namespace detail
 
-/// Static equilibrium under `statics.load` (its history is ignored: full load).
+/// Static equilibrium under `statics.loads` at full load.
 /// Returns the displacements of the recorded points (ring-centred frame, m), the
 /// number of accepted load steps, the total Newton iterations, and every hinge's
 /// deformed position. Cost: O(n^3) per Newton iteration on the dense path, O(n) on the

@@ -19,7 +19,8 @@ class PositionStatics : public detail::StaticEquilibrium {
  public:
   PositionStatics(const Chain& chain, const ring::StaticOptions& st, double depth)
       : StaticEquilibrium(chain, depth),
-        c_(make_natural(chain, st.load.angle, Eigen::Vector2d(st.load.force[0], st.load.force[1]))),
+        c_(make_natural(chain, ring::one_point_load(st.loads, "static", "multibody").angle,
+                        Eigen::Vector2d(st.loads.points.front().force[0], st.loads.points.front().force[1]))),
         N_(2 * c_.n),
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),

@@ -11,7 +11,8 @@ namespace ring {
 
 /// Forced nonlinear response from rest in the undeformed state (the paper's section 5).
 struct ResponseOptions {
-  PointLoad load;                      ///< at, force, history, period
+  Loads loads;                         ///< point loads, pressure, gravity
+  LoadHistory history;                 ///< f(t) that scales every load
   double dt = 0.01;                    ///< s
   double t_end = 5.0;                  ///< s
   /// newmark: average acceleration (the paper's); generalized_alpha: Chung & Hulbert
@@ -30,9 +31,9 @@ struct ResponseOptions {
                                        ///< on the relative rotation of neighbouring pieces)
 };
 
-/// Nonlinear statics under a dead point load, by load stepping (full load at the end).
+/// Nonlinear statics under the loads, by load stepping (full load at the end).
 struct StaticOptions {
-  PointLoad load;                      ///< its history is ignored
+  Loads loads;                         ///< point loads, pressure, gravity
   int steps = 20;                      ///< load increments
   std::vector<double> record;          ///< degrees, points reported
 };

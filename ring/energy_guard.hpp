@@ -92,7 +92,7 @@ namespace ring {
 
 /// Usage, once per run and once per step:
 /// \code
-///   ring::EnergyGuard guard(spec, n, response.load.force);
+///   ring::EnergyGuard guard(spec, n, ring::load_scale(spec, response.loads));
 ///   guard.start(T0, V0, W0);
 ///   // each accepted (sub-)step of length h whose work used the load factor f:
 ///   guard.step(h, f);
@@ -116,9 +116,9 @@ class EnergyGuard {
   };
 
   /// \param pieces nodes around the ring (segments, links, elements x degree), >= 1
-  /// \param force the load's force at load factor 1, N
-  EnergyGuard(const RingSpec& spec, int pieces, const std::array<double, 2>& force)
-      : force_(std::hypot(force[0], force[1])),
+  /// \param force the loads' force scale at load factor 1 (ring::load_scale), N
+  EnergyGuard(const RingSpec& spec, int pieces, double force)
+      : force_(force),
         dx_(kResolution * std::numeric_limits<double>::epsilon() * spec.radius),
         mass_(spec.rhoA() * 2.0 * M_PI * spec.radius) {
     const double n = std::max(pieces, 1), L = 2.0 * M_PI * spec.radius;

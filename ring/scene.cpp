@@ -73,21 +73,69 @@ Section read_section(const Reader& r, const toml::table& ring_t) {
   return s;
 }
 
-PointLoad read_load(const Reader& r, const toml::table& t, const std::string& sec, bool with_history) {
+/// The key of point load i in messages: "static.at" for the one-load shorthand,
+/// "static.loads[2].at" (1-based) in a list.
+std::string point_load_key(const std::string& sec, const Loads& loads, std::size_t i) {
+  return loads.points.size() == 1 ? sec + ".at" : sec + ".loads[" + std::to_string(i + 1) + "].at";
+}
+
+/// One point load: `at` (degrees) and `force` ([Fx, Fy], N) of the table `t` named `name`.
+PointLoad read_point_load(const Reader& r, const toml::table& t, const std::string& name) {
   PointLoad p;
-  if (!t.contains("at")) r.fail(sec + ".at", &t, "missing: the angle (degrees) of the loaded point");
-  if (!t.contains("force")) r.fail(sec + ".force", &t, "missing: the force [Fx, Fy] in N");
-  p.angle = wrap_degrees(r.number(t, sec, "at", 0.0, -360.0, 360.0));
-  const auto f = r.numbers(t, sec, "force", {}, 2);
+  if (!t.contains("at")) r.fail(Reader::dotted(name, "at"), &t, "missing: the angle (degrees) of the loaded point");
+  if (!t.contains("force")) r.fail(Reader::dotted(name, "force"), &t, "missing: the force [Fx, Fy] in N");
+  p.angle = wrap_degrees(r.number(t, name, "at", 0.0, -360.0, 360.0));
+  const auto f = r.numbers(t, name, "force", {}, 2);
   p.force = {f[0], f[1]};
-  if (with_history) {
-    const std::string h = r.choice(t, sec, "history", "step", {"step", "ramp", "half-sine", "harmonic"});
-    p.history.kind = h == "ramp" ? LoadHistory::Kind::ramp
-                   : h == "half-sine" ? LoadHistory::Kind::half_sine
-                   : h == "harmonic" ? LoadHistory::Kind::harmonic : LoadHistory::Kind::step;
-    p.history.period = r.number(t, sec, "period", 1.0, 0.0, HUGE_VAL, true);
-  }
   return p;
+}
+
+/// The loads of [static] or [response]: point loads (`loads = [{at, force}, ...]`, or the
+/// one-load shorthand `at`/`force`), `pressure = {value, kind}` and `gravity = [gx, gy]`;
+/// at least one of them.
+Loads read_loads(const Reader& r, const toml::table& t, const std::string& sec) {
+  Loads loads;
+  const bool shorthand = t.contains("at") || t.contains("force");
+  if (shorthand && t.contains("loads"))
+    r.fail(sec + ".loads", t.get("loads"), "give the point loads either as " + sec + ".at/force or as " + sec +
+                                               ".loads = [{at, force}, ...], not both");
+  if (shorthand) loads.points.push_back(read_point_load(r, t, sec));
+  for (const auto& [name, lt] : r.tables(t, sec, "loads")) {
+    r.known_keys(*lt, name, {"at", "force"});
+    loads.points.push_back(read_point_load(r, *lt, name));
+  }
+  for (std::size_t i = 0; i < loads.points.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (circular_distance(loads.points[i].angle, loads.points[j].angle) < 1e-6)
+        r.fail(sec + ".loads[" + std::to_string(i + 1) + "].at", t.get("loads"),
+               "acts at the point of " + sec + ".loads[" + std::to_string(j + 1) + "]; add the forces into one load");
+  if (const toml::table* pt = r.table(t, sec, "pressure")) {
+    const std::string name = sec + ".pressure";
+    r.known_keys(*pt, name, {"value", "kind"});
+    if (!pt->contains("value")) r.fail(name + ".value", pt, "missing: the pressure in N/m (positive inward)");
+    loads.pressure.value = r.number(*pt, name, "value", 0.0, -HUGE_VAL, HUGE_VAL);
+    const std::string kind = r.choice(*pt, name, "kind", "follower", {"follower", "dead", "central"});
+    loads.pressure.kind = kind == "dead" ? Pressure::Kind::dead
+                        : kind == "central" ? Pressure::Kind::central : Pressure::Kind::follower;
+  }
+  if (t.contains("gravity")) {
+    const auto g = r.numbers(t, sec, "gravity", {}, 2);
+    loads.gravity = {g[0], g[1]};
+  }
+  if (loads.points.empty() && !loads.pressure.any() && !loads.has_gravity())
+    r.fail(sec, &t, "has no load: give " + sec + ".at and " + sec + ".force, " + sec + ".loads, " + sec +
+                        ".pressure or " + sec + ".gravity");
+  return loads;
+}
+
+LoadHistory read_history(const Reader& r, const toml::table& t, const std::string& sec) {
+  LoadHistory h;
+  const std::string kind = r.choice(t, sec, "history", "step", {"step", "ramp", "half-sine", "harmonic"});
+  h.kind = kind == "ramp" ? LoadHistory::Kind::ramp
+         : kind == "half-sine" ? LoadHistory::Kind::half_sine
+         : kind == "harmonic" ? LoadHistory::Kind::harmonic : LoadHistory::Kind::step;
+  h.period = r.number(t, sec, "period", 1.0, 0.0, HUGE_VAL, true);
+  return h;
 }
 
 std::vector<double> read_record(const Reader& r, const toml::table& t, const std::string& sec) {
@@ -278,8 +326,8 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   const auto& sup = s.ring.supports;
   double anchor = sup.pin.value_or(0.0);
   if (!sup.pin) {
-    if (s.statics) anchor = s.statics->load.angle;
-    else if (s.response) anchor = s.response->load.angle;
+    const Loads* loads = s.statics ? &s.statics->loads : s.response ? &s.response->loads : nullptr;
+    if (loads && !loads->points.empty()) anchor = loads->points.front().angle;
   }
   struct Point { std::string key; double angle; };
   std::vector<Point> points;
@@ -291,11 +339,13 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   for (std::size_t i = 0; i < s.ring.masses.size(); ++i)
     points.push_back({"masses[" + std::to_string(i + 1) + "]", s.ring.masses[i].angle});
   if (s.response) {
-    points.push_back({"response.at", s.response->load.angle});
+    for (std::size_t i = 0; i < s.response->loads.points.size(); ++i)
+      points.push_back({point_load_key("response", s.response->loads, i), s.response->loads.points[i].angle});
     for (double a : s.response->record) points.push_back({"response.record", a});
   }
   if (s.statics) {
-    points.push_back({"static.at", s.statics->load.angle});
+    for (std::size_t i = 0; i < s.statics->loads.points.size(); ++i)
+      points.push_back({point_load_key("static", s.statics->loads, i), s.statics->loads.points[i].angle});
     for (double a : s.statics->record) points.push_back({"static.record", a});
   }
   for (const auto& p : points) {
@@ -470,11 +520,13 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   // [response], [static]: need a pin (a free ring under a dead load has no equilibrium).
   if (const toml::table* t = r.table(root, "", "response")) {
     const std::string sec = "response";
-    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "history", "period", "dt", "t_end", "integrator",
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "history", "period",
+                           "dt", "t_end", "integrator",
                            "rho_inf", "record", "rayleigh_mass", "rayleigh_stiffness", "hinge_damping"});
     if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a forced response needs a pin (the ring is free)");
     ResponseOptions o;
-    o.load = read_load(r, *t, sec, true);
+    o.loads = read_loads(r, *t, sec);
+    o.history = read_history(r, *t, sec);
     o.dt = r.number(*t, sec, "dt", 0.01, 0.0, HUGE_VAL, true);
     o.t_end = r.number(*t, sec, "t_end", 5.0, 0.0, HUGE_VAL, true);
     if (o.dt > o.t_end)
@@ -499,7 +551,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   }
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
-    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "steps", "record"});
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record"});
     // A dead load has an equilibrium only when nothing is left to move rigidly.
     if (const int rigid = s.ring.rigid_modes(); rigid > 0)
       r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
@@ -509,16 +561,24 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
                  : "a static analysis needs a pin (or springs or a foundation that hold the ring): the ring is free (" +
                        std::to_string(rigid) + " rigid modes)");
     StaticOptions o;
-    o.load = read_load(r, *t, sec, false);
+    o.loads = read_loads(r, *t, sec);
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
     o.record = read_record(r, *t, sec);
     s.statics = o;
     s.static_request = read_request(r, *t, sec, schema, &SolverSchema::statics);
   }
-  for (const auto* opt : {s.response ? &s.response->load : nullptr, s.statics ? &s.statics->load : nullptr}) {
-    if (opt && s.ring.supports.pin && circular_distance(opt->angle, *s.ring.supports.pin) < 1e-6)
-      r.fail(opt == (s.response ? &s.response->load : nullptr) ? "response.at" : "static.at", &root,
-             "the load acts at the pin, where it does nothing; load another point");
+  for (const auto& [sec, loads] : {std::pair{"response", s.response ? &s.response->loads : nullptr},
+                                    std::pair{"static", s.statics ? &s.statics->loads : nullptr}}) {
+    if (!loads) continue;
+    for (std::size_t i = 0; i < loads->points.size(); ++i)
+      for (double p : s.ring.supports.pinned())
+        if (circular_distance(loads->points[i].angle, p) < 1e-6)
+          r.fail(point_load_key(sec, *loads, i), &root,
+                 "the load acts at the pin at " + fmt_num(p) + " deg, where it does nothing; load another point");
+    if (loads->has_gravity() && s.ring.rigid_modes() > 0)
+      r.fail(std::string(sec) + ".gravity", &root,
+             "gravity on a ring that is free to move rigidly has no equilibrium and no meaning here: add a pin, a "
+             "clamp, springs or a foundation");
   }
 
   // Cross checks: every solver used must have the modes asked for, and nodes at the points.

@@ -109,6 +109,27 @@ void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
                               " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
 }
 
+const PointLoad& one_point_load(const Loads& loads, const std::string& section, const std::string& who) {
+  std::vector<std::string> keys = loads.beyond_one_point(section);
+  if (keys.empty() && loads.points.empty()) keys.push_back(section + ".pressure or " + section + ".gravity alone");
+  if (!keys.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < keys.size(); ++i) list += (i ? ", " : "") + keys[i];
+    throw std::invalid_argument(who + " does not take " + list +
+                                " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
+  }
+  return loads.points.front();
+}
+
+double load_scale(const RingSpec& spec, const Loads& loads) {
+  double f = 0.0;
+  for (const auto& p : loads.points) f += std::hypot(p.force[0], p.force[1]);
+  const double L = 2.0 * M_PI * spec.radius;
+  double mass = spec.rhoA() * L;
+  for (const auto& m : spec.masses) mass += m.mass;
+  return f + std::abs(loads.pressure.value) * L + mass * std::hypot(loads.gravity[0], loads.gravity[1]);
+}
+
 std::vector<std::string> RingSpec::terms_beyond_paper() const {
   std::vector<std::string> keys;
   if (!supports.pins.empty()) keys.push_back("supports.pins");
@@ -161,6 +182,35 @@ std::string to_string(LoadHistory::Kind k) {
     case LoadHistory::Kind::harmonic: return "harmonic";
   }
   return "";
+}
+
+std::string to_string(Pressure::Kind k) {
+  switch (k) {
+    case Pressure::Kind::follower: return "follower";
+    case Pressure::Kind::dead: return "dead";
+    case Pressure::Kind::central: return "central";
+  }
+  return "";
+}
+
+std::string to_string(Theory t) { return t == Theory::timoshenko ? "timoshenko" : "euler-bernoulli"; }
+
+double RingSpec::kappa() const {
+  if (shear_coefficient > 0.0) return shear_coefficient;
+  switch (section.shape) {
+    case Section::Shape::rectangle: return 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
+    case Section::Shape::circle: return 6.0 * (1.0 + nu) / (7.0 + 6.0 * nu);
+    case Section::Shape::general: return 0.0;
+  }
+  return 0.0;
+}
+
+std::vector<std::string> Loads::beyond_one_point(const std::string& section) const {
+  std::vector<std::string> keys;
+  if (points.size() > 1) keys.push_back(section + ".loads");
+  if (pressure.any()) keys.push_back(section + ".pressure");
+  if (has_gravity()) keys.push_back(section + ".gravity");
+  return keys;
 }
 
 std::string to_string(ResponseOptions::Integrator i) {

@@ -81,7 +81,7 @@ struct Foundation {
   bool any() const { return radial > 0.0 || tangential > 0.0; }
 };
 
-/// Time history of a load factor f(t) that multiplies a point load's force.
+/// Time history of a load factor f(t) that multiplies every load of a response.
 struct LoadHistory {
   enum class Kind { step, ramp, half_sine, harmonic };
   Kind kind = Kind::step;
@@ -95,14 +95,58 @@ struct LoadHistory {
 struct PointLoad {
   double angle = 0.0;                 ///< degrees, where it acts (a node of every model)
   std::array<double, 2> force{0, 0};  ///< N, ring-centred frame (x, y)
-  LoadHistory history;
 };
+
+/// A uniform pressure on the centroid line, per unit length of the undeformed centroid
+/// line, positive inward. With p the value and ds0 an element of undeformed length at the
+/// point x(s0) of the deformed ring:
+///  - follower: p |dx/ds0| n ds0 with n the inward normal of the *deformed* ring (hydrostatic:
+///    -p times the rotated tangent dx/ds0; it does work p dA on the enclosed area A and has a
+///    symmetric load stiffness on a closed ring);
+///  - dead: p n0 ds0 with n0 the inward normal of the *undeformed* point (fixed direction and
+///    magnitude);
+///  - central: p ds0 toward the ring's centre from the deformed point, -p x/|x| ds0.
+/// All three equal p n0 ds0 on the undeformed ring, so linear analyses (and the first step
+/// of a nonlinear one) see the same load; they differ in their load stiffness.
+struct Pressure {
+  enum class Kind { follower, dead, central };
+  double value = 0.0;  ///< N/m, positive inward; 0 = no pressure
+  Kind kind = Kind::follower;
+  bool any() const { return value != 0.0; }
+};
+
+/// Everything that loads the ring in statics or a response, all scaled by one load factor
+/// (statics: the load step; response: the history f(t)).
+struct Loads {
+  std::vector<PointLoad> points;         ///< dead point loads, at nodes of every model
+  Pressure pressure;                     ///< uniform pressure
+  std::array<double, 2> gravity{0, 0};   ///< m/s^2, acting on the ring and on the point masses
+  bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0; }
+  /// True when only point loads act (the paper's loading, in any number).
+  bool points_only() const { return !pressure.any() && !has_gravity(); }
+  /// The scene keys of the loads beyond one point load ("pressure", "gravity", "loads"), in
+  /// `section` ("static", "response"), for refusals that name them.
+  std::vector<std::string> beyond_one_point(const std::string& section) const;
+};
+
+/// The beam theory of the ring's wall.
+/// euler_bernoulli: plane sections stay normal to the centroid line (no shear strain).
+/// timoshenko: the cross-section turns independently of the centroid line's tangent; shear
+/// strain energy kappa G A/2 gamma^2 with G = E / (2 (1 + nu)) and the shear coefficient
+/// kappa, and the cross-section's rotary inertia rho I.
+enum class Theory { euler_bernoulli, timoshenko };
 
 /// The ring itself: geometry, material and supports.
 struct RingSpec {
   double radius = 10.0;  ///< m, centroid radius R
   double E = 2.1e11;     ///< Pa
   double rho = 7.8e3;    ///< kg/m^3
+  Theory theory = Theory::euler_bernoulli;
+  double nu = 0.3;       ///< Poisson's ratio, (-1, 0.5)
+  /// kappa of the Timoshenko theory; 0 = Cowper's (1966) value for the section's shape:
+  /// rectangle 10 (1 + nu) / (12 + 11 nu), circle 6 (1 + nu) / (7 + 6 nu). A general
+  /// {area, inertia} section has no shape, so the scene must give it.
+  double shear_coefficient = 0.0;
   Section section;
   Supports supports;
   std::vector<PointMass> masses;
@@ -113,6 +157,13 @@ struct RingSpec {
   double EI() const { return E * section.inertia(); }
   double EA() const { return E * section.area(); }
   double rhoA() const { return rho * section.area(); }
+  double rhoI() const { return rho * section.inertia(); }
+  double G() const { return E / (2.0 * (1.0 + nu)); }
+  /// The shear coefficient in use: shear_coefficient, or Cowper's for the shape (0 for a
+  /// general section without one: the scene reader refuses that under timoshenko).
+  double kappa() const;
+  /// kappa G A, N: the shear stiffness of the Timoshenko theory.
+  double kGA() const { return kappa() * G() * A(); }
   /// sqrt(EI / (rho A R^4)), rad/s: the scale of every bending frequency.
   double bending_frequency_scale() const;
   /// R / radius of gyration sqrt(I/A): the slenderness of the ring.
@@ -132,6 +183,15 @@ struct RingSpec {
 /// Throws std::invalid_argument "`who` does not take KEYS yet" when `spec` has terms beyond
 /// the paper's ring (RingSpec::terms_beyond_paper), for an analysis that lacks them.
 void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);
+
+/// The one point load of `loads`, for an analysis that takes no other load: throws
+/// std::invalid_argument "`who` does not take KEYS yet" when `loads` has several point loads,
+/// pressure or gravity (Loads::beyond_one_point of `section`), or no point load.
+const PointLoad& one_point_load(const Loads& loads, const std::string& section, const std::string& who);
+
+/// A force scale of the loads at load factor 1, N: the sum of the point loads' magnitudes, of
+/// |pressure| times the circumference and of the weight of the ring and the point masses.
+double load_scale(const RingSpec& spec, const Loads& loads);
 
 // ---- Discretization options, one struct per solver (validated by the scene parser) ----
 
@@ -188,6 +248,8 @@ std::string to_string(MultibodyOptions::Dependent d);
 std::string to_string(LumpedOptions::Variant v);
 std::string to_string(FemOptions::Geometry g);
 std::string to_string(LoadHistory::Kind k);
+std::string to_string(Pressure::Kind k);
+std::string to_string(Theory t);
 std::string to_string(CalculixOptions::Element e);
 std::string to_string(CalculixOptions::Section s);
 

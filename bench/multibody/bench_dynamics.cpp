@@ -27,8 +27,7 @@ using ringtest::pin_roller_ring;
 
 ring::ResponseOptions scene(Integrator integrator, double t_end) {
   ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-20e3, 0.0};
+  r.loads.points = {{0.0, {-20e3, 0.0}}};
   r.dt = 0.01;
   r.t_end = t_end;
   r.integrator = integrator;

@@ -179,8 +179,8 @@ TEST(CalculixDeck, StaticStepLoadsTheNodeAtTheLoadsAngle) {
   r.supports.pin = 180.0;
   r.supports.roller = 0.0;
   ring::StaticOptions st;
-  st.load.angle = 90.0;
-  st.load.force = {0.0, -2e4};
+  st.loads.points = {{90.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {0.0, -2e4};
   st.steps = 8;
   const std::string deck = calculix::static_deck(r, {}, st).text;
   const Parsed p = parse(deck);
@@ -197,7 +197,7 @@ TEST(CalculixDeck, StaticStepLoadsTheNodeAtTheLoadsAngle) {
   const auto inc = fields(deck.substr(deck.find("*STATIC\n") + 8, 80).substr(0, deck.substr(deck.find("*STATIC\n") + 8).find('\n')));
   EXPECT_EQ(std::stod(inc[0]), 0.125);
   EXPECT_EQ(std::stod(inc[1]), 1.0);
-  st.load.angle = 91.0;  // not a node
+  st.loads.points = {{91.0, {0.0, -2e4}}};  // not a node
   EXPECT_THROW(calculix::static_deck(r, {}, st), ring::InputError);
 }
 
@@ -205,10 +205,10 @@ TEST(CalculixDeck, ResponseStepIsNewmarkWithTheLoadsHistory) {
   ring::RingSpec r = paper_ring();
   r.supports.pin = 180.0;
   ring::ResponseOptions rs;
-  rs.load.angle = 0.0;
-  rs.load.force = {-2e4, 0.0};
-  rs.load.history.kind = ring::LoadHistory::Kind::half_sine;
-  rs.load.history.period = 0.5;
+  rs.loads.points = {{0.0, {0.0, 0.0}}};
+  rs.loads.points.at(0).force = {-2e4, 0.0};
+  rs.history.kind = ring::LoadHistory::Kind::half_sine;
+  rs.history.period = 0.5;
   rs.dt = 0.1;
   rs.t_end = 1.0;
   rs.record = {0.0, 90.0};

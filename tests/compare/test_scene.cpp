@@ -235,8 +235,8 @@ TEST(SceneSet, ArrayOverrideCreatesSection) {
   const ring::Scene s =
       cmp::parse_scene(kPaper, "p.toml", {"supports.roller=0.0", "static.at=0.0", "static.force=[-2e4,0.0]"});
   ASSERT_TRUE(s.statics);
-  EXPECT_EQ(s.statics->load.force[0], -2e4);
-  EXPECT_EQ(s.statics->load.force[1], 0.0);
+  EXPECT_EQ(s.statics->loads.points.at(0).force[0], -2e4);
+  EXPECT_EQ(s.statics->loads.points.at(0).force[1], 0.0);
 }
 TEST(SceneSet, QuotedAndBareStrings) {
   const ring::Scene a = cmp::parse_scene(kPaper, "p.toml", {"lumped.variant=\"frame\""});

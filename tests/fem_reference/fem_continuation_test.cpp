@@ -35,8 +35,8 @@ ring::RingSpec held_ring() {
 /// P = p EI / R^2 at the crown, toward the centre; steps as the multibody test's.
 ring::StaticOptions pressed_crown(const ring::RingSpec& spec, double p) {
   ring::StaticOptions st;
-  st.load.angle = 90.0;
-  st.load.force = {0.0, -p * spec.EI() / (spec.radius * spec.radius)};
+  st.loads.points = {{90.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {0.0, -p * spec.EI() / (spec.radius * spec.radius)};
   st.steps = std::max(1, static_cast<int>(4 * p));
   st.record = {90.0, 0.0, 270.0};
   return st;

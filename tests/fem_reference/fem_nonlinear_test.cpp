@@ -32,8 +32,8 @@ ring::RingSpec held_ring() {
 /// P pushing C (0 deg) toward A: the diametral squeeze.
 ring::StaticOptions squeeze(double force) {
   ring::StaticOptions st;
-  st.load.angle = 0.0;
-  st.load.force = {-force, 0.0};
+  st.loads.points = {{0.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {-force, 0.0};
   st.steps = 10;
   st.record = {0.0, 90.0, 270.0};
   return st;
@@ -199,8 +199,8 @@ TEST(FemBeamStatics, ConvergesToTheElasticaAtTheExpectedOrderInElements) {
 /// The paper's section 5 load: 20 kN at C toward A, from rest, recorded at C and 90 deg.
 ring::ResponseOptions forced(double force, double dt, double t_end) {
   ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-force, 0.0};
+  r.loads.points = {{0.0, {0.0, 0.0}}};
+  r.loads.points.at(0).force = {-force, 0.0};
   r.dt = dt;
   r.t_end = t_end;
   r.record = {0.0, 90.0};
@@ -280,8 +280,8 @@ TEST(FemBeamResponse, ConvergesInDtAndElementsAtTheExpectedOrders) {
     ring::FemOptions o;
     o.elements = elements;
     ring::ResponseOptions r = forced(20e3, dt, 1.0);
-    r.load.history.kind = ring::LoadHistory::Kind::half_sine;
-    r.load.history.period = 1.0;
+    r.history.kind = ring::LoadHistory::Kind::half_sine;
+    r.history.period = 1.0;
     r.record = {0.0};
     return fem::respond(spec, o, r).ux[0].back();
   };

@@ -51,7 +51,7 @@ TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {
   ring::FemOptions o;
   o.elements = 20;
   ring::StaticOptions st;
-  st.load.force = {-20e3, 0.0};
+  st.loads.points = {{0.0, {-20e3, 0.0}}};
   st.record = {0.0, 90.0};
   ring::StaticResult sr;
   std::string error;
@@ -61,7 +61,7 @@ TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {
   EXPECT_EQ(sr.displacements[0].ux, sd.displacements[0].ux);
   EXPECT_EQ(sr.displacements[1].uy, sd.displacements[1].uy);
   ring::ResponseOptions rs;
-  rs.load = st.load;
+  rs.loads = st.loads;
   rs.dt = 0.01;
   rs.t_end = 0.2;
   rs.record = {0.0};
@@ -72,7 +72,7 @@ TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {
   EXPECT_EQ(h.ux[0].back(), fem::respond(held(), o, rs).ux[0].back());
   // A step far too large for Newton from rest (the whole 20 MN load at once) fails with
   // code 3, the reason and the history so far (the state at t = 0).
-  rs.load.force = {-2e7, 0.0};
+  rs.loads.points.at(0).force = {-2e7, 0.0};
   rs.dt = 1.0;
   rs.t_end = 2.0;
   EXPECT_EQ(plugin->respond(held(), o, rs, h, reason, t_reached, error), 3);

@@ -29,8 +29,8 @@ ring::RingSpec held_ring() {
 
 ring::StaticOptions squeeze(double force) {
   ring::StaticOptions o;
-  o.load.angle = 0.0;
-  o.load.force = {-force, 0.0};
+  o.loads.points = {{0.0, {0.0, 0.0}}};
+  o.loads.points.at(0).force = {-force, 0.0};
   o.steps = 20;
   o.record = {0.0, 90.0, 180.0, 270.0};
   return o;
@@ -38,8 +38,8 @@ ring::StaticOptions squeeze(double force) {
 
 ring::ResponseOptions step_load(double dt, double t_end) {
   ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-20e3, 0.0};
+  r.loads.points = {{0.0, {0.0, 0.0}}};
+  r.loads.points.at(0).force = {-20e3, 0.0};
   r.dt = dt;
   r.t_end = t_end;
   r.record = {0.0, 90.0, 180.0, 270.0};
@@ -85,8 +85,8 @@ double limit_in(const std::string& message) {
 TEST(LumpedNonlinear, PassesTheLimitPointOfThePressedCrownAsTheMultibodyChainDoes) {
   const ring::RingSpec spec = held_ring();
   ring::StaticOptions st;
-  st.load.angle = 90.0;
-  st.load.force = {0.0, -8.0 * spec.EI() / (spec.radius * spec.radius)};
+  st.loads.points = {{90.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {0.0, -8.0 * spec.EI() / (spec.radius * spec.radius)};
   st.steps = 32;
   st.record = {90.0};
   auto failure = [&](auto&& solve) -> std::string {
@@ -145,8 +145,8 @@ TEST(LumpedNonlinear, ResponseConvergesToTheMultibodyChainAtSecondOrder) {
   double u0 = 0.0;
   for (double dt : dts) {
     auto r = step_load(dt, 1.0);
-    r.load.history.kind = ring::LoadHistory::Kind::half_sine;
-    r.load.history.period = 1.0;
+    r.history.kind = ring::LoadHistory::Kind::half_sine;
+    r.history.period = 1.0;
     const auto a = lumped::respond(held_ring(), ring::LumpedOptions{}, r);
     const auto b = multibody::respond(held_ring(), mo, r);
     ASSERT_NEAR(a.t.back(), 1.0, 1e-12);
@@ -210,7 +210,7 @@ TEST(LumpedNonlinear, RejectsWhatItCannotDo) {
   r.integrator = ring::ResponseOptions::Integrator::generalized_alpha;
   EXPECT_THROW(lumped::respond(held_ring(), ring::LumpedOptions{}, r), std::invalid_argument);
   auto off = squeeze(1e3);
-  off.load.angle = 5.0;  // not a hinge of the 40-link chain
+  off.loads.points = {{5.0, {0.0, 0.0}}};  // not a hinge of the 40-link chain
   EXPECT_THROW(lumped::solve_static(held_ring(), ring::LumpedOptions{}, off), std::invalid_argument);
   ring::RingSpec no_roller = held_ring();
   no_roller.supports.roller.reset();

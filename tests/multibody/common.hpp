@@ -41,8 +41,8 @@ inline double loglog_slope(const std::vector<double>& x, const std::vector<doubl
 /// dt = 0.01 s, recorded points 0, 90, 180, 270 deg.
 inline ring::ResponseOptions forced_scene(ring::ResponseOptions::Integrator integrator, double t_end = 5.0) {
   ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-20e3, 0.0};
+  r.loads.points = {{0.0, {0.0, 0.0}}};
+  r.loads.points.at(0).force = {-20e3, 0.0};
   r.dt = 0.01;
   r.t_end = t_end;
   r.integrator = integrator;

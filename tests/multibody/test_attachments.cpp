@@ -203,8 +203,8 @@ TEST(MultibodyAttachments, StaticsOnAFoundationConvergeToTheFourierSeries) {
                           spec.radius * (spec.foundation.radial + spec.foundation.tangential / k2)));
   }
   ring::StaticOptions st;
-  st.load.angle = 0.0;
-  st.load.force = {F, 0.0};
+  st.loads.points = {{0.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {F, 0.0};
   st.steps = 1;
   st.record = {0.0};
   std::vector<double> err;
@@ -225,8 +225,8 @@ TEST(MultibodyAttachments, StaticsWithPinsAndAClampHoldThePinnedPoints) {
   spec.supports.pins = {0.0};
   spec.supports.clamp = 180.0;
   ring::StaticOptions st;
-  st.load.angle = 90.0;
-  st.load.force = {0.0, -2e4};
+  st.loads.points = {{90.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {0.0, -2e4};
   st.steps = 4;
   st.record = {0.0, 90.0, 180.0};
   ring::MultibodyOptions o;

@@ -30,9 +30,9 @@ using Integrator = ring::ResponseOptions::Integrator;
 ring::ResponseOptions paper_scene(double force = 20e3, Integrator integrator = Integrator::newmark,
                                   double dt = 0.01, double t_end = 5.0) {
   ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-force, 0.0};
-  r.load.history.kind = ring::LoadHistory::Kind::step;
+  r.loads.points = {{0.0, {0.0, 0.0}}};
+  r.loads.points.at(0).force = {-force, 0.0};
+  r.history.kind = ring::LoadHistory::Kind::step;
   r.dt = dt;
   r.t_end = t_end;
   r.integrator = integrator;
@@ -62,7 +62,7 @@ std::vector<double> modal_response(double w, double f, const std::vector<double>
                                    const ring::ResponseOptions& r, bool discrete) {
   std::vector<double> x(t.size());
   if (!discrete) {
-    EXPECT_EQ(r.load.history.kind, ring::LoadHistory::Kind::step);
+    EXPECT_EQ(r.history.kind, ring::LoadHistory::Kind::step);
     for (size_t i = 0; i < t.size(); ++i) x[i] = f * (1.0 - std::cos(w * t[i])) / (w * w);
     return x;
   }
@@ -73,7 +73,7 @@ std::vector<double> modal_response(double w, double f, const std::vector<double>
     gamma = 0.5 + af - am;
     beta = 0.25 * (gamma + 0.5) * (gamma + 0.5);
   }
-  const ring::LoadHistory& g = r.load.history;
+  const ring::LoadHistory& g = r.history;
   double xn = 0.0, vn = 0.0, qdd = f * g.factor(0.0), a = qdd;
   if (t.size() > 1) {
     // Both integrators start from the acceleration filtered by the first step's Newton
@@ -109,12 +109,12 @@ struct Linear {
 Linear modal_superposition(const ring::RingSpec& spec, int n, const ring::ResponseOptions& r,
                            const std::vector<double>& t, bool discrete) {
   const ring::MultibodyOptions o = n_segments(n);
-  const multibody::Chain chain(spec, o, r.load.angle);
+  const multibody::Chain chain(spec, o, r.loads.points.at(0).angle);
   const int modes = chain.dofs() - chain.constraint_count();
   const multibody::ModalSolution sol = multibody::solve_modes(spec, o, modes);
   const multibody::Vector q0 = chain.q0();
   const multibody::Vector phi = chain.point_load_forces(
-      q0, chain.hinge_at(r.load.angle), Eigen::Vector2d(r.load.force[0], r.load.force[1]));
+      q0, chain.hinge_at(r.loads.points.at(0).angle), Eigen::Vector2d(r.loads.points.at(0).force[0], r.loads.points.at(0).force[1]));
   Linear lin;
   for (double a : r.record) {
     const multibody::Matrix J = chain.hinge_jacobian(q0, chain.hinge_at(a));
@@ -197,10 +197,10 @@ TEST_P(MultibodyDynamicsSmallLoad, HistoriesAndObliqueLoadsFollowTheModes) {
   using Kind = ring::LoadHistory::Kind;
   for (Kind kind : {Kind::ramp, Kind::half_sine, Kind::harmonic}) {
     ring::ResponseOptions r = paper_scene(20.0, GetParam(), 0.005, 3.0);
-    r.load.angle = 45.0;  // a hinge of the 40-gon anchored at 180 deg
-    r.load.force = {-14.0, 14.0};
-    r.load.history.kind = kind;
-    r.load.history.period = 0.7;
+    r.loads.points = {{45.0, {0.0, 0.0}}};  // a hinge of the 40-gon anchored at 180 deg
+    r.loads.points.at(0).force = {-14.0, 14.0};
+    r.history.kind = kind;
+    r.history.period = 0.7;
     const ring::TimeHistory th = multibody::respond(spec, n_segments(40), r);
     const Linear same = modal_superposition(spec, 40, r, th.t, true);
     for (int p : {0, 1, 3}) {
@@ -242,7 +242,7 @@ std::vector<double> successive_differences(Integrator integrator, double t_end,
   std::vector<ring::TimeHistory> runs;
   for (double dt : dts) {
     ring::ResponseOptions r = paper_scene(20e3, integrator, dt, t_end);
-    r.load.history = history;
+    r.history = history;
     runs.push_back(multibody::respond(spec, n_segments(n), r));
   }
   std::vector<double> d;
@@ -374,7 +374,7 @@ TEST(MultibodyDynamics, DampedResponseSettlesOnTheStaticEquilibrium) {
   r.hinge_damping = 1e4;
   const ring::TimeHistory th = multibody::respond(spec, n_segments(40), r);
   ring::StaticOptions st;
-  st.load = r.load;
+  st.loads = r.loads;
   st.record = r.record;
   const ring::StaticResult eq = multibody::solve_static(spec, n_segments(40), st);
   for (size_t p = 0; p < r.record.size(); ++p) {

@@ -250,7 +250,7 @@ TEST(MultibodySparseDynamics, DampedSceneAgrees) {
 TEST(MultibodySparseDynamics, SelfContactReportedOnBothPaths) {
   for (int n : {40, 160}) {
     ring::ResponseOptions r = paper_scene(Integrator::newmark, 5.0);
-    r.load.force = {-150e3, 0.0};
+    r.loads.points.at(0).force = {-150e3, 0.0};
     double t_dense = -1, t_sparse = -2;
     try {
       multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::dense), r);

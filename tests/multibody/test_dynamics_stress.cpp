@@ -20,8 +20,8 @@ using Integrator = ring::ResponseOptions::Integrator;
 
 ring::ResponseOptions paper_scene(double force, Integrator integrator, double dt, double t_end) {
   ring::ResponseOptions r;
-  r.load.angle = 0.0;
-  r.load.force = {-force, 0.0};
+  r.loads.points = {{0.0, {0.0, 0.0}}};
+  r.loads.points.at(0).force = {-force, 0.0};
   r.dt = dt;
   r.t_end = t_end;
   r.integrator = integrator;

@@ -76,8 +76,8 @@ TEST(MultibodyEnergyMomentum, IsSecondOrderInDt) {
     ring::ResponseOptions r = mbtest::forced_scene(Integrator::energy_momentum, 0.3);
     r.dt = dt;
     r.record = {0.0};
-    r.load.history.kind = ring::LoadHistory::Kind::half_sine;
-    r.load.history.period = 1.0;
+    r.history.kind = ring::LoadHistory::Kind::half_sine;
+    r.history.period = 1.0;
     return multibody::respond(ringtest::pin_roller_ring(), o, r).ux[0].back();
   };
   const double u1 = at(0.005), u2 = at(0.0025), u3 = at(0.00125), u4 = at(0.000625);

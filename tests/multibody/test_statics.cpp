@@ -35,8 +35,8 @@ struct Diametral {
 ring::StaticOptions diametral_load(double p, int steps = 20) {
   const ring::RingSpec spec = pin_roller_ring();
   ring::StaticOptions st;
-  st.load.angle = 0.0;
-  st.load.force = {-p * spec.EI() / (spec.radius * spec.radius), 0.0};
+  st.loads.points = {{0.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {-p * spec.EI() / (spec.radius * spec.radius), 0.0};
   st.steps = steps;
   st.record = {0.0, 90.0, 180.0, 270.0};
   return st;
@@ -47,9 +47,9 @@ ring::StaticOptions diametral_load(double p, int steps = 20) {
 ring::StaticOptions pressed_crown(double p, int steps) {
   const ring::RingSpec spec = pin_roller_ring();
   ring::StaticOptions st;
-  st.load.angle = 90.0;
+  st.loads.points = {{90.0, {0.0, 0.0}}};
   st.record = {90.0};
-  st.load.force = {0.0, -p * spec.EI() / (spec.radius * spec.radius)};
+  st.loads.points.at(0).force = {0.0, -p * spec.EI() / (spec.radius * spec.radius)};
   st.steps = steps;
   return st;
 }
@@ -138,8 +138,8 @@ TEST(MultibodyStatics, DeformedShapeIsSymmetricAboutTheLoadLine) {
   ring::MultibodyOptions o;
   o.n = 40;
   ring::StaticOptions st;
-  st.load.angle = 0.0;
-  st.load.force = {-20e3, 0.0};
+  st.loads.points = {{0.0, {0.0, 0.0}}};
+  st.loads.points.at(0).force = {-20e3, 0.0};
   st.record = {0.0, 90.0, 180.0, 270.0};
   const auto r = multibody::solve_static(spec, o, st);
   // Round-off of a Newton solution converged to 1e-12 rad on a 10 m ring: 1e-9 m.
@@ -157,13 +157,13 @@ TEST(MultibodyStatics, RejectsInputsThatCannotWork) {
   ring::RingSpec spec = pin_roller_ring();
   ring::MultibodyOptions o;
   ring::StaticOptions st;
-  st.load.force = {-1e3, 0.0};
+  st.loads.points = {{0.0, {-1e3, 0.0}}};
   st.steps = 0;
   EXPECT_THROW(multibody::solve_static(spec, o, st), std::invalid_argument);
   st.steps = 5;
-  st.load.angle = 4.0;  // not a hinge of the 40-gon anchored at 180 deg
+  st.loads.points = {{4.0, {-1e3, 0.0}}};  // not a hinge of the 40-gon anchored at 180 deg
   EXPECT_THROW(multibody::solve_static(spec, o, st), std::invalid_argument);
-  st.load.angle = 0.0;
+  st.loads.points = {{0.0, {-1e3, 0.0}}};
   spec.supports.roller.reset();
   EXPECT_THROW(multibody::solve_static(spec, o, st), std::invalid_argument);
 }
@@ -173,9 +173,9 @@ TEST(MultibodyStatics, SelfContactIsReportedNotSolvedThrough) {
   const ring::RingSpec spec = pin_roller_ring();
   ring::MultibodyOptions o;
   ring::StaticOptions st;
-  st.load.angle = 0.0;
+  st.loads.points = {{0.0, {0.0, 0.0}}};
   // p = 40: the elastica's C would pass through A (shortening > 2R) long before this.
-  st.load.force = {-40.0 * spec.EI() / (spec.radius * spec.radius), 0.0};
+  st.loads.points.at(0).force = {-40.0 * spec.EI() / (spec.radius * spec.radius), 0.0};
   st.steps = 40;
   try {
     multibody::solve_static(spec, o, st);

@@ -179,14 +179,14 @@ TEST(TimeStepping, TheEnergyGuardCatchesAGainAndPassesTheConservingRule) {
   const ring::RingSpec spec = ringtest::pinned_ring();
   {
     Oscillator o(2.0, 3.0);
-    ring::EnergyGuard guard(spec, 40, {3.0, 0.0});
+    ring::EnergyGuard guard(spec, 40, 3.0);
     paths::Grid g = grid(0.05, 10.0);
     g.guard = &guard;
     EXPECT_NO_THROW(paths::integrate(o, g, {90.0}));
   }
   Oscillator o(2.0, 3.0);
   o.gain = 1.01;  // 1 % more velocity every step: energy from nowhere
-  ring::EnergyGuard guard(spec, 40, {3.0, 0.0});
+  ring::EnergyGuard guard(spec, 40, 3.0);
   paths::Grid g = grid(0.05, 10.0);
   g.guard = &guard;
   try {

@@ -35,7 +35,7 @@ double documented_bound(const ring::RingSpec& s, int n, double F, double h, long
 }
 
 EnergyGuard after_steps(const ring::RingSpec& s, int n, double F, double h, long k) {
-  EnergyGuard g(s, n, {-F, 0.0});
+  EnergyGuard g(s, n, F);
   g.start(0.0, 0.0, 0.0);
   for (long i = 0; i < k; ++i) g.step(h, 1.0);
   return g;
@@ -93,7 +93,7 @@ TEST(EnergyGuard, ARunAtRoundOffPassesAndTheBoundIsNeverZero) {
 
 TEST(EnergyGuard, TheStartsOwnRoundingIsNotAGain) {
   const ring::RingSpec s = paper();
-  EnergyGuard g(s, 40, {-2e4, 0.0});
+  EnergyGuard g(s, 40, 2e4);
   g.start(0.0, 1e3, 0.0);  // a made-up rest strain, to see that it is subtracted
   g.step(0.01, 1.0);
   const EnergyGuard::Verdict v = g.check(0.0, 1e3, 0.0);
@@ -124,7 +124,7 @@ TEST(EnergyGuard, TheBoundIsTheDocumentedFormula) {
 TEST(EnergyGuard, TheWorksRoundingGrowsWithTheLoadFactorsVariation) {
   const ring::RingSpec s = paper();
   // f = 0, 1, 0, 1: max |f| = 1, variation 3: |F| dx (2 + 3) instead of |F| dx 2.
-  EnergyGuard g(s, 40, {-2e4, 0.0});
+  EnergyGuard g(s, 40, 2e4);
   g.start(0.0, 0.0, 0.0);
   for (double f : {0.0, 1.0, 0.0, 1.0}) g.step(0.01, f);
   EnergyGuard c = after_steps(s, 40, 2e4, 0.01, 4);
