@@ -80,6 +80,7 @@ void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  ring::refuse_timoshenko(spec, "fem");
   need(spec.radius > 0 && std::isfinite(spec.radius), "ring.radius must be > 0");
   need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
   need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");

@@ -14,6 +14,7 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   auto need = [&](bool ok, const std::string& msg) {
     if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
   };
+  ring::refuse_timoshenko(spec, "lumped " + what);
   need(o.variant == ring::LumpedOptions::Variant::chain,
        "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no nonlinear model here; use \"chain\"");
   need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
@@ -27,6 +28,7 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
+  ring::refuse_timoshenko(spec, "lumped");
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
   const double anchor = spec.supports.pin.value_or(0.0);
   std::vector<std::pair<std::string, double>> points;

@@ -9,6 +9,7 @@
 namespace multibody {
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
+  ring::refuse_timoshenko(spec, "multibody");
   const bool sparse = backend(options, Analysis::modes) == Backend::banded;
   // The paper's dependent angles are chosen for its pin and roller; further constraint rows
   // (pins, a clamp) need the robust null-space basis, and the O(n) path assembles none of
@@ -34,6 +35,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   // The O(n) statics (hinge positions) assemble the paper's terms only; "auto" keeps the rest dense.
   if (backend(options, spec, Analysis::statics) == Backend::banded && !spec.paper_terms_only())
     ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
+  ring::refuse_timoshenko(spec, "multibody");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
@@ -47,6 +49,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 }
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::ResponseOptions& response) {
+  ring::refuse_timoshenko(spec, "multibody");
   ring::refuse_terms_beyond_paper(spec, "multibody response");
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))

@@ -1,6 +1,10 @@
 #include "ring/closed_form.hpp"
 
+#include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +31,77 @@ std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k) {
   const double upper = 0.5 * (tr + disc);
   const double lower = upper > 0.0 ? det / upper : 0.0;  // avoids cancellation in (tr - disc)/2
   return {std::sqrt(lower / spec.rhoA()), std::sqrt(upper / spec.rhoA())};
+}
+
+namespace {
+
+/// The roots, ascending, of det(K - x M) for K = sum_p d_p v_p v_p^T (d_p >= 0) and a positive
+/// diagonal M, 3 x 3. The shear branch of a thin Timoshenko ring lies 1e16 above the lowest
+/// (kGA / rho I against EI / rho A R^4), where an eigen-solver's lowest value is pure
+/// round-off; so the characteristic polynomial c0 - c1 x + c2 x^2 - c3 x^3 is formed from
+/// principal minors by Cauchy-Binet (sums of squares times positive weights: no
+/// cancellation), and each root is found in a bracket that the coefficients give
+/// (x1 in [c0/c1, 3 c0/c1] from c1/c0 = sum 1/x_i; x3 in [c2/(3 c3), c2/c3]; x2 from the
+/// product c0/c3), by bisection to the last bit.
+std::array<double, 3> rank_one_pencil_roots(const std::vector<std::pair<double, Eigen::Vector3d>>& terms,
+                                            const Eigen::Vector3d& M) {
+  auto minor2 = [&](int r, int c) {  // principal 2x2 minor on rows/columns {r, c}
+    double m = 0.0;
+    for (std::size_t p = 0; p < terms.size(); ++p)
+      for (std::size_t q = p + 1; q < terms.size(); ++q) {
+        const Eigen::Vector3d &a = terms[p].second, &b = terms[q].second;
+        const double d = a[r] * b[c] - a[c] * b[r];
+        m += terms[p].first * terms[q].first * d * d;
+      }
+    return m;
+  };
+  double c0 = 0.0;
+  for (std::size_t p = 0; p < terms.size(); ++p)
+    for (std::size_t q = p + 1; q < terms.size(); ++q)
+      for (std::size_t r = q + 1; r < terms.size(); ++r) {
+        Eigen::Matrix3d V;
+        V << terms[p].second, terms[q].second, terms[r].second;
+        const double d = V.determinant();
+        c0 += terms[p].first * terms[q].first * terms[r].first * d * d;
+      }
+  Eigen::Vector3d diag = Eigen::Vector3d::Zero();
+  for (const auto& [d, v] : terms) diag += d * v.cwiseProduct(v);
+  const double c1 = M[0] * minor2(1, 2) + M[1] * minor2(0, 2) + M[2] * minor2(0, 1);
+  const double c2 = diag[0] * M[1] * M[2] + diag[1] * M[0] * M[2] + diag[2] * M[0] * M[1];
+  const double c3 = M[0] * M[1] * M[2];
+  auto P = [&](double x) { return c0 - x * (c1 - x * (c2 - x * c3)); };
+  auto bisect = [&](double lo, double hi) {
+    const bool rising = P(lo) < P(hi);
+    for (int it = 0; it < 2000 && lo < hi; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      ((P(mid) < 0.0) == rising ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  if (c0 <= 0.0) {  // a zero root: the quadratic c1 - c2 x + c3 x^2, its roots stably
+    const double disc = std::sqrt(std::max(c2 * c2 - 4.0 * c1 * c3, 0.0));
+    return {0.0, 2.0 * c1 / (c2 + disc), (c2 + disc) / (2.0 * c3)};
+  }
+  const double x1 = bisect(c0 / c1, 3.0 * c0 / c1);
+  const double x3 = bisect(c2 / (3.0 * c3), c2 / c3);
+  return {x1, c0 / (c3 * x1 * x3), x3};
+}
+
+}  // namespace
+
+std::array<double, 3> free_ring_timoshenko(const RingSpec& spec, int k) {
+  if (k < 0) throw std::invalid_argument("free_ring_timoshenko: k must be >= 0, got " + std::to_string(k));
+  if (!(spec.kappa() > 0.0)) throw std::invalid_argument("free_ring_timoshenko: the shear coefficient must be > 0");
+  const double R = spec.radius, kk = k;
+  const std::vector<std::pair<double, Eigen::Vector3d>> K{
+      {spec.EA() / (R * R), Eigen::Vector3d(kk, 1.0, 0.0)},
+      {spec.kGA() / (R * R), Eigen::Vector3d(-1.0, -kk, 1.0)},
+      {spec.EI() * kk * kk / (R * R * R * R), Eigen::Vector3d::UnitZ()},
+      {spec.foundation.tangential, Eigen::Vector3d::UnitX()},
+      {spec.foundation.radial, Eigen::Vector3d::UnitY()}};
+  const auto x = rank_one_pencil_roots(K, Eigen::Vector3d(spec.rhoA(), spec.rhoA(), spec.rhoI() / (R * R)));
+  return {std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2])};
 }
 
 double ring_on_foundation_inextensional(const RingSpec& spec, int k) {

@@ -28,6 +28,23 @@ double free_ring_inextensional(const RingSpec& spec, int k);
 /// breathing}; without one the values are the free ring's.
 std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k);
 
+/// The free Timoshenko ring (shear deformation and cross-section rotary inertia) with axial
+/// strain, k waves (k >= 0): the three branches, ascending, in rad/s. Fields u (tangential),
+/// w (radial), psi (rotation of the cross-section), on the thin-ring kinematics of
+/// free_ring_extensible: strain eps = (u' + w)/R, tangent rotation phi = (u - w')/R, shear
+/// strain gamma = psi - phi, change of curvature kappa = psi'/R; energy per length
+/// EA/2 eps^2 + kGA/2 gamma^2 + EI/2 kappa^2 (+ the foundation's), kinetic
+/// rho A/2 (u'^2 + w'^2) + rho I/2 psi'^2 (dots). On u = U sin k theta, w = W cos k theta,
+/// R psi = P sin k theta, with a = (k, 1, 0), b = (-1, -k, 1):
+/// \f$ K = \frac{1}{R^2}\left(EA\,a a^T + \kappa G A\,b b^T + \frac{EI k^2}{R^2} e_3 e_3^T\right)
+///      + \mathrm{diag}(k_t, k_r, 0),\quad M = \mathrm{diag}(\rho A, \rho A, \rho I/R^2) \f$
+/// (the in-plane Timoshenko ring of Seidel & Erdelyi, J. Eng. Ind. 86, 1964, and Kirkhope,
+/// J. Sound Vib. 50, 1976, in its thin-ring form: no 1 + z/R through the depth). As kGA -> inf
+/// and rho I -> 0 the lower two are free_ring_extensible's; the third is the shear branch.
+/// k = 0: {0 (rotation; k_t without a foundation), breathing sqrt(EA/(rho A R^2)) (w alone),
+/// shear-rotation}; k = 1 holds the rigid translation (0). Needs spec.kappa() > 0.
+std::array<double, 3> free_ring_timoshenko(const RingSpec& spec, int k);
+
 /// The free, inextensible thin ring on a Winkler foundation (spec.foundation: radial k_r,
 /// tangential k_t, N/m^2), Euler-Bernoulli, no rotary inertia, k waves (k >= 0):
 /// \f$ \omega_k^2 = \frac{EI\,k^2(k^2-1)^2/R^4 + k_r k^2 + k_t}{\rho A\,(k^2+1)} \f$.

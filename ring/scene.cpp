@@ -406,11 +406,23 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   // [ring]
   const toml::table* rt = r.table(root, "", "ring");
   if (!rt) r.fail("ring", &root, "missing: the [ring] section (radius, E, rho, section)");
-  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section"});
+  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient"});
   s.ring.radius = r.number(*rt, "ring", "radius", 10.0, 0.0, HUGE_VAL, true);
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
   s.ring.section = read_section(r, *rt);
+  s.ring.theory = r.choice(*rt, "ring", "theory", "euler-bernoulli", {"euler-bernoulli", "timoshenko"}) == "timoshenko"
+                      ? Theory::timoshenko : Theory::euler_bernoulli;
+  s.ring.nu = r.number(*rt, "ring", "nu", 0.3, -1.0, 0.5);
+  if (s.ring.nu <= -1.0 || s.ring.nu >= 0.5)
+    r.fail("ring.nu", rt->get("nu"), "Poisson's ratio must lie in (-1, 0.5), got " + fmt_num(s.ring.nu));
+  s.ring.shear_coefficient = r.number(*rt, "ring", "shear_coefficient", 0.0, 0.0, HUGE_VAL);
+  if (rt->contains("shear_coefficient") && !(s.ring.shear_coefficient > 0.0))
+    r.fail("ring.shear_coefficient", rt->get("shear_coefficient"), "must be > 0 (omit it for Cowper's value)");
+  if (s.ring.theory == Theory::timoshenko && !(s.ring.kappa() > 0.0))
+    r.fail("ring.shear_coefficient", rt,
+           "missing: a section given by {area, inertia} has no shape, so the Timoshenko theory needs its shear "
+           "coefficient (Cowper's values: 10 (1 + nu)/(12 + 11 nu) for a rectangle, 6 (1 + nu)/(7 + 6 nu) for a circle)");
   // Sizes that are positive but whose area or second moment under- or overflows a double
   // (a diameter of 1e-300 m gives A = 0) leave nothing to compute with.
   const double area = s.ring.section.area(), inertia = s.ring.section.inertia();
@@ -423,9 +435,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     r.fail("ring.section", rt->get("section"),
            "section depth " + fmt_num(s.ring.section.depth()) + " m is not small against the radius " +
                fmt_num(s.ring.radius) + " m (a ring needs depth/radius < 1)");
-  if (depth_ratio > 0.1)
+  if (depth_ratio > 0.1 && s.ring.theory == Theory::euler_bernoulli)
     s.warnings.push_back("ring.section: depth/radius = " + fmt_num(depth_ratio) +
-                         " > 0.1 stretches the thin-ring (Euler-Bernoulli) assumption");
+                         " > 0.1 stretches the thin-ring (Euler-Bernoulli) assumption (ring.theory = \"timoshenko\" has shear)");
 
   read_supports(r, root, s.ring);
   read_attachments(r, root, s.ring);

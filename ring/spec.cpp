@@ -100,6 +100,12 @@ int RingSpec::rigid_modes() const {
   return 3 - static_cast<int>(lu.rank());
 }
 
+void refuse_timoshenko(const RingSpec& spec, const std::string& who) {
+  if (spec.theory == Theory::timoshenko)
+    throw std::invalid_argument(who + " has no Timoshenko model yet (ring.theory = \"timoshenko\"; see the README, "
+                                      "\"Thick rings\", for what each solver takes)");
+}
+
 void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
   const std::vector<std::string> keys = spec.terms_beyond_paper();
   if (keys.empty()) return;

@@ -180,6 +180,10 @@ struct RingSpec {
   std::vector<std::string> terms_beyond_paper() const;
 };
 
+/// Throws std::invalid_argument "`who` has no Timoshenko model yet (ring.theory)" for a
+/// Timoshenko ring, for a solver or analysis that has only the Euler-Bernoulli theory.
+void refuse_timoshenko(const RingSpec& spec, const std::string& who);
+
 /// Throws std::invalid_argument "`who` does not take KEYS yet" when `spec` has terms beyond
 /// the paper's ring (RingSpec::terms_beyond_paper), for an analysis that lacks them.
 void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);

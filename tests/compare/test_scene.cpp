@@ -202,6 +202,67 @@ TEST(SceneReject, LoadNotOnANode) {
   expect_rejected(kRollered + "[static]\nat = 5.0\nforce = [-1.0, 0.0]\n", "static.at", "not a node");
 }
 TEST(SceneReject, LoadAtThePin) { expect_rejected(kRollered + "[static]\nat = 180.0\nforce = [-1.0, 0.0]\n", "static.at", "at the pin"); }
+// Loads beyond one point load (README, "[static] and [response]").
+TEST(SceneLoads, ListPressureAndGravity) {
+  const ring::Scene s = cmp::parse_scene(kRollered +
+                                             "[static]\nloads = [{at = 90.0, force = [0.0, -1.0]}, {at = 270.0, force = [0.0, 1.0]}]\n"
+                                             "pressure = {value = 5.0, kind = \"central\"}\ngravity = [0.0, -9.81]\n",
+                                         "p.toml", {});
+  ASSERT_TRUE(s.statics);
+  ASSERT_EQ(s.statics->loads.points.size(), 2u);
+  EXPECT_EQ(s.statics->loads.points[1].angle, 270.0);
+  EXPECT_EQ(s.statics->loads.points[1].force[1], 1.0);
+  EXPECT_EQ(s.statics->loads.pressure.value, 5.0);
+  EXPECT_EQ(s.statics->loads.pressure.kind, ring::Pressure::Kind::central);
+  EXPECT_EQ(s.statics->loads.gravity[1], -9.81);
+  const ring::Scene f = cmp::parse_scene(kRollered + "[static]\npressure = {value = 5.0}\n", "p.toml", {});
+  EXPECT_EQ(f.statics->loads.pressure.kind, ring::Pressure::Kind::follower);  // the default kind
+  EXPECT_TRUE(f.statics->loads.points.empty());
+}
+TEST(SceneReject, NoLoadAtAll) { expect_rejected(kRollered + "[static]\nsteps = 4\n", "static", "has no load"); }
+TEST(SceneReject, ShorthandAndListTogether) {
+  expect_rejected(kRollered + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\nloads = [{at = 90.0, force = [0.0, 1.0]}]\n",
+                  "static.loads", "not both");
+}
+TEST(SceneReject, SecondLoadAtThePin) {
+  expect_rejected(kRollered + "[static]\nloads = [{at = 0.0, force = [1.0, 0.0]}, {at = 180.0, force = [1.0, 0.0]}]\n",
+                  "static.loads[2].at", "at the pin");
+}
+TEST(SceneReject, TwoLoadsAtOnePoint) {
+  expect_rejected(kRollered + "[static]\nloads = [{at = 90.0, force = [1.0, 0.0]}, {at = 90.0, force = [0.0, 1.0]}]\n",
+                  "static.loads[2].at", "add the forces");
+}
+TEST(SceneReject, PressureKindMisspelt) {
+  expect_rejected(kRollered + "[static]\npressure = {value = 1.0, kind = \"hydro\"}\n", "static.pressure.kind", "follower");
+}
+TEST(SceneReject, PressureWithoutValue) {
+  expect_rejected(kRollered + "[static]\npressure = {kind = \"dead\"}\n", "static.pressure.value", "missing");
+}
+TEST(SceneReject, NonFinitePressureAndGravity) {
+  expect_rejected(kRollered + "[static]\npressure = {value = nan}\n", "static.pressure.value");
+  expect_rejected(kRollered + "[static]\ngravity = [0.0, inf]\n", "static.gravity");
+}
+TEST(SceneReject, GravityOnAFreeRing) {
+  expect_rejected(replace(kPaper, "pin = 180.0", "") + "[response]\ngravity = [0.0, -9.81]\n", "supports.pin");
+}
+// The Timoshenko vocabulary (README, "[ring]").
+TEST(SceneTheory, TimoshenkoWithCowpersCoefficient) {
+  const ring::Scene s = cmp::parse_scene(replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\ntheory = \"timoshenko\"\nnu = 0.25"),
+                                         "p.toml", {});
+  EXPECT_EQ(s.ring.theory, ring::Theory::timoshenko);
+  EXPECT_EQ(s.ring.nu, 0.25);
+  EXPECT_DOUBLE_EQ(s.ring.kappa(), 6.0 * 1.25 / (7.0 + 6.0 * 0.25));  // Cowper (1966), circle
+}
+TEST(SceneReject, TimoshenkoGeneralSectionNeedsShearCoefficient) {
+  const std::string general = replace(kPaper, "section = { shape = \"circle\", diameter = 0.12 }",
+                                      "section = { area = 0.01, inertia = 1e-5 }\ntheory = \"timoshenko\"");
+  expect_rejected(general, "ring.shear_coefficient", "Cowper");
+  EXPECT_NO_THROW(cmp::parse_scene(general, "p.toml", {"ring.shear_coefficient=0.85"}));
+}
+TEST(SceneReject, PoissonOutOfRange) {
+  expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\nnu = 0.5"), "ring.nu", "(-1, 0.5)");
+  expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\ntheory = \"thick\""), "ring.theory", "timoshenko");
+}
 TEST(SceneReject, ForceWithThreeComponents) {
   expect_rejected(kRollered + "[static]\nat = 0.0\nforce = [-1.0, 0.0, 2.0]\n", "static.force", "2 numbers");
 }

@@ -81,4 +81,59 @@ TEST(ClosedForm, SectionProperties) {
   EXPECT_TRUE(ringtest::IsClose(r.depth(), 0.1, 1e-15));
 }
 
+// A thick ring (R = 0.1 m, rectangle 10 x 30 mm: depth/R = 0.3; steel, nu = 0.3, Cowper's
+// kappa = 10 (1 + nu) / (12 + 11 nu)). Oracle: the roots of det(K - omega^2 M) = 0, the cubic's
+// coefficients found in exact rational arithmetic and its roots by bisection (Python 3.11,
+// fractions module, written from the formulas of the header's sources without this code).
+// The roots are exact to ~1e-15; 1e-10 leaves room for Eigen's 3x3 solver.
+TEST(ClosedForm, TimoshenkoRingThreeBranches) {
+  ring::RingSpec s;
+  s.radius = 0.1;
+  s.E = 2.1e11;
+  s.rho = 7800.0;
+  s.theory = ring::Theory::timoshenko;
+  s.section.shape = ring::Section::Shape::rectangle;
+  s.section.width = 0.01;
+  s.section.height = 0.03;
+  const std::array<std::array<double, 3>, 4> expected{{{0.0, 51887.45216627708, 343790.2283848359},
+                                                       {11376.315950526368, 115746.25830856196, 363889.03521150677},
+                                                       {80826.97464043487, 264430.172557793, 448373.8120479953},
+                                                       {233742.66320199886, 521386.8470765358, 648729.2207808223}}};
+  const std::array<int, 4> ks{0, 2, 5, 10};
+  for (std::size_t i = 0; i < ks.size(); ++i) {
+    const auto w = ring::closed_form::free_ring_timoshenko(s, ks[i]);
+    for (int j = 0; j < 3; ++j) {
+      if (expected[i][j] == 0.0) EXPECT_EQ(w[j], 0.0) << "k = " << ks[i];
+      else EXPECT_TRUE(ringtest::IsClose(w[j], expected[i][j], 1e-10)) << "k = " << ks[i] << ", branch " << j;
+    }
+  }
+  // k = 0: the breathing mode is w alone, sqrt(E/rho)/R exactly.
+  EXPECT_TRUE(ringtest::IsClose(ring::closed_form::free_ring_timoshenko(s, 0)[1], std::sqrt(s.E / s.rho) / s.radius, 1e-13));
+  EXPECT_EQ(ring::closed_form::free_ring_timoshenko(s, 1)[0], 0.0);  // the rigid translation
+}
+
+// The thin limit: with shear stiffness and rotary inertia of a thin ring (depth/R = 1e-3) the
+// lower two branches approach the Euler-Bernoulli extensible ring's; shear and rotary inertia
+// change omega by O((k depth/R)^2) relative (Kirkhope 1976), so 10 (k d/R)^2 bounds the difference.
+TEST(ClosedForm, TimoshenkoRingThinLimitIsEulerBernoulli) {
+  ring::RingSpec s;
+  s.radius = 1.0;
+  s.section.shape = ring::Section::Shape::rectangle;
+  s.section.width = 0.001;
+  s.section.height = 0.001;
+  for (int k : {2, 3, 5, 10}) {
+    const auto t = ring::closed_form::free_ring_timoshenko(s, k);
+    const auto e = ring::closed_form::free_ring_extensible(s, k);
+    const double bound = 10.0 * std::pow(k * s.section.height / s.radius, 2);
+    EXPECT_TRUE(ringtest::IsClose(t[0], e[0], bound)) << "k = " << k;
+    EXPECT_TRUE(ringtest::IsClose(t[1], e[1], bound)) << "k = " << k;
+    EXPECT_LT(t[0], e[0]) << "shear and rotary inertia only lower a frequency (Rayleigh), k = " << k;
+  }
+  s.shear_coefficient = 0.0;
+  s.section.shape = ring::Section::Shape::general;  // no shape, no Cowper: refused
+  s.section.area_ = 1e-6;
+  s.section.inertia_ = 1e-13;
+  EXPECT_THROW(ring::closed_form::free_ring_timoshenko(s, 2), std::invalid_argument);
+}
+
 }  // namespace
