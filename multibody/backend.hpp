@@ -49,6 +49,16 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
   return backend(options, analysis);
 }
 
+/// The backend of a nonlinear analysis under `loads`: "auto" also stays dense for loads
+/// beyond one point load (several, pressure, gravity), which only the dense paths assemble
+/// (loading.hpp). O(1).
+inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, const ring::Loads& loads,
+                       Analysis analysis) {
+  if (options.method == ring::MultibodyOptions::Method::automatic && !loads.beyond_one_point("").empty())
+    return Backend::dense;
+  return backend(options, spec, analysis);
+}
+
 /// The modes' backend for `count` modes of `spec`: "auto" also stays dense when the pairs
 /// computed, min(r, count + rigid modes + 2), exceed a third of the r = n [+ 2 free] - c
 /// unknowns, and when the spec has terms beyond the paper's (supports.pins, clamp,

@@ -33,16 +33,19 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
   // The O(n) statics (hinge positions) assemble the paper's terms only; "auto" keeps the rest dense.
-  if (backend(options, spec, Analysis::statics) == Backend::banded && !spec.paper_terms_only())
+  if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
     ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
+    ring::one_point_load(statics.loads, "static", "multibody method = \"sparse\" (the O(n) statics)");
+  }
   ring::refuse_timoshenko(spec, "multibody");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
   // that, so refuse rather than guess.
-  if (!spec.supports.pin && spec.rigid_modes() > 0)
+  const int rigid = ring::static_rigid_modes(spec, statics.loads);
+  if (!spec.supports.pin && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
-  if (spec.rigid_modes() > 0)
+  if (rigid > 0)
     throw std::invalid_argument(
         "multibody::solve_static: needs a roller as well as a pin (supports.roller), "
         "otherwise the ring is free to turn about the pin");

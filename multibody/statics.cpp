@@ -11,6 +11,7 @@
 
 #include "multibody/attachments.hpp"
 #include "multibody/chain.hpp"
+#include "multibody/loading.hpp"
 #include "multibody/natural.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
@@ -38,9 +39,9 @@ namespace {
 /// multipliers scaled by sc = K / l (G on the scale of the springs), by dense LU: O(n^3).
 class AngleStatics : public detail::StaticEquilibrium {
  public:
-  AngleStatics(const Chain& chain, const ring::RingSpec& spec, const detail::DeadLoad& load, double depth)
+  AngleStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
       : StaticEquilibrium(chain, depth),
-        load_(load),
+        loads_(chain, spec, loads, "static"),
         terms_(chain, spec),
         K_(chain.stiffness_matrix()),
         n_(chain.dofs()),
@@ -51,17 +52,17 @@ class AngleStatics : public detail::StaticEquilibrium {
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
     const Vector q = x.z.head(n_), lambda = x.z.tail(c_);
     const Chain::ConstraintKinematics ck = constraints(q);
-    Vector phi, dphi;
-    detail::load_forces(chain_, load_, q, phi, &dphi);
+    const Vector phi = loads_.forces(q);
     Vector forces = chain_.spring_forces(q);
     Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
     A.topLeftCorner(n_, n_) = K_;
     Eigen::Ref<Matrix> stiffness = A.topLeftCorner(n_, n_);
     terms_.add_stiffness(q, forces, &stiffness);
+    loads_.add_stiffness(q, x.s, stiffness);
     r.resize(n_ + c_);
     r << forces + ck.G.transpose() * lambda - x.s * phi, ck.g;
     if (!r.allFinite()) return false;
-    A.diagonal().head(n_) += ck.hess.transpose() * lambda - x.s * dphi;
+    A.diagonal().head(n_) += ck.hess.transpose() * lambda;
     A.block(0, n_, n_, c_) = sc_ * ck.G.transpose();
     A.block(n_, 0, c_, n_) = sc_ * ck.G;
     A.col(n_ + c_).head(n_) = -phi;
@@ -102,7 +103,7 @@ class AngleStatics : public detail::StaticEquilibrium {
     return ck;
   }
 
-  const detail::DeadLoad load_;
+  const detail::Loading loads_;  ///< point loads, pressure, gravity
   const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
   const Matrix K_;  ///< the dense path's n x n stiffness, built only here
   const Eigen::Index n_, c_;
@@ -115,15 +116,15 @@ class AngleStatics : public detail::StaticEquilibrium {
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics) {
   check_static(spec, options, statics);
-  const ring::PointLoad& load = ring::one_point_load(statics.loads, "static", "multibody");
-  const Chain ch(spec, options, load.angle);
+  const std::optional<double> anchor =
+      statics.loads.points.empty() ? std::nullopt : std::optional<double>(statics.loads.points.front().angle);
+  const Chain ch(spec, options, anchor);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
-  if (backend(options, spec, Analysis::statics) == Backend::banded)
+  if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
     eq = natural::static_equilibrium(ch, statics, depth);
   else
-    eq = std::make_unique<AngleStatics>(
-        ch, spec, detail::DeadLoad{ch.hinge_at(load.angle), {load.force[0], load.force[1]}}, depth);
+    eq = std::make_unique<AngleStatics>(ch, spec, statics.loads, depth);
   const paths::Continuation policy{statics.steps};
   const paths::Trace path = paths::follow(*eq, {eq->rest(), 0.0}, policy);
   if (path.end != paths::Trace::End::reached)

@@ -176,9 +176,12 @@ class Follower {
       const int it = newton_at(trial, &dzds);
       // A step whose end, looked at in the direction of the step, has the load falling
       // has jumped over a limit point onto the path beyond it: like a failed Newton, it
-      // is cut. (A step that moves nothing, under a zero load, jumped nowhere.)
+      // is cut. (A step that moves nothing, under a zero load or a load the model carries
+      // without deforming, as a uniform pressure on an inextensible ring, jumped nowhere:
+      // a change of 1e-10 of the Newton basin is round-off.)
       const Vector change = trial.z - state.z;
-      const bool jumped = it >= 0 && change.head(m_).norm() > 0.0 && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
+      const bool moved = eq_.move(change) > 1e-10;
+      const bool jumped = it >= 0 && moved && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
       if (it < 0 || jumped) {
         step *= 0.5;
         if (step < ds_ / (1 << options_.max_halvings)) return false;

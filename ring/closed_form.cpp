@@ -121,4 +121,56 @@ DiametralDeflection diametral_load(const RingSpec& spec, double P) {
   return {(M_PI / 4.0 - 2.0 / M_PI) * c, (2.0 / M_PI - 0.5) * c};
 }
 
+double pressure_stiffness_factor(Pressure::Kind kind, int n) {
+  if (n < 2) throw std::invalid_argument("pressure_stiffness_factor: n must be >= 2, got " + std::to_string(n));
+  const double m = static_cast<double>(n) * n - 1.0, n2 = static_cast<double>(n) * n;
+  switch (kind) {
+    case Pressure::Kind::follower: return m;
+    case Pressure::Kind::dead: return m * m / n2;
+    case Pressure::Kind::central: return (m * m - 1.0) / n2;
+  }
+  return 0.0;
+}
+
+double critical_pressure(const RingSpec& spec, Pressure::Kind kind, int n) {
+  const double m = static_cast<double>(n) * n - 1.0;
+  return spec.EI() * m * m / (std::pow(spec.radius, 3) * pressure_stiffness_factor(kind, n));
+}
+
+DiametralDeflection diametral_load_under_pressure(const RingSpec& spec, double P, const Pressure& pressure) {
+  constexpr int kLast = 40000;
+  const double R3 = std::pow(spec.radius, 3);
+  std::vector<double> flex(kLast + 1, 0.0);  // 1 / (pi K_n), n >= 1
+  for (int n = 1; n <= kLast; ++n) {
+    const double m = static_cast<double>(n) * n - 1.0;
+    double k = 0.0;
+    if (n == 1) k = pressure.kind == Pressure::Kind::central ? pressure.value : 0.0;
+    else k = spec.EI() * m * m / R3 - pressure.value * pressure_stiffness_factor(pressure.kind, n);
+    if (n > 1 && !(k > 0.0))
+      throw std::invalid_argument("diametral_load_under_pressure: the pressure is not below critical");
+    flex[n] = k > 0.0 ? 1.0 / (M_PI * k) : 0.0;
+  }
+  const bool held = flex[1] > 0.0;  // else the translation is free and the pin takes nothing
+  // Radial displacement at theta of radial forces F_i at theta_i, every harmonic n >= 1.
+  auto w = [&](double theta, const std::vector<std::pair<double, double>>& forces) {
+    double sum = 0.0;
+    for (int n = kLast; n >= 1; --n)  // smallest terms first
+      for (const auto& [at, F] : forces) sum += F * flex[n] * std::cos(n * (theta - at));
+    return sum;
+  };
+  const std::vector<std::pair<double, double>> squeeze{{0.0, -P}, {M_PI, -P}};
+  const double pin = -0.5 * M_PI;
+  const std::vector<std::pair<double, double>> unit_reaction{{pin, 1.0}};
+  const double at_pin = w(pin, unit_reaction);
+  const double V = held ? -w(pin, squeeze) / at_pin : 0.0;
+  std::vector<std::pair<double, double>> all = squeeze;
+  all.emplace_back(pin, V);
+  return {-(w(0.0, all) + w(M_PI, all)), w(0.5 * M_PI, all) + w(-0.5 * M_PI, all)};
+}
+
+HangingDeflection hanging_ring_self_weight(const RingSpec& spec, double g) {
+  const double c = spec.rhoA() * std::abs(g) * std::pow(spec.radius, 4) / spec.EI();
+  return {(M_PI * M_PI - 8.0) / 4.0 * c, (2.0 - M_PI / 2.0) * c};
+}
+
 }  // namespace ring::closed_form

@@ -75,4 +75,47 @@ struct DiametralDeflection {
 };
 DiametralDeflection diametral_load(const RingSpec& spec, double P);
 
+/// Uniform pressure p (positive inward) on a thin inextensible ring, Euler-Bernoulli: the
+/// prebuckling state is the undeformed circle with hoop force -p R. On the inextensional
+/// mode w = W cos n psi, u = -(W/n) sin n psi (n >= 2) the second variation of the total
+/// potential is (pi W^2 / 2) K_n(p), K_n(p) = EI (n^2 - 1)^2 / R^3 - p c_n, with the load's
+/// own second-order potential in c_n (derivation: the enclosed area, the radius |x| and the
+/// mean of w to second order under exact inextensibility, int w dtheta = -int (w' - u)^2
+/// dtheta / 2R):
+///   follower (hydrostatic, p A):              c_n = n^2 - 1
+///   dead (fixed direction and magnitude):     c_n = (n^2 - 1)^2 / n^2
+///   central (toward the centre):              c_n = ((n^2 - 1)^2 - 1) / n^2
+/// The critical pressures p_n = EI (n^2 - 1)^2 / (R^3 c_n) are least at n = 2: 3, 4 and 4.5
+/// EI/R^3 (Levy 1884; Timoshenko & Gere, "Theory of Elastic Stability", 2nd ed., sec. 7.3-7.4;
+/// Brush & Almroth, "Buckling of Bars, Plates and Shells", sec. 4.4).
+double pressure_stiffness_factor(Pressure::Kind kind, int n);
+/// p_n of the formula above for wave number n >= 2, N/m.
+double critical_pressure(const RingSpec& spec, Pressure::Kind kind, int n = 2);
+
+/// diametral_load (two equal and opposite forces P along a diameter) on the ring that also
+/// carries a uniform pressure p below its critical value, linear in P about the pressurized
+/// circle, the ring held by a pin on the diameter across the loads (and a roller opposite).
+/// A radial point force F at theta_0 gives each harmonic n >= 1 the radial amplitude
+/// F / (pi K_n(p)) in cos n (theta - theta_0); the squeeze loads excite the even n >= 2. A
+/// central pressure also resists the translation (n = 1) of the ring against its centre,
+/// K_1 = p (Pi_2 = p pi T^2 / 2; the other kinds have K_1 = 0): the pin's vertical reaction
+/// V then holds the pin where it is, sum_n (V + squeeze terms at the pin) / (pi K_n) = 0, and
+/// deforms the ring through every harmonic n >= 1. Sums to n = 40000 (terms ~ n^-4).
+/// p = 0 (or dead, follower) gives V = 0 and, at p = 0, diametral_load.
+DiametralDeflection diametral_load_under_pressure(const RingSpec& spec, double P, const Pressure& pressure);
+
+/// A thin inextensible ring hanging from a pin under its own weight q = rho A |g| per unit
+/// length, linear (small-load) limit, bending only: the point opposite the pin moves away
+/// from it by (pi^2 - 8)/4 q R^4 / EI, and the diameter across shrinks by (2 - pi/2) q R^4 /
+/// EI. Derivation: gravity is the n = 1 harmonic; the pin's reaction 2 pi R q has every
+/// harmonic, each even n >= 2 giving W_n = 2 q R^4 / (EI (n^2 - 1)^2); the sums are
+/// sum_m 1/(4m^2 - 1)^2 = (pi^2 - 8)/16 and sum_m (-1)^m/(4m^2 - 1)^2 = pi/8 - 1/2. (Roark's
+/// Formulas, 7th ed., Table 9.2 case 15, the ring resting on its base under its own weight:
+/// the same 0.4674 and 0.4292.)
+struct HangingDeflection {
+  double sag = 0.0;     ///< m, the lowest point moves away from the pin
+  double across = 0.0;  ///< m, shortening of the horizontal diameter (positive)
+};
+HangingDeflection hanging_ring_self_weight(const RingSpec& spec, double g);
+
 }  // namespace ring::closed_form

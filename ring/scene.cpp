@@ -564,16 +564,17 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
     r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record"});
-    // A dead load has an equilibrium only when nothing is left to move rigidly.
-    if (const int rigid = s.ring.rigid_modes(); rigid > 0)
-      r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
-             s.ring.supports.pin
-                 ? "a static analysis needs a roller as well as the pin (or a second pin, a clamp, springs or a "
-                   "foundation): without it the ring can turn about the pin"
-                 : "a static analysis needs a pin (or springs or a foundation that hold the ring): the ring is free (" +
-                       std::to_string(rigid) + " rigid modes)");
     StaticOptions o;
     o.loads = read_loads(r, *t, sec);
+    // A dead load has an equilibrium only when nothing is left to move rigidly (gravity may
+    // hold the rotation of a ring that hangs from its pin).
+    if (const int rigid = static_rigid_modes(s.ring, o.loads); rigid > 0)
+      r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
+             s.ring.supports.pin
+                 ? "a static analysis needs a roller as well as the pin (or a second pin, a clamp, springs, a "
+                   "foundation, or gravity from which the ring hangs): without it the ring can turn about the pin"
+                 : "a static analysis needs a pin (or springs or a foundation that hold the ring): the ring is free (" +
+                       std::to_string(rigid) + " rigid modes)");
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
     o.record = read_record(r, *t, sec);
     s.statics = o;

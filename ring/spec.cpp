@@ -127,6 +127,15 @@ const PointLoad& one_point_load(const Loads& loads, const std::string& section, 
   return loads.points.front();
 }
 
+int static_rigid_modes(const RingSpec& spec, const Loads& loads) {
+  const int rigid = spec.rigid_modes();
+  if (rigid != 1 || !spec.supports.pin || !loads.has_gravity()) return rigid;
+  // With a pin, the one motion left is the rotation about it.
+  const double a = *spec.supports.pin * M_PI / 180.0;
+  const double below = -(loads.gravity[0] * std::cos(a) + loads.gravity[1] * std::sin(a));
+  return below > 0.0 ? 0 : 1;
+}
+
 double load_scale(const RingSpec& spec, const Loads& loads) {
   double f = 0.0;
   for (const auto& p : loads.points) f += std::hypot(p.force[0], p.force[1]);

@@ -193,6 +193,12 @@ void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);
 /// pressure or gravity (Loads::beyond_one_point of `section`), or no point load.
 const PointLoad& one_point_load(const Loads& loads, const std::string& section, const std::string& who);
 
+/// The rigid motions that a static analysis under `loads` leaves free: spec.rigid_modes(),
+/// less the rotation about a single pin when gravity holds it (the ring hangs from the pin:
+/// the centre lies below it, g . (centre - pin) > 0, so turning raises the centre of mass).
+/// A static analysis needs 0.
+int static_rigid_modes(const RingSpec& spec, const Loads& loads);
+
 /// A force scale of the loads at load factor 1, N: the sum of the point loads' magnitudes, of
 /// |pressure| times the circumference and of the weight of the ring and the point masses.
 double load_scale(const RingSpec& spec, const Loads& loads);

@@ -136,4 +136,26 @@ TEST(ClosedForm, TimoshenkoRingThinLimitIsEulerBernoulli) {
   EXPECT_THROW(ring::closed_form::free_ring_timoshenko(s, 2), std::invalid_argument);
 }
 
+// The pressurized ring's series at p = 0 is the diametral closed form (two independent
+// routes: Roark's formula and the Fourier sum of closed_form.cpp), to the sum's truncation.
+// The critical pressures are the classical 3, 4 and 4.5 EI/R^3 (Timoshenko & Gere, sec. 7.4).
+TEST(ClosedForm, PressurizedRingSeries) {
+  const auto s = free_ring();
+  const auto d0 = ring::closed_form::diametral_load(s, 100.0);
+  const auto d = ring::closed_form::diametral_load_under_pressure(s, 100.0, {0.0, ring::Pressure::Kind::follower});
+  EXPECT_TRUE(ringtest::IsClose(d.along, d0.along, 1e-12));
+  EXPECT_TRUE(ringtest::IsClose(d.across, d0.across, 1e-10));
+  const double unit = s.EI() / std::pow(s.radius, 3);
+  EXPECT_DOUBLE_EQ(ring::closed_form::critical_pressure(s, ring::Pressure::Kind::follower) / unit, 3.0);
+  EXPECT_DOUBLE_EQ(ring::closed_form::critical_pressure(s, ring::Pressure::Kind::dead) / unit, 4.0);
+  EXPECT_DOUBLE_EQ(ring::closed_form::critical_pressure(s, ring::Pressure::Kind::central) / unit, 4.5);
+  EXPECT_THROW(ring::closed_form::diametral_load_under_pressure(s, 1.0, {3.01 * unit, ring::Pressure::Kind::follower}),
+               std::invalid_argument);
+  // Roark's coefficients for the hanging (or standing) ring under its own weight.
+  const auto h = ring::closed_form::hanging_ring_self_weight(s, 9.81);
+  const double c = s.rhoA() * 9.81 * std::pow(s.radius, 4) / s.EI();
+  EXPECT_NEAR(h.sag / c, 0.4674, 5e-5);
+  EXPECT_NEAR(h.across / c, 0.4292, 5e-5);
+}
+
 }  // namespace

@@ -1,0 +1,188 @@
+#include "multibody/loading.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace multibody::detail {
+namespace {
+
+Eigen::Vector2d e(double a) { return {std::cos(a), std::sin(a)}; }
+Eigen::Vector2d eprime(double a) { return {-std::sin(a), std::cos(a)}; }
+/// a x b = a^T J b (the z-component of the cross product).
+const Eigen::Matrix2d kCross = (Eigen::Matrix2d() << 0.0, 1.0, -1.0, 0.0).finished();
+/// 4-point Gauss-Legendre on [0, 1]: nodes and weights.
+constexpr std::array<double, 4> kXi{0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263};
+constexpr std::array<double, 4> kW{0.1739274225687269, 0.3260725774312731, 0.3260725774312731, 0.1739274225687269};
+
+}  // namespace
+
+Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section)
+    : chain_(chain), f_(Eigen::Matrix2Xd::Zero(2, chain.n() + 1)), rest_(2, chain.n() + 1) {
+  const int n = chain.n();
+  const double l = chain.l();
+  for (int k = 0; k <= n; ++k) rest_.col(k) = chain.hinge_rest(k % n);
+  auto hinge = [&](double deg, const std::string& key) {
+    if (!ring::on_node(deg, chain.anchor_deg(), n))
+      throw std::invalid_argument("multibody: " + key + " (=" + std::to_string(deg) + " deg) is not a hinge of the " +
+                                  std::to_string(n) + "-segment chain anchored at " +
+                                  std::to_string(chain.anchor_deg()) + " deg");
+    return chain.hinge_at(deg);
+  };
+  for (std::size_t i = 0; i < loads.points.size(); ++i) {
+    const auto& p = loads.points[i];
+    const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    f_.col(hinge(p.angle, key)) += Eigen::Vector2d(p.force[0], p.force[1]);
+  }
+  const Eigen::Vector2d g(loads.gravity[0], loads.gravity[1]);
+  if (loads.has_gravity()) {
+    const Eigen::Vector2d half = 0.5 * spec.rhoA() * l * g;
+    for (int j = 0; j < n; ++j) {
+      f_.col(j) += half;
+      f_.col(j + 1) += half;
+    }
+    for (std::size_t i = 0; i < spec.masses.size(); ++i)
+      f_.col(hinge(spec.masses[i].angle, "masses[" + std::to_string(i + 1) + "].at")) += spec.masses[i].mass * g;
+  }
+  const double p = loads.pressure.value;
+  switch (loads.pressure.kind) {
+    case ring::Pressure::Kind::dead:
+      for (int j = 0; j < n; ++j) {
+        const Eigen::Vector2d inward = eprime(chain.phi0()[j]);  // e(phi0) turned by +90 deg
+        f_.col(j) += 0.5 * p * l * inward;
+        f_.col(j + 1) += 0.5 * p * l * inward;
+      }
+      break;
+    case ring::Pressure::Kind::follower: follower_ = p; break;
+    case ring::Pressure::Kind::central: central_ = p; break;
+  }
+}
+
+Eigen::Matrix2Xd Loading::positions(const Vector& q) const {
+  const int n = chain_.n();
+  Eigen::Matrix2Xd p(2, n + 1);
+  p.col(0) = chain_.hinge_position(q, 0);
+  for (int j = 0; j < n; ++j) p.col(j + 1) = p.col(j) + chain_.l() * e(q[j]);
+  return p;
+}
+
+Eigen::Matrix2Xd Loading::hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<Block>* H) const {
+  const int n = chain_.n();
+  Eigen::Matrix2Xd g = -f_;
+  if (follower_ != 0.0) {
+    // p A with A = 1/2 sum over the closed polygon's edges (k, k+1), the last edge (n, 0).
+    for (int k = 0; k <= n; ++k) {
+      const int m = k < n ? k + 1 : 0;
+      g.col(k) += 0.5 * follower_ * kCross * p.col(m);
+      g.col(m) += 0.5 * follower_ * kCross.transpose() * p.col(k);
+      if (H) {
+        H->push_back({k, m, 0.5 * follower_ * kCross});
+        H->push_back({m, k, 0.5 * follower_ * kCross.transpose()});
+      }
+    }
+  }
+  if (central_ != 0.0) {
+    const double l = chain_.l();
+    for (int j = 0; j < n; ++j)
+      for (std::size_t q = 0; q < kXi.size(); ++q) {
+        const double a = 1.0 - kXi[q], b = kXi[q], w = central_ * l * kW[q];
+        const Eigen::Vector2d x = a * p.col(j) + b * p.col(j + 1);
+        const double r = x.norm();
+        const Eigen::Vector2d u = x / r;
+        g.col(j) += w * a * u;
+        g.col(j + 1) += w * b * u;
+        if (H) {
+          const Eigen::Matrix2d h = w * (Eigen::Matrix2d::Identity() - u * u.transpose()) / r;
+          H->push_back({j, j, a * a * h});
+          H->push_back({j, j + 1, a * b * h});
+          H->push_back({j + 1, j, a * b * h});
+          H->push_back({j + 1, j + 1, b * b * h});
+        }
+      }
+  }
+  return g;
+}
+
+double Loading::potential(const Vector& q) const {
+  const Eigen::Matrix2Xd p = positions(q);
+  double pi = -(f_.cwiseProduct(p - rest_)).sum();
+  auto area = [](const Eigen::Matrix2Xd& x) {
+    double a = 0.0;
+    for (Eigen::Index k = 0; k < x.cols(); ++k) {
+      const Eigen::Index m = (k + 1) % x.cols();
+      a += 0.5 * (x(0, k) * x(1, m) - x(1, k) * x(0, m));
+    }
+    return a;
+  };
+  auto length_weighted_radius = [&](const Eigen::Matrix2Xd& x) {
+    double s = 0.0;
+    for (Eigen::Index j = 0; j + 1 < x.cols(); ++j)
+      for (std::size_t i = 0; i < kXi.size(); ++i)
+        s += chain_.l() * kW[i] * ((1.0 - kXi[i]) * x.col(j) + kXi[i] * x.col(j + 1)).norm();
+    return s;
+  };
+  if (follower_ != 0.0) pi += follower_ * (area(p) - area(rest_));
+  if (central_ != 0.0) pi += central_ * (length_weighted_radius(p) - length_weighted_radius(rest_));
+  return pi;
+}
+
+Vector Loading::forces(const Vector& q) const {
+  const int n = chain_.n();
+  const Eigen::Matrix2Xd g = hinge_gradient(positions(q), nullptr);
+  Vector out = Vector::Zero(chain_.dofs());
+  Eigen::Vector2d G = g.col(n);  // sum_{k > j} g_k
+  for (int j = n - 1; j >= 0; --j) {
+    out[j] = -chain_.l() * eprime(q[j]).dot(G);
+    G += g.col(j);
+  }
+  if (chain_.free()) out.tail<2>() = -G;
+  return out;
+}
+
+void Loading::add_stiffness(const Vector& q, double s, Eigen::Ref<Matrix> hess) const {
+  const int n = chain_.n(), dofs = chain_.dofs();
+  const double l = chain_.l();
+  const Eigen::Matrix2Xd p = positions(q);
+  const bool shape_dependent = follower_ != 0.0 || central_ != 0.0;
+  std::vector<Block> blocks;
+  const Eigen::Matrix2Xd g = hinge_gradient(p, shape_dependent ? &blocks : nullptr);
+  // The curvature of the hinge positions in the angles: d2 p_k / d phi_j^2 = -l e(phi_j), j < k.
+  Eigen::Vector2d G = g.col(n);
+  for (int j = n - 1; j >= 0; --j) {
+    hess(j, j) -= s * l * e(q[j]).dot(G);
+    G += g.col(j);
+  }
+  if (!shape_dependent) return;
+  // S(a, b) = sum_{k >= a, m >= b} H_km by two-dimensional suffix sums, one array per entry
+  // of the 2 x 2 blocks; row/column n + 1 is zero.
+  std::array<Matrix, 4> S;
+  for (auto& x : S) x = Matrix::Zero(n + 2, n + 2);
+  for (const Block& b : blocks)
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) S[2 * r + c](b.k, b.m) += b.h(r, c);
+  for (auto& x : S)
+    for (int a = n; a >= 0; --a)
+      for (int b = n; b >= 0; --b) x(a, b) += x(a + 1, b) + x(a, b + 1) - x(a + 1, b + 1);
+  auto block = [&](int a, int b) {
+    Eigen::Matrix2d m;
+    m << S[0](a, b), S[1](a, b), S[2](a, b), S[3](a, b);
+    return m;
+  };
+  Eigen::Matrix2Xd c(2, n);
+  for (int j = 0; j < n; ++j) c.col(j) = l * eprime(q[j]);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) hess(i, j) += s * c.col(i).dot(block(i + 1, j + 1) * c.col(j));
+  if (!chain_.free()) return;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d row = block(i + 1, 0).transpose() * c.col(i);
+    const Eigen::Vector2d col = block(0, i + 1) * c.col(i);
+    hess(i, dofs - 2) += s * row[0];
+    hess(i, dofs - 1) += s * row[1];
+    hess(dofs - 2, i) += s * col[0];
+    hess(dofs - 1, i) += s * col[1];
+  }
+  hess.bottomRightCorner(2, 2) += s * block(0, 0);
+}
+
+}  // namespace multibody::detail

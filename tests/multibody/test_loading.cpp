@@ -1,0 +1,170 @@
+// The chain under the loads beyond one point load (multibody/loading.hpp): pressure of each
+// kind, gravity, several point loads. Oracles: the derivatives of the load potential by
+// central differences, the closed forms of the pressurized and the hanging thin ring
+// (ring/closed_form.hpp, Fourier series derived there), and the chain's fitted order.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "multibody/chain.hpp"
+#include "multibody/loading.hpp"
+#include "multibody/statics.hpp"
+#include "ring/closed_form.hpp"
+#include "support/paper.hpp"
+
+namespace {
+
+using multibody::Matrix;
+using multibody::Vector;
+using Kind = ring::Pressure::Kind;
+
+ring::Loads every_load(Kind kind) {
+  ring::Loads l;
+  l.points = {{0.0, {-3e3, 1e3}}, {90.0, {0.0, -2e3}}};
+  l.pressure = {4e3, kind};
+  l.gravity = {1.0, -9.81};
+  return l;
+}
+
+/// A deformed, non-closing configuration: the derivatives hold for any q.
+Vector perturbed(const multibody::Chain& c) {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> d(-0.05, 0.05);
+  Vector q = c.q0();
+  for (int i = 0; i < q.size(); ++i) q[i] += i < c.n() ? d(gen) : 0.1 * d(gen);
+  return q;
+}
+
+// Forces = -dPi/dq and the load stiffness = d2Pi/dq2, by central differences (h = 1e-6:
+// truncation O(h^2) ~ 1e-12 against round-off ~ 1e-16 |Pi| / h ~ 1e-10 relative; 1e-6 leaves room).
+TEST(MultibodyLoading, ForcesAndStiffnessAreTheDerivativesOfThePotential) {
+  for (const bool pinned : {true, false})
+    for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
+      ring::RingSpec spec = pinned ? ringtest::pinned_ring(180.0) : ringtest::free_ring();
+      spec.masses = {{270.0, 50.0, 0.0}};
+      ring::MultibodyOptions o;
+      o.n = 12;
+      const multibody::Chain c(spec, o, 0.0);
+      const multibody::detail::Loading load(c, spec, every_load(kind), "static");
+      const Vector q = perturbed(c);
+      const double h = 1e-6;
+      const Vector f = load.forces(q);
+      Matrix H = Matrix::Zero(c.dofs(), c.dofs());
+      load.add_stiffness(q, 1.0, H);
+      double fscale = f.cwiseAbs().maxCoeff(), hscale = H.cwiseAbs().maxCoeff();
+      for (int i = 0; i < c.dofs(); ++i) {
+        Vector a = q, b = q;
+        a[i] += h;
+        b[i] -= h;
+        const double dpi = (load.potential(a) - load.potential(b)) / (2 * h);
+        EXPECT_NEAR(-dpi, f[i], 1e-6 * fscale) << "dof " << i << ", pinned " << pinned << ", " << ring::to_string(kind);
+        const Vector df = (load.forces(a) - load.forces(b)) / (2 * h);
+        for (int j = 0; j < c.dofs(); ++j)
+          EXPECT_NEAR(-df[j], H(j, i), 1e-6 * hscale) << "(" << j << ", " << i << "), " << ring::to_string(kind);
+      }
+      EXPECT_NEAR(load.potential(c.q0()), 0.0, 1e-9 * fscale) << "the potential is counted from rest";
+    }
+}
+
+// A uniform pressure of any kind leaves the inextensible chain where it is: the regular
+// polygon is an equilibrium with its links in compression (exact, by symmetry).
+TEST(MultibodyLoading, UniformPressureDoesNotMoveTheInextensibleChain) {
+  const ring::RingSpec spec = ringtest::pin_roller_ring();
+  for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
+    ring::StaticOptions st;
+    st.loads.pressure = {0.5 * ring::closed_form::critical_pressure(spec, kind), kind};
+    st.steps = 2;
+    st.record = {0.0, 45.0, 90.0, 270.0};
+    ring::MultibodyOptions o;
+    o.n = 40;
+    const ring::StaticResult r = multibody::solve_static(spec, o, st);
+    for (const auto& d : r.displacements) EXPECT_LT(std::hypot(d.ux, d.uy), 1e-12 * spec.radius) << ring::to_string(kind);
+  }
+}
+
+struct Fit {
+  std::vector<double> err;
+  double order() const { return std::log2(err[err.size() - 2] / err.back()); }
+};
+
+// Two opposite forces along a diameter of a ring that carries half its critical pressure:
+// the shortening against the linear Fourier series about the pressurized circle (each
+// kind's own load stiffness, and for the central kind the pin's reaction to the load's
+// restraint of the translation, closed_form.hpp). Measured at n = 160: 1.6e-3 (follower),
+// 1.5e-3 (dead), 1.3e-3 (central); the extrapolated chain meets the series to 1e-5. P is small (shortening ~1e-6 R) so that the
+// series' linearity in P holds to ~1e-6; the chain converges at order 2 (as its modes).
+TEST(MultibodyLoading, SqueezeUnderPressureMeetsTheSeriesOfEachKind) {
+  ring::RingSpec spec = ringtest::pinned_ring(270.0);
+  spec.supports.roller = 90.0;
+  const double P = 1e-6 * spec.EI() / (spec.radius * spec.radius);
+  for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
+    const ring::Pressure pressure{0.5 * ring::closed_form::critical_pressure(spec, kind), kind};
+    const double exact = ring::closed_form::diametral_load_under_pressure(spec, P, pressure).along;
+    const double unpressurized = ring::closed_form::diametral_load(spec, P).along;
+    ASSERT_GT(exact, 1.3 * unpressurized) << "half the critical pressure amplifies the n = 2 response";
+    ring::StaticOptions st;
+    st.loads.points = {{0.0, {-P, 0.0}}, {180.0, {P, 0.0}}};
+    st.loads.pressure = pressure;
+    st.steps = 4;
+    st.record = {0.0, 180.0};
+    Fit fit;
+    for (int n : {40, 80, 160}) {
+      ring::MultibodyOptions o;
+      o.n = n;
+      const ring::StaticResult r = multibody::solve_static(spec, o, st);
+      const double along = r.displacements[1].ux - r.displacements[0].ux;
+      fit.err.push_back(std::abs(along - exact) / exact);
+    }
+    EXPECT_NEAR(fit.order(), 2.0, 0.2) << ring::to_string(kind) << ": errors " << fit.err[0] << " " << fit.err[1] << " "
+                                       << fit.err[2];
+    EXPECT_LT(fit.err.back(), 2e-3) << ring::to_string(kind);
+  }
+}
+
+// A ring hanging from a pin under its own weight (no roller: gravity holds the rotation):
+// the sag and the shrinking of the diameter across against the series of the thin ring
+// (closed_form.hpp; Roark's 0.4674 and 0.4292 q R^4/EI). g is scaled so that the sag is
+// ~1e-6 R (linear limit); the chain converges at order 2.
+TEST(MultibodyLoading, HangingRingMeetsTheSelfWeightSeries) {
+  const ring::RingSpec spec = ringtest::pinned_ring(90.0);
+  ASSERT_EQ(ring::static_rigid_modes(spec, ring::Loads{{}, {}, {0.0, -1.0}}), 0);
+  ASSERT_EQ(ring::static_rigid_modes(spec, ring::Loads{{}, {}, {0.0, 1.0}}), 1) << "standing on its pin: unstable";
+  const double g = 1e-6 * spec.EI() / (spec.rhoA() * std::pow(spec.radius, 3));
+  const auto exact = ring::closed_form::hanging_ring_self_weight(spec, g);
+  ring::StaticOptions st;
+  st.loads.gravity = {0.0, -g};
+  st.steps = 1;
+  st.record = {0.0, 180.0, 270.0};
+  Fit sag, across;
+  for (int n : {40, 80, 160}) {
+    ring::MultibodyOptions o;
+    o.n = n;
+    const ring::StaticResult r = multibody::solve_static(spec, o, st);
+    sag.err.push_back(std::abs(-r.displacements[2].uy - exact.sag) / exact.sag);
+    across.err.push_back(std::abs(r.displacements[1].ux - r.displacements[0].ux - exact.across) / exact.across);
+    EXPECT_NEAR(r.displacements[0].uy, r.displacements[1].uy, 1e-14 * spec.radius) << "symmetric about the vertical";
+  }
+  EXPECT_NEAR(sag.order(), 2.0, 0.2) << sag.err[0] << " " << sag.err[1] << " " << sag.err[2];
+  EXPECT_NEAR(across.order(), 2.0, 0.2) << across.err[0] << " " << across.err[1] << " " << across.err[2];
+  EXPECT_LT(sag.err.back(), 2e-3);  // the chain's O((2 pi / n)^2): 1.2e-3 measured at n = 160
+}
+
+// Loads beyond one point load need the dense path: "auto" takes it, a forced "sparse" refuses.
+TEST(MultibodyLoading, TheSparseStaticsRefusesWhatItCannotAssemble) {
+  ring::RingSpec spec = ringtest::pin_roller_ring();
+  ring::StaticOptions st;
+  st.loads.pressure = {1.0, Kind::follower};
+  st.record = {0.0};
+  ring::MultibodyOptions o;
+  o.n = 40;
+  o.method = ring::MultibodyOptions::Method::sparse;
+  try {
+    multibody::solve_static(spec, o, st);
+    ADD_FAILURE() << "the O(n) statics took a pressure";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("static.pressure"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
