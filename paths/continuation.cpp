@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace paths {
@@ -176,9 +177,13 @@ class Follower {
       const int it = newton_at(trial, &dzds);
       // A step whose end, looked at in the direction of the step, has the load falling
       // has jumped over a limit point onto the path beyond it: like a failed Newton, it
-      // is cut. (A step that moves nothing, under a zero load, jumped nowhere.)
+      // is cut. (A step that moves nothing, under a zero load or along a trivial path
+      // such as uniform pressure on an inextensible ring, jumped nowhere: a change at the
+      // rounding of the unknowns, 64 eps |u|, has no direction to judge.)
       const Vector change = trial.z - state.z;
-      const bool jumped = it >= 0 && change.head(m_).norm() > 0.0 && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
+      const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * trial.z.head(m_).norm();
+      const bool jumped =
+          it >= 0 && change.head(m_).norm() > rounding && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
       if (it < 0 || jumped) {
         step *= 0.5;
         if (step < ds_ / (1 << options_.max_halvings)) return false;
