@@ -30,10 +30,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "lumped_mass/checks.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "multibody/statics.hpp"
@@ -66,9 +68,15 @@ double fitted_order(const std::vector<double>& n, const std::vector<double>& e) 
   return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
+std::string sci(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3e", x);
+  return b;
+}
+
 std::string list(const std::vector<double>& v) {
   std::string s;
-  for (double x : v) s += std::to_string(x) + " ";
+  for (double x : v) s += sci(x) + " ";
   return s;
 }
 
@@ -341,6 +349,144 @@ TEST(LumpedLoads, HungRingConvergesToTheFourierSeries) {
       EXPECT_NEAR(fitted_order(ns, e_side_y), 2.0, 0.1) << list(e_side_y);
     }
   }
+}
+
+/// The hung ring with every term: point masses (one with rotary inertia, beside a rotational
+/// spring that its chain convention couples to it), an elastic support and a foundation.
+ring::RingSpec hung_ring_with_terms() {
+  ring::RingSpec s = hung_ring();
+  s.masses = {{270.0, 500.0, 0.0}, {0.0, 200.0, 400.0}};
+  s.supports.springs = {{0.0, 0.0, 0.0, 1e5}, {180.0, 2e3, 1e3, 0.0}};
+  s.foundation = {20.0, 10.0};
+  return s;
+}
+
+// A step of gravity (g = 1e-3 m/s^2: u/R ~ 4e-5, nearly linear) on the hung ring with every
+// term. From rest, each mode oscillates about the static deflection, u(t) = u_s - sum_j c_j
+// cos(w_j t) (the midpoint rule keeps that form with its own frequencies), so the mean over T
+// differs from u_s by at most sum_j |c_j| / (w_j T) <= 2 max_t |u - u_s| / (w_1 T) (the factor 2
+// for sum |c_j| against the largest swing, which the symmetric lowest mode dominates), w_1 the
+// lowest frequency of the same model (lumped::compute_modes). T = 60 s, about 40 periods.
+// The energy balance: the midpoint rule conserves T + V - W exactly for quadratic energies and
+// constant loads; what remains comes from the parts of the energies beyond quadratic (the
+// hinge springs' and the clamp-like rotations' atan2, the point inertia's rotation), a fraction
+// ~u/R = 4e-5 of the energy, times the step's error on it: bound 1e-6 of the work (measured
+// 6.1e-10; the mean 0.30 of its bound).
+TEST(LumpedLoads, GravityStepOscillatesAboutTheStaticsWithItsEnergyBalanced) {
+  const ring::RingSpec s = hung_ring_with_terms();
+  const double g = 1e-3;
+  ring::StaticOptions st;
+  st.loads.gravity = {0.0, -g};
+  st.steps = 1;
+  st.record = {270.0, 0.0};
+  const auto stat = lumped::solve_static(s, chain(40), st);
+  ring::ResponseOptions r;
+  r.loads.gravity = {0.0, -g};
+  r.dt = 0.02;
+  r.t_end = 60.0;
+  r.integrator = ring::ResponseOptions::Integrator::midpoint;
+  r.record = {270.0, 0.0};
+  const auto h = lumped::respond(s, chain(40), r);
+  const double w1 = lumped::compute_modes(s, chain(40), 1).omega.at(0);
+  double worst = 0.0;  // |mean - u_s| over its bound
+  for (int q = 0; q < 2; ++q)
+    for (int c = 0; c < 2; ++c) {
+      const auto& u = c ? h.uy[q] : h.ux[q];
+      const double us = c ? stat.displacements[q].uy : stat.displacements[q].ux;
+      double mean = 0.0, swing = 0.0;
+      for (std::size_t k = 1; k < u.size(); ++k) mean += u[k] / double(u.size() - 1);
+      for (double x : u) swing = std::max(swing, std::abs(x - us));
+      if (std::abs(us) < 1e-3 * std::abs(stat.displacements[0].uy)) continue;  // ~0 by symmetry
+      worst = std::max(worst, std::abs(mean - us) / (2.0 * swing / (w1 * r.t_end)));
+      EXPECT_LT(std::abs(mean - us), 2.0 * swing / (w1 * r.t_end)) << "point " << q << " component " << c << ": mean "
+                                                                    << mean << " static " << us;
+      EXPECT_GT(swing, 0.5 * std::abs(us)) << "a step load makes it swing";
+    }
+  RecordProperty("mean_over_bound", sci(worst));
+  double work = 0.0, error = 0.0;
+  for (std::size_t k = 0; k < h.t.size(); ++k) {
+    work = std::max(work, std::abs(h.work[k]));
+    error = std::max(error, std::abs(h.energy_error[k]));
+  }
+  RecordProperty("gravity_energy_error_over_work", sci(error / work));
+  EXPECT_LT(error, 1e-6 * work);
+  // The weight's work at the end equals the weight times the drop of the centre of mass: with
+  // V + T = W, and W > 0 as the ring sinks.
+  EXPECT_GT(h.work.back(), 0.0);
+}
+
+// A large response under every load at once (two point loads, follower or central pressure at
+// a third of the buckling pressure, gravity) with every term: the work of the pressure and of
+// gravity is counted, so the balance T + V - W stays at the midpoint rule's O(dt^2) level on
+// non-quadratic energies (nonlinear_test.cpp measures 1e-6 of the work on the paper's scene);
+// halving dt must shrink it by about 4 (order 2 fitted over dt = 0.02, 0.01, 0.005 s within
+// 0.5; measured 2.00, errors 3.6e-6, 9.1e-7, 2.3e-7 of the work with follower pressure): bound
+// 1e-4 of the work, as the one-load test.
+TEST(LumpedLoads, ResponseCountsTheWorkOfPressureAndGravity) {
+  const ring::RingSpec s = hung_ring_with_terms();
+  for (Kind kind : {Kind::follower, Kind::central}) {
+    std::vector<double> dts = {0.02, 0.01, 0.005}, err;
+    for (double dt : dts) {
+      ring::ResponseOptions r;
+      r.loads.points = {{0.0, {-1e4, 0.0}}, {180.0, {0.0, 5e3}}};
+      r.loads.pressure = {1.0 * s.EI() / std::pow(s.radius, 3), kind};
+      r.loads.gravity = {0.0, -9.81};
+      r.history.kind = ring::LoadHistory::Kind::ramp;
+      r.history.period = 0.5;
+      r.dt = dt;
+      r.t_end = 2.0;
+      r.record = {270.0};
+      const auto h = lumped::respond(s, chain(40), r);
+      double work = 0.0, error = 0.0;
+      for (std::size_t k = 0; k < h.t.size(); ++k) {
+        work = std::max(work, std::abs(h.work[k]));
+        error = std::max(error, std::abs(h.energy_error[k]));
+      }
+      EXPECT_LT(error, 1e-4 * work) << ring::to_string(kind) << " dt = " << dt;
+      err.push_back(error / work);
+    }
+    const double order = std::log(err[0] / err[2]) / std::log(dts[0] / dts[2]);
+    RecordProperty("energy_order_" + ring::to_string(kind), std::to_string(order));
+    RecordProperty("energy_error_" + ring::to_string(kind), list(err));
+    EXPECT_NEAR(order, 2.0, 0.5) << list(err);
+  }
+}
+
+// What has no meaning is std::invalid_argument naming the key, from the checks the driver calls
+// before any solver runs (exit 2).
+TEST(LumpedLoads, RefusesWhatHasNoMeaning) {
+  auto message = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const ring::RingSpec s = ringtest::pin_roller_ring();
+  ring::StaticOptions st = squeeze(1e3, 0.0, Kind::dead);
+  st.loads.points.push_back({5.0, {0.0, 1.0}});  // not a hinge of n = 40
+  EXPECT_NE(message([&] { lumped::check_static(s, chain(40), st); }).find("static.loads[2].at"), std::string::npos);
+  st.loads.points.back().angle = 180.0;  // the pin
+  EXPECT_NE(message([&] { lumped::check_static(s, chain(40), st); }).find("acts at the pin"), std::string::npos);
+  ring::StaticOptions nan = squeeze(1e3, std::nan(""), Kind::follower);
+  EXPECT_NE(message([&] { lumped::check_static(s, chain(40), nan); }).find("static.pressure"), std::string::npos);
+  ring::LumpedOptions frame = chain(40);
+  frame.variant = ring::LumpedOptions::Variant::frame;
+  EXPECT_NE(message([&] { lumped::check_static(s, frame, squeeze(0.0, 1.0, Kind::dead)); }).find("lumped.variant"),
+            std::string::npos);
+  // Turning about the pin is free without a roller or a term against it.
+  EXPECT_NE(message([&] { lumped::check_static(ringtest::pinned_ring(), chain(40), squeeze(1e3, 0.0, Kind::dead)); })
+                .find("roller"),
+            std::string::npos);
+  ring::RingSpec off = s;
+  off.masses = {{4.0, 1.0, 0.0}};
+  EXPECT_NE(message([&] { lumped::check_response(off, chain(40), ring::ResponseOptions{}); }).find("masses[1]"),
+            std::string::npos);
+  // A clamp and a spring hold the pinned ring without a roller: accepted.
+  ring::RingSpec clamped = ringtest::pinned_ring();
+  clamped.supports.clamp = 180.0;
+  EXPECT_NO_THROW(lumped::check_static(clamped, chain(40), squeeze(1e3, 0.0, Kind::dead)));
 }
 
 }  // namespace
