@@ -43,6 +43,13 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
        "radius, E, rho, area and inertia must be > 0");
   // Every term of the spec is in the nonlinear chain (terms.hpp); its points must be nodes.
   check_modes(spec, o);
+  if (spec.supports.roller) {
+    need(spec.supports.pin.has_value(), "supports.roller needs supports.pin");
+    need(ring::on_node(*spec.supports.roller, *spec.supports.pin, o.n),
+         "supports.roller must fall on a hinge (lumped.n = " + std::to_string(o.n) + ")");
+    need(std::abs(std::remainder(*spec.supports.roller - *spec.supports.pin, 360.0)) > 1e-9,
+         "supports.roller must differ from the pin");
+  }
   need(spec.supports.pin.has_value() || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under "
        "a dead load has no equilibrium");
