@@ -1,5 +1,6 @@
 #include "lumped_mass/checks.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -8,6 +9,27 @@
 
 namespace lumped {
 namespace {
+
+/// The points of the loads on hinges (`section`.at for one load, `section`.loads[i].at for
+/// several), none at the pin.
+void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::Loads& loads,
+                 const std::string& section) {
+  const double anchor = spec.supports.pin.value_or(0.0);
+  for (std::size_t i = 0; i < loads.points.size(); ++i) {
+    const double a = loads.points[i].angle;
+    const std::string key =
+        loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    if (!std::isfinite(a) || !ring::on_node(a, anchor, o.n))
+      throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(a) + ") is not a hinge of the chain (lumped.n = " +
+                                  std::to_string(o.n) + ": pin + 360 k / n)");
+    if (spec.supports.pin && std::abs(std::remainder(a - anchor, 360.0)) < 1e-9)
+      throw std::invalid_argument("lumped: " + key + " acts at the pin");
+  }
+  const std::array<std::pair<const char*, double>, 3> finite{
+      {{"pressure", loads.pressure.value}, {"gravity", loads.gravity[0]}, {"gravity", loads.gravity[1]}}};
+  for (const auto& [key, v] : finite)
+    if (!std::isfinite(v)) throw std::invalid_argument("lumped: " + section + "." + key + " must be finite");
+}
 
 /// What every nonlinear analysis of the chain needs; `what` is "statics" or "response".
 void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
@@ -20,8 +42,18 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
   need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
        "radius, E, rho, area and inertia must be > 0");
-  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
-  ring::refuse_terms_beyond_paper(spec, "lumped " + what);
+  // Every term of the spec is in the nonlinear chain (terms.hpp); its points must be nodes.
+  check_modes(spec, o);
+  if (spec.supports.roller) {
+    need(spec.supports.pin.has_value(), "supports.roller needs supports.pin");
+    need(ring::on_node(*spec.supports.roller, *spec.supports.pin, o.n),
+         "supports.roller must fall on a hinge (lumped.n = " + std::to_string(o.n) + ")");
+    need(std::abs(std::remainder(*spec.supports.roller - *spec.supports.pin, 360.0)) > 1e-9,
+         "supports.roller must differ from the pin");
+  }
+  need(spec.supports.pin.has_value() || spec.rigid_modes() == 0,
+       "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under "
+       "a dead load has no equilibrium");
 }
 
 }  // namespace
@@ -47,13 +79,18 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
   check_chain(spec, options, "statics");
-  if (!spec.supports.roller) throw std::invalid_argument("lumped statics: needs a roller as well as the pin");
+  check_loads(spec, options, statics.loads, "static");
+  if (spec.rigid_modes() > 0)
+    throw std::invalid_argument(
+        "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs or "
+        "a foundation that keep the ring from turning about the pin");
   if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& r) {
   check_chain(spec, options, "response");
+  check_loads(spec, options, r.loads, "response");
   using Integrator = ring::ResponseOptions::Integrator;
   if (r.integrator == Integrator::energy_momentum)
     throw std::invalid_argument(

@@ -13,9 +13,13 @@ namespace lumped {
 /// n >= 4 and every point (pins, clamp, springs, masses) a node: anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
-/// material, a pin and a roller, static.steps >= 1.
+/// material, every point of the spec (pins, clamp, springs, masses) and every point load on a
+/// node (none at the pin), a pin (or springs / a foundation that hold every rigid motion),
+/// supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0), finite
+/// pressure and gravity, static.steps >= 1.
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
-/// Forced response of the chain: as statics without the roller, the integrator "midpoint"
+/// Forced response of the chain: as statics, but rigid motions are allowed when a pin holds
+/// the ring (it swings about it); the integrator "midpoint"
 /// or "newmark" (the same implicit midpoint rule, nonlinear.hpp), 0 < dt <= t_end.
 /// "energy-momentum" is refused: the midpoint rule does not conserve the energy of the
 /// chain's non-quadratic springs, and the refusal names "midpoint".

@@ -1,5 +1,7 @@
 #include "lumped_mass/model.hpp"
 
+#include "lumped_mass/terms.hpp"
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -8,8 +10,6 @@
 
 namespace lumped {
 namespace {
-
-using Triplets = std::vector<Eigen::Triplet<double>>;
 
 struct Vec2 {
   double x, y;
@@ -36,21 +36,6 @@ void check_spec(const ring::RingSpec& spec, const ring::LumpedOptions& options) 
   for (const auto& [name, v] : positive)
     if (!(v > 0.0) || !std::isfinite(v))
       throw std::invalid_argument(std::string(name) + " (=" + std::to_string(v) + ") must be > 0");
-}
-
-/// The node at `deg`, or std::invalid_argument naming `key` (every point of the spec must
-/// be a node: anchor + 360 k / n).
-int node_of(double deg, double anchor, int n, const std::string& key) {
-  if (!std::isfinite(deg) || !ring::on_node(deg, anchor, n))
-    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(deg) + " deg) is not a node of the n = " +
-                                std::to_string(n) + " model (valid: anchor " + std::to_string(anchor) +
-                                " deg + 360 k / n)");
-  return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor) * n / 360.0)) % n;
-}
-
-void check_nonnegative(double v, const std::string& key) {
-  if (!(v >= 0.0) || !std::isfinite(v))
-    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(v) + ") must be finite and >= 0");
 }
 
 /// Support rows: every pinned point (supports.pinned(): the pin at node 0, then `pins`)
@@ -253,9 +238,6 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
     for (int k = 0; k < n; ++k) m.massless[3 * k + 2] = 1;
 }
 
-/// A linear function of the model's DOFs as (dof, coefficient) pairs.
-using Row = std::vector<std::pair<int, double>>;
-
 /// Rows [A; extra] (extra's row indices count from 0). O(nonzeros).
 SpMat stacked(const SpMat& A, const Triplets& extra, int extra_rows) {
   Triplets t;
@@ -268,99 +250,37 @@ SpMat stacked(const SpMat& A, const Triplets& extra, int extra_rows) {
   return S;
 }
 
-/// Rotation of the centroid line's tangent at node h (rad per m of displacement).
-/// frames: the node's rotation unknown th_h. chain (no rotation unknown): the chord through
-/// the node's neighbours, i.e. the mean of its two links' rotations,
-///   (nu_{h-1} . (u_h - u_{h-1}) + nu_h . (u_{h+1} - u_h)) / (2 l),
-/// nu_j the left normal of side j (a link's rotation is nu_j . du / l, model.hpp).
-Row tangent_rotation(const Model& m, const std::vector<Vec2>& p, int h) {
-  if (m.dofs_per_node == 3) return {{3 * h + 2, 1.0}};
-  const int n = m.n, hm = (h + n - 1) % n, hp = (h + 1) % n;
-  auto normal = [&](int j) {  // left normal of side j, unit
-    const Vec2& a = p[j];
-    const Vec2& b = p[(j + 1) % n];
-    const double len = std::hypot(b.x - a.x, b.y - a.y);
-    return Vec2{-(b.y - a.y) / len, (b.x - a.x) / len};
-  };
-  const Vec2 na = normal(hm), nb = normal(h);
-  const double c = 1.0 / (2.0 * m.side);
-  return {{2 * hm, -c * na.x}, {2 * hm + 1, -c * na.y}, {2 * h, c * (na.x - nb.x)},
-          {2 * h + 1, c * (na.y - nb.y)}, {2 * hp, c * nb.x},   {2 * hp + 1, c * nb.y}};
-}
-
-/// The spec's terms beyond the bare ring, each once, for every variant:
-/// - foundation: lumped at the nodes, each node standing for one side l of ring: rows
-///   r_k . u_k and t_k . u_k of B with D = k_r l and k_t l (r_k, t_k the radial and
-///   tangential unit vectors of the undeformed node; fixed directions, ring/spec.hpp);
-/// - elastic support at node h: rows ux_h, uy_h of B with D = kx, ky; kr: frames a row th_h
-///   with D = kr; the chain see below;
-/// - point mass at node h: m on (ux_h, uy_h); J on the rotation (a frame's rotation with
-///   J > 0 becomes inertial: the lumped frame keeps it, not condensed);
-/// - clamp: frames block th_h in S (support_rows()); the chain see below.
-/// The chain's rotational terms (the convention of multibody/attachments.hpp, so that the two
-/// chains stay one model): the hinge spring EI/l = K stands for the bending from one link's
-/// midpoint to the next; split into two halves 2K from each link to the hinge's own massless
-/// rotation psi, it is the same spring with psi = the chord rotation m (tangent_rotation()).
-/// A spring kr from psi to the ground, psi condensed, is 4K and kr in series on m:
-/// D = 4K kr / (4K + kr) on the row g = tangent_rotation(h), and psi = 4K m / (4K + kr), so a
-/// point inertia J acts as J (4K / (4K + kr))^2 g g^T. A clamp is kr -> infinity: 4K on m
-/// (the constraint m = 0 instead converges at order 1 only: terms_test.cpp's clamped ring).
-/// Zero stiffnesses add no row (D stays positive for the mixed system, eigen.hpp). O(n).
+/// The spec's terms beyond the bare ring (terms.hpp, written once for the linear and the
+/// nonlinear analyses), linearised at rest:
+/// - every stiffness term (foundation, springs kx, ky, kr, the chain's clamp) is one row of B,
+///   its measure's gradient at rest, with D = its stiffness (the mixed system needs D > 0: zero
+///   stiffnesses add no row);
+/// - point mass at node h: m on (ux_h, uy_h); J on the rotation g = grad rotation(h) at rest,
+///   J g g^T (a frame's rotation with J > 0 becomes inertial: the lumped frame keeps it, not
+///   condensed). The chain's rotational terms follow multibody/attachments.hpp (terms.hpp,
+///   model.hpp). O(n).
 void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m) {
-  const int n = m.n, dpn = m.dofs_per_node;
+  Eigen::VectorXd rest(2 * m.n);
+  for (int k = 0; k < m.n; ++k) rest.segment<2>(2 * k) << p[k].x, p[k].y;
+  const Terms terms(spec, m.dofs_per_node, m.anchor_deg, m.side, rest);
+  const int dpn = m.dofs_per_node;
   Triplets bt, mt;
   std::vector<double> d;
-  auto stiffness_row = [&](const Row& g, double k) {
-    if (k <= 0.0) return;
-    for (const auto& [dof, c] : g) bt.emplace_back(static_cast<int>(d.size()), dof, c);
-    d.push_back(k);
-  };
-  const ring::Foundation& f = spec.foundation;
-  check_nonnegative(f.radial, "foundation.radial");
-  check_nonnegative(f.tangential, "foundation.tangential");
-  if (f.any())
-    for (int k = 0; k < n; ++k) {
-      const double rr = std::hypot(p[k].x, p[k].y), rx = p[k].x / rr, ry = p[k].y / rr;
-      stiffness_row({{dpn * k, rx}, {dpn * k + 1, ry}}, f.radial * m.side);
-      stiffness_row({{dpn * k, -ry}, {dpn * k + 1, rx}}, f.tangential * m.side);
-    }
-  std::vector<double> kr(n, 0.0);  // rotational springs to the ground by node (a clamp: infinite)
-  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
-    const ring::Spring& s = spec.supports.springs[i];
-    const std::string key = "supports.springs[" + std::to_string(i + 1) + "]";
-    const int h = node_of(s.angle, m.anchor_deg, n, key);
-    check_nonnegative(s.kx, key + ".kx");
-    check_nonnegative(s.ky, key + ".ky");
-    check_nonnegative(s.kr, key + ".kr");
-    stiffness_row({{dpn * h, 1.0}}, s.kx);
-    stiffness_row({{dpn * h + 1, 1.0}}, s.ky);
-    kr[h] += s.kr;
-  }
-  const bool chain = dpn == 2;
-  if (chain && spec.supports.clamp) kr[node_of(*spec.supports.clamp, m.anchor_deg, n, "supports.clamp")] = HUGE_VAL;
-  const double k4 = 4.0 * spec.EI() / m.side;  // the chain's two half hinge springs 2K in parallel
-  for (int h = 0; h < n; ++h)
-    if (kr[h] > 0.0) stiffness_row(tangent_rotation(m, p, h), !chain ? kr[h] : std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h]));
-  for (std::size_t i = 0; i < spec.masses.size(); ++i) {
-    const ring::PointMass& pm = spec.masses[i];
-    const std::string key = "masses[" + std::to_string(i + 1) + "]";
-    const int h = node_of(pm.angle, m.anchor_deg, n, key);
-    check_nonnegative(pm.mass, key + ".mass");
-    check_nonnegative(pm.inertia, key + ".inertia");
-    mt.emplace_back(dpn * h, dpn * h, pm.mass);
-    mt.emplace_back(dpn * h + 1, dpn * h + 1, pm.mass);
-    // The chain's psi follows the chord rotation by 4K / (4K + kr) (0 at a clamp).
-    const double follows = !chain ? 1.0 : std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
-    const double J = pm.inertia * follows * follows;
-    if (J > 0.0) {
-      const Row g = tangent_rotation(m, p, h);
-      for (const auto& [a, ca] : g)
-        for (const auto& [b, cb] : g) mt.emplace_back(a, b, J * ca * cb);
-      if (!chain) m.massless[3 * h + 2] = 0;
+  const int rows = terms.rest_rows(0, bt, d);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dpn * m.n);
+  for (const Terms::Inertia& in : terms.inertia()) {
+    const int h = in.node;
+    mt.emplace_back(dpn * h, dpn * h, in.mass);
+    mt.emplace_back(dpn * h + 1, dpn * h + 1, in.mass);
+    if (in.rotary > 0.0) {
+      const Measure g = terms.rotation(zero, h, false);
+      for (std::size_t a = 0; a < g.dofs.size(); ++a)
+        for (std::size_t b = 0; b < g.dofs.size(); ++b)
+          mt.emplace_back(g.dofs[a], g.dofs[b], in.rotary * g.grad[static_cast<Eigen::Index>(a)] * g.grad[static_cast<Eigen::Index>(b)]);
+      if (dpn == 3) m.massless[3 * h + 2] = 0;
     }
   }
-  if (!d.empty()) {
-    const int rows = static_cast<int>(d.size());
+  if (rows > 0) {
     SpMat Bx(rows, m.B.cols());
     Bx.setFromTriplets(bt.begin(), bt.end());
     const SpMat DBx = Eigen::Map<const Eigen::VectorXd>(d.data(), rows).asDiagonal() * Bx;

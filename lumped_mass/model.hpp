@@ -73,7 +73,8 @@ struct Model {
 ///   linear axial (EA), cubic Hermite bending (EI); masses rho A l / 2 per element end on
 ///   the translations only (frame, rotations massless -> condensed) or the consistent
 ///   mass matrix (frame_consistent).
-/// Terms of every variant (ring/spec.hpp), each written once:
+/// Terms of every variant (ring/spec.hpp), each written once in terms.hpp (energy, gradient and
+/// Hessian at any configuration, shared with the nonlinear chain; here their rows at rest):
 ///   rotation of the tangent at node h: the frames' rotation unknown th_h; the chain has none
 ///     and uses the chord through the node's neighbours, the mean of its two links' rotations;
 ///   pins: both translations of the node in S;

@@ -1,6 +1,9 @@
 #include "lumped_mass/nonlinear.hpp"
 
 #include "lumped_mass/checks.hpp"
+#include "lumped_mass/loads.hpp"
+#include "lumped_mass/model.hpp"
+#include "lumped_mass/terms.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -25,19 +28,19 @@ namespace {
 
 using Vec = Eigen::VectorXd;
 using Vec2 = Eigen::Vector2d;
-using Triplets = std::vector<Eigen::Triplet<double>>;
 using Sparse = Eigen::SparseMatrix<double>;
 constexpr double kPi = 3.14159265358979323846;
 
-/// The chain's fixed data: geometry, stiffness, mass and supports.
+/// The chain's fixed data: geometry, stiffness, mass, supports and the spec's terms.
 struct Chain {
   int n = 0;
   double l = 0.0, k = 0.0, m = 0.0, rho = 0.0, theta0 = 0.0, anchor_deg = 0.0, depth = 0.0;
   Vec rest;                 ///< 2n: hinge rest positions
-  bool pin = false;
-  int roller = -1;          ///< hinge index of the roller, or -1
-  Vec2 nu{0.0, 0.0};        ///< unit normal of the pin-roller line
-  int rows() const { return n + (pin ? 2 : 0) + (roller >= 0 ? 1 : 0); }
+  /// Support rows on the hinge displacements, model.cpp's S (pins, further pins, roller):
+  /// S (x - rest) = 0, linear in x.
+  Sparse S;
+  std::optional<Terms> terms;  ///< springs, the clamp, the foundation, point masses (terms.hpp)
+  int rows() const { return n + static_cast<int>(S.rows()); }
 
   Vec2 at(const Vec& x, int j) const {
     j = ((j % n) + n) % n;
@@ -50,10 +53,7 @@ struct Chain {
   }
 };
 
-Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
-  auto need = [&](bool ok, const std::string& msg) {
-    if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
-  };
+Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   Chain c;
   c.n = o.n;
   c.l = 2.0 * kPi * spec.radius / c.n;
@@ -62,22 +62,17 @@ Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   c.rho = c.l / (2.0 * std::sin(kPi / c.n));
   c.theta0 = 2.0 * kPi / c.n;
   c.depth = spec.section.depth();
-  c.anchor_deg = *spec.supports.pin;
-  c.pin = true;
+  c.anchor_deg = spec.supports.pin.value_or(0.0);
+  // The linear model checks every point of the spec (a node, the clamp at a pinned point,
+  // the roller apart from the pin) and gives the support rows: one code for both analyses.
+  c.S = assemble(spec, o).S;
   c.rest.resize(2 * c.n);
   const auto angles = ring::node_angles(spec, c.n);
   for (int j = 0; j < c.n; ++j) {
     c.rest[2 * j] = c.rho * std::cos(angles[j] * kPi / 180.0);
     c.rest[2 * j + 1] = c.rho * std::sin(angles[j] * kPi / 180.0);
   }
-  if (spec.supports.roller) {
-    need(ring::on_node(*spec.supports.roller, c.anchor_deg, c.n),
-         "supports.roller must fall on a hinge (lumped.n = " + std::to_string(c.n) + ")");
-    c.roller = c.hinge(*spec.supports.roller);
-    need(c.roller != 0, "supports.roller must differ from the pin");
-    const Vec2 d = (c.at(c.rest, c.roller) - c.at(c.rest, 0)).normalized();
-    c.nu = {-d.y(), d.x()};
-  }
+  c.terms.emplace(spec, 2, c.anchor_deg, c.l, c.rest);
   return c;
 }
 
@@ -88,20 +83,11 @@ struct Turn {
   Eigen::Matrix<double, 6, 6> hess;
 };
 
-/// d angle(v) / dv = J v / |v|^2 (J: rotation by +90 deg), and its Hessian.
-Eigen::Matrix2d angle_hessian(const Vec2& v) {
-  const double r2 = v.squaredNorm();
-  Eigen::Matrix2d J;
-  J << 0.0, -1.0, 1.0, 0.0;
-  const Eigen::Matrix2d h = (J * r2 - 2.0 * (J * v) * v.transpose()) / (r2 * r2);
-  return 0.5 * (h + h.transpose());
-}
-
 Turn turn(const Chain& c, const Vec& x, int j, bool with_hessian) {
   const Vec2 a = c.at(x, j) - c.at(x, j - 1), b = c.at(x, j + 1) - c.at(x, j);
   Turn t;
   t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-  const Vec2 ga = Vec2(-a.y(), a.x()) / a.squaredNorm(), gb = Vec2(-b.y(), b.x()) / b.squaredNorm();
+  const Vec2 ga = angle_gradient(a), gb = angle_gradient(b);
   // theta = angle(b) - angle(a); a = x_j - x_{j-1}, b = x_{j+1} - x_j.
   t.grad << ga, -ga - gb, gb;
   if (with_hessian) {
@@ -132,10 +118,17 @@ struct Springs {
   Triplets hess;
 };
 
-/// V, grad V and (scaled by `hess_scale`, if not zero) Hess V.
+/// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs and the
+/// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation).
 Springs springs(const Chain& c, const Vec& x, double hess_scale) {
   Springs s;
   s.grad = Vec::Zero(2 * c.n);
+  if (c.terms->any_stiffness()) {
+    const Vec u = x - c.rest;
+    s.energy += c.terms->energy(u);
+    c.terms->add_gradient(u, s.grad);
+    if (hess_scale != 0.0) c.terms->add_hessian(u, hess_scale, s.hess);
+  }
   for (int j = 0; j < c.n; ++j) {
     const Turn t = turn(c, x, j, hess_scale != 0.0);
     const double d = t.theta - c.theta0;
@@ -154,11 +147,7 @@ Springs springs(const Chain& c, const Vec& x, double hess_scale) {
 Vec constraints(const Chain& c, const Vec& x) {
   Vec g(c.rows());
   for (int j = 0; j < c.n; ++j) g[j] = ((c.at(x, j + 1) - c.at(x, j)).squaredNorm() - c.l * c.l) / (2.0 * c.l);
-  int r = c.n;
-  const Vec2 p0 = c.at(x, 0) - c.at(c.rest, 0);
-  g[r++] = p0.x();
-  g[r++] = p0.y();
-  if (c.roller >= 0) g[r++] = c.nu.dot(c.at(x, c.roller) - c.at(c.rest, 0));
+  if (c.S.rows() > 0) g.tail(c.S.rows()) = c.S * (x - c.rest);
   return g;
 }
 
@@ -176,13 +165,8 @@ void jacobian(const Chain& c, const Vec& x, int row_offset, double scale, bool t
     put(j, b, d.x());
     put(j, b + 1, d.y());
   }
-  int r = c.n;
-  put(r++, 0, 1.0);
-  put(r++, 1, 1.0);
-  if (c.roller >= 0) {
-    put(r, 2 * c.roller, c.nu.x());
-    put(r, 2 * c.roller + 1, c.nu.y());
-  }
+  for (int col = 0; col < c.S.outerSize(); ++col)
+    for (Sparse::InnerIterator it(c.S, col); it; ++it) put(c.n + static_cast<int>(it.row()), col, it.value());
 }
 
 /// sum_j lambda_j Hess c_j: the link rows have the constant Hessian (1/l)[I -I; -I I].
@@ -199,9 +183,13 @@ void constraint_hessian(const Chain& c, const Vec& lambda, double scale, Triplet
   }
 }
 
-/// The constant mass matrix of the midpoint masses: m/4 [I I; I I] on every link.
+/// The constant translational mass matrix: the midpoint masses, m/4 [I I; I I] on every
+/// link, and the point masses on their hinges (terms.hpp; their rotary inertia is the
+/// stepper's, on the rotation of the tangent).
 Sparse mass_matrix(const Chain& c) {
   Triplets t;
+  for (const Terms::Inertia& in : c.terms->inertia())
+    for (int d = 0; d < 2; ++d) t.emplace_back(2 * in.node + d, 2 * in.node + d, in.mass);
   for (int j = 0; j < c.n; ++j) {
     const int a = 2 * j, b = 2 * ((j + 1) % c.n);
     for (int d = 0; d < 2; ++d)
@@ -295,11 +283,19 @@ std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record
   return h;
 }
 
-int load_hinge(const Chain& c, const ring::PointLoad& load, const std::string& key) {
-  if (!ring::on_node(load.angle, c.anchor_deg, c.n))
-    throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(load.angle) + ") is not a hinge of the chain");
-  const int h = c.hinge(load.angle);
-  if (h == 0) throw std::invalid_argument("lumped: " + key + " acts at the pin");
+/// The hinge of every point load (`section`.at for one load, `section`.loads[i].at for
+/// several, as the scene names them). A load at the pin is refused: the pin takes it whole.
+std::vector<int> load_hinges(const Chain& c, const ring::RingSpec& spec, const ring::Loads& loads,
+                             const std::string& section) {
+  std::vector<int> h;
+  for (std::size_t i = 0; i < loads.points.size(); ++i) {
+    const ring::PointLoad& load = loads.points[i];
+    const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    if (!ring::on_node(load.angle, c.anchor_deg, c.n))
+      throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(load.angle) + ") is not a hinge of the chain");
+    h.push_back(c.hinge(load.angle));
+    if (spec.supports.pin && h.back() == 0) throw std::invalid_argument("lumped: " + key + " acts at the pin");
+  }
   return h;
 }
 
@@ -314,16 +310,17 @@ std::string contact_where(const Chain& c, const Contact& k) {
 
 namespace {
 
-/// The chain's equilibrium grad V(x) + G(x)^T lambda - s F = 0, c(x) = 0 for the
-/// continuation driver (paths/continuation.hpp). Unknowns z = (x, lambda), lambda in
-/// units of `scale` = EI / l^3 (the constraint rows and columns scaled to the stiffness,
-/// so that the KKT matrix is balanced for the LU's pivoting); the bordered KKT matrix
-/// [A -F; w^T ws] by one sparse LU (its pattern: the band, the closing corners, the
-/// border's row and column).
+/// The chain's equilibrium grad V(x) + G(x)^T lambda + s grad P(x) = 0, c(x) = 0 for the
+/// continuation driver (paths/continuation.hpp), P the loads' potential (loads.hpp).
+/// Unknowns z = (x, lambda), lambda in units of `scale` = EI / l^3 (the constraint rows and
+/// columns scaled to the stiffness, so that the KKT matrix is balanced for the LU's
+/// pivoting); the bordered KKT matrix [A + s Hess P, grad P; w^T ws] by one sparse LU (its
+/// pattern: the band, the closing corners, the border's row and column; the border column
+/// is full once a pressure or gravity acts).
 class ChainStatics : public paths::Equilibrium {
  public:
-  ChainStatics(const Chain& c, Vec F, double scale, double radius)
-      : c_(c), F_(std::move(F)), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius) {}
+  ChainStatics(const Chain& c, const ChainLoads& loads, double scale, double radius)
+      : c_(c), L_(loads), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius) {}
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -338,9 +335,11 @@ class ChainStatics : public paths::Equilibrium {
     Sparse GT(N_, S_ - N_);
     GT.setFromTriplets(gt.begin(), gt.end());
     r.resize(S_);
-    r << sp.grad + GT * (lambda * scale_) - s.s * F_, scale_ * constraints(c_, x);
+    const Vec gP = L_.gradient(x);
+    L_.add_hessian(x, s.s, t);
+    r << sp.grad + GT * (lambda * scale_) + s.s * gP, scale_ * constraints(c_, x);
     for (int i = 0; i < N_; ++i) {
-      if (F_[i] != 0.0) t.emplace_back(i, S_, -F_[i]);
+      if (gP[i] != 0.0) t.emplace_back(i, S_, gP[i]);
       if (w[i] != 0.0) t.emplace_back(S_, i, w[i]);
     }
     t.emplace_back(S_, S_, ws);
@@ -377,7 +376,7 @@ class ChainStatics : public paths::Equilibrium {
 
  private:
   const Chain& c_;
-  const Vec F_;
+  const ChainLoads& L_;
   const int N_, S_;
   const double scale_, radius_;
   Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
@@ -385,19 +384,17 @@ class ChainStatics : public paths::Equilibrium {
 
 }  // namespace
 
-ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
-                                const ring::StaticOptions& statics) {
+StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                 const ring::StaticOptions& statics) {
   const auto t0 = std::chrono::steady_clock::now();
   check_static(spec, options, statics);
-  const Chain c = make_chain(spec, options, "statics");
-  const ring::PointLoad& load = ring::one_point_load(statics.loads, "static", "lumped");
-  const int at = load_hinge(c, load, "static.at");
+  const Chain c = make_chain(spec, options);
+  const auto at = load_hinges(c, spec, statics.loads, "static");
   const auto rec = record_hinges(c, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
-  Vec F = Vec::Zero(N);
-  F[2 * at] = load.force[0];
-  F[2 * at + 1] = load.force[1];
-  ChainStatics eq(c, F, spec.EI() / (c.l * c.l * c.l), spec.radius);
+  const ChainLoads loads(statics.loads, c.rest, c.l, mass_matrix(c), at);
+  const double scale = spec.EI() / (c.l * c.l * c.l);
+  ChainStatics eq(c, loads, scale, spec.radius);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
   rest.z.head(N) = c.rest;
   const paths::Continuation policy{statics.steps};
@@ -405,7 +402,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError("lumped statics: " + paths::failure_message(path, policy));
   const Vec x = path.state.z.head(N);
-  ring::StaticResult out;
+  StaticDetail detail;
+  ring::StaticResult& out = detail.result;
   out.steps = path.steps;
   out.newton_iterations = path.iterations;
   for (std::size_t p = 0; p < rec.size(); ++p) {
@@ -416,24 +414,56 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
     out.node_x.push_back(x[2 * j]);
     out.node_y.push_back(x[2 * j + 1]);
   }
+  // What the ground exerts: the support rows' forces -S^T mu and the terms' -grad V_terms
+  // (springs, foundation; the clamp's moment has no resultant).
+  Vec ground = Vec::Zero(N);
+  if (c.S.rows() > 0) ground -= c.S.transpose() * (path.state.z.tail(c.S.rows()) * scale);
+  if (c.terms->any_stiffness()) {
+    Vec g = Vec::Zero(N);
+    c.terms->add_gradient(x - c.rest, g);
+    ground -= g;
+  }
+  for (int j = 0; j < c.n; ++j) {
+    detail.ground_force[0] += ground[2 * j];
+    detail.ground_force[1] += ground[2 * j + 1];
+  }
   out.solver = "lumped";
   out.unknowns = N + R;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return out;
+  return detail;
+}
+
+ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                const ring::StaticOptions& statics) {
+  return solve_static_detail(spec, options, statics).result;
 }
 
 namespace {
 
 /// The chain's midpoint step (a Newton solve on the constrained midpoint equations,
 /// x_1 = x_0 + h v_m, v_1 = 2 v_m - v_0) for the time-stepping driver
-/// (paths/time_stepping.hpp); the load's work and the damping at the step's midpoint.
+/// (paths/time_stepping.hpp); the loads' force, the damping and the point inertias at the
+/// step's midpoint.
+/// Rotary inertia J of a point mass (terms.hpp) acts on the rotation r(x) of the tangent at
+/// its hinge, with its own rate w as a state: w_1 = 2 (r(x_1) - r(x_0)) / h - w_0 (the
+/// midpoint rule on dr/dt = w) and the inertial force J (w_1 - w_0) / h grad r(x_m); its
+/// kinetic energy J w^2 / 2. The work the force does over a step, J (w_1 - w_0)/h grad r(x_m)
+/// . (x_1 - x_0), equals the change of J w^2/2 up to O(h^3) (r's curvature), the midpoint
+/// rule's error on every non-quadratic energy here.
+/// The loads' work over a step: -f(t_m) (P(x_1) - P(x_0)), P their potential (loads.hpp):
+/// exact for a constant load factor, whatever the configuration dependence of the load.
 class MidpointStepper : public paths::Stepper {
  public:
-  MidpointStepper(const Chain& c, const ring::ResponseOptions& r, double radius, Vec F, Sparse M, Sparse Cd,
-                  std::vector<int> rec)
-      : c_(c), r_(r), radius_(radius), F_(std::move(F)), M_(std::move(M)), Cd_(std::move(Cd)), rec_(std::move(rec)),
+  MidpointStepper(const Chain& c, const ring::ResponseOptions& r, double radius, const ChainLoads& loads, Sparse M,
+                  Sparse Cd, std::vector<int> rec)
+      : c_(c), r_(r), radius_(radius), L_(loads), M_(std::move(M)), Cd_(std::move(Cd)), rec_(std::move(rec)),
         ch_(r.hinge_damping), damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || r.hinge_damping > 0),
-        x_(c.rest), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())) {}
+        x_(c.rest), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())) {
+    for (const Terms::Inertia& in : c.terms->inertia())
+      if (in.rotary > 0.0) rotary_.push_back({in.node, in.rotary});
+    w_ = Vec::Zero(static_cast<Eigen::Index>(rotary_.size()));
+    w1_ = w_;
+  }
 
   paths::StepOutcome try_step(double t, double hh) override {
     const int N = 2 * c_.n, R = c_.rows();
@@ -441,7 +471,6 @@ class MidpointStepper : public paths::Stepper {
     const double scale = 2.0 / (hh * hh) * c_.m;  // balances the constraint rows
     hh_ = hh;
     f_ = r_.history.factor(tm);
-    const Vec Fm = F_ * f_;
     x1_ = x_ + hh * v_;
     l1_ = lambda_;
     paths::StepOutcome out;
@@ -454,8 +483,22 @@ class MidpointStepper : public paths::Stepper {
       constraint_hessian(c_, l1_ * scale, 0.5, trip);
       jacobian(c_, xm, N, scale, true, trip);
       jacobian(c_, x1_, N, scale, false, trip);
-      Vec res = (2.0 / (hh * hh)) * (M_ * (x1_ - x_ - hh * v_)) + sp.grad - Fm;
+      Vec res = (2.0 / (hh * hh)) * (M_ * (x1_ - x_ - hh * v_)) + sp.grad + f_ * L_.gradient(xm);
+      L_.add_hessian(xm, 0.5 * f_, trip);
       if (damped_) res += Cd_ * vm;
+      for (std::size_t i = 0; i < rotary_.size(); ++i) {
+        const auto [h, J] = rotary_[i];
+        const Measure r0 = c_.terms->rotation(x_ - c_.rest, h, false), r1 = c_.terms->rotation(x1_ - c_.rest, h, false);
+        const Measure rm = c_.terms->rotation(xm - c_.rest, h, true);
+        w1_[i] = 2.0 * (r1.value - r0.value) / hh - w_[i];
+        const double moment = J * (w1_[i] - w_[i]) / hh;
+        for (std::size_t a = 0; a < rm.dofs.size(); ++a) {
+          res[rm.dofs[a]] += moment * rm.grad[a];
+          for (std::size_t b = 0; b < rm.dofs.size(); ++b)
+            trip.emplace_back(rm.dofs[a], r1.dofs[b],
+                              2.0 * J / (hh * hh) * rm.grad[a] * r1.grad[b] + 0.5 * moment * rm.hess(a, b));
+        }
+      }
       if (ch_ > 0)
         for (int j = 0; j < c_.n; ++j) {
           const Turn tm_ = turn(c_, xm, j, false);
@@ -487,7 +530,7 @@ class MidpointStepper : public paths::Stepper {
 
   void accept(double) override {
     const Vec dx = x1_ - x_, vm = dx / hh_;
-    work_ += f_ * F_.dot(dx);
+    work_ -= f_ * (L_.potential(x1_) - L_.potential(x_));
     if (damped_) dissipated_ += hh_ * vm.dot(Cd_ * vm);
     if (ch_ > 0)
       for (int j = 0; j < c_.n; ++j) {
@@ -495,11 +538,16 @@ class MidpointStepper : public paths::Stepper {
         dissipated_ += hh_ * ch_ * rate * rate;
       }
     v_ = 2.0 * vm - v_;
+    for (std::size_t i = 0; i < rotary_.size(); ++i) {
+      const int h = rotary_[i].first;
+      w_[i] = 2.0 * (c_.terms->rotation(x1_ - c_.rest, h, false).value -
+                     c_.terms->rotation(x_ - c_.rest, h, false).value) / hh_ - w_[i];
+    }
     x_ = x1_;
     lambda_ = l1_;
   }
 
-  bool finite() const override { return x_.allFinite() && v_.allFinite(); }
+  bool finite() const override { return x_.allFinite() && v_.allFinite() && w_.allFinite(); }
 
   paths::Sample sample() const override {
     paths::Sample out;
@@ -509,6 +557,7 @@ class MidpointStepper : public paths::Stepper {
       out.uy.push_back(u.y());
     }
     out.kinetic = 0.5 * v_.dot(M_ * v_);
+    for (std::size_t i = 0; i < rotary_.size(); ++i) out.kinetic += 0.5 * rotary_[i].second * w_[i] * w_[i];
     out.strain = springs(c_, x_, 0.0).energy;
     out.work = work_;
     out.dissipated = dissipated_;
@@ -530,12 +579,13 @@ class MidpointStepper : public paths::Stepper {
   const Chain& c_;
   const ring::ResponseOptions& r_;
   const double radius_;
-  const Vec F_;
+  const ChainLoads& L_;
   const Sparse M_, Cd_;
   const std::vector<int> rec_;
   const double ch_;
   const bool damped_;
-  Vec x_, v_, lambda_, x1_, l1_;
+  std::vector<std::pair<int, double>> rotary_;  ///< (hinge, J) of the point inertias
+  Vec x_, v_, lambda_, x1_, l1_, w_, w1_;
   double hh_ = 0.0, f_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
 };
 
@@ -545,16 +595,14 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
                           const ring::ResponseOptions& r) {
   const auto t0 = std::chrono::steady_clock::now();
   check_response(spec, options, r);
-  const Chain c = make_chain(spec, options, "response");
-  const ring::PointLoad& load = ring::one_point_load(r.loads, "response", "lumped");
-  const int at = load_hinge(c, load, "response.at");
+  const Chain c = make_chain(spec, options);
+  const auto at = load_hinges(c, spec, r.loads, "response");
   const auto rec = record_hinges(c, r.record, "response.record");
   const int N = 2 * c.n, R = c.rows();
-  Vec F = Vec::Zero(N);
-  F[2 * at] = load.force[0];
-  F[2 * at + 1] = load.force[1];
   const Sparse M = mass_matrix(c);
-  // Rayleigh damping C = a M + b K0, K0 the spring Hessian at rest (no link forces there).
+  const ChainLoads loads(r.loads, c.rest, c.l, M, at);
+  // Rayleigh damping C = a M + b K0, M the translational mass, K0 the Hessian of the springs
+  // and terms at rest (no link forces there).
   Sparse Cd(N, N);
   if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
     const Springs s0 = springs(c, c.rest, 1.0);
@@ -567,7 +615,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   // sign; a gain beyond the one rule's bound (ring/energy_guard.hpp) is a failed
   // integration, not a result.
   ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, r.loads));
-  MidpointStepper stepper(c, r, spec.radius, F, M, Cd, rec);
+  MidpointStepper stepper(c, r, spec.radius, loads, M, Cd, rec);
   paths::Grid grid;
   grid.dt = r.dt;
   grid.t_end = r.t_end;

@@ -7,33 +7,44 @@
 // Unknowns x = (x_0, y_0, ..., x_{n-1}, y_{n-1}): the hinge positions, ring-centred
 // frame, hinge k resting at rho (cos a_k, sin a_k) (model.hpp's n-gon, a_k from the pin).
 //  - Rigid links: c_j(x) = (|x_{j+1} - x_j|^2 - l^2) / (2 l) = 0, j = 0..n-1 (quadratic).
-//  - Supports: pin (hinge 0 fixed: 2 rows), roller (hinge r on the line through the pin
-//    and its rest position: nu . (x_r - X_0) = 0, 1 row).
+//  - Supports: model.hpp's rows S on the displacements, S (x - X) = 0 (linear): every pinned
+//    point (pin, pins) 2 rows, the roller 1 row (its hinge on the line through the pin and
+//    its rest position).
 //  - Springs k = EI / l at every hinge on the turning angle between neighbouring links,
 //    theta_j = atan2(a x b, a . b), a = x_j - x_{j-1}, b = x_{j+1} - x_j (exact for any
 //    rotation below pi between neighbours): V = k/2 sum_j (theta_j - 2 pi / n)^2.
+//  - The spec's terms (terms.hpp, the same code as the linear model's): elastic supports
+//    kx, ky, kr, the clamp (4 EI/l on the rotation of the tangent), the Winkler foundation
+//    (fixed directions of the undeformed point), point masses (m on the hinge, J on the
+//    rotation of the tangent).
 //  - Point masses m = rho A l at the link midpoints: T = m/2 sum_j |(v_j + v_{j+1})/2|^2,
 //    so the mass matrix M is constant (block-tridiagonal plus the closing corners).
-//  - A dead force F f(t) at one hinge.
+//  - Loads (loads.hpp), all scaled by the load factor (statics: s; response: f(t)): point
+//    loads at hinges, uniform pressure (follower, dead, central) and gravity on the links'
+//    and the point masses' weight, each a potential P(x) with its load stiffness.
 //
-// ## Statics: grad V(x) + G(x)^T lambda = s F, c(x) = 0, s: 0 -> 1
+// ## Statics: grad V(x) + G(x)^T lambda + s grad P(x) = 0, c(x) = 0, s: 0 -> 1
 // Followed from rest by the shared continuation driver (paths/continuation.hpp: load
 // stepping with full Newton, Crisfield's arc length through limit points, the limit
 // point located), on (x, lambda) with the tangent k sum (grad theta grad theta^T +
-// (theta - theta0) Hess theta) plus sum lambda_j Hess c_j, bordered for the arc and
+// (theta - theta0) Hess theta) plus the terms' Hessian, s Hess P (the follower and central
+// pressures' load stiffness) and sum lambda_j Hess c_j, bordered for the arc and
 // factorized as one sparse LU. The arc length is measured on the hinge positions; a step
 // turns no link by more than half a radian; converged when no hinge moves by more than
 // 1e-12 R and the links hold to 1e-10 R. Self-contact ends the path.
 //
 // ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
-//   M (v_{n+1} - v_n) / h = F f(t_{n+1/2}) - grad V(x_m) - C v_m - G(x_m)^T lambda,
+//   M (v_{n+1} - v_n) / h = -f(t_{n+1/2}) grad P(x_m) - grad V(x_m) - C v_m - G(x_m)^T lambda
+//                           (- the point inertias' moments, nonlinear.cpp's MidpointStepper),
 //   (x_{n+1} - x_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   x_m = (x_n + x_{n+1}) / 2.
 // Second order; for a linear system it is the average-acceleration Newmark scheme
 // (the paper's). Because the constraints are quadratic, c(x_{n+1}) - c(x_n) =
 // G(x_m)(x_{n+1} - x_n) exactly, so the constraint forces do no work and the
 // constraints hold to round-off at every step; the energy balance error comes only
-// from the midpoint rule on the non-quadratic spring energy (O(h^2), no drift for
-// undamped runs). Offered for response.integrator = "midpoint" and "newmark" (the same
+// from the midpoint rule on the non-quadratic energies (springs, the clamp's and kr's
+// rotation, follower and central pressure, the point inertias: O(h^2), no drift for undamped
+// runs). The work W of the loads is -sum f(t_m) (P(x_{n+1}) - P(x_n)), exact for a constant
+// load factor; V counts the terms' energy (foundation, springs, clamp). Offered for response.integrator = "midpoint" and "newmark" (the same
 // scheme); "energy-momentum" (the name of a scheme that conserves energy, which this one
 // does not) and "generalized-alpha" are refused (std::invalid_argument, checks.hpp).
 // Damping: Rayleigh C = a M + b K0 (K0 the stiffness at rest) and hinge dampers c on
@@ -44,22 +55,38 @@
 // time and memory.
 #pragma once
 
+#include <array>
+
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
 
 namespace lumped {
 
-/// Static equilibrium of the chain under `statics.loads` (full load). Requires a pin and a
-/// roller, the `chain` variant, and the load and record points on hinges.
+/// Static equilibrium of the chain under `statics.loads` (full load). Requires the `chain`
+/// variant, supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0; a
+/// pin, unless the foundation or springs hold the ring), and the load and record points on
+/// hinges.
 /// Throws std::invalid_argument for inputs that can never work and ring::NumericalError
 /// when the equilibrium path does not reach the full load (the ring touches itself; no
 /// return past a limit point).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                 const ring::StaticOptions& statics);
 
-/// Forced response from rest in the undeformed state (see above). Requires a pin, the
-/// `chain` variant, load and record points on hinges. Records every requested step as
+/// solve_static's result and what the ground exerts on the ring at the equilibrium: the
+/// supports' reactions (the multipliers of their rows) and the forces of the elastic supports
+/// and the foundation, summed, N (x, y). At equilibrium it balances the loads' resultant
+/// (the weight under gravity alone).
+struct StaticDetail {
+  ring::StaticResult result;
+  std::array<double, 2> ground_force{0.0, 0.0};
+};
+StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                 const ring::StaticOptions& statics);
+
+/// Forced response from rest in the undeformed state (see above). Requires the `chain`
+/// variant, a pin (or terms that hold every rigid motion), load and record points on hinges.
+/// Records every requested step as
 /// ring::TimeHistory (energies, constraint residual max |c_j|, Newton iterations, six
 /// snapshots). Throws ring::IntegrationFailure (with the history so far) when Newton
 /// fails at a step that cannot be halved further, a value is not finite, the ring

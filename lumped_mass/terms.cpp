@@ -1,0 +1,172 @@
+#include "lumped_mass/terms.hpp"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace lumped {
+
+Eigen::Vector2d angle_gradient(const Eigen::Vector2d& v) { return Eigen::Vector2d(-v.y(), v.x()) / v.squaredNorm(); }
+
+Eigen::Matrix2d angle_hessian(const Eigen::Vector2d& v) {
+  const double r2 = v.squaredNorm();
+  Eigen::Matrix2d J;
+  J << 0.0, -1.0, 1.0, 0.0;
+  const Eigen::Matrix2d h = (J * r2 - 2.0 * (J * v) * v.transpose()) / (r2 * r2);
+  return 0.5 * (h + h.transpose());
+}
+
+int node_of(double deg, double anchor, int n, const std::string& key) {
+  if (!std::isfinite(deg) || !ring::on_node(deg, anchor, n))
+    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(deg) + " deg) is not a node of the n = " +
+                                std::to_string(n) + " model (valid: anchor " + std::to_string(anchor) +
+                                " deg + 360 k / n)");
+  return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor) * n / 360.0)) % n;
+}
+
+void check_nonnegative(double v, const std::string& key) {
+  if (!(v >= 0.0) || !std::isfinite(v))
+    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(v) + ") must be finite and >= 0");
+}
+
+Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, double side, const Eigen::VectorXd& rest)
+    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), rest_(rest) {
+  const int n = n_, dpn = dpn_;
+  auto stiffness = [&](std::vector<std::pair<int, double>> row, double k) {
+    if (k > 0.0) springs_.push_back({-1, std::move(row), k});
+  };
+  const ring::Foundation& f = spec.foundation;
+  check_nonnegative(f.radial, "foundation.radial");
+  check_nonnegative(f.tangential, "foundation.tangential");
+  if (f.any())
+    for (int k = 0; k < n; ++k) {
+      const double rr = std::hypot(rest[2 * k], rest[2 * k + 1]), rx = rest[2 * k] / rr, ry = rest[2 * k + 1] / rr;
+      stiffness({{dpn * k, rx}, {dpn * k + 1, ry}}, f.radial * side);
+      stiffness({{dpn * k, -ry}, {dpn * k + 1, rx}}, f.tangential * side);
+    }
+  std::vector<double> kr(n, 0.0);  // rotational springs to the ground by node (a clamp: infinite)
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
+    const ring::Spring& s = spec.supports.springs[i];
+    const std::string key = "supports.springs[" + std::to_string(i + 1) + "]";
+    const int h = node_of(s.angle, anchor_deg, n, key);
+    check_nonnegative(s.kx, key + ".kx");
+    check_nonnegative(s.ky, key + ".ky");
+    check_nonnegative(s.kr, key + ".kr");
+    stiffness({{dpn * h, 1.0}}, s.kx);
+    stiffness({{dpn * h + 1, 1.0}}, s.ky);
+    kr[h] += s.kr;
+  }
+  const bool chain = dpn == 2;
+  if (chain && spec.supports.clamp) kr[node_of(*spec.supports.clamp, anchor_deg, n, "supports.clamp")] = HUGE_VAL;
+  const double k4 = 4.0 * spec.EI() / side;  // the chain's two half hinge springs 2K in parallel
+  for (int h = 0; h < n; ++h)
+    if (kr[h] > 0.0)
+      springs_.push_back({h, {}, !chain ? kr[h] : std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h])});
+  std::map<int, Inertia> by_node;
+  for (std::size_t i = 0; i < spec.masses.size(); ++i) {
+    const ring::PointMass& pm = spec.masses[i];
+    const std::string key = "masses[" + std::to_string(i + 1) + "]";
+    const int h = node_of(pm.angle, anchor_deg, n, key);
+    check_nonnegative(pm.mass, key + ".mass");
+    check_nonnegative(pm.inertia, key + ".inertia");
+    // The chain's psi follows the chord rotation by 4K / (4K + kr) (0 at a clamp).
+    const double follows = !chain ? 1.0 : std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
+    Inertia& in = by_node[h];
+    in.node = h;
+    in.mass += pm.mass;
+    in.rotary += pm.inertia * follows * follows;
+  }
+  for (const auto& [h, in] : by_node) inertia_.push_back(in);
+}
+
+Measure Terms::rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const {
+  Measure m;
+  if (dpn_ == 3) {
+    m.value = u[3 * h + 2];
+    m.dofs = {3 * h + 2};
+    m.grad = Eigen::VectorXd::Ones(1);
+    return m;
+  }
+  const int n = n_, hm = (h + n - 1) % n, hp = (h + 1) % n;
+  auto pos = [&](int k) { return Eigen::Vector2d(rest_[2 * k] + u[2 * k], rest_[2 * k + 1] + u[2 * k + 1]); };
+  auto rest = [&](int k) { return Eigen::Vector2d(rest_[2 * k], rest_[2 * k + 1]); };
+  // Link rotation from its rest direction e: atan2(e x d, e . d).
+  auto turn = [](const Eigen::Vector2d& e, const Eigen::Vector2d& d) {
+    return std::atan2(e.x() * d.y() - e.y() * d.x(), e.dot(d));
+  };
+  const Eigen::Vector2d da = pos(h) - pos(hm), db = pos(hp) - pos(h);
+  const Eigen::Vector2d ea = (rest(h) - rest(hm)).normalized(), eb = (rest(hp) - rest(h)).normalized();
+  m.value = 0.5 * (turn(ea, da) + turn(eb, db));
+  m.dofs = {2 * hm, 2 * hm + 1, 2 * h, 2 * h + 1, 2 * hp, 2 * hp + 1};
+  const Eigen::Vector2d ga = angle_gradient(da), gb = angle_gradient(db);
+  m.grad.resize(6);
+  m.grad << -0.5 * ga, 0.5 * (ga - gb), 0.5 * gb;
+  if (with_hessian) {
+    const Eigen::Matrix2d Ha = 0.5 * angle_hessian(da), Hb = 0.5 * angle_hessian(db);
+    m.hess = Eigen::MatrixXd::Zero(6, 6);
+    // Link a joins blocks 0 and 1, link b blocks 1 and 2: d = x_second - x_first.
+    m.hess.block<2, 2>(0, 0) += Ha;
+    m.hess.block<2, 2>(0, 2) -= Ha;
+    m.hess.block<2, 2>(2, 0) -= Ha;
+    m.hess.block<2, 2>(2, 2) += Ha + Hb;
+    m.hess.block<2, 2>(2, 4) -= Hb;
+    m.hess.block<2, 2>(4, 2) -= Hb;
+    m.hess.block<2, 2>(4, 4) += Hb;
+  }
+  return m;
+}
+
+Measure Terms::measure(const Spring& s, const Eigen::VectorXd& u, bool with_hessian) const {
+  if (s.node >= 0) return rotation(u, s.node, with_hessian);
+  Measure m;
+  m.grad.resize(static_cast<Eigen::Index>(s.row.size()));
+  for (std::size_t i = 0; i < s.row.size(); ++i) {
+    m.dofs.push_back(s.row[i].first);
+    m.grad[static_cast<Eigen::Index>(i)] = s.row[i].second;
+    m.value += s.row[i].second * u[s.row[i].first];
+  }
+  return m;
+}
+
+double Terms::energy(const Eigen::VectorXd& u) const {
+  double e = 0.0;
+  for (const Spring& s : springs_) {
+    const double r = measure(s, u, false).value;
+    e += 0.5 * s.k * r * r;
+  }
+  return e;
+}
+
+void Terms::add_gradient(const Eigen::VectorXd& u, Eigen::VectorXd& grad) const {
+  for (const Spring& s : springs_) {
+    const Measure m = measure(s, u, false);
+    for (std::size_t i = 0; i < m.dofs.size(); ++i) grad[m.dofs[i]] += s.k * m.value * m.grad[static_cast<Eigen::Index>(i)];
+  }
+}
+
+void Terms::add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out) const {
+  for (const Spring& s : springs_) {
+    const Measure m = measure(s, u, true);
+    const Eigen::Index q = m.grad.size();
+    for (Eigen::Index i = 0; i < q; ++i)
+      for (Eigen::Index j = 0; j < q; ++j) {
+        double h = m.grad[i] * m.grad[j];
+        if (m.hess.size() > 0) h += m.value * m.hess(i, j);
+        if (h != 0.0) out.emplace_back(m.dofs[i], m.dofs[j], scale * s.k * h);
+      }
+  }
+}
+
+int Terms::rest_rows(int row0, Triplets& rows, std::vector<double>& d) const {
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dpn_ * n_);
+  int r = row0;
+  for (const Spring& s : springs_) {
+    const Measure m = measure(s, zero, false);
+    for (std::size_t i = 0; i < m.dofs.size(); ++i) rows.emplace_back(r, m.dofs[i], m.grad[static_cast<Eigen::Index>(i)]);
+    d.push_back(s.k);
+    ++r;
+  }
+  return r - row0;
+}
+
+}  // namespace lumped

@@ -1,0 +1,103 @@
+// The ring's terms beyond the bare ring (ring/spec.hpp: elastic supports, the chain's
+// clamp, the Winkler foundation, point masses), each written ONCE, as a function of the
+// model's displacement DOFs u (model.hpp's order) at ANY configuration: energy, gradient
+// and Hessian. The linear model (model.cpp, assemble) takes each stiffness term's gradient
+// at rest as a row of its factored stiffness B with D = k; the nonlinear chain
+// (nonlinear.cpp) adds the energy, gradient and Hessian along its path and in every step.
+//
+// Each stiffness term is k/2 r(u)^2 with a "measure" r(u) of a few DOFs:
+//   foundation at node h: r = r_h . u_h and t_h . u_h (r_h, t_h the radial and tangential unit
+//     vectors of the undeformed node, fixed also in large displacements, as the spec says),
+//     k = l k_r and l k_t (the node stands for one side l of ring);
+//   spring at node h: r = ux_h, uy_h (global directions), k = kx, ky; and kr on the rotation
+//     of the tangent at h (below; the chain: in series with 4 EI/l, model.hpp);
+//   the chain's clamp: 4 EI/l on the rotation (kr -> infinity in the same convention).
+// Linear measures have a zero Hessian: these terms are exactly quadratic in u. The rotation of
+// the tangent at node h is:
+//   frames: the rotation unknown th_h (linear);
+//   chain: the mean of the rotations of its two links from their rest directions,
+//     m_h = (dphi_{h-1} + dphi_h) / 2, dphi_j = atan2(e_j x d_j, e_j . d_j), d_j = x_{j+1} - x_j
+//     the deformed link and e_j its unit rest direction. Exact for any rotation of a link below
+//     pi from its rest direction (beyond, atan2 wraps: no term is defined there). At rest its
+//     gradient is model.hpp's chord rotation (nu_j . du / l per link); it is the multibody
+//     chain's m_h (multibody/attachments.hpp), written in positions.
+// Point masses: m on (ux_h, uy_h) (a constant mass; its weight under gravity is loads.hpp's
+// business through the translational mass), and the rotary inertia J on the rotation of the
+// tangent, for the chain J (4K / (4K + kr))^2 (model.hpp's convention).
+//
+// Cost: O(terms) for every member, O(n) to build (the foundation has 2 per node).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "ring/spec.hpp"
+
+namespace lumped {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// d angle(v) / dv = J v / |v|^2 (J: rotation by +90 deg) and its Hessian, symmetric.
+Eigen::Vector2d angle_gradient(const Eigen::Vector2d& v);
+Eigen::Matrix2d angle_hessian(const Eigen::Vector2d& v);
+
+/// The node at `deg` (anchor + 360 k / n), or std::invalid_argument naming `key`.
+int node_of(double deg, double anchor, int n, const std::string& key);
+/// std::invalid_argument naming `key` unless v is finite and >= 0.
+void check_nonnegative(double v, const std::string& key);
+
+/// A scalar function r(u) of a few DOFs at one configuration: value, gradient, Hessian.
+struct Measure {
+  double value = 0.0;
+  std::vector<int> dofs;   ///< the DOFs r depends on
+  Eigen::VectorXd grad;    ///< dr / du[dofs]
+  Eigen::MatrixXd hess;    ///< d2r / du[dofs]^2; empty for a linear measure
+};
+
+class Terms {
+ public:
+  /// \param rest node rest positions (x_0, y_0, x_1, ...), 2n values, on the model's n-gon
+  /// \param dofs_per_node 2 (chain) or 3 (frames)
+  /// Throws std::invalid_argument naming the key for points off the nodes and negative or
+  /// non-finite stiffnesses, masses and inertias.
+  Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, double side, const Eigen::VectorXd& rest);
+
+  /// A point mass, merged by node.
+  struct Inertia {
+    int node = 0;
+    double mass = 0.0;    ///< kg, on (ux, uy)
+    double rotary = 0.0;  ///< kg m^2, on rotation(node) (the chain's: J (4K / (4K + kr))^2)
+  };
+  const std::vector<Inertia>& inertia() const { return inertia_; }
+  bool any_stiffness() const { return !springs_.empty(); }
+
+  /// The rotation of the centroid line's tangent at node h at displacement u (see above).
+  Measure rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const;
+
+  /// Elastic energy of the terms at u, J.
+  double energy(const Eigen::VectorXd& u) const;
+  /// grad += its gradient at u.
+  void add_gradient(const Eigen::VectorXd& u, Eigen::VectorXd& grad) const;
+  /// out += scale * its Hessian at u, as (row, col) triplets of the DOFs.
+  void add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out) const;
+  /// The factored stiffness at rest: one row per term, its measure's gradient at u = 0, at
+  /// rows row0, row0 + 1, ...; d gets the stiffnesses (all > 0). Returns the rows added.
+  int rest_rows(int row0, Triplets& rows, std::vector<double>& d) const;
+
+ private:
+  struct Spring {
+    int node = -1;                              ///< >= 0: the rotation at this node
+    std::vector<std::pair<int, double>> row;    ///< else: a linear measure
+    double k = 0.0;
+  };
+  Measure measure(const Spring& s, const Eigen::VectorXd& u, bool with_hessian) const;
+
+  int n_ = 0, dpn_ = 2;
+  Eigen::VectorXd rest_;
+  std::vector<Spring> springs_;
+  std::vector<Inertia> inertia_;
+};
+
+}  // namespace lumped
