@@ -80,10 +80,10 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
   check_chain(spec, options, "statics");
   check_loads(spec, options, statics.loads, "static");
-  if (spec.rigid_modes() > 0)
+  if (ring::static_rigid_modes(spec, statics.loads) > 0)
     throw std::invalid_argument(
-        "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs or "
-        "a foundation that keep the ring from turning about the pin");
+        "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs, "
+        "a foundation or gravity from which the ring hangs, to keep it from turning about the pin");
   if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
 }
 

@@ -51,9 +51,15 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
         "otherwise the ring is free to turn about the pin");
 }
 
-void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions&, const ring::ResponseOptions& response) {
+void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                    const ring::ResponseOptions& response) {
   ring::refuse_timoshenko(spec, "multibody");
   ring::refuse_terms_beyond_paper(spec, "multibody response");
+  // Loads beyond one point load: the dense Newmark and generalized-alpha paths (loading.hpp).
+  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
+    ring::one_point_load(response.loads, "response", "multibody response.integrator = \"energy-momentum\"");
+  else if (backend(options, spec, response.loads, Analysis::response) == Backend::banded)
+    ring::one_point_load(response.loads, "response", "multibody method = \"sparse\" (the O(n) response)");
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
     throw std::invalid_argument("multibody::respond: dt must be > 0");

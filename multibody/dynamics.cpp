@@ -39,6 +39,7 @@ class ChainStepper : public paths::Stepper {
         gap_(detail::contact_gap(chain, depth)), depth_(depth), s_(std::move(start)) {
     for (double a : record) rec_.push_back(chain.hinge_at(a));
     x_load_ = chain.hinge_position(s_.q, p.load.hinge);
+    if (p.loading) potential_ = p.loading->potential(s_.q);
   }
 
   paths::StepOutcome try_step(double, double h) override {
@@ -50,9 +51,16 @@ class ChainStepper : public paths::Stepper {
   }
 
   void accept(double t) override {
-    const Eigen::Vector2d x1 = chain_.hinge_position(s1_.q, p_.load.hinge);
-    work_ += 0.5 * (p_.history.factor(s_.t) + p_.history.factor(s1_.t)) * p_.load.force.dot(x1 - x_load_);
-    x_load_ = x1;
+    const double f = 0.5 * (p_.history.factor(s_.t) + p_.history.factor(s1_.t));
+    if (p_.loading) {  // W = -sum f (Pi(q_n+1) - Pi(q_n)): exact for constant forces, as below
+      const double potential1 = p_.loading->potential(s1_.q);
+      work_ -= f * (potential1 - potential_);
+      potential_ = potential1;
+    } else {
+      const Eigen::Vector2d x1 = chain_.hinge_position(s1_.q, p_.load.hinge);
+      work_ += f * p_.load.force.dot(x1 - x_load_);
+      x_load_ = x1;
+    }
     if (damped_) {
       // Midpoint form h (v_n + v_{n+1})^T C (v_n + v_{n+1}) / 4: for newmark on a linear
       // system this is exactly the energy the discrete damping force removes.
@@ -108,6 +116,7 @@ class ChainStepper : public paths::Stepper {
   State s_, s1_;
   double h_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
   Eigen::Vector2d x_load_;
+  double potential_ = 0.0;  ///< the loads' potential at the state (Problem::loading)
 };
 
 }  // namespace
@@ -122,17 +131,25 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
     return respond_energy_momentum(spec, options, response, controls);
 
-  const ring::PointLoad& load = ring::one_point_load(response.loads, "response", "multibody");
-  const Chain chain(spec, options, load.angle);
+  // One point load on either backend (the paper's DeadLoad); more loads through Loading on
+  // the dense one (backend.hpp keeps "auto" dense for them).
+  const bool one_point = response.loads.beyond_one_point("response").empty() && !response.loads.points.empty();
+  const ring::PointLoad load = one_point ? response.loads.points.front() : ring::PointLoad{};
+  const Chain chain(spec, options,
+                    response.loads.points.empty() ? std::nullopt : std::optional<double>(response.loads.points.front().angle));
   const int n = chain.dofs();
-  Problem p{chain, {chain.hinge_at(load.angle), {load.force[0], load.force[1]}}, response.history};
+  std::optional<detail::Loading> loading;
+  if (!one_point) loading.emplace(chain, spec, response.loads, "response");
+  Problem p{chain, {one_point ? chain.hinge_at(load.angle) : 0, {load.force[0], load.force[1]}}, response.history,
+            loading ? &*loading : nullptr};
   // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
   // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
   const detail::Damping damping{response.rayleigh_mass,
                                 (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K()};
   const bool damped = damping.any();
-  const bool banded = backend(options, Analysis::response) == Backend::banded;
-  const std::unique_ptr<detail::NewtonBackend> newton = detail::make_newton_backend(chain, p.load, damping, banded);
+  const bool banded = backend(options, spec, response.loads, Analysis::response) == Backend::banded;
+  const std::unique_ptr<detail::NewtonBackend> newton =
+      detail::make_newton_backend(chain, p.load, damping, banded, p.loading);
   detail::NewtonBackend& nb = *newton;
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;

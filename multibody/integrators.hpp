@@ -33,6 +33,8 @@ struct Problem {
   const Chain& chain;
   DeadLoad load;
   ring::LoadHistory history;
+  /// Loads beyond one point load (loading.hpp), on the dense backend only; null: `load`.
+  const Loading* loading = nullptr;
 };
 
 /// Result of one attempted step.

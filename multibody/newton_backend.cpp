@@ -12,8 +12,8 @@ namespace {
 /// saddle-point matrix. O(n^2) memory.
 class DenseBackend final : public NewtonBackend {
  public:
-  DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping)
-      : NewtonBackend(chain, load, damping), inertia_(inertia_constants(chain)), K_(chain.stiffness_matrix()) {
+  DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading)
+      : NewtonBackend(chain, load, damping, loading), inertia_(inertia_constants(chain)), K_(chain.stiffness_matrix()) {
     if (damping.any())
       C_ = damping.mass * chain.mass_matrix(chain.q0()) + (damping.cyclic / chain.K()) * K_;
     else
@@ -25,8 +25,8 @@ class DenseBackend final : public NewtonBackend {
   bool initial_acceleration(const Vector& q, const Vector& v, double f, Vector& qdd, Vector& lambda) const override {
     const int n = chain_.dofs(), c = chain_.constraint_count();
     const Matrix G = chain_.constraint_jacobian(q);
-    Vector phi, xi;
-    load_forces(chain_, load_, q, phi, nullptr);
+    Vector xi;
+    const Vector phi = load_forces_at(q, f, nullptr);
     inertia_terms(inertia_, q, v, Vector::Zero(n), 0.0, 0.0, xi, nullptr);
     Matrix A = Matrix::Zero(n + c, n + c);
     A.topLeftCorner(n, n) = chain_.mass_matrix(q);
@@ -43,14 +43,11 @@ class DenseBackend final : public NewtonBackend {
 
   void residual(const Vector& q, const Vector& v, const Vector& qdd, double f, double cm, double cv, Vector& r,
                 bool tangent) override {
-    Vector phi, dphi;
-    load_forces(chain_, load_, q, phi, tangent ? &dphi : nullptr);
     if (tangent) T_ = K_;
     inertia_terms(inertia_, q, v, qdd, cm, cv, r, tangent ? &T_ : nullptr);
     if (tangent && damping_.any()) T_ += cv * C_;
-    r += chain_.spring_forces(q) - f * phi;
+    r += chain_.spring_forces(q) - f * load_forces_at(q, f, tangent ? &T_ : nullptr);
     if (damping_.any()) r += C_ * v;
-    if (tangent) T_.diagonal() -= f * dphi;
   }
 
   void add_to_tangent_diagonal(const Vector& d) override { T_.diagonal() += d; }
@@ -173,10 +170,23 @@ class StructuredBackend final : public NewtonBackend {
 
 }  // namespace
 
+Vector NewtonBackend::load_forces_at(const Vector& q, double f, Matrix* tangent) const {
+  if (loading_) {
+    if (tangent) loading_->add_stiffness(q, f, *tangent);
+    return loading_->forces(q);
+  }
+  Vector phi, dphi;
+  load_forces(chain_, load_, q, phi, tangent ? &dphi : nullptr);
+  if (tangent) tangent->diagonal() -= f * dphi;
+  return phi;
+}
+
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
-                                                   bool structured) {
+                                                   bool structured, const Loading* loading) {
+  if (structured && loading)
+    throw std::invalid_argument("multibody: the O(n) response takes one point load only (method = \"sparse\")");
   if (structured) return std::make_unique<StructuredBackend>(chain, load, damping);
-  return std::make_unique<DenseBackend>(chain, load, damping);
+  return std::make_unique<DenseBackend>(chain, load, damping, loading);
 }
 
 }  // namespace multibody::detail

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "multibody/chain.hpp"
+#include "multibody/dynamics.hpp"
 #include "multibody/loading.hpp"
 #include "multibody/statics.hpp"
 #include "ring/closed_form.hpp"
@@ -164,6 +165,40 @@ TEST(MultibodyLoading, TheSparseStaticsRefusesWhatItCannotAssemble) {
     ADD_FAILURE() << "the O(n) statics took a pressure";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("static.pressure"), std::string::npos) << e.what();
+  }
+}
+
+// A pressure pulse of each kind with gravity and two point loads (the dense Newmark path):
+// the undamped balance T + V - W, W the loads' work from their potential, stays within the
+// energy guard's 1 % of the work (ring/energy_guard.hpp; average acceleration conserves a
+// quadratic energy exactly, so what remains is the O(dt^2) of the non-quadratic part),
+// and halves by about 4 when dt halves (order 2).
+TEST(MultibodyLoading, APressurePulseKeepsTheEnergyBalance) {
+  const ring::RingSpec spec = ringtest::pin_roller_ring();
+  for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
+    std::vector<double> drift;
+    for (double dt : {0.02, 0.01}) {
+      ring::ResponseOptions r;
+      r.loads.points = {{0.0, {-5e3, 0.0}}, {90.0, {0.0, -5e3}}};
+      r.loads.pressure = {0.5 * ring::closed_form::critical_pressure(spec, kind), kind};
+      r.loads.gravity = {0.0, -9.81};
+      r.history = {ring::LoadHistory::Kind::half_sine, 0.5};
+      r.dt = dt;
+      r.t_end = 1.0;
+      r.record = {0.0, 90.0};
+      ring::MultibodyOptions o;
+      o.n = 40;
+      const ring::TimeHistory h = multibody::respond(spec, o, r);
+      double work = 0.0, worst = 0.0;
+      for (std::size_t k = 0; k < h.t.size(); ++k) {
+        work = std::max(work, std::abs(h.work[k]));
+        worst = std::max(worst, std::abs(h.kinetic[k] + h.strain[k] - h.work[k]));
+      }
+      ASSERT_GT(work, 0.0);
+      EXPECT_LT(worst, 1e-2 * work) << ring::to_string(kind) << ", dt = " << dt;
+      drift.push_back(worst / work);
+    }
+    EXPECT_GT(drift[0] / drift[1], 3.0) << ring::to_string(kind) << ": " << drift[0] << " " << drift[1];
   }
 }
 
