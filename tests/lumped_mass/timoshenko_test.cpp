@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "lumped_mass/checks.hpp"
 #include "lumped_mass/eigen.hpp"
 #include "lumped_mass/model.hpp"
 #include "lumped_mass/modes.hpp"
@@ -276,6 +277,213 @@ TEST(TimoshenkoFrameStiffShear, ApproachesTheEulerFrameWithRotaryInertia) {
               count, diff[0], diff[1], diff[2], p);
   EXPECT_NEAR(p, -1.0, 0.05) << "measured slope " << p;
   EXPECT_LT(diff.back(), 1e-7);
+}
+
+// ---------------------------------------------------------------- the terms
+
+// The foundation (model.cpp's nodal term, shared by every variant) on the thick ring against
+// free_ring_timoshenko with the foundation in its K: the lowest branch of k = 0 (the rotation
+// held by k_t, one mode) and the flexural pairs k = 1 .. 4 (k = 1: the translation held by the
+// foundation), fitted order 2 +- 0.1 over n = 80, 160, 320 as without a foundation; ceiling 2x
+// the largest measured at n = 320 (printed).
+TEST(TimoshenkoFrameTerms, FoundationAgainstTheClosedForm) {
+  ring::RingSpec spec = thick_ring(Shape::rectangle, 0.1);
+  const double unit = spec.EI() / std::pow(spec.radius, 4);
+  spec.foundation.radial = 200.0 * unit;
+  spec.foundation.tangential = 50.0 * unit;
+  const std::vector<double> ns{80, 160, 320};
+  std::vector<std::vector<double>> err(5);
+  for (double n : ns) {
+    const lumped::Model m = lumped::assemble(spec, lumptest::options(static_cast<int>(n), kTimoshenko));
+    const lumped::Eigenpairs p = lumped::solve(m, 30);
+    ASSERT_EQ(p.rigid, 0);
+    const auto modes = by_wave_number(m, p);
+    for (int k = 0; k <= 4; ++k) {
+      const double exact = ring::closed_form::free_ring_timoshenko(spec, k)[0];
+      if (k == 0) {
+        ASSERT_TRUE(modes.count(0)) << "n = " << n;
+        err[0].push_back((modes.at(0)[0] - exact) / exact);
+      } else {
+        err[k].push_back(pair_error(modes, k, exact, static_cast<int>(n)));
+      }
+    }
+  }
+  for (int k = 0; k <= 4; ++k) {
+    const double p = fitted_order(ns, err[k]);
+    std::printf("[timoshenko-frame on a foundation] k = %d  rel. errors n=80..320: %+.3e %+.3e %+.3e  fitted order "
+                "%.3f\n",
+                k, err[k][0], err[k][1], err[k][2], p);
+    EXPECT_NEAR(p, 2.0, 0.1) << "k = " << k << ": measured order " << p;
+    EXPECT_LT(std::abs(err[k].back()), 3e-4) << "k = " << k;
+  }
+}
+
+// Point masses on every node with m = c rho A l and J = c rho I l are the ring itself with
+// density (1 + c) rho: the same discrete model (model.cpp adds m to the translations and J to
+// the node's rotation unknown, the section rotation), so omega / sqrt(1 + c) exactly; 1e-12:
+// rounding, measured ~1e-14. Checks that J reaches the rotation the element's rho I sits on.
+TEST(TimoshenkoFrameTerms, PointMassesOnEveryNodeAreDensity) {
+  const int n = 24, count = 20;
+  const double c = 0.5;
+  const ring::RingSpec base = thick_ring(Shape::circle, 0.3);
+  ring::RingSpec loaded = base, dense = base;
+  const double l = 2.0 * M_PI * base.radius / n;
+  for (int j = 0; j < n; ++j) loaded.masses.push_back({360.0 * j / n, c * base.rhoA() * l, c * base.rhoI() * l});
+  dense.rho *= 1.0 + c;
+  const ring::ModalResult a = lumped::compute_modes(loaded, lumptest::options(n, kTimoshenko), count);
+  const ring::ModalResult b = lumped::compute_modes(dense, lumptest::options(n, kTimoshenko), count);
+  for (int i = 0; i < count; ++i) EXPECT_TRUE(ringtest::IsClose(a.omega[i], b.omega[i], 1e-12)) << "mode " << i + 1;
+}
+
+// Stiff springs are penalties for the constraints they stand for (terms_test.cpp's check, here
+// on the thick Timoshenko ring): kx = ky at 0 deg -> a further pin there, kr at the pin
+// (180 deg) -> the clamp, both on the node's section rotation; the relative difference falls as
+// 1/k: fitted slope -1 +- 0.05 over kr = 1e4 .. 1e6 EI/R and kx = ky = 1e5 .. 1e7 EI/R^3 (a
+// decade higher than for the thin paper ring: this ring's own stiffness at the pin is membrane,
+// ~EA/R = (R/r)^2 EI/R^3 = 133 EI/R^3 at depth/R = 0.3; from 1e4 the slope was -0.93). Same n.
+TEST(TimoshenkoFrameTerms, StiffSpringsConvergeToPinAndClamp) {
+  const int n = 40, count = 8;
+  ring::RingSpec base = thick_ring(Shape::rectangle, 0.3);
+  base.supports.pin = 180.0;
+  const double EI = base.EI(), R = base.radius;
+  ring::RingSpec pinned = base, clamped = base;
+  pinned.supports.pins = {0.0};
+  clamped.supports.clamp = 180.0;
+  const ring::ModalResult rp = lumped::compute_modes(pinned, lumptest::options(n, kTimoshenko), count);
+  const ring::ModalResult rc = lumped::compute_modes(clamped, lumptest::options(n, kTimoshenko), count);
+  for (const bool pin : {true, false}) {
+    const std::vector<double> ratio = pin ? std::vector<double>{1e5, 1e6, 1e7} : std::vector<double>{1e4, 1e5, 1e6};
+    std::vector<double> err;
+    for (double q : ratio) {
+      ring::RingSpec s = base;
+      ring::Spring sp;
+      sp.angle = pin ? 0.0 : 180.0;
+      if (pin) sp.kx = sp.ky = q * EI / (R * R * R);
+      else sp.kr = q * EI / R;
+      s.supports.springs.push_back(sp);
+      const ring::ModalResult r = lumped::compute_modes(s, lumptest::options(n, kTimoshenko), count);
+      const ring::ModalResult& target = pin ? rp : rc;
+      ASSERT_EQ(r.rigid_modes, target.rigid_modes);
+      double e = 0.0;
+      for (int i = 0; i < count; ++i) e = std::max(e, ringtest::rel(r.omega[i], target.omega[i]));
+      err.push_back(e);
+    }
+    const double p = slope(ratio, err);
+    std::printf("[timoshenko-frame spring -> %s] max rel. diff (modes 1-%d) at k = %.0e, %.0e, %.0e: %.3e %.3e %.3e, "
+                "slope %.3f\n",
+                pin ? "pin" : "clamp", count, ratio[0], ratio[1], ratio[2], err[0], err[1], err[2], p);
+    EXPECT_NEAR(p, -1.0, 0.05) << (pin ? "pin" : "clamp") << ": measured slope " << p;
+  }
+}
+
+// Rigid modes and the elastic count: every DOF of the Timoshenko frame carries mass, so the
+// elastic modes are 3n - constraint rows - RingSpec::rigid_modes() (compare/registry.cpp's
+// elastic_modes); the rigid count found equals the spec's.
+TEST(TimoshenkoFrameTerms, RigidModesAndElasticCount) {
+  const int n = 12;
+  const ring::RingSpec free = thick_ring(Shape::rectangle, 0.1);
+  struct Set { const char* what; ring::RingSpec spec; };
+  std::vector<Set> sets;
+  sets.push_back({"free", free});
+  ring::RingSpec s = free;
+  s.supports.pin = 180.0;
+  sets.push_back({"pin", s});
+  s.supports.roller = 0.0;
+  sets.push_back({"pin + roller", s});
+  s = free;
+  s.supports.pin = 180.0;
+  s.supports.clamp = 180.0;
+  sets.push_back({"clamp", s});
+  s = free;
+  s.foundation.radial = 10.0 * free.EI() / std::pow(free.radius, 4);
+  sets.push_back({"radial foundation", s});
+  for (const Set& set : sets) {
+    const lumped::Model m = lumped::assemble(set.spec, lumptest::options(n, kTimoshenko));
+    const int held = set.spec.supports.constraint_rows() + set.spec.rigid_modes();
+    EXPECT_EQ(lumped::elastic_dofs(m), 3 * n - held) << set.what;
+    const lumped::Eigenpairs p = lumped::solve(m, 3 * n - held, lumped::Method::dense);
+    EXPECT_EQ(p.rigid, set.spec.rigid_modes()) << set.what;
+  }
+}
+
+// ---------------------------------------------------------------- the solver paths
+
+// Dense and sparse paths agree and the pairs are eigenpairs of the assembled K and M, on the
+// thin ring where the spread of the spectrum is widest (the rotations' rho I l/2 against
+// k = 2: lambda_max / lambda_min ~ 1e10 at n = 200). Tolerances: dense eps sqrt(lambda_max /
+// lambda) ~ 2e-11 relative (eigen.hpp), so 1e-9 on omega; backward error and M-orthonormality
+// 1e-10 (measured in the printout).
+TEST(TimoshenkoFrameSolver, DenseAndSparseAgreeWithSmallResiduals) {
+  const int n = 200, count = 12;
+  for (double depth : {1e-3, 0.3}) {
+    const ring::RingSpec spec = thick_ring(Shape::rectangle, depth);
+    const lumped::Model m = lumped::assemble(spec, lumptest::options(n, kTimoshenko));
+    const lumped::Eigenpairs d = lumped::solve(m, count, lumped::Method::dense);
+    const lumped::Eigenpairs sp = lumped::solve(m, count, lumped::Method::sparse);
+    ASSERT_EQ(d.rigid, 3);
+    ASSERT_EQ(sp.rigid, 3);
+    double worst = 0.0, backward = 0.0, ortho = 0.0;
+    for (int i = 3; i < 3 + count; ++i) {
+      worst = std::max(worst, ringtest::rel(std::sqrt(sp.lambda[i]), std::sqrt(d.lambda[i])));
+      for (const lumped::Eigenpairs* p : {&d, &sp}) {
+        const Eigen::VectorXd x = p->X.col(i);
+        const Eigen::VectorXd r = m.K * x - p->lambda[i] * (m.M * x);
+        backward = std::max(backward, r.norm() / (Eigen::MatrixXd(m.K).norm() + p->lambda[i] * Eigen::MatrixXd(m.M).norm()));
+        ortho = std::max(ortho, std::abs(x.dot(m.M * x) - 1.0));
+      }
+    }
+    std::printf("[timoshenko-frame n=%d depth/R %.0e] dense vs sparse %.1e, backward error %.1e, |x^T M x - 1| %.1e\n", n,
+                depth, worst, backward, ortho);
+    EXPECT_LT(worst, 1e-9) << "depth " << depth;
+    EXPECT_LT(backward, 1e-10) << "depth " << depth;
+    EXPECT_LT(ortho, 1e-10) << "depth " << depth;
+  }
+}
+
+// ---------------------------------------------------------------- the theory rule
+
+// ring.theory = "timoshenko" takes only "timoshenko-frame"; "timoshenko-frame" takes only
+// ring.theory = "timoshenko"; both refusals name the variant and the key to change, before
+// anything is assembled (checks.hpp check_theory; compute_modes and assemble both apply it).
+TEST(TimoshenkoFrameRefusals, TheVariantMustMatchTheTheory) {
+  const ring::RingSpec timo = thick_ring(Shape::rectangle, 0.1);
+  for (LumpedOptions::Variant v : {lumptest::kChain, kFrame, lumptest::kConsistent}) {
+    for (const bool through_modes : {true, false}) {
+      try {
+        if (through_modes) lumped::compute_modes(timo, lumptest::options(40, v), 4);
+        else lumped::assemble(timo, lumptest::options(40, v));
+        ADD_FAILURE() << ring::to_string(v) << " accepted a Timoshenko ring";
+      } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("\"" + ring::to_string(v) + "\""), std::string::npos) << what;
+        EXPECT_NE(what.find("timoshenko-frame"), std::string::npos) << what;
+      }
+    }
+  }
+  ring::RingSpec euler = timo;
+  euler.theory = ring::Theory::euler_bernoulli;
+  try {
+    lumped::compute_modes(euler, lumptest::options(40, kTimoshenko), 4);
+    ADD_FAILURE() << "timoshenko-frame accepted an Euler-Bernoulli ring";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("ring.theory"), std::string::npos) << what;
+    EXPECT_NE(what.find("\"timoshenko-frame\""), std::string::npos) << what;
+  }
+  // A general section has no Cowper coefficient: kappa G A = 0 is refused by name.
+  ring::RingSpec general = timo;
+  general.section.shape = Shape::general;
+  general.section.area_ = timo.A();
+  general.section.inertia_ = timo.I();
+  EXPECT_THROW(lumped::compute_modes(general, lumptest::options(40, kTimoshenko), 4), std::invalid_argument);
+  general.shear_coefficient = 0.85;
+  EXPECT_NO_THROW(lumped::compute_modes(general, lumptest::options(40, kTimoshenko), 4));
+  // The nonlinear analyses have no Timoshenko model (the chain only).
+  ring::RingSpec pinned = timo;
+  pinned.supports.pin = 180.0;
+  pinned.supports.roller = 0.0;
+  ring::StaticOptions statics;
+  EXPECT_THROW(lumped::check_static(pinned, lumptest::options(40, kTimoshenko), statics), std::invalid_argument);
 }
 
 }  // namespace
