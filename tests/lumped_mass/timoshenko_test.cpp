@@ -6,7 +6,7 @@
 //   continuum thin-ring Timoshenko model with shear and the section's rotary inertia), modes
 //   paired by wave number, k = 2..6, depth/R = 0.1 and 0.3, rectangle and circle, with the
 //   fitted order over n = 40, 80, 160, 320;
-// - the thin limit (depth/R = 1e-3, phi = 12 EI/(kGA l^2) ~ 1e-5 at n = 40): the same order
+// - the thin limit (depth/R = 1e-3, phi = 12 EI/(kGA l^2) = 1.2e-4 at n = 40): the same order
 //   and the same error as the Euler-Bernoulli lumped frame: no shear locking;
 // - kappa -> infinity: the lumped Euler-Bernoulli frame with a point inertia rho I l at every
 //   node (its own element and its own point-mass term), the difference falling as 1/kappa;
@@ -141,7 +141,8 @@ double fitted_order(const std::vector<double>& ns, const std::vector<double>& er
 // ---------------------------------------------------------------- the element
 
 // K assembled from Przemieniecki's matrix equals the factored B^T diag(D) B the solvers use,
-// for a thick ring (phi ~ 1 at n = 8) and a thin one (phi ~ 1e-5): the strain rows (axial,
+// for a thick ring (phi = 0.45 and 11 at n = 8 and 40) and a thin one (phi = 5e-6 and 1.2e-4):
+// the strain rows (axial,
 // curvature at two Gauss points, shear strain) carry exactly the element's energy.
 // 1e-12 relative to ||K||: rounding of sums of O(1) terms, measured 1e-15.
 TEST(TimoshenkoFrameElement, FactoredRowsEqualPrzemienieckisMatrix) {
@@ -221,10 +222,11 @@ INSTANTIATE_TEST_SUITE_P(Sections, TimoshenkoFrameConvergence,
                            return shape + (i.param.depth == 0.1 ? "_0p1" : i.param.depth == 0.3 ? "_0p3" : "_thin");
                          });
 
-// The thin limit shows that the element does not lock: at depth/R = 1e-3 (phi = 12 EI /
-// (kGA l^2) from 4.8e-6 at n = 160 down to 3.1e-7) a locking element (one whose shear strain
-// cannot vanish under pure bending, e.g. linear interpolation with full integration) would be
-// too stiff by a factor ~ (l / depth)^2 and converge only once l < depth. Here the error at
+// The thin limit shows that the element does not lock: at depth/R = 1e-3 and n = 40, 80, 160
+// the elements are 157, 79, 39 times longer than deep (phi = 12 EI / (kGA l^2) = 1.2e-4,
+// 5.0e-4, 2.0e-3), where a locking element (one whose shear strain cannot vanish under pure
+// bending, e.g. linear interpolation with full integration) would be too stiff by a factor
+// ~ (l / depth)^2 and converge only once l < depth. Here the error at
 // every n is that of the Euler-Bernoulli lumped frame on the same ring, each against its own
 // closed form (free_ring_timoshenko and free_ring_extensible, which differ by ~(k depth/R)^2
 // ~ 4e-5): agreement to 1e-3 relative (measured 1.4e-4 at most, k = 6, n = 40: the two models
@@ -251,7 +253,7 @@ TEST(TimoshenkoFrameThin, ErrorsAreTheEulerFramesAtEveryN) {
 // Euler-Bernoulli frame with a point inertia J = rho I l at every node (masses[] with m = 0:
 // model.cpp's point-mass term, an independent path for the rotary inertia). The difference is
 // O(phi), so it falls as 1/kappa: fitted slope -1 +- 0.05 over kappa = 1e3 .. 1e7 times
-// Cowper's, and below 1e-7 at the largest (phi ~ 1e-8; measured in the printout).
+// Cowper's, and below 1e-7 at the largest (phi = 1.2e-7 there; measured 6.4e-9).
 TEST(TimoshenkoFrameStiffShear, ApproachesTheEulerFrameWithRotaryInertia) {
   const int n = 40, count = 12;
   ring::RingSpec euler = thick_ring(Shape::rectangle, 0.1);
