@@ -58,9 +58,26 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 
 }  // namespace
 
+void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
+  const bool timoshenko_model = options.variant == ring::LumpedOptions::Variant::timoshenko_frame;
+  const std::string variant = "lumped.variant = \"" + ring::to_string(options.variant) + "\"";
+  if (spec.theory == ring::Theory::timoshenko && !timoshenko_model)
+    throw std::invalid_argument("lumped: " + variant +
+                                " is an Euler-Bernoulli model (no shear strain, no rotary inertia of the section), "
+                                "but ring.theory = \"timoshenko\"; use lumped.variant = \"timoshenko-frame\"");
+  if (spec.theory == ring::Theory::euler_bernoulli && timoshenko_model)
+    throw std::invalid_argument("lumped: " + variant +
+                                " has shear strain and the section's rotary inertia, which ring.theory = "
+                                "\"euler-bernoulli\" leaves out; set ring.theory = \"timoshenko\", or use "
+                                "\"chain\", \"frame\" or \"frame-consistent\"");
+  if (timoshenko_model && !(spec.kGA() > 0.0 && std::isfinite(spec.kGA())))
+    throw std::invalid_argument("lumped: " + variant + " needs a shear stiffness kappa G A > 0 (ring.shear_coefficient = " +
+                                std::to_string(spec.kappa()) + ", ring.nu = " + std::to_string(spec.nu) + ")");
+}
+
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
-  ring::refuse_timoshenko(spec, "lumped");
+  check_theory(spec, options);
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
   const double anchor = spec.supports.pin.value_or(0.0);
   std::vector<std::pair<std::string, double>> points;

@@ -9,8 +9,14 @@
 
 namespace lumped {
 
-/// Linear modes: every term of RingSpec (supports, masses, foundation) is in the model;
-/// n >= 4 and every point (pins, clamp, springs, masses) a node: anchor + 360 k / n.
+/// The variant must model the theory asked for: ring.theory = "timoshenko" takes only
+/// "timoshenko-frame" (the others have neither shear nor the section's rotary inertia), and
+/// "timoshenko-frame" only ring.theory = "timoshenko" (with "euler-bernoulli" it would add
+/// what the theory leaves out); the Timoshenko frame also needs a shear stiffness kappa G A > 0.
+void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options);
+/// Linear modes: the theory rule (check_theory); every term of RingSpec (supports, masses,
+/// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
+/// anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
 /// material, every point of the spec (pins, clamp, springs, masses) and every point load on a

@@ -1,6 +1,7 @@
 #include "lumped_mass/model.hpp"
 
 #include "lumped_mass/terms.hpp"
+#include "lumped_mass/checks.hpp"
 
 #include <array>
 #include <cmath>
@@ -26,6 +27,7 @@ std::vector<Vec2> polygon(int n, double anchor_deg, double circumradius) {
 }
 
 void check_spec(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
+  check_theory(spec, options);
   if (options.n < 4)
     throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
   const std::array<std::pair<const char*, double>, 5> positive{{{"ring.radius", spec.radius},
@@ -157,54 +159,118 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   m.massless.assign(N, 0);
 }
 
-/// Frame: element j on side j from node j to j+1. Local DOFs (u1, v1, th1, u2, v2, th2)
-/// along / normal to the side; global = R^T local R with R = blockdiag(r, r),
-/// r = [[c, s, 0], [-s, c, 0], [0, 0, 1]].
-void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, double l, bool consistent,
-                    Model& m) {
-  const int n = m.n, N = 3 * n;
+/// One straight two-node element in local DOFs (u1, v1, th1, u2, v2, th2), u along the side
+/// from node 1 to node 2, v normal to it (left), th the rotation (ccw): its stiffness k, mass
+/// m, strain rows b (energy 1/2 sum_i d_i (b x)_i^2 = 1/2 x^T k x) and the DOFs it leaves
+/// without mass.
+struct Element {
+  Eigen::Matrix<double, 6, 6> k = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 6> m = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, Eigen::Dynamic, 6> b;
+  Eigen::VectorXd d;
+  bool massless_rotations = false;
+};
+
+/// Local indices of the bending DOFs (v1, th1, v2, th2).
+constexpr std::array<int, 4> kBend{1, 2, 4, 5};
+
+/// Euler-Bernoulli: linear axial bar (EA), cubic Hermite bending (EI). Rows of b: axial strain
+/// (u2 - u1)/l, d = EA l; curvature v'' of the Hermite cubic at the Gauss points, with
+/// N1'' = -6/l^2 + 12x/l^3, N2'' = -4/l + 6x/l^2, N3'' = 6/l^2 - 12x/l^3, N4'' = -2/l + 6x/l^2
+/// on (v1, th1, v2, th2), d = EI l/2 (two-point Gauss integrates the linear curvature's
+/// energy exactly). Mass rho A l/2 per end on the translations (lumped, rotations massless)
+/// or the consistent matrix.
+Element euler_element(const ring::RingSpec& spec, double l, bool consistent) {
   const double EA = spec.EA(), EI = spec.EI(), rA = spec.rhoA();
-  Eigen::Matrix<double, 6, 6> kl = Eigen::Matrix<double, 6, 6>::Zero(), ml = kl;
-  // Linear axial bar.
-  kl(0, 0) = kl(3, 3) = EA / l;
-  kl(0, 3) = kl(3, 0) = -EA / l;
-  // Cubic Hermite bending on (v1, th1, v2, th2) = local 1, 2, 4, 5.
-  const std::array<int, 4> bi{1, 2, 4, 5};
+  Element e;
+  e.k(0, 0) = e.k(3, 3) = EA / l;
+  e.k(0, 3) = e.k(3, 0) = -EA / l;
   const double kb[4][4] = {{12, 6 * l, -12, 6 * l},
                            {6 * l, 4 * l * l, -6 * l, 2 * l * l},
                            {-12, -6 * l, 12, -6 * l},
                            {6 * l, 2 * l * l, -6 * l, 4 * l * l}};
   for (int r = 0; r < 4; ++r)
-    for (int s = 0; s < 4; ++s) kl(bi[r], bi[s]) = EI / (l * l * l) * kb[r][s];
+    for (int s = 0; s < 4; ++s) e.k(kBend[r], kBend[s]) = EI / (l * l * l) * kb[r][s];
   if (consistent) {
-    ml(0, 0) = ml(3, 3) = rA * l / 3.0;
-    ml(0, 3) = ml(3, 0) = rA * l / 6.0;
+    e.m(0, 0) = e.m(3, 3) = rA * l / 3.0;
+    e.m(0, 3) = e.m(3, 0) = rA * l / 6.0;
     const double mb[4][4] = {{156, 22 * l, 54, -13 * l},
                              {22 * l, 4 * l * l, 13 * l, -3 * l * l},
                              {54, 13 * l, 156, -22 * l},
                              {-13 * l, -3 * l * l, -22 * l, 4 * l * l}};
     for (int r = 0; r < 4; ++r)
-      for (int s = 0; s < 4; ++s) ml(bi[r], bi[s]) = rA * l / 420.0 * mb[r][s];
+      for (int s = 0; s < 4; ++s) e.m(kBend[r], kBend[s]) = rA * l / 420.0 * mb[r][s];
   } else {
-    for (int i : {0, 1, 3, 4}) ml(i, i) = rA * l / 2.0;  // isotropic, so rotation-invariant
+    for (int i : {0, 1, 3, 4}) e.m(i, i) = rA * l / 2.0;  // isotropic, so rotation-invariant
+    e.massless_rotations = true;
   }
-  // Strain rows in local DOFs: axial (u2 - u1)/l; curvature v'' of the Hermite cubic at
-  // the Gauss points, with N1'' = -6/l^2 + 12x/l^3, N2'' = -4/l + 6x/l^2,
-  // N3'' = 6/l^2 - 12x/l^3, N4'' = -2/l + 6x/l^2 on (v1, th1, v2, th2).
-  Eigen::Matrix<double, 3, 6> bl = Eigen::Matrix<double, 3, 6>::Zero();
-  bl(0, 0) = -1.0 / l;
-  bl(0, 3) = 1.0 / l;
+  e.b = Eigen::Matrix<double, 3, 6>::Zero();
+  e.b(0, 0) = -1.0 / l;
+  e.b(0, 3) = 1.0 / l;
   for (int g = 0; g < 2; ++g) {
     const double x = 0.5 * l * (1.0 + (g == 0 ? -1.0 : 1.0) / std::sqrt(3.0));
-    bl(1 + g, 1) = -6.0 / (l * l) + 12.0 * x / (l * l * l);
-    bl(1 + g, 2) = -4.0 / l + 6.0 * x / (l * l);
-    bl(1 + g, 4) = 6.0 / (l * l) - 12.0 * x / (l * l * l);
-    bl(1 + g, 5) = -2.0 / l + 6.0 * x / (l * l);
+    e.b(1 + g, 1) = -6.0 / (l * l) + 12.0 * x / (l * l * l);
+    e.b(1 + g, 2) = -4.0 / l + 6.0 * x / (l * l);
+    e.b(1 + g, 4) = 6.0 / (l * l) - 12.0 * x / (l * l * l);
+    e.b(1 + g, 5) = -2.0 / l + 6.0 * x / (l * l);
   }
-  m.D.resize(3 * n);
+  e.d.resize(3);
+  e.d << EA * l, EI * l / 2.0, EI * l / 2.0;
+  return e;
+}
+
+/// Timoshenko: Przemieniecki's element (Theory of Matrix Structural Analysis, 1968, sec. 5.6),
+/// the exact static solution of a straight shear-flexible beam without span load, with
+/// phi = 12 EI / (kappa G A l^2): on (v1, th1, v2, th2)
+///   k = EI / ((1 + phi) l^3) [12, 6l, -12, 6l; 6l, (4 + phi) l^2, -6l, (2 - phi) l^2; ...],
+/// th the rotation of the cross-section. Its energy in the element's two deformations, with
+/// beta = (v2 - v1)/l the chord rotation, s = (th1 + th2)/2 - beta and d = th2 - th1:
+/// curvature th' = d/l - 6 s (1 - 2x/l) / (l (1 + phi)) (linear), shear strain
+/// gamma = th - v' = phi s / (1 + phi) (constant). Rows of b: axial strain (d = EA l), the
+/// curvature at the two Gauss points (d = EI l/2, exact for its square), the shear strain
+/// (d = kappa G A l): 1/2 b^T d b equals k (tests/lumped_mass/timoshenko_test.cpp checks it).
+/// phi -> 0 gives the Hermite element exactly and the shear row's energy 6 EI phi s^2 /
+/// (l (1 + phi)^2) vanishes with phi: no shear locking, whatever the slenderness.
+/// Mass lumped (row sum): rho A l/2 per end on the translations and rho I l/2 on the
+/// rotations (the section's rotary inertia; every DOF inertial, none condensed).
+Element timoshenko_element(const ring::RingSpec& spec, double l) {
+  const double EA = spec.EA(), EI = spec.EI(), kGA = spec.kGA();
+  const double phi = 12.0 * EI / (kGA * l * l);
+  Element e;
+  e.k(0, 0) = e.k(3, 3) = EA / l;
+  e.k(0, 3) = e.k(3, 0) = -EA / l;
+  const double kb[4][4] = {{12, 6 * l, -12, 6 * l},
+                           {6 * l, (4 + phi) * l * l, -6 * l, (2 - phi) * l * l},
+                           {-12, -6 * l, 12, -6 * l},
+                           {6 * l, (2 - phi) * l * l, -6 * l, (4 + phi) * l * l}};
+  for (int r = 0; r < 4; ++r)
+    for (int s = 0; s < 4; ++s) e.k(kBend[r], kBend[s]) = EI / ((1.0 + phi) * l * l * l) * kb[r][s];
+  for (int i : {0, 1, 3, 4}) e.m(i, i) = spec.rhoA() * l / 2.0;
+  for (int i : {2, 5}) e.m(i, i) = spec.rhoI() * l / 2.0;
+  // s and d on (v1, th1, v2, th2).
+  const double s[4] = {1.0 / l, 0.5, -1.0 / l, 0.5}, d[4] = {0.0, -1.0, 0.0, 1.0};
+  e.b = Eigen::Matrix<double, 4, 6>::Zero();
+  e.b(0, 0) = -1.0 / l;
+  e.b(0, 3) = 1.0 / l;
+  for (int g = 0; g < 2; ++g) {
+    const double slope = -6.0 * (g == 0 ? 1.0 : -1.0) / std::sqrt(3.0) / (l * (1.0 + phi));  // 1 - 2x/l = +-1/sqrt 3
+    for (int r = 0; r < 4; ++r) e.b(1 + g, kBend[r]) = d[r] / l + slope * s[r];
+  }
+  for (int r = 0; r < 4; ++r) e.b(3, kBend[r]) = phi / (1.0 + phi) * s[r];
+  e.d.resize(4);
+  e.d << EA * l, EI * l / 2.0, EI * l / 2.0, kGA * l;
+  return e;
+}
+
+/// Frame: element j on side j from node j to j+1, the element `e` rotated into the global
+/// DOFs: global = R^T local R with R = blockdiag(r, r), r = [[c, s, 0], [-s, c, 0], [0, 0, 1]].
+/// O(n).
+void assemble_frame(const Element& e, const std::vector<Vec2>& p, Model& m) {
+  const int n = m.n, N = 3 * n, rows = static_cast<int>(e.b.rows());
+  m.D.resize(rows * n);
   Triplets kt, mt, bt;
   for (int j = 0; j < n; ++j) {
-    m.D.segment(3 * j, 3) << EA * l, EI * l / 2.0, EI * l / 2.0;
+    m.D.segment(rows * j, rows) = e.d;
     const int a = j, b = (j + 1) % n;
     const double dx = p[b].x - p[a].x, dy = p[b].y - p[a].y, len = std::hypot(dx, dy);
     const double c = dx / len, s = dy / len;
@@ -214,12 +280,12 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
       R(o + 1, o) = -s; R(o + 1, o + 1) = c;
       R(o + 2, o + 2) = 1.0;
     }
-    const Eigen::Matrix<double, 6, 6> kg = R.transpose() * kl * R, mg = R.transpose() * ml * R;
-    const Eigen::Matrix<double, 3, 6> bg = bl * R;
+    const Eigen::Matrix<double, 6, 6> kg = R.transpose() * e.k * R, mg = R.transpose() * e.m * R;
+    const Eigen::Matrix<double, Eigen::Dynamic, 6> bg = e.b * R;
     const std::array<int, 6> dof{3 * a, 3 * a + 1, 3 * a + 2, 3 * b, 3 * b + 1, 3 * b + 2};
-    for (int r = 0; r < 3; ++r)
+    for (int r = 0; r < rows; ++r)
       for (int s2 = 0; s2 < 6; ++s2)
-        if (bg(r, s2) != 0.0) bt.emplace_back(3 * j + r, dof[s2], bg(r, s2));
+        if (bg(r, s2) != 0.0) bt.emplace_back(rows * j + r, dof[s2], bg(r, s2));
     for (int r = 0; r < 6; ++r)
       for (int s2 = 0; s2 < 6; ++s2) {
         if (kg(r, s2) != 0.0) kt.emplace_back(dof[r], dof[s2], kg(r, s2));
@@ -230,11 +296,11 @@ void assemble_frame(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   m.K.setFromTriplets(kt.begin(), kt.end());
   m.M.resize(N, N);
   m.M.setFromTriplets(mt.begin(), mt.end());
-  m.B.resize(3 * n, N);
+  m.B.resize(rows * n, N);
   m.B.setFromTriplets(bt.begin(), bt.end());
   m.C.resize(0, N);
   m.massless.assign(N, 0);
-  if (!consistent)
+  if (e.massless_rotations)
     for (int k = 0; k < n; ++k) m.massless[3 * k + 2] = 1;
 }
 
@@ -310,10 +376,13 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   m.expected_rigid = spec.rigid_modes();
   m.lambda_scale = spec.EI() / (spec.rhoA() * std::pow(spec.radius, 4));
   const std::vector<Vec2> p = polygon(m.n, m.anchor_deg, m.circumradius);
-  if (options.variant == ring::LumpedOptions::Variant::chain)
-    assemble_chain(spec, p, m.side, m);
-  else
-    assemble_frame(spec, p, m.side, options.variant == ring::LumpedOptions::Variant::frame_consistent, m);
+  using Variant = ring::LumpedOptions::Variant;
+  switch (options.variant) {
+    case Variant::chain: assemble_chain(spec, p, m.side, m); break;
+    case Variant::frame: assemble_frame(euler_element(spec, m.side, false), p, m); break;
+    case Variant::frame_consistent: assemble_frame(euler_element(spec, m.side, true), p, m); break;
+    case Variant::timoshenko_frame: assemble_frame(timoshenko_element(spec, m.side), p, m); break;
+  }
   add_terms(spec, p, m);
   m.S = support_rows(spec, p, m.dofs_per_node, m.anchor_deg);
   return m;

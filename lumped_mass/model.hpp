@@ -1,5 +1,5 @@
 // Assembly of the lumped-mass models of a ring, written independently of
-// multibody/: the three variants are built in CARTESIAN node coordinates on the
+// multibody/: the four variants are built in CARTESIAN node coordinates on the
 // regular n-gon whose side is l = 2 pi R / n (perimeter = circumference).
 //
 // Geometry. Node k (k = 0..n-1) sits at polar angle a_k = anchor + 360 k / n degrees
@@ -8,7 +8,8 @@
 //
 // DOF order (node-major), stated once for every matrix below:
 //   chain:  {ux_0, uy_0, ux_1, uy_1, ...}                 (2 per node, hinge displacements)
-//   frame:  {ux_0, uy_0, th_0, ux_1, uy_1, th_1, ...}     (3 per node, th = nodal rotation, ccw)
+//   frame:  {ux_0, uy_0, th_0, ux_1, uy_1, th_1, ...}     (3 per node, th = nodal rotation, ccw;
+//           the Timoshenko frame's th is the rotation of the cross-section)
 // in the ring-centred frame, m and rad.
 #pragma once
 
@@ -27,7 +28,7 @@ using SpMat = Eigen::SparseMatrix<double>;  // column-major, int indices
 struct Model {
   ring::LumpedOptions::Variant variant = ring::LumpedOptions::Variant::chain;
   int n = 0;                 ///< nodes (= links / elements)
-  int dofs_per_node = 2;     ///< 2 (chain) or 3 (frame variants)
+  int dofs_per_node = 2;     ///< 2 (chain) or 3 (frame variants, timoshenko_frame included)
   double anchor_deg = 0.0;   ///< polar angle of node 0 (the pin, or 0 for a free ring)
   double side = 0.0;         ///< l = 2 pi R / n, m
   double circumradius = 0.0; ///< rho = l / (2 sin(pi / n)), m
@@ -36,7 +37,10 @@ struct Model {
   /// chain: the hinge turning angles theta_j (n rows, rad/m), D_j = EI/l;
   /// frames: per element j, rows 3j = axial strain (u2 - u1) . t / l, D = EA l, and
   /// 3j+1, 3j+2 = curvature at the two Gauss points x = l/2 (1 -+ 1/sqrt 3), D = EI l/2
-  /// (two-point Gauss integrates the linear curvature's energy exactly).
+  /// (two-point Gauss integrates the linear curvature's energy exactly);
+  /// timoshenko_frame: per element j, rows 4j (axial strain, D = EA l), 4j+1, 4j+2 (the
+  /// curvature th' at the Gauss points, D = EI l/2) and 4j+3 (the shear strain, constant
+  /// along the element, D = kappa G A l).
   /// Then, for every variant, one row per positive stiffness of the spec's terms
   /// (assemble()): foundation (2 per node), springs kx, ky, kr, the chain's clamp.
   /// The solvers work with B and D, never with the assembled K: K's entries are of
@@ -45,7 +49,8 @@ struct Model {
   SpMat B;
   Eigen::VectorXd D;
   SpMat M;                   ///< mass, N x N, kg (singular for the chain, and the
-                             ///< lumped frame's rotation rows are zero)
+                             ///< lumped frame's rotation rows are zero; the Timoshenko
+                             ///< frame's is diagonal and positive)
   SpMat C;                   ///< internal constraints: chain link lengths (n x N, rows
                              ///< t_j . (u_{j+1} - u_j) = 0, t_j the unit side vector); empty (0 x N) for frames
   SpMat S;                   ///< supports: one row per blocked direction, a unit vector on one
@@ -73,6 +78,16 @@ struct Model {
 ///   linear axial (EA), cubic Hermite bending (EI); masses rho A l / 2 per element end on
 ///   the translations only (frame, rotations massless -> condensed) or the consistent
 ///   mass matrix (frame_consistent).
+/// timoshenko_frame (ring.theory = "timoshenko" only; checks.hpp check_theory): straight
+///   two-node shear-flexible elements on the sides, Przemieniecki's (Theory of Matrix
+///   Structural Analysis, 1968, sec. 5.6: the exact static solution of a Timoshenko beam
+///   without span load, cubic deflection and quadratic section rotation coupled through
+///   phi = 12 EI / (kappa G A l^2)), linear axial (EA); masses lumped: rho A l / 2 per
+///   element end on the translations, rho I l / 2 on the section rotations (every DOF
+///   inertial). phi -> 0 is the Hermite element exactly: no shear locking in a thin ring.
+///   The rotational terms below (kr, J, clamp) act on the node's rotation unknown, the
+///   section rotation: the only rotation that is single-valued at a node (the centroid
+///   line's tangent jumps there by the two elements' shear strains).
 /// Terms of every variant (ring/spec.hpp), each written once in terms.hpp (energy, gradient and
 /// Hessian at any configuration, shared with the nonlinear chain; here their rows at rest):
 ///   rotation of the tangent at node h: the frames' rotation unknown th_h; the chain has none

@@ -27,10 +27,12 @@ namespace lumped {
 /// pinned chain, 2n - 2 / 3n - 2 for the pinned frames); seconds (wall time of this call);
 /// max_residual (largest relative residual of the elastic pairs, eigen.hpp residuals()).
 /// \param count 1 <= count <= elastic_dofs() (n - 3 for the chain, 2n - 3 for frame,
-///              3n - 3 for frame-consistent with the paper's supports; README's model
+///              3n - 3 for frame-consistent and timoshenko-frame with the paper's
+///              supports; README's model
 ///              table for further pins, a clamp, point inertias and rigid modes held).
 /// Every term of `spec` is modelled (model.hpp): pins, clamp, roller, springs, point
-/// masses, foundation; a point off the nodes is std::invalid_argument naming the key.
+/// masses, foundation; a point off the nodes is std::invalid_argument naming the key, and so
+/// is a variant that does not match ring.theory (checks.hpp check_theory).
 /// Cost: dense O(n^3); sparse O(n (count + rigid)) per Lanczos restart, O(n) memory.
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count);
 

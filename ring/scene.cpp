@@ -473,9 +473,11 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   if (lt) {
     r.known_keys(*lt, "lumped", {"n", "variant"});
     s.lumped.n = static_cast<int>(r.integer(*lt, "lumped", "n", 40, 4, 100000000));
-    const std::string v = r.choice(*lt, "lumped", "variant", "chain", {"chain", "frame", "frame-consistent"});
+    const std::string v =
+        r.choice(*lt, "lumped", "variant", "chain", {"chain", "frame", "frame-consistent", "timoshenko-frame"});
     s.lumped.variant = v == "frame" ? LumpedOptions::Variant::frame
                      : v == "frame-consistent" ? LumpedOptions::Variant::frame_consistent
+                     : v == "timoshenko-frame" ? LumpedOptions::Variant::timoshenko_frame
                                                : LumpedOptions::Variant::chain;
   }
 

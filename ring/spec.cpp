@@ -183,6 +183,7 @@ std::string to_string(LumpedOptions::Variant v) {
     case LumpedOptions::Variant::chain: return "chain";
     case LumpedOptions::Variant::frame: return "frame";
     case LumpedOptions::Variant::frame_consistent: return "frame-consistent";
+    case LumpedOptions::Variant::timoshenko_frame: return "timoshenko-frame";
   }
   return "";
 }

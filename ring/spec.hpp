@@ -228,7 +228,10 @@ struct FemOptions {
 
 struct LumpedOptions {
   int n = 40;  ///< links / elements (>= 4)
-  enum class Variant { chain, frame, frame_consistent };
+  /// chain, frame, frame_consistent: Euler-Bernoulli models (ring.theory = "euler-bernoulli");
+  /// timoshenko_frame: shear-flexible elements with rotary inertia, the one lumped model of
+  /// ring.theory = "timoshenko" (lumped_mass/model.hpp).
+  enum class Variant { chain, frame, frame_consistent, timoshenko_frame };
   Variant variant = Variant::chain;
 };
 
