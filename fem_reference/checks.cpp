@@ -12,23 +12,31 @@ void need(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("fem: " + what);
 }
 
-/// What the geometrically exact beam needs of every nonlinear analysis.
+/// What the geometrically exact beam needs of every nonlinear analysis: the terms of the
+/// linear modes (check_modes), the curved geometry, and loads that it can place: every
+/// point load and record point on a vertex, finite forces, pressure and gravity.
 void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::Loads& loads,
                      const std::vector<double>& record, const std::string& section) {
-  const ring::PointLoad& load = ring::one_point_load(loads, section, "fem " + section);
   check_modes(spec, o);
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
-  need(spec.supports.pin.has_value(), "needs a pin (supports.pin): a free ring under a dead load has no equilibrium");
-  ring::refuse_terms_beyond_paper(spec, "fem " + section);
-  const double pin = *spec.supports.pin;
+  const double anchor = spec.supports.pin.value_or(0.0);
   auto on_vertex = [&](double a, const std::string& key) {
-    need(ring::on_node(a, pin, o.elements), section + "." + key + " (=" + std::to_string(a) +
-                                                ") must fall on an FE vertex: pin + k * 360 / fem.elements");
+    need(ring::on_node(a, anchor, o.elements), section + "." + key + " (=" + std::to_string(a) +
+                                                   ") must fall on an FE vertex: " + (spec.supports.pin ? "pin" : "0") +
+                                                   " + k * 360 / fem.elements");
   };
-  on_vertex(load.angle, "at");
+  for (std::size_t i = 0; i < loads.points.size(); ++i) {
+    const ring::PointLoad& load = loads.points[i];
+    const std::string key = loads.points.size() == 1 ? std::string("at") : "loads[" + std::to_string(i + 1) + "].at";
+    on_vertex(load.angle, key);
+    need(std::isfinite(load.force[0]) && std::isfinite(load.force[1]),
+         section + (loads.points.size() == 1 ? std::string(".force") : ".loads[" + std::to_string(i + 1) + "].force") +
+             " must be finite");
+  }
   for (double a : record) on_vertex(a, "record");
-  need(std::isfinite(load.force[0]) && std::isfinite(load.force[1]), section + ".force must be finite");
+  need(std::isfinite(loads.pressure.value), section + ".pressure.value must be finite");
+  need(std::isfinite(loads.gravity[0]) && std::isfinite(loads.gravity[1]), section + ".gravity must be finite");
 }
 
 /// The supports, springs, masses and foundation of linear modes: finite, >= 0, every point
@@ -104,11 +112,18 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   check_nonlinear(spec, o, st.loads, st.record, "static");
-  need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
+  // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
+  // freely (the pendulum of a ring on one pin has no stiffness at rest).
+  need(spec.rigid_modes() == 0,
+       "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
+           " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
+  need(spec.supports.pin || spec.rigid_modes() == 0,
+       "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under a "
+       "load drifts away");
   need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
   need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
   need(rs.integrator == ring::ResponseOptions::Integrator::newmark ||

@@ -3,6 +3,7 @@
 // (nonlinear.hpp).
 #include "fem_reference/nonlinear.hpp"
 
+#include "fem_reference/beam_potential.hpp"
 #include "fem_reference/checks.hpp"
 #include "fem_reference/newton.hpp"
 #include "fem_reference/static_path.hpp"
@@ -122,13 +123,15 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
 
 /// The beam's Newmark / generalized-alpha step (Chung & Hulbert 1993; Newmark's average
 /// acceleration is am = af = 0) for the time-stepping driver (paths/time_stepping.hpp):
-/// full Newton on the generalized-midpoint balance, the load's work by the trapezoidal
-/// rule, the damping's dissipation by the trapezoidal rule on v^T C v.
+/// full Newton on the generalized-midpoint balance M a + C v + grad V(q) = g grad Phi(q)
+/// (BeamPotential: the beam, its terms and its loads, each load at the generalized
+/// midpoint), the loads' work g_mean (Phi(q_1) - Phi(q_0)) per step (exact for a load
+/// factor constant over the step: every load has a potential), the damping's dissipation
+/// by the trapezoidal rule on v^T C v.
 class BeamStepper : public paths::Stepper {
  public:
   BeamStepper(const RingModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
-      : model_(model), rs_(rs), radius_(spec.radius), N_(model.n_free()),
-        F_(model.vertex_force(model.vertex_of(rs.loads.points.front().angle), rs.loads.points.front().force)), M_(model.mass()),
+      : model_(model), potential_(model, rs.loads), rs_(rs), radius_(spec.radius), N_(model.n_free()), M_(model.mass()),
         damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), S_(model.sparsity()) {
     if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
       am_ = (2.0 * rs.rho_inf - 1.0) / (rs.rho_inf + 1.0);
@@ -138,11 +141,13 @@ class BeamStepper : public paths::Stepper {
     }
     for (double a : rs.record) record_vertex_.push_back(model.vertex_of(a));
     for (auto* v : {&q_, &v_, &a_, &q1_, &v1_, &a1_, &Cv_, &tmp_, &internal_, &qa_, &va_, &aa_}) v->reinit(N_);
+    Vector<double> F0;  // the load at rest, grad Phi(0)
+    potential_.evaluate(q_, 0.0, nullptr, nullptr, &F0);
     // Start from rest. The acceleration is M qdd_0 = F g(0) (no internal or damping force
     // in the rest state). Newmark starts there. Generalized-alpha starts from the
     // acceleration that its first step's Newton matrix filters, as the multibody chain's
     // (multibody/integrators.hpp, starting_pseudo_acceleration):
-    //   [(1 - af) K_t(0) + c_m M + c_c C] a_0 = c_m F g(0),
+    //   [(1 - af) K_t(0) + c_m M + c_c C] a_0 = c_m F g(0)  (K_t with the load stiffness at g(0)),
     // per undamped linear mode a_0 = c qdd_0 / (c + w^2), c = c_m / (1 - af): qdd_0
     // (1 + O(w^2 dt^2)) in the modes the step resolves (second order kept), -> 0 where
     // w dt >> 1. Started at qdd_0, the method's velocity overshoot in the unresolved modes
@@ -152,9 +157,9 @@ class BeamStepper : public paths::Stepper {
     // +20 J (0.25), +3.3 J (0.5), +1.1 J (0.6) against a work of 67-78 J, and Rayleigh
     // damping b = 0.05 s made it +650 J at rho_inf = 0.8.
     SparseDirectUMFPACK lu;
-    a_ = F_;
+    a_ = F0;
     if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
-      lu.initialize(newton_matrix(q_, rs.dt));
+      lu.initialize(newton_matrix(q_, rs.dt, rs.history.factor(0.0)));
       a_ *= (1.0 - am_) / (beta_ * rs.dt * rs.dt) * rs.history.factor(0.0);
     } else {
       lu.initialize(M_);
@@ -176,7 +181,7 @@ class BeamStepper : public paths::Stepper {
       va_.sadd(1.0 - af_, af_, v_);
       aa_ = a1_;
       aa_.sadd(1.0 - am_, am_, a_);
-      newton_matrix(qa_, h);
+      newton_matrix(qa_, h, g_alpha);
       res.reinit(N_);
       M_.vmult(res, aa_);
       res += internal_;
@@ -184,7 +189,6 @@ class BeamStepper : public paths::Stepper {
         damping(va_, Cv_);
         res += Cv_;
       }
-      res.add(-g_alpha, F_);
       return S_;
     });
     if (it < 0) return {false, false, kMaxNewton, g_mean_};
@@ -193,9 +197,9 @@ class BeamStepper : public paths::Stepper {
   }
 
   void accept(double) override {
-    tmp_ = q1_;
-    tmp_ -= q_;
-    work_ += g_mean_ * (F_ * tmp_);
+    const BeamPotential::Value next = potential_.evaluate(q1_, 0.0, nullptr, nullptr);
+    work_ += g_mean_ * (next.load - energy_.load);
+    energy_ = next;
     if (damped_) {
       damping(v_, Cv_);
       double p = v_ * Cv_;
@@ -206,7 +210,6 @@ class BeamStepper : public paths::Stepper {
     q_ = q1_;
     v_ = v1_;
     a_ = a1_;
-    strain_ = model_.beam_energy(q_, nullptr, nullptr);
   }
 
   bool finite() const override { return std::isfinite(q_.l2_norm()) && std::isfinite(v_.l2_norm()); }
@@ -222,7 +225,7 @@ class BeamStepper : public paths::Stepper {
     Vector<double> Mv(N_);
     M_.vmult(Mv, v_);
     out.kinetic = 0.5 * (v_ * Mv);
-    out.strain = strain_;
+    out.strain = energy_.stored;
     out.work = work_;
     out.dissipated = dissipated_;
     return out;
@@ -251,11 +254,12 @@ class BeamStepper : public paths::Stepper {
     v1_ = v_;
     v1_.add((1.0 - gamma_) * h, a_, gamma_ * h, a1_);
   }
-  /// The Newton matrix of a step of h at the generalized midpoint x (internal forces there
-  /// into internal_): (1 - af) K_t(x) + c_m M + c_c C.
-  SparseMatrix<double>& newton_matrix(const Vector<double>& x, double h) {
+  /// The Newton matrix of a step of h at the generalized midpoint x with the load factor g
+  /// there (grad V - g grad Phi into internal_): (1 - af) K_t(x) + c_m M + c_c C, K_t the
+  /// tangent of V - g Phi (the load stiffness of follower and central pressure included).
+  SparseMatrix<double>& newton_matrix(const Vector<double>& x, double h, double g) {
     const double c_m = (1.0 - am_) / (beta_ * h * h), c_c = (1.0 - af_) * gamma_ / (beta_ * h);
-    model_.beam_energy(x, &internal_, &S_);
+    potential_.evaluate(x, g, &internal_, &S_);
     S_ *= (1.0 - af_);
     S_.add(c_m, M_);
     if (rs_.rayleigh_mass > 0) S_.add(c_c * rs_.rayleigh_mass, M_);
@@ -273,17 +277,18 @@ class BeamStepper : public paths::Stepper {
   }
 
   const RingModel& model_;
+  const BeamPotential potential_;
   const ring::ResponseOptions& rs_;
   const double radius_;
   const unsigned int N_;
-  const Vector<double> F_;
   const SparseMatrix<double>& M_;
   const bool damped_;
   double am_ = 0.0, af_ = 0.0, gamma_ = 0.5, beta_ = 0.25;
   std::vector<unsigned int> record_vertex_;
   SparseMatrix<double> S_;
   Vector<double> q_, v_, a_, q1_, v1_, a1_, Cv_, tmp_, internal_, qa_, va_, aa_;
-  double h_ = 0.0, g_mean_ = 0.0, work_ = 0.0, dissipated_ = 0.0, strain_ = 0.0;
+  double h_ = 0.0, g_mean_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
+  BeamPotential::Value energy_;  ///< V and Phi of the accepted state (0 at rest)
 };
 
 /// One time integration with one discretization. The beam takes no sub-steps: a step

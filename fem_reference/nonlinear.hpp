@@ -25,16 +25,65 @@
 // Inextensible option (fem.extensible = false): EA -> beta EI / R^2; statics extrapolate
 // the displacements from beta = 1e6 and 2e6 (error O(1/beta^2)), the response uses 1e7.
 //
-// Supports: pin at vertex 0, roller (the roller vertex stays on the line through the pin
-// and its rest position: a linear constraint, exact at any displacement). Loads are dead
-// forces at vertices; record points must be vertices.
+// ## Terms and loads (beam_potential.hpp: one piece of code, used by statics and response)
+// The equations are those of the total potential Pi(q; s) = V(q) - s Phi(q): V the stored
+// energy, Phi the loads' potential at load factor 1 (statics: s the load factor;
+// response: s = g(t)). Residual grad V - s grad Phi, tangent hess V - s hess Phi (the
+// load stiffness -hess Phi of follower and central pressure included: Newton converges
+// quadratically, and the tangent is symmetric because every load here has a potential).
+// Every point lies on a vertex; every distributed term is integrated with the beam's own
+// Gauss rule (p + 2 points per cell) in the local variables (x_t, x_n, a_t, a_n) of the
+// current position x = u t0 + (R + w) n0 and the stretch a = dx/ds0 in the rest frame.
+// Supports (RingModel's constraints, the linear model's, exact at any displacement):
+//  - pin, further pins: u = w = 0 at the vertex; roller: the vertex stays on the line
+//    through the pin and its rest position;
+//  - clamp: the linear model's two rows phi = (u - w')/R = 0 on both cells' ends; at a
+//    pinned vertex that is a_n = 0, i.e. the exact tangent angle atan2(-a_n, a_t) = 0.
+// Stored energy V:
+//  - the beam (above);
+//  - springs: kx/2 Ux^2 + ky/2 Uy^2 on the vertex's Cartesian displacement (a spring to
+//    the ground that keeps its global direction), kr/2 {phi}^2 with {phi} the mean of the
+//    two cells' exact tangent angles at the vertex (phi_left + [[phi]]/2, the jump reduced
+//    to (-pi, pi], as in the interior penalty); linearized, the linear model's terms;
+//  - foundation: k_r/2 w^2 + k_t/2 u^2 per undeformed length, u and w the displacement
+//    along the undeformed point's fixed tangential and radial directions (exact in the
+//    polar fields: the same energy as the linear model's, at any displacement).
+// Loads Phi (p the pressure, positive inward; ring::Pressure):
+//  - point loads F at vertices and the point masses' weight m g: fixed forces, Phi = F . U;
+//  - gravity on the beam: rho A g per undeformed length, Phi = int rho A g . U ds0;
+//  - follower pressure, p per deformed length along the deformed inward normal: the force
+//    p (R90 a) ds0, a = dx/ds0 turned by +90 deg (the inward normal times |a| on the
+//    counter-clockwise ring). It is conservative on the closed ring: Phi = -p (A - A0),
+//    A = 1/2 int (x cross a) ds0 = 1/2 int ((R + w) a_t - u a_n) ds0 the enclosed area,
+//    whose first variation is int dx cross a ds0 after an integration by parts with no
+//    boundary terms (x is continuous and periodic): exactly the force above. A is
+//    quadratic in the fields: the load stiffness p hess A is constant and symmetric, and
+//    the Gauss rule integrates A and its derivatives exactly;
+//  - dead pressure: p n0 per undeformed length along the undeformed inward normal,
+//    Phi = -p int w ds0;
+//  - central pressure: p per undeformed length toward the centre from the deformed point,
+//    -p x/|x| ds0: Phi = -p int (|x| - R) ds0, load stiffness p (I/|x| - x x^T/|x|^3).
+// The mass matrix is the linear model's: the beam's consistent mass and the point masses
+// (m on the vertex's Cartesian velocity: exact; J on the rate of the linear rotation
+// {phi} = (u - w')/R, the rest linearization of the exact one: a constant mass matrix, exact
+// for small rotations of the vertex, not for large ones).
+// Measured against closed forms in tests/fem_reference/fem_loads_test.cpp: the shrunk
+// circle of a pinned ring under follower and dead pressure (1.7e-13), the axisymmetric ring
+// on a foundation under all three kinds (3e-13), spring reactions = the weight (1e-14), the
+// inextensible ring's Fourier series under its weight, hung on a pin and clamped under a
+// sideways weight (order 3.96 in elements at p = 3; 1e-7 at p = 6, the nonlinearity of the
+// small load), the breathing under sudden pressure (3e-14).
+//
+// Record points must be vertices.
 //
 // ## Statics
-// The equilibrium path from rest, s the load factor (load = s F, full load at s = 1),
+// The equilibrium path from rest, s the load factor (loads s times statics.loads, full
+// load at s = 1), with supports that hold every rigid motion (a regular tangent at rest),
 // followed by the shared continuation driver (paths/continuation.hpp: load stepping,
 // Crisfield's cylindrical arc length through limit points, the limit point located,
 // self-contact as an end event). The beam supplies (static_path.cpp):
-//  - the residual grad V(q) - s F and the bordered tangent [K -F; w^T ws], factorized as
+//  - the residual grad V(q) - s F(q), F = grad Phi, and the bordered tangent
+//    [K - s hess Phi, -F; w^T ws], factorized as
 //    a whole by UMFPACK: it is regular at a limit point, where K alone is singular
 //    (block elimination with K^-1 would lose all digits there); q holds displacements
 //    only, so the arc norm has one unit;
@@ -69,10 +118,13 @@
 // expected (a uniform grid of buckets).
 //
 // ## Dynamics
-// M a + C v + f(q) = F g(t) from rest, f = grad V, C = a M + b K0 (Rayleigh, K0 the
-// tangent at rest). Newmark average acceleration (the paper's; a_{n+1} at t_{n+1}) or
-// generalized-alpha (Chung & Hulbert 1993, rho_inf); full Newton per step. Recorded per
-// step: kinetic 1/2 v^T M v, strain V(q), work (trapezoidal sum of F g . dq), the energy
+// M a + C v + grad V(q) = g(t) grad Phi(q) from rest, C = a M + b K0 (Rayleigh, K0 the
+// linear model's stiffness at rest, its terms included). Newmark average acceleration (the
+// paper's; a_{n+1} at t_{n+1}) or generalized-alpha (Chung & Hulbert 1993, rho_inf; the
+// loads at the generalized midpoint with g there); full Newton per step. Recorded per
+// step: kinetic 1/2 v^T M v, strain V(q) (beam, springs, foundation), work
+// sum g_mean (Phi(q_1) - Phi(q_0)) of every load (exact for a load factor constant over
+// the step, since every load has a potential; the trapezoidal rule of g otherwise), the energy
 // balance T + V + dissipated - work, constraint residual 0 (the constraints are linear
 // and hold exactly), Newton iterations. A run whose T + V - W grows by more than 1 % of
 // the largest work plus the round-off bound (ring/energy_guard.hpp, the rule of every
@@ -107,14 +159,15 @@ namespace fem {
 
 /// Static equilibrium under statics.loads: the end of the equilibrium path at the full
 /// load, through limit points if the path comes back to it (file comment, "Statics").
-/// Requires a pin and a roller on FE vertices, curved geometry, load and record points
-/// on vertices. Throws std::invalid_argument for input that can never work and
+/// Requires supports that hold every rigid motion, curved geometry, load and record points
+/// on vertices (check_static). Throws std::invalid_argument for input that can never work and
 /// ring::NumericalError when the path does not reach the full load (self-contact, no
 /// return past a limit point within the arc-step bound, a stalled continuation).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptions& options,
                                 const ring::StaticOptions& statics);
 
-/// Forced response from rest (see the file comment). Requires a pin, curved geometry,
+/// Forced response from rest (see the file comment). Requires a pin (or supports that
+/// hold every rigid motion), curved geometry,
 /// load and record points on vertices, no rotary inertia. Throws std::invalid_argument
 /// for input that can never work and ring::IntegrationFailure (with the history so far)
 /// when a step fails or the energy balance grows.
@@ -132,7 +185,9 @@ using ContinuationOptions = paths::Continuation;
 struct StaticPath {
   struct Point {
     double load_factor = 0.0;                   ///< s: the load is s times statics.loads
-    std::array<double, 2> displacement{0, 0};   ///< of the loaded point, ring-centred frame, m
+    /// of the path's point (the first point load's; without one, the first record point's,
+    /// else vertex 0), ring-centred frame, m
+    std::array<double, 2> displacement{0, 0};
   };
   std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)
   /// The first maximum of the load factor along the path (a limit point), located to

@@ -191,6 +191,16 @@ class RingModel {
   std::vector<std::array<double, 2>> centreline(const Vector<double>& full, unsigned int per_cell) const;
 
  private:
+  /// The nonlinear terms and loads (beam_potential.cpp) read the mesh, the shape tables and
+  /// the reduced numbering.
+  friend class BeamPotential;
+
+  /// d g / d x_i of local shape function i at table point qp, g = (a_t, a_n, b_t, b_n) the
+  /// exact stretch vector a = dx/ds0 and b = da/dtheta in the rest frame (t0, n0)
+  /// (nonlinear.hpp): a_t = 1 + (u' + w)/R, a_n = (w' - u)/R, b_t = (u'' + w')/R,
+  /// b_n = (w'' - u')/R. Curved geometry.
+  std::array<double, 4> strain_row(unsigned int i, unsigned int qp) const;
+
   void make_grid();
   void setup_constraints();
   void setup_reduced_system();

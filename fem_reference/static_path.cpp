@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "fem_reference/beam_potential.hpp"
 #include "fem_reference/self_contact.hpp"
 
 namespace fem::detail {
@@ -22,8 +23,18 @@ std::string number(double x, int digits = 9) {
   return o.str();
 }
 
-/// The beam's equilibrium grad V(q) - s F = 0 for the continuation driver: the bordered
-/// tangent [K -F; w^T ws] assembled on one pattern (K's, plus a full last row and column)
+/// The path's point: the first point load's vertex, else the first record point's, else
+/// vertex 0 (the pin, or 0 deg).
+double path_point(const ring::StaticOptions& st) {
+  if (!st.loads.points.empty()) return st.loads.points.front().angle;
+  if (!st.record.empty()) return st.record.front();
+  return 0.0;
+}
+
+/// The beam's equilibrium grad V(q) - s grad Phi(q) = 0 (BeamPotential: the beam, its
+/// terms and its loads) for the continuation driver: the bordered tangent
+/// [K - s hess Phi, -grad Phi; w^T ws] assembled on one pattern (K's, plus a full last
+/// row and column)
 /// and factorized as a whole by UMFPACK (regular at a limit point, where K alone is
 /// singular); self-contact checked along the chord between accepted equilibria.
 class BeamEquilibrium : public paths::Equilibrium {
@@ -50,7 +61,8 @@ class BeamEquilibrium : public paths::Equilibrium {
   const RingModel model_;
   const unsigned int N_;
   const unsigned int loaded_;
-  const Vector<double> F_;
+  const BeamPotential potential_;
+  Vector<double> F_;  ///< grad Phi at the last linearization: the load, dR/ds = -F
   const double radius_, depth_;  ///< depth: the self-contact distance
   unsigned int per_cell_ = 2;    ///< centreline points per cell (spacing <= depth / 2)
   int min_gap_ = 2;              ///< centreline edges closer along the ring are neighbours
@@ -68,8 +80,8 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
       st_(st),
       model_(spec, setup),
       N_(model_.n_free()),
-      loaded_(model_.vertex_of(st.loads.points.front().angle)),
-      F_(model_.vertex_force(loaded_, st.loads.points.front().force)),
+      loaded_(model_.vertex_of(path_point(st))),
+      potential_(model_, st.loads),
       radius_(spec.radius),
       depth_(spec.section.depth()),
       q_(N_),
@@ -96,8 +108,7 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
 
 bool BeamEquilibrium::linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) {
   for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
-  model_.beam_energy(q_, &r_, &B_);  // K in the top-left block, border zeroed
-  r_.add(-x.s, F_);
+  potential_.evaluate(q_, x.s, &r_, &B_, &F_);  // K in the top-left block, border zeroed
   for (unsigned int i = 0; i < N_; ++i) {
     B_.set(i, N_, -F_[i]);
     B_.set(N_, i, w(i));

@@ -1,0 +1,254 @@
+// The geometrically exact beam's terms and loads (beam_potential.hpp; the formulation is
+// in nonlinear.hpp, "Terms and loads"). Every distributed term is a density per undeformed
+// length in the local variables y = (x_t, x_n, a_t, a_n): the current position
+// x = x_t t0 + x_n n0 = u t0 + (R + w) n0 and the stretch vector a = dx/ds0 = a_t t0 + a_n n0
+// of the rest frame at the point. y is linear in the DoFs, so a density's gradient and
+// Hessian in y give the term's generalized force and its exact tangent.
+#include "fem_reference/beam_potential.hpp"
+
+#include "fem_reference/beam_scalar.hpp"
+
+namespace fem::detail {
+namespace {
+
+using Y = Vec4;  // (x_t, x_n, a_t, a_n)
+
+void add(Scalar& to, const Scalar& term, double factor = 1.0) {
+  to.value += factor * term.value;
+  for (int a = 0; a < 4; ++a) {
+    to.d[a] += factor * term.d[a];
+    for (int b = 0; b < 4; ++b) to.dd[a][b] += factor * term.dd[a][b];
+  }
+}
+
+/// Foundation (stored energy): k_r/2 w^2 + k_t/2 u^2, w = x_n - R, u = x_t: the
+/// displacement along the undeformed point's fixed radial and tangential directions.
+Scalar foundation(const Y& y, double k_radial, double k_tangential, double R) {
+  Scalar f;
+  const double w = y[1] - R;
+  f.value = 0.5 * (k_radial * w * w + k_tangential * y[0] * y[0]);
+  f.d[0] = k_tangential * y[0];
+  f.d[1] = k_radial * w;
+  f.dd[0][0] = k_tangential;
+  f.dd[1][1] = k_radial;
+  return f;
+}
+
+/// Follower pressure p (load potential): -p (dA - dA0) with dA = (x cross a)/2 ds0 =
+/// (x_n a_t - x_t a_n)/2 ds0 the area swept from the centre (rest: R/2 ds0). Its gradient
+/// is the force p (R90 a) ds0 (a turned by +90 deg: the inward normal times |a| on the
+/// counter-clockwise ring) after the integration by parts that a closed ring allows
+/// (nonlinear.hpp); its Hessian, constant, is the load stiffness.
+Scalar follower(const Y& y, double p, double R) {
+  Scalar f;
+  const double c = -0.5 * p;
+  f.value = c * (y[1] * y[2] - y[0] * y[3] - R);
+  f.d = {-c * y[3], c * y[2], c * y[1], -c * y[0]};
+  f.dd[0][3] = f.dd[3][0] = -c;
+  f.dd[1][2] = f.dd[2][1] = c;
+  return f;
+}
+
+/// Dead pressure p (load potential): p n0 . U = -p w per ds0 (n0 inward, fixed).
+Scalar dead(const Y& y, double p, double R) {
+  Scalar f;
+  f.value = -p * (y[1] - R);
+  f.d[1] = -p;
+  return f;
+}
+
+/// Central pressure p (load potential): -p (|x| - R) per ds0, whose gradient is the force
+/// -p x / |x| toward the ring's centre.
+Scalar central(const Y& y, double p, double R) {
+  Scalar f;
+  const double r = std::hypot(y[0], y[1]);
+  f.value = -p * (r - R);
+  for (int a = 0; a < 2; ++a) {
+    f.d[a] = -p * y[a] / r;
+    for (int b = 0; b < 2; ++b) f.dd[a][b] = -p * ((a == b) / r - y[a] * y[b] / (r * r * r));
+  }
+  return f;
+}
+
+/// A fixed force per undeformed length (the beam's weight rho A g), components c_t, c_n
+/// along t0 and n0 of the point (load potential c . U).
+Scalar fixed_force(const Y& y, double c_t, double c_n, double R) {
+  Scalar f;
+  f.value = c_t * y[0] + c_n * (y[1] - R);
+  f.d[0] = c_t;
+  f.d[1] = c_n;
+  return f;
+}
+
+}  // namespace
+
+BeamPotential::BeamPotential(const RingModel& model, const ring::Loads& loads)
+    : model_(model), loads_(loads), rhoA_(model.spec_.rhoA()), constant_load_(model.n_free()) {
+  const ring::RingSpec& spec = model.spec_;
+  const QGauss<1> gauss(model.setup_.degree + 2);  // the beam's own cell quadrature
+  for (const auto& p : gauss.get_points()) xi_.push_back(p[0]);
+  for (const ring::PointLoad& p : loads.points)
+    constant_load_ += model.vertex_force(model.vertex_of(p.angle), p.force);
+  if (loads.has_gravity())
+    for (const ring::PointMass& m : spec.masses)
+      constant_load_ += model.vertex_force(model.vertex_of(m.angle), {m.mass * loads.gravity[0], m.mass * loads.gravity[1]});
+  for (const ring::Spring& k : spec.supports.springs) {
+    const unsigned int v = model.vertex_of(k.angle);
+    const auto d = model.end_dofs(v, 0.0);
+    const double a = model.theta0_ + v * model.h_;
+    // U = u t0 + w n0: Ux = -u sin a + w cos a, Uy = u cos a + w sin a.
+    if (k.kx > 0) translations_.push_back({{d[0], d[1]}, {-std::sin(a), std::cos(a)}, k.kx});
+    if (k.ky > 0) translations_.push_back({{d[0], d[1]}, {std::cos(a), std::sin(a)}, k.ky});
+    if (k.kr > 0) rotations_.emplace_back(v, k.kr);
+  }
+  distributed_ = spec.foundation.any() || loads.pressure.any() || loads.has_gravity();
+}
+
+BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, Vector<double>* residual,
+                                             SparseMatrix<double>* tangent, Vector<double>* load) const {
+  const RingModel& m = model_;
+  const ring::RingSpec& spec = m.spec_;
+  const double R = spec.radius;
+  Value out;
+  out.stored = m.beam_energy(q, residual, tangent);  // residual reinit, tangent zeroed
+  if (load) load->reinit(m.n_free());
+  // Point loads and the point masses' weight: fixed forces, Phi = F . q.
+  out.load += constant_load_ * q;
+  if (residual) residual->add(-s, constant_load_);
+  if (load) *load += constant_load_;
+
+  const Vector<double> full = m.expand(q);
+  const unsigned int dpc = m.fe_.n_dofs_per_cell(), n = m.cells();
+  auto scatter = [&](const std::vector<types::global_dof_index>& dofs, const std::vector<double>& local,
+                     Vector<double>& global) {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      for (const auto& [f, w] : m.expansion_[dofs[i]]) global[f] += w * local[i];
+  };
+
+  if (distributed_) {
+    const ring::Pressure& pressure = loads_.pressure;
+    const double p = pressure.value, kr = spec.foundation.radial, kt = spec.foundation.tangential;
+    const auto& g = loads_.gravity;
+    std::vector<types::global_dof_index> dofs(dpc);
+    std::vector<double> x(dpc), fr(dpc), fl(dpc);
+    std::vector<Y> dy(dpc);
+    FullMatrix<double> k(dpc, dpc);
+    for (unsigned int cell = 0; cell < n; ++cell) {
+      m.cells_[cell]->get_dof_indices(dofs);
+      for (unsigned int i = 0; i < dpc; ++i) x[i] = full[dofs[i]];
+      std::fill(fr.begin(), fr.end(), 0.0);
+      std::fill(fl.begin(), fl.end(), 0.0);
+      k = 0;
+      for (unsigned int qp = 0; qp < m.nq_; ++qp) {
+        Y y{0.0, R, 1.0, 0.0};
+        for (unsigned int i = 0; i < dpc; ++i) {
+          const auto row = m.strain_row(i, qp);
+          const double v = m.v0_[qp * dpc + i];
+          dy[i] = m.component_[i] == 0 ? Y{v, 0.0, row[0], row[1]} : Y{0.0, v, row[0], row[1]};
+          for (int a = 0; a < 4; ++a) y[a] += x[i] * dy[i][a];
+        }
+        Scalar stored, potential;
+        if (spec.foundation.any()) add(stored, foundation(y, kr, kt, R));
+        if (pressure.any()) {
+          switch (pressure.kind) {
+            case ring::Pressure::Kind::follower: add(potential, follower(y, p, R)); break;
+            case ring::Pressure::Kind::dead: add(potential, dead(y, p, R)); break;
+            case ring::Pressure::Kind::central: add(potential, central(y, p, R)); break;
+          }
+        }
+        if (loads_.has_gravity()) {
+          const double theta = m.theta0_ + (cell + xi_[qp]) * m.h_;
+          const double gt = -g[0] * std::sin(theta) + g[1] * std::cos(theta);
+          const double gn = g[0] * std::cos(theta) + g[1] * std::sin(theta);
+          add(potential, fixed_force(y, rhoA_ * gt, rhoA_ * gn, R));
+        }
+        const double ds = m.ds_[qp];
+        out.stored += ds * stored.value;
+        out.load += ds * potential.value;
+        Scalar total = stored;
+        add(total, potential, -s);
+        for (unsigned int i = 0; i < dpc; ++i) {
+          Y Hd{};
+          for (int a = 0; a < 4; ++a) {
+            fr[i] += ds * total.d[a] * dy[i][a];
+            fl[i] += ds * potential.d[a] * dy[i][a];
+            for (int b = 0; b < 4; ++b) Hd[a] += total.dd[a][b] * dy[i][b];
+          }
+          if (tangent)
+            for (unsigned int j = 0; j < dpc; ++j)
+              k(j, i) += ds * (dy[j][0] * Hd[0] + dy[j][1] * Hd[1] + dy[j][2] * Hd[2] + dy[j][3] * Hd[3]);
+        }
+      }
+      if (residual) scatter(dofs, fr, *residual);
+      if (load) scatter(dofs, fl, *load);
+      if (tangent) m.add_local(k, dofs, *tangent);
+    }
+  }
+
+  // Translational springs: k/2 (c . x)^2, exact (the ground's directions are fixed).
+  for (const Translation& t : translations_) {
+    double y = 0.0;
+    for (unsigned int i = 0; i < t.dofs.size(); ++i) y += t.coef[i] * full[t.dofs[i]];
+    out.stored += 0.5 * t.stiffness * y * y;
+    if (residual) {
+      std::vector<double> f(t.dofs.size());
+      for (unsigned int i = 0; i < f.size(); ++i) f[i] = t.stiffness * y * t.coef[i];
+      scatter(t.dofs, f, *residual);
+    }
+    if (tangent) {
+      FullMatrix<double> k(t.dofs.size(), t.dofs.size());
+      for (unsigned int i = 0; i < t.dofs.size(); ++i)
+        for (unsigned int j = 0; j < t.dofs.size(); ++j) k(i, j) = t.stiffness * t.coef[i] * t.coef[j];
+      m.add_local(k, t.dofs, *tangent);
+    }
+  }
+
+  // Rotational springs: kr/2 {phi}^2 with {phi} = (phi_left + phi_right)/2 the mean of the
+  // two cells' exact tangent angles at the vertex (measured from t0, the right one as the
+  // left one plus the jump [[phi]] reduced to (-pi, pi], as the beam's vertex terms).
+  for (const auto& [v, kr] : rotations_) {
+    std::vector<types::global_dof_index> dofs(2 * dpc), side(dpc);
+    m.cells_[(v + n - 1) % n]->get_dof_indices(side);
+    std::copy(side.begin(), side.end(), dofs.begin());
+    m.cells_[v]->get_dof_indices(side);
+    std::copy(side.begin(), side.end(), dofs.begin() + dpc);
+    std::vector<Vec4> b(2 * dpc);
+    Vec4 gl{1.0, 0.0, 0.0, 0.0}, gr{1.0, 0.0, 0.0, 0.0};
+    for (unsigned int i = 0; i < dpc; ++i) {
+      b[i] = m.strain_row(i, m.nq_ + 1);  // right end of the left cell
+      b[dpc + i] = m.strain_row(i, m.nq_);  // left end of the right cell
+      for (int a = 0; a < 4; ++a) {
+        gl[a] += full[dofs[i]] * b[i][a];
+        gr[a] += full[dofs[dpc + i]] * b[dpc + i][a];
+      }
+    }
+    const Scalar pl = tangent_angle(gl), pr = tangent_angle(gr);
+    const double mean = pl.value + 0.5 * std::remainder(pr.value - pl.value, 2.0 * kPi);
+    out.stored += 0.5 * kr * mean * mean;
+    // d mean / d g (left | right) = (pl.d | pr.d) / 2; the Hessian is block-diagonal.
+    std::vector<double> f(2 * dpc), dm(2 * dpc);
+    for (unsigned int i = 0; i < 2 * dpc; ++i) {
+      const Scalar& side_angle = i < dpc ? pl : pr;
+      for (int a = 0; a < 4; ++a) dm[i] += 0.5 * side_angle.d[a] * b[i][a];
+      f[i] = kr * mean * dm[i];
+    }
+    if (residual) scatter(dofs, f, *residual);
+    if (tangent) {
+      FullMatrix<double> k(2 * dpc, 2 * dpc);
+      for (unsigned int i = 0; i < 2 * dpc; ++i)
+        for (unsigned int j = 0; j < 2 * dpc; ++j) {
+          double h = 0.0;
+          if ((i < dpc) == (j < dpc)) {
+            const Scalar& side_angle = i < dpc ? pl : pr;
+            for (int a = 0; a < 4; ++a)
+              for (int c = 0; c < 4; ++c) h += 0.5 * b[i][a] * side_angle.dd[a][c] * b[j][c];
+          }
+          k(i, j) = kr * (dm[i] * dm[j] + mean * h);
+        }
+      m.add_local(k, dofs, *tangent);
+    }
+  }
+  return out;
+}
+
+}  // namespace fem::detail

@@ -1,0 +1,57 @@
+// Internal to fem_reference/: the total potential of the geometrically exact beam with
+// every term and load of a nonlinear analysis (nonlinear.hpp, "Terms and loads"), the one
+// model that the statics (static_path.cpp) and the response (nonlinear.cpp) assemble.
+#pragma once
+
+#include "fem_reference/ring_model.hpp"
+
+namespace fem::detail {
+
+/// Pi(q; s) = V(q) - s Phi(q) on a RingModel's reduced unknowns q:
+///  - V, the stored energy: the beam (RingModel::beam_energy), the springs (kx, ky on the
+///    vertex's Cartesian displacement, kr on the mean of the two cells' exact tangent
+///    angles) and the foundation (radial and tangential, on the displacement along the
+///    undeformed point's fixed directions);
+///  - Phi, the potential of the loads at load factor 1 (F = grad Phi the generalized load,
+///    -hess Phi its load stiffness): point loads, the weight of the point masses, uniform
+///    pressure (follower: -p (A - A0), A the enclosed area; dead: -p int w ds0; central:
+///    -p int (|x| - R) ds0) and the beam's weight rho A int g . U ds0.
+/// Pins, roller and clamp are RingModel's constraints (exact at any displacement).
+/// The object holds only constants of the model and the loads; evaluate() is reentrant.
+class BeamPotential {
+ public:
+  /// `model` and `loads` must outlive the object; every point on a vertex (check_nonlinear).
+  BeamPotential(const RingModel& model, const ring::Loads& loads);
+
+  struct Value {
+    double stored = 0.0;  ///< V(q), J
+    double load = 0.0;    ///< Phi(q), J (0 at rest): the work of the loads at factor 1
+  };
+  /// V and Phi at q; with non-null pointers also the residual grad V - s grad Phi (reinit),
+  /// the tangent hess V - s hess Phi (on model.sparsity() or a pattern that contains it;
+  /// the whole matrix is zeroed first) and the load grad Phi (reinit).
+  /// O(cells (p+2) (2p+3)^2), the beam's assembly.
+  Value evaluate(const Vector<double>& q, double s, Vector<double>* residual, SparseMatrix<double>* tangent,
+                 Vector<double>* load = nullptr) const;
+
+ private:
+  const RingModel& model_;
+  const ring::Loads& loads_;
+  double rhoA_ = 0.0;
+  /// Gauss abscissae (reference cell, in [0, 1]) of the model's cell quadrature.
+  std::vector<double> xi_;
+  /// The loads that do not depend on q: point loads and the point masses' weight.
+  Vector<double> constant_load_;
+  /// A translational spring: stiffness / 2 (c . x)^2 on the local DoFs of its vertex.
+  struct Translation {
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double> coef;
+    double stiffness = 0.0;
+  };
+  std::vector<Translation> translations_;
+  /// A rotational spring kr at a vertex.
+  std::vector<std::pair<unsigned int, double>> rotations_;
+  bool distributed_ = false;  ///< foundation, pressure or gravity: the cell loop runs
+};
+
+}  // namespace fem::detail
