@@ -18,6 +18,7 @@ void need(bool ok, const std::string& what) {
 void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::Loads& loads,
                      const std::vector<double>& record, const std::string& section) {
   check_modes(spec, o);
+  ring::refuse_timoshenko(spec, "fem " + section + " (the geometrically exact beam is Euler-Bernoulli)");
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
   const double anchor = spec.supports.pin.value_or(0.0);
@@ -113,8 +114,8 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   check_nonlinear(spec, o, st.loads, st.record, "static");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
-  // freely (the pendulum of a ring on one pin has no stiffness at rest).
-  need(spec.rigid_modes() == 0,
+  // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
+  need(ring::static_rigid_modes(spec, st.loads) == 0,
        "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
 }
