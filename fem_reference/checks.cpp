@@ -80,7 +80,11 @@ void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
-  ring::refuse_timoshenko(spec, "fem");
+  need(spec.theory != ring::Theory::timoshenko || o.geometry == ring::FemOptions::Geometry::curved,
+       "ring.theory = \"timoshenko\" needs fem.geometry = \"curved\" (the polygon is the paper's Euler-Bernoulli "
+       "SAP5 frame)");
+  need(spec.theory != ring::Theory::timoshenko || spec.kappa() > 0.0,
+       "ring.theory = \"timoshenko\" needs a shear coefficient > 0 (ring.shear_coefficient)");
   need(spec.radius > 0 && std::isfinite(spec.radius), "ring.radius must be > 0");
   need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
   need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
@@ -103,11 +107,13 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_timoshenko(spec, "fem static (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, st.loads, st.record, "static");
   need(spec.supports.roller.has_value(), "statics need a pin and a roller (supports.roller)");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  ring::refuse_timoshenko(spec, "fem response (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered for the nonlinear response (linear modes only)");
   need(rs.hinge_damping == 0.0, "response.hinge_damping: the FE beam has no hinges (use rayleigh_* damping)");
