@@ -194,10 +194,12 @@ SolverEntry fem_entry() {
   e.integer_ranges["degree"] = {fem::kMinDegree, fem::kMaxDegree};
   e.size = [](const ring::Scene& s) { return s.fem.elements; };
   e.set_size = [](ring::Scene& s, int n) { s.fem.elements = n; };
-  // C0 elements of degree p: p nodes per cell and two displacement components.
+  // C0 elements of degree p: p nodes per cell and two displacement components (u, w), three
+  // fields (u, w, psi) for a Timoshenko ring.
   e.elastic_modes = [](const ring::Scene& s) -> long long {
     const int held = s.ring.supports.constraint_rows() + s.ring.rigid_modes();
-    return 2LL * s.fem.elements * s.fem.degree - held;
+    const long long fields = s.ring.theory == ring::Theory::timoshenko ? 3 : 2;
+    return fields * s.fem.elements * s.fem.degree - held;
   };
   e.inextensible = [](const ring::Scene& s) { return !s.fem.extensible; };
   e.curve = [](const ring::Scene& s) { return "fem (p = " + std::to_string(s.fem.degree) + ")"; };
@@ -223,7 +225,7 @@ SolverEntry fem_entry() {
   // in p with ~4 % to spare. The reference raises p to fem::kMaxDegree (checks.hpp).
   e.memory = [](const ring::Scene& s, int count) {
     const double p = s.fem.reference || s.needs_reference() ? fem::kMaxDegree : s.fem.degree;
-    const double unknowns = 2.0 * p * s.fem.elements;
+    const double unknowns = (s.ring.theory == ring::Theory::timoshenko ? 3.0 : 2.0) * p * s.fem.elements;
     if (count == 0) return unknowns * (2680.0 + 650.0 * p);
     const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
     return unknowns * (factor_peak + 85.0 * std::max(0, count - 23));

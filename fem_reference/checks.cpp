@@ -89,7 +89,11 @@ void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
-  ring::refuse_timoshenko(spec, "fem");
+  need(spec.theory != ring::Theory::timoshenko || o.geometry == ring::FemOptions::Geometry::curved,
+       "ring.theory = \"timoshenko\" needs fem.geometry = \"curved\" (the polygon is the paper's Euler-Bernoulli "
+       "SAP5 frame)");
+  need(spec.theory != ring::Theory::timoshenko || spec.kappa() > 0.0,
+       "ring.theory = \"timoshenko\" needs a shear coefficient > 0 (ring.shear_coefficient)");
   need(spec.radius > 0 && std::isfinite(spec.radius), "ring.radius must be > 0");
   need(spec.E > 0 && spec.rho > 0, "ring.E and ring.rho must be > 0");
   need(spec.A() > 0 && spec.I() > 0, "the section's area and inertia must be > 0");
@@ -112,6 +116,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_timoshenko(spec, "fem static (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, st.loads, st.record, "static");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
@@ -121,6 +126,7 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  ring::refuse_timoshenko(spec, "fem response (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under a "

@@ -2,8 +2,14 @@
 // extrapolation), and the p/h refinement to the converged reference (modes.hpp).
 #include "fem_reference/checks.hpp"
 #include "fem_reference/ring_model.hpp"
+#include "fem_reference/timoshenko_model.hpp"
 
 namespace fem::detail {
+
+std::unique_ptr<LinearModel> make_model(const ring::RingSpec& spec, const Setup& setup) {
+  if (setup.theory == ring::Theory::timoshenko) return std::make_unique<TimoshenkoModel>(spec, setup);
+  return std::make_unique<RingModel>(spec, setup);
+}
 
 namespace {
 
@@ -14,7 +20,8 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
   auto run = [&](double EA, std::vector<double>& lambda, double& max_res, ring::ModalResult& r,
                  std::vector<Vector<double>>* full) {
     setup.EA = EA;
-    const RingModel model(spec, setup);
+    const auto built = make_model(spec, setup);
+    const LinearModel& model = *built;
     const unsigned int wanted = static_cast<unsigned int>(count + rigid);
     if (wanted > model.n_free())
       throw std::invalid_argument("fem: count (=" + std::to_string(count) + ") must be <= unknowns - rigid modes (=" +
@@ -120,6 +127,9 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
   setup.degree = o.degree;
   setup.geometry = o.geometry;
   setup.rotary_inertia = o.rotary_inertia;
+  setup.theory = spec.theory;
+  // The Timoshenko theory has the cross-section's rotary inertia by definition (ring/spec.hpp).
+  const bool rotary_inertia = o.rotary_inertia || spec.theory == ring::Theory::timoshenko;
   Solved s = solve_once(spec, setup, o.extensible, count, keep_full && !o.reference, !o.reference || !o.extensible);
   int refinements = 0;
   if (o.reference) {
@@ -169,7 +179,8 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
   r.model["degree"] = static_cast<long long>(setup.degree);
   r.model["geometry"] = ring::to_string(setup.geometry);
   r.model["extensible"] = o.extensible;
-  r.model["rotary_inertia"] = o.rotary_inertia;
+  r.model["theory"] = ring::to_string(spec.theory);
+  r.model["rotary_inertia"] = rotary_inertia;
   r.model["reference"] = o.reference;
   r.model["refinements"] = static_cast<long long>(refinements);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -1,6 +1,6 @@
-// Finite-element reference for the in-plane vibration of a thin ring: curved (or
-// polygonal) Euler-Bernoulli beam elements on deal.II. This header has NO deal.II
-// includes on purpose: the rest of ringvib (and the dlopen boundary in plugin.hpp)
+// Finite-element reference for the in-plane vibration of a ring: curved (or polygonal)
+// Euler-Bernoulli beam elements, and curved Timoshenko elements (below), on deal.II. This
+// header has NO deal.II includes on purpose: the rest of ringvib (and the dlopen boundary in plugin.hpp)
 // sees only the shared result types, so that deal.II stays in fem_reference/'s .cpp files.
 //
 // The model. Mesh: a 1-D mesh in the polar angle theta, from the pin angle
@@ -66,6 +66,52 @@
 //    (radial and tangential directions of the undeformed point).
 // These terms enter K and M and the extended-precision operator of the refinement alike.
 //
+// Timoshenko (ring.theory = "timoshenko"; curved geometry only, the polygon refuses it by
+// name; timoshenko_model.hpp). Fields u (tangential), w (radial) and psi (rotation of the
+// cross-section, counter-clockwise), each C0 FE_Q of degree p (`degree`), on the same
+// periodic mesh (an FESystem of three components). Strains exactly those of
+// ring::closed_form::free_ring_timoshenko: eps = (u' + w)/R, shear gamma = psi - (u - w')/R,
+// change of curvature kappa = psi'/R; energy EA/2 eps^2 + kGA/2 gamma^2 + EI/2 kappa^2 per
+// length, kinetic rho A/2 (u^2 + w^2) + rho I/2 psi^2 (dots): the theory has the section's
+// rotary inertia by definition (ring/spec.hpp), so fem.rotary_inertia is the Euler model's
+// switch and the result reports rotary_inertia = true. Only first derivatives: an H1
+// problem, no interior penalty.
+//  - Locking. As depth/R -> 0, EA and kGA grow like (R/depth)^2 against EI/R^2 and the
+//    discrete modes must approach the kernel eps = 0, gamma = 0 (u' = -w, psi = (u - w')/R).
+//    Fully integrated, that kernel is poor in C0 P_p: eps = 0 asks the continuous w of degree
+//    p to equal the discontinuous u' of degree p-1 (so w of degree p-1 and u in C1), gamma = 0
+//    then asks psi = (u + u'')/R continuous (u in C2): the element locks, its error grows
+//    like (R/depth)^2 at fixed h. Measured (that variant, depth/R = 1e-3, k = 2): p = 3,
+//    32 cells, 7.8e-3 against 8.6e-8 below; p = 2 cannot even separate the rigid modes
+//    below 128 cells.
+//  - The choice: selective reduced integration, the membrane and shear terms with p Gauss
+//    points, bending, foundation and mass with p + 1 (exact). On a cell every strain is a
+//    polynomial of degree p in theta (ds = R dtheta, polar fields), and eps - P eps, with P
+//    the L2 projection onto P_{p-1}, is a multiple of the Legendre polynomial of degree p,
+//    which vanishes at the p Gauss points; (P eps)^2 has degree 2p - 2 <= 2p - 1. So p-point
+//    Gauss integrates EA eps^2 as EA (P eps)^2 exactly, and the scheme IS the mixed
+//    (Hellinger-Reissner) method with axial and shear force N, Q in discontinuous P_{p-1},
+//    condensed cell by cell: conforming, no variational crime, and the closed form is the
+//    exact solution of the model it discretizes. Its kernel is rich: P(u' + w) = 0 is
+//    u' = -P w, solvable for every continuous w of zero mean, and P gamma = 0 is
+//    w' = P u - R P psi. Such mixed rods converge uniformly in the thickness (Arunakirinathar
+//    & Reddy, "Mixed finite element methods for elastic rods of arbitrary geometry",
+//    Numer. Math. 64, 1993). Displacements in H1 and N, Q in L2 err by O(h^p), so
+//    eigenvalues (and frequencies, relatively) by O(h^(2p)) at every depth/R: measured
+//    orders 3.98, 5.98, 7.95 for p = 2, 3, 4, the same to three digits, and the same
+//    errors, at depth/R = 1e-3 and 0.1 (tests/fem_reference/fem_timoshenko_test.cpp).
+//    Not u of degree p+1 as in the Euler model: that cures membrane locking only, the shear
+//    would still need a projection, and one rule for both keeps the fields of one degree.
+//  - Terms (the Euler model's, where it has them): pin and further pins u = w = 0 at the
+//    vertex (psi free); roller as above; clamp psi = 0 at the vertex (psi is a nodal
+//    unknown: one row, no cell-end rotations); springs kx, ky on the vertex's Cartesian
+//    displacement, kr on its psi; point masses m on the translation, J on psi; the
+//    foundation 1/2 int (k_r w^2 + k_t u^2) ds, exact. The inextensible limit is the same
+//    extrapolation in EA (the projected membrane term does not lock).
+//  - The same eigen-solve (LinearModel, ring_model.hpp), rigid modes, refinement (apply()
+//    forms the strains in long double: a bending mode's shear strain is ~(depth/R)^2 below
+//    its terms), precision limit and p/h reference; degree p of all three fields, 2..16.
+//
 // Inextensible limit (extensible = false): EA is replaced by beta EI / R^2 for two
 // large beta (1e6 and 2e6) and the squared frequencies are Richardson-extrapolated to
 // beta -> infinity (omega^2(beta) = omega^2_inext - c / beta + O(1/beta^2)); shapes
@@ -114,7 +160,7 @@ inline const char* const kDualResidualNorm = "dual norm of K - sigma M";
 ///                frequencies change by less than options.tolerance (relative, > 0)
 ///                between successive refinements and reports error_estimate.
 /// \param count   elastic modes wanted, 1 <= count <= unknowns - rigid modes.
-/// \return solver "fem"; model {elements, cells, subdivisions, degree, geometry,
+/// \return solver "fem"; model {elements, cells, subdivisions, degree, geometry, theory,
 ///         extensible, rotary_inertia, reference, refinements} (the final discretization); rigid_modes; omega ascending
 ///         (rad/s, elastic only); shapes at ring::kStations stations; unknowns (free
 ///         unknowns after constraints); seconds; max_residual in the dual norm

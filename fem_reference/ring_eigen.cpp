@@ -5,7 +5,7 @@
 
 namespace fem::detail {
 
-EigenPairs RingModel::solve(unsigned int n_wanted, bool refine_pairs) const {
+EigenPairs LinearModel::solve(unsigned int n_wanted, bool refine_pairs) const {
   const unsigned int N = n_free_;
   // A few guard pairs above the wanted ones keep the refinement's gap large.
   const unsigned int n_compute = std::min(n_wanted + kGuardModes, N - 1);
@@ -61,7 +61,7 @@ EigenPairs RingModel::solve(unsigned int n_wanted, bool refine_pairs) const {
   return out;
 }
 
-EigenPairs RingModel::refine(EigenPairs raw, unsigned int wanted, const SparseDirectUMFPACK& shifted_inverse) const {
+EigenPairs LinearModel::refine(EigenPairs raw, unsigned int wanted, const SparseDirectUMFPACK& shifted_inverse) const {
   const unsigned int m = raw.q.size(), N = n_free_;
   std::vector<Vector<double>>& X = raw.q;
   std::vector<std::vector<Real>> KX(m), MX(m);

@@ -4,12 +4,95 @@
 
 namespace fem::detail {
 
+// ---- LinearModel: what every linear model shares ----
+
+LinearModel::LinearModel(const ring::RingSpec& spec, const Setup& setup)
+    : spec_(spec), setup_(setup), sigma_(-std::pow(spec.bending_frequency_scale(), 2)) {}
+
+void LinearModel::number_free_dofs(types::global_dof_index n_dofs) {
+  free_.assign(n_dofs, -1);
+  n_free_ = 0;
+  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+    if (!constraints_.is_constrained(i)) free_[i] = n_free_++;
+  expansion_.assign(n_dofs, {});
+  for (types::global_dof_index i = 0; i < n_dofs; ++i) {
+    if (free_[i] >= 0) {
+      expansion_[i] = {{static_cast<unsigned int>(free_[i]), 1.0}};
+    } else if (const auto* entries = constraints_.get_constraint_entries(i)) {
+      for (const auto& [j, w] : *entries) expansion_[i].emplace_back(free_[j], w);
+    }
+  }
+}
+
+void LinearModel::add_local(const FullMatrix<double>& local, const std::vector<types::global_dof_index>& dofs,
+                            SparseMatrix<double>& global) const {
+  for (unsigned int i = 0; i < dofs.size(); ++i)
+    for (const auto& [fi, wi] : expansion_[dofs[i]])
+      for (unsigned int j = 0; j < dofs.size(); ++j) {
+        const double lij = local(i, j);
+        if (lij == 0.0) continue;
+        for (const auto& [fj, wj] : expansion_[dofs[j]]) global.add(fi, fj, wi * wj * lij);
+      }
+}
+
+void LinearModel::assemble_point_terms() {
+  for (const PointTerm& t : point_terms_) {
+    const unsigned int m = t.dofs.size();
+    FullMatrix<double> k_point(m, m), m_point(m, m);
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = 0; j < m; ++j) {
+        k_point(i, j) = t.stiffness * t.coef[i] * t.coef[j];
+        m_point(i, j) = t.mass * t.coef[i] * t.coef[j];
+      }
+    if (t.stiffness > 0.0) add_local(k_point, t.dofs, K_);
+    if (t.mass > 0.0) add_local(m_point, t.dofs, M_);
+  }
+}
+
+void LinearModel::apply_point_terms(const Vector<double>& full, std::vector<Real>& kq, std::vector<Real>& mq) const {
+  for (const PointTerm& t : point_terms_) {
+    Real y = 0;
+    for (unsigned int i = 0; i < t.dofs.size(); ++i) y += t.coef[i] * full[t.dofs[i]];
+    for (unsigned int i = 0; i < t.dofs.size(); ++i)
+      for (const auto& [f, w] : expansion_[t.dofs[i]]) {
+        kq[f] += w * (t.stiffness * y * t.coef[i]);
+        mq[f] += w * (t.mass * y * t.coef[i]);
+      }
+  }
+}
+
+double LinearModel::precision_ratio() const {
+  std::vector<double> k(n_free_, 0.0), m(n_free_, 0.0);
+  for (auto it = K_.begin(); it != K_.end(); ++it) k[it->row()] += std::abs(it->value());
+  for (auto it = M_.begin(); it != M_.end(); ++it) m[it->row()] += it->value();
+  // Point masses and inertias only lower eigenvalues (a positive semi-definite mass
+  // added), but their rank-one rows c c^T have row sums of either sign: they are left
+  // out of the estimate, which stays an estimate of the ring's own lambda_max.
+  for (const PointTerm& t : point_terms_)
+    for (unsigned int i = 0; i < t.dofs.size(); ++i)
+      for (const auto& [fi, wi] : expansion_[t.dofs[i]])
+        for (unsigned int j = 0; j < t.dofs.size(); ++j)
+          for (const auto& [fj, wj] : expansion_[t.dofs[j]]) m[fi] -= wi * wj * t.mass * t.coef[i] * t.coef[j];
+  double lambda_max = 0.0;
+  for (unsigned int i = 0; i < n_free_; ++i)
+    lambda_max = std::max(lambda_max, m[i] > 0 ? k[i] / m[i] : std::numeric_limits<double>::infinity());
+  return std::numeric_limits<double>::epsilon() * lambda_max / std::abs(sigma_);
+}
+
+Vector<double> LinearModel::expand(const Vector<double>& q) const {
+  Vector<double> full(free_.size());
+  for (types::global_dof_index i = 0; i < full.size(); ++i)
+    if (free_[i] >= 0) full[i] = q[free_[i]];
+  constraints_.distribute(full);
+  return full;
+}
+
+// ---- RingModel: the Euler-Bernoulli ring ----
+
 RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
-    : spec_(spec),
-      setup_(setup),
+    : LinearModel(spec, setup),
       theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0),
       h_(2.0 * kPi / setup.cells()),
-      sigma_(-std::pow(spec.bending_frequency_scale(), 2)),
       fe_(make_fe(setup)),
       dof_handler_(triangulation_) {
   make_grid();
@@ -203,18 +286,7 @@ void RingModel::setup_point_terms() {
 }
 
 void RingModel::setup_reduced_system() {
-  const auto n_dofs = dof_handler_.n_dofs();
-  free_.assign(n_dofs, -1);
-  for (types::global_dof_index i = 0; i < n_dofs; ++i)
-    if (!constraints_.is_constrained(i)) free_[i] = n_free_++;
-  expansion_.resize(n_dofs);
-  for (types::global_dof_index i = 0; i < n_dofs; ++i) {
-    if (free_[i] >= 0) {
-      expansion_[i] = {{static_cast<unsigned int>(free_[i]), 1.0}};
-    } else if (const auto* entries = constraints_.get_constraint_entries(i)) {
-      for (const auto& [j, w] : *entries) expansion_[i].emplace_back(free_[j], w);
-    }
-  }
+  number_free_dofs(dof_handler_.n_dofs());
   // Couplings: each cell with itself, and the two cells beside every vertex (the
   // interior-penalty terms).
   DynamicSparsityPattern dsp(n_free_);
@@ -287,17 +359,6 @@ void RingModel::vertex_terms(unsigned int v, std::vector<double>& jump, std::vec
   }
 }
 
-void RingModel::add_local(const FullMatrix<double>& local, const std::vector<types::global_dof_index>& dofs,
-                          SparseMatrix<double>& global) const {
-  for (unsigned int i = 0; i < dofs.size(); ++i)
-    for (const auto& [fi, wi] : expansion_[dofs[i]])
-      for (unsigned int j = 0; j < dofs.size(); ++j) {
-        const double lij = local(i, j);
-        if (lij == 0.0) continue;
-        for (const auto& [fj, wj] : expansion_[dofs[j]]) global.add(fi, fj, wi * wj * lij);
-      }
-}
-
 void RingModel::assemble() {
   const double EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
   const double rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
@@ -339,35 +400,7 @@ void RingModel::assemble() {
     std::copy(right.begin(), right.end(), pair_dofs.begin() + dpc);
     add_local(k_vertex, pair_dofs, K_);
   }
-  for (const PointTerm& t : point_terms_) {
-    const unsigned int m = t.dofs.size();
-    FullMatrix<double> k_point(m, m), m_point(m, m);
-    for (unsigned int i = 0; i < m; ++i)
-      for (unsigned int j = 0; j < m; ++j) {
-        k_point(i, j) = t.stiffness * t.coef[i] * t.coef[j];
-        m_point(i, j) = t.mass * t.coef[i] * t.coef[j];
-      }
-    if (t.stiffness > 0.0) add_local(k_point, t.dofs, K_);
-    if (t.mass > 0.0) add_local(m_point, t.dofs, M_);
-  }
-}
-
-double RingModel::precision_ratio() const {
-  std::vector<double> k(n_free_, 0.0), m(n_free_, 0.0);
-  for (auto it = K_.begin(); it != K_.end(); ++it) k[it->row()] += std::abs(it->value());
-  for (auto it = M_.begin(); it != M_.end(); ++it) m[it->row()] += it->value();
-  // Point masses and inertias only lower eigenvalues (a positive semi-definite mass
-  // added), but their rank-one rows c c^T have row sums of either sign: they are left
-  // out of the estimate, which stays an estimate of the ring's own lambda_max.
-  for (const PointTerm& t : point_terms_)
-    for (unsigned int i = 0; i < t.dofs.size(); ++i)
-      for (const auto& [fi, wi] : expansion_[t.dofs[i]])
-        for (unsigned int j = 0; j < t.dofs.size(); ++j)
-          for (const auto& [fj, wj] : expansion_[t.dofs[j]]) m[fi] -= wi * wj * t.mass * t.coef[i] * t.coef[j];
-  double lambda_max = 0.0;
-  for (unsigned int i = 0; i < n_free_; ++i)
-    lambda_max = std::max(lambda_max, m[i] > 0 ? k[i] / m[i] : std::numeric_limits<double>::infinity());
-  return std::numeric_limits<double>::epsilon() * lambda_max / std::abs(sigma_);
+  assemble_point_terms();
 }
 
 void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const {
@@ -429,25 +462,7 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
     scatter(dofs, 0, dpc, lk, kq);
     scatter(right, dpc, dpc, lk, kq);
   }
-  for (const PointTerm& t : point_terms_) {
-    Real y = 0;
-    for (unsigned int i = 0; i < t.dofs.size(); ++i) y += t.coef[i] * full[t.dofs[i]];
-    std::vector<Real> lkp(t.dofs.size()), lmp(t.dofs.size());
-    for (unsigned int i = 0; i < t.dofs.size(); ++i) {
-      lkp[i] = t.stiffness * y * t.coef[i];
-      lmp[i] = t.mass * y * t.coef[i];
-    }
-    scatter(t.dofs, 0, t.dofs.size(), lkp, kq);
-    scatter(t.dofs, 0, t.dofs.size(), lmp, mq);
-  }
-}
-
-Vector<double> RingModel::expand(const Vector<double>& q) const {
-  Vector<double> full(dof_handler_.n_dofs());
-  for (types::global_dof_index i = 0; i < full.size(); ++i)
-    if (free_[i] >= 0) full[i] = q[free_[i]];
-  constraints_.distribute(full);
-  return full;
+  apply_point_terms(full, kq, mq);
 }
 
 ring::ModeShape RingModel::sample(const Vector<double>& full) const {

@@ -7,6 +7,8 @@
 // computes the lowest modes (ring_eigen.cpp); sample() evaluates the FE fields at the
 // common stations; write_vtu() writes them for ParaView (ring_vtu.cpp); modes.cpp is the
 // reference driver (validation, the inextensible extrapolation, p/h refinement).
+// LinearModel is what the eigen-solve and the driver see of a model: RingModel
+// (Euler-Bernoulli) and TimoshenkoModel (timoshenko_model.hpp) implement it.
 #pragma once
 
 #include <deal.II/base/quadrature_lib.h>
@@ -104,6 +106,8 @@ struct Setup {
   Geometry geometry = Geometry::curved;
   bool rotary_inertia = false;
   double EA = 0.0;        ///< axial stiffness used (EA, or the inextensible penalty)
+  /// euler_bernoulli: RingModel; timoshenko: TimoshenkoModel (fields u, w, psi of degree p).
+  ring::Theory theory = ring::Theory::euler_bernoulli;
   int cells() const { return elements * subdivisions; }
 };
 
@@ -137,10 +141,17 @@ struct EigenPairs {
 /// Extended precision for the operator applications that refine the eigenpairs.
 using Real = long double;
 
-class RingModel {
+/// A linear ring model as the eigen-solve (ring_eigen.cpp) and the modes driver (modes.cpp)
+/// see it: the reduced system K q = lambda M q on the free DoFs (constraints eliminated,
+/// homogeneous), its shift sigma, an extended-precision K q and M q from the strain fields
+/// (apply), the point terms, and the way back to the fields (expand, sample, write_vtu).
+/// It holds what every model shares; a model fills constraints_, calls
+/// number_free_dofs(), builds sparsity_ and assembles K_, M_ and point_terms_.
+class LinearModel {
  public:
-  /// Builds mesh, constraints and matrices. O(cells (2p+3)^2).
-  RingModel(const ring::RingSpec& spec, const Setup& setup);
+  virtual ~LinearModel() = default;
+  LinearModel(const LinearModel&) = delete;
+  LinearModel& operator=(const LinearModel&) = delete;
 
   unsigned int n_free() const { return n_free_; }
   /// eps lambda_max / |sigma|: how much of the shifted operator's low end double
@@ -159,11 +170,70 @@ class RingModel {
   /// Reduced vector -> all DoFs (constraints distributed). O(N).
   Vector<double> expand(const Vector<double>& q) const;
   /// Radial and tangential displacement of a full DoF vector at the common stations,
+  /// normalized. O(kStations dofs per cell).
+  virtual ring::ModeShape sample(const Vector<double>& full) const = 0;
+  /// Writes the given full vectors to a VTU file with DataOut (ring_vtu.cpp).
+  virtual void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
+                         const std::string& file) const = 0;
+  /// The consistent mass matrix and the stiffness, reduced.
+  const SparseMatrix<double>& mass() const { return M_; }
+  const SparseMatrix<double>& stiffness() const { return K_; }
+  const SparsityPattern& sparsity() const { return sparsity_; }
+
+ protected:
+  LinearModel(const ring::RingSpec& spec, const Setup& setup);
+
+  /// K q and M q (reduced) accumulated in extended precision from the strain fields of
+  /// q, never from the assembled entries: q^T K q then loses no digits to the stiff
+  /// membrane (and shear) part (the assembled product cancels to ~eps lambda_max / lambda). O(N p).
+  virtual void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const = 0;
+  /// free_, expansion_ and n_free_ from the closed constraints_ over n_dofs DoFs.
+  void number_free_dofs(types::global_dof_index n_dofs);
+  /// Adds a local matrix on `dofs` to the reduced global matrix (constraints expanded).
+  void add_local(const FullMatrix<double>& local, const std::vector<types::global_dof_index>& dofs,
+                 SparseMatrix<double>& global) const;
+  /// The point terms' stiffness and mass into K_ and M_.
+  void assemble_point_terms();
+  /// The point terms' share of K q and M q (extended precision) for the full vector `full`.
+  void apply_point_terms(const Vector<double>& full, std::vector<Real>& kq, std::vector<Real>& mq) const;
+  /// Improves raw eigenpairs: Rayleigh-Ritz on their span with Gram matrices from
+  /// apply(), then subspace-iteration corrections q -= (K - sigma M)^{-1} r, each
+  /// followed by Ritz, until the residuals are below kRefinedResidual or stop halving
+  /// (at most kMaxRefinementRounds; one is enough up to ~10^5 unknowns, near the precision
+  /// limit each contracts by ~10: 3000 cells of degree 12, 6.6e-3 after one, 5e-7 after four).
+  /// Residuals ||r||_* / (||K q||_* + lambda ||M q||_*) in the dual norm of
+  /// K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm that bounds the
+  /// frequency error; the Euclidean norm would only show the round-off of the stiff
+  /// entries. A pair whose r^T (K - sigma M)^{-1} r comes out negative (the solve no
+  /// longer represents the operator) gets an infinite residual. O(rounds m^2 N) for m pairs.
+  EigenPairs refine(EigenPairs raw, unsigned int wanted, const SparseDirectUMFPACK& shifted_inverse) const;
+
+  const ring::RingSpec& spec_;
+  const Setup setup_;
+  const double sigma_;   ///< spectral shift, < 0 (rad/s)^2
+  AffineConstraints<double> constraints_;
+  /// Reduced numbering: free_[i] = index of unconstrained DoF i, or -1; expansion_[i]
+  /// lists (free index, weight) with U_i = sum weight * q_free (homogeneous constraints).
+  std::vector<int> free_;
+  std::vector<std::vector<std::pair<unsigned int, double>>> expansion_;
+  unsigned int n_free_ = 0;
+  SparsityPattern sparsity_;
+  SparseMatrix<double> K_, M_;
+  std::vector<PointTerm> point_terms_;
+};
+
+/// The Euler-Bernoulli ring (modes.hpp): C0 interior penalty for the bending field.
+class RingModel : public LinearModel {
+ public:
+  /// Builds mesh, constraints and matrices. O(cells (2p+3)^2).
+  RingModel(const ring::RingSpec& spec, const Setup& setup);
+
+  /// Radial and tangential displacement of a full DoF vector at the common stations,
   /// normalized. O(kStations (2p+3)).
-  ring::ModeShape sample(const Vector<double>& full) const;
+  ring::ModeShape sample(const Vector<double>& full) const override;
   /// Writes the given full vectors to a VTU file with DataOut.
   void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
-                 const std::string& file) const;
+                 const std::string& file) const override;
 
   // The geometrically exact beam on the same mesh, fields and constraints (ring_beam.cpp;
   // curved geometry only, formulation in nonlinear.hpp).
@@ -171,11 +241,8 @@ class RingModel {
   /// and its Hessian (the consistent tangent, on sparsity()) when not null.
   /// O(cells (p+2) (2p+3)^2).
   double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const;
-  /// The consistent mass matrix (constant: the polar basis at fixed theta does not move)
-  /// and the stiffness at rest (the tangent of beam_energy at q = 0), reduced.
-  const SparseMatrix<double>& mass() const { return M_; }
-  const SparseMatrix<double>& stiffness() const { return K_; }
-  const SparsityPattern& sparsity() const { return sparsity_; }
+  // mass() (constant: the polar basis at fixed theta does not move) and stiffness() (the
+  // tangent of beam_energy at q = 0) are LinearModel's.
   unsigned int cells() const { return setup_.cells(); }
   /// Index of the vertex at `degrees` (which must be a vertex: ring::on_node).
   unsigned int vertex_of(double degrees) const;
@@ -225,37 +292,16 @@ class RingModel {
   double ds_dtheta() const;
   /// DoFs at one end (xi = 0 or 1) of a cell, by component.
   std::array<types::global_dof_index, 2> end_dofs(unsigned int cell, double xi) const;
-  /// Adds a local matrix on `dofs` to the reduced global matrix (constraints expanded).
-  void add_local(const FullMatrix<double>& local, const std::vector<types::global_dof_index>& dofs,
-                 SparseMatrix<double>& global) const;
-  /// K q and M q (reduced) accumulated in extended precision from the strain fields of
-  /// q, never from the assembled entries: q^T K q then loses no digits to the stiff
-  /// membrane part (the assembled product cancels to ~eps lambda_max / lambda). O(N p).
-  void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const;
-  /// Improves raw eigenpairs: Rayleigh-Ritz on their span with Gram matrices from
-  /// apply(), then subspace-iteration corrections q -= (K - sigma M)^{-1} r, each
-  /// followed by Ritz, until the residuals are below kRefinedResidual or stop halving
-  /// (at most kMaxRefinementRounds; one is enough up to ~10^5 unknowns, near the precision
-  /// limit each contracts by ~10: 3000 cells of degree 12, 6.6e-3 after one, 5e-7 after four).
-  /// Residuals ||r||_* / (||K q||_* + lambda ||M q||_*) in the dual norm of
-  /// K - sigma M (||r||_*^2 = r^T (K - sigma M)^{-1} r), the norm that bounds the
-  /// frequency error; the Euclidean norm would only show the round-off of the stiff
-  /// entries. A pair whose r^T (K - sigma M)^{-1} r comes out negative (the solve no
-  /// longer represents the operator) gets an infinite residual. O(rounds m^2 N) for m pairs.
-  EigenPairs refine(EigenPairs raw, unsigned int wanted, const SparseDirectUMFPACK& shifted_inverse) const;
+  void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const override;
 
-  const ring::RingSpec& spec_;
-  const Setup setup_;
   const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
   const double h_;       ///< cell size in theta, rad
-  const double sigma_;   ///< spectral shift, < 0 (rad/s)^2
 
   Triangulation<1> triangulation_;
   FESystem<1> fe_;
   DoFHandler<1> dof_handler_;
   std::vector<DoFHandler<1>::active_cell_iterator> cells_;  ///< counter-clockwise order
   std::vector<std::array<double, 2>> chord_t_;  ///< polygon: unit tangent of each chord
-  AffineConstraints<double> constraints_;
 
   /// Shape functions on the reference cell (all cells are equal affine images of it):
   /// value, d/dtheta, d2/dtheta2 at the Gauss points, then at xi = 0 and xi = 1;
@@ -264,25 +310,28 @@ class RingModel {
   std::vector<double> v0_, v1_, v2_, ds_;
   std::vector<unsigned int> component_;
   double penalty_ = 0.0;  ///< sigma EI / h of the interior penalty
-
-  /// Reduced numbering: free_[i] = index of unconstrained DoF i, or -1; expansion_[i]
-  /// lists (free index, weight) with U_i = sum weight * q_free (homogeneous constraints).
-  std::vector<int> free_;
-  std::vector<std::vector<std::pair<unsigned int, double>>> expansion_;
-  unsigned int n_free_ = 0;
-  SparsityPattern sparsity_;
-  SparseMatrix<double> K_, M_;
-  std::vector<PointTerm> point_terms_;
 };
 
 template <int spacedim = 1>
 FESystem<1, spacedim> make_fe(const Setup& s) {
   // Curved: u (tangential) one degree above w (radial), so that u' and w share a space
   // and inextensional motion is exact (no membrane locking). Polygon: ux, uy of degree p.
+  // Timoshenko (curved only): u, w, psi all of degree p (timoshenko_model.hpp).
+  if (s.theory == ring::Theory::timoshenko) return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree), 3);
   if (s.geometry == Geometry::curved)
     return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree + 1), 1, FE_Q<1, spacedim>(s.degree), 1);
   return FESystem<1, spacedim>(FE_Q<1, spacedim>(s.degree), 2);
 }
+
+/// Writes `modes` (full DoF vectors on `cells`, counter-clockwise from the polar angle theta0)
+/// to a VTU file: the cells as a curve in the plane (ring_vtu.cpp). Either model's fields.
+void write_ring_vtu(const ring::RingSpec& spec, const Setup& setup, double theta0,
+                    const std::vector<DoFHandler<1>::active_cell_iterator>& cells,
+                    const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
+                    const std::string& file);
+
+/// The model of setup.theory: RingModel or TimoshenkoModel (timoshenko_model.cpp).
+std::unique_ptr<LinearModel> make_model(const ring::RingSpec& spec, const Setup& setup);
 
 /// Frequencies, shapes and residual of one discretization (with the inextensible
 /// extrapolation when asked). `full` receives the full DoF vectors if not null.

@@ -34,18 +34,27 @@ class CartesianDisplacement : public DataPostprocessorVector<2> {
 
 void RingModel::write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
                           const std::string& file) const {
+  write_ring_vtu(spec_, setup_, theta0_, cells_, modes, omega, file);
+}
+
+void write_ring_vtu(const ring::RingSpec& spec, const Setup& setup, double theta0,
+                    const std::vector<DoFHandler<1>::active_cell_iterator>& cells_ccw,
+                    const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
+                    const std::string& file) {
   // The same cells as a curve in the plane (Triangulation<1,2>, a closed loop), so that
   // ParaView shows the ring: the circle through a SphericalManifold, or the n-gon of
   // side 2 pi R / n. Local DoF orderings agree, so values are copied cell by cell.
-  const bool curved = setup_.geometry == Geometry::curved;
-  const unsigned int n = setup_.cells(), m = setup_.subdivisions;
-  const double chord_angle = 2.0 * kPi / setup_.elements;
-  const double corner = curved ? spec_.radius : spec_.radius * (chord_angle / 2.0) / std::sin(chord_angle / 2.0);
+  const bool curved = setup.geometry == Geometry::curved;
+  const bool shear = setup.theory == ring::Theory::timoshenko;
+  const unsigned int n = setup.cells(), m = setup.subdivisions;
+  const double h = 2.0 * kPi / n;
+  const double chord_angle = 2.0 * kPi / setup.elements;
+  const double corner = curved ? spec.radius : spec.radius * (chord_angle / 2.0) / std::sin(chord_angle / 2.0);
   std::vector<Point<2>> vertices(n);
   for (unsigned int i = 0; i < n; ++i) {
-    const double a0 = theta0_ + (i / m) * chord_angle, a1 = a0 + chord_angle, f = double(i % m) / m;
+    const double a0 = theta0 + (i / m) * chord_angle, a1 = a0 + chord_angle, f = double(i % m) / m;
     if (curved)
-      vertices[i] = Point<2>(spec_.radius * std::cos(theta0_ + i * h_), spec_.radius * std::sin(theta0_ + i * h_));
+      vertices[i] = Point<2>(spec.radius * std::cos(theta0 + i * h), spec.radius * std::sin(theta0 + i * h));
     else
       vertices[i] = Point<2>(corner * ((1 - f) * std::cos(a0) + f * std::cos(a1)),
                              corner * ((1 - f) * std::sin(a0) + f * std::sin(a1)));
@@ -59,7 +68,7 @@ void RingModel::write_vtu(const std::vector<Vector<double>>& modes, const std::v
     plane.set_all_manifold_ids(0);
     plane.set_manifold(0, circle);
   }
-  const FESystem<1, 2> fe(make_fe<2>(setup_));
+  const FESystem<1, 2> fe(make_fe<2>(setup));
   DoFHandler<1, 2> dofs(plane);
   dofs.distribute_dofs(fe);
 
@@ -69,21 +78,27 @@ void RingModel::write_vtu(const std::vector<Vector<double>>& modes, const std::v
   std::vector<std::unique_ptr<CartesianDisplacement>> displacement;
   Vector<double> local(fe.n_dofs_per_cell());
   for (unsigned int k = 0; k < modes.size(); ++k) {
+    // Scaled so that the largest nodal displacement is 1 (a Timoshenko rotation psi, in
+    // rad, takes the same factor and is not counted).
+    double largest = 0.0;
     for (const auto& cell : dofs.active_cell_iterators()) {
-      cells_[cell->index()]->get_dof_values(modes[k], local);
+      cells_ccw[cell->index()]->get_dof_values(modes[k], local);
       cell->set_dof_values(local, fields[k]);
+      for (unsigned int i = 0; i < local.size(); ++i)
+        if (fe.system_to_component_index(i).first < 2) largest = std::max(largest, std::abs(local[i]));
     }
-    const double largest = fields[k].linfty_norm();
     if (largest > 0) fields[k] /= largest;
     std::ostringstream suffix;  // mode number and frequency (rad/s) in every name
     suffix << "_" << (k + 1) << "_omega_" << omega[k];
-    data_out.add_data_vector(fields[k], std::vector<std::string>{(curved ? "tangential" : "ux") + suffix.str(),
-                                                                 (curved ? "radial" : "uy") + suffix.str()});
+    // Timoshenko: the cross-section rotation psi as a third scalar.
+    std::vector<std::string> names{(curved ? "tangential" : "ux") + suffix.str(), (curved ? "radial" : "uy") + suffix.str()};
+    if (shear) names.push_back("rotation" + suffix.str());
+    data_out.add_data_vector(fields[k], names);
     displacement.push_back(std::make_unique<CartesianDisplacement>("displacement" + suffix.str(), curved));
     data_out.add_data_vector(fields[k], *displacement.back());
   }
-  const MappingQ<1, 2> mapping(std::max(2, setup_.degree));
-  data_out.build_patches(mapping, setup_.degree + 1, DataOut<1, 2>::curved_inner_cells);
+  const MappingQ<1, 2> mapping(std::max(2, setup.degree));
+  data_out.build_patches(mapping, setup.degree + 1, DataOut<1, 2>::curved_inner_cells);
   std::ofstream out(file);
   if (!out) throw ring::NumericalError("fem: cannot write " + file);
   data_out.write_vtu(out);
@@ -105,10 +120,11 @@ std::string write_vtu(const ring::RingSpec& spec, const ring::FemOptions& option
   setup.degree = static_cast<int>(std::get<long long>(s.result.model.at("degree")));
   setup.geometry = options.geometry;
   setup.rotary_inertia = options.rotary_inertia;
+  setup.theory = spec.theory;
   setup.EA = spec.EA();
-  const RingModel model(spec, setup);  // the same mesh and DoF numbering as the solve
+  const auto model = make_model(spec, setup);  // the same mesh and DoF numbering as the solve
   const std::string file = dir + "/fem_modes.vtu";
-  model.write_vtu(s.full, s.result.omega, file);
+  model->write_vtu(s.full, s.result.omega, file);
   return file;
 }
 
