@@ -590,7 +590,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
         if (circular_distance(loads->points[i].angle, p) < 1e-6)
           r.fail(point_load_key(sec, *loads, i), &root,
                  "the load acts at the pin at " + fmt_num(p) + " deg, where it does nothing; load another point");
-    if (loads->has_gravity() && s.ring.rigid_modes() > 0)
+    if (loads->has_gravity() && !s.ring.supports.pin && s.ring.rigid_modes() > 0)
       r.fail(std::string(sec) + ".gravity", &root,
              "gravity on a ring that is free to move rigidly has no equilibrium and no meaning here: add a pin, a "
              "clamp, springs or a foundation");
