@@ -54,7 +54,19 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
   ring::refuse_timoshenko(spec, "multibody");
-  ring::refuse_terms_beyond_paper(spec, "multibody response");
+  // The dense path takes the foundation, springs and the clamp (stiffness only); point
+  // masses (a configuration-dependent mass) and further pins (constraint rows) it has not.
+  {
+    ring::RingSpec rest = spec;
+    rest.foundation = {};
+    rest.supports.springs.clear();
+    rest.supports.clamp.reset();
+    ring::refuse_terms_beyond_paper(rest, "multibody response");
+  }
+  if (!spec.paper_terms_only() &&
+      (response.integrator == ring::ResponseOptions::Integrator::energy_momentum ||
+       backend(options, spec, response.loads, Analysis::response) == Backend::banded))
+    ring::refuse_terms_beyond_paper(spec, "multibody response (energy-momentum and the O(n) path)");
   // Loads beyond one point load: the dense Newmark and generalized-alpha paths (loading.hpp).
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
     ring::one_point_load(response.loads, "response", "multibody response.integrator = \"energy-momentum\"");

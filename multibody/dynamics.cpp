@@ -82,7 +82,7 @@ class ChainStepper : public paths::Stepper {
       out.uy.push_back(u.y());
     }
     out.kinetic = chain_.kinetic_energy(s_.q, s_.v);
-    out.strain = chain_.spring_energy(s_.q);
+    out.strain = chain_.spring_energy(s_.q) + (p_.terms ? p_.terms->energy(s_.q) : 0.0);
     out.work = work_;
     out.dissipated = dissipated_;
     out.constraint_residual = chain_.constraints(s_.q).cwiseAbs().maxCoeff();
@@ -140,8 +140,10 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const int n = chain.dofs();
   std::optional<detail::Loading> loading;
   if (!one_point) loading.emplace(chain, spec, response.loads, "response");
+  std::optional<detail::Attachments> terms;
+  if (!spec.paper_terms_only()) terms.emplace(chain, spec);
   Problem p{chain, {one_point ? chain.hinge_at(load.angle) : 0, {load.force[0], load.force[1]}}, response.history,
-            loading ? &*loading : nullptr};
+            loading ? &*loading : nullptr, terms ? &*terms : nullptr};
   // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
   // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
   const detail::Damping damping{response.rayleigh_mass,
@@ -149,7 +151,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const bool damped = damping.any();
   const bool banded = backend(options, spec, response.loads, Analysis::response) == Backend::banded;
   const std::unique_ptr<detail::NewtonBackend> newton =
-      detail::make_newton_backend(chain, p.load, damping, banded, p.loading);
+      detail::make_newton_backend(chain, p.load, damping, banded, p.loading, p.terms);
   detail::NewtonBackend& nb = *newton;
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;

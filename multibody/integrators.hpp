@@ -35,6 +35,8 @@ struct Problem {
   ring::LoadHistory history;
   /// Loads beyond one point load (loading.hpp), on the dense backend only; null: `load`.
   const Loading* loading = nullptr;
+  /// The foundation, springs and clamp (attachments.hpp), on the dense backend only.
+  const Attachments* terms = nullptr;
 };
 
 /// Result of one attempted step.

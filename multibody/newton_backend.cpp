@@ -12,8 +12,9 @@ namespace {
 /// saddle-point matrix. O(n^2) memory.
 class DenseBackend final : public NewtonBackend {
  public:
-  DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading)
-      : NewtonBackend(chain, load, damping, loading), inertia_(inertia_constants(chain)), K_(chain.stiffness_matrix()) {
+  DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
+               const Attachments* terms)
+      : NewtonBackend(chain, load, damping, loading, terms), inertia_(inertia_constants(chain)), K_(chain.stiffness_matrix()) {
     if (damping.any())
       C_ = damping.mass * chain.mass_matrix(chain.q0()) + (damping.cyclic / chain.K()) * K_;
     else
@@ -33,7 +34,9 @@ class DenseBackend final : public NewtonBackend {
     A.topRightCorner(n, c) = G.transpose();
     A.bottomLeftCorner(c, n) = G;
     Vector b(n + c);
-    b.head(n) = f * phi - xi - C_ * v - chain_.spring_forces(q);
+    Vector elastic = chain_.spring_forces(q);
+    if (terms_) terms_->add_stiffness(q, elastic, nullptr);
+    b.head(n) = f * phi - xi - C_ * v - elastic;
     b.tail(c) = -chain_.constraint_jdot_qdot(q, v);
     const Vector x = A.partialPivLu().solve(b);
     qdd = x.head(n);
@@ -47,6 +50,10 @@ class DenseBackend final : public NewtonBackend {
     inertia_terms(inertia_, q, v, qdd, cm, cv, r, tangent ? &T_ : nullptr);
     if (tangent && damping_.any()) T_ += cv * C_;
     r += chain_.spring_forces(q) - f * load_forces_at(q, f, tangent ? &T_ : nullptr);
+    if (terms_) {
+      Eigen::Ref<Matrix> t(T_);
+      terms_->add_stiffness(q, r, tangent ? &t : nullptr);
+    }
     if (damping_.any()) r += C_ * v;
   }
 
@@ -182,11 +189,12 @@ Vector NewtonBackend::load_forces_at(const Vector& q, double f, Matrix* tangent)
 }
 
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
-                                                   bool structured, const Loading* loading) {
-  if (structured && loading)
-    throw std::invalid_argument("multibody: the O(n) response takes one point load only (method = \"sparse\")");
+                                                   bool structured, const Loading* loading,
+                                                   const Attachments* terms) {
+  if (structured && (loading || terms))
+    throw std::invalid_argument("multibody: the O(n) response takes the paper's ring and one point load only");
   if (structured) return std::make_unique<StructuredBackend>(chain, load, damping);
-  return std::make_unique<DenseBackend>(chain, load, damping, loading);
+  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms);
 }
 
 }  // namespace multibody::detail

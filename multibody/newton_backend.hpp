@@ -18,6 +18,7 @@
 
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
+#include "multibody/attachments.hpp"
 #include "multibody/loading.hpp"
 
 namespace multibody::detail {
@@ -59,8 +60,9 @@ class NewtonBackend {
   void invalidate() { valid_ = false; }
 
  protected:
-  NewtonBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading = nullptr)
-      : chain_(chain), load_(load), damping_(damping), loading_(loading) {}
+  NewtonBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading = nullptr,
+                const Attachments* terms = nullptr)
+      : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms) {}
   /// The loads' generalized forces at q (the dead point load, or `loading`'s), and, if
   /// `tangent` is not null, f times their stiffness added to it.
   Vector load_forces_at(const Vector& q, double f, Matrix* tangent) const;
@@ -68,14 +70,16 @@ class NewtonBackend {
   DeadLoad load_;
   Damping damping_;
   const Loading* loading_;
+  const Attachments* terms_;
   bool valid_ = false;
   double h_ = 0.0;
   double sc_ = 1.0;  ///< the constraint rows' scale of the last factorization
 };
 
 /// The dense or the structured backend for this chain, load and damping; `loading` (loads
-/// beyond one point load) on the dense one only.
+/// beyond one point load) and `terms` (foundation, springs, clamp) on the dense one only.
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
-                                                   bool structured, const Loading* loading = nullptr);
+                                                   bool structured, const Loading* loading = nullptr,
+                                                   const Attachments* terms = nullptr);
 
 }  // namespace multibody::detail
