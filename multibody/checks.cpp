@@ -31,7 +31,8 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
                                 "); use method = \"dense\" or \"auto\"");
 }
 
-void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
+void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                  const ring::StaticOptions& statics) {
   // The O(n) statics (hinge positions) assemble the paper's terms only; "auto" keeps the rest dense.
   if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
     ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
@@ -56,16 +57,14 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
   ring::refuse_timoshenko(spec, "multibody");
   // The dense path takes the foundation, springs and the clamp (stiffness only); point
   // masses (a configuration-dependent mass) and further pins (constraint rows) it has not.
-  {
-    ring::RingSpec rest = spec;
-    rest.foundation = {};
-    rest.supports.springs.clear();
-    rest.supports.clamp.reset();
-    ring::refuse_terms_beyond_paper(rest, "multibody response");
-  }
-  if (!spec.paper_terms_only() &&
-      (response.integrator == ring::ResponseOptions::Integrator::energy_momentum ||
-       backend(options, spec, response.loads, Analysis::response) == Backend::banded))
+  if (!spec.masses.empty() || !spec.supports.pins.empty())
+    throw std::invalid_argument(std::string("multibody response does not take ") +
+                                (spec.masses.empty()          ? "supports.pins"
+                                 : spec.supports.pins.empty() ? "masses"
+                                                              : "masses, supports.pins") +
+                                " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
+  if (!spec.paper_terms_only() && (response.integrator == ring::ResponseOptions::Integrator::energy_momentum ||
+                                   backend(options, spec, response.loads, Analysis::response) == Backend::banded))
     ring::refuse_terms_beyond_paper(spec, "multibody response (energy-momentum and the O(n) path)");
   // Loads beyond one point load: the dense Newmark and generalized-alpha paths (loading.hpp).
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)

@@ -32,7 +32,8 @@ Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loa
   };
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const auto& p = loads.points[i];
-    const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    const std::string key =
+        loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
     f_.col(hinge(p.angle, key)) += Eigen::Vector2d(p.force[0], p.force[1]);
   }
   const Eigen::Vector2d g(loads.gravity[0], loads.gravity[1]);
@@ -57,6 +58,7 @@ Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loa
     case ring::Pressure::Kind::follower: follower_ = p; break;
     case ring::Pressure::Kind::central: central_ = p; break;
   }
+  rest_shape_ = shape_potential(rest_);
 }
 
 Eigen::Matrix2Xd Loading::positions(const Vector& q) const {
@@ -104,27 +106,23 @@ Eigen::Matrix2Xd Loading::hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<
   return g;
 }
 
+double Loading::shape_potential(const Eigen::Matrix2Xd& p) const {
+  double area = 0.0, radius = 0.0;
+  if (follower_ != 0.0)
+    for (Eigen::Index k = 0; k < p.cols(); ++k) {
+      const Eigen::Index m = (k + 1) % p.cols();
+      area += 0.5 * (p(0, k) * p(1, m) - p(1, k) * p(0, m));
+    }
+  if (central_ != 0.0)
+    for (Eigen::Index j = 0; j + 1 < p.cols(); ++j)
+      for (std::size_t i = 0; i < kXi.size(); ++i)
+        radius += chain_.l() * kW[i] * ((1.0 - kXi[i]) * p.col(j) + kXi[i] * p.col(j + 1)).norm();
+  return follower_ * area + central_ * radius;
+}
+
 double Loading::potential(const Vector& q) const {
   const Eigen::Matrix2Xd p = positions(q);
-  double pi = -(f_.cwiseProduct(p - rest_)).sum();
-  auto area = [](const Eigen::Matrix2Xd& x) {
-    double a = 0.0;
-    for (Eigen::Index k = 0; k < x.cols(); ++k) {
-      const Eigen::Index m = (k + 1) % x.cols();
-      a += 0.5 * (x(0, k) * x(1, m) - x(1, k) * x(0, m));
-    }
-    return a;
-  };
-  auto length_weighted_radius = [&](const Eigen::Matrix2Xd& x) {
-    double s = 0.0;
-    for (Eigen::Index j = 0; j + 1 < x.cols(); ++j)
-      for (std::size_t i = 0; i < kXi.size(); ++i)
-        s += chain_.l() * kW[i] * ((1.0 - kXi[i]) * x.col(j) + kXi[i] * x.col(j + 1)).norm();
-    return s;
-  };
-  if (follower_ != 0.0) pi += follower_ * (area(p) - area(rest_));
-  if (central_ != 0.0) pi += central_ * (length_weighted_radius(p) - length_weighted_radius(rest_));
-  return pi;
+  return -(f_.cwiseProduct(p - rest_)).sum() + shape_potential(p) - rest_shape_;
 }
 
 Vector Loading::forces(const Vector& q) const {

@@ -55,6 +55,8 @@ class Loading {
  private:
   /// Hinge positions p_0 .. p_n (2 x (n + 1)). O(n).
   Eigen::Matrix2Xd positions(const Vector& q) const;
+  /// The shape-dependent part of Pi (follower and central pressure) at hinge positions p.
+  double shape_potential(const Eigen::Matrix2Xd& p) const;
   /// A 2 x 2 block d2Pi / dp_k dp_m.
   struct Block {
     int k, m;
@@ -69,6 +71,7 @@ class Loading {
   Eigen::Matrix2Xd rest_;  ///< rest positions P_0 .. P_n
   double follower_ = 0.0;  ///< p of follower pressure, N/m
   double central_ = 0.0;   ///< p of central pressure, N/m
+  double rest_shape_ = 0.0;  ///< follower p A + central p int |x| ds0 of the rest polygon, J
 };
 
 }  // namespace multibody::detail

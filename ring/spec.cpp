@@ -45,9 +45,7 @@ double LoadHistory::factor(double t) const {
   return 0.0;
 }
 
-double RingSpec::bending_frequency_scale() const {
-  return std::sqrt(EI() / (rhoA() * std::pow(radius, 4)));
-}
+double RingSpec::bending_frequency_scale() const { return std::sqrt(EI() / (rhoA() * std::pow(radius, 4))); }
 
 double RingSpec::slenderness() const { return radius / std::sqrt(I() / A()); }
 
@@ -100,14 +98,11 @@ int RingSpec::rigid_modes() const {
   return 3 - static_cast<int>(lu.rank());
 }
 
-void refuse_timoshenko(const RingSpec& spec, const std::string& who) {
-  if (spec.theory == Theory::timoshenko)
-    throw std::invalid_argument(who + " has no Timoshenko model yet (ring.theory = \"timoshenko\"; see the README, "
-                                      "\"Thick rings\", for what each solver takes)");
-}
+namespace {
 
-void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
-  const std::vector<std::string> keys = spec.terms_beyond_paper();
+/// Throws std::invalid_argument "`who` does not take KEY, KEY yet (see the README ...)" for a
+/// non-empty list of scene keys.
+void refuse_keys(const std::vector<std::string>& keys, const std::string& who) {
   if (keys.empty()) return;
   std::string list;
   for (std::size_t i = 0; i < keys.size(); ++i) list += (i ? ", " : "") + keys[i];
@@ -115,15 +110,23 @@ void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
                               " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
 }
 
+}  // namespace
+
+void refuse_timoshenko(const RingSpec& spec, const std::string& who) {
+  if (spec.theory == Theory::timoshenko)
+    throw std::invalid_argument(who +
+                                " has no Timoshenko model yet (ring.theory = \"timoshenko\"; see the README, "
+                                "\"Thick rings\", for what each solver takes)");
+}
+
+void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
+  refuse_keys(spec.terms_beyond_paper(), who);
+}
+
 const PointLoad& one_point_load(const Loads& loads, const std::string& section, const std::string& who) {
   std::vector<std::string> keys = loads.beyond_one_point(section);
   if (keys.empty() && loads.points.empty()) keys.push_back(section + ".pressure or " + section + ".gravity alone");
-  if (!keys.empty()) {
-    std::string list;
-    for (std::size_t i = 0; i < keys.size(); ++i) list += (i ? ", " : "") + keys[i];
-    throw std::invalid_argument(who + " does not take " + list +
-                                " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
-  }
+  refuse_keys(keys, who);
   return loads.points.front();
 }
 
@@ -187,9 +190,7 @@ std::string to_string(LumpedOptions::Variant v) {
   }
   return "";
 }
-std::string to_string(FemOptions::Geometry g) {
-  return g == FemOptions::Geometry::polygon ? "polygon" : "curved";
-}
+std::string to_string(FemOptions::Geometry g) { return g == FemOptions::Geometry::polygon ? "polygon" : "curved"; }
 std::string to_string(LoadHistory::Kind k) {
   switch (k) {
     case LoadHistory::Kind::step: return "step";
