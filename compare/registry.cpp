@@ -355,6 +355,7 @@ std::vector<SolverEntry> make_registry() {
     }
     e.statics = named_and_timed(e.name, e.statics);
     e.response = named_and_timed(e.name, e.response);
+    e.buckling = named_and_timed(e.name, e.buckling);
   }
   return v;
 }
@@ -390,7 +391,8 @@ const ring::SceneSchema& scene_schema() {
     ring::SceneSchema s;
     for (const auto& e : registry())
       s.solvers.push_back(
-          {e.name, e.size_key, e.size, e.elastic_modes, bool(e.statics), bool(e.response), e.integer_ranges});
+          {e.name, e.size_key, e.size, e.elastic_modes, bool(e.statics), bool(e.response), bool(e.buckling),
+           e.integer_ranges});
     s.default_solver = registry().front().name;  // the paper's method
     s.reference_solver = "fem";
     return s;
@@ -416,12 +418,14 @@ void check_scene(const ring::Scene& scene) {
     if (scene.column(e.name)) check(e.check_modes, scene, e.name);
     if (scene.statics && runs(scene.static_request, e.name)) check(e.check_static, scene, e.name);
     if (scene.response && runs(scene.response_request, e.name)) check(e.check_response, scene, e.name);
+    if (scene.buckling && runs(scene.buckling_request, e.name)) check(e.check_buckling, scene, e.name);
   }
   const SolverEntry& ref = solver(scene.reference_solver);
   const ring::Scene r = reference_scene(scene);
   if (scene.needs_reference()) check(ref.check_modes, r, ref.name);
   if (scene.statics && scene.static_request.reference) check(ref.check_static, r, ref.name);
   if (scene.response && scene.response_request.reference) check(ref.check_response, r, ref.name);
+  if (scene.buckling && scene.buckling_request.reference) check(ref.check_buckling, r, ref.name);
 }
 
 ring::Scene reference_scene(const ring::Scene& scene) {
@@ -456,6 +460,15 @@ ring::TimeHistory reference_response(const ring::Scene& scene) {
     throw ring::InputError(scene.file, "response.reference", "the " + e.name + " solver has no forced response");
   const ring::Scene s = reference_scene(scene);
   ring::TimeHistory out = e.response(s);
+  out.solver = "reference";
+  return out;
+}
+
+ring::BucklingResult reference_buckling(const ring::Scene& scene) {
+  const SolverEntry& e = solver(scene.reference_solver);
+  if (!e.buckling) throw ring::InputError(scene.file, "buckling.reference", "the " + e.name + " solver has no buckling");
+  const ring::Scene s = reference_scene(scene);
+  ring::BucklingResult out = e.buckling(s);
   out.solver = "reference";
   return out;
 }

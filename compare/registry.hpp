@@ -57,13 +57,15 @@ struct SolverEntry {
   /// What the solver refuses before it computes, per analysis, under the scene's options
   /// (check_scene calls them for the analyses the scene runs with the solver, and with
   /// reference_scene for the reference). Throw std::invalid_argument. O(1). Empty: none.
-  std::function<void(const ring::Scene&)> check_modes, check_static, check_response;
+  std::function<void(const ring::Scene&)> check_modes, check_static, check_response, check_buckling;
 
   /// Analyses. Each throws ring::InputError (exit 2) for a request that cannot work and
   /// ring::NumericalError (exit 3; ring::IntegrationFailure for a response) on failure.
   std::function<ring::ModalResult(const ring::Scene&, int count)> modes;
   std::function<ring::StaticResult(const ring::Scene&)> statics;
   std::function<ring::TimeHistory(const ring::Scene&)> response;
+  /// Linear buckling under the scene's [buckling] (ring::BucklingOptions).
+  std::function<ring::BucklingResult(const ring::Scene&)> buckling;
   /// Writes the `count` lowest mode shapes as VTU files into `dir` (ParaView), if offered.
   std::function<void(const ring::Scene&, int count, const std::string& dir)> write_vtu;
 };
@@ -99,5 +101,6 @@ ring::ModalResult reference_modes(const ring::Scene& scene, int count);
 /// The converged nonlinear references of the reference solver.
 ring::StaticResult reference_static(const ring::Scene& scene);
 ring::TimeHistory reference_response(const ring::Scene& scene);
+ring::BucklingResult reference_buckling(const ring::Scene& scene);
 
 }  // namespace cmp

@@ -38,6 +38,26 @@ struct StaticOptions {
   std::vector<double> record;          ///< degrees, points reported
 };
 
+/// Linear buckling about the undeformed ring ([buckling]): the load factors lambda and
+/// modes phi of the reference loads with
+///
+///   (K_0 + lambda K_1) phi = 0,   K_1 = d/ds K_T(s u_1, s) at s = 0,
+///
+/// K_T(u, s) the model's tangent stiffness at the state u under s times the loads (its
+/// constraints' multipliers included; on the constraints' tangent space at rest), K_0 =
+/// K_T(0, 0) and u_1 the linear static response to the loads (K_0 u_1 = f). K_1 holds the
+/// initial stress of the linear prebuckling state, the load stiffness of follower and
+/// central pressure, gravity's and a dead pressure's none, and the first-order
+/// initial-displacement terms. Where the prebuckling state is a membrane state (uniform
+/// pressure: u_1 = 0 on an inextensible model, a uniform contraction on an extensible
+/// one) lambda is the bifurcation load of the continuum; where the loads bend the ring
+/// (point loads) it is the model's first-order estimate and differs between formulations
+/// by O(lambda |u_1|), which the nonlinear path does not.
+struct BucklingOptions {
+  Loads loads;     ///< the reference loads (buckling.loads, or [static]'s)
+  int count = 4;   ///< the lowest positive critical load factors wanted
+};
+
 std::string to_string(ResponseOptions::Integrator i);
 
 }  // namespace ring

@@ -137,6 +137,24 @@ double critical_pressure(const RingSpec& spec, Pressure::Kind kind, int n) {
   return spec.EI() * m * m / (std::pow(spec.radius, 3) * pressure_stiffness_factor(kind, n));
 }
 
+double pinned_ring_critical_pressure(const RingSpec& spec, Pressure::Kind kind) {
+  const double unit = spec.EI() / std::pow(spec.radius, 3);
+  if (kind == Pressure::Kind::follower) return 3.0 * unit;
+  if (kind == Pressure::Kind::central) return 4.5 * unit;
+  // The secular function of the out-of-phase even harmonics, increasing on (0, 4) from -1.
+  auto f = [](double P) {
+    double sum = 0.0;
+    for (int n = 20000; n >= 2; n -= 2) {  // smallest terms first
+      const double m = static_cast<double>(n) * n;
+      sum += 1.0 / ((m - 1.0) * (m - 1.0) * (m - P));
+    }
+    return 2.0 * P * sum - 1.0;
+  };
+  double lo = 0.0, hi = 4.0;
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) (f(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi) * unit;
+}
+
 DiametralDeflection diametral_load_under_pressure(const RingSpec& spec, double P, const Pressure& pressure) {
   constexpr int kLast = 40000;
   const double R3 = std::pow(spec.radius, 3);

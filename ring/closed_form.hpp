@@ -92,6 +92,29 @@ double pressure_stiffness_factor(Pressure::Kind kind, int n);
 /// p_n of the formula above for wave number n >= 2, N/m.
 double critical_pressure(const RingSpec& spec, Pressure::Kind kind, int n = 2);
 
+/// The lowest critical uniform pressure (N/m, positive inward) of a thin inextensible ring
+/// held by a pin and a roller diametrically opposite it (ring::Supports: the roller keeps
+/// its point on the diameter through the pin; statically determinate, so no prebuckling
+/// reactions). Every admissible shape is an elastic one (the harmonics n >= 2 of
+/// critical_pressure) plus the rigid motion that the supports impose: the translation that
+/// holds the pin, and for an even harmonic out of phase with the pin (its radial
+/// displacement zero there) the rotation c = -(u_t(pin) + u_t(roller)) / 2R, odd harmonics
+/// none. A rigid motion costs nothing under follower pressure (the area does not change)
+/// and its translation nothing under dead pressure, but a dead pressure's second-order
+/// work on a rotation c is pi p R^2 c^2 (the points move inward by c^2 R / 2 at second
+/// order), and a central pressure resists translation (K_1 = p):
+///   follower: 3 EI/R^3 (each n = 2 shape, with or without rotation);
+///   central:  4.5 EI/R^3 (the even shape out of phase with the pin needs a rotation only,
+///             which costs a central pressure nothing; every other shape costs more);
+///   dead:     the root P in (0, 4) of  1 = 2 P sum_{n even >= 2} 1 / ((n^2 - 1)^2 (n^2 - P)),
+///             P = p R^3 / EI (the out-of-phase even harmonics coupled through the rotation
+///             they need: P = 3.27125), below Levy's 4 of the free ring, which the shape in
+///             phase with the pin (a translation only) keeps.
+/// Derivation as critical_pressure's, with the supports' rigid motion added (the second
+/// variation of each pressure's potential on a rigid motion and its cross terms with the
+/// harmonics n >= 1, which vanish by orthogonality). Sum to n = 20000, root by bisection.
+double pinned_ring_critical_pressure(const RingSpec& spec, Pressure::Kind kind);
+
 /// diametral_load (two equal and opposite forces P along a diameter) on the ring that also
 /// carries a uniform pressure p below its critical value, linear in P about the pressurized
 /// circle, the ring held by a pin on the diameter across the loads (and a roller opposite).

@@ -59,6 +59,19 @@ struct ModalResult {
   double error_estimate = 0.0;
 };
 
+/// Linear buckling of one model (ring::BucklingOptions): the lowest positive critical load
+/// factors of the reference loads, ascending, and their mode shapes at the common stations
+/// (ModeShape's scaling); a load factor of 1 is the loads as given.
+struct BucklingResult {
+  std::string solver;                         ///< "multibody", "fem", "lumped"
+  std::map<std::string, ModelValue> model;    ///< the discretization (n, degree, ...)
+  std::vector<double> factors;                ///< lambda_1 <= lambda_2 <= ...
+  std::vector<ModeShape> shapes;              ///< same order as factors
+  long long unknowns = 0;                     ///< size of the eigenproblem solved
+  double seconds = 0.0;                       ///< solver wall time
+  double error_estimate = 0.0;                ///< reference runs only; 0 if not estimated
+};
+
 /// Displacement of a named point, ring-centred frame.
 struct PointDisplacement {
   double angle = 0.0;  ///< degrees

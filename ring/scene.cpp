@@ -322,7 +322,7 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   struct Model { std::string name, key; int n; };
   std::vector<Model> models;
   for (const auto& m : schema.solvers)
-    if (s.needs(m.name) || s.runs_nonlinear(m.name)) models.push_back({m.name, m.size_key, m.size(s)});
+    if (s.needs(m.name) || s.runs_nonlinear(m.name) || s.runs_buckling(m.name)) models.push_back({m.name, m.size_key, m.size(s)});
   const auto& sup = s.ring.supports;
   double anchor = sup.pin.value_or(0.0);
   if (!sup.pin) {
@@ -348,6 +348,9 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
       points.push_back({point_load_key("static", s.statics->loads, i), s.statics->loads.points[i].angle});
     for (double a : s.statics->record) points.push_back({"static.record", a});
   }
+  if (s.buckling)
+    for (std::size_t i = 0; i < s.buckling->loads.points.size(); ++i)
+      points.push_back({point_load_key("buckling", s.buckling->loads, i), s.buckling->loads.points[i].angle});
   for (const auto& p : points) {
     for (const auto& m : models) {
       if (on_node(p.angle, anchor, m.n)) continue;
@@ -364,10 +367,11 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   }
 }
 
-/// [response].solvers / [static].solvers (default: the schema's default solver) and
-/// .reference; each listed solver must offer the analysis.
+/// [response].solvers / [static].solvers / [buckling].solvers (default: the schema's
+/// default solver) and .reference; each listed solver must offer the analysis.
 NonlinearRequest read_request(const Reader& r, const toml::table& t, const std::string& sec,
                               const SceneSchema& schema, bool SolverSchema::*offers) {
+  const std::string what = sec == "static" ? "nonlinear statics" : sec == "buckling" ? "linear buckling" : "a forced response";
   NonlinearRequest q;
   q.solvers = r.strings(t, sec, "solvers", schema.names());
   if (t.contains("solvers") && q.solvers.empty()) r.fail(sec + ".solvers", t.get("solvers"), "expected at least one solver");
@@ -375,7 +379,7 @@ NonlinearRequest read_request(const Reader& r, const toml::table& t, const std::
   for (const auto& name : q.solvers)
     if (!(schema.find(name)->*offers))
       r.fail(sec + ".solvers", t.get("solvers"),
-             "the " + name + " solver does not offer " + (sec == "static" ? "nonlinear statics" : "a forced response"));
+             "the " + name + " solver does not offer " + what);
   q.reference = r.boolean(t, sec, "reference", false);
   if (q.reference && !(schema.find(schema.reference_solver)->*offers))
     r.fail(sec + ".reference", t.get("reference"), "the reference solver " + schema.reference_solver + " does not offer it");
@@ -396,7 +400,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   Scene s;
   s.reference_solver = schema.reference_solver;
   r.known_keys(root, "", {"title", "ring", "supports", "masses", "foundation", "multibody", "fem", "lumped",
-                          "calculix", "modes", "table", "gates", "response", "static"});
+                          "calculix", "modes", "table", "gates", "response", "static", "buckling"});
   if (const toml::node* n = root.get("title")) {
     auto t = n->value_exact<std::string>();
     if (!t) r.fail("title", n, "expected a string");
@@ -512,7 +516,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
 
   // A scene that lists no analysis at all: the modes of the solver sections present
   // (README, modes.solvers), rather than nothing.
-  if (!root.get("modes") && !root.get("table") && !root.get("response") && !root.get("static"))
+  if (!root.get("modes") && !root.get("table") && !root.get("response") && !root.get("static") && !root.get("buckling"))
     for (const auto& m : schema.solvers)
       if (root.get(m.name)) s.modes.solvers.push_back(m.name);
 
@@ -582,8 +586,30 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     s.statics = o;
     s.static_request = read_request(r, *t, sec, schema, &SolverSchema::statics);
   }
+  if (const toml::table* t = r.table(root, "", "buckling")) {
+    const std::string sec = "buckling";
+    r.known_keys(*t, sec, {"solvers", "reference", "count", "at", "force", "loads", "pressure", "gravity"});
+    BucklingOptions o;
+    const bool own = t->contains("at") || t->contains("force") || t->contains("loads") || t->contains("pressure") ||
+                     t->contains("gravity");
+    if (own) o.loads = read_loads(r, *t, sec);
+    else if (s.statics) o.loads = s.statics->loads;
+    else r.fail("buckling.loads", t, "has no load: give buckling.loads, .at/.force, .pressure or .gravity, or a [static] "
+                                     "section whose loads it takes");
+    // Buckling about a state that exists: nothing left to move rigidly under the loads.
+    if (const int rigid = static_rigid_modes(s.ring, o.loads); rigid > 0)
+      r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
+             "linear buckling needs the ring held, and it has " + std::to_string(rigid) + " rigid mode" +
+                 (rigid > 1 ? "s" : "") + " that the loads do not restrain: add " +
+                 (s.ring.supports.pin ? "a roller (or a second pin, a clamp, springs or a foundation)"
+                                      : "a pin and a roller (or springs or a foundation)"));
+    o.count = static_cast<int>(r.integer(*t, sec, "count", 4, 1, 1000));
+    s.buckling = o;
+    s.buckling_request = read_request(r, *t, sec, schema, &SolverSchema::buckling);
+  }
   for (const auto& [sec, loads] : {std::pair{"response", s.response ? &s.response->loads : nullptr},
-                                    std::pair{"static", s.statics ? &s.statics->loads : nullptr}}) {
+                                    std::pair{"static", s.statics ? &s.statics->loads : nullptr},
+                                    std::pair{"buckling", s.buckling ? &s.buckling->loads : nullptr}}) {
     if (!loads) continue;
     for (std::size_t i = 0; i < loads->points.size(); ++i)
       for (double p : s.ring.supports.pinned())
@@ -605,6 +631,15 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
              std::to_string(s.modes.count) + " modes asked, but the " + m.name + " model (" + m.size_key +
                  ") has only " + std::to_string(most) + " elastic modes");
   }
+  if (s.buckling)
+    for (const auto& m : schema.solvers) {
+      if (!s.runs_buckling(m.name)) continue;
+      const long long most = m.elastic_modes(s);
+      if (s.buckling->count > most)
+        r.fail("buckling.count", root.at_path("buckling.count").node(),
+               std::to_string(s.buckling->count) + " critical loads asked, but the " + m.name + " model (" +
+                   m.size_key + ") has only " + std::to_string(most) + " elastic modes");
+    }
   for (const auto& g : s.gates) {
     const std::string key = "gates." + g.solver;
     if (g.analysis != "modes") {
@@ -984,6 +1019,12 @@ bool Scene::runs_nonlinear(const std::string& solver) const {
            (q.reference && solver == reference_solver);
   };
   return (response && in(response_request)) || (statics && in(static_request));
+}
+
+bool Scene::runs_buckling(const std::string& solver) const {
+  const NonlinearRequest& q = buckling_request;
+  return buckling && (std::find(q.solvers.begin(), q.solvers.end(), solver) != q.solvers.end() ||
+                      (q.reference && solver == reference_solver));
 }
 
 const SolverSchema* SceneSchema::find(const std::string& name) const {

@@ -70,6 +70,7 @@ struct SolverSchema {
   std::function<long long(const Scene&)> elastic_modes;
   bool statics = false;               ///< offers nonlinear statics
   bool response = false;              ///< offers the forced nonlinear response
+  bool buckling = false;              ///< offers linear buckling
   /// Integer options of its section whose valid range is the solver's own, by key (fem:
   /// "degree", fem_reference/checks.hpp): the reader refuses a value outside
   /// [first, second], naming the key, before any solver runs.
@@ -101,6 +102,8 @@ struct Scene {
   NonlinearRequest response_request;   ///< response.solvers, response.reference
   std::optional<StaticOptions> statics;
   NonlinearRequest static_request;     ///< static.solvers, static.reference
+  std::optional<BucklingOptions> buckling;
+  NonlinearRequest buckling_request;   ///< buckling.solvers, buckling.reference
   std::vector<std::string> warnings;   ///< e.g. the thin-ring assumption stretched
   std::string resolved_toml;           ///< the scene after --set overrides, as TOML
 
@@ -117,6 +120,8 @@ struct Scene {
   bool needs(const std::string& solver) const;
   /// True when a nonlinear analysis of the scene runs this solver (or its reference).
   bool runs_nonlinear(const std::string& solver) const;
+  /// True when [buckling] runs this solver (or its reference).
+  bool runs_buckling(const std::string& solver) const;
 };
 
 /// Largest scene file read (bytes), and the deepest nesting of tables and arrays (dotted-key
