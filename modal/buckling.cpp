@@ -1,0 +1,35 @@
+#include "modal/buckling.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <stdexcept>
+
+namespace modal {
+
+CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count,
+                                 const std::string& who) {
+  const Eigen::LLT<Eigen::MatrixXd> llt(K0);
+  if (llt.info() != Eigen::Success)
+    throw std::invalid_argument(who + ": the stiffness at rest is not positive definite: the ring has a rigid "
+                                "mode that the supports leave free; add a support");
+  Eigen::MatrixXd C = llt.matrixL().solve(K1.selfadjointView<Eigen::Lower>().toDenseMatrix());
+  C = llt.matrixL().solve(C.transpose()).eval();  // L^-1 K_1 L^-T (K_1 symmetric)
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
+  if (eig.info() != Eigen::Success) throw std::runtime_error(who + ": the buckling eigenproblem did not converge");
+  const Eigen::VectorXd& mu = eig.eigenvalues();  // ascending: the most negative first
+  const double floor = 1e-12 * mu.cwiseAbs().maxCoeff();
+  int positive = 0;
+  while (positive < mu.size() && mu[positive] < -floor) ++positive;
+  if (positive < count)
+    throw std::invalid_argument(who + ": buckling.count = " + std::to_string(count) + ", but the loads have only " +
+                                std::to_string(positive) + " positive critical load factor" +
+                                (positive == 1 ? "" : "s") + " in this model (the others buckle under the loads "
+                                "reversed, or never); ask for fewer");
+  CriticalFactors out;
+  out.factors.resize(count);
+  for (int i = 0; i < count; ++i) out.factors[i] = -1.0 / mu[i];
+  out.vectors = llt.matrixU().solve(eig.eigenvectors().leftCols(count));  // L^-T y
+  return out;
+}
+
+}  // namespace modal

@@ -1,0 +1,31 @@
+// The one eigen step of linear buckling (ring/analysis.hpp, BucklingOptions) that every
+// solver shares: the lowest positive load factors of the pencil (K_0 + lambda K_1), given
+// the two matrices on the solver's admissible space (constraints eliminated). Each
+// solver builds K_0 and K_1 in its own coordinates; this layer knows no solver.
+//
+// Method: K_0 = L L^T (Cholesky; K_0 must be positive definite: a held ring at rest), then
+// the symmetric C = L^-1 K_1 L^-T, whose eigenvalues mu = -1 / lambda (LAPACK-style dense
+// tridiagonal QR, Eigen's SelfAdjointEigenSolver); the positive lambda are the negative mu,
+// the lowest lambda the most negative mu. x = L^-T y. Cost: O(N^3) time, O(N^2) memory.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+
+namespace modal {
+
+struct CriticalFactors {
+  Eigen::VectorXd factors;  ///< lambda_1 <= lambda_2 <= ..., positive
+  Eigen::MatrixXd vectors;  ///< [N x count], column i the mode of factors[i]
+};
+
+/// The `count` lowest positive lambda of (K_0 + lambda K_1) x = 0, K_0 symmetric positive
+/// definite, K_1 symmetric (both read from their lower triangles). A mu within 1e-12 of
+/// the largest |mu| of zero is no buckling (lambda beyond 1e12 times the lowest). Throws
+/// std::invalid_argument naming `who` when K_0 is not positive definite (a rigid mode the
+/// supports leave free), or naming buckling.count when the pencil has fewer than `count`
+/// positive factors (the others buckle under the loads reversed, or never).
+CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count,
+                                 const std::string& who);
+
+}  // namespace modal
