@@ -14,6 +14,7 @@
 
 #include "calculix/modes.hpp"
 #include "compare/bench.hpp"
+#include "compare/buckling.hpp"
 #include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
 #include "compare/files.hpp"
@@ -93,7 +94,7 @@ std::optional<std::string> single_solver(const std::string& option, const ring::
 /// The names each command may write into its output folder (Outputs::folder checks that
 /// none of them is taken by a folder, a symlink or a device before anything is computed).
 const std::vector<std::string> kRunNames = {"report", "table", "modes_", "shapes_", "mode_shapes", "difference",
-                                            "error", "response", "static"};
+                                            "error", "response", "static", "buckling"};
 const std::vector<std::string> kConvergeNames = {"convergence"};
 const std::vector<std::string> kBenchNames = {"bench"};
 const std::vector<std::string> kVtuNames = {"fem_modes"};
@@ -196,6 +197,16 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
       }
     }
   }
+  if (s.buckling) {
+    const BucklingRun b = run_buckling(s, "", p.stream());
+    if (b.results.size() > 1 || b.reference) {
+      rep.buckling_table = buckling_table(s, b);
+      std::cout << format_text(*rep.buckling_table) << "\n";
+    } else {
+      std::cout << buckling_text(s, b.results.front()) << "\n";
+    }
+    rep.buckling = b;
+  }
   if (!junit.empty()) files.stage_file(junit, junit_xml(s.title.empty() ? a.scene : s.title, rep.gates));
   if (!out_dir.empty()) {
     p.say("writing the report, data and figures to " + out_dir);
@@ -250,6 +261,25 @@ int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const 
   }
   const ring::StaticResult r = run_nonlinear(s, *one, progress).statics.front();
   std::cout << (json ? static_json(r) : static_text(r));
+  return 0;
+}
+
+int cmd_buckling(const CommonArgs& a, bool json, const std::string& solver, const std::string& format) {
+  const ring::Scene s = load(a, &ring::Scene::buckling_request, solver);
+  if (!s.buckling) throw ring::InputError(a.scene, "buckling", "the scene has no [buckling] section");
+  const Progress p(a.quiet);
+  const auto one = single_solver(solver, s.buckling_request);
+  const BucklingRun r = run_buckling(s, one.value_or(""), p.stream());
+  if (one) {
+    std::cout << (json ? buckling_json(r.results.front()) : buckling_text(s, r.results.front()));
+    return 0;
+  }
+  const Table t = buckling_table(s, r);
+  const std::string f = json ? "json" : format;
+  if (f == "md") std::cout << format_markdown(t);
+  else if (f == "csv") std::cout << format_csv(t);
+  else if (f == "json") std::cout << format_json(t);
+  else std::cout << format_text(t);
   return 0;
 }
 

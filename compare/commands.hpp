@@ -28,6 +28,9 @@ int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int>
 int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format);
 /// One solver: its equilibrium (text, or JSON with --json). Several: the comparison table.
 int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const std::string& format);
+/// [buckling]: one solver, its critical load factors (text, or JSON with --json); several
+/// (or a reference), the buckling table in `format`.
+int cmd_buckling(const CommonArgs& a, bool json, const std::string& solver, const std::string& format);
 int cmd_converge(const CommonArgs& a, const std::string& out_dir);
 int cmd_bench(const CommonArgs& a, const std::string& out_dir);
 /// Writes the input deck of an external solver (calculix: DIR/ring.inp, the deck its

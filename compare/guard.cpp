@@ -36,8 +36,9 @@ Estimate estimate_memory(const ring::Scene& s) {
   }
   double code = 0.0;
   for (const SolverEntry& e : registry()) {
-    const bool modes = s.needs(e.name), nonlinear = s.runs_nonlinear(e.name);
-    if (modes || nonlinear) code += e.code_bytes;
+    const bool modes = s.needs(e.name), nonlinear = s.runs_nonlinear(e.name), buckling = s.runs_buckling(e.name);
+    if (modes || nonlinear || buckling) code += e.code_bytes;
+    if (e.buckling_memory && buckling) consider(e.buckling_memory(s), e.size_key, "the " + e.name + " buckling");
     if (e.memory && modes) consider(e.memory(s, s.modes.count), e.size_key, "the " + e.name + " modes");
     if (e.memory && nonlinear) {
       // Every response solver's history is kept until the comparison is written.

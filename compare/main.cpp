@@ -83,6 +83,14 @@ int main(int argc, char** argv) {
   statics->add_option("--format", format, "the comparison table of several solvers: text | md | csv | json")
       ->check(CLI::IsMember({"text", "md", "csv", "json"}));
 
+  auto* buckling = app.add_subcommand("buckling", "linear buckling of [buckling]: critical load factors and modes");
+  add_common(buckling, a);
+  buckling->add_flag("--json", json, "print JSON");
+  buckling->add_option("--solver", solver, "only this solver (default: buckling.solvers)")
+      ->check(CLI::IsMember(cmp::solver_names()));
+  buckling->add_option("--format", format, "the table of several solvers: text | md | csv | json")
+      ->check(CLI::IsMember({"text", "md", "csv", "json"}));
+
   auto* converge = app.add_subcommand("converge", "error against refinement and observed orders, per solver");
   add_common(converge, a);
   converge->add_option("--out", out, "folder for the CSV and the log-log figure");
@@ -135,6 +143,7 @@ int main(int argc, char** argv) {
     if (*modes) return cmp::cmd_modes(a, solver, count, json, vtu);
     if (*respond) return cmp::cmd_respond(a, csv, solver, format);
     if (*statics) return cmp::cmd_static(a, json, solver, format);
+    if (*buckling) return cmp::cmd_buckling(a, json, solver, format);
     if (*converge) return cmp::cmd_converge(a, out);
     if (*bench) return cmp::cmd_bench(a, out);
     if (*sweep) return cmp::cmd_sweep(a, sw, argc, argv);

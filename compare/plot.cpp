@@ -104,7 +104,8 @@ Series undeformed_ring(double radius) {
   return ring;
 }
 
-void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius, int count) {
+void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius, int count,
+                      const ShapeFigure& figure) {
   int modes = count;
   for (const auto& r : results) modes = std::min<int>(modes, static_cast<int>(r.shapes.size()));
   if (modes <= 0) return;
@@ -143,12 +144,14 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
   const int cols = modes <= 4 ? 2 : 3, rows = (modes + cols - 1) / cols;
   std::ostringstream g;
   g << "set multiplot layout " << rows << "," << cols
-    << " title 'First mode shapes (deformed ring over the undeformed circle, amplitude 15 % of R)'\n"
+    << " title " << gp_string(figure.title + " (deformed ring over the undeformed circle, amplitude 15 % of R)") << "\n"
     << "set size ratio -1\nunset key\nset xtics format ''\nset ytics format ''\nset parametric\nset trange [0:2*pi]\n"
     << "set xrange [" << -1.3 * radius << ":" << 1.3 * radius << "]\nset yrange [" << -1.3 * radius << ":"
     << 1.3 * radius << "]\n";
   for (int k = 0; k < modes; ++k) {
-    g << "set title " << gp_string("mode " + std::to_string(k + 1) + ": " + sig4(results[0].omega[k]) + " rad/s") << "\n";
+    g << "set title "
+      << gp_string(figure.panel + std::to_string(k + 1) + ": " + figure.prefix + sig4(results[0].omega[k]) + figure.suffix)
+      << "\n";
     if (k == 0) g << "set key bottom right font ',9'\n";
     g << "plot " << radius << "*cos(t), " << radius << "*sin(t) lc rgb '#aaaaaa' dt 2 notitle";
     for (std::size_t m = 0; m < results.size(); ++m)
@@ -158,7 +161,7 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
     if (k == 0) g << "unset key\n";
   }
   g << "unset multiplot\n";
-  render(dir, "mode_shapes", g.str(), d.str(), 1200, 400 * rows);
+  render(dir, figure.name, g.str(), d.str(), 1200, 400 * rows);
 }
 
 void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,

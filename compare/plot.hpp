@@ -18,8 +18,15 @@ void render(const std::string& dir, const std::string& name, const std::string& 
 
 /// The first `count` (<= 9) mode shapes as in the paper's Figure 3: the deformed ring
 /// over the undeformed one, one panel per mode, every model of `results` overlaid.
+/// What a shape figure is called and how its panels are titled ("mode 3: 41.2 rad/s").
+struct ShapeFigure {
+  std::string name = "mode_shapes";        ///< NAME.png, NAME.gp, NAME.dat
+  std::string title = "First mode shapes";
+  std::string panel = "mode ";             ///< panel k's title: panel k: prefix value suffix
+  std::string prefix, suffix = " rad/s";
+};
 void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius,
-                      int count = 9);
+                      int count = 9, const ShapeFigure& figure = {});
 
 /// Lines y[k] against x for several named series, with labelled axes (log-log if asked).
 struct Series {

@@ -12,6 +12,7 @@
 #include "fem_reference/checks.hpp"
 #include "lumped_mass/checks.hpp"
 #include "multibody/backend.hpp"
+#include "multibody/buckling.hpp"
 #include "multibody/checks.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
@@ -103,6 +104,13 @@ SolverEntry multibody_entry() {
   };
   e.response = [](const ring::Scene& s) {
     return as_input_error(s, "response", [&] { return multibody::respond(s.ring, s.multibody, *s.response); });
+  };
+  e.check_buckling = [](const ring::Scene& s) { multibody::check_buckling(s.ring, s.multibody, *s.buckling); };
+  // Dense n x n matrices: the tangent, K_1, the (n + 3)^2 prebuckling LU, the QR's Q, the
+  // reduced pencil and its eigenvectors, about ten of them (to be measured).
+  e.buckling_memory = [](const ring::Scene& s) { return 100.0 * s.multibody.n * s.multibody.n; };
+  e.buckling = [](const ring::Scene& s) {
+    return as_input_error(s, "buckling", [&] { return multibody::compute_buckling(s.ring, s.multibody, *s.buckling); });
   };
   return e;
 }

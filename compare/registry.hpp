@@ -48,6 +48,8 @@ struct SolverEntry {
   /// Estimated peak memory (bytes) of `count` modes (count 0: the nonlinear solves) under
   /// the scene's options, for the cost guard (guard.hpp); calibrated in the README.
   std::function<double(const ring::Scene&, int count)> memory;
+  /// Estimated peak memory (bytes) of its linear buckling (dense pencils), for the cost guard.
+  std::function<double(const ring::Scene&)> buckling_memory;
   /// Memory of the code the solver loads on first use (a plug-in and its libraries), for
   /// the cost guard; 0 for a solver linked into ringvib.
   double code_bytes = 0.0;

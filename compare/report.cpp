@@ -194,6 +194,27 @@ void write_report(const std::string& dir, const RunReport& r) {
     files.push_back("static_shapes.png");
     md << "![deformed ring under the static load](static_shapes.png)\n\n";
   }
+  if (r.buckling) {
+    md << "## Linear buckling\n\n";
+    for (const auto& b : r.buckling->results) put("buckling_" + b.solver + ".json", buckling_json(b));
+    if (r.buckling->reference) put("buckling_reference.json", buckling_json(*r.buckling->reference));
+    if (r.buckling_table) {
+      md << format_markdown(*r.buckling_table) << "\n";
+      put("buckling_table.txt", format_text(*r.buckling_table));
+      put("buckling_table.md", format_markdown(*r.buckling_table));
+      put("buckling_table.csv", format_csv(*r.buckling_table));
+      put("buckling_table.json", format_json(*r.buckling_table));
+    } else {
+      md << "```\n" << buckling_text(s, r.buckling->results.front()) << "```\n\n";
+    }
+    std::vector<ring::ModalResult> shapes;
+    for (const auto& b : r.buckling->results) shapes.push_back(as_modal(b));
+    if (r.buckling->reference) shapes.push_back(as_modal(*r.buckling->reference));
+    plot_mode_shapes(dir, shapes, s.ring.radius, std::min(9, s.buckling->count),
+                     {"buckling_shapes", "Buckling modes", "buckling mode ", "lambda = ", ""});
+    files.push_back("buckling_shapes.png");
+    md << "![buckling modes](buckling_shapes.png)\n\n";
+  }
   md << "## Scene (after --set overrides)\n\n```toml\n" << s.resolved_toml << "\n```\n\n## Files\n\n";
   for (const auto& f : files) md << "- `" << f << "`\n";
   md << "\nEach figure NAME.png has NAME.gp (gnuplot script) and NAME.dat (data) beside it.\n";

@@ -8,6 +8,7 @@
 
 #include "compare/gates.hpp"
 #include "compare/nonlinear.hpp"
+#include "compare/buckling.hpp"
 #include "compare/table.hpp"
 #include "ring/results.hpp"
 #include "ring/scene.hpp"
@@ -24,6 +25,8 @@ struct RunReport {
   std::optional<ring::StaticResult> statics;     ///< the first statics solver's
   std::optional<NonlinearRun> nonlinear;         ///< every nonlinear result
   std::optional<NonlinearTable> response_table, static_table;  ///< with several solvers or a reference
+  std::optional<BucklingRun> buckling;           ///< [buckling]'s results
+  std::optional<Table> buckling_table;           ///< with several solvers or a reference
 };
 
 /// Writes every file of the report into `dir` (which exists). Lists what it wrote in

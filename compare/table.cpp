@@ -129,7 +129,7 @@ bool any_subspace(const Table& t) {
 
 std::string footnotes(const Table& t) {
   std::ostringstream s;
-  s << "rad/s. diff % = (" << label(t.columns[0].solver) << " - other) / other * 100 (the paper's definition)";
+  s << t.unit << ". diff % = (" << label(t.columns[0].solver) << " - other) / other * 100 (the paper's definition)";
   if (t.reference) s << "; error % = (value - reference) / reference * 100, reference = converged FE";
   s << ".\n";
   if (any_reordered(t)) s << "* paired by MAC with a mode of another number in that solver's own order.\n";

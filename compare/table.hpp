@@ -26,6 +26,7 @@ struct Column {
 
 struct Table {
   std::string title;
+  std::string unit = "rad/s";               ///< what the values are, first words of the notes
   int rows = 0;
   std::vector<Column> columns;              ///< base first
   std::optional<Column> reference;          ///< paired with the base like any column

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "ring/sampling.hpp"
+
 namespace multibody {
 
 namespace {
@@ -249,6 +251,26 @@ Vector Chain::hinge_rotations(const Vector& q) const {
 
 double Chain::spring_energy(const Vector& q) const {
   return 0.5 * k_ * hinge_rotations(q).squaredNorm();
+}
+
+Eigen::Matrix2Xd Chain::rest_displacements(const Vector& dq) const {
+  Eigen::Matrix2Xd u(2, n_);
+  Eigen::Vector2d p = free_ ? Eigen::Vector2d(dq(n_), dq(n_ + 1)) : Eigen::Vector2d::Zero();
+  for (int j = 0; j < n_; ++j) {
+    u.col(j) = p;
+    p += l_ * dq(j) * Eigen::Vector2d(-std::sin(phi0_[j]), std::cos(phi0_[j]));
+  }
+  return u;
+}
+
+ring::ModeShape Chain::rest_shape(const Vector& dq) const {
+  const Eigen::Matrix2Xd u = rest_displacements(dq);
+  std::vector<double> ux(n_), uy(n_);
+  for (int j = 0; j < n_; ++j) {
+    ux[j] = u(0, j);
+    uy[j] = u(1, j);
+  }
+  return ring::sample_polygon(anchor_deg_, ux, uy);
 }
 
 Vector Chain::spring_forces(const Vector& q) const {

@@ -50,6 +50,7 @@
 #include <optional>
 #include <vector>
 
+#include "ring/results.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
@@ -99,6 +100,11 @@ class Chain {
   Eigen::Matrix2Xd hinge_positions(const Vector& q) const;
   /// All segment midpoints, column i = segment i. O(n).
   Eigen::Matrix2Xd midpoints(const Vector& q) const;
+  /// Hinge displacements of a small change dq about rest, to first order (column k =
+  /// hinge k): dp_k = dp_0 + l sum_{j<k} e'(phi0_j) dq_j. O(n).
+  Eigen::Matrix2Xd rest_displacements(const Vector& dq) const;
+  /// The same, sampled at the common stations (a mode shape, ring/results.hpp). O(n).
+  ring::ModeShape rest_shape(const Vector& dq) const;
   /// d p_k / d q (2 x dofs()). O(n).
   Matrix hinge_jacobian(const Vector& q, int k) const;
 

@@ -283,25 +283,18 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   // common stations below is output formatting (ring::sample_polygon, ~10 us per mode).
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  // Hinge displacements delta p_k = delta p_0 + l sum_{j<k} e'(phi0_j) delta phi_j.
   const int n = chain.n();
-  const Vector& phi0 = chain.phi0();
-  const Vector ls = chain.l() * phi0.array().sin(), lc = chain.l() * phi0.array().cos();
   sol.hinge_ux.resize(n, count);
   sol.hinge_uy.resize(n, count);
   for (int k = 0; k < count; ++k) {
-    double x = chain.free() ? sol.dq(n, k) : 0.0, yv = chain.free() ? sol.dq(n + 1, k) : 0.0;
-    for (int j = 0; j < n; ++j) {
-      sol.hinge_ux(j, k) = x;
-      sol.hinge_uy(j, k) = yv;
-      x -= ls[j] * sol.dq(j, k);
-      yv += lc[j] * sol.dq(j, k);
-    }
-    const Vector ux = sol.hinge_ux.col(k), uy = sol.hinge_uy.col(k);
-    res.shapes.push_back(ring::sample_polygon(chain.anchor_deg(), std::vector<double>(ux.data(), ux.data() + n),
-                                              std::vector<double>(uy.data(), uy.data() + n)));
+    const Vector dq = sol.dq.col(k);
+    const Eigen::Matrix2Xd u = chain.rest_displacements(dq);
+    sol.hinge_ux.col(k) = u.row(0).transpose();
+    sol.hinge_uy.col(k) = u.row(1).transpose();
+    res.shapes.push_back(chain.rest_shape(dq));
   }
-  return sol;}
+  return sol;
+}
 
 ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options, int count) {
   return solve_modes(spec, options, count, kDefaultSparseEigensolver);

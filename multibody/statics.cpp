@@ -9,9 +9,6 @@
 
 #include "ring/errors.hpp"
 
-#include "multibody/attachments.hpp"
-#include "multibody/chain.hpp"
-#include "multibody/loading.hpp"
 #include "multibody/natural.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
@@ -31,38 +28,75 @@ std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State&, const
 }
 
 }  // namespace detail
+namespace detail {
+
+DenseTangent::DenseTangent(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads,
+                           const std::string& section)
+    : chain_(chain),
+      loads_(chain, spec, loads, section),
+      terms_(chain, spec),
+      K_(chain.stiffness_matrix()),
+      n_(chain.dofs()),
+      c_(chain.constraint_count() + terms_.pin_rows()) {}
+
+Chain::ConstraintKinematics DenseTangent::constraints(const Vector& q) const {
+  Chain::ConstraintKinematics ck = chain_.constraint_kinematics(q);
+  if (terms_.pin_rows() == 0) return ck;
+  const Chain::ConstraintKinematics p = terms_.pins(q);
+  ck.g.conservativeResize(c_);
+  ck.g.tail(p.g.size()) = p.g;
+  ck.G.conservativeResize(c_, Eigen::NoChange);
+  ck.G.bottomRows(p.G.rows()) = p.G;
+  ck.hess.conservativeResize(c_, Eigen::NoChange);
+  ck.hess.bottomRows(p.hess.rows()) = p.hess;
+  return ck;
+}
+
+Vector DenseTangent::internal_forces(const Vector& q) const {
+  Vector forces = chain_.spring_forces(q);
+  terms_.add_stiffness(q, forces, nullptr);
+  return forces;
+}
+
+void DenseTangent::add_terms(const Vector& q, Eigen::Ref<Matrix> T) const {
+  Vector unused = Vector::Zero(n_);
+  terms_.add_stiffness(q, unused, &T);
+}
+
+void DenseTangent::add_tangent(const Vector& q, const Vector& lambda, double s, const Chain::ConstraintKinematics& ck,
+                               Eigen::Ref<Matrix> T) const {
+  T += K_;
+  add_terms(q, T);
+  loads_.add_stiffness(q, s, T);
+  T.diagonal() += ck.hess.transpose() * lambda;
+}
+
+}  // namespace detail
 namespace {
 
 /// The dense path: unknowns z = (segment angles q, multipliers lambda). The bordered
-/// tangent [T sc G^T -Phi; sc G 0 0; w^T 0 ws], T = K + diag(lambda . Hess g) - s dPhi/dq
-/// (all corrections diagonal, see dynamics_model.hpp), with the constraint rows and the
-/// multipliers scaled by sc = K / l (G on the scale of the springs), by dense LU: O(n^3).
+/// tangent [T sc G^T -Phi; sc G 0 0; w^T 0 ws] (T: detail::DenseTangent), with the
+/// constraint rows and the multipliers scaled by sc = K / l (G on the scale of the
+/// springs), by dense LU: O(n^3).
 class AngleStatics : public detail::StaticEquilibrium {
  public:
   AngleStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
       : StaticEquilibrium(chain, depth),
-        loads_(chain, spec, loads, "static"),
-        terms_(chain, spec),
-        K_(chain.stiffness_matrix()),
-        n_(chain.dofs()),
-        c_(chain.constraint_count() + terms_.pin_rows()),
+        tangent_(chain, spec, loads, "static"),
+        n_(tangent_.dofs()),
+        c_(tangent_.rows()),
         sc_(chain.K() / chain.l()) {}
   Eigen::Index size() const override { return n_ + c_; }
   Eigen::Index arc_size() const override { return n_; }
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
     const Vector q = x.z.head(n_), lambda = x.z.tail(c_);
-    const Chain::ConstraintKinematics ck = constraints(q);
-    const Vector phi = loads_.forces(q);
-    Vector forces = chain_.spring_forces(q);
-    Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
-    A.topLeftCorner(n_, n_) = K_;
-    Eigen::Ref<Matrix> stiffness = A.topLeftCorner(n_, n_);
-    terms_.add_stiffness(q, forces, &stiffness);
-    loads_.add_stiffness(q, x.s, stiffness);
+    const Chain::ConstraintKinematics ck = tangent_.constraints(q);
+    const Vector phi = tangent_.loads().forces(q);
     r.resize(n_ + c_);
-    r << forces + ck.G.transpose() * lambda - x.s * phi, ck.g;
+    r << tangent_.internal_forces(q) + ck.G.transpose() * lambda - x.s * phi, ck.g;
     if (!r.allFinite()) return false;
-    A.diagonal().head(n_) += ck.hess.transpose() * lambda;
+    Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
+    tangent_.add_tangent(q, lambda, x.s, ck, A.topLeftCorner(n_, n_));
     A.block(0, n_, n_, c_) = sc_ * ck.G.transpose();
     A.block(n_, 0, c_, n_) = sc_ * ck.G;
     A.col(n_ + c_).head(n_) = -phi;
@@ -89,23 +123,7 @@ class AngleStatics : public detail::StaticEquilibrium {
   }
 
  private:
-  /// The chain's constraints, then the further pins' rows (attachments.hpp).
-  Chain::ConstraintKinematics constraints(const Vector& q) const {
-    Chain::ConstraintKinematics ck = chain_.constraint_kinematics(q);
-    if (terms_.pin_rows() == 0) return ck;
-    const Chain::ConstraintKinematics p = terms_.pins(q);
-    ck.g.conservativeResize(c_);
-    ck.g.tail(p.g.size()) = p.g;
-    ck.G.conservativeResize(c_, Eigen::NoChange);
-    ck.G.bottomRows(p.G.rows()) = p.G;
-    ck.hess.conservativeResize(c_, Eigen::NoChange);
-    ck.hess.bottomRows(p.hess.rows()) = p.hess;
-    return ck;
-  }
-
-  const detail::Loading loads_;  ///< point loads, pressure, gravity
-  const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
-  const Matrix K_;  ///< the dense path's n x n stiffness, built only here
+  const detail::DenseTangent tangent_;
   const Eigen::Index n_, c_;
   const double sc_;
   Eigen::PartialPivLU<Matrix> lu_;

@@ -18,7 +18,10 @@
 #include <memory>
 #include <optional>
 
+#include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
+#include "multibody/chain.hpp"
+#include "multibody/loading.hpp"
 #include "paths/continuation.hpp"
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
@@ -27,9 +30,39 @@
 
 namespace multibody {
 
-class Chain;
-
 namespace detail {
+
+/// The dense path's equilibrium pieces in the segment angles q (and the free ring's base),
+/// shared by the statics and linear buckling (buckling.hpp): the residual
+///   internal_forces(q) + G(q)^T lambda - s loads().forces(q),   constraints g(q) = 0,
+/// with the chain's closure rows followed by the further pins' rows, and its tangent
+///   T = K + the terms' Hessian + s (load stiffness) + diag(lambda . Hess g)
+/// (every constraint Hessian is diagonal in the angles: dynamics_model.hpp). O(n) for the
+/// forces and the constraints, O(n^2) for the tangent.
+class DenseTangent {
+ public:
+  /// `section` names the keys of the loads in messages ("static", "buckling").
+  DenseTangent(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section);
+  Eigen::Index dofs() const { return n_; }
+  Eigen::Index rows() const { return c_; }
+  const Loading& loads() const { return loads_; }
+  /// The chain's constraints at q, then the further pins' rows (attachments.hpp).
+  Chain::ConstraintKinematics constraints(const Vector& q) const;
+  /// The springs' and the terms' forces dV/dq.
+  Vector internal_forces(const Vector& q) const;
+  /// Adds T(q, lambda, s) to `T` (n x n), `ck` being constraints(q).
+  void add_tangent(const Vector& q, const Vector& lambda, double s, const Chain::ConstraintKinematics& ck,
+                   Eigen::Ref<Matrix> T) const;
+  /// Adds only the terms' Hessian at q (foundation, springs, clamp) to `T`.
+  void add_terms(const Vector& q, Eigen::Ref<Matrix> T) const;
+
+ private:
+  const Chain& chain_;
+  const Loading loads_;      ///< point loads, pressure, gravity
+  const Attachments terms_;  ///< foundation, springs, clamp, further pins
+  const Matrix K_;           ///< the n x n spring stiffness
+  const Eigen::Index n_, c_;
+};
 
 /// The chain's static equilibrium in one backend's unknowns, for the continuation driver;
 /// the self-contact check (the end of the path) is common to both.

@@ -1,0 +1,107 @@
+// Linear buckling of the chain (multibody/buckling.hpp). Oracles: the closed-form critical
+// pressures of the thin inextensible ring on a pin and a roller (ring/closed_form.hpp,
+// pinned_ring_critical_pressure: Levy 1884, Timoshenko & Gere sec. 7.3-7.4, with the
+// supports' rigid motion derived there), the chain's measured order of convergence, and a
+// 2 x 2 pencil solved by hand for the shared eigen step (modal/buckling.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "modal/buckling.hpp"
+#include "multibody/buckling.hpp"
+#include "ring/closed_form.hpp"
+#include "support/paper.hpp"
+
+namespace {
+
+using Kind = ring::Pressure::Kind;
+
+ring::BucklingOptions pressure(Kind kind, double value = 1.0, int count = 4) {
+  ring::BucklingOptions b;
+  b.loads.pressure = {value, kind};
+  b.count = count;
+  return b;
+}
+
+ring::RingSpec held_ring() {
+  ring::RingSpec spec = ringtest::pinned_ring(270.0);
+  spec.supports.roller = 90.0;
+  return spec;
+}
+
+std::vector<double> factors(const ring::RingSpec& spec, int n, const ring::BucklingOptions& b) {
+  ring::MultibodyOptions o;
+  o.n = n;
+  return multibody::compute_buckling(spec, o, b).factors;
+}
+
+// The chain's lowest factor under each kind of pressure converges to the closed form at
+// second order (the chain's O(1/n^2), multibody/README.md); observed orders within 0.15 of
+// 2 (Richardson's asymptotic range is reached from n = 40 on for the n = 2 wave), and the
+// error at n = 160 below 0.1 % (what O(1/n^2) leaves: ~ (pi/n)^2 / 3).
+TEST(MultibodyBuckling, PressureOfEachKindConvergesToTheClosedFormAtSecondOrder) {
+  const ring::RingSpec spec = held_ring();
+  for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
+    const double exact = ring::closed_form::pinned_ring_critical_pressure(spec, kind);
+    std::vector<double> err;
+    for (int n : {40, 80, 160}) err.push_back(std::abs(factors(spec, n, pressure(kind))[0] - exact) / exact);
+    SCOPED_TRACE(static_cast<int>(kind));
+    EXPECT_LT(err[2], 1e-3);
+    for (int i = 0; i + 1 < 3; ++i) EXPECT_NEAR(std::log2(err[i] / err[i + 1]), 2.0, 0.15);
+  }
+}
+
+// Follower pressure does no work on a rigid motion: both n = 2 shapes buckle together (a
+// double factor to round-off: the chain is symmetric about the diameter through the pin).
+// Dead pressure: the shape in phase with the pin needs a translation only and keeps Levy's
+// 4 EI/R^3; the odd waves need none of the rotation, n = 3 at 9 EI/R^3 (p_n = n^2 EI/R^3).
+TEST(MultibodyBuckling, TheHigherFactorsAreTheOtherWavesOfTheClosedForm) {
+  const ring::RingSpec spec = held_ring();
+  const double unit = spec.EI() / std::pow(spec.radius, 3);
+  const std::vector<double> f = factors(spec, 160, pressure(Kind::follower));
+  EXPECT_NEAR(f[1] / f[0], 1.0, 1e-9);
+  EXPECT_NEAR(f[2] / unit, 8.0, 8.0 * 2e-3);  // n = 3: (n^2 - 1), the same O(1/n^2) error as above times n^2/4
+  const std::vector<double> d = factors(spec, 160, pressure(Kind::dead));
+  EXPECT_NEAR(d[1] / unit, 4.0, 4.0 * 1e-3);
+  EXPECT_NEAR(d[2] / unit, 9.0, 9.0 * 2e-3);
+  EXPECT_NEAR(d[3] / d[2], 1.0, 1e-9);
+}
+
+// Statically determinate supports leave the follower factor where they are put, and the
+// factors are inverse to the load: the loads enter linearly.
+TEST(MultibodyBuckling, FactorsScaleInverselyWithTheLoadAndIgnoreWhereTheSupportsAre) {
+  ring::RingSpec turned = ringtest::pin_roller_ring();  // pin 180, roller 0
+  const double a = factors(held_ring(), 80, pressure(Kind::follower))[0];
+  EXPECT_NEAR(factors(turned, 80, pressure(Kind::follower))[0] / a, 1.0, 1e-9);
+  EXPECT_NEAR(factors(held_ring(), 80, pressure(Kind::follower, 250.0))[0] * 250.0 / a, 1.0, 1e-12);
+}
+
+TEST(MultibodyBuckling, RefusesWhatItCannotDo) {
+  ring::MultibodyOptions sparse;
+  sparse.method = ring::MultibodyOptions::Method::sparse;
+  EXPECT_THROW(multibody::check_buckling(held_ring(), sparse, pressure(Kind::follower)), std::invalid_argument);
+  // A pinned ring without a roller turns freely under a pressure.
+  EXPECT_THROW(multibody::check_buckling(ringtest::pinned_ring(270.0), {}, pressure(Kind::follower)),
+               std::invalid_argument);
+  ring::RingSpec thick = held_ring();
+  thick.theory = ring::Theory::timoshenko;
+  EXPECT_THROW(multibody::check_buckling(thick, {}, pressure(Kind::follower)), std::invalid_argument);
+}
+
+// (K_0 + lambda K_1) x = 0 with K_0 = diag(2, 1), K_1 = diag(-1, 0.5): lambda = 2 (and
+// -2, which buckles under the load reversed); asking for two positive factors is refused.
+TEST(ModalBuckling, TheLowestPositiveFactorsOfATwoByTwoPencil) {
+  Eigen::MatrixXd K0(2, 2), K1(2, 2);
+  K0 << 2.0, 0.0, 0.0, 1.0;
+  K1 << -1.0, 0.0, 0.0, 0.5;
+  const modal::CriticalFactors c = modal::critical_factors(K0, K1, 1, "test");
+  EXPECT_NEAR(c.factors[0], 2.0, 1e-14);
+  EXPECT_NEAR(std::abs(c.vectors(1, 0)), 0.0, 1e-14);
+  EXPECT_THROW(modal::critical_factors(K0, K1, 2, "test"), std::invalid_argument);
+  Eigen::MatrixXd singular = K0;
+  singular(1, 1) = 0.0;
+  EXPECT_THROW(modal::critical_factors(singular, K1, 1, "test"), std::invalid_argument);
+}
+
+}  // namespace
