@@ -1,0 +1,84 @@
+// Linear buckling through the ringvib command (scenes/ring-buckling.toml): every solver's
+// critical pressures and the converged reference against the closed forms of the thin ring
+// on a pin and a roller (ring/closed_form.hpp, pinned_ring_critical_pressure), the table's
+// pairing, the report's files, and the refusals (exit 2, the key named).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli.hpp"
+#include "ring/closed_form.hpp"
+#include "support/paper.hpp"
+
+using ringtest::ringvib;
+using ringtest::source;
+
+namespace {
+
+const std::string kScene = "scenes/ring-buckling.toml";
+
+ring::RingSpec held_ring() {
+  ring::RingSpec spec = ringtest::pinned_ring(270.0);
+  spec.supports.roller = 90.0;
+  return spec;
+}
+
+double unit() {
+  const ring::RingSpec s = held_ring();
+  return s.EI() / std::pow(s.radius, 3);
+}
+
+// One solver: its factors are the critical pressures (the scene's pressure is 1 N/m), also
+// given in EI/R^3; the multibody chain at n = 80 within its measured O(1/n^2) error (0.21 %
+// at n = 80 for the n = 2 wave: tests/multibody/test_buckling.cpp) of the closed form.
+TEST(BucklingCli, OneSolverPrintsItsFactorsAndTheCriticalPressures) {
+  const auto r = ringvib("buckling " + source(kScene) + " --solver multibody -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("p_cr R^3/EI"), std::string::npos) << r.out;
+  const auto j = ringvib("buckling " + source(kScene) + " --solver multibody --json -q");
+  ASSERT_EQ(j.code, 0) << j.err;
+  const auto f = nlohmann::json::parse(j.out)["factors"];
+  ASSERT_EQ(f.size(), 4u);
+  EXPECT_NEAR(f[0].get<double>() / (3.0 * unit()), 1.0, 3e-3);
+  EXPECT_NEAR(f[1].get<double>() / f[0].get<double>(), 1.0, 1e-9);
+}
+
+TEST(BucklingCli, RefusesWhatCannotWorkNamingTheKey) {
+  const std::string dir = ringtest::temp_dir();
+  const std::string base = ringtest::source_text(kScene);
+  struct Case {
+    std::string name, sets, key;
+  };
+  const std::vector<Case> cases = {
+      {"count", "--set buckling.count=100000 --set 'buckling.solvers=[\"multibody\"]' --set buckling.reference=false",
+       "buckling.count"},
+      {"calculix", "--set 'buckling.solvers=[\"calculix\"]' --set buckling.reference=false", "buckling.solvers"},
+      {"sparse", "--set 'buckling.solvers=[\"multibody\"]' --set buckling.reference=false --set multibody.method=sparse",
+       "sparse"},
+  };
+  for (const Case& c : cases) {
+    const auto r = ringvib("buckling " + source(kScene) + " -q " + c.sets);
+    EXPECT_EQ(r.code, 2) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << c.name << ": " << r.err;
+  }
+  // A ring without a roller, and a [buckling] with no load and no [static] to take them from.
+  std::string no_roller = base;
+  no_roller.replace(no_roller.find("roller = 90.0"), 13, "");
+  ringtest::write(dir + "/a.toml", no_roller);
+  const auto a = ringvib("buckling " + dir + "/a.toml -q --set 'buckling.solvers=[\"multibody\"]' --set buckling.reference=false");
+  EXPECT_EQ(a.code, 2);
+  EXPECT_NE(a.err.find("supports.roller"), std::string::npos) << a.err;
+  std::string no_load = base;
+  no_load.replace(no_load.find("pressure = {"), no_load.find('\n', no_load.find("pressure = {")) - no_load.find("pressure = {"),
+                  "");
+  ringtest::write(dir + "/b.toml", no_load);
+  const auto b = ringvib("buckling " + dir + "/b.toml -q --set 'buckling.solvers=[\"multibody\"]' --set buckling.reference=false");
+  EXPECT_EQ(b.code, 2);
+  EXPECT_NE(b.err.find("buckling.loads"), std::string::npos) << b.err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
