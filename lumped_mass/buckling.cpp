@@ -25,9 +25,15 @@ Dense dense(int rows, int cols, const Triplets& t) {
   return Dense(A);
 }
 
-/// The chain's tangent (chain.hpp) at (x, lambda, s), dense 2n x 2n.
-Dense tangent_at(const Chain& c, const ChainLoads& loads, const Vec& x, const Vec& lambda, double s) {
-  return dense(2 * c.n, 2 * c.n, tangent(c, loads, x, lambda, s, 1.0).hess);
+using Sparse = Eigen::SparseMatrix<double>;
+
+/// The chain's tangent (chain.hpp) at (x, lambda, s), 2n x 2n, banded plus the closing
+/// corners (sparse, so that Z^T T Z costs one dense product).
+Sparse tangent_at(const Chain& c, const ChainLoads& loads, const Vec& x, const Vec& lambda, double s) {
+  const Triplets t = tangent(c, loads, x, lambda, s, 1.0).hess;
+  Sparse T(2 * c.n, 2 * c.n);
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
 }
 
 /// Relative hinge move of the central difference for K_1 (buckling.hpp: near the optimum
@@ -54,8 +60,8 @@ ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::Lu
   const Dense Z = Dense(qr.householderQ()).rightCols(free);
 
   // 1. Linear statics at rest: x1 on ker G, then the multiplier rates from the force balance.
-  const Dense T0 = tangent_at(c, loads, x0, Vec::Zero(R), 0.0);
-  const Dense K0r = Z.transpose() * T0 * Z;
+  const Sparse T0 = tangent_at(c, loads, x0, Vec::Zero(R), 0.0);
+  const Dense K0r = Z.transpose() * (T0 * Z);
   const Eigen::LLT<Dense> llt(K0r);
   if (llt.info() != Eigen::Success)
     throw std::invalid_argument("lumped buckling: the stiffness at rest is not positive definite: the ring has a "
@@ -67,11 +73,11 @@ ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::Lu
   // 2. K_1 along the linear prebuckling path (central difference; step h: buckling.hpp).
   const double move = x1.cwiseAbs().maxCoeff();
   const double h = move > 0.0 ? kRelativeMove * c.l / move : 1.0;
-  const Dense K1 = (tangent_at(c, loads, x0 + h * x1, h * mu1, h) - tangent_at(c, loads, x0 - h * x1, -h * mu1, -h)) /
-                   (2.0 * h);
+  const Sparse K1 =
+      (tangent_at(c, loads, x0 + h * x1, h * mu1, h) - tangent_at(c, loads, x0 - h * x1, -h * mu1, -h)) / (2.0 * h);
 
   // 3. The pencil on ker G, the one eigen step, and the modes at the common stations.
-  const Dense K1r = Z.transpose() * K1 * Z;
+  const Dense K1r = Z.transpose() * (K1 * Z);
   const modal::CriticalFactors cf = modal::critical_factors(K0r, K1r, buckling.count, "lumped buckling");
 
   ring::BucklingResult r;
