@@ -10,6 +10,7 @@
 #include "compare/fem_module.hpp"
 #include "compare/files.hpp"
 #include "fem_reference/checks.hpp"
+#include "lumped_mass/buckling.hpp"
 #include "lumped_mass/checks.hpp"
 #include "multibody/backend.hpp"
 #include "multibody/buckling.hpp"
@@ -181,6 +182,7 @@ SolverEntry lumped_entry() {
   e.check_modes = [](const ring::Scene& s) { lumped::check_modes(s.ring, s.lumped); };
   e.check_static = [](const ring::Scene& s) { lumped::check_static(s.ring, s.lumped, *s.statics); };
   e.check_response = [](const ring::Scene& s) { lumped::check_response(s.ring, s.lumped, *s.response); };
+  e.check_buckling = [](const ring::Scene& s) { lumped::check_buckling(s.ring, s.lumped, *s.buckling); };
   e.modes = [](const ring::Scene& s, int count) {
     return as_input_error(s, "lumped", [&] { return lumped::compute_modes(s.ring, s.lumped, count); });
   };
@@ -189,6 +191,9 @@ SolverEntry lumped_entry() {
   };
   e.response = [](const ring::Scene& s) {
     return as_input_error(s, "response", [&] { return lumped::respond(s.ring, s.lumped, *s.response); });
+  };
+  e.buckling = [](const ring::Scene& s) {
+    return as_input_error(s, "buckling", [&] { return lumped::compute_buckling(s.ring, s.lumped, *s.buckling); });
   };
   return e;
 }

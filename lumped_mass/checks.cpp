@@ -31,14 +31,16 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
     if (!std::isfinite(v)) throw std::invalid_argument("lumped: " + section + "." + key + " must be finite");
 }
 
-/// What every nonlinear analysis of the chain needs; `what` is "statics" or "response".
+/// What every nonlinear analysis of the chain (and its linear buckling) needs; `what` is
+/// "statics", "response" or "buckling".
 void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
   auto need = [&](bool ok, const std::string& msg) {
     if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
   };
   ring::refuse_timoshenko(spec, "lumped " + what);
   need(o.variant == ring::LumpedOptions::Variant::chain,
-       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no nonlinear model here; use \"chain\"");
+       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no " +
+           (what == "buckling" ? "buckling" : "nonlinear") + " model here; use \"chain\"");
   need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
   need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
        "radius, E, rho, area and inertia must be > 0");
@@ -102,6 +104,23 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
         "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs, "
         "a foundation or gravity from which the ring hangs, to keep it from turning about the pin");
   if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
+}
+
+void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                    const ring::BucklingOptions& buckling) {
+  check_chain(spec, options, "buckling");
+  check_loads(spec, options, buckling.loads, "buckling");
+  const ring::Loads& l = buckling.loads;
+  if (l.points.empty() && !l.pressure.any() && !l.has_gravity())
+    throw std::invalid_argument("lumped buckling: buckling.loads has no load (give point loads, a pressure or gravity)");
+  if (const int rigid = spec.rigid_modes(); rigid > 0)
+    throw std::invalid_argument(
+        "lumped buckling: the stiffness at rest (K_0, no load) leaves " + std::to_string(rigid) + " rigid mode" +
+        (rigid > 1 ? "s" : "") + " free (a ring that hangs from its pin turns freely at rest); add a roller "
+        "(supports.roller), further pins, a clamp, springs or a foundation");
+  if (buckling.count < 1)
+    throw std::invalid_argument("lumped buckling: buckling.count (=" + std::to_string(buckling.count) +
+                                ") must be >= 1");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,

@@ -24,6 +24,13 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 /// supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0), finite
 /// pressure and gravity, static.steps >= 1.
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
+/// Linear buckling of the chain (buckling.hpp): variant "chain" (the frames have no buckling
+/// model here), as statics for the ring and the loads (named buckling.*), at least one load,
+/// buckling.count >= 1, and supports and terms that hold the ring at rest
+/// (RingSpec::rigid_modes() == 0: K_0 must be positive definite, so a ring that only hangs
+/// from its pin under gravity is refused).
+void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                    const ring::BucklingOptions& buckling);
 /// Forced response of the chain: as statics, but rigid motions are allowed when a pin holds
 /// the ring (it swings about it); the integrator "midpoint"
 /// or "newmark" (the same implicit midpoint rule, nonlinear.hpp), 0 < dt <= t_end.

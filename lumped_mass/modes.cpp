@@ -8,6 +8,16 @@
 
 namespace lumped {
 
+ring::ModeShape sample_shape(double anchor_deg, int dofs_per_node, const Eigen::Ref<const Eigen::VectorXd>& x) {
+  const int n = static_cast<int>(x.size()) / dofs_per_node;
+  std::vector<double> ux(n), uy(n);
+  for (int k = 0; k < n; ++k) {
+    ux[k] = x[dofs_per_node * k];
+    uy[k] = x[dofs_per_node * k + 1];
+  }
+  return ring::sample_polygon(anchor_deg, ux, uy);
+}
+
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count) {
   return compute_modes(spec, options, count, Method::automatic);
 }
@@ -34,15 +44,7 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
     r.model["factor_nonzeros"] = pairs.factor_nonzeros;
   }
   r.unknowns = pairs.unknowns;
-  const int dpn = model.dofs_per_node;
-  std::vector<double> ux(model.n), uy(model.n);
-  for (int c : sel.elastic) {
-    for (int k = 0; k < model.n; ++k) {
-      ux[k] = pairs.X(dpn * k, c);
-      uy[k] = pairs.X(dpn * k + 1, c);
-    }
-    r.shapes.push_back(ring::sample_polygon(model.anchor_deg, ux, uy));
-  }
+  for (int c : sel.elastic) r.shapes.push_back(sample_shape(model.anchor_deg, model.dofs_per_node, pairs.X.col(c)));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -36,6 +36,12 @@ namespace lumped {
 /// Cost: dense O(n^3); sparse O(n (count + rigid)) per Lanczos restart, O(n) memory.
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count);
 
+/// A shape of the lumped models' node displacements x (node-major, `dofs_per_node` per node,
+/// (ux, uy) first: model.hpp's order) at the common stations: ring::sample_polygon from
+/// node 0 at `anchor_deg`, with ModeShape's scaling. The one sampling of every lumped shape
+/// (modes, buckling). O(n + kStations).
+ring::ModeShape sample_shape(double anchor_deg, int dofs_per_node, const Eigen::Ref<const Eigen::VectorXd>& x);
+
 /// The same with the eigen-solution path chosen explicitly (tests, benchmarks).
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count,
                                 Method method);

@@ -1,5 +1,6 @@
 #include "lumped_mass/nonlinear.hpp"
 
+#include "lumped_mass/chain.hpp"
 #include "lumped_mass/checks.hpp"
 #include "lumped_mass/loads.hpp"
 #include "lumped_mass/model.hpp"
@@ -29,177 +30,6 @@ namespace {
 using Vec = Eigen::VectorXd;
 using Vec2 = Eigen::Vector2d;
 using Sparse = Eigen::SparseMatrix<double>;
-constexpr double kPi = 3.14159265358979323846;
-
-/// The chain's fixed data: geometry, stiffness, mass, supports and the spec's terms.
-struct Chain {
-  int n = 0;
-  double l = 0.0, k = 0.0, m = 0.0, rho = 0.0, theta0 = 0.0, anchor_deg = 0.0, depth = 0.0;
-  Vec rest;                 ///< 2n: hinge rest positions
-  /// Support rows on the hinge displacements, model.cpp's S (pins, further pins, roller):
-  /// S (x - rest) = 0, linear in x.
-  Sparse S;
-  std::optional<Terms> terms;  ///< springs, the clamp, the foundation, point masses (terms.hpp)
-  int rows() const { return n + static_cast<int>(S.rows()); }
-
-  Vec2 at(const Vec& x, int j) const {
-    j = ((j % n) + n) % n;
-    return {x[2 * j], x[2 * j + 1]};
-  }
-  /// Hinge index of a point named by its polar angle (a node, checked by the caller).
-  int hinge(double deg) const {
-    const double step = 360.0 / n;
-    return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor_deg) / step)) % n;
-  }
-};
-
-Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
-  Chain c;
-  c.n = o.n;
-  c.l = 2.0 * kPi * spec.radius / c.n;
-  c.k = spec.EI() / c.l;
-  c.m = spec.rhoA() * c.l;
-  c.rho = c.l / (2.0 * std::sin(kPi / c.n));
-  c.theta0 = 2.0 * kPi / c.n;
-  c.depth = spec.section.depth();
-  c.anchor_deg = spec.supports.pin.value_or(0.0);
-  // The linear model checks every point of the spec (a node, the clamp at a pinned point,
-  // the roller apart from the pin) and gives the support rows: one code for both analyses.
-  c.S = assemble(spec, o).S;
-  c.rest.resize(2 * c.n);
-  const auto angles = ring::node_angles(spec, c.n);
-  for (int j = 0; j < c.n; ++j) {
-    c.rest[2 * j] = c.rho * std::cos(angles[j] * kPi / 180.0);
-    c.rest[2 * j + 1] = c.rho * std::sin(angles[j] * kPi / 180.0);
-  }
-  c.terms.emplace(spec, 2, c.anchor_deg, c.l, c.rest);
-  return c;
-}
-
-/// Turning angle at hinge j and its gradient with respect to (x_{j-1}, x_j, x_{j+1}).
-struct Turn {
-  double theta = 0.0;
-  Eigen::Matrix<double, 6, 1> grad;
-  Eigen::Matrix<double, 6, 6> hess;
-};
-
-Turn turn(const Chain& c, const Vec& x, int j, bool with_hessian) {
-  const Vec2 a = c.at(x, j) - c.at(x, j - 1), b = c.at(x, j + 1) - c.at(x, j);
-  Turn t;
-  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-  const Vec2 ga = angle_gradient(a), gb = angle_gradient(b);
-  // theta = angle(b) - angle(a); a = x_j - x_{j-1}, b = x_{j+1} - x_j.
-  t.grad << ga, -ga - gb, gb;
-  if (with_hessian) {
-    const Eigen::Matrix2d Ha = angle_hessian(a), Hb = angle_hessian(b);
-    t.hess.setZero();
-    // - A^T Ha A with A = [-I, I, 0]; + B^T Hb B with B = [0, -I, I].
-    t.hess.block<2, 2>(0, 0) -= Ha;
-    t.hess.block<2, 2>(0, 2) += Ha;
-    t.hess.block<2, 2>(2, 0) += Ha;
-    t.hess.block<2, 2>(2, 2) -= Ha;
-    t.hess.block<2, 2>(2, 2) += Hb;
-    t.hess.block<2, 2>(2, 4) -= Hb;
-    t.hess.block<2, 2>(4, 2) -= Hb;
-    t.hess.block<2, 2>(4, 4) += Hb;
-  }
-  return t;
-}
-
-/// Global DoF of local index i (0..5) of the three hinges around j.
-int dof(const Chain& c, int j, int i) {
-  const int h = (((j - 1 + i / 2) % c.n) + c.n) % c.n;
-  return 2 * h + i % 2;
-}
-
-struct Springs {
-  double energy = 0.0;
-  Vec grad;
-  Triplets hess;
-};
-
-/// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs and the
-/// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation).
-Springs springs(const Chain& c, const Vec& x, double hess_scale) {
-  Springs s;
-  s.grad = Vec::Zero(2 * c.n);
-  if (c.terms->any_stiffness()) {
-    const Vec u = x - c.rest;
-    s.energy += c.terms->energy(u);
-    c.terms->add_gradient(u, s.grad);
-    if (hess_scale != 0.0) c.terms->add_hessian(u, hess_scale, s.hess);
-  }
-  for (int j = 0; j < c.n; ++j) {
-    const Turn t = turn(c, x, j, hess_scale != 0.0);
-    const double d = t.theta - c.theta0;
-    s.energy += 0.5 * c.k * d * d;
-    for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += c.k * d * t.grad[i];
-    if (hess_scale != 0.0) {
-      const Eigen::Matrix<double, 6, 6> H = c.k * (t.grad * t.grad.transpose() + d * t.hess);
-      for (int i = 0; i < 6; ++i)
-        for (int q = 0; q < 6; ++q) s.hess.emplace_back(dof(c, j, i), dof(c, j, q), hess_scale * H(i, q));
-    }
-  }
-  return s;
-}
-
-/// Constraint values: links (|d|^2 - l^2) / (2 l), then the supports (m).
-Vec constraints(const Chain& c, const Vec& x) {
-  Vec g(c.rows());
-  for (int j = 0; j < c.n; ++j) g[j] = ((c.at(x, j + 1) - c.at(x, j)).squaredNorm() - c.l * c.l) / (2.0 * c.l);
-  if (c.S.rows() > 0) g.tail(c.S.rows()) = c.S * (x - c.rest);
-  return g;
-}
-
-/// The constraint Jacobian G(x) as triplets at (row_offset + row, column), times `scale`.
-void jacobian(const Chain& c, const Vec& x, int row_offset, double scale, bool transpose, Triplets& out) {
-  auto put = [&](int r, int col, double v) {
-    if (transpose) out.emplace_back(col, row_offset + r, scale * v);
-    else out.emplace_back(row_offset + r, col, scale * v);
-  };
-  for (int j = 0; j < c.n; ++j) {
-    const Vec2 d = (c.at(x, j + 1) - c.at(x, j)) / c.l;
-    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
-    put(j, a, -d.x());
-    put(j, a + 1, -d.y());
-    put(j, b, d.x());
-    put(j, b + 1, d.y());
-  }
-  for (int col = 0; col < c.S.outerSize(); ++col)
-    for (Sparse::InnerIterator it(c.S, col); it; ++it) put(c.n + static_cast<int>(it.row()), col, it.value());
-}
-
-/// sum_j lambda_j Hess c_j: the link rows have the constant Hessian (1/l)[I -I; -I I].
-void constraint_hessian(const Chain& c, const Vec& lambda, double scale, Triplets& out) {
-  for (int j = 0; j < c.n; ++j) {
-    const double w = scale * lambda[j] / c.l;
-    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
-    for (int d = 0; d < 2; ++d) {
-      out.emplace_back(a + d, a + d, w);
-      out.emplace_back(b + d, b + d, w);
-      out.emplace_back(a + d, b + d, -w);
-      out.emplace_back(b + d, a + d, -w);
-    }
-  }
-}
-
-/// The constant translational mass matrix: the midpoint masses, m/4 [I I; I I] on every
-/// link, and the point masses on their hinges (terms.hpp; their rotary inertia is the
-/// stepper's, on the rotation of the tangent).
-Sparse mass_matrix(const Chain& c) {
-  Triplets t;
-  for (const Terms::Inertia& in : c.terms->inertia())
-    for (int d = 0; d < 2; ++d) t.emplace_back(2 * in.node + d, 2 * in.node + d, in.mass);
-  for (int j = 0; j < c.n; ++j) {
-    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
-    for (int d = 0; d < 2; ++d)
-      for (int p : {a + d, b + d})
-        for (int q : {a + d, b + d}) t.emplace_back(p, q, c.m / 4.0);
-  }
-  Sparse M(2 * c.n, 2 * c.n);
-  M.setFromTriplets(t.begin(), t.end());
-  return M;
-}
 
 /// Smallest distance between hinges at least `gap` apart along the chain (uniform grid,
 /// O(n)); hinges closer than the section depth mean the ring touches itself.
@@ -283,21 +113,6 @@ std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record
   return h;
 }
 
-/// The hinge of every point load (`section`.at for one load, `section`.loads[i].at for
-/// several, as the scene names them). A load at the pin is refused: the pin takes it whole.
-std::vector<int> load_hinges(const Chain& c, const ring::RingSpec& spec, const ring::Loads& loads,
-                             const std::string& section) {
-  std::vector<int> h;
-  for (std::size_t i = 0; i < loads.points.size(); ++i) {
-    const ring::PointLoad& load = loads.points[i];
-    const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
-    if (!ring::on_node(load.angle, c.anchor_deg, c.n))
-      throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(load.angle) + ") is not a hinge of the chain");
-    h.push_back(c.hinge(load.angle));
-    if (spec.supports.pin && h.back() == 0) throw std::invalid_argument("lumped: " + key + " acts at the pin");
-  }
-  return h;
-}
 
 /// Where the ring touches itself: the two hinges and their distance.
 std::string contact_where(const Chain& c, const Contact& k) {
@@ -325,9 +140,8 @@ class ChainStatics : public paths::Equilibrium {
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
     const Vec x = s.z.head(N_), lambda = s.z.tail(S_ - N_);
-    const Springs sp = springs(c_, x, 1.0);
+    const Springs sp = tangent(c_, L_, x, lambda * scale_, s.s, 1.0);
     Triplets t = sp.hess;
-    constraint_hessian(c_, lambda * scale_, 1.0, t);
     jacobian(c_, x, N_, scale_, true, t);
     jacobian(c_, x, N_, scale_, false, t);
     Triplets gt;
@@ -336,7 +150,6 @@ class ChainStatics : public paths::Equilibrium {
     GT.setFromTriplets(gt.begin(), gt.end());
     r.resize(S_);
     const Vec gP = L_.gradient(x);
-    L_.add_hessian(x, s.s, t);
     r << sp.grad + GT * (lambda * scale_) + s.s * gP, scale_ * constraints(c_, x);
     for (int i = 0; i < N_; ++i) {
       if (gP[i] != 0.0) t.emplace_back(i, S_, gP[i]);
@@ -478,13 +291,11 @@ class MidpointStepper : public paths::Stepper {
     for (int it = 0; it < 20; ++it) {
       ++out.iterations;
       const Vec xm = 0.5 * (x_ + x1_), vm = (x1_ - x_) / hh;
-      const Springs sp = springs(c_, xm, 0.5);
+      const Springs sp = tangent(c_, L_, xm, l1_ * scale, f_, 0.5);
       Triplets trip = sp.hess;
-      constraint_hessian(c_, l1_ * scale, 0.5, trip);
       jacobian(c_, xm, N, scale, true, trip);
       jacobian(c_, x1_, N, scale, false, trip);
       Vec res = (2.0 / (hh * hh)) * (M_ * (x1_ - x_ - hh * v_)) + sp.grad + f_ * L_.gradient(xm);
-      L_.add_hessian(xm, 0.5 * f_, trip);
       if (damped_) res += Cd_ * vm;
       for (std::size_t i = 0; i < rotary_.size(); ++i) {
         const auto [h, J] = rotary_[i];

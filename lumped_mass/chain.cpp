@@ -1,0 +1,168 @@
+#include "lumped_mass/chain.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "lumped_mass/model.hpp"
+
+namespace lumped {
+namespace {
+
+using Vec = Eigen::VectorXd;
+using Vec2 = Eigen::Vector2d;
+using Sparse = Eigen::SparseMatrix<double>;
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
+  Chain c;
+  c.n = o.n;
+  c.l = 2.0 * kPi * spec.radius / c.n;
+  c.k = spec.EI() / c.l;
+  c.m = spec.rhoA() * c.l;
+  c.rho = c.l / (2.0 * std::sin(kPi / c.n));
+  c.theta0 = 2.0 * kPi / c.n;
+  c.depth = spec.section.depth();
+  c.anchor_deg = spec.supports.pin.value_or(0.0);
+  // The linear model checks every point of the spec (a node, the clamp at a pinned point,
+  // the roller apart from the pin) and gives the support rows: one code for both analyses.
+  c.S = assemble(spec, o).S;
+  c.rest.resize(2 * c.n);
+  const auto angles = ring::node_angles(spec, c.n);
+  for (int j = 0; j < c.n; ++j) {
+    c.rest[2 * j] = c.rho * std::cos(angles[j] * kPi / 180.0);
+    c.rest[2 * j + 1] = c.rho * std::sin(angles[j] * kPi / 180.0);
+  }
+  c.terms.emplace(spec, 2, c.anchor_deg, c.l, c.rest);
+  return c;
+}
+
+Turn turn(const Chain& c, const Vec& x, int j, bool with_hessian) {
+  const Vec2 a = c.at(x, j) - c.at(x, j - 1), b = c.at(x, j + 1) - c.at(x, j);
+  Turn t;
+  t.theta = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+  const Vec2 ga = angle_gradient(a), gb = angle_gradient(b);
+  // theta = angle(b) - angle(a); a = x_j - x_{j-1}, b = x_{j+1} - x_j.
+  t.grad << ga, -ga - gb, gb;
+  if (with_hessian) {
+    const Eigen::Matrix2d Ha = angle_hessian(a), Hb = angle_hessian(b);
+    t.hess.setZero();
+    // - A^T Ha A with A = [-I, I, 0]; + B^T Hb B with B = [0, -I, I].
+    t.hess.block<2, 2>(0, 0) -= Ha;
+    t.hess.block<2, 2>(0, 2) += Ha;
+    t.hess.block<2, 2>(2, 0) += Ha;
+    t.hess.block<2, 2>(2, 2) -= Ha;
+    t.hess.block<2, 2>(2, 2) += Hb;
+    t.hess.block<2, 2>(2, 4) -= Hb;
+    t.hess.block<2, 2>(4, 2) -= Hb;
+    t.hess.block<2, 2>(4, 4) += Hb;
+  }
+  return t;
+}
+
+int dof(const Chain& c, int j, int i) {
+  const int h = (((j - 1 + i / 2) % c.n) + c.n) % c.n;
+  return 2 * h + i % 2;
+}
+
+Springs springs(const Chain& c, const Vec& x, double hess_scale) {
+  Springs s;
+  s.grad = Vec::Zero(2 * c.n);
+  if (c.terms->any_stiffness()) {
+    const Vec u = x - c.rest;
+    s.energy += c.terms->energy(u);
+    c.terms->add_gradient(u, s.grad);
+    if (hess_scale != 0.0) c.terms->add_hessian(u, hess_scale, s.hess);
+  }
+  for (int j = 0; j < c.n; ++j) {
+    const Turn t = turn(c, x, j, hess_scale != 0.0);
+    const double d = t.theta - c.theta0;
+    s.energy += 0.5 * c.k * d * d;
+    for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += c.k * d * t.grad[i];
+    if (hess_scale != 0.0) {
+      const Eigen::Matrix<double, 6, 6> H = c.k * (t.grad * t.grad.transpose() + d * t.hess);
+      for (int i = 0; i < 6; ++i)
+        for (int q = 0; q < 6; ++q) s.hess.emplace_back(dof(c, j, i), dof(c, j, q), hess_scale * H(i, q));
+    }
+  }
+  return s;
+}
+
+Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& x, const Vec& lambda, double s, double scale) {
+  Springs t = springs(c, x, scale);
+  constraint_hessian(c, lambda, scale, t.hess);
+  loads.add_hessian(x, scale * s, t.hess);
+  return t;
+}
+
+Vec constraints(const Chain& c, const Vec& x) {
+  Vec g(c.rows());
+  for (int j = 0; j < c.n; ++j) g[j] = ((c.at(x, j + 1) - c.at(x, j)).squaredNorm() - c.l * c.l) / (2.0 * c.l);
+  if (c.S.rows() > 0) g.tail(c.S.rows()) = c.S * (x - c.rest);
+  return g;
+}
+
+void jacobian(const Chain& c, const Vec& x, int row_offset, double scale, bool transpose, Triplets& out) {
+  auto put = [&](int r, int col, double v) {
+    if (transpose) out.emplace_back(col, row_offset + r, scale * v);
+    else out.emplace_back(row_offset + r, col, scale * v);
+  };
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 d = (c.at(x, j + 1) - c.at(x, j)) / c.l;
+    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
+    put(j, a, -d.x());
+    put(j, a + 1, -d.y());
+    put(j, b, d.x());
+    put(j, b + 1, d.y());
+  }
+  for (int col = 0; col < c.S.outerSize(); ++col)
+    for (Sparse::InnerIterator it(c.S, col); it; ++it) put(c.n + static_cast<int>(it.row()), col, it.value());
+}
+
+void constraint_hessian(const Chain& c, const Vec& lambda, double scale, Triplets& out) {
+  for (int j = 0; j < c.n; ++j) {
+    const double w = scale * lambda[j] / c.l;
+    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
+    for (int d = 0; d < 2; ++d) {
+      out.emplace_back(a + d, a + d, w);
+      out.emplace_back(b + d, b + d, w);
+      out.emplace_back(a + d, b + d, -w);
+      out.emplace_back(b + d, a + d, -w);
+    }
+  }
+}
+
+/// The constant translational mass matrix: the midpoint masses, m/4 [I I; I I] on every
+/// link, and the point masses on their hinges (terms.hpp; their rotary inertia is the
+/// stepper's, on the rotation of the tangent).
+Sparse mass_matrix(const Chain& c) {
+  Triplets t;
+  for (const Terms::Inertia& in : c.terms->inertia())
+    for (int d = 0; d < 2; ++d) t.emplace_back(2 * in.node + d, 2 * in.node + d, in.mass);
+  for (int j = 0; j < c.n; ++j) {
+    const int a = 2 * j, b = 2 * ((j + 1) % c.n);
+    for (int d = 0; d < 2; ++d)
+      for (int p : {a + d, b + d})
+        for (int q : {a + d, b + d}) t.emplace_back(p, q, c.m / 4.0);
+  }
+  Sparse M(2 * c.n, 2 * c.n);
+  M.setFromTriplets(t.begin(), t.end());
+  return M;
+}
+
+std::vector<int> load_hinges(const Chain& c, const ring::RingSpec& spec, const ring::Loads& loads,
+                             const std::string& section) {
+  std::vector<int> h;
+  for (std::size_t i = 0; i < loads.points.size(); ++i) {
+    const ring::PointLoad& load = loads.points[i];
+    const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    if (!ring::on_node(load.angle, c.anchor_deg, c.n))
+      throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(load.angle) + ") is not a hinge of the chain");
+    h.push_back(c.hinge(load.angle));
+    if (spec.supports.pin && h.back() == 0) throw std::invalid_argument("lumped: " + key + " acts at the pin");
+  }
+  return h;
+}
+
+}  // namespace lumped
