@@ -36,9 +36,10 @@ Sparse tangent_at(const Chain& c, const ChainLoads& loads, const Vec& x, const V
   return T;
 }
 
-/// Relative hinge move of the central difference for K_1 (buckling.hpp: near the optimum
-/// (eps/2)^(1/3) of a second-order difference of the displacement terms).
-constexpr double kRelativeMove = 5e-6;
+/// Relative hinge move of the differences for K_1 (buckling.hpp): large enough that the
+/// rounding of T (its entries ~ (R/l)^4 times the pencil's scale) stays far below the
+/// change, small enough that Richardson's fourth order leaves ~(1e-3)^4.
+constexpr double kRelativeMove = 1e-3;
 
 }  // namespace
 
@@ -70,11 +71,15 @@ ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::Lu
   const Vec x1 = Z * llt.solve(-(Z.transpose() * gP));
   const Vec mu1 = qr.solve(Vec(-(gP + T0 * x1)));
 
-  // 2. K_1 along the linear prebuckling path (central difference; step h: buckling.hpp).
+  // 2. K_1 along the linear prebuckling path (central differences at h and 2h, Richardson's
+  // extrapolation; step h: buckling.hpp).
   const double move = x1.cwiseAbs().maxCoeff();
   const double h = move > 0.0 ? kRelativeMove * c.l / move : 1.0;
-  const Sparse K1 =
-      (tangent_at(c, loads, x0 + h * x1, h * mu1, h) - tangent_at(c, loads, x0 - h * x1, -h * mu1, -h)) / (2.0 * h);
+  auto central = [&](double d) {
+    return Sparse((tangent_at(c, loads, x0 + d * x1, d * mu1, d) - tangent_at(c, loads, x0 - d * x1, -d * mu1, -d)) /
+                  (2.0 * d));
+  };
+  const Sparse K1 = move > 0.0 ? Sparse((4.0 * central(h) - central(2.0 * h)) / 3.0) : central(h);
 
   // 3. The pencil on ker G, the one eigen step, and the modes at the common stations.
   const Dense K1r = Z.transpose() * (K1 * Z);
