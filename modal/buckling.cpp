@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <stdexcept>
 
 namespace modal {
@@ -30,6 +31,24 @@ CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixX
   for (int i = 0; i < count; ++i) out.factors[i] = -1.0 / mu[i];
   out.vectors = llt.matrixU().solve(eig.eigenvectors().leftCols(count));  // L^-T y
   return out;
+}
+
+int unstable_directions(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G) {
+  Eigen::MatrixXd reduced;
+  if (G.rows() == 0) {
+    reduced = T;
+  } else {
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(G.transpose());
+    const Eigen::MatrixXd Z = Eigen::MatrixXd(qr.householderQ()).rightCols(T.rows() - qr.rank());
+    reduced = Z.transpose() * T * Z;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (reduced + reduced.transpose()),
+                                                           Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd& v = eig.eigenvalues();
+  const double floor = 1e-12 * v.cwiseAbs().maxCoeff();
+  int negative = 0;
+  for (Eigen::Index i = 0; i < v.size(); ++i) negative += v[i] < -floor ? 1 : 0;
+  return negative;
 }
 
 }  // namespace modal

@@ -28,4 +28,12 @@ struct CriticalFactors {
 CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count,
                                  const std::string& who);
 
+/// How many independent directions the equilibrium with tangent stiffness T (N x N) under
+/// constraints with Jacobian G (C x N) is unstable in: the negative eigenvalues of Z^T T Z,
+/// Z an orthonormal basis of ker G (Householder QR of G^T; rank-revealing), below -1e-12
+/// of the largest |eigenvalue| (rounding is ~1e-16 of it; the lowest stable eigenvalue of
+/// the rings here is above (l/R)^4 ~ 1e-9 of it up to n = 1000). For the continuation
+/// driver's bifurcation test (paths/continuation.hpp). Dense: O(N^3).
+int unstable_directions(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G);
+
 }  // namespace modal

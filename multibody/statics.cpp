@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "modal/buckling.hpp"
 #include "ring/errors.hpp"
 
 #include "multibody/natural.hpp"
@@ -114,6 +115,14 @@ class AngleStatics : public detail::StaticEquilibrium {
   double move(const paths::Vector& dz) const override { return dz.head(n_).cwiseAbs().maxCoeff() / detail::kBasin; }
   bool converged(const paths::State&, const paths::Vector& dz, int) override {
     return dz.head(n_).cwiseAbs().maxCoeff() <= 1e-12;
+  }
+  /// The inertia of T on the constraints' tangent space at x: O(n^3), once per accepted step.
+  std::optional<int> unstable_directions(const paths::State& x) override {
+    const Vector q = x.z.head(n_), lambda = x.z.tail(c_);
+    const Chain::ConstraintKinematics ck = tangent_.constraints(q);
+    Matrix T = Matrix::Zero(n_, n_);
+    tangent_.add_tangent(q, lambda, x.s, ck, T);
+    return modal::unstable_directions(T, ck.G);
   }
   Eigen::Matrix2Xd hinges(const paths::Vector& z) const override { return chain_.hinge_positions(z.head(n_)); }
   paths::Vector rest() const override {

@@ -22,6 +22,8 @@ constexpr double kLimitBracket = 1e-6;
 constexpr int kMaxLimitEvaluations = 60;
 /// A corrector's change of the load factor below this is converged (s is O(1)).
 constexpr double kLoadTolerance = 1e-12;
+/// A bifurcation on the load-stepping part is bisected to this fraction of its step.
+constexpr double kBifurcationBracket = 1e-6;
 
 std::string number(double x, int digits = 9) {
   std::ostringstream o;
@@ -45,6 +47,7 @@ class Follower {
   Trace run(const State& rest) {
     State state = rest;
     out_.state = rest;
+    unstable_ = eq_.unstable_directions(rest);
     Vector last_step;
     if (!options_.from_start && load_stepping(state, last_step)) return std::move(out_);
     if (last_step.size() == 0) {
@@ -140,8 +143,11 @@ class Follower {
     return false;
   }
 
-  /// Records the accepted `to`; false (and the trace ended) when the ring touched itself.
-  bool accept(const State& from, const State& to) {
+  /// Records the accepted `to`; false (and the trace ended) when the ring touched itself
+  /// or the path passed a bifurcation. `limits`: limit points passed between them (each
+  /// explains a change of one unstable direction); `locate`: a load-stepping step, whose
+  /// bifurcation is bisected (Newton at fixed loads from `from`).
+  bool accept(const State& from, const State& to, int limits = 0, bool locate = false) {
     ++out_.steps;
     if (const auto touch = eq_.accept(from, to)) {
       out_.end = Trace::End::contact;
@@ -150,8 +156,47 @@ class Follower {
       out_.state = from;
       return false;
     }
+    if (unstable_) {
+      const std::optional<int> now = eq_.unstable_directions(to);
+      if (now && std::abs(*now - *unstable_) > limits) {
+        bifurcation(from, to, *now, locate);
+        return false;
+      }
+      unstable_ = now;
+    }
     out_.state = to;
     return true;
+  }
+
+  /// Ends the path at a bifurcation between the accepted `from` and `to` (where the count
+  /// of unstable directions is `after`), bisected on the load factor when `locate`.
+  void bifurcation(const State& from, const State& to, int after, bool locate) {
+    out_.end = Trace::End::bifurcation;
+    out_.unstable_before = *unstable_;
+    out_.unstable_after = after;
+    State lo = from, hi = to;
+    // Newton right at the branch point, where the tangent is singular, may not converge:
+    // a point off the middle is tried then.
+    auto solved_between = [&](State& mid) {
+      for (double f : {0.5, 0.3, 0.7}) {
+        mid = {lo.z, lo.s + f * (hi.s - lo.s)};
+        if (const int it = newton_at(mid, nullptr); it >= 0) {
+          out_.iterations += it;
+          return true;
+        }
+      }
+      return false;
+    };
+    State mid;
+    while (locate && hi.s - lo.s > kBifurcationBracket * (to.s - from.s) && solved_between(mid)) {
+      const std::optional<int> k = eq_.unstable_directions(mid);
+      if (!k) break;
+      (*k == *unstable_ ? lo : hi) = mid;
+    }
+    out_.bifurcation_low = lo.s;
+    out_.bifurcation_high = hi.s;
+    out_.end_load = lo.s;
+    out_.state = lo;
   }
 
   void reached(const State& x) {
@@ -192,7 +237,7 @@ class Follower {
       const State from = state;
       state = trial;
       last_step = change;
-      if (!accept(from, state)) return true;
+      if (!accept(from, state, 0, true)) return true;
       step = std::min(ds_, 2.0 * step);
     }
     reached(state);
@@ -276,12 +321,12 @@ class Follower {
         if (f >= 0) {
           out_.iterations += f;
           ++out_.arc_steps;
-          if (accept(state, full)) reached(full);
+          if (accept(state, full, limit_between(tangent.rate, ahead.rate))) reached(full);
           return;
         }
       }
       ++out_.arc_steps;
-      if (!accept(state, next)) return;
+      if (!accept(state, next, limit_between(tangent.rate, ahead.rate))) return;
       if (std::isnan(out_.limit) && tangent.rate > 0.0 && ahead.rate <= 0.0)
         out_.limit = locate_limit(state, tangent, len, next.s, ahead.rate);
       // The next length: towards kTargetIterations corrector iterations (at most doubled
@@ -299,8 +344,12 @@ class Follower {
     out_.end_load = state.s;
   }
 
+  /// 1 when ds/dtau changes sign between two tangents (a limit point between them).
+  static int limit_between(double rate_from, double rate_to) { return (rate_from > 0.0) != (rate_to > 0.0) ? 1 : 0; }
+
   Equilibrium& eq_;
   const Continuation& options_;
+  std::optional<int> unstable_;  ///< unstable directions of the last accepted equilibrium
   const Eigen::Index N_, m_;
   const double ds_;  ///< the requested load increment 1 / steps
   Vector r_, y_;
@@ -330,6 +379,16 @@ std::string failure_message(const Trace& t, const Continuation& options) {
       m += stopped + "stalled at load factor " + number(t.end_load) + " (the arc length was halved " +
            std::to_string(kMaxArcHalvings) + " times without a converged step)";
       break;
+    case Trace::End::bifurcation: {
+      const int k = t.unstable_after - t.unstable_before;
+      m += std::string(limit ? "meets " : "") + "a bifurcation point between load factors " +
+           number(t.bifurcation_low) + " and " + number(t.bifurcation_high) + ": the tangent stiffness " +
+           (k > 0 ? "loses " : "regains ") + "stability in " + std::to_string(std::abs(k)) + " direction" +
+           (std::abs(k) == 1 ? "" : "s") + " without a limit point, so another equilibrium path branches off there "
+           "(the ring buckles) and the one followed is " + (k > 0 ? "unstable" : "not the only one") +
+           " beyond it; [buckling] estimates where";
+      break;
+    }
     case Trace::End::reached: m += "reached the full load"; break;
   }
   return m;

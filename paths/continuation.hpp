@@ -26,6 +26,15 @@
 // - **Self-contact** is the model's hook (Equilibrium::accept), called for every
 //   accepted equilibrium with the one before it: contact ends the path, as a result
 //   the caller reports.
+// - **A bifurcation** ends the path where the model says how many directions its
+//   equilibria are unstable in (Equilibrium::unstable_directions, the inertia of its
+//   tangent on the constraints' tangent space): a change of that count that no limit
+//   point explains (a limit point changes it by one, and load stepping never passes one)
+//   is a branch point, where the path this driver follows turns unstable while another
+//   leaves it (a perfect ring buckling; a double crossing, as under uniform follower
+//   pressure, changes it by two, which a determinant's sign would miss). On the load-
+//   stepping part it is located by bisection of the load factor to 1e-6 of the step; on
+//   the arc it is bracketed by the step.
 //
 // A Newton solve (a load level or an arc step) fails after 25 iterations, on a
 // non-finite value or a failed factorization, or when its iterate leaves the basin of
@@ -87,6 +96,14 @@ class Equilibrium {
   /// An accepted equilibrium `to`, reached from the accepted `from`: the model records
   /// it and says whether the ring touched itself on the way.
   virtual std::optional<Touch> accept(const State& from, const State& to) = 0;
+  /// How many independent directions the equilibrium x is unstable in: the negative
+  /// eigenvalues of the tangent stiffness dR/du on the constraints' tangent space.
+  /// nullopt (the default): the model does not say, and no bifurcation is detected.
+  /// Called for rest and for every accepted equilibrium (and while locating a bifurcation).
+  virtual std::optional<int> unstable_directions(const State& x) {
+    (void)x;
+    return std::nullopt;
+  }
 };
 
 /// The policy knobs.
@@ -99,7 +116,7 @@ struct Continuation {
 
 /// How a path ended and where.
 struct Trace {
-  enum class End { reached, contact, arc_steps_exhausted, stalled };
+  enum class End { reached, contact, arc_steps_exhausted, stalled, bifurcation };
   End end = End::reached;
   State state;     ///< the last accepted equilibrium (reached: at s = 1)
   int steps = 0;   ///< accepted load and arc steps
@@ -110,6 +127,10 @@ struct Trace {
   double stepping_stopped = 0.0;  ///< load factor where load stepping handed over
   double end_load = 0.0;          ///< where the path ended (contact: the load factor of the touch)
   std::string contact;            ///< Touch::where
+  /// bifurcation: the load factors that bracket it (located: within 1e-6 of a step), and
+  /// the unstable directions before and after it.
+  double bifurcation_low = 0.0, bifurcation_high = 0.0;
+  int unstable_before = 0, unstable_after = 0;
 };
 
 /// Follows the path of `eq` from `rest` (an equilibrium at s = 0) to the full load

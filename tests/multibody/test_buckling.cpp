@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "modal/buckling.hpp"
 #include "multibody/buckling.hpp"
+#include "multibody/statics.hpp"
+#include "ring/errors.hpp"
 #include "ring/closed_form.hpp"
 #include "support/paper.hpp"
 
@@ -102,6 +105,39 @@ TEST(ModalBuckling, TheLowestPositiveFactorsOfATwoByTwoPencil) {
   Eigen::MatrixXd singular = K0;
   singular(1, 1) = 0.0;
   EXPECT_THROW(modal::critical_factors(singular, K1, 1, "test"), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+// The statics past the critical pressure: the chain's path stays circular (a uniform
+// pressure does no work on the inextensible chain) and turns unstable where linear
+// buckling said, which the continuation driver reports as a bifurcation (exit 3 in the
+// command) instead of a circular "equilibrium": for each kind, lambda_1 / 1.5 lies in the
+// bracket, which is 1e-6 of a load step wide.
+TEST(MultibodyBuckling, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
+  const ring::RingSpec spec = held_ring();
+  ring::MultibodyOptions o;
+  o.n = 40;
+  for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
+    const double critical = multibody::compute_buckling(spec, o, pressure(kind)).factors[0];
+    ring::StaticOptions st;
+    st.loads.pressure = {1.5 * critical, kind};
+    try {
+      multibody::solve_static(spec, o, st);
+      ADD_FAILURE() << "no bifurcation reported";
+    } catch (const ring::NumericalError& e) {
+      const std::string m = e.what();
+      const auto at = m.find("between load factors ");
+      ASSERT_NE(at, std::string::npos) << m;
+      double low = 0.0, high = 0.0;
+      ASSERT_EQ(std::sscanf(m.c_str() + at, "between load factors %lf and %lf", &low, &high), 2) << m;
+      EXPECT_LE(low, 1.0 / 1.5 + 1e-9) << m;
+      EXPECT_GE(high, 1.0 / 1.5 - 1e-9) << m;
+      EXPECT_LT(high - low, 1e-6) << m;
+    }
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <functional>
+#include <tuple>
 
 #include "paths/continuation.hpp"
 
@@ -25,6 +26,7 @@ class Snap : public paths::Equilibrium {
   explicit Snap(double P, double c = 0.0) : P_(P), c_(c) {}
   std::function<bool(const paths::State&)> touches;  ///< contact hook: true at a state that touches
   std::vector<paths::State> accepted;
+  bool inertia = false;  ///< says how many directions are unstable (f'(u) + c < 0)
 
   Eigen::Index size() const override { return 2; }
   Eigen::Index arc_size() const override { return 1; }
@@ -44,6 +46,10 @@ class Snap : public paths::Equilibrium {
   }
   double move(const paths::Vector& dz) const override { return std::abs(dz(0)) / 0.5; }
   bool converged(const paths::State&, const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-13; }
+  std::optional<int> unstable_directions(const paths::State& x) override {
+    if (!inertia) return std::nullopt;
+    return df(x.z(0)) + c_ < 0.0 ? 1 : 0;
+  }
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
     accepted.push_back(to);
     if (touches && touches(to)) return paths::Touch{1.0, "u passed " + std::to_string(to.z(0))};
@@ -144,6 +150,79 @@ TEST(Continuation, ReportsAPathThatDoesNotComeBackWithinTheArcStepBound) {
   ASSERT_EQ(t.end, paths::Trace::End::arc_steps_exhausted);
   EXPECT_EQ(t.arc_steps, 3);
   EXPECT_NE(paths::failure_message(t, options).find("within 3 arc-length steps"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// With the model's inertia known, the snap-through's two limit points each change the count
+// of unstable directions by one, which the limit explains: the path still reaches the full
+// load, and no bifurcation is reported.
+TEST(Continuation, LimitPointsAreNotBifurcations) {
+  Snap snap(1.0);
+  snap.inertia = true;
+  const paths::Continuation options{20};
+  const paths::Trace t = paths::follow(snap, rest(), options);
+  ASSERT_EQ(t.end, paths::Trace::End::reached) << paths::failure_message(t, options);
+  EXPECT_NEAR(t.limit, kLimit, 1e-10);
+}
+
+/// Perfect pitchforks: R_i = (a_i - s b_i) u_i + u_i^3, i = 1, 2, whose trivial path u = 0
+/// loses stability at s = a_i / b_i while the branches u_i^2 = s b_i - a_i leave it; the
+/// load does no work on the trivial path (dR/ds = 0 there), as a uniform pressure on an
+/// inextensible ring.
+class Pitchfork : public paths::Equilibrium {
+ public:
+  Pitchfork(Eigen::Vector2d a, Eigen::Vector2d b) : a_(a), b_(b) {}
+  Eigen::Index size() const override { return 2; }
+  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const Eigen::Vector2d u = x.z;
+    r = (a_ - x.s * b_).cwiseProduct(u) + u.cwiseProduct(u).cwiseProduct(u);
+    Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 2; ++i) {
+      B(i, i) = a_(i) - x.s * b_(i) + 3.0 * u(i) * u(i);
+      B(i, 2) = -b_(i) * u(i);
+      B(2, i) = w(i);
+    }
+    B(2, 2) = ws;
+    lu_.compute(B);
+    return std::abs(lu_.determinant()) > 1e-300;
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y);
+    return y.allFinite();
+  }
+  double move(const paths::Vector& dz) const override { return dz.cwiseAbs().maxCoeff() / 0.5; }
+  bool converged(const paths::State&, const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-13; }
+  std::optional<paths::Touch> accept(const paths::State&, const paths::State&) override { return std::nullopt; }
+  std::optional<int> unstable_directions(const paths::State& x) override {
+    int k = 0;
+    for (int i = 0; i < 2; ++i) k += a_(i) - x.s * b_(i) + 3.0 * x.z(i) * x.z(i) < 0.0 ? 1 : 0;
+    return k;
+  }
+
+ private:
+  Eigen::Vector2d a_, b_;
+  Eigen::PartialPivLU<Eigen::Matrix3d> lu_;
+};
+
+// A simple crossing at s = 1/4 and a double one at s = 1/2 (two directions at once, which
+// the determinant's sign would not see): the path ends at the bifurcation, bracketed to
+// 1e-6 of the load step (1/20) by bisection, with the count of directions lost.
+TEST(Continuation, BifurcationsEndThePathLocatedToTheBracket) {
+  const paths::Continuation options{20};
+  for (const auto& [b, at, lost] : {std::tuple{Eigen::Vector2d(4.0, 2.0), 0.25, 1},
+                                    std::tuple{Eigen::Vector2d(2.0, 2.0), 0.5, 2}}) {
+    Pitchfork p(Eigen::Vector2d(1.0, 1.0), b);
+    const paths::Trace t = paths::follow(p, {paths::Vector::Zero(2), 0.0}, options);
+    ASSERT_EQ(t.end, paths::Trace::End::bifurcation) << paths::failure_message(t, options);
+    EXPECT_LE(t.bifurcation_low, at);
+    EXPECT_GE(t.bifurcation_high, at);
+    EXPECT_LE(t.bifurcation_high - t.bifurcation_low, 1e-6 * 0.05);
+    EXPECT_EQ(t.unstable_after - t.unstable_before, lost);
+    EXPECT_NE(paths::failure_message(t, options).find("bifurcation"), std::string::npos);
+  }
 }
 
 }  // namespace
