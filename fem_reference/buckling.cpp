@@ -28,7 +28,7 @@ struct Buckled {
   std::vector<double> factors;
   std::vector<ring::ModeShape> shapes;
   long long unknowns = 0;
-  double path_step = 0.0;  ///< h, the load factor of the difference's two states
+  double path_step = 0.0;  ///< h: the difference's states are t u_1 at t = +-h, +-2h
   double residual = 0.0;   ///< the worst wanted pair's relative residual (refine())
 };
 
