@@ -122,6 +122,17 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& op
   return out;
 }
 
+ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions& options,
+                              const ring::BucklingOptions& buckling) {
+  std::lock_guard<std::mutex> lock(g_solve);
+  ring::BucklingResult out;
+  std::string error;
+  const int status = fem_plugin().buckling(spec, options, buckling, out, error);
+  if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
+  check(status, error);
+  return out;
+}
+
 bool loaded() { return g_loaded; }
 
 bool available() {

@@ -23,6 +23,11 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
                           const ring::ResponseOptions& response);
 
+/// Linear buckling (fem::compute_buckling); throws std::invalid_argument for input the
+/// solver refuses, as statics does.
+ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions& options,
+                              const ring::BucklingOptions& buckling);
+
 /// True once the plug-in has been loaded in this process (tests use it to show that a
 /// scene without FE never loads it).
 bool loaded();

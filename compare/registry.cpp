@@ -9,6 +9,7 @@
 #include "calculix/statics.hpp"
 #include "compare/fem_module.hpp"
 #include "compare/files.hpp"
+#include "fem_reference/buckling.hpp"
 #include "fem_reference/checks.hpp"
 #include "lumped_mass/buckling.hpp"
 #include "lumped_mass/checks.hpp"
@@ -249,12 +250,16 @@ SolverEntry fem_entry() {
   e.check_modes = [](const ring::Scene& s) { fem::check_modes(s.ring, s.fem); };
   e.check_static = [](const ring::Scene& s) { fem::check_static(s.ring, s.fem, *s.statics); };
   e.check_response = [](const ring::Scene& s) { fem::check_response(s.ring, s.fem, *s.response); };
+  e.check_buckling = [](const ring::Scene& s) { fem::check_buckling(s.ring, s.fem, *s.buckling); };
   e.modes = [](const ring::Scene& s, int count) { return fem_module::modes(s.ring, s.fem, count); };
   e.statics = [](const ring::Scene& s) {
     return as_input_error(s, "static", [&] { return fem_module::statics(s.ring, s.fem, *s.statics); });
   };
   e.response = [](const ring::Scene& s) {
     return as_input_error(s, "response", [&] { return fem_module::respond(s.ring, s.fem, *s.response); });
+  };
+  e.buckling = [](const ring::Scene& s) {
+    return as_input_error(s, "buckling", [&] { return fem_module::buckling(s.ring, s.fem, *s.buckling); });
   };
   e.write_vtu = [](const ring::Scene& s, int count, const std::string& dir) {
     fem_module::write_vtu(s.ring, s.fem, count, dir);

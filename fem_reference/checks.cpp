@@ -1,5 +1,7 @@
 #include "fem_reference/checks.hpp"
 
+#include "fem_reference/buckling.hpp"  // check_buckling: declared with its analysis, checked here
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -122,6 +124,18 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
   need(ring::static_rigid_modes(spec, st.loads) == 0,
        "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
+           " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
+}
+
+void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
+  ring::refuse_timoshenko(spec, "fem buckling (the geometrically exact beam is Euler-Bernoulli)");
+  check_nonlinear(spec, o, b.loads, {}, "buckling");
+  need(b.count >= 1, "buckling.count (=" + std::to_string(b.count) + ") must be >= 1");
+  need(!b.loads.points_only() || !b.loads.points.empty(),
+       "buckling.loads has no load: give a point load, a pressure or gravity");
+  // Buckling about a state that exists: the tangent at rest must be regular.
+  need(ring::static_rigid_modes(spec, b.loads) == 0,
+       "linear buckling needs supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
 }
 

@@ -6,6 +6,7 @@
 #include "fem_reference/beam_potential.hpp"
 #include "fem_reference/checks.hpp"
 #include "fem_reference/newton.hpp"
+#include "fem_reference/reference.hpp"
 #include "fem_reference/static_path.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
@@ -61,27 +62,6 @@ double largest_change(const std::vector<std::array<double, 2>>& a, const std::ve
     scale = std::max(scale, std::hypot(b[i][0], b[i][1]));
   }
   return scale > 0 ? change / scale : change;
-}
-
-/// Refines the degree (then the cells) until `change(previous, next)` < tolerance;
-/// returns the last discretization's result and the number of refinements.
-template <class Solve, class Change>
-auto refine_until(Setup& setup, double tolerance, Solve&& solve, Change&& change, double& estimate,
-                  int& refinements, const std::string& what) {
-  auto current = solve(setup);
-  for (refinements = 1;; ++refinements) {
-    if (refinements > kReferenceMaxSteps)
-      throw ring::NumericalError("fem: " + what + " reference not converged after " +
-                                 std::to_string(kReferenceMaxSteps) + " refinements");
-    if (setup.degree < kMaxDegree)
-      ++setup.degree;
-    else
-      setup.subdivisions *= 2;
-    auto next = solve(setup);
-    estimate = change(current, next);
-    current = std::move(next);
-    if (estimate < tolerance) return current;
-  }
 }
 
 ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {

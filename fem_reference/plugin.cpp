@@ -1,10 +1,12 @@
-// The dlopen boundary: wraps fem::compute_modes / fem::write_vtu so that no exception
+// The dlopen boundary: wraps fem::compute_modes, write_vtu, solve_static, respond and
+// compute_buckling so that no exception
 // crosses it; errors become the exit codes of the README (2 bad input, 3 numerical).
 #include "fem_reference/plugin.hpp"
 
 #include <exception>
 #include <stdexcept>
 
+#include "fem_reference/buckling.hpp"
 #include "fem_reference/modes.hpp"
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
@@ -65,7 +67,12 @@ int respond(const ring::RingSpec& spec, const ring::FemOptions& options, const r
   });
 }
 
-constexpr fem::Plugin kPlugin{fem::kAbiVersion, &modes, &write_vtu, &statics, &respond};
+int buckling(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::BucklingOptions& b,
+             ring::BucklingResult& out, std::string& error) {
+  return guarded(error, [&] { out = fem::compute_buckling(spec, options, b); });
+}
+
+constexpr fem::Plugin kPlugin{fem::kAbiVersion, &modes, &write_vtu, &statics, &respond, &buckling};
 
 }  // namespace
 

@@ -29,10 +29,12 @@ struct Plugin {
   /// ring::IntegrationFailure::Reason as an int, `t_reached` its time.
   int (*respond)(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::ResponseOptions& response,
                  ring::TimeHistory& out, int& reason, double& t_reached, std::string& error);
+  int (*buckling)(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::BucklingOptions& buckling,
+                  ring::BucklingResult& out, std::string& error);
 };
 
-/// Version 2 added statics and respond (the geometrically exact beam).
-constexpr int kAbiVersion = 2;
+/// Version 2 added statics and respond (the geometrically exact beam), 3 buckling.
+constexpr int kAbiVersion = 3;
 
 }  // namespace fem
 

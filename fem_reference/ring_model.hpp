@@ -175,6 +175,13 @@ class LinearModel {
   /// Writes the given full vectors to a VTU file with DataOut (ring_vtu.cpp).
   virtual void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
                          const std::string& file) const = 0;
+  /// K q (reduced) accumulated in extended precision from the strain fields (apply()),
+  /// for the refinement of another pencil's eigenpairs with this K (buckling.cpp). O(N p).
+  std::vector<Real> stiffness_product(const Vector<double>& q) const {
+    std::vector<Real> kq, mq;
+    apply(q, kq, mq);
+    return kq;
+  }
   /// The consistent mass matrix and the stiffness, reduced.
   const SparseMatrix<double>& mass() const { return M_; }
   const SparseMatrix<double>& stiffness() const { return K_; }

@@ -1,5 +1,5 @@
-// The dlopen boundary: build/bin/libringvib_fem.so loads, reports ABI 2 (modes, VTU,
-// statics, response), and gives exactly the numbers of the statically linked solvers;
+// The dlopen boundary: build/bin/libringvib_fem.so loads, reports ABI 3 (modes, VTU,
+// statics, response, buckling), and gives exactly the numbers of the statically linked solvers;
 // a failed integration comes back as code 3 with its partial history.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "fem_reference/buckling.hpp"
 #include "fem_reference/modes.hpp"
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
@@ -25,7 +26,7 @@ const fem::Plugin* load() {
 TEST(FemPlugin, DlopenGivesTheSameNumbers) {
   const fem::Plugin* plugin = load();
   ASSERT_NE(plugin, nullptr) << dlerror();
-  EXPECT_EQ(plugin->abi_version, 2);
+  EXPECT_EQ(plugin->abi_version, 3);
   const auto spec = ringtest::pinned_ring();
   ring::FemOptions o;
   ring::ModalResult out;
@@ -43,6 +44,26 @@ ring::RingSpec held() {
   ring::RingSpec s = ringtest::pinned_ring();
   s.supports.roller = 0.0;
   return s;
+}
+
+TEST(FemPlugin, BucklingGivesTheSameNumbers) {
+  const fem::Plugin* plugin = load();
+  ASSERT_NE(plugin, nullptr);
+  ring::FemOptions o;
+  o.elements = 20;
+  ring::BucklingOptions b;
+  b.loads.pressure = {1.0, ring::Pressure::Kind::follower};
+  b.count = 2;
+  ring::BucklingResult out;
+  std::string error;
+  ASSERT_EQ(plugin->buckling(held(), o, b, out, error), 0) << error;
+  const auto direct = fem::compute_buckling(held(), o, b);
+  ASSERT_EQ(out.factors.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(out.factors[i], direct.factors[i]);  // same code, same data
+  // A refusal is code 2 with the key in the message.
+  b.count = 0;
+  EXPECT_EQ(plugin->buckling(held(), o, b, out, error), 2);
+  EXPECT_NE(error.find("buckling.count"), std::string::npos) << error;
 }
 
 TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {

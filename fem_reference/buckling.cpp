@@ -1,0 +1,294 @@
+// Linear buckling of the geometrically exact beam (buckling.hpp): the pencil of one
+// discretization from the beam's own tangent, the inextensible extrapolation, and the
+// statics' reference refinement.
+#include "fem_reference/buckling.hpp"
+
+#include <Eigen/Dense>
+#include <limits>
+#include <sstream>
+
+#include "fem_reference/beam_potential.hpp"
+#include "fem_reference/reference.hpp"
+#include "modal/buckling.hpp"
+
+namespace fem::detail {
+namespace {
+
+/// The strain (and rotation) scale x = h max|u_1| / R of the difference that gives K_1
+/// (buckling.hpp). The tangent's entries are the membrane stiffness EA, its change along the
+/// path EA x: the difference keeps ~eps / x of it, and that noise enters a bending mode's
+/// factor amplified by the membrane-to-bending spread of K_0 (~1e8 here), while the
+/// five-point stencil's truncation is O(x^4). Measured on the paper's ring (relative error
+/// of the converged factors): x = 1e-6 (two-point stencil) 1e-7; 1e-4: 1e-9; 1e-3: 1e-10;
+/// 3e-3: 2e-11; 1e-2: 2.3e-9 (truncation).
+constexpr double kPathStrain = 3e-3;
+
+/// One discretization's factors (at one EA).
+struct Buckled {
+  std::vector<double> factors;
+  std::vector<ring::ModeShape> shapes;
+  long long unknowns = 0;
+  double path_step = 0.0;  ///< h: the difference's states are t u_1 at t = +-h, +-2h
+  double residual = 0.0;   ///< the worst wanted pair's relative residual (refine())
+};
+
+Eigen::MatrixXd dense(const SparseMatrix<double>& A) {
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(A.m(), A.n());
+  for (auto it = A.begin(); it != A.end(); ++it) D(it->row(), it->column()) = it->value();
+  return D;
+}
+
+/// Lowest positive factors of a pencil and their vectors (columns), ascending; the
+/// columns beyond the wanted ones are guards for the refinement.
+struct Pairs {
+  std::vector<double> factors;
+  Eigen::MatrixXd vectors;
+  double residual = 0.0;  ///< the worst wanted pair's relative residual after refine()
+};
+
+/// The dense eigen step (modal::critical_factors) for `count` + kGuardModes pairs, or,
+/// when the pencil has fewer positive factors, for `count` alone (which then throws
+/// naming buckling.count if even those are not there).
+Pairs raw_pairs(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count, unsigned int N) {
+  const int guarded = static_cast<int>(std::min<unsigned int>(N, count + kGuardModes));
+  modal::CriticalFactors cf;
+  try {
+    cf = modal::critical_factors(K0, K1, guarded, "fem");
+  } catch (const std::invalid_argument&) {
+    if (guarded == count) throw;
+    cf = modal::critical_factors(K0, K1, count, "fem");
+  }
+  Pairs p;
+  p.factors.assign(cf.factors.data(), cf.factors.data() + cf.factors.size());
+  p.vectors = cf.vectors;
+  return p;
+}
+
+/// Improves the dense step's pairs as the modes' refine() does theirs (ring_model.hpp):
+/// the thin ring's membrane stiffness makes a double-precision dense step lose 3e-9
+/// (extensible) to 1e-7 (inextensible, beta = 2e6) of the bending factors (measured on the
+/// paper's ring, N = 130..570; refined: ~2e-11), because the K_0 it factors holds the
+/// bending energy only as a cancellation of stiff terms.
+/// Rayleigh-Ritz on the span of the pairs with X^T K_0 X accumulated in extended precision
+/// from the strain fields (RingModel::stiffness_product; K_1 has no stiff part and is
+/// applied in double), then the corrections x -= K_0^-1 r of the wanted pairs, r = K_0 x +
+/// lambda K_1 x (one step of inverse iteration in the form that keeps the digits), the
+/// guards x <- K_0^-1 K_1 x (subspace iteration), each round followed by Ritz, until the
+/// wanted residuals ||r||_* / ||K_0 x||_* (dual norm of K_0: ||r||_*^2 = r^T K_0^-1 r) are
+/// below kRefinedResidual or stop halving, at most kMaxRefinementRounds. A wanted pair
+/// whose residual stays above kAcceptedResidual is a ring::NumericalError.
+/// O(rounds (m N p + N^2 m)) for m pairs.
+Pairs refine(const RingModel& model, const SparseDirectUMFPACK& K0_inverse, const Eigen::MatrixXd& K1, Pairs p,
+             int count) {
+  const unsigned int N = model.n_free();
+  const int m = static_cast<int>(p.vectors.cols());
+  Eigen::MatrixXd& X = p.vectors;
+  Eigen::MatrixXd KX(N, m);
+  Vector<double> x(N), z(N), r(N);
+  auto stiffness = [&](int j) {  // column j of KX, and the Gram column X^T K_0 x_j in extended precision
+    for (unsigned int i = 0; i < N; ++i) x[i] = X(i, j);
+    const std::vector<Real> kx = model.stiffness_product(x);
+    for (unsigned int i = 0; i < N; ++i) KX(i, j) = static_cast<double>(kx[i]);
+    return kx;
+  };
+  auto ritz = [&]() {
+    Eigen::MatrixXd A0(m, m);
+    for (int j = 0; j < m; ++j) {
+      const std::vector<Real> kx = stiffness(j);
+      for (int k = 0; k < m; ++k) {
+        Real a = 0;
+        for (unsigned int i = 0; i < N; ++i) a += X(i, k) * kx[i];
+        A0(k, j) = static_cast<double>(a);
+      }
+    }
+    A0 = 0.5 * (A0 + A0.transpose()).eval();
+    Eigen::MatrixXd A1 = X.transpose() * K1 * X;
+    A1 = 0.5 * (A1 + A1.transpose()).eval();
+    // The small pencil: A0 = L L^T, mu of L^-1 A1 L^-T ascending (lambda = -1/mu).
+    const Eigen::LLT<Eigen::MatrixXd> llt(A0);
+    if (llt.info() != Eigen::Success) throw ring::NumericalError("fem buckling: the refinement's Gram matrix lost its rank");
+    Eigen::MatrixXd C = llt.matrixL().solve(A1);
+    C = llt.matrixL().solve(C.transpose()).eval();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
+    for (int k = 0; k < count; ++k)
+      if (!(eig.eigenvalues()[k] < 0))
+        throw ring::NumericalError("fem buckling: the refinement lost critical factor " + std::to_string(k + 1));
+    for (int k = 0; k < m; ++k) p.factors[k] = -1.0 / eig.eigenvalues()[k];
+    X = (X * llt.matrixU().solve(eig.eigenvectors())).eval();
+    for (int j = 0; j < m; ++j) stiffness(j);
+  };
+  double previous = std::numeric_limits<double>::infinity();
+  for (unsigned int round = 0;; ++round) {
+    ritz();
+    const Eigen::MatrixXd K1X = K1 * X;
+    double worst = 0.0;
+    Eigen::MatrixXd next = X;
+    for (int k = 0; k < m; ++k) {
+      if (k < count) {
+        for (unsigned int i = 0; i < N; ++i) r[i] = KX(i, k) + p.factors[k] * K1X(i, k);
+        K0_inverse.vmult(z, r);
+        double xkx = 0.0;
+        for (unsigned int i = 0; i < N; ++i) xkx += X(i, k) * KX(i, k);
+        const double rz = r * z;
+        worst = std::max(worst, rz >= 0 && xkx > 0 ? std::sqrt(rz / xkx) : std::numeric_limits<double>::infinity());
+        for (unsigned int i = 0; i < N; ++i) next(i, k) -= z[i];
+      } else {
+        for (unsigned int i = 0; i < N; ++i) r[i] = K1X(i, k);
+        K0_inverse.vmult(z, r);
+        for (unsigned int i = 0; i < N; ++i) next(i, k) = z[i];
+      }
+    }
+    p.residual = worst;
+    if (worst <= kRefinedResidual || worst > 0.5 * previous || round + 1 >= kMaxRefinementRounds) break;
+    previous = worst;
+    X = std::move(next);
+  }
+  if (!(p.residual <= kAcceptedResidual)) {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "fem buckling: the eigen step lost its accuracy: a critical factor keeps a relative residual of "
+        << p.residual << " after refinement (accepted: " << kAcceptedResidual << "; " << N
+        << " unknowns): use fewer elements or a lower degree";
+    throw ring::NumericalError(msg.str());
+  }
+  return p;
+}
+
+/// The pencil (T_0, K_1) of `setup` and its lowest positive factors. `refining`: a step
+/// of the reference (a size above the dense limit is then a failed refinement, not a
+/// request that can never work).
+Buckled buckle_once(const ring::RingSpec& spec, const Setup& setup, const ring::BucklingOptions& b, bool refining) {
+  const RingModel model(spec, setup);
+  const unsigned int N = model.n_free();
+  if (N > kDenseBucklingLimit) {
+    const std::string m = std::to_string(setup.cells()) + " cells of degree " + std::to_string(setup.degree) + " give " +
+                          std::to_string(N) + " unknowns, more than the dense buckling eigen step takes (" +
+                          std::to_string(kDenseBucklingLimit) + ")";
+    if (refining) throw ring::NumericalError("fem: the buckling reference refinement reached " + m);
+    throw std::invalid_argument("fem: fem.elements (=" + std::to_string(setup.elements) + ") with fem.degree (=" +
+                                std::to_string(setup.degree) + "): " + m + "; use fewer elements or a lower degree");
+  }
+  if (b.count > static_cast<int>(N))
+    throw std::invalid_argument("fem: buckling.count (=" + std::to_string(b.count) + ") must be <= the unknowns (=" +
+                                std::to_string(N) + ") of " + std::to_string(setup.cells()) + " cells of degree " +
+                                std::to_string(setup.degree));
+  const BeamPotential potential(model, b.loads);
+  SparseMatrix<double> T(model.sparsity());
+  Vector<double> q(N), residual, f;
+  potential.evaluate(q, 0.0, &residual, &T, &f);  // T_0 = K_0 and the load f = grad Phi(0)
+  const Eigen::MatrixXd K0 = dense(T);
+
+  // The linear prebuckling state u_1 (T_0 u_1 = f).
+  Vector<double> u1 = f;
+  SparseDirectUMFPACK lu;
+  try {
+    lu.initialize(T);
+  } catch (const std::exception& e) {
+    throw ring::NumericalError(std::string("fem buckling: the tangent at rest is singular: ") + e.what());
+  }
+  lu.solve(u1);
+  const double largest = u1.linfty_norm();
+  if (!std::isfinite(largest)) throw ring::NumericalError("fem buckling: the linear prebuckling state is not finite");
+  // Loads that do not displace the ring (f = 0) leave only their load stiffness; any h
+  // then differences it exactly.
+  const double h = largest > 0 ? kPathStrain * spec.radius / largest : 1.0;
+
+  // K_1 = [8 (T(h) - T(-h)) - (T(2h) - T(-2h))] / 12h, T(t) = T(t u_1, t).
+  auto tangent_at = [&](double t) {
+    q = u1;
+    q *= t;
+    potential.evaluate(q, t, &residual, &T);
+    return dense(T);
+  };
+  const Eigen::MatrixXd K1 =
+      (8.0 * (tangent_at(h) - tangent_at(-h)) - (tangent_at(2.0 * h) - tangent_at(-2.0 * h))) / (12.0 * h);
+
+  const Pairs pairs = refine(model, lu, K1, raw_pairs(K0, K1, b.count, N), b.count);
+  Buckled out;
+  out.unknowns = N;
+  out.path_step = h;
+  out.residual = pairs.residual;
+  Vector<double> phi(N);
+  for (int i = 0; i < b.count; ++i) {
+    out.factors.push_back(pairs.factors[i]);
+    for (unsigned int k = 0; k < N; ++k) phi[k] = pairs.vectors(k, i);
+    out.shapes.push_back(model.sample(model.expand(phi)));
+  }
+  return out;
+}
+
+/// One discretization with the modes' inextensible extrapolation (buckling.hpp).
+Buckled buckle(const ring::RingSpec& spec, Setup setup, bool extensible, const ring::BucklingOptions& b,
+               bool refining) {
+  if (extensible) {
+    setup.EA = spec.EA();
+    return buckle_once(spec, setup, b, refining);
+  }
+  const double base = kInextensibleBeta * spec.EI() / (spec.radius * spec.radius);
+  setup.EA = base;
+  const Buckled lo = buckle_once(spec, setup, b, refining);
+  setup.EA = 2.0 * base;
+  Buckled hi = buckle_once(spec, setup, b, refining);
+  for (std::size_t i = 0; i < hi.factors.size(); ++i) hi.factors[i] = 2.0 * hi.factors[i] - lo.factors[i];
+  return hi;
+}
+
+/// The largest relative change of the factors between two discretizations.
+double largest_change(const Buckled& a, const Buckled& b) {
+  double change = 0.0;
+  for (std::size_t i = 0; i < a.factors.size(); ++i)
+    change = std::max(change, std::abs(b.factors[i] - a.factors[i]) / std::abs(b.factors[i]));
+  return change;
+}
+
+ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
+  check_buckling(spec, o, b);
+  const auto t0 = std::chrono::steady_clock::now();
+  Setup setup;
+  setup.elements = o.elements;
+  setup.degree = o.degree;
+  setup.geometry = o.geometry;
+  Buckled result;
+  double estimate = 0.0;
+  int refinements = 0;
+  if (o.reference) {
+    bool first = true;
+    auto solve = [&](const Setup& s) {
+      Buckled next = buckle(spec, s, o.extensible, b, !first);
+      first = false;
+      return next;
+    };
+    result = refine_until(setup, o.tolerance, solve, largest_change, estimate, refinements, "buckling");
+  } else {
+    result = buckle(spec, setup, o.extensible, b, false);
+  }
+  ring::BucklingResult r;
+  r.solver = "fem";
+  r.model["elements"] = static_cast<long long>(setup.elements);
+  r.model["cells"] = static_cast<long long>(setup.cells());
+  r.model["subdivisions"] = static_cast<long long>(setup.subdivisions);
+  r.model["degree"] = static_cast<long long>(setup.degree);
+  r.model["extensible"] = o.extensible;
+  r.model["reference"] = o.reference;
+  r.model["refinements"] = static_cast<long long>(refinements);
+  r.model["path_step"] = result.path_step;
+  r.model["max_residual"] = result.residual;  // refine(): dual norm of K_0
+  r.factors = std::move(result.factors);
+  r.shapes = std::move(result.shapes);
+  r.unknowns = result.unknowns;
+  r.error_estimate = estimate;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace
+}  // namespace fem::detail
+
+namespace fem {
+
+ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::FemOptions& options,
+                                      const ring::BucklingOptions& buckling) {
+  return detail::buckling(spec, options, buckling);
+}
+
+}  // namespace fem
