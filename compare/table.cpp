@@ -134,7 +134,7 @@ std::string footnotes(const Table& t) {
   s << ".\n";
   if (any_reordered(t)) s << "* paired by MAC with a mode of another number in that solver's own order.\n";
   if (any_subspace(t))
-    s << "= one of a double frequency (equal to " << kDegenerate << " relative), compared as a subspace: its MAC is\n"
+    s << "= one of a double value (equal to " << kDegenerate << " relative), compared as a subspace: its MAC is\n"
       << "  cos^2 of the base mode's angle to the pair's plane (each solver may return any basis of it).\n";
   if (!t.paper.empty()) s << "paper = Yin & Wang Table 1 (corrected values, README \"The paper\"); vs paper % = (computed - paper) / paper * 100.\n";
   double worst = 1.0;

@@ -175,17 +175,17 @@ class Follower {
     out_.unstable_before = *unstable_;
     out_.unstable_after = after;
     State lo = from, hi = to;
-    // Newton right at the branch point, where the tangent is singular, may not converge:
-    // a point off the middle is tried then.
+    // Newton next to the branch point, where the tangent is nearly singular, may not meet
+    // its tolerance: then the point between the two equilibria by linear interpolation,
+    // whose inertia differs from the equilibrium's only within the bracket's width.
     auto solved_between = [&](State& mid) {
-      for (double f : {0.5, 0.3, 0.7}) {
-        mid = {lo.z, lo.s + f * (hi.s - lo.s)};
-        if (const int it = newton_at(mid, nullptr); it >= 0) {
-          out_.iterations += it;
-          return true;
-        }
+      mid = {lo.z, 0.5 * (lo.s + hi.s)};
+      if (const int it = newton_at(mid, nullptr); it >= 0) {
+        out_.iterations += it;
+        return true;
       }
-      return false;
+      mid = {0.5 * (lo.z + hi.z), 0.5 * (lo.s + hi.s)};
+      return true;
     };
     State mid;
     while (locate && hi.s - lo.s > kBifurcationBracket * (to.s - from.s) && solved_between(mid)) {
