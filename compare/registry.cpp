@@ -41,6 +41,15 @@ bool runs(const ring::NonlinearRequest& q, const std::string& name) {
   return std::find(q.solvers.begin(), q.solvers.end(), name) != q.solvers.end();
 }
 
+/// static.path (the equilibrium path with branch switching, contact as a result) is the
+/// multibody chain's so far.
+void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
+  if (statics.path)
+    throw std::invalid_argument(name + ": static.path = true (the equilibrium path through bifurcations to contact) is "
+                                "not offered by this solver yet; the multibody chain offers it (static.solvers = "
+                                "[\"multibody\"])");
+}
+
 /// Chains and frames: n = 40, 80, ..., 2560 (from enough pieces for the modes asked).
 std::vector<std::pair<std::string, ring::Scene>> doubling_sweep(const SolverEntry& e, const ring::Scene& s,
                                                                 int modes) {
@@ -181,7 +190,10 @@ SolverEntry lumped_entry() {
     return 0.0;
   };
   e.check_modes = [](const ring::Scene& s) { lumped::check_modes(s.ring, s.lumped); };
-  e.check_static = [](const ring::Scene& s) { lumped::check_static(s.ring, s.lumped, *s.statics); };
+  e.check_static = [](const ring::Scene& s) {
+    refuse_path("lumped", *s.statics);
+    lumped::check_static(s.ring, s.lumped, *s.statics);
+  };
   e.check_response = [](const ring::Scene& s) { lumped::check_response(s.ring, s.lumped, *s.response); };
   e.check_buckling = [](const ring::Scene& s) { lumped::check_buckling(s.ring, s.lumped, *s.buckling); };
   e.modes = [](const ring::Scene& s, int count) {
@@ -248,7 +260,10 @@ SolverEntry fem_entry() {
   // process without it 7.8-8.8 MiB (compare/guard.cpp).
   e.code_bytes = 160.0 * (1 << 20);
   e.check_modes = [](const ring::Scene& s) { fem::check_modes(s.ring, s.fem); };
-  e.check_static = [](const ring::Scene& s) { fem::check_static(s.ring, s.fem, *s.statics); };
+  e.check_static = [](const ring::Scene& s) {
+    refuse_path("fem", *s.statics);
+    fem::check_static(s.ring, s.fem, *s.statics);
+  };
   e.check_response = [](const ring::Scene& s) { fem::check_response(s.ring, s.fem, *s.response); };
   e.check_buckling = [](const ring::Scene& s) { fem::check_buckling(s.ring, s.fem, *s.buckling); };
   e.modes = [](const ring::Scene& s, int count) { return fem_module::modes(s.ring, s.fem, count); };
@@ -333,6 +348,7 @@ SolverEntry calculix_entry() {
     return with_scene_file(s, [&] { return calculix::compute_modes(s.ring, s.calculix, count, signal_hooks(), s.title); });
   };
   e.check_static = [](const ring::Scene& s) {
+    refuse_path("calculix", *s.statics);
     with_scene_file(s, [&] { calculix::check_static(s.ring, s.calculix, *s.statics); });
   };
   e.statics = [](const ring::Scene& s) {

@@ -193,6 +193,16 @@ void write_report(const std::string& dir, const RunReport& r) {
     plot_static_shapes(dir, all, s.ring.radius);
     files.push_back("static_shapes.png");
     md << "![deformed ring under the static load](static_shapes.png)\n\n";
+    if (!all.front().path.empty()) {
+      for (const auto& x : all) {
+        put("static_path_" + x.solver + ".csv", static_path_csv(x));
+        md << "- " << x.solver << ": " << x.path.size() << " equilibria; ended at load factor " << x.end_load << ": "
+           << x.end << "\n";
+      }
+      plot_static_paths(dir, all);
+      files.push_back("static_path.png");
+      md << "\n![equilibrium paths](static_path.png)\n\n";
+    }
   }
   if (r.buckling) {
     md << "## Linear buckling\n\n";

@@ -45,15 +45,57 @@ std::string static_json(const ring::StaticResult& r) {
   j["solver"] = r.solver;
   j["unknowns"] = r.unknowns;
   j["seconds"] = r.seconds;
+  if (!r.path.empty()) {
+    j["end"] = r.end;
+    j["end_load"] = r.end_load;
+    j["branch_points"] = r.branch_points;
+    j["path_points"] = r.path.size();
+  }
   return j.dump(2) + "\n";
 }
 
 std::string static_text(const ring::StaticResult& r) {
   std::ostringstream s;
-  s << (r.solver.empty() ? "" : r.solver + ": ") << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n"
-    << "   angle deg        ux m        uy m\n";
+  s << (r.solver.empty() ? "" : r.solver + ": ") << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n";
+  if (!r.path.empty()) {
+    s << "path: " << r.path.size() << " equilibria from rest";
+    for (double b : r.branch_points) s << "; onto a branch at load factor " << sig4(b);
+    s << "; ended at load factor " << fmt::format("{:.6g}", r.end_load) << ": " << r.end << "\n"
+      << (r.end == "full load" ? "at the full load:\n" : "at the last equilibrium before the touch:\n");
+  }
+  s << "   angle deg        ux m        uy m\n";
   for (const auto& d : r.displacements) s << fmt::format("  {:10.4g}  {:10.4e}  {:10.4e}\n", d.angle, d.ux, d.uy);
   return s.str();
+}
+
+std::string static_path_csv(const ring::StaticResult& r) {
+  std::ostringstream s;
+  s.precision(12);
+  s << "load_factor,ovalisation";
+  if (!r.path.empty())
+    for (const auto& d : r.path.front().displacements) s << ",ux_" << deg_label(d.angle) << ",uy_" << deg_label(d.angle);
+  s << "\n";
+  for (const auto& p : r.path) {
+    s << p.load_factor << "," << p.ovalisation;
+    for (const auto& d : p.displacements) s << "," << d.ux << "," << d.uy;
+    s << "\n";
+  }
+  return s.str();
+}
+
+void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results) {
+  std::vector<Series> series;
+  for (const auto& r : results) {
+    if (r.path.empty()) continue;
+    Series x{r.solver, {}, {}};
+    for (const auto& p : r.path) {
+      x.x.push_back(p.ovalisation);
+      x.y.push_back(p.load_factor);
+    }
+    series.push_back(x);
+  }
+  plot_series(dir, "static_path", "Equilibrium paths: load factor against ovalisation", "(largest - smallest diameter) / R",
+              "load factor", series);
 }
 
 void plot_response(const std::string& dir, const ring::TimeHistory& h, double radius) {

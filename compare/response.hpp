@@ -17,6 +17,10 @@ std::string history_csv(const ring::TimeHistory& h);
 /// "unknowns", "seconds"}.
 std::string static_json(const ring::StaticResult& r);
 std::string static_text(const ring::StaticResult& r);
+/// static.path: the path as CSV (load_factor, ovalisation, ux_A, uy_A for each recorded point).
+std::string static_path_csv(const ring::StaticResult& r);
+/// static.path: load factor against ovalisation, every solver's path overlaid (static_path.png).
+void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results);
 
 /// Figures of a response: time histories of the recorded points, and the deformed
 /// ring at the snapshot instants (the paper's Figure 5).

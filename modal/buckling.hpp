@@ -30,10 +30,20 @@ CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixX
 
 /// How many independent directions the equilibrium with tangent stiffness T (N x N) under
 /// constraints with Jacobian G (C x N) is unstable in: the negative eigenvalues of Z^T T Z,
-/// Z an orthonormal basis of ker G (Householder QR of G^T; rank-revealing), below -1e-12
-/// of the largest |eigenvalue| (rounding is ~1e-16 of it; the lowest stable eigenvalue of
-/// the rings here is above (l/R)^4 ~ 1e-9 of it up to n = 1000). For the continuation
-/// driver's bifurcation test (paths/continuation.hpp). Dense: O(N^3).
+/// Z an orthonormal basis of ker G (Householder QR of G^T; rank-revealing), below -1e-10
+/// of the largest |eigenvalue|: the rounding of the assembled tangent is ~eps (R/l)^4 of it
+/// (4e-11 at n = 160 for the chain), the lowest stable eigenvalue of a ring ~(l/R)^4 of it
+/// (1.6e-9 at n = 1000). For the continuation driver's bifurcation test
+/// (paths/continuation.hpp). Dense: O(N^3).
 int unstable_directions(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G);
+
+/// The same tangent's least stable direction: Z y, y the unit eigenvector of the least
+/// eigenvalue of Z^T T Z (for branch switching, paths/continuation.hpp), and that
+/// eigenvalue. O(N^3).
+struct LeastStable {
+  Eigen::VectorXd direction;  ///< N values, in ker G
+  double eigenvalue = 0.0;
+};
+LeastStable least_stable(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G);
 
 }  // namespace modal

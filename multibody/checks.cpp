@@ -37,6 +37,9 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
     ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
     ring::one_point_load(statics.loads, "static", "multibody method = \"sparse\" (the O(n) statics)");
+    if (statics.path)
+      throw std::invalid_argument("static.path = true needs the dense statics (its branch switching takes the tangent's "
+                                  "eigenvectors): set multibody.method = \"dense\"");
   }
   ring::refuse_timoshenko(spec, "multibody");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");

@@ -20,8 +20,33 @@ namespace detail {
 StaticEquilibrium::StaticEquilibrium(const Chain& chain, double depth)
     : chain_(chain), depth_(depth), gap_(contact_gap(chain, depth)) {}
 
-std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State&, const paths::State& to) {
-  const ClosestPair cp = closest_contact(hinges(to.z), chain_.l(), gap_, depth_);
+ring::PathPoint StaticEquilibrium::path_point(double s, const Eigen::Matrix2Xd& p) const {
+  ring::PathPoint pt;
+  pt.load_factor = s;
+  for (int k : record_) {
+    const Eigen::Vector2d u = p.col(k) - chain_.hinge_rest(k);
+    pt.displacements.push_back({chain_.hinge_angles_deg()[k], u.x(), u.y()});
+  }
+  const int n = chain_.n();
+  double most = 0.0, least = HUGE_VAL;
+  for (int k = 0; k < (n + 1) / 2; ++k) {
+    const double d = (p.col(k) - p.col((k + n / 2) % n)).norm();
+    most = std::max(most, d);
+    least = std::min(least, d);
+  }
+  pt.ovalisation = (most - least) / chain_.circumradius();
+  return pt;
+}
+
+std::optional<double> StaticEquilibrium::clearance(const paths::State& x) {
+  return closest_contact(hinges(x.z), chain_.l(), gap_, depth_).distance - depth_;
+}
+
+std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State& from, const paths::State& to) {
+  const Eigen::Matrix2Xd p = hinges(to.z);
+  if (recording_ && path_.empty()) path_.push_back(path_point(from.s, hinges(from.z)));
+  if (recording_) path_.push_back(path_point(to.s, p));
+  const ClosestPair cp = closest_contact(p, chain_.l(), gap_, depth_);
   if (cp.distance >= depth_) return std::nullopt;
   std::ostringstream m;
   m << describe_contact(cp) << " (section depth " << depth_ << " m); the chain model does not include contact";
@@ -118,11 +143,15 @@ class AngleStatics : public detail::StaticEquilibrium {
   }
   /// The inertia of T on the constraints' tangent space at x: O(n^3), once per accepted step.
   std::optional<int> unstable_directions(const paths::State& x) override {
-    const Vector q = x.z.head(n_), lambda = x.z.tail(c_);
-    const Chain::ConstraintKinematics ck = tangent_.constraints(q);
-    Matrix T = Matrix::Zero(n_, n_);
-    tangent_.add_tangent(q, lambda, x.s, ck, T);
-    return modal::unstable_directions(T, ck.G);
+    const Chain::ConstraintKinematics ck = tangent_.constraints(x.z.head(n_));
+    return modal::unstable_directions(tangent_at(x, ck), ck.G);
+  }
+  /// Its least stable direction in the angles, multipliers zero: O(n^3).
+  std::optional<paths::Vector> critical_direction(const paths::State& x) override {
+    const Chain::ConstraintKinematics ck = tangent_.constraints(x.z.head(n_));
+    paths::Vector d = paths::Vector::Zero(n_ + c_);
+    d.head(n_) = modal::least_stable(tangent_at(x, ck), ck.G).direction;
+    return d;
   }
   Eigen::Matrix2Xd hinges(const paths::Vector& z) const override { return chain_.hinge_positions(z.head(n_)); }
   paths::Vector rest() const override {
@@ -132,6 +161,12 @@ class AngleStatics : public detail::StaticEquilibrium {
   }
 
  private:
+  Matrix tangent_at(const paths::State& x, const Chain::ConstraintKinematics& ck) const {
+    Matrix T = Matrix::Zero(n_, n_);
+    tangent_.add_tangent(x.z.head(n_), x.z.tail(c_), x.s, ck, T);
+    return T;
+  }
+
   const detail::DenseTangent tangent_;
   const Eigen::Index n_, c_;
   const double sc_;
@@ -152,11 +187,24 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
     eq = natural::static_equilibrium(ch, statics, depth);
   else
     eq = std::make_unique<AngleStatics>(ch, spec, statics.loads, depth);
-  const paths::Continuation policy{statics.steps};
+  paths::Continuation policy{statics.steps};
+  if (statics.path) {
+    policy.branch_switch = true;
+    std::vector<int> hinges;
+    for (double a : statics.record) hinges.push_back(ch.hinge_at(a));
+    eq->record_path(hinges);
+  }
   const paths::Trace path = paths::follow(*eq, {eq->rest(), 0.0}, policy);
-  if (path.end != paths::Trace::End::reached)
+  const bool touched = statics.path && path.end == paths::Trace::End::contact;
+  if (path.end != paths::Trace::End::reached && !touched)
     throw ring::NumericalError("multibody::solve_static: " + paths::failure_message(path, policy));
   ring::StaticResult res;
+  if (statics.path) {
+    res.path = eq->path();
+    res.branch_points = path.branch_points;
+    res.end = touched ? "contact: " + path.contact : "full load";
+    res.end_load = touched ? path.end_load : 1.0;
+  }
   res.solver = "multibody";
   res.unknowns = eq->size();  // angles and multipliers, or positions and multipliers
   res.steps = path.steps;

@@ -74,11 +74,27 @@ class StaticEquilibrium : public paths::Equilibrium {
   /// The unknowns of the undeformed ring, unloaded.
   virtual paths::Vector rest() const = 0;
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override;
+  /// Distance between the closest non-neighbouring segments minus the section depth. O(n).
+  std::optional<double> clearance(const paths::State& x) override;
+  /// Records every accepted equilibrium (ring::PathPoint) at these hinges from now on.
+  void record_path(std::vector<int> hinges) {
+    record_ = std::move(hinges);
+    recording_ = true;
+  }
+  /// The recorded path, rest first.
+  const std::vector<ring::PathPoint>& path() const { return path_; }
+  /// The path point of the hinge positions p (2 x n).
+  ring::PathPoint path_point(double s, const Eigen::Matrix2Xd& p) const;
 
  protected:
   const Chain& chain_;
   const double depth_;
   const int gap_;
+
+ private:
+  std::vector<int> record_;
+  bool recording_ = false;
+  std::vector<ring::PathPoint> path_;
 };
 
 }  // namespace detail

@@ -3,6 +3,7 @@
 #include "paths/continuation.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -24,6 +25,10 @@ constexpr int kMaxLimitEvaluations = 60;
 constexpr double kLoadTolerance = 1e-12;
 /// A bifurcation on the load-stepping part is bisected to this fraction of its step.
 constexpr double kBifurcationBracket = 1e-6;
+/// Branch switching: the first step onto a branch moves this fraction of the basin; at
+/// most this many switches per path.
+constexpr double kBranchMove = 0.1;
+constexpr std::size_t kMaxBranchSwitches = 4;
 
 std::string number(double x, int digits = 9) {
   std::ostringstream o;
@@ -41,6 +46,10 @@ struct Tangent {
 /// One path from rest: run() is load_stepping(), then continuation() if needed.
 class Follower {
  public:
+  /// The equilibrium at a fraction f of a step (its load, or its arc length): false when
+  /// Newton does not find it.
+  using Between = std::function<bool(double f, State& x)>;
+
   Follower(Equilibrium& eq, const Continuation& options)
       : eq_(eq), options_(options), N_(eq.size()), m_(eq.arc_size()), ds_(1.0 / std::max(1, options.steps)) {}
 
@@ -49,16 +58,44 @@ class Follower {
     out_.state = rest;
     unstable_ = eq_.unstable_directions(rest);
     Vector last_step;
-    if (!options_.from_start && load_stepping(state, last_step)) return std::move(out_);
-    if (last_step.size() == 0) {
-      // No load step taken: the load-raising direction is dz/ds at the state itself.
-      if (!load_tangent(state, last_step)) {
+    if (options_.from_start || !load_stepping(state, last_step)) {
+      if (last_step.size() == 0 && !load_tangent(state, last_step)) {
+        // No load step taken, and no load-raising direction dz/ds at the state itself.
         stall(state.s);
         return std::move(out_);
       }
+      continuation(state, last_step);
     }
-    continuation(state, last_step);
+    while (out_.end == Trace::End::bifurcation && options_.branch_switch &&
+           out_.branch_points.size() < kMaxBranchSwitches) {
+      const State at = out_.state;
+      State onto;
+      if (!switch_branch(at, onto)) break;
+      out_.branch_points.push_back(at.s);
+      out_.end = Trace::End::reached;
+      unstable_ = eq_.unstable_directions(onto);  // the branch's own count from here on
+      ++out_.arc_steps;
+      if (!accept(at, onto)) break;
+      continuation(onto, onto.z - at.z);
+    }
     return std::move(out_);
+  }
+
+  /// One arc step from the bifurcation `at` along the model's critical direction, landed
+  /// on the branch (its chord at least half along the direction); false when none lands.
+  bool switch_branch(const State& at, State& onto) {
+    const std::optional<Vector> d = eq_.critical_direction(at);
+    if (!d || d->size() != N_ || d->head(m_).norm() == 0.0) return false;
+    Tangent t{*d / d->head(m_).norm(), 0.0};
+    double len = kBranchMove / std::max(eq_.move(t.t), 1e-300);
+    Tangent ahead;
+    for (int attempt = 0; attempt < 6; ++attempt, len *= 0.5) {
+      int it = 0;
+      if (!arc_step(at, t, len, onto, it, ahead)) continue;
+      out_.iterations += it;
+      if (std::abs((onto.z - at.z).head(m_).dot(t.t.head(m_))) >= 0.5 * len) return true;
+    }
+    return false;
   }
 
  private:
@@ -145,10 +182,16 @@ class Follower {
 
   /// Records the accepted `to`; false (and the trace ended) when the ring touched itself
   /// or the path passed a bifurcation. `limits`: limit points passed between them (each
-  /// explains a change of one unstable direction); `locate`: a load-stepping step, whose
-  /// bifurcation is bisected (Newton at fixed loads from `from`).
-  bool accept(const State& from, const State& to, int limits = 0, bool locate = false) {
+  /// explains a change of one unstable direction); `between`: the equilibria inside the
+  /// step, for locating a touch; `known`: the unstable directions at `to`, if counted.
+  bool accept(const State& from, const State& to, int limits = 0, const Between* between = nullptr,
+              std::optional<int> known = std::nullopt) {
     ++out_.steps;
+    if (between)
+      if (const std::optional<double> c = eq_.clearance(to); c && *c < 0.0) {
+        touched(from, to, *between);
+        return false;
+      }
     if (const auto touch = eq_.accept(from, to)) {
       out_.end = Trace::End::contact;
       out_.end_load = from.s + touch->at * (to.s - from.s);
@@ -157,9 +200,9 @@ class Follower {
       return false;
     }
     if (unstable_) {
-      const std::optional<int> now = eq_.unstable_directions(to);
+      const std::optional<int> now = known ? known : eq_.unstable_directions(to);
       if (now && std::abs(*now - *unstable_) > limits) {
-        bifurcation(from, to, *now, locate);
+        bifurcation(from, to, *now);
         return false;
       }
       unstable_ = now;
@@ -168,35 +211,40 @@ class Follower {
     return true;
   }
 
+  /// Ends the path where the ring first touches itself between the accepted `from` (clear)
+  /// and `to` (overlapping): bisection on the fraction of the step, `between` giving the
+  /// equilibrium there, to kBifurcationBracket; the touching equilibrium is the result.
+  void touched(const State& from, const State& to, const Between& between) {
+    double lo = 0.0, hi = 1.0;
+    State x, touching = to;
+    while (hi - lo > kBifurcationBracket && between(0.5 * (lo + hi), x)) {
+      const std::optional<double> c = eq_.clearance(x);
+      if (!c) break;
+      if (*c < 0.0) {
+        hi = 0.5 * (lo + hi);
+        touching = x;
+      } else {
+        lo = 0.5 * (lo + hi);
+      }
+    }
+    const auto touch = eq_.accept(from, touching);
+    out_.end = Trace::End::contact;
+    out_.end_load = touching.s;
+    out_.contact = touch ? touch->where : "the ring touches itself";
+    out_.state = touching;
+  }
+
   /// Ends the path at a bifurcation between the accepted `from` and `to` (where the count
-  /// of unstable directions is `after`), bisected on the load factor when `locate`.
-  void bifurcation(const State& from, const State& to, int after, bool locate) {
+  /// of unstable directions is `after`): the bracket is the step (load stepping has
+  /// narrowed it to kBifurcationBracket of an increment).
+  void bifurcation(const State& from, const State& to, int after) {
     out_.end = Trace::End::bifurcation;
     out_.unstable_before = *unstable_;
     out_.unstable_after = after;
-    State lo = from, hi = to;
-    // Newton next to the branch point, where the tangent is nearly singular, may not meet
-    // its tolerance: then the point between the two equilibria by linear interpolation,
-    // whose inertia differs from the equilibrium's only within the bracket's width.
-    auto solved_between = [&](State& mid) {
-      mid = {lo.z, 0.5 * (lo.s + hi.s)};
-      if (const int it = newton_at(mid, nullptr); it >= 0) {
-        out_.iterations += it;
-        return true;
-      }
-      mid = {0.5 * (lo.z + hi.z), 0.5 * (lo.s + hi.s)};
-      return true;
-    };
-    State mid;
-    while (locate && hi.s - lo.s > kBifurcationBracket * (to.s - from.s) && solved_between(mid)) {
-      const std::optional<int> k = eq_.unstable_directions(mid);
-      if (!k) break;
-      (*k == *unstable_ ? lo : hi) = mid;
-    }
-    out_.bifurcation_low = lo.s;
-    out_.bifurcation_high = hi.s;
-    out_.end_load = lo.s;
-    out_.state = lo;
+    out_.bifurcation_low = from.s;
+    out_.bifurcation_high = to.s;
+    out_.end_load = from.s;
+    out_.state = from;
   }
 
   void reached(const State& x) {
@@ -216,6 +264,8 @@ class Follower {
     double step = ds_;
     State trial;
     Vector dzds;
+    std::optional<State> beyond;  ///< the last level found past a change of stability
+    int beyond_count = 0;
     while (state.s < 1.0 - 1e-14) {
       trial.z = state.z;
       trial.s = std::min(1.0, state.s + step);
@@ -229,15 +279,40 @@ class Follower {
       const bool moved = eq_.move(change) > 1e-10;
       const bool jumped = it >= 0 && moved && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
       if (it < 0 || jumped) {
+        if (beyond) {
+          // Beside the branch point the tangent is nearly singular and Newton may miss its
+          // tolerance: shorter tries (not halves, which could meet the point again) until
+          // the step is the bracket's width; the bracket is then up to the nearest level
+          // seen past it.
+          step *= 0.37;
+          if (step > kBifurcationBracket * ds_) continue;
+          bifurcation(state, *beyond, beyond_count);
+          return true;
+        }
         step *= 0.5;
         if (step < ds_ / (1 << options_.max_halvings)) return false;
+        continue;
+      }
+      // A level whose stability differs from the last one's holds a bifurcation, or Newton
+      // jumped to another branch near one: approached by halving the increment (each try
+      // from the accepted equilibrium, so on its branch) until it is kBifurcationBracket
+      // of an increment, where accept() ends the path at it.
+      const std::optional<int> count = unstable_ ? eq_.unstable_directions(trial) : std::nullopt;
+      if (count && *count != *unstable_ && step > kBifurcationBracket * ds_) {
+        beyond = trial;
+        beyond_count = *count;
+        step *= 0.5;
         continue;
       }
       out_.iterations += it;
       const State from = state;
       state = trial;
       last_step = change;
-      if (!accept(from, state, 0, true)) return true;
+      const Between at_load = [&](double f, State& x) {
+        x = {from.z, from.s + f * (state.s - from.s)};
+        return newton_at(x, nullptr) >= 0;
+      };
+      if (!accept(from, state, 0, &at_load, count)) return true;
       step = std::min(ds_, 2.0 * step);
     }
     reached(state);
@@ -287,8 +362,8 @@ class Follower {
   /// Arc-length continuation from `state` in the direction `forward` (a change of z)
   /// until the path reaches the full load or ends.
   void continuation(State state, const Vector& forward) {
+    if (!out_.continuation) out_.stepping_stopped = state.s;
     out_.continuation = true;
-    out_.stepping_stopped = state.s;
     Tangent tangent;
     if (!tangent_at(state, forward, tangent)) {
       stall(state.s);
@@ -326,7 +401,12 @@ class Follower {
         }
       }
       ++out_.arc_steps;
-      if (!accept(state, next, limit_between(tangent.rate, ahead.rate))) return;
+      const Between along = [&](double f, State& x) {
+        int iterations = 0;
+        Tangent unused;
+        return arc_step(state, tangent, f * len, x, iterations, unused);
+      };
+      if (!accept(state, next, limit_between(tangent.rate, ahead.rate), &along)) return;
       if (std::isnan(out_.limit) && tangent.rate > 0.0 && ahead.rate <= 0.0)
         out_.limit = locate_limit(state, tangent, len, next.s, ahead.rate);
       // The next length: towards kTargetIterations corrector iterations (at most doubled
@@ -387,6 +467,9 @@ std::string failure_message(const Trace& t, const Continuation& options) {
            (std::abs(k) == 1 ? "" : "s") + " without a limit point, so another equilibrium path branches off there "
            "(the ring buckles) and the one followed is " + (k > 0 ? "unstable" : "not the only one") +
            " beyond it; [buckling] estimates where";
+      if (std::abs(k) >= 2)
+        m += "; it loses " + std::to_string(std::abs(k)) + " at once, as a symmetric ring does whose buckled shape may "
+             "turn freely: a small load that selects the shape (an imperfection) lets the path follow one";
       break;
     }
     case Trace::End::reached: m += "reached the full load"; break;

@@ -25,7 +25,9 @@
 //   falsi (Illinois) on ds/dtau over the arc step that contains it, to 1e-6 of the step.
 // - **Self-contact** is the model's hook (Equilibrium::accept), called for every
 //   accepted equilibrium with the one before it: contact ends the path, as a result
-//   the caller reports.
+//   the caller reports. A model that measures its clearance (Equilibrium::clearance) has
+//   the touch located by bisection within the step (to 1e-6 of it), the touching
+//   equilibrium being the path's last.
 // - **A bifurcation** ends the path where the model says how many directions its
 //   equilibria are unstable in (Equilibrium::unstable_directions, the inertia of its
 //   tangent on the constraints' tangent space): a change of that count that no limit
@@ -33,8 +35,16 @@
 //   is a branch point, where the path this driver follows turns unstable while another
 //   leaves it (a perfect ring buckling; a double crossing, as under uniform follower
 //   pressure, changes it by two, which a determinant's sign would miss). On the load-
-//   stepping part it is located by bisection of the load factor to 1e-6 of the step; on
-//   the arc it is bracketed by the step.
+//   stepping part it is approached by halving the increment, always from the last
+//   accepted equilibrium (so that a Newton that jumped to another branch near it is not
+//   taken for it), to 1e-6 of the increment; on the arc it is bracketed by the step.
+// - **Branch switching** (Continuation::branch_switch): at a bifurcation the path leaves
+//   the one it followed along the model's critical direction (Equilibrium::
+//   critical_direction, the tangent's eigenvector of least eigenvalue at the bracket's
+//   lower end): an arc step of a tenth of the model's basin with that direction as its
+//   predictor, whose corrector must land on the branch (its chord at least half along
+//   the direction), then arc-length continuation on the branch as above. At most four
+//   switches; a switch that does not land ends the path at the bifurcation.
 //
 // A Newton solve (a load level or an arc step) fails after 25 iterations, on a
 // non-finite value or a failed factorization, or when its iterate leaves the basin of
@@ -55,6 +65,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace paths {
 
@@ -104,6 +115,20 @@ class Equilibrium {
     (void)x;
     return std::nullopt;
   }
+  /// How far the ring at x is from touching itself (m; negative: it overlaps), for the
+  /// driver to locate the touch within a step. nullopt (the default): the touch is where
+  /// accept() says it is.
+  virtual std::optional<double> clearance(const State& x) {
+    (void)x;
+    return std::nullopt;
+  }
+  /// A direction dz (size() values; multipliers may be zero) in which the tangent at x is
+  /// least stable: the eigenvector of the least eigenvalue of dR/du on the constraints'
+  /// tangent space. nullopt (the default): no branch switching.
+  virtual std::optional<Vector> critical_direction(const State& x) {
+    (void)x;
+    return std::nullopt;
+  }
 };
 
 /// The policy knobs.
@@ -112,6 +137,7 @@ struct Continuation {
   bool from_start = false;   ///< arc-length continuation from rest (no load stepping)
   int max_arc_steps = 2000;  ///< arc steps before the path is declared not to come back
   int max_halvings = 10;     ///< a load increment halved this often hands over to the arc
+  bool branch_switch = false;  ///< at a bifurcation, leave onto the branch (the header)
 };
 
 /// How a path ended and where.
@@ -131,6 +157,7 @@ struct Trace {
   /// the unstable directions before and after it.
   double bifurcation_low = 0.0, bifurcation_high = 0.0;
   int unstable_before = 0, unstable_after = 0;
+  std::vector<double> branch_points;  ///< load factors where the path switched onto a branch
 };
 
 /// Follows the path of `eq` from `rest` (an equilibrium at s = 0) to the full load

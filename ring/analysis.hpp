@@ -36,6 +36,10 @@ struct StaticOptions {
   Loads loads;                         ///< point loads, pressure, gravity
   int steps = 20;                      ///< load increments
   std::vector<double> record;          ///< degrees, points reported
+  /// The equilibrium path from rest as the result: every accepted equilibrium, branch
+  /// switching at a bifurcation (onto the least stable direction), and the ring touching
+  /// itself as an end that is a result, not a failure.
+  bool path = false;
 };
 
 /// Linear buckling about the undeformed ring ([buckling]): the load factors lambda and

@@ -78,6 +78,15 @@ struct PointDisplacement {
   double ux = 0.0, uy = 0.0;  ///< m
 };
 
+/// One accepted equilibrium of a static path (static.path = true).
+struct PathPoint {
+  double load_factor = 0.0;                      ///< s: the loads are s times those given
+  std::vector<PointDisplacement> displacements;  ///< at the recorded points
+  /// (largest - smallest distance between opposite nodes) / R: 0 on the circle, 2 when
+  /// opposite sides meet along a diameter
+  double ovalisation = 0.0;
+};
+
 /// Nonlinear static equilibrium.
 struct StaticResult {
   std::string solver;                            ///< "multibody", "fem", "lumped"
@@ -88,6 +97,13 @@ struct StaticResult {
   int newton_iterations = 0;
   /// Deformed shape at every node (for figures), ring-centred frame, m.
   std::vector<double> node_x, node_y;
+  /// static.path = true: every accepted equilibrium from rest, the load factors where the
+  /// path switched onto a branch, and how it ended: at the full load, or where the ring
+  /// touched itself (a result: the equilibrium above is the last one before the touch).
+  std::vector<PathPoint> path;
+  std::vector<double> branch_points;
+  std::string end = "full load";  ///< "full load" or "contact: <where>"
+  double end_load = 1.0;          ///< load factor where the path ended
 };
 
 /// Time history of a forced response; one entry per accepted step (t = 0 first).

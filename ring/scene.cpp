@@ -569,7 +569,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   }
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
-    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record"});
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path"});
     StaticOptions o;
     o.loads = read_loads(r, *t, sec);
     // A dead load has an equilibrium only when nothing is left to move rigidly (gravity may
@@ -583,6 +583,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
                        std::to_string(rigid) + " rigid modes)");
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
     o.record = read_record(r, *t, sec);
+    o.path = r.boolean(*t, sec, "path", false);
     s.statics = o;
     s.static_request = read_request(r, *t, sec, schema, &SolverSchema::statics);
   }
