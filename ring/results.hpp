@@ -82,8 +82,8 @@ struct PointDisplacement {
 struct PathPoint {
   double load_factor = 0.0;                      ///< s: the loads are s times those given
   std::vector<PointDisplacement> displacements;  ///< at the recorded points
-  /// (largest - smallest distance between opposite nodes) / R: 0 on the circle, 2 when
-  /// opposite sides meet along a diameter
+  /// (largest - smallest distance between opposite nodes) / R: 0 on the circle, about
+  /// 2.7 for the inextensible ring flattened until its sides touch (its length is 2 pi R)
   double ovalisation = 0.0;
 };
 

@@ -143,3 +143,63 @@ TEST(MultibodyBuckling, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
 }
 
 }  // namespace
+
+namespace {
+
+ring::StaticOptions collapse(double squeeze) {
+  ring::StaticOptions st;
+  st.loads.pressure = {6.0 * held_ring().EI() / std::pow(held_ring().radius, 3), Kind::follower};
+  st.loads.points = {{0.0, {-squeeze, 0.0}}, {180.0, {squeeze, 0.0}}};
+  st.path = true;
+  return st;
+}
+
+// The path to contact (static.path): a ring under a follower pressure of 6 EI/R^3 with a
+// small squeeze that selects the buckled shape's orientation (an imperfection: without it
+// the pair of n = 2 directions is lost at once and the shape may turn freely on a pin and
+// a roller). The path passes the buckling load and ends, as a result, where opposite sides
+// come within the section depth: the located touch's clearance is zero to the bisection's
+// 1e-6 of a step, and the contact load converges at the chain's order 2 (fitted over
+// n = 40, 80, 160: within 0.3 of 2). Its value, p R^3 / EI = 5.21 for a squeeze of 1e-3 p R
+// at a depth of R / 83, lies below the 5.247 of the centrelines' touch of the perfect thin
+// ring (Flaherty, Keller & Rubinow 1972), as the touch at a clearance of one depth must.
+TEST(MultibodyBuckling, ThePathToContactEndsAsAResultAndConvergesAtSecondOrder) {
+  const ring::RingSpec spec = held_ring();
+  std::vector<double> end;
+  for (int n : {40, 80, 160}) {
+    ring::MultibodyOptions o;
+    o.n = n;
+    o.method = ring::MultibodyOptions::Method::dense;
+    const ring::StaticResult r = multibody::solve_static(spec, o, collapse(100.0));
+    ASSERT_EQ(r.end.rfind("contact", 0), 0u) << r.end;
+    EXPECT_NE(r.end.find("0.12"), std::string::npos) << r.end;  // the located touch: one depth apart
+    ASSERT_GT(r.path.size(), 5u);
+    EXPECT_EQ(r.path.front().load_factor, 0.0);
+    EXPECT_DOUBLE_EQ(r.path.back().load_factor, r.end_load);
+    EXPECT_GT(r.path.back().ovalisation, 1.5);  // opposite sides nearly meet: about 2 - 2 depth / R
+    end.push_back(r.end_load * 6.0);
+  }
+  const double order = std::log2((end[1] - end[0]) / (end[2] - end[1]));
+  EXPECT_NEAR(order, 2.0, 0.3) << end[0] << " " << end[1] << " " << end[2];
+  const double limit = end[2] + (end[2] - end[1]) / 3.0;  // Richardson, order 2
+  EXPECT_GT(limit, 3.0);
+  EXPECT_LT(limit, 5.247);
+}
+
+// A simple bifurcation (dead pressure: the out-of-phase shape alone) is passed by branch
+// switching: the path leaves at the critical load the chain's linear buckling gives (to
+// the bracket, 1e-4) and goes on to the touch.
+TEST(MultibodyBuckling, ThePathSwitchesOntoTheBranchAtASimpleBifurcation) {
+  const ring::RingSpec spec = held_ring();
+  ring::MultibodyOptions o;
+  o.n = 40;
+  ring::StaticOptions st;
+  st.loads.pressure = {1.5 * multibody::compute_buckling(spec, o, pressure(Kind::dead)).factors[0], Kind::dead};
+  st.path = true;
+  const ring::StaticResult r = multibody::solve_static(spec, o, st);
+  ASSERT_EQ(r.branch_points.size(), 1u) << r.end;
+  EXPECT_NEAR(r.branch_points[0], 1.0 / 1.5, 1e-4);
+  EXPECT_EQ(r.end.rfind("contact", 0), 0u) << r.end;
+}
+
+}  // namespace
