@@ -88,7 +88,9 @@ SolverEntry multibody_entry() {
   // holds it within [1, 1.5] of the measured peak). Measured: dense modes 49 n^2 bytes
   // (LAPACK's n x n pencil and workspace); O(n) modes n (360 + 30 count) (the band
   // factors and the Lanczos basis of up to 4 count + 60 vectors); nonlinear: dense
-  // response 42-47 n^2, dense statics 21 n^2, O(n) response 1.54-1.64 KB (newmark, the
+  // response 42-47 n^2, dense statics 21 n^2 (50-56 n^2 since each accepted step counts the
+  // tangent's unstable directions: T, the kernel basis Z, Z^T T Z and the eigensolver's
+  // workspace; n = 800, 400), O(n) response 1.54-1.64 KB (newmark, the
   // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 1.00-1.02 KB per
   // segment (n = 4 10^4, 10^5: the continuation driver's states, tangent and bordered
   // solve; 0.83-0.84 KB with plain load stepping). Used: those with 3-20 % to spare.
@@ -101,7 +103,7 @@ SolverEntry multibody_entry() {
                  : (s.ring.paper_terms_only() ? 52.0 : 74.0) * n * n;  // terms: +21.5 n^2 measured at n = 1500
     double bytes = 0.0;
     if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * n * n);
-    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : 25.0 * n * n);
+    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : 60.0 * n * n);
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) { multibody::check_modes(s.ring, s.multibody); };
