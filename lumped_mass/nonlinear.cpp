@@ -4,6 +4,7 @@
 #include "lumped_mass/checks.hpp"
 #include "lumped_mass/loads.hpp"
 #include "lumped_mass/model.hpp"
+#include "lumped_mass/stability.hpp"
 #include "lumped_mass/terms.hpp"
 
 #include <Eigen/Dense>
@@ -134,8 +135,8 @@ namespace {
 /// is full once a pressure or gravity acts).
 class ChainStatics : public paths::Equilibrium {
  public:
-  ChainStatics(const Chain& c, const ChainLoads& loads, double scale, double radius)
-      : c_(c), L_(loads), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius) {}
+  ChainStatics(const Chain& c, const ChainLoads& loads, double scale, double radius, InertiaRoute route)
+      : c_(c), L_(loads), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius), route_(route) {}
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -176,9 +177,19 @@ class ChainStatics : public paths::Equilibrium {
     }
     return turn / 0.5;
   }
-  /// No hinge moved by more than 1e-12 R, and the links hold to 1e-10 R.
-  bool converged(const paths::State& s, const paths::Vector& dz, int) override {
-    return dz.head(N_).cwiseAbs().maxCoeff() <= 1e-12 * radius_ &&
+  /// No hinge moved by more than 1e-12 R, or (from the third iteration) the correction,
+  /// below 1e-9 R, did not shrink: Newton is at the rounding floor of a nearly singular
+  /// tangent. Near a bifurcation the residual's rounding (eps times the link forces) is
+  /// amplified along the buckling mode by the inverse of its eigenvalue: within 1e-6 of the
+  /// critical load at n = 40 the corrections wander between 2e-12 and 2e-10 R without
+  /// converging (measured), and the bifurcation's bisection could not get closer. Regular
+  /// Newton contracts quadratically down to 1e-12 R and never stalls above it. And the links
+  /// hold to 1e-10 R.
+  bool converged(const paths::State& s, const paths::Vector& dz, int iteration) override {
+    const double step = dz.head(N_).cwiseAbs().maxCoeff();
+    const bool stalled = iteration >= 3 && step >= last_step_ && step <= 1e-9 * radius_;
+    last_step_ = step;
+    return (step <= 1e-12 * radius_ || stalled) &&
            constraints(c_, s.z.head(N_)).head(c_.n).cwiseAbs().maxCoeff() <= 1e-10 * radius_;
   }
   std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
@@ -186,19 +197,26 @@ class ChainStatics : public paths::Equilibrium {
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
   }
+  /// The inertia of the tangent on the constraints' tangent space (stability.hpp): dense
+  /// O(n^3) up to n = 200, O(n) frontal LDL^T of the KKT matrix up to n = 10^4, none above.
+  std::optional<int> unstable_directions(const paths::State& s) override {
+    return lumped::unstable_directions(c_, L_, s.z.head(N_), s.z.tail(S_ - N_) * scale_, s.s, scale_, route_);
+  }
 
  private:
   const Chain& c_;
   const ChainLoads& L_;
   const int N_, S_;
   const double scale_, radius_;
+  const InertiaRoute route_;
+  double last_step_ = INFINITY;  ///< the Newton correction before (converged's memory)
   Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
 };
 
 }  // namespace
 
 StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedOptions& options,
-                                 const ring::StaticOptions& statics) {
+                                 const ring::StaticOptions& statics, InertiaRoute route) {
   const auto t0 = std::chrono::steady_clock::now();
   check_static(spec, options, statics);
   const Chain c = make_chain(spec, options);
@@ -207,7 +225,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   const int N = 2 * c.n, R = c.rows();
   const ChainLoads loads(statics.loads, c.rest, c.l, mass_matrix(c), at);
   const double scale = spec.EI() / (c.l * c.l * c.l);
-  ChainStatics eq(c, loads, scale, spec.radius);
+  ChainStatics eq(c, loads, scale, spec.radius, route);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
   rest.z.head(N) = c.rest;
   const paths::Continuation policy{statics.steps};

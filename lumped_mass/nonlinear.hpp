@@ -81,8 +81,15 @@ struct StaticDetail {
   ring::StaticResult result;
   std::array<double, 2> ground_force{0.0, 0.0};
 };
+/// How the statics count an equilibrium's unstable directions for the continuation
+/// driver's bifurcation test (stability.hpp): automatic (dense up to n = 200, an O(n)
+/// frontal LDL^T up to n = 10^4, none above), or one route forced (for the tests that
+/// compare them).
+enum class InertiaRoute { automatic, dense, frontal };
+
 StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedOptions& options,
-                                 const ring::StaticOptions& statics);
+                                 const ring::StaticOptions& statics,
+                                 InertiaRoute route = InertiaRoute::automatic);
 
 /// Forced response from rest in the undeformed state (see above). Requires the `chain`
 /// variant, a pin (or terms that hold every rigid motion), load and record points on hinges.

@@ -1,0 +1,60 @@
+#include "lumped_mass/stability.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "modal/buckling.hpp"
+#include "modal/inertia.hpp"
+
+namespace lumped {
+
+namespace {
+
+using Sparse = Eigen::SparseMatrix<double>;
+
+std::optional<int> dense_count(const Chain& c, const Sparse& T, const Eigen::VectorXd& x) {
+  Triplets g;
+  jacobian(c, x, 0, 1.0, false, g);
+  Sparse G(c.rows(), 2 * c.n);
+  G.setFromTriplets(g.begin(), g.end());
+  return modal::unstable_directions(Eigen::MatrixXd(T), Eigen::MatrixXd(G));
+}
+
+std::optional<int> frontal_count(const Chain& c, const Triplets& tangent_hess, const Eigen::VectorXd& x, double scale) {
+  const int n = c.n, N = 2 * n, R = c.rows();
+  Triplets t = tangent_hess;
+  jacobian(c, x, N, scale, true, t);
+  jacobian(c, x, N, scale, false, t);
+  Sparse K(N + R, N + R);
+  K.setFromTriplets(t.begin(), t.end());
+  // Hinge j with its link j (to hinge j + 1); the last two hinges close the ring onto the
+  // first ones (the corners of the band), so they wait in the border with the supports.
+  std::vector<std::vector<int>> groups;
+  std::vector<int> border;
+  for (int j = 0; j < n; ++j) {
+    std::vector<int> g{2 * j, 2 * j + 1, N + j};
+    if (j < n - 2) groups.push_back(g);
+    else border.insert(border.end(), g.begin(), g.end());
+  }
+  for (int r = n; r < R; ++r) border.push_back(N + r);
+  const std::optional<modal::Inertia> in = modal::frontal_inertia(K, groups, border);
+  if (!in || in->zero != 0 || in->negative < R || in->positive < R) return std::nullopt;
+  return static_cast<int>(in->negative - R);
+}
+
+}  // namespace
+
+std::optional<int> unstable_directions(const Chain& c, const ChainLoads& loads, const Eigen::VectorXd& x,
+                                       const Eigen::VectorXd& lambda, double s, double scale, InertiaRoute route) {
+  if (route == InertiaRoute::automatic && c.n > kMaxInertiaHinges) return std::nullopt;
+  const Springs sp = tangent(c, loads, x, lambda, s, 1.0);
+  const bool dense = route == InertiaRoute::dense ||
+                     (route == InertiaRoute::automatic && 2 * c.n <= kDenseInertiaUnknowns);
+  if (!dense) return frontal_count(c, sp.hess, x, scale);
+  Sparse T(2 * c.n, 2 * c.n);
+  T.setFromTriplets(sp.hess.begin(), sp.hess.end());
+  return dense_count(c, T, x);
+}
+
+}  // namespace lumped
