@@ -50,6 +50,14 @@ void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
                                 "[\"multibody\"])");
 }
 
+/// modes.preload = "static" (frequencies under load) is the multibody chain's so far.
+void refuse_preload(const std::string& name, const ring::Scene& s) {
+  if (s.modes.preload_static)
+    throw std::invalid_argument(name + ": modes.preload = \"static\" (the modes about the loaded equilibrium) is not "
+                                "offered by this solver yet; the multibody chain offers it (modes.solvers = "
+                                "[\"multibody\"], no table.reference)");
+}
+
 /// Chains and frames: n = 40, 80, ..., 2560 (from enough pieces for the modes asked).
 std::vector<std::pair<std::string, ring::Scene>> doubling_sweep(const SolverEntry& e, const ring::Scene& s,
                                                                 int modes) {
@@ -106,11 +114,17 @@ SolverEntry multibody_entry() {
     if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : 60.0 * n * n);
     return bytes;
   };
-  e.check_modes = [](const ring::Scene& s) { multibody::check_modes(s.ring, s.multibody); };
+  e.check_modes = [](const ring::Scene& s) {
+    if (s.modes.preload_static) multibody::check_preloaded_modes(s.ring, s.multibody, *s.statics);
+    else multibody::check_modes(s.ring, s.multibody);
+  };
   e.check_static = [](const ring::Scene& s) { multibody::check_static(s.ring, s.multibody, *s.statics); };
   e.check_response = [](const ring::Scene& s) { multibody::check_response(s.ring, s.multibody, *s.response); };
   e.modes = [](const ring::Scene& s, int count) {
-    return as_input_error(s, "multibody", [&] { return multibody::compute_modes(s.ring, s.multibody, count); });
+    return as_input_error(s, "multibody", [&] {
+      return s.modes.preload_static ? multibody::compute_modes_under_load(s.ring, s.multibody, *s.statics, count)
+                                    : multibody::compute_modes(s.ring, s.multibody, count);
+    });
   };
   e.statics = [](const ring::Scene& s) {
     return as_input_error(s, "static", [&] { return multibody::solve_static(s.ring, s.multibody, *s.statics); });
@@ -191,7 +205,10 @@ SolverEntry lumped_entry() {
     }
     return 0.0;
   };
-  e.check_modes = [](const ring::Scene& s) { lumped::check_modes(s.ring, s.lumped); };
+  e.check_modes = [](const ring::Scene& s) {
+    refuse_preload("lumped", s);
+    lumped::check_modes(s.ring, s.lumped);
+  };
   e.check_static = [](const ring::Scene& s) {
     refuse_path("lumped", *s.statics);
     lumped::check_static(s.ring, s.lumped, *s.statics);
@@ -261,7 +278,10 @@ SolverEntry fem_entry() {
   // The deal.II plug-in and its libraries: peak RSS of the smallest FE run 162.7 MiB, the
   // process without it 7.8-8.8 MiB (compare/guard.cpp).
   e.code_bytes = 160.0 * (1 << 20);
-  e.check_modes = [](const ring::Scene& s) { fem::check_modes(s.ring, s.fem); };
+  e.check_modes = [](const ring::Scene& s) {
+    refuse_preload("fem", s);
+    fem::check_modes(s.ring, s.fem);
+  };
   e.check_static = [](const ring::Scene& s) {
     refuse_path("fem", *s.statics);
     fem::check_static(s.ring, s.fem, *s.statics);
@@ -341,6 +361,7 @@ SolverEntry calculix_entry() {
     return calculix::node_count(s.calculix) * (2000.0 + 200.0 * std::max(count, 1));
   };
   e.check_modes = [](const ring::Scene& s) {
+    refuse_preload("calculix", s);
     with_scene_file(s, [&] {
       calculix::check_deck(s.ring, s.calculix);
       calculix::require_ccx();

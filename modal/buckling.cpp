@@ -33,31 +33,26 @@ CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixX
   return out;
 }
 
-namespace {
-
-/// An orthonormal basis of ker G (N x (N - rank)): the trailing columns of Q in G^T = Q R.
-Eigen::MatrixXd kernel(const Eigen::MatrixXd& G, Eigen::Index N) {
+Eigen::MatrixXd kernel_basis(const Eigen::MatrixXd& G, Eigen::Index N) {
   if (G.rows() == 0) return Eigen::MatrixXd::Identity(N, N);
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(G.transpose());
   return Eigen::MatrixXd(qr.householderQ()).rightCols(N - qr.rank());
 }
 
-}  // namespace
-
 int unstable_directions(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G) {
-  const Eigen::MatrixXd Z = kernel(G, T.rows());
+  const Eigen::MatrixXd Z = kernel_basis(G, T.rows());
   const Eigen::MatrixXd reduced = Z.transpose() * T * Z;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (reduced + reduced.transpose()),
                                                            Eigen::EigenvaluesOnly);
   const Eigen::VectorXd& v = eig.eigenvalues();
-  const double floor = 1e-10 * v.cwiseAbs().maxCoeff();
+  const double floor = 1e-12 * v.cwiseAbs().maxCoeff();
   int negative = 0;
   for (Eigen::Index i = 0; i < v.size(); ++i) negative += v[i] < -floor ? 1 : 0;
   return negative;
 }
 
 LeastStable least_stable(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G) {
-  const Eigen::MatrixXd Z = kernel(G, T.rows());
+  const Eigen::MatrixXd Z = kernel_basis(G, T.rows());
   const Eigen::MatrixXd reduced = Z.transpose() * T * Z;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (reduced + reduced.transpose()));
   return {Z * eig.eigenvectors().col(0), eig.eigenvalues()[0]};

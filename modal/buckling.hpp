@@ -28,12 +28,16 @@ struct CriticalFactors {
 CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count,
                                  const std::string& who);
 
+/// An orthonormal basis of ker G (N x (N - rank G); the identity without rows): the
+/// trailing columns of Q in the column-pivoted Householder QR G^T = Q R. O(N^2 C).
+Eigen::MatrixXd kernel_basis(const Eigen::MatrixXd& G, Eigen::Index N);
+
 /// How many independent directions the equilibrium with tangent stiffness T (N x N) under
 /// constraints with Jacobian G (C x N) is unstable in: the negative eigenvalues of Z^T T Z,
-/// Z an orthonormal basis of ker G (Householder QR of G^T; rank-revealing), below -1e-10
-/// of the largest |eigenvalue|: the rounding of the assembled tangent is ~eps (R/l)^4 of it
-/// (4e-11 at n = 160 for the chain), the lowest stable eigenvalue of a ring ~(l/R)^4 of it
-/// (1.6e-9 at n = 1000). For the continuation driver's bifurcation test
+/// Z an orthonormal basis of ker G (Householder QR of G^T; rank-revealing), below -1e-12
+/// of the largest |eigenvalue| (rounding is ~1e-16 of it; a crossing eigenvalue moves with
+/// the load at ~(l/R)^4 of it, so a count is late by ~1e-12 (R/l)^4 in the load factor:
+/// 3e-7 at n = 160). For the continuation driver's bifurcation test
 /// (paths/continuation.hpp). Dense: O(N^3).
 int unstable_directions(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G);
 

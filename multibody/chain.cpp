@@ -253,18 +253,18 @@ double Chain::spring_energy(const Vector& q) const {
   return 0.5 * k_ * hinge_rotations(q).squaredNorm();
 }
 
-Eigen::Matrix2Xd Chain::rest_displacements(const Vector& dq) const {
+Eigen::Matrix2Xd Chain::displacements_at(const Vector& q, const Vector& dq) const {
   Eigen::Matrix2Xd u(2, n_);
   Eigen::Vector2d p = free_ ? Eigen::Vector2d(dq(n_), dq(n_ + 1)) : Eigen::Vector2d::Zero();
   for (int j = 0; j < n_; ++j) {
     u.col(j) = p;
-    p += l_ * dq(j) * Eigen::Vector2d(-std::sin(phi0_[j]), std::cos(phi0_[j]));
+    p += l_ * dq(j) * Eigen::Vector2d(-std::sin(q[j]), std::cos(q[j]));
   }
   return u;
 }
 
-ring::ModeShape Chain::rest_shape(const Vector& dq) const {
-  const Eigen::Matrix2Xd u = rest_displacements(dq);
+ring::ModeShape Chain::shape_at(const Vector& q, const Vector& dq) const {
+  const Eigen::Matrix2Xd u = displacements_at(q, dq);
   std::vector<double> ux(n_), uy(n_);
   for (int j = 0; j < n_; ++j) {
     ux[j] = u(0, j);

@@ -102,9 +102,13 @@ class Chain {
   Eigen::Matrix2Xd midpoints(const Vector& q) const;
   /// Hinge displacements of a small change dq about rest, to first order (column k =
   /// hinge k): dp_k = dp_0 + l sum_{j<k} e'(phi0_j) dq_j. O(n).
-  Eigen::Matrix2Xd rest_displacements(const Vector& dq) const;
+  Eigen::Matrix2Xd rest_displacements(const Vector& dq) const { return displacements_at(q0(), dq); }
   /// The same, sampled at the common stations (a mode shape, ring/results.hpp). O(n).
-  ring::ModeShape rest_shape(const Vector& dq) const;
+  ring::ModeShape rest_shape(const Vector& dq) const { return shape_at(q0(), dq); }
+  /// Hinge displacements of a small change dq about the state q, to first order, and
+  /// their sampling at the common stations (mode shapes about a deformed state). O(n).
+  Eigen::Matrix2Xd displacements_at(const Vector& q, const Vector& dq) const;
+  ring::ModeShape shape_at(const Vector& q, const Vector& dq) const;
   /// d p_k / d q (2 x dofs()). O(n).
   Matrix hinge_jacobian(const Vector& q, int k) const;
 

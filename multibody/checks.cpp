@@ -55,6 +55,18 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
         "otherwise the ring is free to turn about the pin");
 }
 
+void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                           const ring::StaticOptions& statics) {
+  check_modes(spec, options);
+  check_static(spec, options, statics);
+  if (options.method == ring::MultibodyOptions::Method::sparse)
+    throw std::invalid_argument("modes.preload = \"static\" is computed on the dense path: set multibody.method = "
+                                "\"dense\" or \"auto\"");
+  if (!spec.masses.empty())
+    throw std::invalid_argument("modes.preload = \"static\" with point masses (masses) is not offered yet: their mass "
+                                "about the deformed chain is not written");
+}
+
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
   ring::refuse_timoshenko(spec, "multibody");

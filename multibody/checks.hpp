@@ -15,6 +15,10 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 /// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1.
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
+/// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"),
+/// no point masses (their mass about a deformed state is not written yet).
+void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                           const ring::StaticOptions& statics);
 /// Forced response: a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
 /// none with the energy-momentum integrator; the integrator "newmark", "generalized-alpha"
 /// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here).

@@ -111,4 +111,17 @@ class StaticEquilibrium : public paths::Equilibrium {
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics);
 
+/// Frequencies under load (modes.preload = "static"): the `count` lowest modes about the
+/// equilibrium of `statics` at its full load, on the dense path: the tangent T there (the
+/// springs, the terms, the load stiffness and the constraints' multipliers: the prestress),
+/// the mass M(q) of the deformed chain, both on the constraints' tangent space at q, solved
+/// by the shifted inverse of modes.hpp; shapes are the hinges' displacements about the
+/// deformed state at the common stations. Under a uniform pressure on the inextensible
+/// chain the equilibrium is the circle and T = K_0 + s K_1 (buckling.hpp): each omega^2
+/// falls to zero at its critical load. Cost: the statics, then O(n^3).
+/// Throws std::invalid_argument (check_preloaded_modes) and ring::NumericalError when the
+/// path does not reach the full load (a bifurcation, a limit point) or omega^2 <= 0.
+ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                                           const ring::StaticOptions& statics, int count);
+
 }  // namespace multibody

@@ -502,8 +502,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
 
   // [modes]: solvers default to those whose section the scene has (multibody if none).
   if (const toml::table* t = r.table(root, "", "modes")) {
-    r.known_keys(*t, "modes", {"count", "solvers"});
+    r.known_keys(*t, "modes", {"count", "solvers", "preload"});
     s.modes.count = static_cast<int>(r.integer(*t, "modes", "count", 23, 1, 100000));
+    s.modes.preload_static = r.choice(*t, "modes", "preload", "none", {"none", "static"}) == "static";
     s.modes.solvers = r.strings(*t, "modes", "solvers", schema.names());
     if (t->contains("solvers") && s.modes.solvers.empty())
       r.fail("modes.solvers", t->get("solvers"), "expected at least one solver");
@@ -622,6 +623,10 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
              "gravity on a ring that is free to move rigidly has no equilibrium and no meaning here: add a pin, a "
              "clamp, springs or a foundation");
   }
+
+  if (s.modes.preload_static && !s.statics)
+    r.fail("modes.preload", root.at_path("modes.preload").node(),
+           "\"static\" takes the equilibrium of [static], and the scene has no [static] section");
 
   // Cross checks: every solver used must have the modes asked for, and nodes at the points.
   for (const auto& m : schema.solvers) {

@@ -19,6 +19,10 @@ namespace ring {
 struct ModesRequest {
   int count = 23;                     ///< elastic modes (rigid ones are counted apart)
   std::vector<std::string> solvers;   ///< subset of the known solvers (SceneSchema)
+  /// "static": the modes about the nonlinear static equilibrium of [static] at its full
+  /// load (its tangent stiffness, the prestress's geometric and the loads' own stiffness
+  /// included), the frequencies under load; false: about the unloaded ring.
+  bool preload_static = false;
 };
 
 /// A column of another code's results ([[table.import]]): frequencies from a CSV file

@@ -11,6 +11,7 @@
 
 #include "modal/buckling.hpp"
 #include "multibody/buckling.hpp"
+#include "multibody/modes.hpp"
 #include "multibody/statics.hpp"
 #include "ring/errors.hpp"
 #include "ring/closed_form.hpp"
@@ -200,6 +201,38 @@ TEST(MultibodyBuckling, ThePathSwitchesOntoTheBranchAtASimpleBifurcation) {
   ASSERT_EQ(r.branch_points.size(), 1u) << r.end;
   EXPECT_NEAR(r.branch_points[0], 1.0 / 1.5, 1e-4);
   EXPECT_EQ(r.end.rfind("contact", 0), 0u) << r.end;
+}
+
+}  // namespace
+
+namespace {
+
+// Frequencies under load (modes.preload = "static"): about the equilibrium of a follower
+// pressure f lambda_1 (the circle: the inextensible chain does not move) the tangent is
+// K_0 + f lambda_1 K_1 (multibody/buckling.hpp), so the lowest omega^2 falls from the
+// unloaded chain's (to the eigensolvers' 1e-10) to zero at the critical pressure: below
+// 1e-3 of its unloaded value at f = 0.999 (a linear fall leaves 1e-3; the mass couples the
+// shapes only weakly), and the line through f = 0.5 and 0.75 meets zero within 2 % of
+// f = 1 (the curvature the supports' rigid motion adds to the n = 2 pair: measured below).
+TEST(MultibodyBuckling, FrequenciesUnderLoadFallToZeroAtTheCriticalPressure) {
+  const ring::RingSpec spec = held_ring();
+  ring::MultibodyOptions o;
+  o.n = 40;
+  o.method = ring::MultibodyOptions::Method::dense;
+  const double critical = multibody::compute_buckling(spec, o, pressure(Kind::follower)).factors[0];
+  auto omega2 = [&](double f) {
+    ring::StaticOptions st;
+    st.loads.pressure = {f * critical, Kind::follower};
+    const double w = multibody::compute_modes_under_load(spec, o, st, 2).omega[0];
+    return w * w;
+  };
+  const double unloaded = std::pow(multibody::compute_modes(spec, o, 2).omega[0], 2);
+  EXPECT_NEAR(omega2(1e-9) / unloaded, 1.0, 1e-8);
+  EXPECT_LT(omega2(0.999) / unloaded, 1e-3);
+  const double a = omega2(0.5), b = omega2(0.75);
+  EXPECT_LT(b, a);
+  const double zero = 0.75 + b / (a - b) * 0.25;  // where the line through the two meets 0
+  EXPECT_NEAR(zero, 1.0, 0.02) << a / unloaded << " " << b / unloaded;
 }
 
 }  // namespace
