@@ -192,11 +192,38 @@ class ChainStatics : public paths::Equilibrium {
     return (step <= 1e-12 * radius_ || stalled) &&
            constraints(c_, s.z.head(N_)).head(c_.n).cwiseAbs().maxCoeff() <= 1e-10 * radius_;
   }
-  std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
+  /// Records `to` (and, first, `from`: rest) when recording, then the self-contact check.
+  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
+    if (recording_ && path_.empty()) path_.push_back(path_point(from.s, from.z.head(N_)));
+    if (recording_) path_.push_back(path_point(to.s, to.z.head(N_)));
     const Contact k = closest_nonadjacent(c_, to.z.head(N_));
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
   }
+  /// The closest approach of hinges at least the contact gap apart (accept's check) minus
+  /// the section depth, for the driver to locate the touch within a step: O(n) (the grid).
+  /// Infinite while no such pair is within one grid cell (max(depth, l)).
+  std::optional<double> clearance(const paths::State& s) override {
+    return closest_nonadjacent(c_, s.z.head(N_)).distance - c_.depth;
+  }
+  /// The tangent's least stable direction on ker G in the positions, multipliers zero
+  /// (stability.hpp): dense, O(n^3), up to n = 200; none above (no branch switching there:
+  /// the path ends at the bifurcation).
+  std::optional<paths::Vector> critical_direction(const paths::State& s) override {
+    const std::optional<Vec> d =
+        least_stable_direction(c_, L_, s.z.head(N_), s.z.tail(S_ - N_) * scale_, s.s, route_);
+    if (!d) return std::nullopt;
+    paths::Vector dz = paths::Vector::Zero(S_);
+    dz.head(N_) = *d;
+    return dz;
+  }
+  /// Records every accepted equilibrium (ring::PathPoint) at these hinges from now on.
+  void record_path(std::vector<int> hinges) {
+    record_ = std::move(hinges);
+    recording_ = true;
+  }
+  /// The recorded path, rest first.
+  const std::vector<ring::PathPoint>& path() const { return path_; }
   /// The inertia of the tangent on the constraints' tangent space (stability.hpp): dense
   /// O(n^3) up to n = 200, O(n) frontal LDL^T of the KKT matrix up to n = 10^4, none above.
   std::optional<int> unstable_directions(const paths::State& s) override {
@@ -211,6 +238,30 @@ class ChainStatics : public paths::Equilibrium {
   const InertiaRoute route_;
   double last_step_ = INFINITY;  ///< the Newton correction before (converged's memory)
   Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
+  std::vector<int> record_;  ///< the hinges a path point reports
+  bool recording_ = false;
+  std::vector<ring::PathPoint> path_;
+
+  /// The path point of the hinge positions x at load factor s: the recorded hinges'
+  /// displacements and the ovalisation (largest - smallest distance between opposite
+  /// hinges k and k + n/2) / rho, rho the circumradius: the multibody chain's definition
+  /// (multibody/statics.cpp, StaticEquilibrium::path_point).
+  ring::PathPoint path_point(double s, const Vec& x) const {
+    ring::PathPoint pt;
+    pt.load_factor = s;
+    for (int k : record_) {
+      const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
+      pt.displacements.push_back({c_.anchor_deg + 360.0 * k / c_.n, u.x(), u.y()});
+    }
+    double most = 0.0, least = INFINITY;
+    for (int k = 0; k < (c_.n + 1) / 2; ++k) {
+      const double d = (c_.at(x, k) - c_.at(x, k + c_.n / 2)).norm();
+      most = std::max(most, d);
+      least = std::min(least, d);
+    }
+    pt.ovalisation = (most - least) / c_.rho;
+    return pt;
+  }
 };
 
 }  // namespace
@@ -228,13 +279,26 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   ChainStatics eq(c, loads, scale, spec.radius, route);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
   rest.z.head(N) = c.rest;
-  const paths::Continuation policy{statics.steps};
+  // static.path: the path through bifurcations (branch switching) to the touch, which is a
+  // result; every other early end still fails.
+  paths::Continuation policy{statics.steps};
+  if (statics.path) {
+    policy.branch_switch = true;
+    eq.record_path(rec);
+  }
   const paths::Trace path = paths::follow(eq, rest, policy);
-  if (path.end != paths::Trace::End::reached)
+  const bool touched = statics.path && path.end == paths::Trace::End::contact;
+  if (path.end != paths::Trace::End::reached && !touched)
     throw ring::NumericalError("lumped statics: " + paths::failure_message(path, policy));
   const Vec x = path.state.z.head(N);
   StaticDetail detail;
   ring::StaticResult& out = detail.result;
+  if (statics.path) {
+    out.path = eq.path();
+    out.branch_points = path.branch_points;
+    out.end = touched ? "contact: " + path.contact : "full load";
+    out.end_load = touched ? path.end_load : 1.0;
+  }
   out.steps = path.steps;
   out.newton_iterations = path.iterations;
   for (std::size_t p = 0; p < rec.size(); ++p) {
