@@ -32,26 +32,50 @@ using Vec = Eigen::VectorXd;
 using Vec2 = Eigen::Vector2d;
 using Sparse = Eigen::SparseMatrix<double>;
 
-/// Smallest distance between hinges at least `gap` apart along the chain (uniform grid,
-/// O(n)); hinges closer than the section depth mean the ring touches itself.
+/// Distance from the point p to the segment [a, b]. O(1).
+double point_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+
+/// Distance between the segments [a, b] and [c, d]: 0 when they cross, else the least of
+/// the four endpoint-to-segment distances. O(1).
+double segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  auto cross = [](const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0.0;
+  return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
+}
+
+/// Smallest distance between the centre lines of links at least `gap` apart along the chain
+/// (link j runs from hinge j to hinge j + 1; gap = 2 + floor(2 depth / l), so that the
+/// undeformed chain is clear of the depth); links closer than the section depth mean the
+/// ring touches itself. Links, not hinges: with l above the depth, two links can cross while
+/// every hinge is still farther than the depth from the others (n = 40 on the paper's ring
+/// under ring-collapse.toml's loads: the hinges met at load factor 0.986, the links at
+/// 0.859). A uniform grid of cell l + depth over the links' midpoints: links closer than the
+/// depth have midpoints in neighbouring cells, so only those pairs are measured, O(n)
+/// expected; pairs not measured count as infinitely far.
 struct Contact {
   double distance = INFINITY;
-  int i = -1, j = -1;
+  int i = -1, j = -1;  ///< the links
 };
 
 Contact closest_nonadjacent(const Chain& c, const Vec& x) {
-  const int gap = std::max(2, static_cast<int>(std::ceil(2.0 * c.depth / c.l)) + 1);
-  const double cell = std::max(c.depth, c.l);
+  const int gap = 2 + static_cast<int>(std::floor(2.0 * c.depth / c.l));
+  const double cell = c.l + c.depth;
   std::unordered_map<long long, std::vector<int>> grid;
   auto key = [&](long long gx, long long gy) { return gx * 1000003LL + gy; };
+  auto mid = [&](int j) -> Vec2 { return 0.5 * (c.at(x, j) + c.at(x, j + 1)); };
   for (int j = 0; j < c.n; ++j) {
-    const Vec2 p = c.at(x, j);
+    const Vec2 p = mid(j);
     grid[key(std::floor(p.x() / cell), std::floor(p.y() / cell))].push_back(j);
   }
   Contact best;
   if (2 * gap > c.n) return best;
   for (int j = 0; j < c.n; ++j) {
-    const Vec2 p = c.at(x, j);
+    const Vec2 p = mid(j);
     const long long gx = std::floor(p.x() / cell), gy = std::floor(p.y() / cell);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
@@ -59,8 +83,8 @@ Contact closest_nonadjacent(const Chain& c, const Vec& x) {
         if (it == grid.end()) continue;
         for (int i : it->second) {
           const int sep = std::min((i - j + c.n) % c.n, (j - i + c.n) % c.n);
-          if (sep < gap) continue;
-          const double d = (c.at(x, i) - p).norm();
+          if (i <= j || sep < gap) continue;
+          const double d = segment_distance(c.at(x, j), c.at(x, j + 1), c.at(x, i), c.at(x, i + 1));
           if (d < best.distance) best = {d, j, i};
         }
       }
@@ -115,10 +139,10 @@ std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record
 }
 
 
-/// Where the ring touches itself: the two hinges and their distance.
+/// Where the ring touches itself: the two links and their distance.
 std::string contact_where(const Chain& c, const Contact& k) {
   std::ostringstream s;
-  s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
+  s << "links " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
   return s.str();
 }
 
@@ -200,9 +224,9 @@ class ChainStatics : public paths::Equilibrium {
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
   }
-  /// The closest approach of hinges at least the contact gap apart (accept's check) minus
+  /// The closest approach of links at least the contact gap apart (accept's check) minus
   /// the section depth, for the driver to locate the touch within a step: O(n) (the grid).
-  /// Infinite while no such pair is within one grid cell (max(depth, l)).
+  /// Infinite while no such pair has its midpoints in neighbouring cells (l + depth).
   std::optional<double> clearance(const paths::State& s) override {
     return closest_nonadjacent(c_, s.z.head(N_)).distance - c_.depth;
   }
