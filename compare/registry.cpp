@@ -42,12 +42,12 @@ bool runs(const ring::NonlinearRequest& q, const std::string& name) {
 }
 
 /// static.path (the equilibrium path with branch switching, contact as a result) is the
-/// multibody chain's so far.
+/// multibody and lumped chains' so far.
 void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
   if (statics.path)
     throw std::invalid_argument(name + ": static.path = true (the equilibrium path through bifurcations to contact) is "
-                                "not offered by this solver yet; the multibody chain offers it (static.solvers = "
-                                "[\"multibody\"])");
+                                "not offered by this solver yet; the multibody and lumped chains offer it (static.solvers = "
+                                "[\"multibody\", \"lumped\"])");
 }
 
 /// modes.preload = "static" (frequencies under load) is the multibody chain's so far.
@@ -210,7 +210,6 @@ SolverEntry lumped_entry() {
     lumped::check_modes(s.ring, s.lumped);
   };
   e.check_static = [](const ring::Scene& s) {
-    refuse_path("lumped", *s.statics);
     lumped::check_static(s.ring, s.lumped, *s.statics);
   };
   e.check_response = [](const ring::Scene& s) { lumped::check_response(s.ring, s.lumped, *s.response); };

@@ -32,26 +32,50 @@ using Vec = Eigen::VectorXd;
 using Vec2 = Eigen::Vector2d;
 using Sparse = Eigen::SparseMatrix<double>;
 
-/// Smallest distance between hinges at least `gap` apart along the chain (uniform grid,
-/// O(n)); hinges closer than the section depth mean the ring touches itself.
+/// Distance from the point p to the segment [a, b]. O(1).
+double point_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+
+/// Distance between the segments [a, b] and [c, d]: 0 when they cross, else the least of
+/// the four endpoint-to-segment distances. O(1).
+double segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  auto cross = [](const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0.0;
+  return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
+}
+
+/// Smallest distance between the centre lines of links at least `gap` apart along the chain
+/// (link j runs from hinge j to hinge j + 1; gap = 2 + floor(2 depth / l), so that the
+/// undeformed chain is clear of the depth); links closer than the section depth mean the
+/// ring touches itself. Links, not hinges: with l above the depth, two links can cross while
+/// every hinge is still farther than the depth from the others (n = 40 on the paper's ring
+/// under ring-collapse.toml's loads: the hinges met at load factor 0.986, the links at
+/// 0.859). A uniform grid of cell l + depth over the links' midpoints: links closer than the
+/// depth have midpoints in neighbouring cells, so only those pairs are measured, O(n)
+/// expected; pairs not measured count as infinitely far.
 struct Contact {
   double distance = INFINITY;
-  int i = -1, j = -1;
+  int i = -1, j = -1;  ///< the links
 };
 
 Contact closest_nonadjacent(const Chain& c, const Vec& x) {
-  const int gap = std::max(2, static_cast<int>(std::ceil(2.0 * c.depth / c.l)) + 1);
-  const double cell = std::max(c.depth, c.l);
+  const int gap = 2 + static_cast<int>(std::floor(2.0 * c.depth / c.l));
+  const double cell = c.l + c.depth;
   std::unordered_map<long long, std::vector<int>> grid;
   auto key = [&](long long gx, long long gy) { return gx * 1000003LL + gy; };
+  auto mid = [&](int j) -> Vec2 { return 0.5 * (c.at(x, j) + c.at(x, j + 1)); };
   for (int j = 0; j < c.n; ++j) {
-    const Vec2 p = c.at(x, j);
+    const Vec2 p = mid(j);
     grid[key(std::floor(p.x() / cell), std::floor(p.y() / cell))].push_back(j);
   }
   Contact best;
   if (2 * gap > c.n) return best;
   for (int j = 0; j < c.n; ++j) {
-    const Vec2 p = c.at(x, j);
+    const Vec2 p = mid(j);
     const long long gx = std::floor(p.x() / cell), gy = std::floor(p.y() / cell);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy) {
@@ -59,8 +83,8 @@ Contact closest_nonadjacent(const Chain& c, const Vec& x) {
         if (it == grid.end()) continue;
         for (int i : it->second) {
           const int sep = std::min((i - j + c.n) % c.n, (j - i + c.n) % c.n);
-          if (sep < gap) continue;
-          const double d = (c.at(x, i) - p).norm();
+          if (i <= j || sep < gap) continue;
+          const double d = segment_distance(c.at(x, j), c.at(x, j + 1), c.at(x, i), c.at(x, i + 1));
           if (d < best.distance) best = {d, j, i};
         }
       }
@@ -115,10 +139,10 @@ std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record
 }
 
 
-/// Where the ring touches itself: the two hinges and their distance.
+/// Where the ring touches itself: the two links and their distance.
 std::string contact_where(const Chain& c, const Contact& k) {
   std::ostringstream s;
-  s << "hinges " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
+  s << "links " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
   return s.str();
 }
 
@@ -192,11 +216,38 @@ class ChainStatics : public paths::Equilibrium {
     return (step <= 1e-12 * radius_ || stalled) &&
            constraints(c_, s.z.head(N_)).head(c_.n).cwiseAbs().maxCoeff() <= 1e-10 * radius_;
   }
-  std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
+  /// Records `to` (and, first, `from`: rest) when recording, then the self-contact check.
+  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
+    if (recording_ && path_.empty()) path_.push_back(path_point(from.s, from.z.head(N_)));
+    if (recording_) path_.push_back(path_point(to.s, to.z.head(N_)));
     const Contact k = closest_nonadjacent(c_, to.z.head(N_));
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
   }
+  /// The closest approach of links at least the contact gap apart (accept's check) minus
+  /// the section depth, for the driver to locate the touch within a step: O(n) (the grid).
+  /// Infinite while no such pair has its midpoints in neighbouring cells (l + depth).
+  std::optional<double> clearance(const paths::State& s) override {
+    return closest_nonadjacent(c_, s.z.head(N_)).distance - c_.depth;
+  }
+  /// The tangent's least stable direction on ker G in the positions, multipliers zero
+  /// (stability.hpp): dense, O(n^3), up to n = 200; none above (no branch switching there:
+  /// the path ends at the bifurcation).
+  std::optional<paths::Vector> critical_direction(const paths::State& s) override {
+    const std::optional<Vec> d =
+        least_stable_direction(c_, L_, s.z.head(N_), s.z.tail(S_ - N_) * scale_, s.s, route_);
+    if (!d) return std::nullopt;
+    paths::Vector dz = paths::Vector::Zero(S_);
+    dz.head(N_) = *d;
+    return dz;
+  }
+  /// Records every accepted equilibrium (ring::PathPoint) at these hinges from now on.
+  void record_path(std::vector<int> hinges) {
+    record_ = std::move(hinges);
+    recording_ = true;
+  }
+  /// The recorded path, rest first.
+  const std::vector<ring::PathPoint>& path() const { return path_; }
   /// The inertia of the tangent on the constraints' tangent space (stability.hpp): dense
   /// O(n^3) up to n = 200, O(n) frontal LDL^T of the KKT matrix up to n = 10^4, none above.
   std::optional<int> unstable_directions(const paths::State& s) override {
@@ -211,6 +262,30 @@ class ChainStatics : public paths::Equilibrium {
   const InertiaRoute route_;
   double last_step_ = INFINITY;  ///< the Newton correction before (converged's memory)
   Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
+  std::vector<int> record_;  ///< the hinges a path point reports
+  bool recording_ = false;
+  std::vector<ring::PathPoint> path_;
+
+  /// The path point of the hinge positions x at load factor s: the recorded hinges'
+  /// displacements and the ovalisation (largest - smallest distance between opposite
+  /// hinges k and k + n/2) / rho, rho the circumradius: the multibody chain's definition
+  /// (multibody/statics.cpp, StaticEquilibrium::path_point).
+  ring::PathPoint path_point(double s, const Vec& x) const {
+    ring::PathPoint pt;
+    pt.load_factor = s;
+    for (int k : record_) {
+      const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
+      pt.displacements.push_back({c_.anchor_deg + 360.0 * k / c_.n, u.x(), u.y()});
+    }
+    double most = 0.0, least = INFINITY;
+    for (int k = 0; k < (c_.n + 1) / 2; ++k) {
+      const double d = (c_.at(x, k) - c_.at(x, k + c_.n / 2)).norm();
+      most = std::max(most, d);
+      least = std::min(least, d);
+    }
+    pt.ovalisation = (most - least) / c_.rho;
+    return pt;
+  }
 };
 
 }  // namespace
@@ -228,13 +303,26 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   ChainStatics eq(c, loads, scale, spec.radius, route);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
   rest.z.head(N) = c.rest;
-  const paths::Continuation policy{statics.steps};
+  // static.path: the path through bifurcations (branch switching) to the touch, which is a
+  // result; every other early end still fails.
+  paths::Continuation policy{statics.steps};
+  if (statics.path) {
+    policy.branch_switch = true;
+    eq.record_path(rec);
+  }
   const paths::Trace path = paths::follow(eq, rest, policy);
-  if (path.end != paths::Trace::End::reached)
+  const bool touched = statics.path && path.end == paths::Trace::End::contact;
+  if (path.end != paths::Trace::End::reached && !touched)
     throw ring::NumericalError("lumped statics: " + paths::failure_message(path, policy));
   const Vec x = path.state.z.head(N);
   StaticDetail detail;
   ring::StaticResult& out = detail.result;
+  if (statics.path) {
+    out.path = eq.path();
+    out.branch_points = path.branch_points;
+    out.end = touched ? "contact: " + path.contact : "full load";
+    out.end_load = touched ? path.end_load : 1.0;
+  }
   out.steps = path.steps;
   out.newton_iterations = path.iterations;
   for (std::size_t p = 0; p < rec.size(); ++p) {

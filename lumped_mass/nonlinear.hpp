@@ -31,7 +31,10 @@
 // pressures' load stiffness) and sum lambda_j Hess c_j, bordered for the arc and
 // factorized as one sparse LU. The arc length is measured on the hinge positions; a step
 // turns no link by more than half a radian; converged when no hinge moves by more than
-// 1e-12 R and the links hold to 1e-10 R. Self-contact ends the path.
+// 1e-12 R and the links hold to 1e-10 R. Self-contact (the centre lines of non-neighbouring
+// links within the section depth) ends the path; under static.path it is the result, located
+// within the step (ChainStatics::clearance), and a bifurcation is passed by branch switching
+// up to n = 200 (the dense least stable direction).
 //
 // ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
 //   M (v_{n+1} - v_n) / h = -f(t_{n+1/2}) grad P(x_m) - grad V(x_m) - C v_m - G(x_m)^T lambda

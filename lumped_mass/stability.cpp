@@ -13,12 +13,24 @@ namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 
-std::optional<int> dense_count(const Chain& c, const Sparse& T, const Eigen::VectorXd& x) {
+/// The constraint Jacobian G (links, then supports; rows x 2n), dense.
+Eigen::MatrixXd dense_jacobian(const Chain& c, const Eigen::VectorXd& x) {
   Triplets g;
   jacobian(c, x, 0, 1.0, false, g);
   Sparse G(c.rows(), 2 * c.n);
   G.setFromTriplets(g.begin(), g.end());
-  return modal::unstable_directions(Eigen::MatrixXd(T), Eigen::MatrixXd(G));
+  return Eigen::MatrixXd(G);
+}
+
+/// The tangent T (2n x 2n), dense.
+Eigen::MatrixXd dense_tangent(const Triplets& hess, int n) {
+  Sparse T(2 * n, 2 * n);
+  T.setFromTriplets(hess.begin(), hess.end());
+  return Eigen::MatrixXd(T);
+}
+
+bool takes_dense_route(const Chain& c, InertiaRoute route) {
+  return route == InertiaRoute::dense || (route == InertiaRoute::automatic && 2 * c.n <= kDenseInertiaUnknowns);
 }
 
 std::optional<int> frontal_count(const Chain& c, const Triplets& tangent_hess, const Eigen::VectorXd& x, double scale) {
@@ -49,12 +61,16 @@ std::optional<int> unstable_directions(const Chain& c, const ChainLoads& loads, 
                                        const Eigen::VectorXd& lambda, double s, double scale, InertiaRoute route) {
   if (route == InertiaRoute::automatic && c.n > kMaxInertiaHinges) return std::nullopt;
   const Springs sp = tangent(c, loads, x, lambda, s, 1.0);
-  const bool dense = route == InertiaRoute::dense ||
-                     (route == InertiaRoute::automatic && 2 * c.n <= kDenseInertiaUnknowns);
-  if (!dense) return frontal_count(c, sp.hess, x, scale);
-  Sparse T(2 * c.n, 2 * c.n);
-  T.setFromTriplets(sp.hess.begin(), sp.hess.end());
-  return dense_count(c, T, x);
+  if (!takes_dense_route(c, route)) return frontal_count(c, sp.hess, x, scale);
+  return modal::unstable_directions(dense_tangent(sp.hess, c.n), dense_jacobian(c, x));
+}
+
+std::optional<Eigen::VectorXd> least_stable_direction(const Chain& c, const ChainLoads& loads,
+                                                      const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
+                                                      double s, InertiaRoute route) {
+  if (!takes_dense_route(c, route)) return std::nullopt;
+  const Springs sp = tangent(c, loads, x, lambda, s, 1.0);
+  return modal::least_stable(dense_tangent(sp.hess, c.n), dense_jacobian(c, x)).direction;
 }
 
 }  // namespace lumped

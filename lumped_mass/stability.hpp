@@ -54,4 +54,14 @@ constexpr int kMaxInertiaHinges = 10000;
 std::optional<int> unstable_directions(const Chain& c, const ChainLoads& loads, const Eigen::VectorXd& x,
                                        const Eigen::VectorXd& lambda, double s, double scale, InertiaRoute route);
 
+/// The least stable direction of the same tangent on ker G (2n position values, unit
+/// length): modal::least_stable(T, G), the branch-switching direction of the continuation
+/// driver (Equilibrium::critical_direction). Dense only, O(n^3): nullopt when the count
+/// would not take the dense route (2n > kDenseInertiaUnknowns under `automatic`, or the
+/// frontal route forced), so that above n = 200 there is no branch switching (the frontal
+/// LDL^T gives the inertia, not an eigenvector, and the path ends at the bifurcation).
+std::optional<Eigen::VectorXd> least_stable_direction(const Chain& c, const ChainLoads& loads,
+                                                      const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
+                                                      double s, InertiaRoute route);
+
 }  // namespace lumped
