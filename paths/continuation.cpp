@@ -235,16 +235,28 @@ class Follower {
   }
 
   /// Ends the path at a bifurcation between the accepted `from` and `to` (where the count
-  /// of unstable directions is `after`): the bracket is the step (load stepping has
-  /// narrowed it to kBifurcationBracket of an increment).
-  void bifurcation(const State& from, const State& to, int after) {
+  /// of unstable directions is `after`). On load stepping (`bisect`) the bracket is then
+  /// bisected on the load factor to kBifurcationBracket of an increment, each level solved
+  /// by Newton from the bracket's lower end (on the followed branch), or, where Newton
+  /// misses its tolerance beside the singular point, taken between the two ends by linear
+  /// interpolation (its inertia differs from the equilibrium's only within the bracket).
+  void bifurcation(const State& from, const State& to, int after, bool bisect = false) {
     out_.end = Trace::End::bifurcation;
     out_.unstable_before = *unstable_;
     out_.unstable_after = after;
-    out_.bifurcation_low = from.s;
-    out_.bifurcation_high = to.s;
-    out_.end_load = from.s;
-    out_.state = from;
+    State lo = from, hi = to;
+    while (bisect && hi.s - lo.s > kBifurcationBracket * ds_) {
+      State mid{lo.z, 0.5 * (lo.s + hi.s)};
+      if (const int it = newton_at(mid, nullptr); it >= 0) out_.iterations += it;
+      else mid = {0.5 * (lo.z + hi.z), 0.5 * (lo.s + hi.s)};
+      const std::optional<int> k = eq_.unstable_directions(mid);
+      if (!k) break;
+      (*k == *unstable_ ? lo : hi) = mid;
+    }
+    out_.bifurcation_low = lo.s;
+    out_.bifurcation_high = hi.s;
+    out_.end_load = lo.s;
+    out_.state = lo;
   }
 
   void reached(const State& x) {
@@ -286,7 +298,7 @@ class Follower {
           // seen past it.
           step *= 0.37;
           if (step > kBifurcationBracket * ds_) continue;
-          bifurcation(state, *beyond, beyond_count);
+          bifurcation(state, *beyond, beyond_count, true);
           return true;
         }
         step *= 0.5;
