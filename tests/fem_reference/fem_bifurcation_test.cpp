@@ -19,18 +19,13 @@
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
 #include "support/paper.hpp"
+#include "support/bracket.hpp"
 
 namespace {
 
 using Kind = ring::Pressure::Kind;
 
 const char* name(Kind k) { return k == Kind::follower ? "follower" : k == Kind::central ? "central" : "dead"; }
-
-ring::RingSpec pin_roller() {
-  ring::RingSpec s = ringtest::pinned_ring(270.0);
-  s.supports.roller = 90.0;
-  return s;
-}
 
 ring::FemOptions fem_options() {
   ring::FemOptions o;
@@ -43,7 +38,7 @@ ring::FemOptions fem_options() {
 // Each kind at 1.5 lambda_1: a NumericalError whose bracket, under 1e-6 wide, holds 1 / 1.5
 // to the pre-buckling compression's 1e-4 (measured offsets in the README).
 TEST(FemBifurcation, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::FemOptions o = fem_options();
   for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
     ring::BucklingOptions b;
@@ -58,10 +53,9 @@ TEST(FemBifurcation, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
       ADD_FAILURE() << "no bifurcation reported";
     } catch (const ring::NumericalError& e) {
       const std::string m = e.what();
-      const auto at = m.find("between load factors ");
-      ASSERT_NE(at, std::string::npos) << m;
-      double low = 0.0, high = 0.0;
-      ASSERT_EQ(std::sscanf(m.c_str() + at, "between load factors %lf and %lf", &low, &high), 2) << m;
+      const auto bracket = ringtest::bifurcation_bracket(m);
+      ASSERT_TRUE(bracket) << m;
+      const auto [low, high] = *bracket;
       std::printf("%s: bracket [%.10f, %.10f], offset of 1/1.5 from its middle %.3e (relative)\n", name(kind), low,
                   high, (0.5 * (low + high) - 1.0 / 1.5) * 1.5);
       EXPECT_LE(low, 1.0 / 1.5 + 1e-4) << m;
@@ -73,7 +67,7 @@ TEST(FemBifurcation, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
 
 // Below the critical pressure the path reaches the full load.
 TEST(FemBifurcation, BelowTheCriticalPressureThePathReachesTheFullLoad) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::FemOptions o = fem_options();
   for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
     ring::BucklingOptions b;

@@ -28,12 +28,6 @@ namespace {
 
 using Kind = ring::Pressure::Kind;
 
-ring::RingSpec held() {
-  ring::RingSpec s = ringtest::pinned_ring(270.0);
-  s.supports.roller = 90.0;
-  return s;
-}
-
 ring::BucklingOptions pressure(Kind kind, int count = 2) {
   ring::BucklingOptions b;
   b.loads.pressure = {1.0, kind};
@@ -78,7 +72,7 @@ class FemBucklingPressure : public ::testing::TestWithParam<Kind> {};
 // far above the refined eigen step's round-off. The 0.2 on the order is the FE convergence
 // test's bound.
 TEST_P(FemBucklingPressure, InextensibleConvergesToTheClosedFormAtOrderFour) {
-  const ring::RingSpec spec = held();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const double exact = ring::closed_form::pinned_ring_critical_pressure(spec, GetParam());
   const std::vector<int> elements{8, 16, 32};
   std::vector<double> errors;
@@ -98,7 +92,7 @@ TEST_P(FemBucklingPressure, InextensibleConvergesToTheClosedFormAtOrderFour) {
 // first-order membrane correction that the inextensible closed forms leave out: measured
 // 5.0 (follower), 5.8 (dead), 8.8 (central) I / (A R^2). The bound: between 1 and 12 times.
 TEST_P(FemBucklingPressure, ExtensibleDiffersByTheOrderOfIOverAR2) {
-  const ring::RingSpec spec = held();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const double exact = ring::closed_form::pinned_ring_critical_pressure(spec, GetParam());
   const double slender = spec.I() / (spec.A() * spec.radius * spec.radius);
   ASSERT_NEAR(slender, 9e-6, 1e-12);
@@ -118,7 +112,7 @@ INSTANTIATE_TEST_SUITE_P(Kinds, FemBucklingPressure, ::testing::Values(Kind::fol
 // translation that costs a dead pressure nothing: Levy's 4 EI/R^3 of the free ring
 // (closed_form.hpp). Converged discretization as above: 1e-9.
 TEST(FemBuckling, DeadPressureSecondFactorIsLevys) {
-  const ring::RingSpec spec = held();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const auto r = fem::compute_buckling(spec, fem_options(16, 8, false), pressure(Kind::dead));
   EXPECT_TRUE(ringtest::IsClose(r.factors[0], ring::closed_form::pinned_ring_critical_pressure(spec, Kind::dead), 1e-9));
   EXPECT_TRUE(ringtest::IsClose(r.factors[1], 4.0 * unit(spec), 1e-9));
@@ -132,7 +126,7 @@ TEST(FemBuckling, DeadPressureSecondFactorIsLevys) {
 // converged discretization to the eigen step's round-off (1e-9: the bound of the
 // converged factors above).
 TEST(FemBuckling, FollowerLowestTwoAreADoublePair) {
-  const ring::RingSpec spec = held();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const double exact = ring::closed_form::pinned_ring_critical_pressure(spec, Kind::follower);
   double previous_split = 1.0;
   for (int n : {8, 16, 32}) {
@@ -154,7 +148,7 @@ TEST(FemBuckling, FollowerLowestTwoAreADoublePair) {
 // radially there). The shape's own accuracy is that of its factor's square root
 // (~5e-6 at the converged discretization): 1e-5.
 TEST(FemBuckling, ShapesAreSampledAtTheCommonStationsAndHeld) {
-  const auto r = fem::compute_buckling(held(), fem_options(16, 8, false), pressure(Kind::dead, 2));
+  const auto r = fem::compute_buckling(ringtest::pin_270_roller_90(), fem_options(16, 8, false), pressure(Kind::dead, 2));
   ASSERT_EQ(r.shapes.size(), 2u);
   for (const ring::ModeShape& shape : r.shapes) {
     ASSERT_EQ(shape.radial.size(), static_cast<std::size_t>(ring::kStations));
@@ -172,7 +166,7 @@ TEST(FemBuckling, ShapesAreSampledAtTheCommonStationsAndHeld) {
 // fem.reference = true: the statics' refinement (raise p, then split) until the factors
 // change by less than fem.tolerance; error_estimate is the last change.
 TEST(FemBuckling, ReferenceConvergesToTheClosedForm) {
-  const ring::RingSpec spec = held();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   ring::FemOptions o = fem_options(8, 6, false);
   o.reference = true;
   o.tolerance = 1e-9;
@@ -199,19 +193,19 @@ void expect_refusal(const ring::RingSpec& spec, const ring::FemOptions& o, const
 
 TEST(FemBuckling, RefusesWhatCannotWork) {
   const ring::FemOptions o = fem_options(16, 3, true);
-  ring::RingSpec thick = held();
+  ring::RingSpec thick = ringtest::pin_270_roller_90();
   thick.theory = ring::Theory::timoshenko;
   expect_refusal(thick, o, pressure(Kind::follower), "timoshenko");
-  expect_refusal(held(), o, pressure(Kind::follower, 0), "buckling.count");
-  expect_refusal(held(), o, pressure(Kind::follower, 100000), "buckling.count");
+  expect_refusal(ringtest::pin_270_roller_90(), o, pressure(Kind::follower, 0), "buckling.count");
+  expect_refusal(ringtest::pin_270_roller_90(), o, pressure(Kind::follower, 100000), "buckling.count");
   expect_refusal(ringtest::pinned_ring(270.0), o, pressure(Kind::follower), "rigid motion");
   ring::BucklingOptions off = pressure(Kind::follower);
   off.loads.pressure = {};
   off.loads.points = {{100.0, {0.0, -1.0}}};
-  expect_refusal(held(), o, off, "buckling.at");
+  expect_refusal(ringtest::pin_270_roller_90(), o, off, "buckling.at");
   ring::FemOptions polygon = o;
   polygon.geometry = ring::FemOptions::Geometry::polygon;
-  expect_refusal(held(), polygon, pressure(Kind::follower), "fem.geometry");
+  expect_refusal(ringtest::pin_270_roller_90(), polygon, pressure(Kind::follower), "fem.geometry");
 }
 
 }  // namespace

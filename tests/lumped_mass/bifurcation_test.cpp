@@ -24,17 +24,13 @@
 #include "lumped_mass/nonlinear.hpp"
 #include "lumped_mass/stability.hpp"
 #include "ring/errors.hpp"
+#include "support/bracket.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
 using Kind = ring::Pressure::Kind;
 using lumped::InertiaRoute;
-
-ring::RingSpec pin_roller() {
-  ring::RingSpec s = ringtest::pinned_ring(270.0);
-  s.supports.roller = 90.0;
-  return s;
-}
 
 const char* name(Kind k) { return k == Kind::follower ? "follower" : k == Kind::central ? "central" : "dead"; }
 
@@ -56,10 +52,9 @@ void expect_bracket(const ring::RingSpec& spec, int n, Kind kind, InertiaRoute r
     ADD_FAILURE() << "no bifurcation reported";
   } catch (const ring::NumericalError& e) {
     const std::string m = e.what();
-    const auto at = m.find("between load factors ");
-    ASSERT_NE(at, std::string::npos) << m;
-    double low = 0.0, high = 0.0;
-    ASSERT_EQ(std::sscanf(m.c_str() + at, "between load factors %lf and %lf", &low, &high), 2) << m;
+    const auto bracket = ringtest::bifurcation_bracket(m);
+    ASSERT_TRUE(bracket) << m;
+    const auto [low, high] = *bracket;
     EXPECT_LE(low, 1.0 / 1.5 + slack) << m;
     EXPECT_GE(high, 1.0 / 1.5 - slack) << m;
     EXPECT_LT(high - low, 1e-6) << m;
@@ -70,7 +65,7 @@ void expect_bracket(const ring::RingSpec& spec, int n, Kind kind, InertiaRoute r
 // the path stops at the bifurcation, in a bracket under 1e-6 wide that holds 1 / 1.5 to
 // 1e-9 (the multibody chain's test).
 TEST(LumpedBifurcation, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   for (Kind kind : {Kind::follower, Kind::dead, Kind::central})
     expect_bracket(spec, 40, kind, InertiaRoute::automatic, 1e-9);
 }
@@ -79,7 +74,7 @@ TEST(LumpedBifurcation, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
 // (stability.hpp: the follower pair's count flips within 3e-8 of lambda_1 at n = 40,
 // measured), so 1 / 1.5 is held to 1e-7.
 TEST(LumpedBifurcation, FrontalCountEndsTheStaticsAtTheBifurcationToo) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   for (Kind kind : {Kind::follower, Kind::dead, Kind::central})
     expect_bracket(spec, 40, kind, InertiaRoute::frontal, 1e-7);
 }
@@ -87,7 +82,7 @@ TEST(LumpedBifurcation, FrontalCountEndsTheStaticsAtTheBifurcationToo) {
 // Above kMaxInertiaHinges the count is not given (rounding decides it: stability.hpp), so
 // the statics do not stop at a bifurcation that may be noise.
 TEST(LumpedBifurcation, NoCountAboveTheLimit) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const int n = lumped::kMaxInertiaHinges + 2;
   const lumped::Chain c = lumped::make_chain(spec, lumptest::options(n, lumptest::kChain));
   ring::Loads loads;
@@ -99,7 +94,7 @@ TEST(LumpedBifurcation, NoCountAboveTheLimit) {
 
 // Below the critical pressure the path reaches the full load (circular, no bifurcation).
 TEST(LumpedBifurcation, BelowTheCriticalPressureThePathReachesTheFullLoad) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {
     ring::StaticOptions st;
     st.loads.pressure = {0.9 * critical(spec, 40, kind), kind};
@@ -114,7 +109,7 @@ TEST(LumpedBifurcation, BelowTheCriticalPressureThePathReachesTheFullLoad) {
 // 1e-3 l at random (fixed seed; not equilibria, but the count is defined for any state):
 // equal, and the count rises past s = 1 (so that the comparison is not of zeros only).
 TEST(LumpedBifurcation, FrontalCountAgreesWithTheDenseEigenvalues) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   std::srand(7);
   for (int n : {40, 300})
     for (Kind kind : {Kind::follower, Kind::dead, Kind::central}) {

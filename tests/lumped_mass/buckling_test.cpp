@@ -35,14 +35,6 @@ namespace {
 
 using Kind = ring::Pressure::Kind;
 
-/// The paper's ring (support/paper.hpp; scenes/paper1990.toml) on a pin at 270 deg and a
-/// roller at 90 deg.
-ring::RingSpec pin_roller() {
-  ring::RingSpec s = ringtest::pinned_ring(270.0);
-  s.supports.roller = 90.0;
-  return s;
-}
-
 ring::BucklingOptions pressure(Kind kind, int count) {
   ring::BucklingOptions b;
   b.loads.pressure = {1.0, kind};  // 1 N/m: the factors are the critical pressures in N/m
@@ -98,7 +90,7 @@ class LumpedBuckling : public ::testing::TestWithParam<Case> {};
 // 2.6e-4, dead 2.9e-4 and 3.9e-4 for lambda_2).
 TEST_P(LumpedBuckling, PinRollerPressureConvergesAtOrderTwo) {
   const Case c = GetParam();
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const double unit = spec.EI() / std::pow(spec.radius, 3);
   const double exact = ring::closed_form::pinned_ring_critical_pressure(spec, c.kind);
   const std::vector<int> ns{40, 80, 160};
@@ -144,7 +136,7 @@ INSTANTIATE_TEST_SUITE_P(Pressures, LumpedBuckling,
 // them if the pair were not a pair.
 TEST(LumpedBuckling, FollowerPairIsDouble) {
   const ring::BucklingResult r =
-      lumped::compute_buckling(pin_roller(), lumptest::options(160, lumptest::kChain), pressure(Kind::follower, 3));
+      lumped::compute_buckling(ringtest::pin_270_roller_90(), lumptest::options(160, lumptest::kChain), pressure(Kind::follower, 3));
   EXPECT_TRUE(ringtest::IsClose(r.factors[1], r.factors[0], 1e-8));
   EXPECT_GT(r.factors[2] / r.factors[0], 2.0);  // the next wave number, 8 EI/R^3 in the limit
 }
@@ -157,7 +149,7 @@ TEST(LumpedBuckling, FollowerPairIsDouble) {
 TEST(LumpedBuckling, DeadPressureShapesOutOfAndInPhaseWithThePin) {
   const double pin = 270.0;
   const ring::BucklingResult r =
-      lumped::compute_buckling(pin_roller(), lumptest::options(160, lumptest::kChain), pressure(Kind::dead, 2));
+      lumped::compute_buckling(ringtest::pin_270_roller_90(), lumptest::options(160, lumptest::kChain), pressure(Kind::dead, 2));
   const auto [a1, b1] = second_harmonic(r.shapes[0], pin);
   const auto [a2, b2] = second_harmonic(r.shapes[1], pin);
   EXPECT_LT(std::abs(a1), 1e-8 * std::abs(b1)) << "lambda_1: cos " << a1 << ", sin " << b1;
@@ -166,7 +158,7 @@ TEST(LumpedBuckling, DeadPressureShapesOutOfAndInPhaseWithThePin) {
 
 // What cannot work is refused before anything is computed, naming the key.
 TEST(LumpedBuckling, Refusals) {
-  const ring::RingSpec spec = pin_roller();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::BucklingOptions follower = pressure(Kind::follower, 2);
   EXPECT_NE(message([&] { lumped::check_buckling(spec, lumptest::options(40, lumptest::kFrame), follower); })
                 .find("lumped.variant = \"frame\" has no buckling model here; use \"chain\""),
@@ -227,7 +219,7 @@ count = 3
   cmp::check_scene(s);
   const ring::BucklingResult via_registry = cmp::solver("lumped").buckling(s);
   const ring::BucklingResult direct =
-      lumped::compute_buckling(pin_roller(), lumptest::options(40, lumptest::kChain), pressure(Kind::dead, 3));
+      lumped::compute_buckling(ringtest::pin_270_roller_90(), lumptest::options(40, lumptest::kChain), pressure(Kind::dead, 3));
   ASSERT_EQ(via_registry.factors.size(), 3u);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(via_registry.factors[i], direct.factors[i]);  // the same computation
   EXPECT_EQ(via_registry.solver, "lumped");

@@ -23,12 +23,6 @@ namespace {
 
 using Kind = ring::Pressure::Kind;
 
-ring::RingSpec held_ring() {
-  ring::RingSpec s = ringtest::pinned_ring(270.0);
-  s.supports.roller = 90.0;
-  return s;
-}
-
 /// scenes/ring-collapse.toml's statics: the follower pressure 12825 N/m (6 EI/R^3 to 2e-5,
 /// the scene's rounded value) and a squeeze of 100 N along the diameter 0-180.
 ring::StaticOptions collapse() {
@@ -53,7 +47,7 @@ bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p,
 // links cross between hinges (l = 1.57 m, 13 depths): a test on hinge distances alone, as
 // the lumped statics had, found that touch at 0.986.
 TEST(LumpedPath, TheCollapseEndsInContactWhereTheMultibodyChainsDoes) {
-  const ring::RingSpec spec = held_ring();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   for (int n : {40, 80, 160}) {
     SCOPED_TRACE(n);
     const ring::StaticResult r = lumped::solve_static(spec, lumptest::options(n, lumptest::kChain), collapse());
@@ -89,7 +83,7 @@ TEST(LumpedPath, TheCollapseEndsInContactWhereTheMultibodyChainsDoes) {
 // passed by branch switching: the path leaves at the critical load of the chain's linear
 // buckling (1 / 1.5 of the load; the bracket: 1e-4, measured 3e-7) and goes on to the touch.
 TEST(LumpedPath, ThePathSwitchesOntoTheBranchAtASimpleBifurcation) {
-  const ring::RingSpec spec = held_ring();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::LumpedOptions o = lumptest::options(40, lumptest::kChain);
   ring::BucklingOptions b;
   b.loads.pressure = {1.0, Kind::dead};
@@ -107,7 +101,7 @@ TEST(LumpedPath, ThePathSwitchesOntoTheBranchAtASimpleBifurcation) {
 // no branch switching: the same path ends at the bifurcation, a NumericalError as without
 // static.path.
 TEST(LumpedPath, AboveTheDenseLimitThePathEndsAtTheBifurcation) {
-  const ring::RingSpec spec = held_ring();
+  const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::LumpedOptions o = lumptest::options(202, lumptest::kChain);
   ring::BucklingOptions b;
   b.loads.pressure = {1.0, Kind::dead};

@@ -39,6 +39,15 @@ inline ring::RingSpec pin_roller_ring() {
   return s;
 }
 
+/// The paper's ring on a pin at 270 deg and a roller at 90 deg (scenes/ring-buckling.toml,
+/// ring-collapse.toml): statically determinate, the supports of the buckling closed forms
+/// (ring::closed_form::pinned_ring_critical_pressure).
+inline ring::RingSpec pin_270_roller_90() {
+  ring::RingSpec s = pinned_ring(270.0);
+  s.supports.roller = 90.0;
+  return s;
+}
+
 #ifdef RINGVIB_SOURCE_DIR  // defined for the test programs
 /// The text of a file of the source tree (scenes, data), e.g. "scenes/paper1990.toml".
 inline std::string source_text(const std::string& relative) {
