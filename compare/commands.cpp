@@ -183,7 +183,8 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
     if (!nl.statics.empty()) {
       rep.statics = nl.statics.front();
       rep.static_table = static_table(s.title, nl.statics, nl.static_reference ? &*nl.static_reference : nullptr);
-      if (nl.statics.size() > 1 || nl.static_reference) std::cout << format_text(*rep.static_table) << "\n";
+      if (nl.statics.size() > 1 || nl.static_reference)
+        std::cout << format_text(*rep.static_table) << path_summary(nl.statics) << "\n";
       else std::cout << static_text(*rep.statics);
     }
     rep.nonlinear = std::move(nl);
@@ -257,6 +258,7 @@ int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const 
     const NonlinearRun r = run_nonlinear(s, "", progress);
     const NonlinearTable t = static_table(s.title, r.statics, r.static_reference ? &*r.static_reference : nullptr);
     std::cout << format_nonlinear(t, json ? "json" : format);
+    if (!json && format == "text") std::cout << path_summary(r.statics);
     return 0;
   }
   const ring::StaticResult r = run_nonlinear(s, *one, progress).statics.front();

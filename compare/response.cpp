@@ -58,13 +58,23 @@ std::string static_text(const ring::StaticResult& r) {
   std::ostringstream s;
   s << (r.solver.empty() ? "" : r.solver + ": ") << "static equilibrium after " << r.steps << " load steps, " << r.newton_iterations << " Newton iterations\n";
   if (!r.path.empty()) {
-    s << "path: " << r.path.size() << " equilibria from rest";
-    for (double b : r.branch_points) s << "; onto a branch at load factor " << sig4(b);
-    s << "; ended at load factor " << fmt::format("{:.6g}", r.end_load) << ": " << r.end << "\n"
-      << (r.end == "full load" ? "at the full load:\n" : "at the last equilibrium before the touch:\n");
+    const std::string line = path_summary({r});
+    s << "path: " << line.substr(line.find(": ") + 2)
+      << (r.end == "full load" ? "at the full load:\n" : "at the touch:\n");
   }
   s << "   angle deg        ux m        uy m\n";
   for (const auto& d : r.displacements) s << fmt::format("  {:10.4g}  {:10.4e}  {:10.4e}\n", d.angle, d.ux, d.uy);
+  return s.str();
+}
+
+std::string path_summary(const std::vector<ring::StaticResult>& results) {
+  std::ostringstream s;
+  for (const auto& r : results) {
+    if (r.path.empty()) continue;
+    s << r.solver << ": " << r.path.size() << " equilibria from rest";
+    for (double b : r.branch_points) s << "; onto a branch at load factor " << sig4(b);
+    s << "; ended at load factor " << fmt::format("{:.6g}", r.end_load) << ": " << r.end << "\n";
+  }
   return s.str();
 }
 

@@ -17,6 +17,8 @@ std::string history_csv(const ring::TimeHistory& h);
 /// "unknowns", "seconds"}.
 std::string static_json(const ring::StaticResult& r);
 std::string static_text(const ring::StaticResult& r);
+/// static.path: one line per solver with a path: its equilibria, branch points and end.
+std::string path_summary(const std::vector<ring::StaticResult>& results);
 /// static.path: the path as CSV (load_factor, ovalisation, ux_A, uy_A for each recorded point).
 std::string static_path_csv(const ring::StaticResult& r);
 /// static.path: load factor against ovalisation, every solver's path overlaid (static_path.png).
