@@ -42,7 +42,8 @@ bool nodes_fit(const ring::Scene& s, int n) {
   const double anchor = s.ring.supports.pin.value_or(0.0);
   std::vector<double> points;
   if (s.ring.supports.roller) points.push_back(*s.ring.supports.roller);
-  for (const ring::Loads* loads : {s.response ? &s.response->loads : nullptr, s.statics ? &s.statics->loads : nullptr})
+  for (const ring::Loads* loads : {s.response ? &s.response->loads : nullptr, s.statics ? &s.statics->loads : nullptr,
+                                   s.buckling ? &s.buckling->loads : nullptr})
     if (loads)
       for (const auto& p : loads->points) points.push_back(p.angle);
   for (double p : s.ring.supports.pins) points.push_back(p);
@@ -78,8 +79,9 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
   }
   // Errors are relative to the reference: a point that does not move has none to measure.
   if (!std::isfinite(b.reference_value) || !(b.reference_value > 0.0))
-    throw ring::NumericalError("bench " + analysis + ": the reference's |u| at the loaded point (" + sig4(angle) +
-                               " deg) is " + sig4(b.reference_value) + " m, so no relative error can be measured");
+    throw ring::NumericalError("bench " + analysis + ": the reference's value (" +
+                               (analysis == "buckling" ? "the first critical load factor" : "|u| at " + sig4(angle) + " deg") +
+                               ") is " + sig4(b.reference_value) + ", so no relative error can be measured");
   for (const auto& name : solvers) {
     const SolverEntry& e = solver(name);
     for (int n = 20; n <= 320; n *= 2) {
@@ -100,7 +102,7 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
       const double err = std::abs(value - b.reference_value) / b.reference_value * 100.0;
       if (!std::isfinite(err) || !std::isfinite(times[times.size() / 2]))
         throw ring::NumericalError("bench " + analysis + ": " + name + " at " + e.size_name + " = " +
-                                   std::to_string(n) + " gave a non-finite |u| at the loaded point");
+                                   std::to_string(n) + " gave a non-finite value");
       b.study.points.push_back({name, n, 0, times[times.size() / 2], static_cast<int>(times.size()), err, err});
       if (err < floor_pct) break;
     }
@@ -129,6 +131,9 @@ void check_bench_nonlinear(const ring::Scene& scene) {
                              "bench measures the error at the (first) loaded point (" + sig4(at) + " deg), which " +
                                  section + ".record does not list; add it");
   };
+  if (scene.buckling && !ref.buckling)
+    throw ring::InputError(scene.file, "buckling", "bench needs the converged reference buckling, and the " + ref.name +
+                                                       " solver has none in this build");
   if (scene.response)
     check("response", bool(ref.response), "forced response", scene.response->loads, scene.response->record);
   if (scene.statics) check("static", bool(ref.statics), "statics", scene.statics->loads, scene.statics->record);
@@ -160,6 +165,14 @@ std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostre
         },
         [](ring::Scene&, int) {}, 100.0 * scene.fem.tolerance, progress));
   }
+  if (scene.buckling)
+    out.push_back(sweep(
+        scene, "buckling", NAN, scene.buckling_request.solvers,
+        [&](const ring::Scene& s, const SolverEntry* e) {
+          const ring::BucklingResult r = e ? e->buckling(s) : reference_buckling(s);
+          return std::pair<double, double>{r.factors.front(), r.seconds};
+        },
+        [](ring::Scene&, int) {}, 100.0 * scene.fem.tolerance, progress));
   return out;
 }
 
@@ -167,10 +180,15 @@ std::string bench_nonlinear_text(const NonlinearBench& b) {
   const BenchStudy& st = b.study;
   const std::string what = b.analysis == "response" ? "peak |u|" : "|u|";
   std::ostringstream s;
-  s << "Run time against the error of the loaded point's " << what << " (" << sig4(b.loaded_point)
-    << " deg), " << (b.analysis == "response" ? "forced response" : "nonlinear statics")
-    << ", against the converged reference " << sig4(b.reference_value) << " m (computed in "
-    << fmt_seconds(b.reference_seconds) << ")\n(solver time inside this process, median of repeats; compare times as ratios)\n\n";
+  if (b.analysis == "buckling")
+    s << "Run time against the error of the first critical load factor, linear buckling, against the converged "
+         "reference "
+      << sig4(b.reference_value) << " (computed in " << fmt_seconds(b.reference_seconds) << ")\n";
+  else
+    s << "Run time against the error of the loaded point's " << what << " (" << sig4(b.loaded_point) << " deg), "
+      << (b.analysis == "response" ? "forced response" : "nonlinear statics") << ", against the converged reference "
+      << sig4(b.reference_value) << " m (computed in " << fmt_seconds(b.reference_seconds) << ")\n";
+  s << "(solver time inside this process, median of repeats; compare times as ratios)\n\n";
   s << fmt::format("{:<12} {:>6} {:>12} {:>8} {:>12}\n", "solver", "size", "time", "repeats", "|error| %");
   for (const auto& p : st.points)
     s << fmt::format("{:<12} {:6d} {:>12} {:8d} {:12.3e}\n", p.curve, p.size, fmt_seconds(p.seconds), p.repeats,
@@ -230,7 +248,10 @@ void write_bench_nonlinear(const std::string& dir, const NonlinearBench& b) {
         << "," << b.reference_value << "\n";
   const std::string name = "bench_" + b.analysis;
   write_file(dir + "/" + name + ".csv", csv.str());
-  plot_pareto(dir, name, "Run time against the error of the loaded point (" + b.analysis + ", lower left is better)",
+  plot_pareto(dir, name,
+              b.analysis == "buckling" ? "Run time against the error of the first critical load (lower left is better)"
+                                       : "Run time against the error of the loaded point (" + b.analysis +
+                                             ", lower left is better)",
               "|error| against the reference (%)", b.study);
   write_file(dir + "/" + name + ".txt", bench_nonlinear_text(b));
 }

@@ -3,7 +3,8 @@
 // the finite element method and takes little machine time", about 1/3 of the FE time)
 // measured: every listed solver over a range of discretizations, its run time against
 // the error of the loaded point's peak |u| (response) or |u| (statics) against the
-// converged reference, in this process, in one run.
+// converged reference, in this process, in one run; and with [buckling] the same for the
+// first critical load factor.
 #pragma once
 
 #include <ostream>
@@ -16,7 +17,7 @@
 namespace cmp {
 
 struct NonlinearBench {
-  std::string analysis;         ///< "response" or "static"
+  std::string analysis;         ///< "response", "static" or "buckling" (the first critical load factor)
   double loaded_point = 0.0;    ///< degrees
   double reference_value = 0.0; ///< the reference's peak |u| (response) or |u| (statics), m
   double reference_seconds = 0.0;

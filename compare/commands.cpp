@@ -305,10 +305,11 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
 
 int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
-  if (!modal(s) && !s.response && !s.statics)
-    throw ring::InputError(a.scene, "modes", "`bench` times modes, a [response] or a [static], and the scene has none");
+  if (!modal(s) && !s.response && !s.statics && !s.buckling)
+    throw ring::InputError(a.scene, "modes",
+                           "`bench` times modes, a [response], a [static] or a [buckling], and the scene has none");
   const Progress p(a.quiet);
-  if (s.response || s.statics) check_bench_nonlinear(s);
+  if (s.response || s.statics || s.buckling) check_bench_nonlinear(s);
   Outputs files;
   if (!out_dir.empty()) files.folder(out_dir, "--out", kBenchNames);
   files.open();
