@@ -92,7 +92,8 @@ class BeamEquilibrium : public paths::Equilibrium {
     for (double a : st_.record) record_vertices_.push_back(model_.vertex_of(a));
     out_.points.push_back(point_at(0.0, model_.expand(q_)));
   }
-  /// The record and the deformed vertices at the end of a path that reached the full load.
+  /// The record and the deformed vertices at the end of a path that reached the full load
+  /// (or, static.path, at its touching equilibrium).
   void finish(const paths::Vector& z);
 
  private:
@@ -100,7 +101,8 @@ class BeamEquilibrium : public paths::Equilibrium {
   Eigen::SparseMatrix<double> tangent(const paths::State& x);
   /// The path point of the full DoF vector q at load factor s: the displacements of the
   /// record vertices; the ovalisation (largest - smallest distance between opposite
-  /// vertices k and k + cells / 2) / R.
+  /// vertices k and k + cells / 2; with an odd count of cells the nearest to opposite, as
+  /// the chains do) / R.
   ring::PathPoint point_at(double s, const Vector<double>& q) const;
   Vector<double> full(const paths::Vector& z) const {
     Vector<double> q(N_);
