@@ -42,12 +42,12 @@ bool runs(const ring::NonlinearRequest& q, const std::string& name) {
 }
 
 /// static.path (the equilibrium path with branch switching, contact as a result) is the
-/// multibody and lumped chains' so far.
+/// multibody and lumped chains' and the FE beam's so far.
 void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
   if (statics.path)
     throw std::invalid_argument(name + ": static.path = true (the equilibrium path through bifurcations to contact) is "
-                                "not offered by this solver yet; the multibody and lumped chains offer it (static.solvers = "
-                                "[\"multibody\", \"lumped\"])");
+                                "not offered by this solver yet; the multibody and lumped chains and fem offer it (static.solvers = "
+                                "[\"multibody\", \"lumped\", \"fem\"])");
 }
 
 /// modes.preload = "static" (frequencies under load) is the multibody chain's so far.
@@ -284,7 +284,6 @@ SolverEntry fem_entry() {
     fem::check_modes(s.ring, s.fem);
   };
   e.check_static = [](const ring::Scene& s) {
-    refuse_path("fem", *s.statics);
     fem::check_static(s.ring, s.fem, *s.statics);
   };
   e.check_response = [](const ring::Scene& s) { fem::check_response(s.ring, s.fem, *s.response); };

@@ -125,6 +125,14 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
   need(ring::static_rigid_modes(spec, st.loads) == 0,
        "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
+  // static.path follows one discretization's path to its end (contact as a result): the
+  // reference refinement and the inextensible extrapolation (two paths combined) have no
+  // one path to report.
+  need(!st.path || !o.reference,
+       "static.path = true traces one discretization: fem.reference = true is not offered with it");
+  need(!st.path || o.extensible,
+       "static.path = true traces one path: fem.extensible = false (an extrapolation from two paths) is not offered "
+       "with it");
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {

@@ -28,9 +28,9 @@ constexpr int kMaxDegree = 16;
 /// FE vertices (the message names the key); stiffnesses, masses and foundation moduli
 /// finite and >= 0; the terms beyond the paper's ring only on the curved geometry.
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& options);
-/// Nonlinear statics: as modes, plus the curved geometry, supports that hold every rigid
-/// motion (spec.rigid_modes() == 0), every point load and record point on an FE vertex,
-/// finite forces, pressure and gravity (the message names the key).
+/// Nonlinear statics: as modes, plus the curved geometry, supports holding every rigid motion,
+/// every point load and record point on an FE vertex, finite forces, pressure and gravity;
+/// static.path with neither fem.reference nor fem.extensible = false (the message names the key).
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics);
 /// Forced response: as statics, but a pin alone suffices (a pin, or no rigid motion left
 /// free); no rotary inertia, no hinge damping, the integrator "newmark" or

@@ -73,6 +73,13 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   for (std::size_t i = 0; i < st.record.size(); ++i) r.displacements.push_back({st.record[i], sol.record[i][0], sol.record[i][1]});
   r.node_x = std::move(sol.node_x);
   r.node_y = std::move(sol.node_y);
+  if (st.path) {
+    const bool touched = sol.trace.end == paths::Trace::End::contact;
+    r.path = std::move(sol.points);
+    r.branch_points = sol.trace.branch_points;
+    r.end = touched ? "contact: " + sol.trace.contact : "full load";
+    r.end_load = touched ? sol.trace.end_load : 1.0;
+  }
   return r;
 }
 
@@ -83,7 +90,9 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
   const ContinuationOptions continuation;
   auto solve = [&](const Setup& s) {
     StaticSolve sol = static_at(spec, o, s, st, continuation);
-    if (!sol.reached()) throw ring::NumericalError(failure_message(sol, continuation));
+    // static.path (one extensible discretization, check_static): contact is a result.
+    const bool touched = st.path && sol.trace.end == paths::Trace::End::contact;
+    if (!sol.reached() && !touched) throw ring::NumericalError(failure_message(sol, continuation));
     return sol;
   };
   StaticSolve sol;

@@ -91,10 +91,10 @@
 //    can otherwise land on a distant branch; and a maximum and a minimum of s are never
 //    skipped together); Newton converged at a correction below 1e-12 R;
 //  - self-contact along the chord between accepted equilibria (below).
-// A path that does not reach the full load is a ring::NumericalError: self-contact, no
-// return within 2000 arc steps, or a stalled continuation; past a limit point the
-// message reads "past a limit point at load factor L, the equilibrium path (arc-length
-// continuation) ..." (every solver's wording: the driver's).
+// A path that does not reach the full load is a ring::NumericalError (self-contact, but a
+// result with static.path; no return within 2000 arc steps, a stalled continuation); past
+// a limit point the message reads "past a limit point at load factor L, the equilibrium
+// path (arc-length continuation) ..." (every solver's wording: the driver's).
 // Self-contact, after every accepted step: the deformed centreline, sampled at most
 // depth/2 apart, as a closed polygon; two edges whose nearest ends are at least 2 depths
 // apart along the ring and closer than the section depth (or crossing) have touched.
@@ -161,8 +161,8 @@ namespace fem {
 /// load, through limit points if the path comes back to it (file comment, "Statics").
 /// Requires supports that hold every rigid motion, curved geometry, load and record points
 /// on vertices (check_static). Throws std::invalid_argument for input that can never work and
-/// ring::NumericalError when the path does not reach the full load (self-contact, no
-/// return past a limit point within the arc-step bound, a stalled continuation).
+/// ring::NumericalError when the path does not reach the full load (self-contact unless
+/// statics.path: then the result's end, end_load and path; no return past a limit point, a stall).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptions& options,
                                 const ring::StaticOptions& statics);
 

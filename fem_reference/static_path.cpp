@@ -2,6 +2,7 @@
 // the method is documented in nonlinear.hpp, "Statics").
 #include "fem_reference/static_path.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -74,10 +75,35 @@ class BeamEquilibrium : public paths::Equilibrium {
   /// supports are eliminated, so that space is the constraints' tangent space): see
   /// kDenseInertiaLimit.
   std::optional<int> unstable_directions(const paths::State& x) override;
-  /// The record and the deformed vertices at the end of a path that reached the full load.
+  /// The eigenvector of the least eigenvalue of that tangent on the free unknowns (there
+  /// are no multipliers): a dense symmetric eigen-solve, O(N^3), up to kDenseInertiaLimit
+  /// unknowns; nullopt above (no branch switching: the path ends at the bifurcation).
+  std::optional<paths::Vector> critical_direction(const paths::State& x) override;
+  /// accept()'s self-contact measure at x: the closest approach of non-neighbouring
+  /// parts of the deformed centreline minus the section depth; 0 while none comes within
+  /// a depth (closest_approach looks no farther), negative once they have touched.
+  /// O(2 pi R / depth) (the grid).
+  std::optional<double> clearance(const paths::State& x) override {
+    return closest_approach(model_.centreline(full(x.z), per_cell_), min_gap_, depth_).distance - depth_;
+  }
+  /// st.path: record ring::PathPoint in out.points (accept()).
+  void record_path() {
+    recording_ = true;
+    for (double a : st_.record) record_vertices_.push_back(model_.vertex_of(a));
+    out_.points.push_back(point_at(0.0, model_.expand(q_)));
+  }
+  /// The record and the deformed vertices at the end of a path that reached the full load
+  /// (or, static.path, at its touching equilibrium).
   void finish(const paths::Vector& z);
 
  private:
+  /// The tangent K - s hess Phi at x on the free unknowns, symmetrized.
+  Eigen::SparseMatrix<double> tangent(const paths::State& x);
+  /// The path point of the full DoF vector q at load factor s: the displacements of the
+  /// record vertices; the ovalisation (largest - smallest distance between opposite
+  /// vertices k and k + cells / 2; with an odd count of cells the nearest to opposite, as
+  /// the chains do) / R.
+  ring::PathPoint point_at(double s, const Vector<double>& q) const;
   Vector<double> full(const paths::Vector& z) const {
     Vector<double> q(N_);
     for (unsigned int i = 0; i < N_; ++i) q[i] = z(i);
@@ -100,6 +126,8 @@ class BeamEquilibrium : public paths::Equilibrium {
   Vector<double> q_, r_, y_;
   SparseDirectUMFPACK lu_;
   std::vector<Point2> last_centreline_;
+  bool recording_ = false;
+  std::vector<unsigned int> record_vertices_;
   StaticSolve& out_;
 };
 
@@ -165,6 +193,7 @@ bool BeamEquilibrium::solve(paths::Vector& y) {
 std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const paths::State& to) {
   const Vector<double> q = full(to.z);
   out_.path.push_back({to.s, model_.vertex_displacement(q, loaded_)});
+  if (recording_) out_.points.push_back(point_at(to.s, q));
   std::vector<Point2> next = model_.centreline(q, per_cell_);
   // The deformed centreline moves between the two equilibria; checking only the ends
   // could miss a part passing through another, so the chord between them is checked at
@@ -195,7 +224,7 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
   return std::nullopt;
 }
 
-std::optional<int> BeamEquilibrium::unstable_directions(const paths::State& x) {
+Eigen::SparseMatrix<double> BeamEquilibrium::tangent(const paths::State& x) {
   for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
   SparseMatrix<double> T(pattern_);
   potential_.evaluate(q_, x.s, nullptr, &T);
@@ -205,11 +234,45 @@ std::optional<int> BeamEquilibrium::unstable_directions(const paths::State& x) {
   Eigen::SparseMatrix<double> K(N_, N_);
   K.setFromTriplets(t.begin(), t.end());
   K = (0.5 * (K + Eigen::SparseMatrix<double>(K.transpose()))).eval();
+  return K;
+}
+
+std::optional<int> BeamEquilibrium::unstable_directions(const paths::State& x) {
+  const Eigen::SparseMatrix<double> K = tangent(x);
   std::vector<std::vector<int>> groups(N_);
   for (unsigned int i = 0; i < N_; ++i) groups[i] = {static_cast<int>(i)};
   if (const auto in = modal::frontal_inertia(K, groups, {}); in && in->zero == 0) return static_cast<int>(in->negative);
   if (N_ > kDenseInertiaLimit) return std::nullopt;
   return modal::unstable_directions(Eigen::MatrixXd(K), Eigen::MatrixXd(0, N_));
+}
+
+std::optional<paths::Vector> BeamEquilibrium::critical_direction(const paths::State& x) {
+  if (N_ > kDenseInertiaLimit) return std::nullopt;
+  return modal::least_stable(Eigen::MatrixXd(tangent(x)), Eigen::MatrixXd(0, N_)).direction;
+}
+
+ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) const {
+  ring::PathPoint pt;
+  pt.load_factor = s;
+  for (std::size_t i = 0; i < record_vertices_.size(); ++i) {
+    const auto u = model_.vertex_displacement(q, record_vertices_[i]);
+    pt.displacements.push_back({st_.record[i], u[0], u[1]});
+  }
+  const unsigned int n = model_.cells();
+  auto at = [&](unsigned int k) {
+    const auto X = model_.vertex_position(k);
+    const auto u = model_.vertex_displacement(q, k);
+    return std::array<double, 2>{X[0] + u[0], X[1] + u[1]};
+  };
+  double most = 0.0, least = HUGE_VAL;
+  for (unsigned int k = 0; k < (n + 1) / 2; ++k) {
+    const auto a = at(k), b = at((k + n / 2) % n);
+    const double d = std::hypot(a[0] - b[0], a[1] - b[1]);
+    most = std::max(most, d);
+    least = std::min(least, d);
+  }
+  pt.ovalisation = (most - least) / radius_;
+  return pt;
 }
 
 void BeamEquilibrium::finish(const paths::Vector& z) {
@@ -231,8 +294,12 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   BeamEquilibrium beam(spec, setup, st, out);
   paths::Continuation options = continuation;
   options.steps = st.steps;
+  if (st.path) {
+    options.branch_switch = true;
+    beam.record_path();
+  }
   out.trace = paths::follow(beam, {paths::Vector::Zero(beam.size()), 0.0}, options);
-  if (out.reached()) beam.finish(out.trace.state.z);
+  if (out.reached() || (st.path && out.trace.end == paths::Trace::End::contact)) beam.finish(out.trace.state.z);
   return out;
 }
 

@@ -19,10 +19,15 @@ struct StaticSolve {
   std::vector<double> node_x, node_y;         ///< deformed vertices (reached)
   long long unknowns = 0;
   std::vector<StaticPath::Point> path;        ///< every accepted equilibrium, from rest
+  /// st.path: every accepted equilibrium from rest as ring::PathPoint (the displacements
+  /// at st.record, the ovalisation between opposite vertices), the touching one last.
+  std::vector<ring::PathPoint> points;
 };
 
 /// Traces the path of `st` with the discretization `setup` (no throw on a failed path:
-/// see paths::Trace::end). Cost: per Newton iteration an assembly and a sparse LU of the
+/// see paths::Trace::end). st.path: branch switching on (continuation.branch_switch),
+/// `points` recorded, and a path that ends in contact also gets `record` and the vertices
+/// at its touching equilibrium. Cost: per Newton iteration an assembly and a sparse LU of the
 /// bordered tangent (UMFPACK); per accepted step a self-contact check, O(2 pi R / depth).
 StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st,
                        const ContinuationOptions& continuation);
