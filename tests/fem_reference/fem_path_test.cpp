@@ -28,17 +28,6 @@ namespace {
 
 using Kind = ring::Pressure::Kind;
 
-/// scenes/ring-collapse.toml's statics: the follower pressure 12825 N/m and a squeeze of
-/// 100 N along the diameter 0-180.
-ring::StaticOptions collapse() {
-  ring::StaticOptions st;
-  st.loads.pressure = {12825.0, Kind::follower};
-  st.loads.points = {{0.0, {-100.0, 0.0}}, {180.0, {100.0, 0.0}}};
-  st.record = {0.0, 180.0};
-  st.path = true;
-  return st;
-}
-
 ring::FemOptions scene_fem() {
   ring::FemOptions o;
   o.elements = 40;
@@ -54,7 +43,7 @@ constexpr double kChainsExtrapolated = kMultibody320 + (kMultibody320 - kMultibo
 
 TEST(FemPath, TheCollapseEndsInContactNearTheChainsTouch) {
   const ring::RingSpec spec = ringtest::pin_270_roller_90();
-  const ring::StaticResult r = fem::solve_static(spec, scene_fem(), collapse());
+  const ring::StaticResult r = fem::solve_static(spec, scene_fem(), ringtest::collapse_statics());
   std::printf("end: %s\nend load %.8f, branch points %zu, path points %zu, steps %d, Newton %d, %.2f s\n"
               "relative to multibody n = 320 (%.6f): %.3e; to the chains' extrapolation (%.6f): %.3e\n",
               r.end.c_str(), r.end_load, r.branch_points.size(), r.path.size(), r.steps, r.newton_iterations,
@@ -85,7 +74,7 @@ TEST(FemPath, TheRefinedBeamTouchesWhereTheChainsExtrapolate) {
   ring::FemOptions o = scene_fem();
   o.elements = 80;
   o.degree = 4;
-  const ring::StaticResult r = fem::solve_static(ringtest::pin_270_roller_90(), o, collapse());
+  const ring::StaticResult r = fem::solve_static(ringtest::pin_270_roller_90(), o, ringtest::collapse_statics());
   std::printf("80 elements of degree 4: end load %.8f, relative to the chains' extrapolation %.3e\n", r.end_load,
               (r.end_load - kChainsExtrapolated) / kChainsExtrapolated);
   ASSERT_TRUE(starts_with(r.end, "contact")) << r.end;
@@ -120,7 +109,7 @@ TEST(FemPath, ThePathSwitchesOntoTheBranchAtASimpleBifurcation) {
 // Without static.path the same loads are a NumericalError (the path does not reach the
 // full load), as before.
 TEST(FemPath, WithoutPathTheCollapseIsAnError) {
-  ring::StaticOptions st = collapse();
+  ring::StaticOptions st = ringtest::collapse_statics();
   st.path = false;
   EXPECT_THROW(fem::solve_static(ringtest::pin_270_roller_90(), scene_fem(), st), ring::NumericalError);
 }
@@ -134,7 +123,7 @@ TEST(FemPath, ReferenceAndInextensibleAreRefusedWithPath) {
     (which == 0 ? o.reference : o.extensible) = which == 0;
     const std::string key = which == 0 ? "fem.reference" : "fem.extensible";
     try {
-      fem::solve_static(spec, o, collapse());  // check_static first
+      fem::solve_static(spec, o, ringtest::collapse_statics());  // check_static first
       ADD_FAILURE() << key << " accepted";
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();

@@ -23,17 +23,6 @@ namespace {
 
 using Kind = ring::Pressure::Kind;
 
-/// scenes/ring-collapse.toml's statics: the follower pressure 12825 N/m (6 EI/R^3 to 2e-5,
-/// the scene's rounded value) and a squeeze of 100 N along the diameter 0-180.
-ring::StaticOptions collapse() {
-  ring::StaticOptions st;
-  st.loads.pressure = {12825.0, Kind::follower};
-  st.loads.points = {{0.0, {-100.0, 0.0}}, {180.0, {100.0, 0.0}}};
-  st.record = {0.0, 180.0};
-  st.path = true;
-  return st;
-}
-
 bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p, 0) == 0; }
 
 // The collapse ends in contact as a result, where the multibody chain's does. Both follow
@@ -50,11 +39,12 @@ TEST(LumpedPath, TheCollapseEndsInContactWhereTheMultibodyChainsDoes) {
   const ring::RingSpec spec = ringtest::pin_270_roller_90();
   for (int n : {40, 80, 160}) {
     SCOPED_TRACE(n);
-    const ring::StaticResult r = lumped::solve_static(spec, lumptest::options(n, lumptest::kChain), collapse());
+    const ring::StaticResult r =
+        lumped::solve_static(spec, lumptest::options(n, lumptest::kChain), ringtest::collapse_statics());
     ring::MultibodyOptions o;
     o.n = n;
     o.method = ring::MultibodyOptions::Method::dense;
-    const ring::StaticResult m = multibody::solve_static(spec, o, collapse());
+    const ring::StaticResult m = multibody::solve_static(spec, o, ringtest::collapse_statics());
     ASSERT_TRUE(starts_with(r.end, "contact: links")) << r.end;
     // The located touch: the links one depth apart, from below (the bisection keeps the
     // touching end of its bracket), to the message's 6 digits.

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace ringtest {
@@ -46,6 +47,18 @@ inline ring::RingSpec pin_270_roller_90() {
   ring::RingSpec s = pinned_ring(270.0);
   s.supports.roller = 90.0;
   return s;
+}
+
+/// scenes/ring-collapse.toml's statics: the follower pressure 12825 N/m (6 EI/R^3 to 2e-5,
+/// the scene's rounded value), a squeeze of 100 N along the diameter 0-180 (the imperfection
+/// that selects the buckled shape), the path to contact recorded at 0 and 180 deg.
+inline ring::StaticOptions collapse_statics() {
+  ring::StaticOptions st;
+  st.loads.pressure = {12825.0, ring::Pressure::Kind::follower};
+  st.loads.points = {{0.0, {-100.0, 0.0}}, {180.0, {100.0, 0.0}}};
+  st.record = {0.0, 180.0};
+  st.path = true;
+  return st;
 }
 
 #ifdef RINGVIB_SOURCE_DIR  // defined for the test programs
