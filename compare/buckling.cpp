@@ -91,7 +91,7 @@ std::string buckling_text(const ring::Scene& scene, const ring::BucklingResult& 
 std::string buckling_json(const ring::BucklingResult& r) {
   nlohmann::json j;
   j["solver"] = r.solver;
-  for (const auto& [k, v] : r.model) std::visit([&](const auto& x) { j["model"][k] = x; }, v);
+  for (const auto& kv : r.model) std::visit([&](const auto& x) { j["model"][kv.first] = x; }, kv.second);
   j["factors"] = r.factors;
   j["unknowns"] = r.unknowns;
   j["seconds"] = r.seconds;

@@ -20,12 +20,12 @@ const ring::SceneSchema& schema() {
   static const ring::SceneSchema s = [] {
     ring::SceneSchema x;
     x.solvers.push_back({"multibody", "multibody.n", [](const ring::Scene& c) { return c.multibody.n; },
-                         [](const ring::Scene& c) -> long long { return c.multibody.n - 3; }, true, true, {}});
+                         [](const ring::Scene& c) -> long long { return c.multibody.n - 3; }, true, true, true, {}});
     x.solvers.push_back({"lumped", "lumped.n", [](const ring::Scene& c) { return c.lumped.n; },
-                         [](const ring::Scene& c) -> long long { return 3LL * c.lumped.n - 3; }, true, true, {}});
+                         [](const ring::Scene& c) -> long long { return 3LL * c.lumped.n - 3; }, true, true, true, {}});
     x.solvers.push_back({"fem", "fem.elements", [](const ring::Scene& c) { return c.fem.elements; },
                          [](const ring::Scene& c) -> long long { return 2LL * c.fem.elements * c.fem.degree - 3; },
-                         false, false, {{"degree", {fem::kMinDegree, fem::kMaxDegree}}}});
+                         false, false, true, {{"degree", {fem::kMinDegree, fem::kMaxDegree}}}});
     x.default_solver = "multibody";
     x.reference_solver = "fem";
     return x;
