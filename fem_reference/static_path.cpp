@@ -296,6 +296,7 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   options.steps = st.steps;
   if (st.path) {
     options.branch_switch = true;
+    options.branch_side = st.branch_side;
     beam.record_path();
   }
   out.trace = paths::follow(beam, {paths::Vector::Zero(beam.size()), 0.0}, options);

@@ -308,6 +308,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   paths::Continuation policy{statics.steps};
   if (statics.path) {
     policy.branch_switch = true;
+    policy.branch_side = statics.branch_side;
     eq.record_path(rec);
   }
   const paths::Trace path = paths::follow(eq, rest, policy);

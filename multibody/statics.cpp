@@ -249,6 +249,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   paths::Continuation policy{statics.steps};
   if (statics.path) {
     policy.branch_switch = true;
+    policy.branch_side = statics.branch_side;
     std::vector<int> hinges;
     for (double a : statics.record) hinges.push_back(ch.hinge_at(a));
     eq->record_path(hinges);

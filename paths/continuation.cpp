@@ -86,7 +86,10 @@ class Follower {
   bool switch_branch(const State& at, State& onto) {
     const std::optional<Vector> d = eq_.critical_direction(at);
     if (!d || d->size() != N_ || d->head(m_).norm() == 0.0) return false;
-    Tangent t{*d / d->head(m_).norm(), 0.0};
+    Eigen::Index largest = 0;
+    d->head(m_).cwiseAbs().maxCoeff(&largest);
+    const double side = ((*d)(largest) > 0.0 ? 1.0 : -1.0) * (options_.branch_side < 0 ? -1.0 : 1.0);
+    Tangent t{side * *d / d->head(m_).norm(), 0.0};
     double len = kBranchMove / std::max(eq_.move(t.t), 1e-300);
     Tangent ahead;
     for (int attempt = 0; attempt < 6; ++attempt, len *= 0.5) {

@@ -41,7 +41,7 @@
 // - **Branch switching** (Continuation::branch_switch): at a bifurcation the path leaves
 //   the one it followed along the model's critical direction (Equilibrium::
 //   critical_direction, the tangent's eigenvector of least eigenvalue at the bracket's
-//   lower end): an arc step of a tenth of the model's basin with that direction as its
+//   lower end, on the side Continuation::branch_side names): an arc step of a tenth of the model's basin with that direction as its
 //   predictor, whose corrector must land on the branch (its chord at least half along
 //   the direction), then arc-length continuation on the branch as above. At most four
 //   switches; a switch that does not land ends the path at the bifurcation.
@@ -138,6 +138,10 @@ struct Continuation {
   int max_arc_steps = 2000;  ///< arc steps before the path is declared not to come back
   int max_halvings = 10;     ///< a load increment halved this often hands over to the arc
   bool branch_switch = false;  ///< at a bifurcation, leave onto the branch (the header)
+  /// Which side of the critical direction a branch switch takes: +1 the side where the
+  /// direction's largest displacement unknown is positive, -1 the other (a pitchfork has
+  /// two; the eigenvector's own sign is arbitrary, so it is fixed by that rule).
+  int branch_side = 1;
 };
 
 /// How a path ended and where.

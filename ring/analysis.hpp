@@ -40,6 +40,10 @@ struct StaticOptions {
   /// switching at a bifurcation (onto the least stable direction), and the ring touching
   /// itself as an end that is a result, not a failure.
   bool path = false;
+  /// static.branch: at a branch point, the side of the critical direction the path takes
+  /// (+1 "positive": where the direction's largest unknown is positive; -1 "negative").
+  /// The two sides of a symmetric pitchfork are mirror images with one load path.
+  int branch_side = 1;
 };
 
 /// Linear buckling about the undeformed ring ([buckling]): the load factors lambda and

@@ -570,7 +570,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   }
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
-    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path"});
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path", "branch"});
     StaticOptions o;
     o.loads = read_loads(r, *t, sec);
     // A dead load has an equilibrium only when nothing is left to move rigidly (gravity may
@@ -585,6 +585,10 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
     o.record = read_record(r, *t, sec);
     o.path = r.boolean(*t, sec, "path", false);
+    o.branch_side = r.choice(*t, sec, "branch", "positive", {"positive", "negative"}) == "positive" ? 1 : -1;
+    if (t->contains("branch") && !o.path)
+      r.fail("static.branch", t->get("branch"),
+             "chooses the side a path takes at a branch point, and only static.path = true switches branches");
     s.statics = o;
     s.static_request = read_request(r, *t, sec, schema, &SolverSchema::statics);
   }

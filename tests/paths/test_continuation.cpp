@@ -201,6 +201,14 @@ class Pitchfork : public paths::Equilibrium {
     for (int i = 0; i < 2; ++i) k += a_(i) - x.s * b_(i) + 3.0 * x.z(i) * x.z(i) < 0.0 ? 1 : 0;
     return k;
   }
+  /// The least stable unit direction, given with a negative sign (the eigenvector's sign is
+  /// arbitrary: the driver must fix the side by its own rule, not by this one).
+  std::optional<paths::Vector> critical_direction(const paths::State& x) override {
+    Eigen::Vector2d d = (a_ - x.s * b_).array() + 3.0 * x.z.array().square();
+    Eigen::Index i = 0;
+    d.minCoeff(&i);
+    return paths::Vector(-Eigen::Vector2d::Unit(i));
+  }
 
  private:
   Eigen::Vector2d a_, b_;
@@ -222,6 +230,28 @@ TEST(Continuation, BifurcationsEndThePathLocatedToTheBracket) {
     EXPECT_LE(t.bifurcation_high - t.bifurcation_low, 1e-6 * 0.05);
     EXPECT_EQ(t.unstable_after - t.unstable_before, lost);
     EXPECT_NE(paths::failure_message(t, options).find("bifurcation"), std::string::npos);
+  }
+}
+
+// Branch switching onto either side of a pitchfork (static.branch): the path leaves the
+// trivial one at s = a_1 / b_1 = 1/4 and reaches the full load on the branch the closed
+// form gives, u_1^2 = s b_1 - a_1 = 3, u_2 = 0, with u_1 > 0 on the positive side (the
+// direction's largest unknown positive, whatever the sign the model gave it) and u_1 < 0
+// on the negative: one path seen from either side, mirrored. Newton's 1e-13 on the
+// corrections leaves ~1e-12 on u.
+TEST(Continuation, BranchSwitchingFollowsEitherSideOfAPitchfork) {
+  for (int side : {1, -1}) {
+    paths::Continuation options{20};
+    options.branch_switch = true;
+    options.branch_side = side;
+    Pitchfork p(Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(4.0, 0.5));
+    const paths::Trace t = paths::follow(p, {paths::Vector::Zero(2), 0.0}, options);
+    ASSERT_EQ(t.end, paths::Trace::End::reached) << paths::failure_message(t, options);
+    ASSERT_EQ(t.branch_points.size(), 1u);
+    EXPECT_NEAR(t.branch_points[0], 0.25, 1e-6 * 0.05);
+    EXPECT_DOUBLE_EQ(t.state.s, 1.0);
+    EXPECT_NEAR(t.state.z(0), side * std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(t.state.z(1), 0.0, 1e-12);
   }
 }
 
