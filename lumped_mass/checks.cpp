@@ -1,5 +1,7 @@
 #include "lumped_mass/checks.hpp"
 
+#include "lumped_mass/preload.hpp"
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -104,6 +106,18 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
         "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs, "
         "a foundation or gravity from which the ring hangs, to keep it from turning about the pin");
   if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
+}
+
+void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                           const ring::StaticOptions& statics) {
+  if (options.variant != ring::LumpedOptions::Variant::chain)
+    throw std::invalid_argument("lumped: modes.preload = \"static\" is offered by the nonlinear chain only: "
+                                "lumped.variant = \"" + ring::to_string(options.variant) +
+                                "\" has no nonlinear statics here; use \"chain\"");
+  if (options.n > kMaxPreloadHinges)
+    throw std::invalid_argument("lumped: modes.preload = \"static\" solves a dense eigenproblem (O(n^3)): lumped.n (=" +
+                                std::to_string(options.n) + ") must be <= " + std::to_string(kMaxPreloadHinges));
+  check_static(spec, options, statics);
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,

@@ -31,6 +31,13 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 /// from its pin under gravity is refused).
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling);
+/// Modes under load (modes.preload = "static", preload.hpp): the nonlinear chain only
+/// (lumped.variant = "chain": the frames have no nonlinear statics here), lumped.n <=
+/// kMaxPreloadHinges (the dense eigen step), then everything check_static checks. Point masses
+/// are taken (their translational mass is the chain's constant mass matrix, their rotary
+/// inertia J g(x) g(x)^T at the equilibrium).
+void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                           const ring::StaticOptions& statics);
 /// Forced response of the chain: as statics, but rigid motions are allowed when a pin holds
 /// the ring (it swings about it); the integrator "midpoint"
 /// or "newmark" (the same implicit midpoint rule, nonlinear.hpp), 0 < dt <= t_end.

@@ -290,6 +290,37 @@ class ChainStatics : public paths::Equilibrium {
 
 }  // namespace
 
+namespace detail {
+
+StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::RingSpec& spec,
+                           const ring::StaticOptions& statics, const std::vector<int>* record, InertiaRoute route,
+                           const std::string& who) {
+  const int N = 2 * c.n, R = c.rows();
+  const double scale = spec.EI() / (c.l * c.l * c.l);
+  ChainStatics eq(c, loads, scale, spec.radius, route);
+  paths::State rest{paths::Vector::Zero(N + R), 0.0};
+  rest.z.head(N) = c.rest;
+  // static.path: the path through bifurcations (branch switching) to the touch, which is a
+  // result; every other early end still fails.
+  paths::Continuation policy{statics.steps};
+  if (record) {
+    policy.branch_switch = true;
+    policy.branch_side = statics.branch_side;
+    eq.record_path(*record);
+  }
+  StaticState st;
+  st.trace = paths::follow(eq, rest, policy);
+  const bool touched = record && st.trace.end == paths::Trace::End::contact;
+  if (st.trace.end != paths::Trace::End::reached && !touched)
+    throw ring::NumericalError(who + ": " + paths::failure_message(st.trace, policy));
+  st.x = st.trace.state.z.head(N);
+  st.lambda = st.trace.state.z.tail(R) * scale;
+  if (record) st.path = eq.path();
+  return st;
+}
+
+}  // namespace detail
+
 StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                  const ring::StaticOptions& statics, InertiaRoute route) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -299,27 +330,15 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   const auto rec = record_hinges(c, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
   const ChainLoads loads(statics.loads, c.rest, c.l, mass_matrix(c), at);
-  const double scale = spec.EI() / (c.l * c.l * c.l);
-  ChainStatics eq(c, loads, scale, spec.radius, route);
-  paths::State rest{paths::Vector::Zero(N + R), 0.0};
-  rest.z.head(N) = c.rest;
-  // static.path: the path through bifurcations (branch switching) to the touch, which is a
-  // result; every other early end still fails.
-  paths::Continuation policy{statics.steps};
-  if (statics.path) {
-    policy.branch_switch = true;
-    policy.branch_side = statics.branch_side;
-    eq.record_path(rec);
-  }
-  const paths::Trace path = paths::follow(eq, rest, policy);
+  const detail::StaticState st =
+      detail::follow_statics(c, loads, spec, statics, statics.path ? &rec : nullptr, route, "lumped statics");
+  const paths::Trace& path = st.trace;
   const bool touched = statics.path && path.end == paths::Trace::End::contact;
-  if (path.end != paths::Trace::End::reached && !touched)
-    throw ring::NumericalError("lumped statics: " + paths::failure_message(path, policy));
-  const Vec x = path.state.z.head(N);
+  const Vec& x = st.x;
   StaticDetail detail;
   ring::StaticResult& out = detail.result;
   if (statics.path) {
-    out.path = eq.path();
+    out.path = st.path;
     out.branch_points = path.branch_points;
     out.end = touched ? "contact: " + path.contact : "full load";
     out.end_load = touched ? path.end_load : 1.0;
@@ -337,7 +356,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   // What the ground exerts: the support rows' forces -S^T mu and the terms' -grad V_terms
   // (springs, foundation; the clamp's moment has no resultant).
   Vec ground = Vec::Zero(N);
-  if (c.S.rows() > 0) ground -= c.S.transpose() * (path.state.z.tail(c.S.rows()) * scale);
+  if (c.S.rows() > 0) ground -= c.S.transpose() * st.lambda.tail(c.S.rows());
   if (c.terms->any_stiffness()) {
     Vec g = Vec::Zero(N);
     c.terms->add_gradient(x - c.rest, g);

@@ -59,7 +59,12 @@
 #pragma once
 
 #include <array>
+#include <string>
+#include <vector>
 
+#include <Eigen/Core>
+
+#include "paths/continuation.hpp"
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
@@ -93,6 +98,33 @@ enum class InertiaRoute { automatic, dense, frontal };
 StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                  const ring::StaticOptions& statics,
                                  InertiaRoute route = InertiaRoute::automatic);
+
+struct Chain;
+class ChainLoads;
+
+namespace detail {
+
+/// The statics' equilibrium at the end of their path: what the driver returned, the hinge
+/// positions and the multipliers there.
+struct StaticState {
+  paths::Trace trace;              ///< how the path ended, its steps and Newton iterations
+  Eigen::VectorXd x;               ///< hinge positions (2n, chain.hpp's order), m
+  Eigen::VectorXd lambda;          ///< multipliers (links, then supports), N: tangent()'s lambda
+  std::vector<ring::PathPoint> path;  ///< the recorded path (only with `record`), rest first
+};
+
+/// Follows the chain's static equilibrium under `loads` (chain.hpp, loads.hpp) from rest to
+/// the full load of `statics` (static.steps) with the continuation driver: the one path of
+/// solve_static and of the modes under load (preload.hpp). With `record` (static.path): branch
+/// switching at bifurcations, every accepted equilibrium recorded at those hinges, and the
+/// touch a result; without it the path must reach the full load on the branch it starts on.
+/// Throws ring::NumericalError("`who`: why") when it does not. The caller has run the checks
+/// (check_static) and built `c` and `loads` from the same spec. Cost: the statics' (above).
+StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::RingSpec& spec,
+                           const ring::StaticOptions& statics, const std::vector<int>* record, InertiaRoute route,
+                           const std::string& who);
+
+}  // namespace detail
 
 /// Forced response from rest in the undeformed state (see above). Requires the `chain`
 /// variant, a pin (or terms that hold every rigid motion), load and record points on hinges.
