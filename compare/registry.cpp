@@ -18,6 +18,7 @@
 #include "multibody/checks.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
+#include "lumped_mass/preload.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/modes.hpp"
 #include "multibody/statics.hpp"
@@ -50,12 +51,12 @@ void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
                                 "[\"multibody\", \"lumped\", \"fem\"])");
 }
 
-/// modes.preload = "static" (frequencies under load) is the multibody chain's so far.
+/// modes.preload = "static" (frequencies under load) is the chains' and fem's.
 void refuse_preload(const std::string& name, const ring::Scene& s) {
   if (s.modes.preload_static)
     throw std::invalid_argument(name + ": modes.preload = \"static\" (the modes about the loaded equilibrium) is not "
-                                "offered by this solver yet; the multibody chain offers it (modes.solvers = "
-                                "[\"multibody\"], no table.reference)");
+                                "offered by this solver yet; the multibody and lumped chains offer it (modes.solvers = "
+                                "[\"multibody\", \"lumped\"], no table.reference)");
 }
 
 /// Chains and frames: n = 40, 80, ..., 2560 (from enough pieces for the modes asked).
@@ -192,6 +193,8 @@ SolverEntry lumped_entry() {
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.lumped.n;
     if (count == 0) return 5200.0 * n;
+    // Modes under load are dense (lumped_mass/preload.hpp): 89 MB peak at n = 1000.
+    if (s.modes.preload_static) return 95.0 * n * n;
     auto per_node = [count](double factor_peak, double with_basis) {
       return std::max(factor_peak, with_basis + 40.0 * count);
     };
@@ -206,8 +209,8 @@ SolverEntry lumped_entry() {
     return 0.0;
   };
   e.check_modes = [](const ring::Scene& s) {
-    refuse_preload("lumped", s);
-    lumped::check_modes(s.ring, s.lumped);
+    if (s.modes.preload_static) lumped::check_preloaded_modes(s.ring, s.lumped, *s.statics);
+    else lumped::check_modes(s.ring, s.lumped);
   };
   e.check_static = [](const ring::Scene& s) {
     lumped::check_static(s.ring, s.lumped, *s.statics);
@@ -215,7 +218,10 @@ SolverEntry lumped_entry() {
   e.check_response = [](const ring::Scene& s) { lumped::check_response(s.ring, s.lumped, *s.response); };
   e.check_buckling = [](const ring::Scene& s) { lumped::check_buckling(s.ring, s.lumped, *s.buckling); };
   e.modes = [](const ring::Scene& s, int count) {
-    return as_input_error(s, "lumped", [&] { return lumped::compute_modes(s.ring, s.lumped, count); });
+    return as_input_error(s, "lumped", [&] {
+      return s.modes.preload_static ? lumped::compute_modes_under_load(s.ring, s.lumped, *s.statics, count)
+                                    : lumped::compute_modes(s.ring, s.lumped, count);
+    });
   };
   e.statics = [](const ring::Scene& s) {
     return as_input_error(s, "static", [&] { return lumped::solve_static(s.ring, s.lumped, *s.statics); });

@@ -272,8 +272,10 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
   std::map<std::pair<int, std::string>, std::pair<double, double>> per_case;  // (case, solver) -> (x, y)
   bool any_error = false;
   for (const auto& r : rows) any_error |= r.status == "ok" && std::isfinite(r.error_pct);
+  std::string first;  // what "the first value" is, for the axis: "mode 1, omega (rad/s)"
   for (const auto& r : rows) {
     if (r.status != "ok" || r.values.empty()) continue;
+    if (first.empty()) first = r.quantity + (r.analysis == "modes" ? ", omega (rad/s)" : " (m)");
     char* end = nullptr;
     const double x = std::strtod(r.values[0].c_str(), &end);
     if (end == r.values[0].c_str() || *end) return false;  // not a number: no figure
@@ -298,14 +300,29 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
   }
   std::vector<Series> plot;
   bool positive = true;
+  std::vector<double> xs;
   for (auto& [label, s] : curves) {
     plot.push_back(s);
     for (double x : s.x) positive &= x > 0;
+    xs.insert(xs.end(), s.x.begin(), s.x.end());
   }
   if (plot.empty()) return false;
+  // A log axis for values spaced by ratios (n = 20, 40, 80), a linear one for values spaced
+  // by differences (a load raised in equal steps): whichever spacing varies less.
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  if (positive && xs.size() >= 3) {
+    auto spread = [&](auto step) {
+      double lo = HUGE_VAL, hi = 0.0;
+      for (std::size_t i = 1; i < xs.size(); ++i) lo = std::min(lo, step(i)), hi = std::max(hi, step(i));
+      return hi / lo;
+    };
+    positive = spread([&](std::size_t i) { return std::log(xs[i] / xs[i - 1]); }) <
+               spread([&](std::size_t i) { return xs[i] - xs[i - 1]; });
+  }
   plot_series(dir, "sweep",
               any_error ? "Largest |error| against the reference, per case" : "First value of each case",
-              keys[0], any_error ? "max |error| (%)" : "value", plot, positive, any_error);
+              keys[0], any_error ? "max |error| (%)" : first, plot, positive, any_error);
   return true;
 }
 

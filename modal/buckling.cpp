@@ -3,7 +3,10 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <algorithm>
 #include <stdexcept>
+
+#include "ring/errors.hpp"
 
 namespace modal {
 
@@ -56,6 +59,36 @@ LeastStable least_stable(const Eigen::MatrixXd& T, const Eigen::MatrixXd& G) {
   const Eigen::MatrixXd reduced = Z.transpose() * T * Z;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (reduced + reduced.transpose()));
   return {Z * eig.eigenvectors().col(0), eig.eigenvalues()[0]};
+}
+
+LoadedModes loaded_modes(const Eigen::MatrixXd& T, const Eigen::MatrixXd& M, double shift, int count,
+                         const std::string& who) {
+  const Eigen::Index r = T.rows();
+  if (count < 1 || count > r)
+    throw std::invalid_argument(who + ": modes.count (=" + std::to_string(count) + ") must be between 1 and the " +
+                                std::to_string(r) + " modes of the loaded model");
+  const Eigen::MatrixXd Ts = 0.5 * (T + T.transpose());
+  const Eigen::LLT<Eigen::MatrixXd> llt(Ts + shift * M);
+  if (llt.info() != Eigen::Success)
+    throw ring::NumericalError(who + ": the loaded ring is at or past a critical load (T + s M is not positive "
+                               "definite on the constraints' tangent space)");
+  Eigen::MatrixXd C = llt.matrixL().solve(M);
+  C = llt.matrixL().solve(C.transpose()).eval();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
+  LoadedModes out;
+  out.omega2.resize(count);
+  out.vectors.resize(r, count);
+  for (int k = 0; k < count; ++k) {
+    const double w2 = 1.0 / eig.eigenvalues()[r - 1 - k] - shift;
+    if (!(w2 > 0.0))
+      throw ring::NumericalError(who + ": omega^2 = " + std::to_string(w2) +
+                                 " <= 0 at the equilibrium: the loaded ring is at or past a critical load");
+    const Eigen::VectorXd y = llt.matrixU().solve(eig.eigenvectors().col(r - 1 - k));
+    out.max_residual = std::max(out.max_residual, (Ts * y - w2 * M * y).norm() / ((Ts * y).norm() + w2 * (M * y).norm()));
+    out.omega2(k) = w2;
+    out.vectors.col(k) = y;
+  }
+  return out;
 }
 
 }  // namespace modal

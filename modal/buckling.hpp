@@ -28,6 +28,24 @@ struct CriticalFactors {
 CriticalFactors critical_factors(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count,
                                  const std::string& who);
 
+/// The modes of a loaded equilibrium (modes.preload = "static"): the `count` lowest omega^2 of
+/// T x = omega^2 M x, T the tangent stiffness there (symmetric, read as (T + T^T) / 2; the
+/// prestress and the loads' own stiffness in it) and M the mass, both on the constraints'
+/// tangent space. Method: the shifted inverse, S = T + shift M = L L^T (Cholesky), the largest
+/// mu of L^-1 M L^-T (a symmetric eigensolve), omega^2 = 1/mu - shift, x = L^-T y; `shift`
+/// (the solver's bending scale) lifts the near-singular T of a ring close to a critical load
+/// so that S stays definite while the ring is stable. Throws std::invalid_argument naming
+/// modes.count when count exceeds the space, and ring::NumericalError ("`who`: ...") when S
+/// is not positive definite or an omega^2 <= 0: the ring is at or past a critical load.
+/// max_residual: the largest ||T x - w^2 M x|| / (||T x|| + w^2 ||M x||). O(N^3).
+struct LoadedModes {
+  Eigen::VectorXd omega2;   ///< ascending, positive
+  Eigen::MatrixXd vectors;  ///< [N x count], column i the mode of omega2[i]
+  double max_residual = 0.0;
+};
+LoadedModes loaded_modes(const Eigen::MatrixXd& T, const Eigen::MatrixXd& M, double shift, int count,
+                         const std::string& who);
+
 /// An orthonormal basis of ker G (N x (N - rank G); the identity without rows): the
 /// trailing columns of Q in the column-pivoted Householder QR G^T = Q R. O(N^2 C).
 Eigen::MatrixXd kernel_basis(const Eigen::MatrixXd& G, Eigen::Index N);

@@ -196,39 +196,23 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   const paths::Trace path = paths::follow(eq, {eq.rest(), 0.0}, policy);
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError("multibody modes under load: " + paths::failure_message(path, policy));
-  // The pencil (Z^T T Z, Z^T M Z) at the equilibrium, by the shifted inverse of modes.hpp:
-  // the largest mu of S^-1 M, S = T + s M (s the bending scale), omega^2 = 1/mu - s.
+  // The pencil (Z^T T Z, Z^T M Z) at the equilibrium (modal::loaded_modes).
   Chain::ConstraintKinematics ck;
   const Matrix T = eq.tangent(path.state, ck);
   const Vector q = path.state.z.head(ch.dofs());
   const Matrix Z = modal::kernel_basis(ck.G, ch.dofs());
   const Matrix Tr = Z.transpose() * T * Z, Mr = Z.transpose() * ch.mass_matrix(q) * Z;
-  const double shift = modal::bending_scale(spec);
-  const Eigen::LLT<Matrix> llt(Tr + shift * Mr);
-  if (llt.info() != Eigen::Success)
-    throw ring::NumericalError("multibody modes under load: the loaded ring is unstable (T + s M is not positive definite)");
-  Matrix C = llt.matrixL().solve(Mr);
-  C = llt.matrixL().solve(C.transpose()).eval();
-  const Eigen::SelfAdjointEigenSolver<Matrix> eig(0.5 * (C + C.transpose()));
-  const Eigen::Index r = Z.cols();
-  if (count > r) throw std::invalid_argument("multibody: " + std::to_string(count) + " modes asked, the chain has " + std::to_string(r));
+  const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "multibody modes under load");
   ring::ModalResult res;
   res.solver = "multibody";
   res.model["n"] = static_cast<long long>(ch.n());
   res.model["rotary_inertia"] = options.rotary_inertia;
   res.model["preload"] = std::string("static");
-  res.unknowns = r;
+  res.unknowns = Z.cols();
+  res.max_residual = m.max_residual;
   for (int k = 0; k < count; ++k) {
-    const double mu = eig.eigenvalues()[r - 1 - k];
-    const double w2 = 1.0 / mu - shift;
-    if (!(w2 > 0.0))
-      throw ring::NumericalError("multibody modes under load: omega^2 = " + std::to_string(w2) +
-                                 " <= 0 at the equilibrium: the loaded ring is at or past a critical load");
-    const Vector y = llt.matrixU().solve(eig.eigenvectors().col(r - 1 - k));
-    const double resid = (Tr * y - w2 * Mr * y).norm() / ((Tr * y).norm() + w2 * (Mr * y).norm());
-    res.max_residual = std::max(res.max_residual, resid);
-    res.omega.push_back(std::sqrt(w2));
-    res.shapes.push_back(ch.shape_at(q, Z * y));
+    res.omega.push_back(std::sqrt(m.omega2(k)));
+    res.shapes.push_back(ch.shape_at(q, Z * m.vectors.col(k)));
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
