@@ -6,8 +6,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "ring/closed_form.hpp"
@@ -188,6 +191,50 @@ TEST(BucklingCli, FrequenciesUnderLoadFallAndTheOthersRefuse) {
   const auto b = ringvib("table " + dir + "/b.toml -q");
   EXPECT_EQ(b.code, 2);
   EXPECT_NE(b.err.find("modes.preload"), std::string::npos) << b.err;
+  std::filesystem::remove_all(dir);
+}
+
+// bench on a path to contact (scenes/ring-collapse.toml, static.path): the error of the load
+// at which the ring touches, per solver and size. The reference is the reference solver's
+// own path at 2 and 4 times its size (fem.elements = 10 here: 20 and 40 cubic elements; the
+// 40 touch at 0.868359, tests/fem_reference/fem_path_test.cpp); the chain's error falls at
+// its order 2 (within 0.3: the reference's own 2e-4 is 1/13 of the n = 80 error) and its
+// sizes stop once the error is below the reference's change (0.36 % from 20 to 40).
+TEST(BucklingCli, BenchMeasuresTheLoadAtWhichThePathTouches) {
+  const std::string dir = ringtest::temp_dir();
+  std::string text = ringtest::source_text("scenes/ring-collapse.toml");
+  text = text.substr(0, text.find("\n[buckling]"));
+  ringtest::write(dir + "/c.toml", text);
+  const auto r = ringvib("bench " + dir + "/c.toml -q --out " + dir + "/out --set 'static.solvers=[\"multibody\"]' "
+                         "--set fem.elements=10");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream csv(dir + "/out/bench_contact.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "analysis,solver,size,seconds_median,repeats,error_pct,reference_m");
+  std::vector<double> error;
+  double reference = 0.0;
+  while (std::getline(csv, line)) {
+    std::stringstream row(line);
+    std::vector<std::string> cell;
+    for (std::string c; std::getline(row, c, ',');) cell.push_back(c);
+    ASSERT_EQ(cell.size(), 7u) << line;
+    EXPECT_EQ(cell[0], "contact");
+    EXPECT_EQ(cell[1], "multibody");
+    EXPECT_EQ(std::stoi(cell[2]), 20 << error.size());
+    error.push_back(std::stod(cell[5]));
+    reference = std::stod(cell[6]);
+  }
+  ASSERT_EQ(error.size(), 3u);  // 20, 40, 80: the last below the reference's change
+  EXPECT_NEAR(reference, 0.868359, 1e-6);
+  EXPECT_NEAR(std::log2(error[0] / error[1]), 2.0, 0.3);
+  EXPECT_NEAR(std::log2(error[1] / error[2]), 2.0, 0.3);
+  std::ifstream txt(dir + "/out/bench_contact.txt");
+  std::stringstream t;
+  t << txt.rdbuf();
+  EXPECT_NE(t.str().find("touches itself"), std::string::npos) << t.str();
+  EXPECT_NE(t.str().find("fem at elements = 40"), std::string::npos) << t.str();
   std::filesystem::remove_all(dir);
 }
 
