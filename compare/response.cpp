@@ -108,6 +108,34 @@ void plot_static_paths(const std::string& dir, const std::vector<ring::StaticRes
               "load factor", series);
 }
 
+void plot_path_shapes(const std::string& dir, const ring::StaticResult& r) {
+  if (r.path.empty()) return;
+  // Five equilibria, nearest to 0, 1/4, ..., 1 of the path's largest ovalisation.
+  double most = 0.0;
+  for (const auto& p : r.path) most = std::max(most, p.ovalisation);
+  std::vector<std::size_t> chosen;
+  for (int i = 0; i <= 4; ++i) {
+    const double target = most * i / 4.0;
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < r.path.size(); ++k)
+      if (std::abs(r.path[k].ovalisation - target) < std::abs(r.path[best].ovalisation - target)) best = k;
+    if (std::find(chosen.begin(), chosen.end(), best) == chosen.end()) chosen.push_back(best);
+  }
+  std::vector<Series> series;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const ring::PathPoint& p = r.path[chosen[i]];
+    if (p.node_x.empty()) continue;
+    Series s{"load factor " + fmt::format("{:.4g}", p.load_factor) + ", ovalisation " + fmt::format("{:.3f}", p.ovalisation),
+             p.node_x, p.node_y, static_cast<int>(i), 1};
+    s.x.push_back(p.node_x.front());  // closed
+    s.y.push_back(p.node_y.front());
+    series.push_back(std::move(s));
+  }
+  if (series.empty()) return;
+  plot_series(dir, "static_path_shapes", r.solver + ": the ring along its equilibrium path", "x (m)", "y (m)", series,
+              false, false, true);
+}
+
 void plot_response(const std::string& dir, const ring::TimeHistory& h, double radius) {
   std::vector<Series> series;
   for (std::size_t p = 0; p < h.record_angles.size(); ++p) {

@@ -23,6 +23,9 @@ std::string path_summary(const std::vector<ring::StaticResult>& results);
 std::string static_path_csv(const ring::StaticResult& r);
 /// static.path: load factor against ovalisation, every solver's path overlaid (static_path.png).
 void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results);
+/// static_path_shapes.png: the deformed ring of `r`'s path at five equilibria, nearest to 0,
+/// 1/4, ..., 1 of its largest ovalisation (rest to the touch), true to scale.
+void plot_path_shapes(const std::string& dir, const ring::StaticResult& r);
 
 /// Figures of a response: time histories of the recorded points, and the deformed
 /// ring at the snapshot instants (the paper's Figure 5).

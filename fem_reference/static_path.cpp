@@ -272,6 +272,11 @@ ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) con
     least = std::min(least, d);
   }
   pt.ovalisation = (most - least) / radius_;
+  for (unsigned int k = 0; k < n; k += static_cast<unsigned int>(ring::path_shape_stride(n))) {
+    const auto p = at(k);
+    pt.node_x.push_back(p[0]);
+    pt.node_y.push_back(p[1]);
+  }
   return pt;
 }
 

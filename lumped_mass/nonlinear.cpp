@@ -284,6 +284,11 @@ class ChainStatics : public paths::Equilibrium {
       least = std::min(least, d);
     }
     pt.ovalisation = (most - least) / c_.rho;
+    for (int k = 0; k < c_.n; k += ring::path_shape_stride(c_.n)) {
+      const Vec2 p = c_.at(x, k);
+      pt.node_x.push_back(p.x());
+      pt.node_y.push_back(p.y());
+    }
     return pt;
   }
 };

@@ -39,6 +39,10 @@ ring::PathPoint StaticEquilibrium::path_point(double s, const Eigen::Matrix2Xd& 
     least = std::min(least, d);
   }
   pt.ovalisation = (most - least) / chain_.circumradius();
+  for (int k = 0; k < n; k += ring::path_shape_stride(n)) {
+    pt.node_x.push_back(p(0, k));
+    pt.node_y.push_back(p(1, k));
+  }
   return pt;
 }
 

@@ -85,7 +85,19 @@ struct PathPoint {
   /// (largest - smallest distance between opposite nodes) / R: 0 on the circle, about
   /// 2.7 for the inextensible ring flattened until its sides touch (its length is 2 pi R)
   double ovalisation = 0.0;
+  /// The deformed ring: every node's position (every ceil(nodes / kPathShapeNodes)-th node
+  /// of a finer model), ring-centred frame, m; for the figure of the ring as it flattens.
+  std::vector<double> node_x, node_y;
 };
+
+/// The most nodes a PathPoint keeps of its deformed ring: a figure's resolution, and the
+/// path's memory bounded (16 B x 720 per equilibrium) whatever the model's size.
+constexpr int kPathShapeNodes = 720;
+
+/// The stride that keeps at most kPathShapeNodes of `nodes` nodes.
+inline int path_shape_stride(long long nodes) {
+  return static_cast<int>((nodes + kPathShapeNodes - 1) / kPathShapeNodes);
+}
 
 /// Nonlinear static equilibrium.
 struct StaticResult {
