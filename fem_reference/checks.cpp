@@ -156,7 +156,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
   // The loaded modes keep the rounding of the assembled tangent (preload.hpp, "Accuracy"):
   // a refinement that stops on the change between discretizations would stall there.
   need(!o.reference, "fem.reference = true is not offered with modes.preload = \"static\": the frequencies under load "
-                     "keep the rounding of the assembled tangent (1e-9 to 2e-7 of omega, growing with fem.degree and "
+                     "keep the rounding of the assembled tangent (1e-10 to 3e-7 of omega, growing with fem.degree and "
                      "fem.elements), at or above fem.tolerance, so a refinement until they stop changing would stall; "
                      "choose fem.elements and fem.degree (16 elements of degree 6 are converged to ~2e-8 on the paper's ring)");
   need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered with modes.preload = \"static\" (the geometrically "

@@ -1,14 +1,15 @@
 // Internal to fem_reference/: the dense eigen step of a pencil on the geometrically exact
-// beam's reduced unknowns (RingModel), shared by linear buckling (buckling.cpp) and the
-// frequencies under load (preload.cpp). Both pencils have the form
+// beam's reduced unknowns (RingModel) and its refinement, shared by linear buckling
+// (buckling.cpp) and the frequencies under load (preload.cpp). Both pencils have the form
 //
 //   (P + lambda Q) x = 0,   P = K_0 + E symmetric positive definite,
 //
 // K_0 the linear model's stiffness (the beam's tangent at rest, T(0, 0)), E a dense
 // correction (buckling: none, P = K_0, Q = K_1; under load: E = T(q*, 1) - K_0 + s M, so
 // that P = T(q*, 1) + s M, and Q = -M, lambda = omega^2 + s), and the lowest positive
-// lambda are wanted. The step: modal::critical_factors on the dense P and Q (the shared
-// eigen step: Cholesky of P, O(N^3)), then the extended-precision refinement of refine().
+// lambda are wanted. The raw pairs come from modal/ (buckling: raw_pairs(), i.e.
+// modal::critical_factors; under load: modal::loaded_modes, the chains' step), both a
+// Cholesky of P, O(N^3); refine() then improves them in extended precision.
 #pragma once
 
 #include <Eigen/Dense>

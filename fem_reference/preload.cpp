@@ -4,11 +4,13 @@
 #include "fem_reference/preload.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "fem_reference/beam_potential.hpp"
 #include "fem_reference/pencil.hpp"
 #include "fem_reference/static_path.hpp"
+#include "modal/buckling.hpp"
 #include "modal/modes.hpp"
 
 namespace fem::detail {
@@ -58,16 +60,17 @@ Loaded loaded_once(const ring::RingSpec& spec, const Setup& setup, const ring::S
   potential.evaluate(q, 1.0, &residual, &T);
   const Eigen::MatrixXd M = dense(model.mass());
   const double s = modal::bending_scale(spec);
-  const Eigen::MatrixXd P = dense(T) + s * M;  // T + s M: positive definite below a critical load
+  const Eigen::MatrixXd Td = dense(T);
 
+  // The raw pairs by the one loaded-modes step of every solver (modal::loaded_modes: the
+  // shifted inverse of T + s M; it throws, saying the ring is at or past a critical load,
+  // when T + s M is not positive definite or an omega^2 <= 0), with guard pairs for the
+  // refinement, whose pencil is (P + lambda Q), P = T + s M, Q = -M, lambda = omega^2 + s.
+  const int guarded = static_cast<int>(std::min<unsigned int>(N, count + kGuardModes));
+  const modal::LoadedModes raw = modal::loaded_modes(Td, M, s, guarded, kWho);
   Pairs pairs;
-  try {
-    pairs = raw_pairs(P, -M, count, N);
-  } catch (const std::invalid_argument&) {  // count <= N: only P can fail (modal::critical_factors)
-    throw ring::NumericalError(kWho + ": T + s M is not positive definite at the equilibrium (s = " +
-                               std::to_string(s) + " rad^2/s^2, the bending scale): the loaded ring is at or past "
-                               "a critical load");
-  }
+  for (int k = 0; k < guarded; ++k) pairs.factors.push_back(raw.omega2(k) + s);
+  pairs.vectors = raw.vectors;
   SparseMatrix<double>& S = T;  // the sparse P for the refinement's corrections
   S.add(s, model.mass());
   SparseDirectUMFPACK lu;
@@ -76,7 +79,7 @@ Loaded loaded_once(const ring::RingSpec& spec, const Setup& setup, const ring::S
   } catch (const std::exception& e) {
     throw ring::NumericalError(kWho + ": T + s M is singular: " + e.what());
   }
-  pairs = refine(model, lu, P - K0, -M, std::move(pairs), count, kWho);
+  pairs = refine(model, lu, Td - K0 + s * M, -M, std::move(pairs), count, kWho);
 
   Loaded out;
   out.unknowns = N;

@@ -26,13 +26,13 @@
 //    linearized vertex rotation (u - w')/R, the response's constant mass (nonlinear.hpp):
 //    exact for small rotations of the vertex. These are exactly the frequencies of
 //    fem::respond's small oscillations about q*;
-//  - the pencil by the shared dense step (pencil.hpp): with s = modal::bending_scale(spec)
-//    (the modes' shift), P = T + s M = L L^T and the lowest positive factors
-//    lambda = omega^2 + s of (P - lambda M) x = 0 (modal::critical_factors of (P, -M)),
-//    then refined as the buckling factors are (Ritz with K_0 = T(0, 0) applied in
-//    extended precision and E = T(q*, 1) - K_0 + s M in double; inverse-iteration
-//    corrections with the sparse LU of P). P not positive definite, or an omega^2 <= 0,
-//    is a ring::NumericalError: the loaded ring is at or past a critical load;
+//  - the pencil by the chains' loaded-modes step (modal::loaded_modes: with
+//    s = modal::bending_scale(spec), P = T + s M = L L^T and the largest eigenvalues
+//    1 / (omega^2 + s) of L^-1 M L^-T; count + 8 pairs), then refined as the buckling
+//    factors are (pencil.hpp: Ritz with K_0 = T(0, 0) applied in extended precision and
+//    E = T(q*, 1) - K_0 + s M in double; inverse-iteration corrections with the sparse LU
+//    of P). P not positive definite, or an omega^2 <= 0, is a ring::NumericalError: the
+//    loaded ring is at or past a critical load;
 //  - shapes: the displacement field x about the deformed state, sampled at the
 //    ring::kStations common stations by RingModel::sample (radial and tangential in the
 //    undeformed point's directions), as the modes' and buckling's.
@@ -55,24 +55,25 @@
 // its rounding (~eps of the membrane entries EA) reaches a bending mode amplified by the
 // membrane-to-bending spread of the stiffness, as the dense step's does: the refinement
 // takes K_0 exactly but E = T(q*, 1) - K_0 + s M carries that rounding. Measured on the
-// paper's ring (pin 270 deg, roller 90 deg; tests/fem_reference/fem_preload_test.cpp), as
-// the change of omega when the same ring is meshed from the opposite pin (pin 90, roller
-// 270: the same model, other rounding): extensible, 16 elements, 1e-10 (p = 3) to 3e-9
-// (p = 8), up to 1.5e-8 (p = 10..12), 1e-7 to 2.4e-7 (p = 14, 16), 7e-9 at 64 cubic
+// paper's ring (pin 270 deg, roller 90 deg; docs/measured.md), as the worst change of four
+// omega when the same ring is meshed from the opposite pin (pin 90, roller 270: the same
+// model, other rounding), at half the critical pressure: extensible, 16 elements,
+// 2.6e-10 (p = 3) to 3.6e-9 (p = 8), 2.7e-8 (p = 12), 2.8e-7 (p = 16), 3.2e-9 at 64 cubic
 // elements; inextensible (beta = 2e6: 18 times the paper's membrane stiffness, then
-// extrapolated) 4e-8 (p = 3), and a spread of 1e-7 between degrees 6 to 12. At a vanishing
-// load, where E holds little, the unloaded modes to 1e-9 (extensible, p = 8; 6e-8
-// inextensible). The refinement does not remove that rounding (the same level with the
-// dense step alone at half the critical load; 2 to 3 times closer to the unloaded modes at
-// a vanishing load): it makes the pairs those of the assembled pencil, with a residual
-// that says so. A reference refinement that stops when successive discretizations agree to fem.tolerance
-// (default 1e-9) would stall on that rounding, so fem.reference is refused; the
-// convergence is measured instead: order 3.99 in the elements at p = 3, and 53 to 190
-// times per degree at 16 elements (p = 2..5), 16 elements of degree 6 within 2e-8 of 32 of
-// degree 8 (extensible: follower pressure at half its critical value, and a squeeze of
-// 3 EI/R^2 that shortens a diameter by 0.62 R). Against the multibody chain (inextensible):
-// its error falls at order 2.00 (fitted over n = 40, 80, 160: 1.993 to 2.005 for four modes
-// and both loads), 3.6e-5 to 1.2e-3 at n = 160.
+// extrapolated) 3e-8 (p = 3, 8), and a spread of 1.5e-7 between degrees 6 to 12. At a
+// vanishing load, where E holds little, the unloaded modes (compute_modes) to 1.5e-9
+// (p = 6, 8; the load's own change is 1e-9). The refinement does not remove that rounding
+// (the dense step alone is at the same level at half the critical load, and 3 to 60 times
+// farther from the unloaded modes at a vanishing load): it makes the pairs those of the
+// assembled pencil, with a residual that says so. A reference refinement that stops when
+// successive discretizations agree to fem.tolerance (default 1e-9) would stall on that
+// rounding, so fem.reference is refused; the convergence is measured instead: order 3.98
+// to 4.00 in the elements at p = 3, and 53 to 190 times per degree at 16 elements
+// (p = 2..5), 16 elements of degree 6 within 2e-8 of 32 of degree 8 (extensible: follower
+// pressure at half its critical value, and a squeeze of 3 EI/R^2 that shortens a diameter
+// by 0.62 R). Against the multibody chain (inextensible): its error falls at order 2.00
+// (fitted over n = 40, 80, 160: 1.993 to 2.005 for four modes and both loads), 3.6e-5 to
+// 1.2e-3 at n = 160 (tests/fem_reference/fem_preload_test.cpp).
 //
 // Cost per discretization of N reduced unknowns: the statics (per Newton iteration an
 // assembly and a sparse LU, O(N p)), two assemblies, one sparse LU, the dense step O(N^3)

@@ -96,9 +96,9 @@ double fitted_order(const std::vector<int>& sizes, const std::vector<double>& er
 // the circle of the inextensible closed forms), so T(q*, 1) is not exactly K_0 + f K_1;
 // the zero still comes at the bifurcation of the path.
 //  - f = 1e-9: the unloaded modes of the linear model (a different code path: the refined
-//    LAPACK solve of ring_model.hpp) to 1e-8. Measured -7.5e-10, -8.8e-10, -3.9e-10,
+//    LAPACK solve of ring_model.hpp) to 1e-8. Measured -9.4e-10, -9.9e-10, -4.0e-10,
 //    -3.7e-10 for modes 1-4: the load's own first-order change, -f (d omega^2/df) / omega^2
-//    ~ -0.8 f (n = 2) and -0.4 f (n = 3), plus the tangent's round-off (~1e-10 here);
+//    ~ -f (the n = 2 pair) and -0.4 f (n = 3), plus the tangent's round-off (~1e-10 here);
 //  - near the zero the fall is linear: omega^2(0.999) / omega^2(0.99) = 0.1 (measured
 //    0.10039; the multibody chain's bound 0.002), omega^2(0.999) below 2e-3 of the
 //    unloaded (measured 1.09e-3);
@@ -138,7 +138,7 @@ TEST(FemPreload, FrequenciesUnderLoadFallToZeroAtTheCriticalPressure) {
 }
 
 // The result's contract: solver, model, unknowns, the residual in the FE's dual norm
-// (refined pairs: measured 5.8e-12 here; 1e-9 is the bound of a refined pair, far below the
+// (refined pairs: measured 5.7e-12 here; 1e-9 is the bound of a refined pair, far below the
 // 1e-4 at which the refinement fails), and shapes at the common stations held by the
 // supports (both displacements zero at the pin, the tangential one at the roller, whose
 // line is the diameter through the pin; to the sampling's round-off).
@@ -173,7 +173,7 @@ TEST(FemPreload, ResultNamesTheModelAndHoldsTheSupports) {
 // Springs, a point mass with rotary inertia and a foundation enter the loaded tangent and
 // mass as they enter the linear model's K and M: at a vanishing load the modes are the
 // linear model's (compute_modes) to 1e-9 (the refined pairs' round-off at this size is
-// ~1e-10; measured 2.5e-11 at most).
+// ~1e-10; measured 7.5e-11 at most).
 TEST(FemPreload, TermsAtAVanishingLoadAreTheLinearModes) {
   ring::RingSpec spec = ringtest::pin_270_roller_90();
   spec.masses = {{45.0, 0.05 * spec.rho * spec.A() * 2.0 * M_PI * spec.radius, 20.0}};  // 5 % of the ring
@@ -238,7 +238,7 @@ TEST_P(FemPreloadAgainstTheChain, ChainErrorFallsAtOrderTwo) {
 // round-off ~1e-8, preload.hpp) under p-refinement on 16 elements: from degree 2 to 5 the
 // worst of four modes gains more than 30 times per degree (measured 53-192 for both
 // loads: the h^(2(p-1)) of the pencil at h = 2 pi / 16, plus the falling constants) and
-// ends below 1e-6 (measured 8e-8 pressure, 2.6e-7 squeeze).
+// ends below 1e-6 (measured 8.2e-8 pressure, 2.7e-7 squeeze).
 TEST_P(FemPreloadAgainstTheChain, FeGainsOverAnOrderOfMagnitudePerDegree) {
   const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::StaticOptions st = load_of(GetParam(), spec);
