@@ -133,6 +133,17 @@ ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions
   return out;
 }
 
+ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOptions& options,
+                                   const ring::StaticOptions& statics, int count) {
+  std::lock_guard<std::mutex> lock(g_solve);
+  ring::ModalResult out;
+  std::string error;
+  const int status = fem_plugin().modes_under_load(spec, options, statics, count, out, error);
+  if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
+  check(status, error);
+  return out;
+}
+
 bool loaded() { return g_loaded; }
 
 bool available() {

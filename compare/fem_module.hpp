@@ -28,6 +28,11 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& op
 ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions& options,
                               const ring::BucklingOptions& buckling);
 
+/// Frequencies under load (fem::compute_modes_under_load, modes.preload = "static"); throws
+/// std::invalid_argument for input the solver refuses, as statics does.
+ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOptions& options,
+                                   const ring::StaticOptions& statics, int count);
+
 /// True once the plug-in has been loaded in this process (tests use it to show that a
 /// scene without FE never loads it).
 bool loaded();

@@ -4,12 +4,10 @@
 #include "fem_reference/buckling.hpp"
 
 #include <Eigen/Dense>
-#include <limits>
-#include <sstream>
 
 #include "fem_reference/beam_potential.hpp"
+#include "fem_reference/pencil.hpp"
 #include "fem_reference/reference.hpp"
-#include "modal/buckling.hpp"
 
 namespace fem::detail {
 namespace {
@@ -32,142 +30,13 @@ struct Buckled {
   double residual = 0.0;   ///< the worst wanted pair's relative residual (refine())
 };
 
-Eigen::MatrixXd dense(const SparseMatrix<double>& A) {
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(A.m(), A.n());
-  for (auto it = A.begin(); it != A.end(); ++it) D(it->row(), it->column()) = it->value();
-  return D;
-}
-
-/// Lowest positive factors of a pencil and their vectors (columns), ascending; the
-/// columns beyond the wanted ones are guards for the refinement.
-struct Pairs {
-  std::vector<double> factors;
-  Eigen::MatrixXd vectors;
-  double residual = 0.0;  ///< the worst wanted pair's relative residual after refine()
-};
-
-/// The dense eigen step (modal::critical_factors) for `count` + kGuardModes pairs, or,
-/// when the pencil has fewer positive factors, for `count` alone (which then throws
-/// naming buckling.count if even those are not there).
-Pairs raw_pairs(const Eigen::MatrixXd& K0, const Eigen::MatrixXd& K1, int count, unsigned int N) {
-  const int guarded = static_cast<int>(std::min<unsigned int>(N, count + kGuardModes));
-  modal::CriticalFactors cf;
-  try {
-    cf = modal::critical_factors(K0, K1, guarded, "fem");
-  } catch (const std::invalid_argument&) {
-    if (guarded == count) throw;
-    cf = modal::critical_factors(K0, K1, count, "fem");
-  }
-  Pairs p;
-  p.factors.assign(cf.factors.data(), cf.factors.data() + cf.factors.size());
-  p.vectors = cf.vectors;
-  return p;
-}
-
-/// Improves the dense step's pairs as the modes' refine() does theirs (ring_model.hpp):
-/// the thin ring's membrane stiffness makes a double-precision dense step lose 3e-9
-/// (extensible) to 1e-7 (inextensible, beta = 2e6) of the bending factors (measured on the
-/// paper's ring, N = 130..570; refined: ~2e-11), because the K_0 it factors holds the
-/// bending energy only as a cancellation of stiff terms.
-/// Rayleigh-Ritz on the span of the pairs with X^T K_0 X accumulated in extended precision
-/// from the strain fields (RingModel::stiffness_product; K_1 has no stiff part and is
-/// applied in double), then the corrections x -= K_0^-1 r of the wanted pairs, r = K_0 x +
-/// lambda K_1 x (one step of inverse iteration in the form that keeps the digits), the
-/// guards x <- K_0^-1 K_1 x (subspace iteration), each round followed by Ritz, until the
-/// wanted residuals ||r||_* / ||K_0 x||_* (dual norm of K_0: ||r||_*^2 = r^T K_0^-1 r) are
-/// below kRefinedResidual or stop halving, at most kMaxRefinementRounds. A wanted pair
-/// whose residual stays above kAcceptedResidual is a ring::NumericalError.
-/// O(rounds (m N p + N^2 m)) for m pairs.
-Pairs refine(const RingModel& model, const SparseDirectUMFPACK& K0_inverse, const Eigen::MatrixXd& K1, Pairs p,
-             int count) {
-  const unsigned int N = model.n_free();
-  const int m = static_cast<int>(p.vectors.cols());
-  Eigen::MatrixXd& X = p.vectors;
-  Eigen::MatrixXd KX(N, m);
-  Vector<double> x(N), z(N), r(N);
-  auto stiffness = [&](int j) {  // column j of KX, and the Gram column X^T K_0 x_j in extended precision
-    for (unsigned int i = 0; i < N; ++i) x[i] = X(i, j);
-    const std::vector<Real> kx = model.stiffness_product(x);
-    for (unsigned int i = 0; i < N; ++i) KX(i, j) = static_cast<double>(kx[i]);
-    return kx;
-  };
-  auto ritz = [&]() {
-    Eigen::MatrixXd A0(m, m);
-    for (int j = 0; j < m; ++j) {
-      const std::vector<Real> kx = stiffness(j);
-      for (int k = 0; k < m; ++k) {
-        Real a = 0;
-        for (unsigned int i = 0; i < N; ++i) a += X(i, k) * kx[i];
-        A0(k, j) = static_cast<double>(a);
-      }
-    }
-    A0 = 0.5 * (A0 + A0.transpose()).eval();
-    Eigen::MatrixXd A1 = X.transpose() * K1 * X;
-    A1 = 0.5 * (A1 + A1.transpose()).eval();
-    // The small pencil: A0 = L L^T, mu of L^-1 A1 L^-T ascending (lambda = -1/mu).
-    const Eigen::LLT<Eigen::MatrixXd> llt(A0);
-    if (llt.info() != Eigen::Success) throw ring::NumericalError("fem buckling: the refinement's Gram matrix lost its rank");
-    Eigen::MatrixXd C = llt.matrixL().solve(A1);
-    C = llt.matrixL().solve(C.transpose()).eval();
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
-    for (int k = 0; k < count; ++k)
-      if (!(eig.eigenvalues()[k] < 0))
-        throw ring::NumericalError("fem buckling: the refinement lost critical factor " + std::to_string(k + 1));
-    for (int k = 0; k < m; ++k) p.factors[k] = -1.0 / eig.eigenvalues()[k];
-    X = (X * llt.matrixU().solve(eig.eigenvectors())).eval();
-    for (int j = 0; j < m; ++j) stiffness(j);
-  };
-  double previous = std::numeric_limits<double>::infinity();
-  for (unsigned int round = 0;; ++round) {
-    ritz();
-    const Eigen::MatrixXd K1X = K1 * X;
-    double worst = 0.0;
-    Eigen::MatrixXd next = X;
-    for (int k = 0; k < m; ++k) {
-      if (k < count) {
-        for (unsigned int i = 0; i < N; ++i) r[i] = KX(i, k) + p.factors[k] * K1X(i, k);
-        K0_inverse.vmult(z, r);
-        double xkx = 0.0;
-        for (unsigned int i = 0; i < N; ++i) xkx += X(i, k) * KX(i, k);
-        const double rz = r * z;
-        worst = std::max(worst, rz >= 0 && xkx > 0 ? std::sqrt(rz / xkx) : std::numeric_limits<double>::infinity());
-        for (unsigned int i = 0; i < N; ++i) next(i, k) -= z[i];
-      } else {
-        for (unsigned int i = 0; i < N; ++i) r[i] = K1X(i, k);
-        K0_inverse.vmult(z, r);
-        for (unsigned int i = 0; i < N; ++i) next(i, k) = z[i];
-      }
-    }
-    p.residual = worst;
-    if (worst <= kRefinedResidual || worst > 0.5 * previous || round + 1 >= kMaxRefinementRounds) break;
-    previous = worst;
-    X = std::move(next);
-  }
-  if (!(p.residual <= kAcceptedResidual)) {
-    std::ostringstream msg;
-    msg.precision(3);
-    msg << "fem buckling: the eigen step lost its accuracy: a critical factor keeps a relative residual of "
-        << p.residual << " after refinement (accepted: " << kAcceptedResidual << "; " << N
-        << " unknowns): use fewer elements or a lower degree";
-    throw ring::NumericalError(msg.str());
-  }
-  return p;
-}
-
 /// The pencil (T_0, K_1) of `setup` and its lowest positive factors. `refining`: a step
 /// of the reference (a size above the dense limit is then a failed refinement, not a
 /// request that can never work).
 Buckled buckle_once(const ring::RingSpec& spec, const Setup& setup, const ring::BucklingOptions& b, bool refining) {
   const RingModel model(spec, setup);
   const unsigned int N = model.n_free();
-  if (N > kDenseBucklingLimit) {
-    const std::string m = std::to_string(setup.cells()) + " cells of degree " + std::to_string(setup.degree) + " give " +
-                          std::to_string(N) + " unknowns, more than the dense buckling eigen step takes (" +
-                          std::to_string(kDenseBucklingLimit) + ")";
-    if (refining) throw ring::NumericalError("fem: the buckling reference refinement reached " + m);
-    throw std::invalid_argument("fem: fem.elements (=" + std::to_string(setup.elements) + ") with fem.degree (=" +
-                                std::to_string(setup.degree) + "): " + m + "; use fewer elements or a lower degree");
-  }
+  check_dense_size(setup, N, refining, "buckling");
   if (b.count > static_cast<int>(N))
     throw std::invalid_argument("fem: buckling.count (=" + std::to_string(b.count) + ") must be <= the unknowns (=" +
                                 std::to_string(N) + ") of " + std::to_string(setup.cells()) + " cells of degree " +
@@ -203,7 +72,7 @@ Buckled buckle_once(const ring::RingSpec& spec, const Setup& setup, const ring::
   const Eigen::MatrixXd K1 =
       (8.0 * (tangent_at(h) - tangent_at(-h)) - (tangent_at(2.0 * h) - tangent_at(-2.0 * h))) / (12.0 * h);
 
-  const Pairs pairs = refine(model, lu, K1, raw_pairs(K0, K1, b.count, N), b.count);
+  const Pairs pairs = refine(model, lu, Eigen::MatrixXd(), K1, raw_pairs(K0, K1, b.count, N), b.count, "fem buckling");
   Buckled out;
   out.unknowns = N;
   out.path_step = h;

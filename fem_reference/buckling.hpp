@@ -27,7 +27,7 @@
 //  - the lowest buckling.count positive lambda (and 8 guards) by modal::critical_factors
 //    on the dense K_0, K_1 (the shared eigen step), then refined as the modes refine theirs
 //    (Rayleigh-Ritz with K_0 applied in extended precision from the strain fields, and
-//    inverse-iteration corrections; buckling.cpp, refine()): the dense step in double
+//    inverse-iteration corrections; pencil.cpp, refine()): the dense step in double
 //    loses 3e-9 (extensible) to 1e-7 (inextensible) of the bending factors to the membrane
 //    stiffness, the refined factors keep ~2e-11; shapes sampled at the ring::kStations
 //    common stations by the modes' RingModel::sample.

@@ -147,6 +147,22 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
 }
 
+void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_timoshenko(spec, "fem modes under load (the geometrically exact beam is Euler-Bernoulli)");
+  // static.path shapes the path's report, not the equilibrium at the full load.
+  ring::StaticOptions at_full_load = st;
+  at_full_load.path = false;
+  check_static(spec, o, at_full_load);
+  // The loaded modes keep the rounding of the assembled tangent (preload.hpp, "Accuracy"):
+  // a refinement that stops on the change between discretizations would stall there.
+  need(!o.reference, "fem.reference = true is not offered with modes.preload = \"static\": the frequencies under load "
+                     "keep the rounding of the assembled tangent (1e-10 to 3e-7 of omega, growing with fem.degree and "
+                     "fem.elements), at or above fem.tolerance, so a refinement until they stop changing would stall; "
+                     "choose fem.elements and fem.degree (16 elements of degree 6 are converged to ~2e-8 on the paper's ring)");
+  need(!o.rotary_inertia, "fem.rotary_inertia = true is not offered with modes.preload = \"static\" (the geometrically "
+                          "exact beam has no cross-section rotary inertia; linear modes only)");
+}
+
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
   ring::refuse_timoshenko(spec, "fem response (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");

@@ -32,6 +32,12 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& options);
 /// every point load and record point on an FE vertex, finite forces, pressure and gravity;
 /// static.path with neither fem.reference nor fem.extensible = false (the message names the key).
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& statics);
+/// Frequencies under load (modes.preload = "static", preload.hpp): what the statics refuse
+/// (static.path aside: the modes need only the full load's equilibrium), and
+/// fem.rotary_inertia (the geometrically exact beam has no cross-section rotary inertia,
+/// as its response).
+void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& options,
+                           const ring::StaticOptions& statics);
 /// Forced response: as statics, but a pin alone suffices (a pin, or no rigid motion left
 /// free); no rotary inertia, no hinge damping, the integrator "newmark" or
 /// "generalized-alpha" (no other), 0 < dt <= t_end.

@@ -1,5 +1,5 @@
-// The dlopen boundary: wraps fem::compute_modes, write_vtu, solve_static, respond and
-// compute_buckling so that no exception
+// The dlopen boundary: wraps fem::compute_modes, write_vtu, solve_static, respond,
+// compute_buckling and compute_modes_under_load so that no exception
 // crosses it; errors become the exit codes of the README (2 bad input, 3 numerical).
 #include "fem_reference/plugin.hpp"
 
@@ -9,6 +9,7 @@
 #include "fem_reference/buckling.hpp"
 #include "fem_reference/modes.hpp"
 #include "fem_reference/nonlinear.hpp"
+#include "fem_reference/preload.hpp"
 #include "ring/errors.hpp"
 
 namespace {
@@ -72,7 +73,12 @@ int buckling(const ring::RingSpec& spec, const ring::FemOptions& options, const 
   return guarded(error, [&] { out = fem::compute_buckling(spec, options, b); });
 }
 
-constexpr fem::Plugin kPlugin{fem::kAbiVersion, &modes, &write_vtu, &statics, &respond, &buckling};
+int modes_under_load(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::StaticOptions& st,
+                     int count, ring::ModalResult& out, std::string& error) {
+  return guarded(error, [&] { out = fem::compute_modes_under_load(spec, options, st, count); });
+}
+
+constexpr fem::Plugin kPlugin{fem::kAbiVersion, &modes, &write_vtu, &statics, &respond, &buckling, &modes_under_load};
 
 }  // namespace
 

@@ -31,10 +31,14 @@ struct Plugin {
                  ring::TimeHistory& out, int& reason, double& t_reached, std::string& error);
   int (*buckling)(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::BucklingOptions& buckling,
                   ring::BucklingResult& out, std::string& error);
+  /// Frequencies under load (modes.preload = "static"): fem::compute_modes_under_load.
+  int (*modes_under_load)(const ring::RingSpec& spec, const ring::FemOptions& options,
+                          const ring::StaticOptions& statics, int count, ring::ModalResult& out, std::string& error);
 };
 
-/// Version 2 added statics and respond (the geometrically exact beam), 3 buckling.
-constexpr int kAbiVersion = 3;
+/// Version 2 added statics and respond (the geometrically exact beam), 3 buckling, 4
+/// modes_under_load.
+constexpr int kAbiVersion = 4;
 
 }  // namespace fem
 

@@ -1,7 +1,7 @@
 // Internal to fem_reference/: the converged-reference policy of the geometrically exact
 // beam's analyses (statics, response, buckling): raise the degree to fem::kMaxDegree, then
 // split the cells, until two successive discretizations agree to the tolerance. One policy,
-// written once (nonlinear.cpp and buckling.cpp use it). The linear modes keep their own
+// written once (nonlinear.cpp, buckling.cpp and preload.cpp use it). The linear modes keep their own
 // loop (modes.cpp), which also decides when to refine the raw eigenpairs.
 #pragma once
 

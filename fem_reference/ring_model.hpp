@@ -176,7 +176,7 @@ class LinearModel {
   virtual void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
                          const std::string& file) const = 0;
   /// K q (reduced) accumulated in extended precision from the strain fields (apply()),
-  /// for the refinement of another pencil's eigenpairs with this K (buckling.cpp). O(N p).
+  /// for the refinement of another pencil's eigenpairs with this K (pencil.cpp). O(N p).
   std::vector<Real> stiffness_product(const Vector<double>& q) const {
     std::vector<Real> kq, mq;
     apply(q, kq, mq);

@@ -1,5 +1,6 @@
-// The dlopen boundary: build/bin/libringvib_fem.so loads, reports ABI 3 (modes, VTU,
-// statics, response, buckling), and gives exactly the numbers of the statically linked solvers;
+// The dlopen boundary: build/bin/libringvib_fem.so loads, reports ABI 4 (modes, VTU,
+// statics, response, buckling, modes under load), and gives exactly the numbers of the
+// statically linked solvers;
 // a failed integration comes back as code 3 with its partial history.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include "fem_reference/buckling.hpp"
 #include "fem_reference/modes.hpp"
 #include "fem_reference/nonlinear.hpp"
+#include "fem_reference/preload.hpp"
 #include "ring/errors.hpp"
 #include "fem_reference/plugin.hpp"
 #include "support/paper.hpp"
@@ -26,7 +28,7 @@ const fem::Plugin* load() {
 TEST(FemPlugin, DlopenGivesTheSameNumbers) {
   const fem::Plugin* plugin = load();
   ASSERT_NE(plugin, nullptr) << dlerror();
-  EXPECT_EQ(plugin->abi_version, 3);
+  EXPECT_EQ(plugin->abi_version, 4);
   const auto spec = ringtest::pinned_ring();
   ring::FemOptions o;
   ring::ModalResult out;
@@ -64,6 +66,31 @@ TEST(FemPlugin, BucklingGivesTheSameNumbers) {
   b.count = 0;
   EXPECT_EQ(plugin->buckling(held(), o, b, out, error), 2);
   EXPECT_NE(error.find("buckling.count"), std::string::npos) << error;
+}
+
+TEST(FemPlugin, ModesUnderLoadGiveTheSameNumbers) {
+  const fem::Plugin* plugin = load();
+  ASSERT_NE(plugin, nullptr);
+  ring::FemOptions o;
+  o.elements = 8;
+  ring::StaticOptions st;
+  st.loads.pressure = {3000.0, ring::Pressure::Kind::follower};  // ~0.46 of the critical pressure
+  ring::ModalResult out;
+  std::string error;
+  ASSERT_EQ(plugin->modes_under_load(held(), o, st, 2, out, error), 0) << error;
+  const auto direct = fem::compute_modes_under_load(held(), o, st, 2);
+  ASSERT_EQ(out.omega.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(out.omega[i], direct.omega[i]);  // same code, same data
+  EXPECT_EQ(std::get<std::string>(out.model.at("preload")), "static");
+  // A refusal is code 2 naming the key; past the critical pressure (6.49 kN/m on 8 cubic
+  // elements) a numerical failure, code 3.
+  o.reference = true;
+  EXPECT_EQ(plugin->modes_under_load(held(), o, st, 2, out, error), 2);
+  EXPECT_NE(error.find("fem.reference"), std::string::npos) << error;
+  o.reference = false;
+  st.loads.pressure.value = 7000.0;
+  EXPECT_EQ(plugin->modes_under_load(held(), o, st, 2, out, error), 3);
+  EXPECT_NE(error.find("critical load"), std::string::npos) << error;
 }
 
 TEST(FemPlugin, NonlinearAnalysesGiveTheSameNumbers) {
