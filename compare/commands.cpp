@@ -123,6 +123,7 @@ int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int>
     throw ring::InputError(a.scene, "--count", std::to_string(k) + " modes asked, but the " + solver +
                                                    " model has only " + std::to_string(entry.elastic_modes(s)) +
                                                    " elastic modes");
+  check_modes_of(s, entry);  // a solver the scene does not list has not been checked by load()
   files.open();
   const ring::ModalResult m = entry.modes(s, k);
   if (!vtu_dir.empty()) {

@@ -52,11 +52,11 @@ void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
 }
 
 /// modes.preload = "static" (frequencies under load) is the chains' and fem's.
-void refuse_preload(const std::string& name, const ring::Scene& s) {
+void refuse_preload(const ring::Scene& s) {
   if (s.modes.preload_static)
-    throw std::invalid_argument(name + ": modes.preload = \"static\" (the modes about the loaded equilibrium) is not "
-                                "offered by this solver yet; the multibody and lumped chains offer it (modes.solvers = "
-                                "[\"multibody\", \"lumped\"], no table.reference)");
+    throw std::invalid_argument("modes.preload = \"static\" (the modes about the loaded equilibrium) is not "
+                                "offered by this solver; the multibody and lumped chains and fem offer it "
+                                "(modes.solvers = [\"multibody\", \"lumped\", \"fem\"], no table.reference)");
 }
 
 /// Chains and frames: n = 40, 80, ..., 2560 (from enough pieces for the modes asked).
@@ -279,6 +279,9 @@ SolverEntry fem_entry() {
     const double p = s.fem.reference || s.needs_reference() ? fem::kMaxDegree : s.fem.degree;
     const double unknowns = (s.ring.theory == ring::Theory::timoshenko ? 3.0 : 2.0) * p * s.fem.elements;
     if (count == 0) return unknowns * (3400.0 + 650.0 * p);
+    // Modes under load: the statics, then the dense pencil (three N x N matrices and the
+    // eigen-solve's work, fem_reference/preload.hpp), ~100 N^2.
+    if (s.modes.preload_static) return unknowns * (3400.0 + 650.0 * p) + 100.0 * unknowns * unknowns;
     const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
     return unknowns * (factor_peak + 85.0 * std::max(0, count - 23));
   };
@@ -286,15 +289,18 @@ SolverEntry fem_entry() {
   // process without it 7.8-8.8 MiB (compare/guard.cpp).
   e.code_bytes = 160.0 * (1 << 20);
   e.check_modes = [](const ring::Scene& s) {
-    refuse_preload("fem", s);
-    fem::check_modes(s.ring, s.fem);
+    if (s.modes.preload_static) fem::check_preloaded_modes(s.ring, s.fem, *s.statics);
+    else fem::check_modes(s.ring, s.fem);
   };
   e.check_static = [](const ring::Scene& s) {
     fem::check_static(s.ring, s.fem, *s.statics);
   };
   e.check_response = [](const ring::Scene& s) { fem::check_response(s.ring, s.fem, *s.response); };
   e.check_buckling = [](const ring::Scene& s) { fem::check_buckling(s.ring, s.fem, *s.buckling); };
-  e.modes = [](const ring::Scene& s, int count) { return fem_module::modes(s.ring, s.fem, count); };
+  e.modes = [](const ring::Scene& s, int count) {
+    if (!s.modes.preload_static) return fem_module::modes(s.ring, s.fem, count);
+    return as_input_error(s, "modes", [&] { return fem_module::modes_under_load(s.ring, s.fem, *s.statics, count); });
+  };
   e.statics = [](const ring::Scene& s) {
     return as_input_error(s, "static", [&] { return fem_module::statics(s.ring, s.fem, *s.statics); });
   };
@@ -367,7 +373,7 @@ SolverEntry calculix_entry() {
     return calculix::node_count(s.calculix) * (2000.0 + 200.0 * std::max(count, 1));
   };
   e.check_modes = [](const ring::Scene& s) {
-    refuse_preload("calculix", s);
+    refuse_preload(s);
     with_scene_file(s, [&] {
       calculix::check_deck(s.ring, s.calculix);
       calculix::require_ccx();
@@ -489,6 +495,10 @@ void check_scene(const ring::Scene& scene) {
   if (scene.statics && scene.static_request.reference) check(ref.check_static, r, ref.name);
   if (scene.response && scene.response_request.reference) check(ref.check_response, r, ref.name);
   if (scene.buckling && scene.buckling_request.reference) check(ref.check_buckling, r, ref.name);
+}
+
+void check_modes_of(const ring::Scene& scene, const SolverEntry& e) {
+  if (e.check_modes) as_input_error(scene, e.name, [&] { e.check_modes(scene); });
 }
 
 ring::Scene reference_scene(const ring::Scene& scene) {

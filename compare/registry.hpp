@@ -92,6 +92,9 @@ ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
 /// and the reference solver's for the references it asks for: the scene is refused
 /// (ring::InputError naming the solver or analysis, exit 2) before any solver runs.
 void check_scene(const ring::Scene& scene);
+/// One solver's modal checks (SolverEntry::check_modes) on the scene, as check_scene runs
+/// them for its columns: for `modes --solver NAME` on a solver the scene does not list.
+void check_modes_of(const ring::Scene& scene, const SolverEntry& e);
 
 /// The scene the converged references run: the reference solver's reference option on.
 ring::Scene reference_scene(const ring::Scene& scene);

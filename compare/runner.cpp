@@ -44,6 +44,7 @@ ModalRun compute_modal(const ring::Scene& s, std::ostream* progress) {
 
 Table make_table(const ring::Scene& s, const ModalRun& r, bool paper) {
   Table t = build_table(s.title, r.columns, r.reference ? &*r.reference : nullptr, s.modes.count);
+  if (s.modes.preload_static) t.unit = "rad/s about the equilibrium of [static] at its full load (modes.preload)";
   bool gates_need_paper = false;
   for (const auto& g : s.gates) gates_need_paper |= g.against == "paper";
   if (paper || gates_need_paper) t.paper = paper_table();
