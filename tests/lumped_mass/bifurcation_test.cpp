@@ -133,7 +133,9 @@ TEST(LumpedBifurcation, FrontalCountAgreesWithTheDenseEigenvalues) {
           const auto frontal = lumped::unstable_directions(c, L, x, s * unit, s, scale, InertiaRoute::frontal);
           ASSERT_TRUE(dense && frontal);
           EXPECT_EQ(*frontal, *dense) << name(kind) << ", n = " << n << ", s = " << s << ", jiggle " << jiggle;
-          if (s < 1.0 && jiggle == 0.0) EXPECT_EQ(*dense, 0) << name(kind) << ", n = " << n << ", s = " << s;
+          if (s < 1.0 && jiggle == 0.0) {
+            EXPECT_EQ(*dense, 0) << name(kind) << ", n = " << n << ", s = " << s;
+          }
           most = std::max(most, *dense);
         }
       EXPECT_GE(most, 2) << name(kind) << ", n = " << n;
