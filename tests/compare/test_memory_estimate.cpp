@@ -55,12 +55,16 @@ rho = 7.8e3
 section = { shape = "circle", diameter = 0.12 }
 )";
 
-/// A scene with only `solver` in it and one analysis: modes, response or statics.
+/// A scene with only `solver` in it and one analysis: modes, response, statics, or the modes
+/// under a follower pressure of half the critical one (modes.preload = "static").
 std::string scene(const std::string& solver, const std::string& analysis) {
   std::string s = std::string("title = \"memory\"\n") + kRing;
   if (analysis == "modes") return s + "[supports]\npin = 180.0\n[" + solver + "]\n[modes]\ncount = 23\nsolvers = [\"" +
                                   solver + "\"]\n";
   s += "[supports]\npin = 180.0\nroller = 0.0\n[" + solver + "]\n";
+  if (analysis == "preload")
+    return s + "[static]\npressure = { value = 3200.0, kind = \"follower\" }\n[modes]\ncount = 23\npreload = "
+               "\"static\"\nsolvers = [\"" + solver + "\"]\n";
   if (analysis == "respond")
     return s + "[response]\nsolvers = [\"" + solver +
            "\"]\nat = 0.0\nforce = [-20e3, 0.0]\ndt = 0.01\nt_end = 0.02\nrecord = [0.0, 90.0]\n";
@@ -68,7 +72,7 @@ std::string scene(const std::string& solver, const std::string& analysis) {
 }
 
 struct Case {
-  std::string name, solver, analysis;  ///< analysis: the ringvib command (modes, respond, static)
+  std::string name, solver, analysis;  ///< analysis: the ringvib command (modes, respond, static), or preload
   std::vector<std::vector<std::string>> sizes;  ///< two sets of --set overrides
 };
 
@@ -102,6 +106,10 @@ const std::vector<Case> kCases = {
     {"fem_response", "fem", "respond",
      {{"fem.elements=400", "fem.degree=3"}, {"fem.elements=4000", "fem.degree=3"}}},
     {"fem_statics", "fem", "static", {{"fem.elements=400", "fem.degree=3"}, {"fem.elements=4000", "fem.degree=3"}}},
+    {"multibody_preload", "multibody", "preload",
+     {{"multibody.n=400", "multibody.method=\"dense\""}, {"multibody.n=800", "multibody.method=\"dense\""}}},
+    {"lumped_preload", "lumped", "preload", {{"lumped.n=400"}, {"lumped.n=800"}}},
+    {"fem_preload", "fem", "preload", {{"fem.elements=100", "fem.degree=3"}, {"fem.elements=200", "fem.degree=3"}}},
 };
 
 class MemoryEstimate : public ::testing::TestWithParam<Case> {};
@@ -116,7 +124,8 @@ TEST_P(MemoryEstimate, NeverBelowThePeakAndAtMostOneAndAHalfTimesIt) {
     for (const auto& s : sets) label += " " + s;
     SCOPED_TRACE(label);
     const double estimate = cmp::estimate_memory(cmp::load_scene(path, sets)).bytes;
-    std::vector<std::string> args = {c.analysis, path, "--solver", c.solver, "--force", "-q"};
+    std::vector<std::string> args = {c.analysis == "preload" ? "modes" : c.analysis, path, "--solver", c.solver,
+                                     "--force", "-q"};
     for (const auto& s : sets) {
       args.push_back("--set");
       args.push_back(s);
