@@ -44,9 +44,9 @@ bool runs(const ring::NonlinearRequest& q, const std::string& name) {
 
 /// static.path (the equilibrium path with branch switching, contact as a result) is the
 /// multibody and lumped chains' and the FE beam's so far.
-void refuse_path(const std::string& name, const ring::StaticOptions& statics) {
+void refuse_path(const ring::StaticOptions& statics) {
   if (statics.path)
-    throw std::invalid_argument(name + ": static.path = true (the equilibrium path through bifurcations to contact) is "
+    throw std::invalid_argument("static.path = true (the equilibrium path through bifurcations to contact) is "
                                 "not offered by this solver yet; the multibody and lumped chains and fem offer it (static.solvers = "
                                 "[\"multibody\", \"lumped\", \"fem\"])");
 }
@@ -387,7 +387,7 @@ SolverEntry calculix_entry() {
     return with_scene_file(s, [&] { return calculix::compute_modes(s.ring, s.calculix, count, signal_hooks(), s.title); });
   };
   e.check_static = [](const ring::Scene& s) {
-    refuse_path("calculix", *s.statics);
+    refuse_path(*s.statics);
     with_scene_file(s, [&] { calculix::check_static(s.ring, s.calculix, *s.statics); });
   };
   e.statics = [](const ring::Scene& s) {
