@@ -23,7 +23,10 @@ BucklingRun run_buckling(const ring::Scene& scene, const std::string& only, std:
   if (!only.empty() && names.empty()) names.push_back(only);
   for (const auto& name : names) {
     const SolverEntry& e = solver(name);
-    if (!e.buckling) throw ring::InputError(scene.file, "buckling.solvers", "the " + name + " solver has no buckling");
+    if (!e.buckling)
+      throw ring::InputError(scene.file, "buckling.solvers",
+                             "the " + name + " solver has no buckling" +
+                                 (e.no_buckling_because.empty() ? "" : ": " + e.no_buckling_because));
     if (progress) *progress << "ringvib: linear buckling with " << name << "\n";
     run.results.push_back(e.buckling(scene));
   }

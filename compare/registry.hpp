@@ -68,6 +68,8 @@ struct SolverEntry {
   std::function<ring::TimeHistory(const ring::Scene&)> response;
   /// Linear buckling under the scene's [buckling] (ring::BucklingOptions).
   std::function<ring::BucklingResult(const ring::Scene&)> buckling;
+  /// Why the solver has no `buckling`, for the refusal (empty: not said).
+  std::string no_buckling_because;
   /// Writes the `count` lowest mode shapes as VTU files into `dir` (ParaView), if offered.
   std::function<void(const ring::Scene&, int count, const std::string& dir)> write_vtu;
 };
