@@ -104,10 +104,13 @@ std::array<double, 3> free_ring_timoshenko(const RingSpec& spec, int k) {
   return {std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2])};
 }
 
-double ring_on_foundation_inextensional(const RingSpec& spec, int k) {
+double ring_on_foundation_inextensional(const RingSpec& spec, int k, double follower_pressure) {
   const double k2 = static_cast<double>(k) * k;
   const double bending = spec.EI() * k2 * (k2 - 1.0) * (k2 - 1.0) / std::pow(spec.radius, 4);
-  return std::sqrt((bending + spec.foundation.radial * k2 + spec.foundation.tangential) / (spec.rhoA() * (k2 + 1.0)));
+  const double pressure = -follower_pressure * k2 * (k2 - 1.0) / spec.radius;
+  const double w2 =
+      (bending + spec.foundation.radial * k2 + spec.foundation.tangential + pressure) / (spec.rhoA() * (k2 + 1.0));
+  return w2 > 0.0 ? std::sqrt(w2) : std::nan("");
 }
 
 std::array<double, 2> point_mass_shift(const RingSpec& spec, double m0, int k) {

@@ -55,7 +55,14 @@ std::array<double, 3> free_ring_timoshenko(const RingSpec& spec, int k);
 /// foundation it is free_ring_inextensional; with it, the flexible-ring tyre model, e.g.
 /// Gong, "A study of in-plane dynamics of tires", TU Delft 1993, ch. 3). k = 0 is the
 /// rotation held by k_t, k = 1 the translation held by (k_r + k_t) / 2.
-double ring_on_foundation_inextensional(const RingSpec& spec, int k);
+/// Under a uniform follower (hydrostatic) pressure p (N/m, inward) the circle stays the
+/// equilibrium (hoop force p R, the foundation unloaded) and the pressure's potential p times
+/// the enclosed area adds -p k^2 (k^2 - 1) / R to the numerator (the area an inextensible
+/// wave of k lobes loses is pi (k^2 - 1) W^2 / 2 to second order, W = k V its radial
+/// amplitude): omega_k^2 falls linearly in p, to zero at p = [EI (k^2 - 1)^2 / R^3 + (k_r k^2 +
+/// k_t) R / k^2] / (k^2 - 1), (k^2 - 1) EI / R^3 without a foundation (Levy's hydrostatic
+/// buckling pressure). NaN where omega_k^2 <= 0 (past that pressure).
+double ring_on_foundation_inextensional(const RingSpec& spec, int k, double follower_pressure = 0.0);
 
 /// First-order change of omega^2 of the free inextensible ring's mode pair k when a point
 /// mass m0 is attached at polar angle 0 (perturbation of the Rayleigh quotient; the pair
