@@ -109,10 +109,12 @@ SolverEntry multibody_entry() {
     // Modes under load (dense): the statics' path, then T, Z, the reduced pencil and the
     // eigensolver's work; measured 92 and 81 n^2 at n = 400, 800.
     if (count > 0 && s.modes.preload_static) return 100.0 * n * n;
+    // The Timoshenko chain's dense matrices are (2n)^2: its shear angles double the unknowns.
+    const double N = s.ring.theory == ring::Theory::timoshenko ? 2.0 * n : n;
     if (count > 0)
       return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
                  ? n * (420.0 + 33.0 * count)
-                 : (s.ring.paper_terms_only() ? 52.0 : 74.0) * n * n;  // terms: +21.5 n^2 measured at n = 1500
+                 : (s.ring.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
     double bytes = 0.0;
     if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * n * n);
     if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : 60.0 * n * n);

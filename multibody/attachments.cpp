@@ -49,6 +49,18 @@ void add_mean_rotation(const Chain& chain, int h, double scale, Vector& v) {
   v[h] += 0.5 * scale;
 }
 
+/// A += sum_h w[h] a_h a_h^T with a_h the mean rotation of hinge h (n x n on the segments'
+/// rotations). O(n) nonzeros, O(n^2) with the dense A.
+void add_mean_rotations(const Chain& chain, const std::vector<double>& w, Eigen::Ref<Matrix> A) {
+  const int n = chain.n();
+  for (int h = 0; h < n; ++h)
+    if (w[h] > 0.0) {
+      Vector a = Vector::Zero(n);
+      add_mean_rotation(chain, h, 1.0, a);
+      A += w[h] * a * a.transpose();
+    }
+}
+
 }  // namespace
 
 Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
@@ -56,7 +68,6 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
       stiff_(chain.n(), Eigen::Matrix2d::Zero()),
       mass_(chain.n(), Eigen::Matrix2d::Zero()),
       rot_k_(chain.n(), 0.0),
-      rot_j_(chain.n(), 0.0),
       q0_(chain.q0()) {
   const int n = chain.n();
   if (spec.foundation.any())
@@ -73,16 +84,17 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
   }
   if (spec.supports.clamp) kr[hinge(chain, *spec.supports.clamp, "supports.clamp")] = HUGE_VAL;
   // psi condensed: 4K and kr in series on the mean rotation, psi = 4K m / (4K + kr) (file comment).
-  const double k4 = 4.0 * chain.K();
   for (int h = 0; h < n; ++h)
-    if (kr[h] > 0.0) rot_k_[h] = std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h]);
+    if (kr[h] > 0.0) rot_k_[h] = condensed_rotation_stiffness(kr[h], chain.K());
+  std::vector<double> inertia(n, 0.0);
   for (std::size_t i = 0; i < spec.masses.size(); ++i) {
     const ring::PointMass& pm = spec.masses[i];
     const int h = hinge(chain, pm.angle, "masses[" + std::to_string(i + 1) + "]");
     mass_[h].diagonal().array() += pm.mass;
-    const double follows = std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
-    rot_j_[h] += pm.inertia * follows * follows;
+    inertia[h] += pm.inertia;
   }
+  for (int h = 0; h < n; ++h)
+    if (kr[h] > 0.0 || inertia[h] > 0.0) rotations_.push_back({h, kr[h], inertia[h]});
   for (double p : spec.supports.pins) pins_.push_back(hinge(chain, p, "supports.pins"));
   has_stiffness_ = spec.foundation.any() || spec.supports.clamp || !spec.supports.springs.empty();
 }
@@ -102,7 +114,7 @@ double Attachments::energy(const Vector& q) const {
   return e;
 }
 
-void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess) const {
+void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess, bool rotations) const {
   if (!has_stiffness_) return;
   const int n = chain_.n();
   const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
@@ -114,7 +126,7 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix
     grad[j] += c.dot(F[j + 1]);
   }
   if (chain_.free()) grad.tail<2>() += F[0];
-  for (int h = 0; h < n; ++h)
+  for (int h = 0; h < n && rotations; ++h)
     if (rot_k_[h] > 0.0) {
       const int j = (h + n - 1) % n;
       add_mean_rotation(chain_, h, rot_k_[h] * 0.5 * (q[j] - q0_[j] + q[h] - q0_[h]), grad);
@@ -123,25 +135,16 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix
   add_pull_back(chain_, q, stiff_, *hess);
   for (int j = 0; j < n; ++j)
     (*hess)(j, j) -= chain_.l() * (std::cos(q[j]) * F[j + 1].x() + std::sin(q[j]) * F[j + 1].y());
-  for (int h = 0; h < n; ++h)
-    if (rot_k_[h] > 0.0) {
-      Vector a = Vector::Zero(chain_.dofs());
-      add_mean_rotation(chain_, h, 1.0, a);
-      *hess += rot_k_[h] * a * a.transpose();
-    }
+  if (rotations) add_mean_rotations(chain_, rot_k_, hess->topLeftCorner(n, n));
 }
 
 Matrix Attachments::rest_mass() const {
   Matrix M = Matrix::Zero(chain_.dofs(), chain_.dofs());
   add_pull_back(chain_, q0_, mass_, M);
-  for (int h = 0; h < chain_.n(); ++h)
-    if (rot_j_[h] > 0.0) {
-      Vector a = Vector::Zero(chain_.dofs());
-      add_mean_rotation(chain_, h, 1.0, a);
-      M += rot_j_[h] * a * a.transpose();
-    }
   return M;
 }
+
+std::vector<HingeRotation> Attachments::hinge_rotations() const { return rotations_; }
 
 Chain::ConstraintKinematics Attachments::pins(const Vector& q) const {
   const int rows = pin_rows();
@@ -162,8 +165,9 @@ LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {
   t.K = Matrix::Zero(chain.dofs(), chain.dofs());
   Vector grad = Vector::Zero(chain.dofs());
   Eigen::Ref<Matrix> K(t.K);
-  a.add_stiffness(q0, grad, &K);  // at rest u = 0: no curvature term, no force
+  a.add_stiffness(q0, grad, &K, false);  // at rest u = 0: no curvature term, no force
   t.M = a.rest_mass();
+  t.rotations = a.hinge_rotations();
   t.J = a.pins(q0).G;
   return t;
 }

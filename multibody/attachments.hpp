@@ -10,7 +10,7 @@
 //   stands for): the Winkler foundation lumped at the hinges, its energy exactly quadratic
 //   in u_k since its directions are those of the undeformed point;
 // - an elastic support at hinge h: diag(kx, ky) on u_h, and kr on the hinge's rotation psi;
-// - a point mass at hinge h: m on u_h, its inertia on psi;
+// - a point mass at hinge h: m on u_h, its inertia J on psi;
 // - a further pin at hinge h: u_h = 0 (2 constraint rows);
 // - a clamp at hinge h: psi = 0.
 // The hinge's rotation psi: the spring EI/l at a hinge stands for the bending from one
@@ -21,6 +21,11 @@
 // psi = 4K m / (4K + kr). A clamp is kr -> infinity: 4K on m. (A constraint m = 0 instead
 // converges at order 1 only, 1.04 measured over n = 80 .. 320: the curvature jumps at a
 // clamp, so m = O(l) there.) m is linear in the angles, so these terms are quadratic in q.
+// A point inertia cannot be condensed so (psi then moves with its own inertia): in the linear
+// modes psi becomes an unknown of its own, on the two half springs (linear_model.hpp). The
+// inertia put on m instead converges at order 1 only, for the same reason as the clamp's
+// constraint (measured: 2.60, 1.43, 0.75 % at n = 80, 160, 320 on scenes/thick-ring.toml
+// with a 1e-4 kg m^2 inertia, against the FE reference; order 2 with psi an unknown).
 //
 // ## Pull-back
 // u_k depends on the angles through p_k = p_0 + l sum_{j<k} e(phi_j): d u_k / d phi_j =
@@ -32,12 +37,30 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <vector>
 
 #include "multibody/chain.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody::detail {
+
+/// The terms on hinge h's rotation: a rotational spring to the ground kr (N m/rad; infinity:
+/// a clamp) and a point inertia (kg m^2).
+struct HingeRotation {
+  int hinge = 0;
+  double kr = 0.0;
+  double inertia = 0.0;
+  /// The inertia turns the hinge's rotation into an unknown of its own (linear_model.hpp);
+  /// a clamp holds it still.
+  bool moves() const { return inertia > 0.0 && !std::isinf(kr); }
+};
+
+/// kr and the two half springs 2 EI/l of a hinge (file comment) condensed onto the mean
+/// rotation of its segments: 4K kr / (4K + kr), 4K for a clamp. K = EI/l.
+inline double condensed_rotation_stiffness(double kr, double K) {
+  return std::isinf(kr) ? 4.0 * K : 4.0 * K * kr / (4.0 * K + kr);
+}
 
 /// The spec's terms on a chain (whose anchor is spec.supports.pin or the free ring's
 /// fallback). Immutable; every member O(n) memory.
@@ -51,10 +74,15 @@ class Attachments {
   double energy(const Vector& q) const;
   /// Adds its gradient to `grad` (dofs) and, if not null, its Hessian to `hess` (dofs x
   /// dofs, dense, e.g. a block of a bigger matrix). O(n) and O(n^2); nothing without such
-  /// terms.
-  void add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess) const;
-  /// The point masses' mass matrix at rest (dofs x dofs, dense). O(n^2).
+  /// terms. `rotations` = false leaves out the terms on the hinges' rotation (rotational
+  /// springs, the clamp), which hinge_rotations() gives apart.
+  void add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess, bool rotations = true) const;
+  /// The point masses' mass matrix at rest, their translations only (dofs x dofs, dense;
+  /// their inertias are hinge_rotations()'). O(n^2).
   Matrix rest_mass() const;
+  /// The terms on the hinges' rotations as they are, for the linear modes: kr (infinity at a
+  /// clamp) and the point inertias, by hinge. O(n).
+  std::vector<HingeRotation> hinge_rotations() const;
 
   /// The further pins' rows (2 per pin): g = u_h, G = d u_h / d q (2p x dofs), and the
   /// rows' Hessians, diagonal in the angles (hess(i, j) = d^2 g_i / d phi_j^2), as
@@ -65,17 +93,28 @@ class Attachments {
  private:
   const Chain& chain_;
   std::vector<Eigen::Matrix2d> stiff_, mass_;  ///< B_k of the springs and of the masses, by hinge
-  std::vector<double> rot_k_, rot_j_;          ///< on the mean rotation m_h: stiffness, inertia
+  std::vector<double> rot_k_;                  ///< condensed on the mean rotation m_h, by hinge
+  std::vector<HingeRotation> rotations_;       ///< kr and inertias as given
   std::vector<int> pins_;                      ///< hinges of the further pins
   Vector q0_;
   bool has_stiffness_ = false;                 ///< a foundation, a spring or a clamp
 };
 
-/// The terms linearized about the rest n-gon, for the linear modes.
+/// The terms linearized about the rest n-gon, for the linear modes. The terms on a hinge's
+/// rotation are kept as they are: the Euler-Bernoulli chain puts them on its segment angles,
+/// the Timoshenko chain on its sections' rotations, and a point inertia makes the hinge's
+/// rotation an unknown of its own (linear_model.hpp).
 struct LinearTerms {
-  Matrix K;  ///< dofs x dofs stiffness (foundation, springs, clamp)
-  Matrix M;  ///< dofs x dofs mass (point masses)
+  Matrix K;  ///< dofs x dofs stiffness of the translations (foundation, springs' kx, ky)
+  Matrix M;  ///< dofs x dofs mass of the translations (point masses)
   Matrix J;  ///< the further pins' rows x dofs
+  std::vector<HingeRotation> rotations;  ///< springs' kr, the clamp, point inertias
+  /// The hinge rotations that are unknowns (HingeRotation::moves).
+  int hinge_dofs() const {
+    int d = 0;
+    for (const HingeRotation& r : rotations) d += r.moves();
+    return d;
+  }
 };
 LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec);
 

@@ -43,9 +43,11 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
 
 /// The backend of `analysis` on `spec`: "auto" also stays dense when the spec has terms
 /// beyond the paper's (supports.pins, clamp, springs, masses, foundation), which only the
-/// dense paths assemble (attachments.hpp). O(1).
+/// dense paths assemble (attachments.hpp), and for the Timoshenko chain (linear_model.hpp). O(1).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, Analysis analysis) {
-  if (options.method == ring::MultibodyOptions::Method::automatic && !spec.paper_terms_only()) return Backend::dense;
+  if (options.method == ring::MultibodyOptions::Method::automatic &&
+      (!spec.paper_terms_only() || spec.theory == ring::Theory::timoshenko))
+    return Backend::dense;
   return backend(options, analysis);
 }
 

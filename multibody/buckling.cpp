@@ -12,7 +12,7 @@ namespace multibody {
 
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling) {
-  ring::refuse_timoshenko(spec, "multibody");
+  ring::refuse_timoshenko(spec, "the multibody buckling (its Timoshenko chain has linear modes only)");
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("multibody.method = \"sparse\": linear buckling is computed on the dense path (segment "
                                 "angles) only; use \"dense\" or \"auto\"");

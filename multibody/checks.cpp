@@ -9,8 +9,12 @@
 namespace multibody {
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
-  ring::refuse_timoshenko(spec, "multibody");
-  const bool sparse = backend(options, Analysis::modes) == Backend::banded;
+  const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
+  // The shear angles live on the dense path only (linear_model.hpp); "auto" keeps it dense.
+  if (spec.theory == ring::Theory::timoshenko && sparse)
+    throw std::invalid_argument(
+        "multibody method = \"sparse\" (the O(n) modes path) has no Timoshenko chain (ring.theory = "
+        "\"timoshenko\"): set multibody.method = \"dense\" or \"auto\"");
   // The paper's dependent angles are chosen for its pin and roller; further constraint rows
   // (pins, a clamp) need the robust null-space basis, and the O(n) path assembles none of
   // the terms beyond the paper's ring (backend.hpp keeps "auto" dense for them).
@@ -41,7 +45,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
       throw std::invalid_argument("static.path = true needs the dense statics (its branch switching takes the tangent's "
                                   "eigenvectors): set multibody.method = \"dense\"");
   }
-  ring::refuse_timoshenko(spec, "multibody");
+  ring::refuse_timoshenko(spec, "the multibody statics (its Timoshenko chain has linear modes only)");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
@@ -69,7 +73,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  ring::refuse_timoshenko(spec, "multibody");
+  ring::refuse_timoshenko(spec, "the multibody response (its Timoshenko chain has linear modes only)");
   // The dense path takes the foundation, springs and the clamp (stiffness only); point
   // masses (a configuration-dependent mass) and further pins (constraint rows) it has not.
   if (!spec.masses.empty() || !spec.supports.pins.empty())

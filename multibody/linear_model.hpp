@@ -48,13 +48,22 @@ struct LinearModel {
   Eigen::HouseholderQR<Matrix> qr;    ///< robust: QR of J^T
 };
 
+/// The Timoshenko chain's per-segment shear spring and section inertia (file comment).
+struct Shear {
+  double stiffness = 0.0;  ///< kGA l, N m (per rad^2 of shear angle)
+  double inertia = 0.0;    ///< rho I l, kg m^2
+  /// Of `spec`'s Timoshenko ring on segments of length l.
+  static Shear of(const ring::RingSpec& spec, double l) { return {spec.kGA() * l, spec.rhoI() * l}; }
+};
+
 /// Assembles K0 and M0 (and the implicit D) for `chain` with the given dependent-coordinate
 /// choice, with `terms` (attachments.hpp: foundation, springs, masses, further pins, a
-/// clamp) added to K, M(q0) and the constraint rows when given (robust only). Cost
-/// O(n^2 c) time, O(n^2) memory (c = constraints). Throws ring::NumericalError if the
-/// paper's block J_2 is singular.
+/// clamp) added to K, M(q0) and the constraint rows when given (robust only), and with the
+/// shear angles of the Timoshenko chain when `shear` is given (file comment: the unknowns
+/// become (q, gamma), dofs + n). Cost O(N^2 c) time, O(N^2) memory (c = constraints, N the
+/// unknowns). Throws ring::NumericalError if the paper's block J_2 is singular.
 LinearModel linearize(const Chain& chain, ring::MultibodyOptions::Dependent dependent,
-                      const detail::LinearTerms* terms = nullptr);
+                      const detail::LinearTerms* terms = nullptr, const Shear* shear = nullptr);
 
 /// 2-norm condition number of the paper's block J_2 (the last two angle columns of the
 /// closure rows of J, c x dofs). O(1).

@@ -130,10 +130,11 @@ class ModesPath {
 /// The dense path: K0, M0 and D formed (O(n^2) memory, O(n^3) time).
 class DensePath final : public ModesPath {
  public:
-  DensePath(const Chain& chain, Dependent dependent, double s, const detail::LinearTerms* terms)
-      : chain_(chain), dependent_(dependent), s_(s), terms_(terms) {}
+  DensePath(const Chain& chain, Dependent dependent, double s, const detail::LinearTerms* terms,
+            std::optional<Shear> shear)
+      : chain_(chain), dependent_(dependent), s_(s), terms_(terms), shear_(shear) {}
   void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
-    model = linearize(chain_, dependent_, terms_);
+    model = linearize(chain_, dependent_, terms_, shear_ ? &*shear_ : nullptr);
     dense_pairs(model, s_, nev, omega2, vecs);
   }
   void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
@@ -151,7 +152,8 @@ class DensePath final : public ModesPath {
     KX = sol.model.K0 * sol.x.middleCols(k0, nb);
     MX = sol.model.M0 * sol.x.middleCols(k0, nb);
   }
-  void shapes(ModalSolution& sol) override { sol.dq = sol.model.expand(sol.x); }
+  // The chain's coordinates q; the Timoshenko chain's shear angles (the rows below) do not move it.
+  void shapes(ModalSolution& sol) override { sol.dq = sol.model.expand(sol.x).topRows(chain_.dofs()); }
   const char* name() const override { return "dense"; }
 
  private:
@@ -159,6 +161,7 @@ class DensePath final : public ModesPath {
   Dependent dependent_;
   double s_;
   const detail::LinearTerms* terms_;
+  std::optional<Shear> shear_;
 };
 
 /// The O(n) path: the shifted constrained solve as the operator, K and M as products,
@@ -230,7 +233,10 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   const bool sparse = backend(options, spec, count) == Backend::banded;
   std::optional<detail::LinearTerms> terms;
   if (!spec.paper_terms_only()) terms = detail::linear_terms(chain, spec);
-  const int N = chain.dofs(), r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
+  std::optional<Shear> shear;  // the Timoshenko chain (linear_model.hpp), dense only (checks.cpp)
+  if (spec.theory == ring::Theory::timoshenko) shear = Shear::of(spec, chain.l());
+  const int N = chain.dofs() + (shear ? chain.n() : 0) + (terms ? terms->hinge_dofs() : 0);
+  const int r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
   const int expected_rigid = spec.rigid_modes();
   if (count < 1 || count > r - expected_rigid)
     throw std::invalid_argument("multibody: count = " + std::to_string(count) +
@@ -242,7 +248,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (sparse)
     path = std::make_unique<SparsePath>(chain, s, eigensolver);
   else
-    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr);
+    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr, shear);
 
   ModalSolution sol;
   Vector omega2;  // computed eigenvalues, ascending
@@ -275,6 +281,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   modal::assemble(res, "multibody", omega2, sel, relative);
   res.model["n"] = static_cast<long long>(chain.n());
   res.model["rotary_inertia"] = options.rotary_inertia;
+  res.model["theory"] = ring::to_string(spec.theory);
   res.model["dependent"] = ring::to_string(options.dependent);
   res.model["method"] = std::string(path->name());
   res.unknowns = r;

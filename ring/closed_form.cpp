@@ -104,6 +104,23 @@ std::array<double, 3> free_ring_timoshenko(const RingSpec& spec, int k) {
   return {std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2])};
 }
 
+std::array<double, 2> free_ring_timoshenko_inextensional(const RingSpec& spec, int k) {
+  if (k < 2) throw std::invalid_argument("free_ring_timoshenko_inextensional: k must be >= 2, got " + std::to_string(k));
+  if (!(spec.kappa() > 0.0))
+    throw std::invalid_argument("free_ring_timoshenko_inextensional: the shear coefficient must be > 0");
+  const double R = spec.radius, k2 = static_cast<double>(k) * k, c = k2 - 1.0;
+  const double s = spec.kGA() / (R * R), bend = spec.EI() * k2 / (R * R * R * R);
+  const double f = spec.foundation.tangential + k2 * spec.foundation.radial;
+  const double k11 = s * c * c + f, k12 = s * c, k22 = s + bend;
+  const double det = s * c * c * bend + f * k22;  // k11 k22 - k12^2 without the s^2 cancellation
+  const double m1 = spec.rhoA() * (1.0 + k2), m2 = spec.rhoI() / (R * R);
+  // m1 m2 x^2 - (k11 m2 + k22 m1) x + det = 0, its discriminant written as a sum of squares
+  // and the lower root as 2 det / (b + sqrt(disc)): no cancellation in either.
+  const double b = k11 * m2 + k22 * m1, a = m1 * m2;
+  const double disc = std::sqrt(std::pow(k11 * m2 - k22 * m1, 2) + 4.0 * a * k12 * k12);
+  return {std::sqrt(2.0 * det / (b + disc)), std::sqrt((b + disc) / (2.0 * a))};
+}
+
 double ring_on_foundation_inextensional(const RingSpec& spec, int k, double follower_pressure) {
   const double k2 = static_cast<double>(k) * k;
   const double bending = spec.EI() * k2 * (k2 - 1.0) * (k2 - 1.0) / std::pow(spec.radius, 4);

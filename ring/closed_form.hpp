@@ -45,6 +45,19 @@ std::array<double, 2> free_ring_extensible(const RingSpec& spec, int k);
 /// shear-rotation}; k = 1 holds the rigid translation (0). Needs spec.kappa() > 0.
 std::array<double, 3> free_ring_timoshenko(const RingSpec& spec, int k);
 
+/// The free Timoshenko ring of free_ring_timoshenko made inextensible (EA -> infinity: the
+/// strain u' + w = 0, so w = -k U cos k theta on u = U sin k theta), k >= 2 waves: the two
+/// branches {flexural, shear}, ascending, in rad/s, of the 2x2 pencil on (U, P), R psi =
+/// P sin k theta:
+/// \f$ K = \frac{\kappa G A}{R^2} b b^T + \frac{EI k^2}{R^4} e_2 e_2^T + (k_t + k^2 k_r) e_1 e_1^T,
+///      b = (k^2 - 1, 1),\quad M = \mathrm{diag}(\rho A (1 + k^2), \rho I / R^2) \f$.
+/// The limit of the Timoshenko chain (multibody/linear_model.hpp), whose rigid segments keep
+/// the centroid line's length. As kGA -> infinity the flexural branch is the inextensible
+/// ring with the cross-section's rotary inertia, omega^2 = EI k^2 (k^2-1)^2 / R^4 /
+/// (rho A (1 + k^2) + rho I (k^2 - 1)^2 / R^2) (Love, sec. 294, with Rayleigh's rotary
+/// inertia); with rho I -> 0 too, free_ring_inextensional. Needs spec.kappa() > 0.
+std::array<double, 2> free_ring_timoshenko_inextensional(const RingSpec& spec, int k);
+
 /// The free, inextensible thin ring on a Winkler foundation (spec.foundation: radial k_r,
 /// tangential k_t, N/m^2), Euler-Bernoulli, no rotary inertia, k waves (k >= 0):
 /// \f$ \omega_k^2 = \frac{EI\,k^2(k^2-1)^2/R^4 + k_r k^2 + k_t}{\rho A\,(k^2+1)} \f$.

@@ -83,6 +83,8 @@ const std::vector<Case> kCases = {
     {"multibody_modes_dense", "multibody", "modes",
      {{"multibody.n=1000", "multibody.method=\"dense\""}, {"multibody.n=2000", "multibody.method=\"dense\""}}},
     {"multibody_modes_sparse", "multibody", "modes", {{"multibody.n=100000"}, {"multibody.n=250000"}}},
+    {"multibody_timoshenko_modes", "multibody", "modes",  // dense: 2n unknowns
+     {{"multibody.n=500", "ring.theory=\"timoshenko\""}, {"multibody.n=1000", "ring.theory=\"timoshenko\""}}},
     {"multibody_response_dense", "multibody", "respond",
      {{"multibody.n=400", "multibody.method=\"dense\""}, {"multibody.n=800", "multibody.method=\"dense\""}}},
     {"multibody_response_sparse", "multibody", "respond", {{"multibody.n=30000"}, {"multibody.n=100000"}}},
