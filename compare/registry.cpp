@@ -80,6 +80,8 @@ SolverEntry multibody_entry() {
   e.size_name = "n";
   e.size = [](const ring::Scene& s) { return s.multibody.n; };
   e.set_size = [](ring::Scene& s, int n) { s.multibody.n = n; };
+  e.theory = [](const ring::Scene& s) { return s.multibody.theory.value_or(s.ring.theory); };
+  e.theory_key = "multibody.theory";
   // n angles (+2 for a free ring) - 2 closures - the roller's row - 2 per further pin - the
   // rigid modes the supports leave (a clamp is a spring on the chain: multibody/attachments.hpp).
   e.elastic_modes = [](const ring::Scene& s) -> long long {
@@ -156,6 +158,12 @@ SolverEntry lumped_entry() {
   e.size_name = "n";
   e.size = [](const ring::Scene& s) { return s.lumped.n; };
   e.set_size = [](ring::Scene& s, int n) { s.lumped.n = n; };
+  // The variant is the model (lumped_mass/checks.hpp check_theory): no lumped.theory.
+  e.theory = [](const ring::Scene& s) {
+    return s.lumped.variant == ring::LumpedOptions::Variant::timoshenko_frame ? ring::Theory::timoshenko
+                                                                              : ring::Theory::euler_bernoulli;
+  };
+  e.theory_key = "lumped.variant";
   // Inertial DOFs (chain: n after the n link rows; frame: the 2n translations and the
   // rotations that carry a point inertia; frame-consistent and timoshenko-frame (rho I on
   // every rotation): all 3n) minus the supports'
@@ -250,6 +258,8 @@ SolverEntry fem_entry() {
   e.integer_ranges["degree"] = {fem::kMinDegree, fem::kMaxDegree};
   e.size = [](const ring::Scene& s) { return s.fem.elements; };
   e.set_size = [](ring::Scene& s, int n) { s.fem.elements = n; };
+  e.theory = [](const ring::Scene& s) { return s.fem.theory.value_or(s.ring.theory); };
+  e.theory_key = "fem.theory";
   // C0 elements of degree p: p nodes per cell and two displacement components (u, w), three
   // fields (u, w, psi) for a Timoshenko ring.
   e.elastic_modes = [](const ring::Scene& s) -> long long {
@@ -425,9 +435,52 @@ std::function<Result(const ring::Scene&)> named_and_timed(std::string name,
   };
 }
 
+/// `f` run on the solver's model scene (model_scene): one place that hands every analysis,
+/// check and estimate of an entry the ring in the solver's own theory.
+template <class R, class... Args>
+std::function<R(const ring::Scene&, Args...)> on_model(const SolverEntry& e,
+                                                        std::function<R(const ring::Scene&, Args...)> f) {
+  if (!f || !e.theory) return f;
+  const auto theory = e.theory;
+  return [theory, f](const ring::Scene& s, Args... args) {
+    ring::Scene m = s;
+    m.ring.theory = theory(s);
+    return f(m, args...);
+  };
+}
+
+/// The model's theory in the result's description (ModalResult::model, BucklingResult::model),
+/// so that a table, report or JSON says which theory each column is.
+template <class Result, class... Args>
+std::function<Result(const ring::Scene&, Args...)> with_theory(std::function<Result(const ring::Scene&, Args...)> f) {
+  if (!f) return f;
+  return [f](const ring::Scene& s, Args... args) {
+    Result r = f(s, args...);
+    r.model["theory"] = ring::to_string(s.ring.theory);
+    return r;
+  };
+}
+
+void apply_model_theory(SolverEntry& e) {
+  // with_theory inside on_model: the description reads the theory of the model scene.
+  e.modes = on_model(e, with_theory(e.modes));
+  e.buckling = on_model(e, with_theory(e.buckling));
+  e.statics = on_model(e, e.statics);
+  e.response = on_model(e, e.response);
+  e.check_modes = on_model(e, e.check_modes);
+  e.check_static = on_model(e, e.check_static);
+  e.check_response = on_model(e, e.check_response);
+  e.check_buckling = on_model(e, e.check_buckling);
+  e.elastic_modes = on_model(e, e.elastic_modes);
+  e.memory = on_model(e, e.memory);
+  e.buckling_memory = on_model(e, e.buckling_memory);
+  e.write_vtu = on_model(e, e.write_vtu);
+}
+
 std::vector<SolverEntry> make_registry() {
   std::vector<SolverEntry> v = {multibody_entry(), lumped_entry(), fem_entry(), calculix_entry()};
   for (auto& e : v) {
+    apply_model_theory(e);
     if (!e.bench_sweep) {
       const SolverEntry copy = e;
       e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
@@ -514,6 +567,13 @@ void check_modes_of(const ring::Scene& scene, const SolverEntry& e) {
 ring::Scene reference_scene(const ring::Scene& scene) {
   ring::Scene s = scene;
   s.fem.reference = true;
+  s.fem.theory.reset();  // the reference solves the ring's physics, ring.theory
+  return s;
+}
+
+ring::Scene model_scene(const ring::Scene& scene, const SolverEntry& e) {
+  ring::Scene s = scene;
+  if (e.theory) s.ring.theory = e.theory(scene);
   return s;
 }
 

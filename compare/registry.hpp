@@ -34,6 +34,13 @@ struct SolverEntry {
   /// Pieces around the ring (nodes at anchor + 360 k / size), and the scene with it changed.
   std::function<int(const ring::Scene&)> size;
   std::function<void(ring::Scene&, int)> set_size;
+  /// The beam theory of its model under the scene's options (multibody.theory, fem.theory,
+  /// lumped.variant): ring.theory is the ring's physics, this the model the solver is.
+  /// Empty: the solver models ring.theory. Every other function of the entry receives
+  /// model_scene(scene, entry), the scene with ring.theory replaced by it.
+  std::function<ring::Theory(const ring::Scene&)> theory;
+  /// The key that sets `theory` ("fem.theory", "lumped.variant"), for messages.
+  std::string theory_key;
   /// Elastic modes the model has under the scene's options.
   std::function<long long(const ring::Scene&)> elastic_modes;
   /// True when the model converges to the inextensible ring (rigid links), false for
@@ -98,8 +105,13 @@ void check_scene(const ring::Scene& scene);
 /// them for its columns: for `modes --solver NAME` on a solver the scene does not list.
 void check_modes_of(const ring::Scene& scene, const SolverEntry& e);
 
-/// The scene the converged references run: the reference solver's reference option on.
+/// The scene the converged references run: the reference solver's reference option on,
+/// and its model theory that of the ring (fem.theory dropped: the reference is the physics).
 ring::Scene reference_scene(const ring::Scene& scene);
+/// The scene a solver computes: `scene` with ring.theory replaced by the solver's model
+/// theory (SolverEntry::theory; unchanged for a solver without one). The registry's
+/// entries apply it themselves; O(size of the scene), a copy.
+ring::Scene model_scene(const ring::Scene& scene, const SolverEntry& e);
 
 /// The `count` lowest elastic modes of a solver with the scene's options.
 ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
+#include <variant>
 
 #include <Eigen/QR>
 #include <nlohmann/json.hpp>
@@ -67,6 +69,23 @@ std::string label(const std::string& solver) {
 
 bool weak(double mac) { return weak_mac(mac); }
 
+/// True when the columns (and the reference) are models of more than one beam theory
+/// (fem.theory, multibody.theory or lumped.variant against ring.theory): then each
+/// header names its column's theory, since the columns differ by model, not only by
+/// discretization.
+bool mixed_theories(const Table& t) {
+  std::set<std::string> seen;
+  for (const auto& c : t.columns)
+    if (!c.theory.empty()) seen.insert(c.theory);
+  if (t.reference && !t.reference->theory.empty()) seen.insert(t.reference->theory);
+  return seen.size() > 1;
+}
+
+/// A column's header: the solver's label, with its theory when the table mixes theories.
+std::string header(const Table& t, const Column& c) {
+  return label(c.solver) + (mixed_theories(t) && !c.theory.empty() ? " (" + c.theory + ")" : "");
+}
+
 /// A difference or error, or "unlike" where a pairing below kWeakMac made it meaningless.
 std::string pct_cell(double v) { return std::isnan(v) ? "unlike" : pct2(v); }
 
@@ -75,11 +94,11 @@ std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
   std::vector<std::vector<std::string>> out;
   std::vector<std::string> head = {"mode"};
   for (std::size_t c = 0; c < t.columns.size(); ++c) {
-    head.push_back(label(t.columns[c].solver));
+    head.push_back(header(t, t.columns[c]));
     if (c > 0) head.push_back("diff %");
     if (t.reference) head.push_back("error %");
   }
-  if (t.reference) head.push_back("reference");
+  if (t.reference) head.push_back(header(t, *t.reference));
   if (!t.paper.empty())
     for (const auto& c : t.columns) {
       head.push_back("paper " + label(c.solver));
@@ -210,8 +229,19 @@ Table build_table(const std::string& title, const std::vector<ring::ModalResult>
   t.title = title;
   t.rows = rows;
   const ring::ModalResult& base = results.front();
-  for (const auto& r : results) t.columns.push_back(pair_column(base, r, rows));
-  if (reference) t.reference = pair_column(base, *reference, rows);
+  auto theory = [](const ring::ModalResult& r) {
+    const auto it = r.model.find("theory");
+    const std::string* name = it == r.model.end() ? nullptr : std::get_if<std::string>(&it->second);
+    return name ? *name : std::string();
+  };
+  for (const auto& r : results) {
+    t.columns.push_back(pair_column(base, r, rows));
+    t.columns.back().theory = theory(r);
+  }
+  if (reference) {
+    t.reference = pair_column(base, *reference, rows);
+    t.reference->theory = theory(*reference);
+  }
   // A pairing below kWeakMac compares unlike modes: no difference or error (NaN).
   const auto& b = t.columns.front().omega;
   for (std::size_t c = 1; c < t.columns.size(); ++c)

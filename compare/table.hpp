@@ -22,6 +22,9 @@ struct Column {
   std::vector<bool> subspace;     ///< [row], paired against a (near-)degenerate cluster
   std::vector<double> diff_pct;   ///< [row], (base - this) / this * 100 (empty for the base; NaN: unlike)
   std::vector<double> error_pct;  ///< [row], (this - reference) / reference * 100 (if a reference; NaN: unlike)
+  /// The model's beam theory (ModalResult::model["theory"]: "euler-bernoulli", "timoshenko";
+  /// "" when the result does not say, as an imported column).
+  std::string theory;
 };
 
 struct Table {

@@ -39,7 +39,9 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   auto need = [&](bool ok, const std::string& msg) {
     if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
   };
-  ring::refuse_timoshenko(spec, "lumped " + what);
+  // No ring::refuse_timoshenko: the variant is the model (check_theory), and "chain", the
+  // one nonlinear variant, is the Euler-Bernoulli chain of either ring.theory (of a
+  // Timoshenko ring, its thin-ring model, as for the modes).
   need(o.variant == ring::LumpedOptions::Variant::chain,
        "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no " +
            (what == "buckling" ? "buckling" : "nonlinear") + " model here; use \"chain\"");
@@ -63,20 +65,18 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 }  // namespace
 
 void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
-  const bool timoshenko_model = options.variant == ring::LumpedOptions::Variant::timoshenko_frame;
-  const std::string variant = "lumped.variant = \"" + ring::to_string(options.variant) + "\"";
-  if (spec.theory == ring::Theory::timoshenko && !timoshenko_model)
-    throw std::invalid_argument("lumped: " + variant +
-                                " is an Euler-Bernoulli model (no shear strain, no rotary inertia of the section), "
-                                "but ring.theory = \"timoshenko\"; use lumped.variant = \"timoshenko-frame\"");
-  if (spec.theory == ring::Theory::euler_bernoulli && timoshenko_model)
-    throw std::invalid_argument("lumped: " + variant +
-                                " has shear strain and the section's rotary inertia, which ring.theory = "
-                                "\"euler-bernoulli\" leaves out; set ring.theory = \"timoshenko\", or use "
-                                "\"chain\", \"frame\" or \"frame-consistent\"");
-  if (timoshenko_model && !(spec.kGA() > 0.0 && std::isfinite(spec.kGA())))
-    throw std::invalid_argument("lumped: " + variant + " needs a shear stiffness kappa G A > 0 (ring.shear_coefficient = " +
-                                std::to_string(spec.kappa()) + ", ring.nu = " + std::to_string(spec.nu) + ")");
+  // The variant is the model, ring.theory the physics: an Euler-Bernoulli variant on a
+  // Timoshenko ring is that ring's thin-ring model (what a thickness study measures), and
+  // the Timoshenko frame on an Euler-Bernoulli ring is a richer model of it, as
+  // fem.theory = "timoshenko" is. Both are taken; what the Timoshenko frame cannot do
+  // without is its shear stiffness, which a section given by {area, inertia} has only
+  // with ring.shear_coefficient (the scene reader's rule for ring.theory and fem.theory).
+  if (options.variant != ring::LumpedOptions::Variant::timoshenko_frame) return;
+  if (!(spec.kGA() > 0.0 && std::isfinite(spec.kGA())))
+    throw std::invalid_argument("lumped: lumped.variant = \"" + ring::to_string(options.variant) +
+                                "\" needs a shear stiffness kappa G A > 0 (ring.shear_coefficient = " +
+                                std::to_string(spec.kappa()) + ", ring.nu = " + std::to_string(spec.nu) +
+                                "; a section given by {area, inertia} needs ring.shear_coefficient)");
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {

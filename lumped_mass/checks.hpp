@@ -9,12 +9,15 @@
 
 namespace lumped {
 
-/// The variant must model the theory asked for: ring.theory = "timoshenko" takes only
-/// "timoshenko-frame" (the others have neither shear nor the section's rotary inertia), and
-/// "timoshenko-frame" only ring.theory = "timoshenko" (with "euler-bernoulli" it would add
-/// what the theory leaves out); the Timoshenko frame also needs a shear stiffness kappa G A > 0.
+/// The variant is the model's theory, ring.theory the ring's physics, and any variant is
+/// taken on either: "chain", "frame" and "frame-consistent" are the Euler-Bernoulli models
+/// (on a Timoshenko ring, its thin-ring model), "timoshenko-frame" the Timoshenko model (on
+/// an Euler-Bernoulli ring it adds shear and the section's rotary inertia, as
+/// fem.theory = "timoshenko" does). The Timoshenko frame needs a shear stiffness
+/// kappa G A > 0: refused for a section given by {area, inertia} without
+/// ring.shear_coefficient.
 void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options);
-/// Linear modes: the theory rule (check_theory); every term of RingSpec (supports, masses,
+/// Linear modes: the shear stiffness of the Timoshenko frame (check_theory); every term of RingSpec (supports, masses,
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
 /// anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);

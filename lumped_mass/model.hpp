@@ -78,7 +78,7 @@ struct Model {
 ///   linear axial (EA), cubic Hermite bending (EI); masses rho A l / 2 per element end on
 ///   the translations only (frame, rotations massless -> condensed) or the consistent
 ///   mass matrix (frame_consistent).
-/// timoshenko_frame (ring.theory = "timoshenko" only; checks.hpp check_theory): straight
+/// timoshenko_frame (the Timoshenko model, on either ring.theory; checks.hpp check_theory): straight
 ///   two-node shear-flexible elements on the sides, Przemieniecki's (Theory of Matrix
 ///   Structural Analysis, 1968, sec. 5.6: the exact static solution of a Timoshenko beam
 ///   without span load, cubic deflection and quadratic section rotation coupled through

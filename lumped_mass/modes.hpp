@@ -32,7 +32,8 @@ namespace lumped {
 ///              table for further pins, a clamp, point inertias and rigid modes held).
 /// Every term of `spec` is modelled (model.hpp): pins, clamp, roller, springs, point
 /// masses, foundation; a point off the nodes is std::invalid_argument naming the key, and so
-/// is a variant that does not match ring.theory (checks.hpp check_theory).
+/// is a Timoshenko frame without a shear stiffness (checks.hpp check_theory; the variant,
+/// not ring.theory, is the model's theory).
 /// Cost: dense O(n^3); sparse O(n (count + rigid)) per Lanczos restart, O(n) memory.
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count);
 

@@ -396,6 +396,25 @@ std::pair<long long, long long> solver_range(const SceneSchema& schema, const st
   throw std::logic_error("scene reader: the solver schema gives no range for " + solver + "." + key);
 }
 
+/// `section`.theory, or nothing when the key is absent (a solver's model theory then
+/// follows ring.theory).
+std::optional<Theory> read_theory(const Reader& r, const toml::table& t, const std::string& section) {
+  if (!t.contains("theory")) return std::nullopt;
+  return r.choice(t, section, "theory", "euler-bernoulli", {"euler-bernoulli", "timoshenko"}) == "timoshenko"
+             ? Theory::timoshenko : Theory::euler_bernoulli;
+}
+
+/// A solver's model theory (`section`.theory) of "timoshenko" needs the shear stiffness
+/// kappa G A that ring.theory = "timoshenko" needs: a shear coefficient for a section
+/// without a shape.
+void check_model_theory(const Reader& r, const toml::table& t, const std::string& section, const RingSpec& ring) {
+  if (!t.contains("theory")) return;
+  if (read_theory(r, t, section) == Theory::timoshenko && !(ring.kappa() > 0.0))
+    r.fail(section + ".theory", t.get("theory"),
+           "\"timoshenko\" needs the ring's shear coefficient, which is missing: a section given by {area, inertia} "
+           "has no shape, so give ring.shear_coefficient (or use \"euler-bernoulli\")");
+}
+
 Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
   s.reference_solver = schema.reference_solver;
@@ -415,8 +434,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
   s.ring.section = read_section(r, *rt);
-  s.ring.theory = r.choice(*rt, "ring", "theory", "euler-bernoulli", {"euler-bernoulli", "timoshenko"}) == "timoshenko"
-                      ? Theory::timoshenko : Theory::euler_bernoulli;
+  s.ring.theory = read_theory(r, *rt, "ring").value_or(Theory::euler_bernoulli);
   s.ring.nu = r.number(*rt, "ring", "nu", 0.3, -1.0, 0.5);
   if (s.ring.nu <= -1.0 || s.ring.nu >= 0.5)
     r.fail("ring.nu", rt->get("nu"), "Poisson's ratio must lie in (-1, 0.5), got " + fmt_num(s.ring.nu));
@@ -449,7 +467,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   // Solver sections: each optional, defaults as in the README's scene reference.
   const toml::table* mt = r.table(root, "", "multibody");
   if (mt) {
-    r.known_keys(*mt, "multibody", {"n", "rotary_inertia", "dependent", "method"});
+    r.known_keys(*mt, "multibody", {"n", "rotary_inertia", "dependent", "method", "theory"});
+    check_model_theory(r, *mt, "multibody", s.ring);
+    s.multibody.theory = read_theory(r, *mt, "multibody");
     s.multibody.n = static_cast<int>(r.integer(*mt, "multibody", "n", 40, 4, 100000000));
     s.multibody.rotary_inertia = r.boolean(*mt, "multibody", "rotary_inertia", true);
     s.multibody.dependent = r.choice(*mt, "multibody", "dependent", "robust", {"robust", "paper"}) == "paper"
@@ -461,7 +481,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   const toml::table* ft = r.table(root, "", "fem");
   if (ft) {
     r.known_keys(*ft, "fem", {"elements", "degree", "geometry", "extensible", "rotary_inertia", "reference",
-                              "tolerance", "response_tolerance"});
+                              "tolerance", "response_tolerance", "theory"});
+    check_model_theory(r, *ft, "fem", s.ring);
+    s.fem.theory = read_theory(r, *ft, "fem");
     s.fem.elements = static_cast<int>(r.integer(*ft, "fem", "elements", 40, 4, 10000000));
     const auto [degree_lo, degree_hi] = solver_range(schema, "fem", "degree");
     s.fem.degree = static_cast<int>(r.integer(*ft, "fem", "degree", 3, degree_lo, degree_hi));

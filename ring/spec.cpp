@@ -115,7 +115,8 @@ void refuse_keys(const std::vector<std::string>& keys, const std::string& who) {
 void refuse_timoshenko(const RingSpec& spec, const std::string& who) {
   if (spec.theory == Theory::timoshenko)
     throw std::invalid_argument(who +
-                                " has no Timoshenko model yet (ring.theory = \"timoshenko\"; see the README, "
+                                " has no Timoshenko model yet (the model's theory is \"timoshenko\": ring.theory, or the "
+                                "solver's own multibody.theory or fem.theory where given; see the README, "
                                 "\"Thick rings\", for what each solver takes)");
 }
 

@@ -180,8 +180,11 @@ struct RingSpec {
   std::vector<std::string> terms_beyond_paper() const;
 };
 
-/// Throws std::invalid_argument "`who` has no Timoshenko model yet (ring.theory)" for a
-/// Timoshenko ring, for a solver or analysis that has only the Euler-Bernoulli theory.
+/// Throws std::invalid_argument "`who` has no Timoshenko model yet (ring.theory, or the
+/// solver's multibody.theory or fem.theory)" when spec.theory is Timoshenko, for a solver or
+/// analysis that has only the Euler-Bernoulli theory. The driver hands each solver the spec
+/// with its model theory in spec.theory (compare/registry.hpp model_scene), so the key that
+/// set it may be the solver's own.
 void refuse_timoshenko(const RingSpec& spec, const std::string& who);
 
 /// Throws std::invalid_argument "`who` does not take KEYS yet" when `spec` has terms beyond
@@ -212,6 +215,11 @@ struct MultibodyOptions {
   Dependent dependent = Dependent::robust;  ///< choice of dependent angles
   enum class Method { automatic, dense, sparse };
   Method method = Method::automatic;  ///< dense angle coordinates or sparse large-n path
+  /// The beam theory of the model (multibody.theory); empty: ring.theory. ring.theory is
+  /// the physics (what the reference solves); this is the model the chain is, so an
+  /// Euler-Bernoulli chain of a Timoshenko ring measures what the thin-ring model misses.
+  /// The driver hands the solver the spec with RingSpec::theory replaced by it.
+  std::optional<Theory> theory;
 };
 
 struct FemOptions {
@@ -224,13 +232,18 @@ struct FemOptions {
   bool reference = false;        ///< refine until converged
   double tolerance = 1e-9;       ///< relative change that stops the refinement (modes, statics)
   double response_tolerance = 1e-3;  ///< the same for the peaks of the reference response
+  /// The beam theory of the FE model (fem.theory); empty: ring.theory. As
+  /// MultibodyOptions::theory; the converged reference ignores it and solves ring.theory.
+  std::optional<Theory> theory;
 };
 
 struct LumpedOptions {
   int n = 40;  ///< links / elements (>= 4)
-  /// chain, frame, frame_consistent: Euler-Bernoulli models (ring.theory = "euler-bernoulli");
-  /// timoshenko_frame: shear-flexible elements with rotary inertia, the one lumped model of
-  /// ring.theory = "timoshenko" (lumped_mass/model.hpp).
+  /// The variant is the model's theory (there is no lumped.theory): chain, frame,
+  /// frame_consistent are Euler-Bernoulli models (of either ring.theory: on a Timoshenko
+  /// ring they are its thin-ring model); timoshenko_frame has shear-flexible elements with
+  /// rotary inertia (lumped_mass/model.hpp), on a ring whose shear coefficient is defined
+  /// (lumped_mass/checks.hpp check_theory).
   enum class Variant { chain, frame, frame_consistent, timoshenko_frame };
   Variant variant = Variant::chain;
 };

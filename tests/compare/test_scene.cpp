@@ -259,6 +259,47 @@ TEST(SceneReject, TimoshenkoGeneralSectionNeedsShearCoefficient) {
   expect_rejected(general, "ring.shear_coefficient", "Cowper");
   EXPECT_NO_THROW(cmp::parse_scene(general, "p.toml", {"ring.shear_coefficient=0.85"}));
 }
+// A solver's model theory (README, "Thick rings"): ring.theory is the physics, and
+// multibody.theory and fem.theory the models, each following ring.theory unless given.
+TEST(SceneTheory, ModelTheoriesFollowTheRingUnlessGiven) {
+  const std::string timo = replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\ntheory = \"timoshenko\"");
+  const ring::Scene follows = cmp::parse_scene(timo + "[fem]\nelements = 20\n", "p.toml", {});
+  EXPECT_FALSE(follows.multibody.theory.has_value());
+  EXPECT_FALSE(follows.fem.theory.has_value());
+  const ring::Scene euler = cmp::parse_scene(
+      timo + "[fem]\ntheory = \"euler-bernoulli\"\n", "p.toml",
+      {"multibody.theory=\"euler-bernoulli\"", "lumped.variant=\"frame\""});
+  EXPECT_EQ(euler.ring.theory, ring::Theory::timoshenko);
+  ASSERT_TRUE(euler.multibody.theory && euler.fem.theory);
+  EXPECT_EQ(*euler.multibody.theory, ring::Theory::euler_bernoulli);
+  EXPECT_EQ(*euler.fem.theory, ring::Theory::euler_bernoulli);
+  // Each solver computes its own model; the reference the ring's physics.
+  EXPECT_EQ(cmp::model_scene(euler, cmp::solver("fem")).ring.theory, ring::Theory::euler_bernoulli);
+  EXPECT_EQ(cmp::model_scene(euler, cmp::solver("multibody")).ring.theory, ring::Theory::euler_bernoulli);
+  EXPECT_EQ(cmp::model_scene(euler, cmp::solver("lumped")).ring.theory, ring::Theory::euler_bernoulli);
+  EXPECT_EQ(cmp::model_scene(follows, cmp::solver("fem")).ring.theory, ring::Theory::timoshenko);
+  const ring::Scene reference = cmp::reference_scene(euler);
+  EXPECT_EQ(cmp::model_scene(reference, cmp::solver("fem")).ring.theory, ring::Theory::timoshenko);
+  // The Timoshenko frame is the Timoshenko model on an Euler-Bernoulli ring too.
+  const ring::Scene frame = cmp::parse_scene(kPaper, "p.toml", {"lumped.variant=\"timoshenko-frame\""});
+  EXPECT_EQ(cmp::model_scene(frame, cmp::solver("lumped")).ring.theory, ring::Theory::timoshenko);
+}
+TEST(SceneReject, ModelTheoryNotATheory) {
+  expect_rejected(kPaper + "[fem]\ntheory = \"thick\"\n", "fem.theory", "euler-bernoulli");
+  expect_rejected(kPaper, "multibody.theory", "timoshenko", {"multibody.theory=\"shear\""});
+  expect_rejected(kPaper, "fem.theory", "expected one of", {"fem.theory=1"});
+}
+// A model theory "timoshenko" needs the shear coefficient as ring.theory does: a section
+// given by {area, inertia} has no shape, hence no Cowper value.
+TEST(SceneReject, ModelTimoshenkoNeedsShearCoefficient) {
+  const std::string general = replace(kPaper, "section = { shape = \"circle\", diameter = 0.12 }",
+                                      "section = { area = 0.01, inertia = 1e-5 }");
+  expect_rejected(general + "[fem]\ntheory = \"timoshenko\"\n", "fem.theory", "ring.shear_coefficient");
+  expect_rejected(general, "multibody.theory", "ring.shear_coefficient", {"multibody.theory=\"timoshenko\""});
+  EXPECT_NO_THROW(cmp::parse_scene(general + "[fem]\ntheory = \"timoshenko\"\nelements = 20\n", "p.toml",
+                                   {"ring.shear_coefficient=0.85"}));
+  EXPECT_NO_THROW(cmp::parse_scene(general + "[fem]\ntheory = \"euler-bernoulli\"\nelements = 20\n", "p.toml", {}));
+}
 TEST(SceneReject, PoissonOutOfRange) {
   expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\nnu = 0.5"), "ring.nu", "(-1, 0.5)");
   expect_rejected(replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\ntheory = \"thick\""), "ring.theory", "timoshenko");
