@@ -17,8 +17,7 @@
 # modes only), and every model's and the reference's modes pair with them by MAC, so the
 # breathing and extensional modes that enter the spectrum of a thick ring do not shift them.
 # Discretizations, fixed for every depth: the chains n = 320, the FE 20 cells of degree 6
-# (the reference starts from them: from 40 cells it stops at depth/R = 1e-3, its rigid modes
-# lost to round-off). Their own error, measured by the Timoshenko columns (the same
+# (the reference starts from them). Their own error, measured by the Timoshenko columns (the same
 # discretizations of the reference's theory) over the whole sweep: FE below 5e-4 %, frame
 # below 0.2 % (mode 23 at depth/R = 0.3; 0.005 % on thin rings); the Euler chain's floor
 # at depth/R = 1e-3 (discretization and inextensibility) 0.002-0.004 %. So every curve shows
