@@ -87,9 +87,16 @@ PairResidual pair_residual(const Eigen::Ref<const Eigen::VectorXd>& ax,
 double norm_estimate(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& op, Eigen::Index dim,
                      int iterations = 10);
 
+/// The largest relative residual of a pair that is still an answer. The chains' pairs sit at
+/// 1e-13 (dense) to 1e-9 (the O(n) Lanczos, its solve's rounding); far above that the
+/// eigensolver has failed silently (measured: the O(n) Lanczos on a free chain that filled
+/// its whole Krylov space, residual 1.0, README "Exit codes").
+constexpr double kAcceptedResidual = 1e-6;
+
 /// Fills result.solver, rigid_modes, omega (sqrt of the selected elastic omega2,
 /// ascending) and max_residual (the largest of `relative`, one per selected elastic mode,
-/// or 0 if empty). The caller adds model, shapes, unknowns and seconds.
+/// or 0 if empty). The caller adds model, shapes, unknowns and seconds. Throws
+/// ring::NumericalError when max_residual is above kAcceptedResidual (or not a number).
 void assemble(ring::ModalResult& result, const std::string& solver, const Eigen::VectorXd& omega2,
               const Selection& selection, const std::vector<double>& relative = {});
 
