@@ -62,13 +62,17 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
 }
 
 /// The modes' backend for `count` modes of `spec`: "auto" also stays dense when the pairs
-/// computed, min(r, count + rigid modes + 2), exceed a third of the r = n [+ 2 free] - c
-/// unknowns, and when the spec has terms beyond the paper's (supports.pins, clamp,
+/// computed, nev = min(r, count + rigid modes + 2), exceed a third of the r = n [+ 2 free] - c
+/// unknowns or 4 nev + 60 reaches r, and when the spec has terms beyond the paper's (supports.pins, clamp,
 /// springs, masses, foundation), which only the dense path assembles. O(1).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, int count) {
   const ring::Supports& supports = spec.supports;
   const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2);
-  if (options.method == ring::MultibodyOptions::Method::automatic && 3 * std::min(r, count + spec.rigid_modes() + 2) > r)
+  // And when its Lanczos would need the whole space (lanczos.cpp: 4 nev + 60 steps at most):
+  // a Krylov basis that fills all r unknowns has lost its orthogonality (measured: 64 modes
+  // of a free n = 320 chain, relative residual 1.0), where the dense path costs milliseconds.
+  const int nev = std::min(r, count + spec.rigid_modes() + 2);
+  if (options.method == ring::MultibodyOptions::Method::automatic && (3 * nev > r || 4 * nev + 60 >= r))
     return Backend::dense;
   return backend(options, spec, Analysis::modes);
 }
