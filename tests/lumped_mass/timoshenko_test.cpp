@@ -33,6 +33,7 @@
 #include "lumped_mass/modes.hpp"
 #include "ring/closed_form.hpp"
 #include "tests/support/close.hpp"
+#include "tests/support/thick.hpp"
 
 namespace {
 
@@ -41,24 +42,7 @@ using ring::LumpedOptions;
 constexpr LumpedOptions::Variant kTimoshenko = LumpedOptions::Variant::timoshenko_frame;
 using Shape = ring::Section::Shape;
 
-/// A steel ring of radius 1 m, theory Timoshenko (nu = 0.3, Cowper's kappa), section of
-/// radial depth `depth` m (rectangle: height = depth, width 0.02 m; circle: diameter = depth).
-ring::RingSpec thick_ring(Shape shape, double depth) {
-  ring::RingSpec s;
-  s.radius = 1.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.nu = 0.3;
-  s.theory = ring::Theory::timoshenko;
-  s.section.shape = shape;
-  if (shape == Shape::rectangle) {
-    s.section.width = 0.02;
-    s.section.height = depth;
-  } else {
-    s.section.diameter = depth;
-  }
-  return s;
-}
+using ringtest::thick_ring;
 
 /// Wave number (0 .. n/2) of a mode of a model on the regular n-gon: the harmonic that carries
 /// the radial and tangential displacements of the nodes. The n-gon is cyclically symmetric, so

@@ -31,29 +31,13 @@
 #include "multibody/statics.hpp"
 #include "ring/closed_form.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/support/thick.hpp"
 
 namespace {
 
 using Shape = ring::Section::Shape;
 
-/// A steel ring of radius 1 m, theory Timoshenko (nu = 0.3, Cowper's kappa), section of radial
-/// depth `depth` m (rectangle: height = depth, width 0.02 m; circle: diameter = depth), free.
-ring::RingSpec thick_ring(Shape shape, double depth) {
-  ring::RingSpec s;
-  s.radius = 1.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.nu = 0.3;
-  s.theory = ring::Theory::timoshenko;
-  s.section.shape = shape;
-  if (shape == Shape::rectangle) {
-    s.section.width = 0.02;
-    s.section.height = depth;
-  } else {
-    s.section.diameter = depth;
-  }
-  return s;
-}
+using ringtest::thick_ring;
 
 ring::MultibodyOptions chain(int n) {
   ring::MultibodyOptions o;
