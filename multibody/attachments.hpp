@@ -25,7 +25,9 @@
 // modes psi becomes an unknown of its own, on the two half springs (linear_model.hpp). The
 // inertia put on m instead converges at order 1 only, for the same reason as the clamp's
 // constraint (measured: 2.60, 1.43, 0.75 % at n = 80, 160, 320 on scenes/thick-ring.toml
-// with a 1e-4 kg m^2 inertia, against the FE reference; order 2 with psi an unknown).
+// with a 1e-4 kg m^2 inertia, against the FE reference; order 2 with psi an unknown: 0.31,
+// 0.08, 0.02 %). The lumped chain, this chain's second implementation, makes the same psi an
+// unknown (lumped_mass/model.cpp; tests/lumped_mass/vs_multibody_test.cpp holds them together).
 //
 // ## Pull-back
 // u_k depends on the angles through p_k = p_0 + l sum_{j<k} e(phi_j): d u_k / d phi_j =
