@@ -22,8 +22,9 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 /// Orthonormal selection T (N x Nr) with S T = 0: free translations and rotations
 /// keep their unit columns; a node with one blocked direction d keeps the column
 /// along d rotated by +90 deg; a node with two blocked directions loses both; a clamped
-/// frame node loses its rotation. Each row of S acts on one node's (ux, uy) or on its
-/// rotation alone (model.hpp). O(N).
+/// frame node loses its rotation; the chain's hinge rotations after the node DOFs (model.hpp)
+/// keep theirs. Each row of S acts on one node's (ux, uy) or on its rotation alone (model.hpp).
+/// O(N).
 struct Reduction {
   SpMat T;
   std::vector<char> massless;  // per reduced DOF
@@ -70,6 +71,10 @@ Reduction support_reduction(const Model& m) {
       t.emplace_back(dpn * k + r, col++, 1.0);
       red.massless.push_back(m.massless[dpn * k + r]);
     }
+  }
+  for (int i = m.node_dofs(); i < N; ++i) {
+    t.emplace_back(i, col++, 1.0);
+    red.massless.push_back(m.massless[i]);
   }
   red.T.resize(N, col);
   red.T.setFromTriplets(t.begin(), t.end());

@@ -44,7 +44,7 @@ void check_spec(const ring::RingSpec& spec, const ring::LumpedOptions& options) 
 /// blocks both translations of its node; a roller blocks the roller node's displacement
 /// normal to the line through the pin and itself; a clamp on a frame blocks its node's
 /// rotation (the chain's clamp is a spring on its chord rotation, add_terms()).
-SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int dpn, double anchor) {
+SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int dpn, double anchor, int cols) {
   const int n = static_cast<int>(p.size());
   Triplets t;
   int rows = 0;
@@ -81,7 +81,7 @@ SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int d
     t.emplace_back(rows, dpn * k + 1, dx / d);
     ++rows;
   }
-  SpMat S(rows, dpn * n);
+  SpMat S(rows, cols);
   S.setFromTriplets(t.begin(), t.end());
   return S;
 }
@@ -324,7 +324,15 @@ SpMat stacked(const SpMat& A, const Triplets& extra, int extra_rows) {
 /// - point mass at node h: m on (ux_h, uy_h); J on the rotation g = grad rotation(h) at rest,
 ///   J g g^T (a frame's rotation with J > 0 becomes inertial: the lumped frame keeps it, not
 ///   condensed). The chain's rotational terms follow multibody/attachments.hpp (terms.hpp,
-///   model.hpp). O(n).
+///   model.hpp);
+/// - the chain's hinge h with a point inertia (Terms::hinge_rotations) gets its rotation chi
+///   as an unknown after the node DOFs (model.hpp). Its half springs 2K from each link's
+///   chord rotation phi_a, phi_b to chi are, with theta_h = phi_b - phi_a and the chord
+///   rotation m_h = (phi_a + phi_b) / 2,
+///     K (phi_a - chi)^2 + K (phi_b - chi)^2 = K theta_h^2 / 2 + 4K (m_h - chi)^2 / 2,
+///   so the hinge's row theta_h (D = K) stays and one row m_h - chi with D = 4K joins it
+///   (the same energy as two rows phi - chi with D = 2K, and B keeps one row per hinge);
+///   kr is a row on chi (D = kr), J is chi's mass. O(n).
 void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m) {
   Eigen::VectorXd rest(2 * m.n);
   for (int k = 0; k < m.n; ++k) rest.segment<2>(2 * k) << p[k].x, p[k].y;
@@ -332,13 +340,35 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
   const int dpn = m.dofs_per_node;
   Triplets bt, mt;
   std::vector<double> d;
-  const int rows = terms.rest_rows(0, bt, d);
+  int rows = terms.rest_rows(0, bt, d);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dpn * m.n);
+  const int N0 = dpn * m.n, N = N0 + static_cast<int>(terms.hinge_rotations().size());
+  if (N > N0) {
+    m.K.conservativeResize(N, N);
+    m.M.conservativeResize(N, N);
+    m.B.conservativeResize(m.B.rows(), N);
+    m.C.conservativeResize(m.C.rows(), N);
+    m.massless.resize(N, 0);  // chi carries J
+  }
+  const double k4 = 4.0 * spec.EI() / m.side;
+  for (std::size_t i = 0; i < terms.hinge_rotations().size(); ++i) {
+    const Terms::HingeRotation& hr = terms.hinge_rotations()[i];
+    const int chi = N0 + static_cast<int>(i);
+    const Measure g = terms.rotation(zero, hr.node, false);  // m_h's gradient at rest
+    for (std::size_t a = 0; a < g.dofs.size(); ++a) bt.emplace_back(rows, g.dofs[a], g.grad[static_cast<Eigen::Index>(a)]);
+    bt.emplace_back(rows++, chi, -1.0);
+    d.push_back(k4);
+    if (hr.kr > 0.0) {
+      bt.emplace_back(rows++, chi, 1.0);
+      d.push_back(hr.kr);
+    }
+    mt.emplace_back(chi, chi, hr.inertia);
+  }
   for (const Terms::Inertia& in : terms.inertia()) {
     const int h = in.node;
     mt.emplace_back(dpn * h, dpn * h, in.mass);
     mt.emplace_back(dpn * h + 1, dpn * h + 1, in.mass);
-    if (in.rotary > 0.0) {
+    if (in.rotary > 0.0 && !terms.own_rotation(h)) {
       const Measure g = terms.rotation(zero, h, false);
       for (std::size_t a = 0; a < g.dofs.size(); ++a)
         for (std::size_t b = 0; b < g.dofs.size(); ++b)
@@ -384,7 +414,7 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
     case Variant::timoshenko_frame: assemble_frame(timoshenko_element(spec, m.side), p, m); break;
   }
   add_terms(spec, p, m);
-  m.S = support_rows(spec, p, m.dofs_per_node, m.anchor_deg);
+  m.S = support_rows(spec, p, m.dofs_per_node, m.anchor_deg, static_cast<int>(m.K.cols()));
   return m;
 }
 

@@ -32,7 +32,11 @@ struct Model {
   double anchor_deg = 0.0;   ///< polar angle of node 0 (the pin, or 0 for a free ring)
   double side = 0.0;         ///< l = 2 pi R / n, m
   double circumradius = 0.0; ///< rho = l / (2 sin(pi / n)), m
-  SpMat K;                   ///< stiffness, N x N (N = dofs_per_node * n), N/m; K = B^T diag(D) B
+  /// Unknowns: the node DOFs (dofs_per_node * n, the order above), then, for the chain in
+  /// the linear modes, the rotation chi of every hinge with a point inertia and no clamp
+  /// (Terms::hinge_rotations' order, rad; add_terms in model.cpp). N = node_dofs() + those.
+  int node_dofs() const { return dofs_per_node * n; }
+  SpMat K;                   ///< stiffness, N x N, N/m; K = B^T diag(D) B
   /// The stiffness in factored form, strain energy = 1/2 sum_i D_i (B x)_i^2. Rows of B:
   /// chain: the hinge turning angles theta_j (n rows, rad/m), D_j = EI/l;
   /// frames: per element j, rows 3j = axial strain (u2 - u1) . t / l, D = EA l, and
@@ -42,7 +46,9 @@ struct Model {
   /// curvature th' at the Gauss points, D = EI l/2) and 4j+3 (the shear strain, constant
   /// along the element, D = kappa G A l).
   /// Then, for every variant, one row per positive stiffness of the spec's terms
-  /// (assemble()): foundation (2 per node), springs kx, ky, kr, the chain's clamp.
+  /// (assemble()): foundation (2 per node), springs kx, ky, kr, the chain's clamp; and per
+  /// chain hinge rotation chi, a row m_h - chi (D = 4 EI/l) and, if kr > 0, a row chi (D = kr)
+  /// (model.cpp, add_terms).
   /// The solvers work with B and D, never with the assembled K: K's entries are of
   /// order EI/l^3 while a smooth mode's K x is of order EI/R^4 |x|, so rounding K costs
   /// eps (R/l)^4 relative accuracy in the low eigenvalues; through B it costs eps (R/l)^2.
@@ -100,9 +106,11 @@ struct Model {
 ///     in the chain's convention below;
 ///   the chain's rotational terms follow multibody/attachments.hpp, so both chains are one
 ///     model: its hinge spring K = EI/l is two halves 2K from each link to the hinge's own
-///     massless rotation psi; kr from psi to the ground, psi condensed, is 4K and kr in series
-///     on the chord rotation, J acts through psi = 4K/(4K + kr) times it, a clamp is 4K on it
-///     (order 2; a constraint on the chord rotation would be order 1, terms_test.cpp);
+///     rotation chi; without a point inertia chi is massless and condensed: kr from chi to
+///     the ground is 4K and kr in series on the chord rotation, a clamp is 4K on it (order 2;
+///     a constraint on the chord rotation would be order 1, terms_test.cpp); with a point
+///     inertia (and no clamp) chi is an unknown after the node DOFs carrying J and kr (order
+///     2; J condensed onto the chord rotation quasi-statically was order 1, terms.hpp);
 ///   foundation: lumped at the nodes, each standing for one side l of ring: l k_r (r.u)^2 +
 ///     l k_t (t.u)^2, r and t the undeformed node's radial and tangential unit vectors. With the
 ///     nodal (trapezoidal) rule on a periodic integrand the error is the n-gon's O(h^2), like

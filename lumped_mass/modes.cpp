@@ -44,7 +44,9 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
     r.model["factor_nonzeros"] = pairs.factor_nonzeros;
   }
   r.unknowns = pairs.unknowns;
-  for (int c : sel.elastic) r.shapes.push_back(sample_shape(model.anchor_deg, model.dofs_per_node, pairs.X.col(c)));
+  // The shapes are the nodes' displacements; the chain's hinge rotations after them are not.
+  for (int c : sel.elastic)
+    r.shapes.push_back(sample_shape(model.anchor_deg, model.dofs_per_node, pairs.X.col(c).head(model.node_dofs())));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -403,6 +403,9 @@ class MidpointStepper : public paths::Stepper {
       : c_(c), r_(r), radius_(radius), L_(loads), M_(std::move(M)), Cd_(std::move(Cd)), rec_(std::move(rec)),
         ch_(r.hinge_damping), damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || r.hinge_damping > 0),
         x_(c.rest), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())) {
+    // The condensed J (4K / (4K + kr))^2 on the chord rotation (terms.hpp): the linear modes
+    // carry J on the hinge's own rotation chi (order 2), this stepper has no chi state yet,
+    // so a large point inertia's response converges at order 1 in l.
     for (const Terms::Inertia& in : c.terms->inertia())
       if (in.rotary > 0.0) rotary_.push_back({in.node, in.rotary});
     w_ = Vec::Zero(static_cast<Eigen::Index>(rotary_.size()));

@@ -18,7 +18,10 @@
 //     masses on their hinges) plus, for a point mass with rotary inertia J, J g g^T, g the
 //     gradient of the tangent's rotation at its hinge at x (terms.hpp): the kinetic energy
 //     J (g . v)^2 / 2 of the response (nonlinear.cpp) linearized about a state at rest, the
-//     linear model's J term (model.cpp) at x instead of at rest.
+//     linear model's J term (model.cpp) at x instead of at rest. A point inertia at an
+//     unclamped hinge of the chain rides instead on the hinge's own rotation chi, an unknown
+//     after the kernel's coordinates, as in the linear modes (terms.hpp; preload.cpp,
+//     with_hinge_rotations: the tangent with chi condensed, expanded exactly).
 //  4. The pencil (Z^T T Z, Z^T M Z) by the shifted inverse of the multibody version: the
 //     largest mu of S^-1 M_r, S = T_r + sigma M_r = L L^T (Cholesky), sigma =
 //     modal::bending_scale(spec), omega^2 = 1/mu - sigma; shapes Z y, the hinges'

@@ -76,7 +76,19 @@ Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, d
     in.mass += pm.mass;
     in.rotary += pm.inertia * follows * follows;
   }
-  for (const auto& [h, in] : by_node) inertia_.push_back(in);
+  for (const auto& [h, in] : by_node) {
+    inertia_.push_back(in);
+    double J = 0.0;
+    for (const ring::PointMass& pm : spec.masses)
+      if (node_of(pm.angle, anchor_deg, n, "masses") == h) J += pm.inertia;
+    if (chain && J > 0.0 && !std::isinf(kr[h])) hinge_rotations_.push_back({h, kr[h], J});
+  }
+}
+
+bool Terms::own_rotation(int h) const {
+  for (const HingeRotation& r : hinge_rotations_)
+    if (r.node == h) return true;
+  return false;
 }
 
 Measure Terms::rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const {
@@ -161,6 +173,7 @@ int Terms::rest_rows(int row0, Triplets& rows, std::vector<double>& d) const {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dpn_ * n_);
   int r = row0;
   for (const Spring& s : springs_) {
+    if (s.node >= 0 && own_rotation(s.node)) continue;  // kr on chi (model.cpp)
     const Measure m = measure(s, zero, false);
     for (std::size_t i = 0; i < m.dofs.size(); ++i) rows.emplace_back(r, m.dofs[i], m.grad[static_cast<Eigen::Index>(i)]);
     d.push_back(s.k);

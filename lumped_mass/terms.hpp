@@ -22,8 +22,18 @@
 //     gradient is model.hpp's chord rotation (nu_j . du / l per link); it is the multibody
 //     chain's m_h (multibody/attachments.hpp), written in positions.
 // Point masses: m on (ux_h, uy_h) (a constant mass; its weight under gravity is loads.hpp's
-// business through the translational mass), and the rotary inertia J on the rotation of the
-// tangent, for the chain J (4K / (4K + kr))^2 (model.hpp's convention).
+// business through the translational mass), and the rotary inertia J: the frames put it on
+// their rotation unknown. The chain's hinge rotation chi (model.hpp: the hinge spring EI/l is
+// two half springs 2EI/l from each link to chi, kr from chi to the ground) carries it:
+//   - the linear modes (model.cpp) and the modes under load (preload.cpp) make chi an unknown
+//     of its own at every hinge with a point inertia and no clamp (hinge_rotations()), J on
+//     chi and kr on chi; order 2, where J (4K / (4K + kr))^2 on the chord rotation m_h (chi
+//     condensed quasi-statically) converged at order 1 (1.43 -> 0.75 % at n = 160 -> 320 on
+//     scenes/thick-ring.toml with 1e-4 kg m^2, README);
+//   - the response (nonlinear.cpp) keeps that condensed J (4K / (4K + kr))^2 on m_h
+//     (Inertia::rotary): chi as a state of the time stepper is not written yet, so a large
+//     inertia's response is first order in l there.
+// The statics have no inertia: kr condensed on m_h (4K kr / (4K + kr)) is exact for them.
 //
 // Cost: O(terms) for every member, O(n) to build (the foundation has 2 per node).
 #pragma once
@@ -68,9 +78,23 @@ class Terms {
   struct Inertia {
     int node = 0;
     double mass = 0.0;    ///< kg, on (ux, uy)
-    double rotary = 0.0;  ///< kg m^2, on rotation(node) (the chain's: J (4K / (4K + kr))^2)
+    double rotary = 0.0;  ///< kg m^2, on rotation(node) (the chain's: J (4K / (4K + kr))^2, the
+                          ///< response's; the linear modes take hinge_rotations() instead)
   };
   const std::vector<Inertia>& inertia() const { return inertia_; }
+
+  /// A chain's hinge whose rotation chi is an unknown of the linear modes (file comment): a
+  /// point inertia at an unclamped hinge. Half springs 2K from each link to chi, kr (finite,
+  /// >= 0) from chi to the ground, J on chi.
+  struct HingeRotation {
+    int node = 0;
+    double kr = 0.0;       ///< N m/rad
+    double inertia = 0.0;  ///< J, kg m^2 (> 0)
+  };
+  /// Empty for the frames (their rotation unknown carries J). Ascending nodes. O(1).
+  const std::vector<HingeRotation>& hinge_rotations() const { return hinge_rotations_; }
+  /// Whether node h is one of hinge_rotations(). O(terms).
+  bool own_rotation(int h) const;
   bool any_stiffness() const { return !springs_.empty(); }
 
   /// The rotation of the centroid line's tangent at node h at displacement u (see above).
@@ -84,6 +108,8 @@ class Terms {
   void add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out) const;
   /// The factored stiffness at rest: one row per term, its measure's gradient at u = 0, at
   /// rows row0, row0 + 1, ...; d gets the stiffnesses (all > 0). Returns the rows added.
+  /// The condensed kr at a hinge of hinge_rotations() is left out: the linear modes put kr on
+  /// that hinge's own rotation (model.cpp).
   int rest_rows(int row0, Triplets& rows, std::vector<double>& d) const;
 
  private:
@@ -98,6 +124,7 @@ class Terms {
   Eigen::VectorXd rest_;
   std::vector<Spring> springs_;
   std::vector<Inertia> inertia_;
+  std::vector<HingeRotation> hinge_rotations_;
 };
 
 }  // namespace lumped

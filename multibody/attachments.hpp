@@ -21,13 +21,13 @@
 // psi = 4K m / (4K + kr). A clamp is kr -> infinity: 4K on m. (A constraint m = 0 instead
 // converges at order 1 only, 1.04 measured over n = 80 .. 320: the curvature jumps at a
 // clamp, so m = O(l) there.) m is linear in the angles, so these terms are quadratic in q.
-// A point inertia is put on m the same way (J f^2, f = 4K / (4K + kr)), a quasi-static
-// condensation: psi then lags m by the inertia's own moment, and this converges at order 1
-// only (measured: mode 5 of scenes/thick-ring.toml with a 1e-4 kg m^2 inertia, 2.60, 1.43,
-// 0.75 % at n = 80, 160, 320 against the FE reference). psi as an unknown of its own gives
-// order 2 (measured, 0.31 -> 0.08 -> 0.02 %), but the lumped chain, this chain's second
-// implementation (tests/lumped_mass/vs_multibody_test.cpp), has the condensed inertia too:
-// both change together (README, "Known limits").
+// A point inertia cannot be condensed so (psi then moves with its own inertia): in the linear
+// modes psi becomes an unknown of its own, on the two half springs (linear_model.hpp). The
+// inertia put on m instead converges at order 1 only, for the same reason as the clamp's
+// constraint (measured: 2.60, 1.43, 0.75 % at n = 80, 160, 320 on scenes/thick-ring.toml
+// with a 1e-4 kg m^2 inertia, against the FE reference; order 2 with psi an unknown: 0.31,
+// 0.08, 0.02 %). The lumped chain, this chain's second implementation, makes the same psi an
+// unknown (lumped_mass/model.cpp; tests/lumped_mass/vs_multibody_test.cpp holds them together).
 //
 // ## Pull-back
 // u_k depends on the angles through p_k = p_0 + l sum_{j<k} e(phi_j): d u_k / d phi_j =
@@ -53,6 +53,9 @@ struct HingeRotation {
   int hinge = 0;
   double kr = 0.0;
   double inertia = 0.0;
+  /// The inertia turns the hinge's rotation into an unknown of its own (linear_model.hpp);
+  /// a clamp holds it still.
+  bool moves() const { return inertia > 0.0 && !std::isinf(kr); }
 };
 
 /// kr and the two half springs 2 EI/l of a hinge (file comment) condensed onto the mean
@@ -60,10 +63,6 @@ struct HingeRotation {
 inline double condensed_rotation_stiffness(double kr, double K) {
   return std::isinf(kr) ? 4.0 * K : 4.0 * K * kr / (4.0 * K + kr);
 }
-
-/// How the hinge's rotation follows the mean rotation, psi = f m: f = 4K / (4K + kr), 0 at a
-/// clamp; a point inertia J on psi is J f^2 on m.
-inline double rotation_follows(double kr, double K) { return std::isinf(kr) ? 0.0 : 4.0 * K / (4.0 * K + kr); }
 
 /// The spec's terms on a chain (whose anchor is spec.supports.pin or the free ring's
 /// fallback). Immutable; every member O(n) memory.
@@ -105,12 +104,19 @@ class Attachments {
 
 /// The terms linearized about the rest n-gon, for the linear modes. The terms on a hinge's
 /// rotation are kept as they are: the Euler-Bernoulli chain puts them on its segment angles,
-/// the Timoshenko chain on its sections' rotations (linear_model.hpp).
+/// the Timoshenko chain on its sections' rotations, and a point inertia makes the hinge's
+/// rotation an unknown of its own (linear_model.hpp).
 struct LinearTerms {
   Matrix K;  ///< dofs x dofs stiffness of the translations (foundation, springs' kx, ky)
   Matrix M;  ///< dofs x dofs mass of the translations (point masses)
   Matrix J;  ///< the further pins' rows x dofs
   std::vector<HingeRotation> rotations;  ///< springs' kr, the clamp, point inertias
+  /// The hinge rotations that are unknowns (HingeRotation::moves).
+  int hinge_dofs() const {
+    int d = 0;
+    for (const HingeRotation& r : rotations) d += r.moves();
+    return d;
+  }
 };
 LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec);
 

@@ -50,12 +50,13 @@ double j2_condition(const Matrix& J, int n) {
 namespace {
 
 /// The unreduced K, M and J of the chain with its terms: on q (Euler-Bernoulli), or on
-/// (q, gamma) with the bending and the rotation terms on psi = theta + gamma (Timoshenko;
-/// linear_model.hpp). O(N^2).
+/// (q, gamma) with the bending and the rotation terms on psi = theta + gamma (Timoshenko), and
+/// the hinge rotations that carry an inertia after them (linear_model.hpp). O(N^2).
 void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear* shear, Matrix& K, Matrix& M,
               Matrix& J) {
   const Vector q0 = chain.q0();
-  const int n = chain.n(), dofs = chain.dofs(), N = dofs + (shear ? n : 0);
+  const int n = chain.n(), dofs = chain.dofs(), hinge0 = dofs + (shear ? n : 0);
+  const int N = hinge0 + (terms ? terms->hinge_dofs() : 0);
   M = chain.mass_matrix(q0);
   if (N > dofs) {
     Matrix full = Matrix::Zero(N, N);
@@ -68,34 +69,44 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
     M.topLeftCorner(dofs, dofs) += terms->M;
   }
   // T(i, j) += v on the rotations r_i, r_j of segments i, j: theta (+ gamma), P^T A P with
-  // P = [I 0 | I].
+  // P = [I 0 | I]; index >= n: a hinge rotation of its own.
   auto add = [&](Matrix& T, int i, int j, double v) {
-    T(i, j) += v;
-    if (!shear) return;
-    T(dofs + i, j) += v;
-    T(i, dofs + j) += v;
-    T(dofs + i, dofs + j) += v;
+    const int a[2] = {i < n ? i : hinge0 + i - n, i < n && shear ? dofs + i : -1};
+    const int b[2] = {j < n ? j : hinge0 + j - n, j < n && shear ? dofs + j : -1};
+    for (int p : a)
+      for (int q : b)
+        if (p >= 0 && q >= 0) T(p, q) += v;
+  };
+  // A spring c (r_i - r_j)^2 / 2.
+  auto spring = [&](int i, int j, double c) {
+    add(K, i, i, c);
+    add(K, j, j, c);
+    add(K, i, j, -c);
+    add(K, j, i, -c);
   };
   const double Kh = chain.K();
-  for (int h = 0; h < n; ++h) {  // the hinge springs Kh (r_a - r_b)^2 / 2
-    const int a = (h + n - 1) % n;
-    add(K, a, a, Kh);
-    add(K, h, h, Kh);
-    add(K, a, h, -Kh);
-    add(K, h, a, -Kh);
-  }
-  if (terms)
+  for (int h = 0; h < n; ++h) spring((h + n - 1) % n, h, Kh);  // the hinge springs
+  if (terms) {
+    int extra = n;
     for (const detail::HingeRotation& t : terms->rotations) {
-      // Condensed onto the mean rotation m = (r_a + r_b) / 2 (attachments.hpp): c m^2 / 2.
-      const double f = detail::rotation_follows(t.kr, Kh);
-      const double k = t.kr > 0.0 ? detail::condensed_rotation_stiffness(t.kr, Kh) / 4.0 : 0.0;
-      const double j = t.inertia * f * f / 4.0;
-      for (int a : {(t.hinge + n - 1) % n, t.hinge})
-        for (int b : {(t.hinge + n - 1) % n, t.hinge}) {
-          add(K, a, b, k);
-          add(M, a, b, j);
-        }
+      const int a = (t.hinge + n - 1) % n, b = t.hinge;
+      if (!t.moves()) {
+        // Condensed onto the mean rotation (attachments.hpp): c m^2 / 2, m = (r_a + r_b) / 2.
+        const double c = detail::condensed_rotation_stiffness(t.kr, Kh) / 4.0;
+        for (int i : {a, b})
+          for (int j : {a, b}) add(K, i, j, c);
+        continue;
+      }
+      // The hinge's spring split into two halves 2K from each segment to the hinge's rotation
+      // chi, which carries the inertia and kr.
+      const int x = extra++;
+      spring(a, b, -Kh);
+      spring(a, x, 2.0 * Kh);
+      spring(b, x, 2.0 * Kh);
+      add(K, x, x, t.kr);
+      add(M, x, x, t.inertia);
     }
+  }
   if (shear)
     for (int i = 0; i < n; ++i) {
       add(M, i, i, shear->inertia);
@@ -103,7 +114,7 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
     }
   const Matrix J_chain = chain.constraint_jacobian(q0);
   const int c = static_cast<int>(J_chain.rows()) + (terms ? static_cast<int>(terms->J.rows()) : 0);
-  J = Matrix::Zero(c, N);  // the constraints hold the centroid line: nothing on gamma
+  J = Matrix::Zero(c, N);  // the constraints hold the centroid line: nothing on gamma or chi
   J.topLeftCorner(J_chain.rows(), dofs) = J_chain;
   if (terms) J.bottomLeftCorner(terms->J.rows(), dofs) = terms->J;
 }

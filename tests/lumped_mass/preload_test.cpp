@@ -188,9 +188,10 @@ TEST(LumpedPreload, PointMassesAtAVanishingLoadAreTheLinearModes) {
 // by alpha: the mass about the deformed state counts J in full, where one taken at rest would
 // count J cos^2 alpha (omega^2 a third too high). The chain departs from the rigid body by
 // O(g0): its sag and the swing's coupling to bending ((omega / omega_bending)^2), and the
-// series convention of kr and J (terms.hpp: 4K / (4K + kr), kr ~ g0); measured +1.6e-5 of
+// hinge's own rotation that carries J (terms.hpp; kr ~ g0); measured +1.1e-5 (+1.6e-5 with J
+// condensed on the chord rotation) of
 // omega^2 at g0 = 3e-3 m/s^2 and twice that at 2 g0. Richardson's 2 r(g0) - r(2 g0) removes
-// it: measured 2.4e-8 left (the O(g0^2) remainder and the rounding of omega^2 ~ 5e-5 of the
+// it: measured 2.9e-8 left (2.4e-8 condensed) (the O(g0^2) remainder and the rounding of omega^2 ~ 5e-5 of the
 // shift, which grows as 1/g0: 2e-6 at g0 = 1e-5). Tolerance 5e-7.
 double pendulum_ratio(double g0) {
   ring::RingSpec spec = ringtest::pinned_ring(0.0);

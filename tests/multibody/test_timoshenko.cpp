@@ -149,6 +149,7 @@ TEST(TimoshenkoChain, StiffShearIsTheEulerChainWithTheSameRotationTerms) {
   s.masses.push_back({270.0, 40.0, 0.8});
   const multibody::Chain c(s, chain(40));
   const multibody::detail::LinearTerms terms = multibody::detail::linear_terms(c, s);
+  ASSERT_EQ(terms.hinge_dofs(), 1);  // the inertia's hinge; the clamp and kr condensed
   const double shift = s.EI() / (s.rhoA() * std::pow(s.radius, 4));
   const Eigen::VectorXd euler =
       lowest(multibody::linearize(c, ring::MultibodyOptions::Dependent::robust, &terms), 8, shift);
