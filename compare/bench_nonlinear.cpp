@@ -108,7 +108,7 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
   // The sizes each solver may run, listed first so that the progress line can count them;
   // a solver that reaches the floor skips the rest of its sizes (they count as done).
   std::vector<std::vector<int>> sizes;
-  long total = 0, done = 0;
+  long runs = 0, done = 0;
   for (const auto& name : solvers) {
     sizes.emplace_back();
     for (int n = 20; n <= 320; n *= 2) {
@@ -116,7 +116,7 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
       solver(name).set_size(s, n);
       if (nodes_fit(s, n)) sizes.back().push_back(n);
     }
-    total += static_cast<long>(sizes.back().size());
+    runs += static_cast<long>(sizes.back().size());
   }
   ProgressLine line("bench " + analysis, "runs", progress);
   for (std::size_t i = 0; i < solvers.size(); ++i) {
@@ -142,11 +142,11 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
         throw ring::NumericalError("bench " + analysis + ": " + name + " at " + e.size_name + " = " +
                                    std::to_string(n) + " gave a non-finite value");
       b.study.points.push_back({name, n, 0, times[times.size() / 2], static_cast<int>(times.size()), err, err});
-      line.update(++done, total);
+      line.update(++done, runs);
       if (err <= std::max(floor_pct, kFinestUseful)) break;
     }
     done = done_before + static_cast<long>(sizes[i].size());
-    line.update(done, total);
+    line.update(done, runs);
   }
   return b;
 }

@@ -19,7 +19,8 @@ void expect_no_progress(const ringtest::Run& r) {
 
 TEST(ProgressCli, RespondWithoutATerminalPrintsWhatItPrintedBefore) {
   // Every solver and the FE reference, each taking its progress callback through its time loop.
-  const std::string args = "respond " + source("scenes/paper1990-forced-compare.toml") + " --format csv";
+  const std::string args =
+      "respond " + source("scenes/paper1990-forced-compare.toml") + " --format csv --set response.t_end=1.0";
   const auto r = ringvib(args);
   ASSERT_EQ(r.code, 0) << r.err;
   expect_no_progress(r);
