@@ -13,6 +13,7 @@
 #include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "compare/table.hpp"
 
@@ -90,15 +91,26 @@ BenchStudy bench(const ring::Scene& scene, const References& references, std::os
   b.fe_curve = solver(scene.reference_solver).curve(p3);
   for (const auto* r : {&references.extensible, &references.inextensible})
     if (*r) b.reference_seconds = std::max(b.reference_seconds, (*r)->seconds);
+  // The runs are listed first, so that the progress line can count them.
+  std::vector<std::pair<const SolverEntry*, std::vector<std::pair<std::string, ring::Scene>>>> runs;
+  long total = 0;
   for (const SolverEntry& entry : registry()) {
     if (!scene.column(entry.name)) continue;
+    runs.emplace_back(&entry, entry.bench_sweep(scene, b.modes));
+    total += static_cast<long>(runs.back().second.size());
+  }
+  ProgressLine line("bench", "runs", progress);
+  long done = 0;
+  for (const auto& [entry_ptr, sweep] : runs) {
+    const SolverEntry& entry = *entry_ptr;
     const ring::ModalResult& reference = references.of(scene, entry.name);
     std::optional<Timed> coarser;
     std::string previous_curve;
-    for (const auto& [curve, s] : entry.bench_sweep(scene, b.modes)) {
+    for (const auto& [curve, s] : sweep) {
       const int size = entry.size(s);
-      if (progress) *progress << "ringvib: bench " << curve << " at " << size << "\n";
+      line.note("bench " + curve + " at " + std::to_string(size));
       Timed t = timed_solve(s, entry, b.modes);
+      line.update(++done, total);
       const auto [mx, mean] = errors_against(t.result, reference, b.modes);
       b.points.push_back({curve, size, t.result.unknowns, t.median, t.repeats, mx, mean});
       if (curve != previous_curve) coarser.reset();

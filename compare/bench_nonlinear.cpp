@@ -10,6 +10,7 @@
 #include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "ring/errors.hpp"
 
@@ -104,14 +105,29 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
     throw ring::NumericalError("bench " + analysis + ": the reference's value (" +
                                (std::isnan(angle) ? "the " + what_is_measured(analysis) : "|u| at " + sig4(angle) + " deg") +
                                ") is " + sig4(b.reference_value) + ", so no relative error can be measured");
+  // The sizes each solver may run, listed first so that the progress line can count them;
+  // a solver that reaches the floor skips the rest of its sizes (they count as done).
+  std::vector<std::vector<int>> sizes;
+  long runs = 0, done = 0;
   for (const auto& name : solvers) {
-    const SolverEntry& e = solver(name);
+    sizes.emplace_back();
     for (int n = 20; n <= 320; n *= 2) {
       ring::Scene s = scene;
+      solver(name).set_size(s, n);
+      if (nodes_fit(s, n)) sizes.back().push_back(n);
+    }
+    runs += static_cast<long>(sizes.back().size());
+  }
+  ProgressLine line("bench " + analysis, "runs", progress);
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const std::string& name = solvers[i];
+    const SolverEntry& e = solver(name);
+    const long done_before = done;
+    for (const int n : sizes[i]) {
+      ring::Scene s = scene;
       e.set_size(s, n);
-      if (!nodes_fit(s, n)) continue;
       refine(s, n);
-      if (progress) *progress << "ringvib: bench " << analysis << " " << name << " at " << e.size_name << " = " << n << "\n";
+      line.note("bench " + analysis + " " + name + " at " + e.size_name + " = " + std::to_string(n));
       std::vector<double> times;
       double value = NAN, total = 0.0;
       while (times.empty() || (total < 0.3 && times.size() < 5)) {
@@ -126,8 +142,11 @@ NonlinearBench sweep(const ring::Scene& scene, const std::string& analysis, doub
         throw ring::NumericalError("bench " + analysis + ": " + name + " at " + e.size_name + " = " +
                                    std::to_string(n) + " gave a non-finite value");
       b.study.points.push_back({name, n, 0, times[times.size() / 2], static_cast<int>(times.size()), err, err});
+      line.update(++done, runs);
       if (err <= std::max(floor_pct, kFinestUseful)) break;
     }
+    done = done_before + static_cast<long>(sizes[i].size());
+    line.update(done, runs);
   }
   return b;
 }

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include "compare/nonlinear.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/progress.hpp"
 #include "compare/report.hpp"
 #include "compare/response.hpp"
 #include "compare/runner.hpp"
@@ -35,18 +35,18 @@ namespace cmp {
 
 namespace {
 
-/// Progress on stderr, only on a terminal and without --quiet.
+/// Progress on stderr, only on a terminal and without --quiet (compare/progress.hpp).
 class Progress {
  public:
-  explicit Progress(bool quiet) : on_(!quiet && isatty(STDERR_FILENO)) {}
+  explicit Progress(bool quiet) : out_(progress_stream(quiet)) {}
   void say(const std::string& what) const {
-    if (on_) std::cerr << "ringvib: " << what << "\n";
+    if (out_) *out_ << "ringvib: " << what << "\n";
   }
   /// Where the solvers' progress goes: stderr, or null when off.
-  std::ostream* stream() const { return on_ ? &std::cerr : nullptr; }
+  std::ostream* stream() const { return out_; }
 
  private:
-  bool on_;
+  std::ostream* out_;
 };
 
 /// `only`: the request of a nonlinear command that --solver NAME narrows to that solver

@@ -10,6 +10,7 @@
 #include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "compare/table.hpp"
 
@@ -76,6 +77,10 @@ ConvergenceStudy converge(const ring::Scene& scene, const References& references
   for (const auto* r : {&references.extensible, &references.inextensible})
     if (*r) c.reference_estimate = std::max(c.reference_estimate, (*r)->error_estimate);
   const double floor_pct = 100.0 * 100.0 * std::max(scene.fem.tolerance, c.reference_estimate);
+  long total = 0, done = 0;
+  for (const SolverEntry& entry : registry())
+    if (scene.column(entry.name)) total += entry.converge_steps;
+  ProgressLine line("converge", "sizes", progress);
   for (const SolverEntry& entry : registry()) {
     if (!scene.column(entry.name)) continue;
     const std::string& name = entry.name;
@@ -89,8 +94,9 @@ ConvergenceStudy converge(const ring::Scene& scene, const References& references
       const double size = base << k;
       ring::Scene r = scene;
       entry.set_size(r, base << k);
-      if (progress) *progress << "ringvib: " << name << " at " << s.parameter << " = " << size << "\n";
+      line.note(name + " at " + s.parameter + " = " + std::to_string(base << k));
       results.push_back(entry.modes(r, c.modes));
+      line.update(++done, total);
       const auto [mx, mean] = errors_against(results.back(), reference, c.modes);
       s.size.push_back(size);
       s.max_error.push_back(mx);

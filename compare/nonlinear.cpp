@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "compare/grid.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "ring/errors.hpp"
 
@@ -26,7 +28,19 @@ NonlinearRun run_nonlinear(const ring::Scene& scene, const std::string& only, st
     if (!only.empty() && v.empty()) v.push_back(only);  // --solver NAME not listed: run it anyway
     return v;
   };
+  // A response longer than ProgressLine::kDelay shows the fraction of t_end on a
+  // terminal: the solver's time loop reports it through ResponseOptions::progress.
+  std::optional<ProgressLine> line;
+  auto with_progress = [&](const std::string& who) {
+    ring::Scene s = scene;
+    if (!progress) return s;
+    line.reset();
+    line.emplace("response " + who, "", progress);
+    s.response->progress = [&line](double f) { line->fraction(f); };
+    return s;
+  };
   auto say = [&](const std::string& what) {
+    line.reset();  // ends the previous response's line, if it was drawn
     if (progress) *progress << "ringvib: " << what << "\n";
   };
   if (scene.response) {
@@ -34,11 +48,12 @@ NonlinearRun run_nonlinear(const ring::Scene& scene, const std::string& only, st
       const SolverEntry& e = solver(name);
       if (!e.response) throw ring::InputError(scene.file, "response.solvers", "the " + name + " solver has no forced response");
       say("integrating the forced response with " + name);
-      run.histories.push_back(e.response(scene));
+      run.histories.push_back(e.response(with_progress(name)));
     }
     if (scene.response_request.reference && only.empty()) {
       say("integrating the converged reference response");
-      run.history_reference = reference_response(scene);
+      // The reference halves dt until it converges: the fraction restarts with each run.
+      run.history_reference = reference_response(with_progress("reference"));
     }
   }
   if (scene.statics) {

@@ -1,7 +1,5 @@
 #include "compare/sweep.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -23,6 +21,7 @@
 #include "compare/nonlinear.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "compare/runner.hpp"
 #include "compare/sweep_mpi.hpp"
@@ -523,18 +522,13 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
   for (std::size_t i = 0; i < cases.size(); ++i)
     if (!done.count(cases[i])) todo.push_back(static_cast<int>(i));
 
-  const bool progress = root && !a.quiet && isatty(STDERR_FILENO);
+  ProgressLine line("sweep", "cases done", root ? progress_stream(a.quiet) : nullptr);
   std::atomic<int> finished{0}, failed{0};
   auto run = [&](int i) {
     auto rows = run_case(text, a, i, overrides[i], cases[i]);
     if (rows.size() == 1 && rows[0].status != "ok") ++failed;
     const int f = ++finished;
-    if (progress) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const double left = elapsed / f * (static_cast<double>(todo.size()) - f);
-      std::fprintf(stderr, "\rringvib: sweep %d/%zu cases done, %d failed, about %.0f s left   ", f, todo.size(),
-                   failed.load(), left);
-    }
+    line.update(f, static_cast<long>(todo.size()), std::to_string(failed.load()) + " failed");
     return rows;
   };
   std::vector<std::vector<SweepRow>> results(cases.size());
@@ -557,7 +551,7 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
       });
     for (auto& t : pool) t.join();
   }
-  if (progress) std::fprintf(stderr, "\n");
+  line.finish();
 
   // Counted from the rows, so that under MPI every rank's failures count.
   std::vector<SweepRow> rows;

@@ -295,6 +295,7 @@ ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, c
   grid.check_contact = false;
   grid.guard = &guard;
   grid.who = "fem response";
+  grid.progress = rs.progress;
   ring::TimeHistory h = paths::integrate(stepper, grid, rs.record);
   h.solver = "fem";
   h.unknowns = model.n_free();

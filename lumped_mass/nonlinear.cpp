@@ -566,6 +566,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   grid.t_end = r.t_end;
   grid.guard = &guard;
   grid.who = "lumped response";
+  grid.progress = r.progress;
   ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
   h.solver = "lumped";
   h.unknowns = N + R;

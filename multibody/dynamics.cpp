@@ -191,6 +191,7 @@ paths::Grid detail::response_grid(const ring::ResponseOptions& response, const I
   grid.check_contact = controls.check_contact;
   grid.guard = &guard;
   grid.who = who;
+  grid.progress = response.progress;
   return grid;
 }
 

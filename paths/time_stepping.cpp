@@ -65,6 +65,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
   const double min_dt = grid.min_dt_factor * grid.dt;
   double t = 0.0, h = grid.dt;
   int successes = 0;
+  const long stride = std::max(1L, steps / 200);
   for (long k = 1; k <= steps; ++k) {
     const double t_target = grid.dt * double(k);
     int iterations = 0;
@@ -115,6 +116,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
       const auto v = grid.guard->check(s.kinetic, s.strain, s.work);
       if (v.gained) fail(Reason::energy_growth, ring::describe(v, t) + grid.energy_hint);
     }
+    if (grid.progress && (k % stride == 0 || k == steps)) grid.progress(double(k) / double(steps));
   }
   return th;
 }

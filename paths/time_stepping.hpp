@@ -14,7 +14,8 @@
 // - after every grid step: the record (points, energies, constraint residual, Newton
 //   iterations), `snapshots` deformed shapes evenly spaced over the grid, and the energy
 //   guard (ring/energy_guard.hpp: a gain of T + V - W beyond 1 % of the work and the
-//   round-off bound fails with energy_growth);
+//   round-off bound fails with energy_growth), and, every ~1/200 of the run, the optional
+//   progress callback with the fraction of t_end reached;
 // - every failure is ring::IntegrationFailure with the history up to the last grid point.
 //
 // Cost: the steps' own; the driver adds O(points) per grid step and O(nodes) per snapshot.
@@ -25,6 +26,7 @@
 //   ring::TimeHistory h = paths::integrate(s, {dt, t_end}, record_angles);
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +89,9 @@ struct Grid {
   bool check_contact = true;   ///< call the contact hook after every sub-step
   std::string energy_hint;     ///< appended to the energy guard's message (what to try instead)
   std::string who;             ///< the solver, named first in every message ("multibody::respond")
+  /// Optional: called with the fraction of t_end reached after every `stride`-th grid step
+  /// (stride = max(1, steps / 200)) and at the end; empty: never (one test per step).
+  std::function<void(double fraction)> progress;
 };
 
 /// The node positions of a state stored as (x_0, y_0, x_1, y_1, ...), n nodes, as

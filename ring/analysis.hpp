@@ -3,6 +3,7 @@
 // include the scene format (ring/scene.hpp).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "ring/spec.hpp"
@@ -29,6 +30,12 @@ struct ResponseOptions {
   double rayleigh_stiffness = 0.0;     ///< b, s
   double hinge_damping = 0.0;          ///< N m s/rad at every hinge (a rotational damper
                                        ///< on the relative rotation of neighbouring pieces)
+  /// Optional: told the fraction of t_end reached (0 .. 1), by the time-stepping driver
+  /// (paths::Grid::progress), at most ~200 times a run, on the integrating thread. Empty
+  /// (the default): never called, no cost. The driver's progress line uses it; a solver
+  /// only hands it on. It must not throw: it crosses the FE plug-in's boundary, which no
+  /// exception crosses (fem_reference/plugin.hpp).
+  std::function<void(double fraction)> progress;
 };
 
 /// Nonlinear statics under the loads, by load stepping (full load at the end).

@@ -6,6 +6,7 @@
 // that refuse steps, ask for a retry, blow up, touch or gain energy on purpose.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -97,6 +98,28 @@ TEST(TimeStepping, RecordsTheDiscreteClosedFormOnTheGrid) {
   EXPECT_EQ(h.snapshot_t.size(), 6u);  // the default: 0, 2, 4, 6, 8, 10 s
   EXPECT_DOUBLE_EQ(h.snapshot_t[1], 2.0);
   EXPECT_EQ(o.steps.size(), 200u);  // no sub-steps where every step converges
+}
+
+// The progress callback (ResponseOptions::progress, passed on by every solver): the
+// fraction of t_end, increasing, at most ~200 calls, ending at 1; the record is the same.
+TEST(TimeStepping, ReportsTheFractionOfTheRunAtMostAbout200Times) {
+  for (const double t_end : {1.0, 100.0}) {
+    Oscillator plain(2.0, 3.0), watched(2.0, 3.0);
+    paths::Grid g = grid(0.05, t_end);
+    const ring::TimeHistory a = paths::integrate(plain, g, {90.0});
+    std::vector<double> seen;
+    g.progress = [&](double f) { seen.push_back(f); };
+    const ring::TimeHistory b = paths::integrate(watched, g, {90.0});
+    EXPECT_EQ(a.ux, b.ux);
+    ASSERT_FALSE(seen.empty());
+    EXPECT_LE(seen.size(), 201u) << t_end;
+    EXPECT_EQ(seen.back(), 1.0);
+    EXPECT_GT(seen.front(), 0.0);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    if (t_end == 1.0) {
+      EXPECT_EQ(seen.size(), 20u);  // 20 steps: every one
+    }
+  }
 }
 
 TEST(TimeStepping, HalvesRefusedStepsAndRegrowsAfterTwoSuccesses) {
