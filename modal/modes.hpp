@@ -87,16 +87,23 @@ PairResidual pair_residual(const Eigen::Ref<const Eigen::VectorXd>& ax,
 double norm_estimate(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& op, Eigen::Index dim,
                      int iterations = 10);
 
-/// The largest relative residual of a pair that is still an answer. The chains' pairs sit at
-/// 1e-13 (dense) to 1e-9 (the O(n) Lanczos, its solve's rounding); far above that the
-/// eigensolver has failed silently (measured: the O(n) Lanczos on a free chain that filled
-/// its whole Krylov space, residual 1.0, README "Exit codes").
-constexpr double kAcceptedResidual = 1e-6;
+/// The largest relative backward error of a pair that is still an answer. Working runs reach
+/// 2.6e-5 at the extreme the stress suite measures (the paper's dependent angles at n = 2000),
+/// 1e-13 in the common case; a silently failed eigensolver gives order 1 (measured: the O(n)
+/// Lanczos of a free chain that filled its whole Krylov space, and the paper's dependent angles
+/// without rotary inertia at n = 2000, both 1.0; README "Exit codes"). The bound sits between.
+constexpr double kAcceptedResidual = 1e-2;
+
+/// Throws ring::NumericalError naming result.solver when result.max_residual is above
+/// kAcceptedResidual (or not a number): pairs that far from K x = omega^2 M x are not an
+/// answer. For residuals that are backward errors (the chain's pair_residual); the lumped
+/// model's 2-norm residual grows with (R/l) on correct pairs (3.4e-2 at n = 3 10^4) and is
+/// not gated by it.
+void require_eigenpairs(const ring::ModalResult& result);
 
 /// Fills result.solver, rigid_modes, omega (sqrt of the selected elastic omega2,
 /// ascending) and max_residual (the largest of `relative`, one per selected elastic mode,
-/// or 0 if empty). The caller adds model, shapes, unknowns and seconds. Throws
-/// ring::NumericalError when max_residual is above kAcceptedResidual (or not a number).
+/// or 0 if empty). The caller adds model, shapes, unknowns and seconds.
 void assemble(ring::ModalResult& result, const std::string& solver, const Eigen::VectorXd& omega2,
               const Selection& selection, const std::vector<double>& relative = {});
 

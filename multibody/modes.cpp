@@ -279,6 +279,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   }
   ring::ModalResult& res = sol.result;
   modal::assemble(res, "multibody", omega2, sel, relative);
+  modal::require_eigenpairs(res);
   res.model["n"] = static_cast<long long>(chain.n());
   res.model["rotary_inertia"] = options.rotary_inertia;
   res.model["theory"] = ring::to_string(spec.theory);

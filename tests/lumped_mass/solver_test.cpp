@@ -57,7 +57,9 @@ ring::RingSpec with_supports(const std::string& s) {
 /// a spring), "free_terms" removes nothing.
 int expected_unknowns(const std::string& s, LumpedOptions::Variant v, int n, int rigid) {
   const int per_node = v == kChain ? 1 : v == kFrame ? 2 : 3;
-  const int inertia = v == kFrame ? 1 : 0;  // the point mass's rotation, kept by the lumped frame
+  // The point mass's rotation: kept by the lumped frame, an unknown of its own in the chain
+  // (lumped_mass/model.hpp); the consistent frame has every rotation already.
+  const int inertia = v == kFrame || v == kChain ? 1 : 0;
   if (s == "clamped_terms") return per_node * n - 2 - (v == kConsistent ? 1 : 0) + inertia;
   if (s == "free_terms") return per_node * n + inertia;
   return per_node * n - 3 + rigid;

@@ -5,6 +5,8 @@
 // 2 pi / n apart: singular values sqrt(1 +- cos(2 pi/n))).
 #include <gtest/gtest.h>
 
+#include "ring/errors.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -79,11 +81,24 @@ TEST(MultibodyStress, PaperDependentCoordinatesDegradeWithN) {
                 rot ? "with" : "without", "n", "cond(J_2)", "paper err", "robust err", "rigid");
     double paper2000 = 0, robust2000 = 0;
     for (int n : kNs) {
-      const Outcome p = run(n, rot, Dep::paper);
+      // Where the paper's coordinates lose the pairs altogether (relative residual near 1 at
+      // n = 2000), the solver now says so (modal::kAcceptedResidual, exit 3) instead of
+      // returning them: that counts as an infinite error here.
+      Outcome p;
+      try {
+        p = run(n, rot, Dep::paper);
+      } catch (const ring::NumericalError& e) {
+        EXPECT_GE(n, 1000) << e.what();  // a loss at this size only
+        p.numerical = HUGE_VAL;
+        p.j2 = 1.0 / std::tan(M_PI / n);
+        std::printf("%6d: %s\n", n, e.what());
+      }
       const Outcome r = run(n, rot, Dep::robust);
       std::printf("%6d %12.4e %12.3e %12.3e %6d\n", n, p.j2, p.numerical, r.numerical, p.rigid);
-      // closed form: cond(J_2) = cot(pi / n) (rounding of a 2x2 SVD: 1e-12)
-      EXPECT_TRUE(ringtest::IsClose(p.j2, 1.0 / std::tan(M_PI / n), 1e-12)) << "n = " << n;
+      if (std::isfinite(p.numerical)) {
+        // closed form: cond(J_2) = cot(pi / n) (rounding of a 2x2 SVD: 1e-12)
+        EXPECT_TRUE(ringtest::IsClose(p.j2, 1.0 / std::tan(M_PI / n), 1e-12)) << "n = " << n;
+      }
       if (n <= 40) {
         EXPECT_LT(p.numerical, 1e-10) << "n = " << n;  // the paper's own setting is fine
       }
@@ -94,7 +109,7 @@ TEST(MultibodyStress, PaperDependentCoordinatesDegradeWithN) {
     }
     // The point of the robust choice: at n = 2000 the paper's coordinates lose many
     // orders of magnitude more than the orthonormal basis (recorded above; without
-    // rotary inertia the rigid mode is no longer even recognized).
+    // rotary inertia the rigid mode is no longer even recognized), or all of it.
     EXPECT_GT(paper2000, 1e3 * robust2000);
   }
 }
