@@ -43,6 +43,8 @@ Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
   phi0_.resize(n_);
   const double a0 = anchor_deg_ * kPi / 180.0;
   for (int i = 0; i < n_; ++i) phi0_[i] = a0 + 2.0 * kPi * i / n_ + 0.5 * kPi + kPi / n_;
+  cos0_ = phi0_.array().cos();
+  sin0_ = phi0_.array().sin();
 
   if (spec.supports.roller) {
     if (free_) throw std::invalid_argument("multibody: a roller needs a pin");
@@ -253,24 +255,46 @@ double Chain::spring_energy(const Vector& q) const {
   return 0.5 * k_ * hinge_rotations(q).squaredNorm();
 }
 
-Eigen::Matrix2Xd Chain::displacements_at(const Vector& q, const Vector& dq) const {
-  Eigen::Matrix2Xd u(2, n_);
-  Eigen::Vector2d p = free_ ? Eigen::Vector2d(dq(n_), dq(n_ + 1)) : Eigen::Vector2d::Zero();
+void Chain::accumulate(const Vector& cos, const Vector& sin, const Eigen::Ref<const Vector>& dq, double* ux,
+                       double* uy) const {
+  double px = free_ ? dq(n_) : 0.0, py = free_ ? dq(n_ + 1) : 0.0;
   for (int j = 0; j < n_; ++j) {
-    u.col(j) = p;
-    p += l_ * dq(j) * Eigen::Vector2d(-std::sin(q[j]), std::cos(q[j]));
+    ux[j] = px;
+    uy[j] = py;
+    px -= l_ * dq(j) * sin[j];
+    py += l_ * dq(j) * cos[j];
   }
-  return u;
+}
+
+Eigen::Matrix2Xd Chain::displacements_at(const Vector& q, const Vector& dq) const {
+  Eigen::Matrix<double, Eigen::Dynamic, 2> u(n_, 2);
+  accumulate(q.head(n_).array().cos(), q.head(n_).array().sin(), dq, u.col(0).data(), u.col(1).data());
+  return u.transpose();
+}
+
+Eigen::Matrix2Xd Chain::rest_displacements(const Vector& dq) const {
+  Eigen::Matrix<double, Eigen::Dynamic, 2> u(n_, 2);
+  accumulate(cos0_, sin0_, dq, u.col(0).data(), u.col(1).data());
+  return u.transpose();
 }
 
 ring::ModeShape Chain::shape_at(const Vector& q, const Vector& dq) const {
-  const Eigen::Matrix2Xd u = displacements_at(q, dq);
   std::vector<double> ux(n_), uy(n_);
-  for (int j = 0; j < n_; ++j) {
-    ux[j] = u(0, j);
-    uy[j] = u(1, j);
-  }
+  accumulate(q.head(n_).array().cos(), q.head(n_).array().sin(), dq, ux.data(), uy.data());
   return ring::sample_polygon(anchor_deg_, ux, uy);
+}
+
+ring::ModeShape Chain::rest_shape(const Vector& dq) const { return rest_shapes(dq).front(); }
+
+std::vector<ring::ModeShape> Chain::rest_shapes(const Matrix& dq) const {
+  std::vector<double> ux(n_), uy(n_);
+  std::vector<ring::ModeShape> shapes;
+  shapes.reserve(static_cast<std::size_t>(dq.cols()));
+  for (Eigen::Index k = 0; k < dq.cols(); ++k) {
+    accumulate(cos0_, sin0_, dq.col(k), ux.data(), uy.data());
+    shapes.push_back(ring::sample_polygon(anchor_deg_, ux, uy));
+  }
+  return shapes;
 }
 
 Vector Chain::spring_forces(const Vector& q) const {

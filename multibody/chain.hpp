@@ -85,8 +85,11 @@ class Chain {
   int hinge_at(double deg) const;
   /// Index of the roller hinge, if the spec has a roller.
   std::optional<int> roller_hinge() const { return roller_; }
-  /// Undeformed segment angles phi0 (n-vector, rad).
+  /// Undeformed segment angles phi0 (n-vector, rad), their cosines and sines (computed
+  /// once: at n = 10^6 the trigonometry of every O(n) rest product was 8 % of the modes).
   const Vector& phi0() const { return phi0_; }
+  const Vector& cos0() const { return cos0_; }
+  const Vector& sin0() const { return sin0_; }
   /// Rest coordinates: (phi0[, 0, 0]).
   Vector q0() const;
   /// Rest position of hinge k (ring-centred frame, m).
@@ -102,9 +105,12 @@ class Chain {
   Eigen::Matrix2Xd midpoints(const Vector& q) const;
   /// Hinge displacements of a small change dq about rest, to first order (column k =
   /// hinge k): dp_k = dp_0 + l sum_{j<k} e'(phi0_j) dq_j. O(n).
-  Eigen::Matrix2Xd rest_displacements(const Vector& dq) const { return displacements_at(q0(), dq); }
+  Eigen::Matrix2Xd rest_displacements(const Vector& dq) const;
   /// The same, sampled at the common stations (a mode shape, ring/results.hpp). O(n).
-  ring::ModeShape rest_shape(const Vector& dq) const { return shape_at(q0(), dq); }
+  ring::ModeShape rest_shape(const Vector& dq) const;
+  /// rest_shape of every column of dq, with one pair of n-sized buffers for all of them
+  /// (fresh ones per mode were half the page faults of 23 modes at n = 10^6). O(n) each.
+  std::vector<ring::ModeShape> rest_shapes(const Matrix& dq) const;
   /// Hinge displacements of a small change dq about the state q, to first order, and
   /// their sampling at the common stations (mode shapes about a deformed state). O(n).
   Eigen::Matrix2Xd displacements_at(const Vector& q, const Vector& dq) const;
@@ -172,13 +178,17 @@ class Chain {
  private:
   void check(const Vector& q) const;
   Eigen::Vector2d base(const Vector& q) const;  ///< position of hinge 0
+  /// dp_k = dp_0 + l sum_{j<k} (-sin_j, cos_j) dq_j for the tangents of some state, into
+  /// ux[k], uy[k] (n entries each).
+  void accumulate(const Vector& cos, const Vector& sin, const Eigen::Ref<const Vector>& dq, double* ux,
+                  double* uy) const;
 
   int n_;
   double l_, m_, jr_, k_, rp_;
   bool free_;
   double anchor_deg_;
   std::vector<double> angles_;
-  Vector phi0_;
+  Vector phi0_, cos0_, sin0_;
   std::optional<int> roller_;
   Eigen::Vector2d roller_normal_{0.0, 0.0};
 };

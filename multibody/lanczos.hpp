@@ -13,9 +13,11 @@
 // k^4), so ~2 nev steps converge them (measured: 45..50 steps for nev = 26, n = 2000 ..
 // 10^6). Ritz values come from the exact Rayleigh quotient V^T M V, so the solve's
 // rounding only slows convergence.
-// Step k: p = M v_k, w = S_c p; since S w = p - J^T lambda and J v_j = 0, the local
-// coefficients <w, v_j>_S = v_j^T p need no S product; then one classical Gram-Schmidt
-// pass with the true S w, and a second (DGKS) when it cancelled. A closed Krylov space
+// Step k: p = M v_k, w = S_c p (the solve unrefined: lanczos.cpp); since S w = p - J^T
+// lambda and J v_j = 0, the coefficients <w, v_j>_S = v_j^T p need no S product: the
+// three-term part (j = k - 1, k) is subtracted with them, then one classical Gram-Schmidt
+// pass over the whole basis with the true S w, and a second (DGKS) only if that one
+// cancelled (measured: never). A closed Krylov space
 // (multiple eigenvalues: the free ring's rigid modes and cos/sin pairs) continues with a
 // fresh random direction (fixed seed). Stops when the nev largest Ritz values have
 // residual |beta_k y_k| <= 1e-8 theta (the estimate stagnates near 1e-9, the solve's
@@ -23,9 +25,10 @@
 // space is invariant.
 //
 // ## Cost
-// Per step: two Riccati solves, one M and three S products (O(n)), 2 k N to 4 k N for
-// the reorthogonalization (k = step; the update w -= V h taken 8 columns at a time, see
-// lanczos.cpp). Memory: N x (steps + 1) doubles; the Ritz vectors overwrite the basis.
+// Per step: one Riccati solve (two sweeps), two M products and one K product (O(n)), and
+// three reads of the basis for the reorthogonalization, 3 k N (k = step: V^T p, V^T S w and
+// the update w -= V g, taken 8 columns at a time, see lanczos.cpp). Memory: N x (steps + 1)
+// doubles; the Ritz vectors overwrite the basis.
 #pragma once
 
 #include "multibody/shifted_solve.hpp"

@@ -25,8 +25,9 @@
 // (modal/lanczos.hpp: Spectra's shift-invert Lanczos with that solve as the operator and
 // M as B) or from the hand-written Lanczos of lanczos.hpp; kDefaultSparseEigensolver says
 // which one runs by default and multibody/README.md why (measured side by side). The
-// orthonormal basis D (Householder of J^T) is applied only to the final vectors
-// (x = D^T dq). Cost: O(n) per Lanczos step, ~50 steps for 23 modes at every n, plus
+// orthonormal basis D (Householder of J^T) is never applied: the residuals' norms are
+// those of the projections onto the null space of J (modes.cpp), and the result is the
+// chain-coordinate shapes dq. Cost: O(n) per Lanczos step, ~50 steps for 23 modes at every n, plus
 // O(n k) per step for the reorthogonalization; memory N x (steps + 1) doubles plus the
 // outputs. Robust dependent coordinates only; n >= 10 (forcing it below is an input
 // error: at n = 8 every mode is wanted and the Krylov space degenerates).
@@ -91,11 +92,10 @@ constexpr double kLibraryLanczosTol = 1e-10;
 /// Full modal solution, with the coordinates behind ModalResult.
 struct ModalSolution {
   ring::ModalResult result;
-  Matrix x;             ///< r x count reduced eigenvectors, M0-orthonormal
+  /// r x count reduced eigenvectors, M0-orthonormal; dense path only (the sparse path never
+  /// forms the null-space basis D, and x = D^T dq is needed by nothing it returns: empty).
+  Matrix x;
   Matrix dq;            ///< dofs x count chain-coordinate shapes delta q = D x
-  /// n x count hinge displacements (m per unit modal amplitude, ring-centred frame):
-  /// row k = hinge k at rest angle anchor + 360 k / n; the linearized kinematics of dq.
-  Matrix hinge_ux, hinge_uy;
   Eigen::VectorXd rigid_omega2;  ///< computed omega^2 of the modes counted as rigid
   /// Normwise backward error, max over the returned modes of
   /// ||K0 x - w^2 M0 x|| / ((||K0|| + w^2 ||M0||) ||x||) (2-norms estimated by power

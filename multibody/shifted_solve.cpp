@@ -6,8 +6,8 @@
 namespace multibody {
 
 ShiftedSolve::ShiftedSolve(const Chain& c) : c_(c) {
-  cos_ = c.phi0().array().cos();
-  sin_ = c.phi0().array().sin();
+  cos_ = c.cos0();
+  sin_ = c.sin0();
   Jt_ = c.constraint_jacobian(c.q0()).transpose();
   qr_.compute(Jt_);
   N_ = c.dofs();
@@ -39,11 +39,12 @@ void ShiftedSolve::S_full(const Eigen::Ref<const Vector>& dq, Eigen::Ref<Vector>
   y += s_ * ws.t;
 }
 
-void ShiftedSolve::solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws) const {
+void ShiftedSolve::solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws,
+                              int refinements) const {
   Vector lambda(nc_), dl(nc_);
   full_solve(f, dq, lambda);
   ws.r.resize(N_);
-  for (int step = 0; step < kRefinementSteps; ++step) {
+  for (int step = 0; step < refinements; ++step) {
     // The residual of the bordered system, J^T lambda included: without it the
     // residual is dominated by the multiplier part and the refinement gains nothing.
     S_full(dq, ws.r, ws);
@@ -53,10 +54,6 @@ void ShiftedSolve::solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vect
     dq += ws.r;
     lambda += dl;
   }
-}
-
-Matrix ShiftedSolve::reduce_cols(const Matrix& Y) const {
-  return (qr_.householderQ().transpose() * Y).bottomRows(r());
 }
 
 void ShiftedSolve::m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y, Workspace& ws) const {

@@ -26,7 +26,7 @@
 //
 // Cost: set_shift O(n) (one backward sweep, k border solves); perform_op / solve_full
 // O(n) (two sweeps per solve, two solves with the refinement, one S product); m_times,
-// k_times, S_full O(n); reduce_cols O(n c k) (Householder reflections). Memory O(n k).
+// k_times, S_full O(n). Memory O(n k).
 #pragma once
 
 #include <Eigen/Dense>
@@ -70,12 +70,10 @@ class ShiftedSolve {
   /// y = S dq = (K + s M(q0)) dq in chain coordinates. O(n).
   void S_full(const Eigen::Ref<const Vector>& dq, Eigen::Ref<Vector> y, Workspace& ws) const;
   /// dq = the constrained solve [S J^T; J 0] [dq; lambda] = [f; 0] in chain coordinates
-  /// (dq in the null space of J), refined kRefinementSteps times against S_full: the
-  /// multiplier part of the residual is absorbed by the next solve's lambda. O(n).
-  void solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws) const;
-  /// D^T Y for the columns of Y (N x k), D the orthonormal null-space basis
-  /// (linear_model.hpp, robust): Householder reflections blocked over the columns.
-  Matrix reduce_cols(const Matrix& Y) const;
+  /// (dq in the null space of J), refined `refinements` times against S_full: the
+  /// multiplier part of the residual is absorbed by the next solve's lambda. O(n) each.
+  void solve_full(const Eigen::Ref<const Vector>& f, Eigen::Ref<Vector> dq, Workspace& ws,
+                  int refinements = kRefinementSteps) const;
   /// y = M(q0) v: Chain::mass_times at q0 with the trigonometry cached. O(n).
   void m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y, Workspace& ws) const;
   /// y = K x: springs at every hinge (cyclic). O(n).
