@@ -97,8 +97,10 @@ SolverEntry multibody_entry() {
   // Working memory beyond the process (compare/guard.cpp adds that), fitted to the peak
   // RSS measured at n = 200 ... 10^6 (README "Cost guard"; tests/compare/test_memory_estimate.cpp
   // holds it within [1, 1.5] of the measured peak). Measured: dense modes 49 n^2 bytes
-  // (LAPACK's n x n pencil and workspace); O(n) modes n (360 + 30 count) (the band
-  // factors and the Lanczos basis of up to 4 count + 60 vectors); nonlinear: dense
+  // (LAPACK's n x n pencil and workspace); O(n) modes n (320 + 11 count) (slopes between
+  // n = 10^4 and 10^5 for count = 5, 23, 50, 100: 374, 582, 879, 1412 bytes per segment;
+  // 596 MB at 10^6, count = 23: the band factors and the ~2 count touched columns of the
+  // Lanczos basis, which the shapes then overwrite); nonlinear: dense
   // response 42-47 n^2, dense statics 21 n^2 (50-56 n^2 since each accepted step counts the
   // tangent's unstable directions: T, the kernel basis Z, Z^T T Z and the eigensolver's
   // workspace; n = 800, 400), O(n) response 1.54-1.64 KB (newmark, the
@@ -115,7 +117,7 @@ SolverEntry multibody_entry() {
     const double N = s.ring.theory == ring::Theory::timoshenko ? 2.0 * n : n;
     if (count > 0)
       return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
-                 ? n * (420.0 + 33.0 * count)
+                 ? n * (380.0 + 13.0 * count)
                  : (s.ring.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
     double bytes = 0.0;
     if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * n * n);
