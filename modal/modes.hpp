@@ -96,9 +96,10 @@ constexpr double kAcceptedResidual = 1e-2;
 
 /// Throws ring::NumericalError naming result.solver when result.max_residual is above
 /// kAcceptedResidual (or not a number): pairs that far from K x = omega^2 M x are not an
-/// answer. For residuals that are backward errors (the chain's pair_residual); the lumped
-/// model's 2-norm residual grows with (R/l) on correct pairs (3.4e-2 at n = 3 10^4) and is
-/// not gated by it.
+/// answer. For the chain's relative residuals (pair_residual), which multibody/modes.cpp
+/// also accepts by a small backward error where their rounding floor grows with n; the
+/// lumped model's 2-norm residual grows with (R/l) on correct pairs (3.4e-2 at n = 3 10^4)
+/// and is not gated by it.
 void require_eigenpairs(const ring::ModalResult& result);
 
 /// Fills result.solver, rigid_modes, omega (sqrt of the selected elastic omega2,
