@@ -183,6 +183,18 @@ class Follower {
     return false;
   }
 
+  /// Whether `now` unstable directions at an equilibrium reached from `from` differ from the
+  /// last accepted count. At rest (load factor 0) the true count is 0, an unloaded ring's
+  /// stiffness being positive semidefinite: rigid motions that only the load holds (a ring
+  /// hanging from its pin) are neutral there, and rounding may count them as unstable (the
+  /// FE beam's frontal inertia did, and stopped the shipped hanging ring at load factor
+  /// 1e-7). So a fall in the count on a step from rest is the load taking hold of them, not
+  /// a branch point: it becomes the count, and no change.
+  bool count_changed(const State& from, int now) {
+    if (from.s == 0.0 && now < *unstable_) unstable_ = now;
+    return now != *unstable_;
+  }
+
   /// Records the accepted `to`; false (and the trace ended) when the ring touched itself
   /// or the path passed a bifurcation. `limits`: limit points passed between them (each
   /// explains a change of one unstable direction); `between`: the equilibria inside the
@@ -204,7 +216,7 @@ class Follower {
     }
     if (unstable_) {
       const std::optional<int> now = known ? known : eq_.unstable_directions(to);
-      if (now && std::abs(*now - *unstable_) > limits) {
+      if (now && count_changed(from, *now) && std::abs(*now - *unstable_) > limits) {
         bifurcation(from, to, *now);
         return false;
       }
@@ -313,7 +325,7 @@ class Follower {
       // from the accepted equilibrium, so on its branch) until it is kBifurcationBracket
       // of an increment, where accept() ends the path at it.
       const std::optional<int> count = unstable_ ? eq_.unstable_directions(trial) : std::nullopt;
-      if (count && *count != *unstable_ && step > kBifurcationBracket * ds_) {
+      if (count && count_changed(state, *count) && step > kBifurcationBracket * ds_) {
         beyond = trial;
         beyond_count = *count;
         step *= 0.5;

@@ -255,4 +255,51 @@ TEST(Continuation, BranchSwitchingFollowsEitherSideOfAPitchfork) {
   }
 }
 
+// A rigid motion that only the load holds (a ring hanging from its pin): R = s c u + u^3, the
+// path u = 0, the tangent s c neutral at rest. At rest the model counts the neutral
+// direction as unstable, as the FE beam's frontal inertia did by rounding (it stopped the
+// shipped hanging ring at load factor 1e-7 with "regains stability ... a bifurcation").
+// The fall of the count on the first step from rest is the load taking hold of it: the
+// path reaches the full load; a count that rises at rest would still be a branch point
+// (BifurcationsEndThePathLocatedToTheBracket).
+class Hanging : public paths::Equilibrium {
+ public:
+  Eigen::Index size() const override { return 1; }
+  Eigen::Index arc_size() const override { return 1; }
+  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const double u = x.z(0);
+    r.resize(1);
+    r << x.s * kC * u + u * u * u;
+    B_ << x.s * kC + 3.0 * u * u, -kC * u,  //
+        w(0), ws;
+    lu_.compute(B_);
+    return std::abs(lu_.determinant()) > 1e-300;
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y);
+    return y.allFinite();
+  }
+  double move(const paths::Vector& dz) const override { return std::abs(dz(0)) / 0.5; }
+  bool converged(const paths::State&, const paths::Vector& dz, int) override { return dz.cwiseAbs().maxCoeff() <= 1e-13; }
+  std::optional<int> unstable_directions(const paths::State& x) override {
+    return x.s * kC + 3.0 * x.z(0) * x.z(0) <= 0.0 ? 1 : 0;  // the neutral rest counted unstable
+  }
+  std::optional<paths::Touch> accept(const paths::State&, const paths::State&) override { return std::nullopt; }
+
+ private:
+  static constexpr double kC = 2.0;
+  Eigen::Matrix2d B_;
+  Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
+};
+
+TEST(Continuation, ALoadThatTakesHoldOfANeutralRestIsNoBifurcation) {
+  Hanging hanging;
+  const paths::Continuation options{10};
+  const paths::Trace t = paths::follow(hanging, {paths::Vector::Zero(1), 0.0}, options);
+  ASSERT_EQ(t.end, paths::Trace::End::reached) << paths::failure_message(t, options);
+  EXPECT_DOUBLE_EQ(t.state.s, 1.0);
+  EXPECT_EQ(t.state.z(0), 0.0);
+  EXPECT_FALSE(t.continuation);
+}
+
 }  // namespace
