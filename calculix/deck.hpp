@@ -11,11 +11,27 @@
 //   height h = sqrt(12 I / A)), or as given (CIRC with the diameter, RECT width x height;
 //   a general {area, inertia} section has no shape and is refused);
 // - in-plane motion: the out-of-plane displacement of every beam node is held;
-// - pin: both displacements of its node held (rotation free, so no rotation boundary
-//   condition, which ccx would turn into a rigid knot of the expanded section);
+// - pins (supports.pin and supports.pins): both displacements of the node held (rotation
+//   free, so no rotation boundary condition, which ccx would turn into a rigid knot of the
+//   expanded section);
+// - clamp: a pin whose rotation about z (degree of freedom 6) is held too;
 // - roller: its node stays on the line through the pin and itself: one displacement held
-//   if that line is along x or y, else a two-term *EQUATION.
-// Every other term a ring spec may carry is refused until the deck can write it.
+//   if that line is along x or y, else a two-term *EQUATION;
+// - elastic supports: SPRING1 elements in x and y on the node (a rotational spring kr is
+//   refused: ccx ignores a SPRING1 on the rotation of an expanded beam's node);
+// - point masses (frequency and response decks): MASS elements on the node (rotary inertia
+//   refused: ccx has none); the out-of-plane displacement of their nodes held by a one-term
+//   *EQUATION, since a MASS element beside a held degree of freedom stops ccx 2.20;
+// - the Winkler foundation: SPRING1 elements at every node in the cylindrical system about
+//   z (radial and tangential of the undeformed node), the modulus times the node's share of
+//   the ring (B31: L; B32/B32R: L/3 at an end node, 2L/3 at a middle node);
+// - with springs, masses, the foundation or nodal loads, the section is made rigid across
+//   its width (E_z = 1e4 E; no in-plane stress involves it at Poisson's ratio 0), since ccx
+//   ties them to the corners of the expanded section;
+// - loads (statics, response): point loads and the masses' weight as *CLOAD, a follower
+//   pressure as the beam pressure P2 (a face pressure of the expanded section, following it
+//   under NLGEOM), a dead pressure as the undeformed ring's consistent nodal forces (*CLOAD),
+//   gravity as *DLOAD GRAV; a central pressure is refused (ccx has no such load).
 //
 // Node k (1-based k + 1) sits at polar angle anchor + 360 k / nodes (degrees), anchor the
 // pin or 0 for a free ring; B31: nodes = elements, B32/B32R: nodes = 2 elements (the
@@ -42,8 +58,15 @@ struct Deck {
   double width = 0.0, height = 0.0; ///< m: the section written (height radial; circle: both the diameter)
 };
 
-/// Refuses what the deck cannot express (ring::InputError naming the key, exit 2). O(1).
-void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options);
+/// Whether the analysis has inertia: a point mass's rotary inertia, which ccx cannot
+/// write, is refused in modes and responses and ignored in statics.
+enum class Inertia { matters, ignored };
+
+/// Refuses what the deck cannot express (ring::InputError naming the key, exit 2): a
+/// rotational spring, a point mass's rotary inertia (Inertia::matters), a point term off
+/// the nodes, a general section as given. O(terms).
+void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options,
+                Inertia inertia = Inertia::matters);
 
 /// The deck of a frequency analysis. O(elements).
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const FrequencyStep& step,
