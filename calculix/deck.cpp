@@ -49,7 +49,10 @@ int node_count(const ring::CalculixOptions& o) {
   return o.element == ring::CalculixOptions::Element::b31 ? o.elements : 2 * o.elements;
 }
 
-void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
+namespace {
+
+/// What the deck refuses whatever the nodes: see check_deck.
+void check_refusals(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
   // What ccx cannot express on an expanded beam (measured with ccx 2.20, calculix/README.md):
   // a rotational spring (a SPRING1 on degree of freedom 6 of a beam node is accepted and
   // silently does nothing: the node's rotation is no degree of freedom unless a knot is
@@ -71,16 +74,25 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Iner
     throw ring::InputError("", "calculix.section",
                            "\"as-given\" needs a circle or a rectangle; a section given by {area, inertia} has no "
                            "shape for ccx to expand (use \"equivalent-rectangle\")");
+}
+
+/// The free ring's anchor of a static or response deck: the first point load, as every
+/// solver and the scene reader take it (ring/scene.cpp check_nodes); else 0.
+double free_anchor(const ring::Loads& loads) { return loads.points.empty() ? 0.0 : loads.points.front().angle; }
+
+/// Every point term on a node: nodes every 360/nodes degrees from the pin, or from
+/// `free_ring_anchor` on a free ring.
+void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o, double free_ring_anchor) {
   // Every point term on a node of the model (the scene reader checks this for every model;
   // the deck checks it again for callers without a scene).
-  const double step = 360.0 / node_count(o), anchor = spec.supports.pin.value_or(0.0);
+  const double step = 360.0 / node_count(o), anchor = spec.supports.pin.value_or(free_ring_anchor);
   auto need_node = [&](double angle, const std::string& key) {
     const double off = ring::wrap_degrees(angle - anchor) / step;
     if (std::abs(off - std::round(off)) > 1e-9)
       throw ring::InputError("", key,
                              "angle is not a node of the calculix model (calculix.elements = " +
                                  std::to_string(o.elements) + " puts nodes every " + number(step) + " degrees from " +
-                                 (spec.supports.pin ? "the pin" : "0") + ")");
+                                 (spec.supports.pin ? std::string("the pin") : number(anchor)) + ")");
   };
   if (spec.supports.roller) need_node(*spec.supports.roller, "supports.roller");
   for (double p : spec.supports.pins) need_node(p, "supports.pins");
@@ -89,6 +101,13 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Iner
     need_node(spec.supports.springs[i].angle, "supports.springs[" + std::to_string(i + 1) + "].at");
   for (std::size_t i = 0; i < spec.masses.size(); ++i)
     need_node(spec.masses[i].angle, "masses[" + std::to_string(i + 1) + "].at");
+}
+
+}  // namespace
+
+void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
+  check_refusals(spec, o, inertia);
+  check_points(spec, o, spec.supports.pin.value_or(0.0));
 }
 
 namespace {
@@ -109,15 +128,17 @@ std::vector<double> node_shares(const ring::RingSpec& spec, const ring::Calculix
 /// `loads_on_nodes`: the step loads nodes beyond the paper's point loads (dead pressure,
 /// the masses' weight).
 Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const std::string& title,
-                const std::string& analysis, bool dynamic, bool loads_on_nodes = false) {
-  check_deck(spec, o, dynamic ? Inertia::matters : Inertia::ignored);
+                const std::string& analysis, bool dynamic, bool loads_on_nodes = false,
+                double free_ring_anchor = 0.0) {
+  check_refusals(spec, o, dynamic ? Inertia::matters : Inertia::ignored);
+  check_points(spec, o, free_ring_anchor);
   using Element = ring::CalculixOptions::Element;
   Deck d;
   const bool width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
                            (dynamic && !spec.masses.empty()) || loads_on_nodes;
   const int nodes = node_count(o);
-  d.anchor = spec.supports.pin.value_or(0.0);
-  d.node_angles = ring::node_angles(spec, nodes, 0.0);
+  d.anchor = spec.supports.pin.value_or(free_ring_anchor);
+  d.node_angles = ring::node_angles(spec, nodes, free_ring_anchor);
   const bool circle = o.section == ring::CalculixOptions::Section::as_given &&
                       spec.section.shape == ring::Section::Shape::circle;
   if (o.section == ring::CalculixOptions::Section::equivalent_rectangle) {
@@ -431,7 +452,8 @@ std::string load_blocks(const ring::RingSpec& spec, const ring::CalculixOptions&
 Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::ResponseOptions& rs,
                    const std::string& title) {
   check_response_deck(rs);
-  Deck d = model_deck(spec, o, title, "Forced nonlinear response", true, nodal_loads(spec, rs.loads));
+  Deck d = model_deck(spec, o, title, "Forced nonlinear response", true, nodal_loads(spec, rs.loads),
+                      free_anchor(rs.loads));
   const std::string cloads = load_blocks(spec, o, d, rs.loads, "response", true);
   std::vector<int> record;
   for (double a : rs.record) {
@@ -482,7 +504,7 @@ void check_response_deck(const ring::ResponseOptions& rs) {
 
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
-  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads));
+  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads), free_anchor(st.loads));
   const std::string cloads = load_blocks(spec, o, d, st.loads, "static", false);
   const double inc = 1.0 / st.steps;
   std::ostringstream s;

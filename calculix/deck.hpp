@@ -34,7 +34,8 @@
 //   gravity as *DLOAD GRAV; a central pressure is refused (ccx has no such load).
 //
 // Node k (1-based k + 1) sits at polar angle anchor + 360 k / nodes (degrees), anchor the
-// pin or 0 for a free ring; B31: nodes = elements, B32/B32R: nodes = 2 elements (the
+// pin, or for a free ring the first point load of a static or response deck (as every
+// solver and the scene reader take it), else 0; B31: nodes = elements, B32/B32R: nodes = 2 elements (the
 // middle nodes on the circle too).
 #pragma once
 

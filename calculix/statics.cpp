@@ -35,7 +35,6 @@ int newton_iterations(const std::string& sta) {
 }  // namespace
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
-  check_deck(spec, options, Inertia::ignored);  // statics needs no rotary inertia
   const Deck d = static_deck(spec, options, st, "check");  // the loads on nodes, what ccx cannot load; O(elements)
   for (double a : st.record)
     if (node_of(d, a) < 0)

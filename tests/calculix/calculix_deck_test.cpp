@@ -375,6 +375,27 @@ TEST(CalculixDeck, SpringsMassesAndTheFoundationAreElementsOnTheNodes) {
   EXPECT_NE(deck.find("NALL, 3, 3"), std::string::npos);
 }
 
+TEST(CalculixDeck, AFreeRingsStaticDeckHasItsFirstNodeAtTheLoad) {
+  // A free ring held by its foundation: every solver and the scene reader put a node at the
+  // first point load and count the others from there.
+  ring::RingSpec r = paper_ring();
+  r.foundation = {1e4, 1e4};
+  r.masses = {{62.0, 10.0, 0.0}};  // 2 + 60: a node from the load's anchor
+  ring::CalculixOptions o;
+  o.elements = 12;
+  ring::StaticOptions st;
+  st.loads.points = {{2.0, {0.0, -1e3}}};
+  st.loads.gravity = {0.0, -9.81};
+  const calculix::Deck d = calculix::static_deck(r, o, st);
+  EXPECT_EQ(d.anchor, 2.0);
+  EXPECT_EQ(d.node_angles.at(1), 17.0);
+  const Parsed p = parse(d.text);
+  EXPECT_NEAR(p.nodes.at(1)[0], 10.0 * std::cos(2.0 * M_PI / 180.0), 1e-12);
+  EXPECT_NE(d.text.find("*CLOAD\n1, 2, " + calculix::number(-1e3)), std::string::npos);
+  // The frequency deck of the same ring counts from 0, where the mass is no node.
+  EXPECT_THROW(calculix::frequency_deck(r, o, {10}), ring::InputError);
+}
+
 TEST(CalculixDeck, PressureAndGravityLoads) {
   ring::RingSpec r = paper_ring();
   r.supports.pin = 180.0;
