@@ -73,15 +73,15 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const FrequencyStep& step,
                     const std::string& title = "");
 
-/// The deck of the nonlinear statics under static.at/static.force: *STEP, NLGEOM with
-/// *STATIC in static.steps equal increments (ccx may cut them), *CLOAD at the load's node,
-/// *NODE PRINT of the beam nodes after every increment. Throws ring::InputError if the
-/// load is not at a node. O(elements).
+/// The deck of the nonlinear statics under static's loads: *STEP, NLGEOM with *STATIC in
+/// static.steps equal increments (ccx may cut them), the load blocks (see above; point
+/// masses only as their weight), *NODE PRINT of the beam nodes after every increment.
+/// Throws ring::InputError for a load off the nodes or one ccx cannot express. O(elements).
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& step,
                  const std::string& title = "");
 
 /// The deck of the forced response: *STEP, NLGEOM with *DYNAMIC, DIRECT, ALPHA = 0
-/// (Newmark's average acceleration, fixed dt to t_end), the load's history as an
+/// (Newmark's average acceleration, fixed dt to t_end), every load times the history as an
 /// *AMPLITUDE, *NODE PRINT of the recorded nodes after every increment. Throws
 /// ring::InputError for what it cannot express (check_response_deck) or points off the
 /// nodes. O(elements + t_end / dt).
