@@ -49,41 +49,96 @@ int node_count(const ring::CalculixOptions& o) {
   return o.element == ring::CalculixOptions::Element::b31 ? o.elements : 2 * o.elements;
 }
 
-void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
-  // Further pins, a clamp (a rotation condition: see deck.hpp), springs, point masses and
-  // the foundation are not written yet: refused by name, not left out.
-  const std::vector<std::string> terms = spec.terms_beyond_paper();
-  if (!terms.empty()) {
-    std::string list;
-    for (std::size_t i = 0; i < terms.size(); ++i) list += (i ? ", " : "") + terms[i];
-    throw ring::InputError("", terms.front(), "the calculix deck does not write " + list + " yet (pin and roller only)");
-  }
+namespace {
+
+/// What the deck refuses whatever the nodes: see check_deck.
+void check_refusals(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
+  // What ccx cannot express on an expanded beam (measured with ccx 2.20, calculix/README.md):
+  // a rotational spring (a SPRING1 on degree of freedom 6 of a beam node is accepted and
+  // silently does nothing: the node's rotation is no degree of freedom unless a knot is
+  // made) and the rotary inertia of a point mass (ccx has *MASS, no *ROTARY INERTIA).
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i)
+    if (spec.supports.springs[i].kr != 0.0)
+      throw ring::InputError("", "supports.springs[" + std::to_string(i + 1) + "].kr",
+                             "the calculix deck cannot write a rotational spring: ccx's spring elements act on the "
+                             "displacements of the expanded beam's node, and a SPRING1 on its rotation (degree of "
+                             "freedom 6) is silently ignored; give kr = 0 or leave calculix out");
+  if (inertia == Inertia::matters)
+    for (std::size_t i = 0; i < spec.masses.size(); ++i)
+      if (spec.masses[i].inertia != 0.0)
+        throw ring::InputError("", "masses[" + std::to_string(i + 1) + "].inertia",
+                               "the calculix deck cannot write a point mass's rotary inertia: ccx 2.20 has *MASS "
+                               "elements (translation only) and no *ROTARY INERTIA; give inertia = 0 or leave "
+                               "calculix out of modes and responses (statics does not need it)");
   if (o.section == ring::CalculixOptions::Section::as_given && spec.section.shape == ring::Section::Shape::general)
     throw ring::InputError("", "calculix.section",
                            "\"as-given\" needs a circle or a rectangle; a section given by {area, inertia} has no "
                            "shape for ccx to expand (use \"equivalent-rectangle\")");
-  if (spec.supports.roller) {
-    const double step = 360.0 / node_count(o);
-    const double off = ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) / step;
+}
+
+/// The free ring's anchor of a static or response deck: the first point load, as every
+/// solver and the scene reader take it (ring/scene.cpp check_nodes); else 0.
+double free_anchor(const ring::Loads& loads) { return loads.points.empty() ? 0.0 : loads.points.front().angle; }
+
+/// Every point term on a node: nodes every 360/nodes degrees from the pin, or from
+/// `free_ring_anchor` on a free ring.
+void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o, double free_ring_anchor) {
+  // Every point term on a node of the model (the scene reader checks this for every model;
+  // the deck checks it again for callers without a scene).
+  const double step = 360.0 / node_count(o), anchor = spec.supports.pin.value_or(free_ring_anchor);
+  auto need_node = [&](double angle, const std::string& key) {
+    const double off = ring::wrap_degrees(angle - anchor) / step;
     if (std::abs(off - std::round(off)) > 1e-9)
-      throw ring::InputError("", "supports.roller",
+      throw ring::InputError("", key,
                              "angle is not a node of the calculix model (calculix.elements = " +
-                                 std::to_string(o.elements) + " puts nodes every " + number(step) +
-                                 " degrees from the pin)");
-  }
+                                 std::to_string(o.elements) + " puts nodes every " + number(step) + " degrees from " +
+                                 (spec.supports.pin ? std::string("the pin") : number(anchor)) + ")");
+  };
+  if (spec.supports.roller) need_node(*spec.supports.roller, "supports.roller");
+  for (double p : spec.supports.pins) need_node(p, "supports.pins");
+  if (spec.supports.clamp) need_node(*spec.supports.clamp, "supports.clamp");
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i)
+    need_node(spec.supports.springs[i].angle, "supports.springs[" + std::to_string(i + 1) + "].at");
+  for (std::size_t i = 0; i < spec.masses.size(); ++i)
+    need_node(spec.masses[i].angle, "masses[" + std::to_string(i + 1) + "].at");
+}
+
+}  // namespace
+
+void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
+  check_refusals(spec, o, inertia);
+  check_points(spec, o, spec.supports.pin.value_or(0.0));
 }
 
 namespace {
 
+/// The share of the ring's length at each node (m): B31 the element length L, B32/B32R
+/// the quadratic element's consistent weights (an end node L/3, a middle node 2L/3).
+std::vector<double> node_shares(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
+  const double L = 2.0 * kPi * spec.radius / o.elements;
+  const bool quadratic = o.element != ring::CalculixOptions::Element::b31;
+  std::vector<double> w(node_count(o));
+  for (std::size_t k = 0; k < w.size(); ++k) w[k] = quadratic ? (k % 2 ? 2.0 * L / 3.0 : L / 3.0) : L;
+  return w;
+}
+
 /// Everything but the step: heading, nodes, elements, material, section, supports.
+/// `dynamic`: the step has inertia (frequency, response), so the point masses are written
+/// as MASS elements; a static deck leaves them out (their weight is a load).
+/// `loads_on_nodes`: the step loads nodes beyond the paper's point loads (dead pressure,
+/// the masses' weight).
 Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const std::string& title,
-                const std::string& analysis) {
-  check_deck(spec, o);
+                const std::string& analysis, bool dynamic, bool loads_on_nodes = false,
+                double free_ring_anchor = 0.0) {
+  check_refusals(spec, o, dynamic ? Inertia::matters : Inertia::ignored);
+  check_points(spec, o, free_ring_anchor);
   using Element = ring::CalculixOptions::Element;
   Deck d;
+  const bool width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
+                           (dynamic && !spec.masses.empty()) || loads_on_nodes;
   const int nodes = node_count(o);
-  d.anchor = spec.supports.pin.value_or(0.0);
-  d.node_angles = ring::node_angles(spec, nodes, 0.0);
+  d.anchor = spec.supports.pin.value_or(free_ring_anchor);
+  d.node_angles = ring::node_angles(spec, nodes, free_ring_anchor);
   const bool circle = o.section == ring::CalculixOptions::Section::as_given &&
                       spec.section.shape == ring::Section::Shape::circle;
   if (o.section == ring::CalculixOptions::Section::equivalent_rectangle) {
@@ -126,8 +181,26 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
 
   s << "** Material: Poisson's ratio 0 (the ring has none; the section then keeps its shape, and the\n"
     << "** bricks act as a beam with shear modulus E/2 and the section's rotary inertia).\n"
-    << "*MATERIAL, NAME=RING\n*ELASTIC\n"
-    << number(spec.E) << ", 0.0\n*DENSITY\n" << number(spec.rho) << "\n";
+    << "*MATERIAL, NAME=RING\n";
+  if (width_rigid) {
+    // Springs, masses and nodal loads act on a beam node, which ccx ties to the corners of
+    // the expanded section; the section's midside nodes then carry their share through
+    // the plate bending of the section across its width (z), which a beam has not: with an
+    // isotropic material a tyre belt (width/height 19) on its foundation had its lowest
+    // frequencies 0.3-0.6 % low at any element count. E_z = 1e4 E removes it (to 6e-6
+    // against 1e3 E) and changes no in-plane stress: with Poisson's ratio 0 the in-plane
+    // stresses never involve E_z (measured: the free ring's frequencies agree to 7 digits).
+    s << "** The section made rigid across its width (E_z = 1e4 E): springs, masses and loads hang on\n"
+      << "** the corners of the expanded section, and a beam's section does not bend across its width.\n"
+      << "** E_x, E_y, E_z, nu_xy, nu_xz, nu_yz, G_xy, G_xz / G_yz.\n"
+      << "*ELASTIC, TYPE=ENGINEERING CONSTANTS\n"
+      << number(spec.E) << ", " << number(spec.E) << ", " << number(1e4 * spec.E) << ", 0.0, 0.0, 0.0, "
+      << number(spec.E / 2.0) << ", " << number(spec.E / 2.0) << "\n"
+      << number(spec.E / 2.0) << "\n";
+  } else {
+    s << "*ELASTIC\n" << number(spec.E) << ", 0.0\n";
+  }
+  s << "*DENSITY\n" << number(spec.rho) << "\n";
 
   s << "** Section: the 1-direction is normal to the ring's plane (0, 0, 1), so the 2-direction is\n"
     << "** radial and in-plane bending uses the radial height.\n";
@@ -146,11 +219,56 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
   }
   s << "0.0, 0.0, 1.0\n";
 
-  s << "** In-plane motion only: the out-of-plane displacement of every beam node is held.\n"
-    << "*BOUNDARY\nNALL, 3, 3\n";
-  if (spec.supports.pin) {
-    s << "** Pin at " << number(*spec.supports.pin) << " degrees: both displacements of node 1 held, rotation free.\n"
-      << "*BOUNDARY\n1, 1, 2\n";
+  // A MASS element on a node whose out-of-plane displacement is a *BOUNDARY stops ccx 2.20's
+  // frequency step ("add_bo_st: coefficient should be 0": the mass couples the held degree
+  // of freedom, for which the matrix has no place); a one-term *EQUATION holds it as well.
+  std::vector<int> mass_nodes;
+  if (dynamic)
+    for (const auto& m : spec.masses) mass_nodes.push_back(node_at(d.node_angles, m.angle) + 1);
+  if (mass_nodes.empty()) {
+    s << "** In-plane motion only: the out-of-plane displacement of every beam node is held.\n"
+      << "*BOUNDARY\nNALL, 3, 3\n";
+  } else {
+    s << "** In-plane motion only: the out-of-plane displacement of every beam node is held, by *BOUNDARY\n"
+      << "** on NPLANE and, at the point masses' nodes, by one-term equations (a MASS element beside a\n"
+      << "** held degree of freedom stops ccx 2.20's frequency step).\n"
+      << "*NSET, NSET=NPLANE, GENERATE\n";
+    std::vector<int> sorted = mass_nodes;
+    std::sort(sorted.begin(), sorted.end());
+    int first = 1;
+    for (int k : sorted) {
+      if (k > first) s << first << ", " << k - 1 << ", 1\n";
+      first = std::max(first, k + 1);
+    }
+    if (first <= nodes) s << first << ", " << nodes << ", 1\n";
+    s << "*BOUNDARY\nNPLANE, 3, 3\n";
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    for (int k : sorted) s << "*EQUATION\n1\n" << k << ", 3, 1.0\n";
+  }
+  // Held displacements first..last of node k: *BOUNDARY, or at a point mass's node one-term
+  // *EQUATIONs.
+  auto hold = [&](int k, int first, int last) {
+    if (std::find(mass_nodes.begin(), mass_nodes.end(), k) == mass_nodes.end())
+      s << "*BOUNDARY\n" << k << ", " << first << ", " << last << "\n";
+    else
+      for (int dof = first; dof <= last; ++dof) s << "*EQUATION\n1\n" << k << ", " << dof << ", 1.0\n";
+  };
+  const std::vector<double> pinned = spec.supports.pinned();
+  for (std::size_t i = 0; i < pinned.size(); ++i) {
+    const int k = node_at(d.node_angles, pinned[i]) + 1;
+    s << "** Pin at " << number(pinned[i]) << " degrees: both displacements of node " << k << " held"
+      << (spec.supports.clamp && node_at(d.node_angles, *spec.supports.clamp) + 1 == k ? "" : ", rotation free")
+      << ".\n";
+    hold(k, 1, 2);
+  }
+  if (spec.supports.clamp) {
+    // The rotation about z of the beam node: ccx makes the node a knot (the expanded section
+    // a rigid body turning with it) in a frequency or dynamic step, and a mean-rotation
+    // constraint of the section in a static one. Checked against the FE reference for B31,
+    // B32 and B32R (tests/calculix/calculix_terms_test.cpp).
+    const int k = node_at(d.node_angles, *spec.supports.clamp) + 1;
+    s << "** Clamp at " << number(*spec.supports.clamp) << " degrees: the rotation of node " << k
+      << " (about z, degree of freedom 6) held too.\n*BOUNDARY\n" << k << ", 6, 6\n";
   }
   if (spec.supports.roller) {
     const int k = node_at(d.node_angles, *spec.supports.roller) + 1;
@@ -159,14 +277,65 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
       << "): it stays on the line through the pin and itself,\n"
       << "** its displacement along the line's normal (" << number(n.nx) << ", " << number(n.ny) << ") held.\n";
     if (std::abs(n.nx) < 1e-12 || std::abs(n.ny) < 1e-12) {
-      s << "*BOUNDARY\n" << k << ", " << (std::abs(n.nx) < 1e-12 ? 2 : 1) << ", " << (std::abs(n.nx) < 1e-12 ? 2 : 1)
-        << "\n";
+      const int dof = std::abs(n.nx) < 1e-12 ? 2 : 1;
+      hold(k, dof, dof);
     } else {
       // The first term is the dependent one: the larger coefficient.
       const bool x_first = std::abs(n.nx) >= std::abs(n.ny);
       s << "*EQUATION\n2\n"
         << k << ", " << (x_first ? 1 : 2) << ", " << number(x_first ? n.nx : n.ny) << ", " << k << ", "
         << (x_first ? 2 : 1) << ", " << number(x_first ? n.ny : n.nx) << "\n";
+    }
+  }
+
+  int element = o.elements;  // the beam elements are 1..elements; springs and masses follow
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
+    const ring::Spring& k = spec.supports.springs[i];
+    const int node = node_at(d.node_angles, k.angle) + 1;
+    s << "** Elastic support " << i + 1 << " at " << number(k.angle) << " degrees (node " << node
+      << "): springs to the ground in x and y (N/m), SPRING1 on the node's displacement.\n";
+    for (int dof : {1, 2}) {
+      const double stiffness = dof == 1 ? k.kx : k.ky;
+      if (stiffness == 0.0) continue;
+      const std::string set = "ESPRING" + std::to_string(i + 1) + (dof == 1 ? "X" : "Y");
+      s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n" << ++element << ", " << node << "\n"
+        << "*SPRING, ELSET=" << set << "\n" << dof << "\n" << number(stiffness) << "\n";
+    }
+  }
+  if (dynamic) {
+    for (std::size_t i = 0; i < spec.masses.size(); ++i) {
+      const ring::PointMass& m = spec.masses[i];
+      const std::string set = "EMASS" + std::to_string(i + 1);
+      s << "** Point mass " << i + 1 << " at " << number(m.angle) << " degrees (node " << mass_nodes[i]
+        << "): " << number(m.mass) << " kg, no rotary inertia (ccx has none).\n"
+        << "*ELEMENT, TYPE=MASS, ELSET=" << set << "\n" << ++element << ", " << mass_nodes[i] << "\n"
+        << "*MASS, ELSET=" << set << "\n" << number(m.mass) << "\n";
+    }
+  }
+  if (spec.foundation.any()) {
+    // A spring at every node, its stiffness the modulus times the node's share of the ring:
+    // B31 the element length L; B32/B32R the quadratic element's consistent weights L/6,
+    // 2L/3, L/6 (an end node L/3, shared by two elements). The springs act in the cylindrical
+    // system about the ring's axis, fixed radial and tangential directions of each node's
+    // undeformed position (SPRING1 keeps its direction under NLGEOM).
+    const double L = 2.0 * kPi * spec.radius / o.elements;
+    const bool quadratic = o.element != Element::b31;
+    s << "** Winkler foundation: radial " << number(spec.foundation.radial) << " and tangential "
+      << number(spec.foundation.tangential) << " N/m per metre of ring, a spring at every node\n"
+      << "** times its share of the ring (" << (quadratic ? "end nodes L/3, middle nodes 2L/3" : "L")
+      << ", L = " << number(L) << " m), in the\n"
+      << "** cylindrical system about z: degree of freedom 1 radial, 2 tangential, of the undeformed node.\n"
+      << "*ORIENTATION, NAME=CYLINDER, SYSTEM=CYLINDRICAL\n0.0, 0.0, 0.0, 0.0, 0.0, 1.0\n";
+    for (int dof : {1, 2}) {
+      const double modulus = dof == 1 ? spec.foundation.radial : spec.foundation.tangential;
+      if (modulus == 0.0) continue;
+      for (int middle : quadratic ? std::vector<int>{0, 1} : std::vector<int>{0}) {
+        const std::string set = std::string("EFOUND") + (dof == 1 ? "R" : "T") + (middle ? "MID" : "END");
+        s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n";
+        for (int k = middle; k < nodes; k += quadratic ? 2 : 1) s << ++element << ", " << k + 1 << "\n";
+        const double share = node_shares(spec, o)[middle];
+        s << "*SPRING, ELSET=" << set << ", ORIENTATION=CYLINDER\n" << dof << "\n" << number(modulus * share) << "\n";
+      }
     }
   }
 
@@ -178,7 +347,7 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
 
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const FrequencyStep& step,
                     const std::string& title) {
-  Deck d = model_deck(spec, o, title, "In-plane vibration");
+  Deck d = model_deck(spec, o, title, "In-plane vibration", true);
   std::ostringstream s;
   s << "** Step: the " << step.eigenvalues << " lowest eigenvalues (in-plane, rigid and out-of-plane modes\n"
     << "** together; ringvib keeps the in-plane ones). Displacements of the beam nodes go to the\n"
@@ -191,23 +360,89 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
 
 namespace {
 
-/// The *CLOAD blocks of the point loads (`keyword`: "*CLOAD" or "*CLOAD, AMPLITUDE=LOAD"),
-/// each at its node, in N; pressure and gravity are refused (the deck writes no distributed load
-/// yet). Throws InputError naming `section`'s key.
-std::string point_loads(const Deck& d, const ring::Loads& loads, const std::string& section, const char* keyword) {
-  const char* why = "the calculix deck writes point loads only (no distributed load yet)";
-  if (loads.pressure.any()) throw ring::InputError("", section + ".pressure", why);
-  if (loads.has_gravity()) throw ring::InputError("", section + ".gravity", why);
+/// True when `loads` put forces on nodes beyond the paper's point loads: the consistent
+/// nodal forces of a dead pressure, the point masses' weight.
+bool nodal_loads(const ring::RingSpec& spec, const ring::Loads& loads) {
+  return (loads.pressure.any() && loads.pressure.kind == ring::Pressure::Kind::dead) ||
+         (loads.has_gravity() && !spec.masses.empty());
+}
+
+/// The load blocks of a step (`amplitude`: every load times the amplitude LOAD), each with a
+/// comment: point loads and the point masses' weight as *CLOAD at their nodes, a follower
+/// pressure as ccx's beam pressure P2, a dead pressure as the consistent nodal forces of the
+/// undeformed ring, gravity as *DLOAD GRAV. Throws InputError naming `section`'s key for a
+/// point off the nodes and for what ccx cannot express (a central pressure).
+std::string load_blocks(const ring::RingSpec& spec, const ring::CalculixOptions& o, const Deck& d,
+                        const ring::Loads& loads, const std::string& section, bool amplitude) {
+  const std::string cload = amplitude ? "*CLOAD, AMPLITUDE=LOAD" : "*CLOAD";
+  const std::string dload = amplitude ? "*DLOAD, AMPLITUDE=LOAD" : "*DLOAD";
   std::ostringstream s;
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const ring::PointLoad& p = loads.points[i];
     const int node = node_at(d.node_angles, p.angle);
     const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
     if (node < 0) throw ring::InputError("", key, "angle " + number(p.angle) + " is not a node of the calculix model");
-    s << "** The load at " << number(p.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N.\n" << keyword << "\n";
+    s << "** The load at " << number(p.angle) << " degrees (node " << node + 1 << "): (Fx, Fy) in N.\n" << cload << "\n";
     if (p.force[0] != 0.0) s << node + 1 << ", 1, " << number(p.force[0]) << "\n";
     if (p.force[1] != 0.0) s << node + 1 << ", 2, " << number(p.force[1]) << "\n";
     if (p.force[0] == 0.0 && p.force[1] == 0.0) s << node + 1 << ", 1, 0.0\n";
+  }
+  const ring::Pressure& pr = loads.pressure;
+  if (pr.any()) {
+    switch (pr.kind) {
+      case ring::Pressure::Kind::follower: {
+        if (o.section == ring::CalculixOptions::Section::as_given && spec.section.shape == ring::Section::Shape::circle)
+          throw ring::InputError("", section + ".pressure",
+                                 "the calculix deck writes a follower pressure as a pressure on the expanded beam's "
+                                 "face, whose width it knows for a rectangle only, not for ccx's expansion of a circle "
+                                 "(use calculix.section = \"equivalent-rectangle\")");
+        // ccx's beam pressure P2 acts on the face of the expanded section at R - h/2 (the
+        // -2 side), positive in +2 (outward), and follows that face under NLGEOM (its force
+        // is the pressure times the deformed face's area). p per unit length of the
+        // centroid line, positive inward: P2 = -p / (width (1 - h/(2R))), measured: a
+        // pinned ring shrinks by the hoop strain p R/EA (tests/calculix).
+        const double face = -pr.value / (d.width * (1.0 - d.height / (2.0 * spec.radius)));
+        s << "** Follower pressure " << number(pr.value) << " N/m per metre of centroid line, inward: ccx's beam\n"
+          << "** pressure P2 on the inner face of the expanded section (R - h/2), which follows the deformed\n"
+          << "** face under NLGEOM; P2 = -p / (width (1 - h/(2R))) Pa.\n"
+          << dload << "\nERING, P2, " << number(face) << "\n";
+        break;
+      }
+      case ring::Pressure::Kind::dead: {
+        const std::vector<double> w = node_shares(spec, o);
+        s << "** Dead pressure " << number(pr.value) << " N/m per metre of centroid line: the consistent nodal\n"
+          << "** forces of the undeformed ring, p times the node's share of the ring (see the foundation)\n"
+          << "** along the inward normal of the undeformed node; *CLOAD keeps direction and magnitude.\n"
+          << cload << "\n";
+        for (std::size_t k = 0; k < w.size(); ++k) {
+          const double a = d.node_angles[k] * kPi / 180.0;
+          s << k + 1 << ", 1, " << number(-pr.value * w[k] * std::cos(a)) << "\n"
+            << k + 1 << ", 2, " << number(-pr.value * w[k] * std::sin(a)) << "\n";
+        }
+        break;
+      }
+      case ring::Pressure::Kind::central:
+        throw ring::InputError("", section + ".pressure.kind",
+                               "the calculix deck cannot write a central pressure: ccx has no load that points from "
+                               "the deformed point at a fixed centre (its *CLOAD keeps its direction, its face "
+                               "pressure follows the deformed face); use \"follower\" or \"dead\", or leave calculix "
+                               "out");
+    }
+  }
+  if (loads.has_gravity()) {
+    const double g = std::hypot(loads.gravity[0], loads.gravity[1]);
+    s << "** Gravity (" << number(loads.gravity[0]) << ", " << number(loads.gravity[1])
+      << ") m/s^2 on the ring's density: GRAV, |g|, direction.\n"
+      << dload << "\nERING, GRAV, " << number(g) << ", " << number(loads.gravity[0] / g) << ", "
+      << number(loads.gravity[1] / g) << ", 0.0\n";
+    for (std::size_t i = 0; i < spec.masses.size(); ++i) {
+      const ring::PointMass& m = spec.masses[i];
+      const int node = node_at(d.node_angles, m.angle) + 1;
+      s << "** The weight of point mass " << i + 1 << " (" << number(m.mass) << " kg) at node " << node << ".\n"
+        << cload << "\n"
+        << node << ", 1, " << number(m.mass * loads.gravity[0]) << "\n"
+        << node << ", 2, " << number(m.mass * loads.gravity[1]) << "\n";
+    }
   }
   return s.str();
 }
@@ -217,8 +452,9 @@ std::string point_loads(const Deck& d, const ring::Loads& loads, const std::stri
 Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::ResponseOptions& rs,
                    const std::string& title) {
   check_response_deck(rs);
-  Deck d = model_deck(spec, o, title, "Forced nonlinear response");
-  const std::string cloads = point_loads(d, rs.loads, "response", "*CLOAD, AMPLITUDE=LOAD");
+  Deck d = model_deck(spec, o, title, "Forced nonlinear response", true, nodal_loads(spec, rs.loads),
+                      free_anchor(rs.loads));
+  const std::string cloads = load_blocks(spec, o, d, rs.loads, "response", true);
   std::vector<int> record;
   for (double a : rs.record) {
     const int k = node_at(d.node_angles, a);
@@ -268,11 +504,11 @@ void check_response_deck(const ring::ResponseOptions& rs) {
 
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
-  Deck d = model_deck(spec, o, title, "Nonlinear statics");
-  const std::string cloads = point_loads(d, st.loads, "static", "*CLOAD");
+  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads), free_anchor(st.loads));
+  const std::string cloads = load_blocks(spec, o, d, st.loads, "static", false);
   const double inc = 1.0 / st.steps;
   std::ostringstream s;
-  s << "** Step: geometrically nonlinear statics (NLGEOM) under the dead point loads, in load\n"
+  s << "** Step: geometrically nonlinear statics (NLGEOM) under the loads, in load\n"
     << "** increments of 1/" << st.steps << " (static.steps; ccx may cut them, down to 1e-5 of that).\n"
     << "*STEP, NLGEOM, INC=" << std::max(1000, 20 * st.steps) << "\n*STATIC\n"
     << number(inc) << ", 1.0, " << number(1e-5 * inc) << ", " << number(inc) << "\n"

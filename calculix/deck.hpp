@@ -11,14 +11,31 @@
 //   height h = sqrt(12 I / A)), or as given (CIRC with the diameter, RECT width x height;
 //   a general {area, inertia} section has no shape and is refused);
 // - in-plane motion: the out-of-plane displacement of every beam node is held;
-// - pin: both displacements of its node held (rotation free, so no rotation boundary
-//   condition, which ccx would turn into a rigid knot of the expanded section);
+// - pins (supports.pin and supports.pins): both displacements of the node held (rotation
+//   free, so no rotation boundary condition, which ccx would turn into a rigid knot of the
+//   expanded section);
+// - clamp: a pin whose rotation about z (degree of freedom 6) is held too;
 // - roller: its node stays on the line through the pin and itself: one displacement held
-//   if that line is along x or y, else a two-term *EQUATION.
-// Every other term a ring spec may carry is refused until the deck can write it.
+//   if that line is along x or y, else a two-term *EQUATION;
+// - elastic supports: SPRING1 elements in x and y on the node (a rotational spring kr is
+//   refused: ccx ignores a SPRING1 on the rotation of an expanded beam's node);
+// - point masses (frequency and response decks): MASS elements on the node (rotary inertia
+//   refused: ccx has none); the out-of-plane displacement of their nodes held by a one-term
+//   *EQUATION, since a MASS element beside a held degree of freedom stops ccx 2.20;
+// - the Winkler foundation: SPRING1 elements at every node in the cylindrical system about
+//   z (radial and tangential of the undeformed node), the modulus times the node's share of
+//   the ring (B31: L; B32/B32R: L/3 at an end node, 2L/3 at a middle node);
+// - with springs, masses, the foundation or nodal loads, the section is made rigid across
+//   its width (E_z = 1e4 E; no in-plane stress involves it at Poisson's ratio 0), since ccx
+//   ties them to the corners of the expanded section;
+// - loads (statics, response): point loads and the masses' weight as *CLOAD, a follower
+//   pressure as the beam pressure P2 (a face pressure of the expanded section, following it
+//   under NLGEOM), a dead pressure as the undeformed ring's consistent nodal forces (*CLOAD),
+//   gravity as *DLOAD GRAV; a central pressure is refused (ccx has no such load).
 //
 // Node k (1-based k + 1) sits at polar angle anchor + 360 k / nodes (degrees), anchor the
-// pin or 0 for a free ring; B31: nodes = elements, B32/B32R: nodes = 2 elements (the
+// pin, or for a free ring the first point load of a static or response deck (as every
+// solver and the scene reader take it), else 0; B31: nodes = elements, B32/B32R: nodes = 2 elements (the
 // middle nodes on the circle too).
 #pragma once
 
@@ -42,22 +59,29 @@ struct Deck {
   double width = 0.0, height = 0.0; ///< m: the section written (height radial; circle: both the diameter)
 };
 
-/// Refuses what the deck cannot express (ring::InputError naming the key, exit 2). O(1).
-void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options);
+/// Whether the analysis has inertia: a point mass's rotary inertia, which ccx cannot
+/// write, is refused in modes and responses and ignored in statics.
+enum class Inertia { matters, ignored };
+
+/// Refuses what the deck cannot express (ring::InputError naming the key, exit 2): a
+/// rotational spring, a point mass's rotary inertia (Inertia::matters), a point term off
+/// the nodes, a general section as given. O(terms).
+void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options,
+                Inertia inertia = Inertia::matters);
 
 /// The deck of a frequency analysis. O(elements).
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const FrequencyStep& step,
                     const std::string& title = "");
 
-/// The deck of the nonlinear statics under static.at/static.force: *STEP, NLGEOM with
-/// *STATIC in static.steps equal increments (ccx may cut them), *CLOAD at the load's node,
-/// *NODE PRINT of the beam nodes after every increment. Throws ring::InputError if the
-/// load is not at a node. O(elements).
+/// The deck of the nonlinear statics under static's loads: *STEP, NLGEOM with *STATIC in
+/// static.steps equal increments (ccx may cut them), the load blocks (see above; point
+/// masses only as their weight), *NODE PRINT of the beam nodes after every increment.
+/// Throws ring::InputError for a load off the nodes or one ccx cannot express. O(elements).
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& step,
                  const std::string& title = "");
 
 /// The deck of the forced response: *STEP, NLGEOM with *DYNAMIC, DIRECT, ALPHA = 0
-/// (Newmark's average acceleration, fixed dt to t_end), the load's history as an
+/// (Newmark's average acceleration, fixed dt to t_end), every load times the history as an
 /// *AMPLITUDE, *NODE PRINT of the recorded nodes after every increment. Throws
 /// ring::InputError for what it cannot express (check_response_deck) or points off the
 /// nodes. O(elements + t_end / dt).

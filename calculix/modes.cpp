@@ -9,6 +9,19 @@
 #include "ring/sampling.hpp"
 
 namespace calculix {
+namespace {
+
+/// The node (0-based) of the deck at a point mass's angle (check_deck put it on one).
+int point_mass_node(const Deck& d, double angle) {
+  for (std::size_t k = 0; k < d.node_angles.size(); ++k) {
+    const double x = ring::wrap_degrees(d.node_angles[k] - angle);
+    if (std::min(x, 360.0 - x) < 1e-9) return static_cast<int>(k);
+  }
+  return 0;
+}
+
+}  // namespace
+
 int eigenvalues_for(const ring::RingSpec& spec, int count) {
   return spec.rigid_modes() + count + std::max(10, count / 2);
 }
@@ -36,6 +49,10 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
     for (const DatMode& m : modes) {
       double kinetic = 0.0;
       for (int k = 0; k < nodes; ++k) kinetic += node_mass * (m.ux[k] * m.ux[k] + m.uy[k] * m.uy[k]);
+      for (const ring::PointMass& pm : spec.masses) {  // the point masses' share of the unit modal mass
+        const int k = point_mass_node(deck, pm.angle);
+        kinetic += pm.mass * (m.ux[k] * m.ux[k] + m.uy[k] * m.uy[k]);
+      }
       if (kinetic > 0.5) in_plane.push_back(&m);
     }
     if (static_cast<int>(in_plane.size()) < rigid + count) {

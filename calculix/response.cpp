@@ -38,7 +38,6 @@ std::vector<int> iterations(const std::string& sta) {
 }  // namespace
 
 void check_response(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::ResponseOptions& rs) {
-  check_deck(spec, options);
   check_response_deck(rs);
   response_deck(spec, options, rs);  // the load and the recorded points on nodes; O(elements + steps)
   require_ccx();

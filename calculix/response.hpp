@@ -1,6 +1,6 @@
 // The CalculiX column of the forced nonlinear response: *DYNAMIC, DIRECT with NLGEOM and
 // ALPHA = 0 (Newmark's average acceleration, the paper's; fixed dt to t_end), from rest,
-// the dead point load times its history (*AMPLITUDE).
+// every load (deck.hpp) times its history (*AMPLITUDE).
 //
 // The history has the recorded points' displacements (the beam nodes' means) at t = 0 and
 // after every increment; newton_iterations from ccx's .sta. ccx's energies are not read:

@@ -35,8 +35,7 @@ int newton_iterations(const std::string& sta) {
 }  // namespace
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
-  check_deck(spec, options);
-  const Deck d = static_deck(spec, options, st, "check");  // the loads at nodes, nothing distributed; O(elements)
+  const Deck d = static_deck(spec, options, st, "check");  // the loads on nodes, what ccx cannot load; O(elements)
   for (double a : st.record)
     if (node_of(d, a) < 0)
       throw ring::InputError("", "static.record", "angle " + number(a) + " is not a node of the calculix model");

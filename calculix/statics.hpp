@@ -1,4 +1,5 @@
-// The CalculiX column of the nonlinear statics: the ring under a dead point load,
+// The CalculiX column of the nonlinear statics: the ring under its loads (point loads,
+// pressure, gravity: deck.hpp),
 // *STATIC with NLGEOM (ccx's geometrically nonlinear continuum: large displacements and
 // rotations of the expanded bricks), load stepped in static.steps increments.
 //

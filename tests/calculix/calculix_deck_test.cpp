@@ -249,15 +249,39 @@ TEST(CalculixDeck, RefusesWhatItCannotExpressNamingTheKey) {
   } catch (const ring::InputError& e) {
     EXPECT_EQ(e.key(), "calculix.section");
   }
-  // Terms beyond the paper's ring that the deck does not write yet: refused by name.
+  // Terms beyond the paper's ring that ccx cannot express: refused by name, with the reason.
   ring::RingSpec m = paper_ring();
   m.supports.pin = 0.0;
   m.masses.push_back({90.0, 10.0, 0.0});
+  EXPECT_NO_THROW(calculix::check_deck(m, {}));  // a point mass without rotary inertia is written
+  m.masses.push_back({180.0, 10.0, 2.0});
   try {
     calculix::check_deck(m, {});
-    FAIL() << "a point mass was accepted";
+    FAIL() << "a point mass's rotary inertia was accepted";
   } catch (const ring::InputError& e) {
-    EXPECT_EQ(e.key(), "masses");
+    EXPECT_EQ(e.key(), "masses[2].inertia");
+    EXPECT_NE(std::string(e.what()).find("ROTARY INERTIA"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(calculix::check_deck(m, {}, calculix::Inertia::ignored));  // statics needs none
+  ring::RingSpec k = paper_ring();
+  k.supports.pin = 0.0;
+  k.supports.springs.push_back({90.0, 1e3, 0.0, 5e4});
+  try {
+    calculix::check_deck(k, {});
+    FAIL() << "a rotational spring was accepted";
+  } catch (const ring::InputError& e) {
+    EXPECT_EQ(e.key(), "supports.springs[1].kr");
+  }
+  ring::StaticOptions central;
+  central.loads.pressure = {1000.0, ring::Pressure::Kind::central};
+  ring::RingSpec pr = paper_ring();
+  pr.supports.pin = 180.0;
+  pr.supports.roller = 0.0;
+  try {
+    calculix::static_deck(pr, {}, central);
+    FAIL() << "a central pressure was accepted";
+  } catch (const ring::InputError& e) {
+    EXPECT_EQ(e.key(), "static.pressure.kind");
   }
   ring::RingSpec s = paper_ring();
   s.supports.pin = 0.0;
@@ -271,6 +295,143 @@ TEST(CalculixDeck, RefusesWhatItCannotExpressNamingTheKey) {
   } catch (const ring::InputError& e) {
     EXPECT_EQ(e.key(), "supports.roller");
   }
+}
+
+/// The data lines that follow the first line starting with `keyword` (up to the next keyword).
+std::vector<std::vector<std::string>> block(const std::string& deck, const std::string& keyword) {
+  std::vector<std::vector<std::string>> rows;
+  const auto at = deck.find("\n" + keyword);
+  if (at == std::string::npos) return rows;
+  std::istringstream in(deck.substr(deck.find('\n', at + 1) + 1));
+  for (std::string line; std::getline(in, line) && line[0] != '*';) rows.push_back(fields(line));
+  return rows;
+}
+
+TEST(CalculixDeck, PinsAndAClampAreBoundaryLinesAtTheirNodes) {
+  ring::RingSpec r = paper_ring();
+  r.supports.pin = 180.0;
+  r.supports.pins = {0.0, 90.0};
+  r.supports.clamp = 90.0;
+  ring::CalculixOptions o;
+  o.elements = 12;
+  const Parsed p = parse(calculix::frequency_deck(r, o, {10}).text);
+  const int a = node_near(p, -10.0, 0.0), b = node_near(p, 10.0, 0.0), c = node_near(p, 0.0, 10.0);
+  ASSERT_GT(a * b * c, 0);
+  // Every pin holds ux and uy; the clamp (at the pin at 90 degrees) its rotation about z too.
+  EXPECT_EQ(p.boundary, (std::vector<std::string>{"NALL, 3, 3", std::to_string(a) + ", 1, 2", std::to_string(b) + ", 1, 2",
+                                                  std::to_string(c) + ", 1, 2", std::to_string(c) + ", 6, 6"}));
+}
+
+TEST(CalculixDeck, SpringsMassesAndTheFoundationAreElementsOnTheNodes) {
+  ring::RingSpec r = paper_ring();
+  r.supports.pin = 180.0;
+  r.supports.springs = {{0.0, 1e3, 2e3, 0.0}};
+  r.masses = {{90.0, 50.0, 0.0}};
+  r.foundation = {4e3, 1e3};
+  for (auto element : {ring::CalculixOptions::Element::b31, ring::CalculixOptions::Element::b32r}) {
+    ring::CalculixOptions o;
+    o.elements = 12;
+    o.element = element;
+    const std::string deck = calculix::frequency_deck(r, o, {10}).text;
+    const Parsed p = parse(deck);
+    const int spring = node_near(p, 10.0, 0.0), mass = node_near(p, 0.0, 10.0);
+    // The support: SPRING1 on degree of freedom 1 (kx) and 2 (ky) of its node.
+    EXPECT_EQ(std::stoi(block(deck, "*ELEMENT, TYPE=SPRING1, ELSET=ESPRING1X")[0][1]), spring);
+    EXPECT_EQ(block(deck, "*SPRING, ELSET=ESPRING1X")[0][0], "1");
+    EXPECT_EQ(std::stod(block(deck, "*SPRING, ELSET=ESPRING1X")[1][0]), 1e3);
+    EXPECT_EQ(block(deck, "*SPRING, ELSET=ESPRING1Y")[0][0], "2");
+    EXPECT_EQ(std::stod(block(deck, "*SPRING, ELSET=ESPRING1Y")[1][0]), 2e3);
+    // The mass: a MASS element on its node, whose out-of-plane displacement is an equation.
+    EXPECT_EQ(std::stoi(block(deck, "*ELEMENT, TYPE=MASS")[0][1]), mass);
+    EXPECT_EQ(std::stod(block(deck, "*MASS, ELSET=EMASS1")[0][0]), 50.0);
+    EXPECT_NE(deck.find("*EQUATION\n1\n" + std::to_string(mass) + ", 3, 1.0\n"), std::string::npos);
+    EXPECT_EQ(deck.find("NALL, 3, 3"), std::string::npos);
+    // The foundation: every node has a radial and a tangential spring in the cylindrical
+    // system, and their stiffnesses add up to the modulus times the circumference.
+    for (const std::string dir : {"R", "T"}) {
+      double total = 0.0;
+      int springs = 0;
+      for (const std::string where : {"END", "MID"}) {
+        const auto elements = block(deck, "*ELEMENT, TYPE=SPRING1, ELSET=EFOUND" + dir + where);
+        const auto spring_card = block(deck, "*SPRING, ELSET=EFOUND" + dir + where + ", ORIENTATION=CYLINDER");
+        if (elements.empty()) continue;
+        EXPECT_EQ(spring_card[0][0], dir == "R" ? "1" : "2");
+        total += elements.size() * std::stod(spring_card[1][0]);
+        springs += static_cast<int>(elements.size());
+      }
+      EXPECT_EQ(springs, static_cast<int>(p.nodes.size()));
+      // 14 digits in each stiffness: a few 1e-14 of round-off.
+      EXPECT_NEAR(total, (dir == "R" ? 4e3 : 1e3) * 2 * M_PI * 10.0, 1e-12 * 4e3 * 2 * M_PI * 10.0) << dir;
+    }
+    EXPECT_NE(deck.find("*ORIENTATION, NAME=CYLINDER, SYSTEM=CYLINDRICAL\n0.0, 0.0, 0.0, 0.0, 0.0, 1.0\n"),
+              std::string::npos);
+    EXPECT_NE(deck.find("*ELASTIC, TYPE=ENGINEERING CONSTANTS"), std::string::npos);
+  }
+  // A static deck writes no mass (statics has no inertia) and keeps the plain z boundary.
+  ring::StaticOptions st;
+  st.loads.points = {{0.0, {1.0, 0.0}}};
+  const std::string deck = calculix::static_deck(r, {}, st).text;
+  EXPECT_EQ(deck.find("TYPE=MASS"), std::string::npos);
+  EXPECT_NE(deck.find("NALL, 3, 3"), std::string::npos);
+}
+
+TEST(CalculixDeck, AFreeRingsStaticDeckHasItsFirstNodeAtTheLoad) {
+  // A free ring held by its foundation: every solver and the scene reader put a node at the
+  // first point load and count the others from there.
+  ring::RingSpec r = paper_ring();
+  r.foundation = {1e4, 1e4};
+  r.masses = {{62.0, 10.0, 0.0}};  // 2 + 60: a node from the load's anchor
+  ring::CalculixOptions o;
+  o.elements = 12;
+  ring::StaticOptions st;
+  st.loads.points = {{2.0, {0.0, -1e3}}};
+  st.loads.gravity = {0.0, -9.81};
+  const calculix::Deck d = calculix::static_deck(r, o, st);
+  EXPECT_EQ(d.anchor, 2.0);
+  EXPECT_EQ(d.node_angles.at(1), 17.0);
+  const Parsed p = parse(d.text);
+  EXPECT_NEAR(p.nodes.at(1)[0], 10.0 * std::cos(2.0 * M_PI / 180.0), 1e-12);
+  EXPECT_NE(d.text.find("*CLOAD\n1, 2, " + calculix::number(-1e3)), std::string::npos);
+  // The frequency deck of the same ring counts from 0, where the mass is no node.
+  EXPECT_THROW(calculix::frequency_deck(r, o, {10}), ring::InputError);
+}
+
+TEST(CalculixDeck, PressureAndGravityLoads) {
+  ring::RingSpec r = paper_ring();
+  r.supports.pin = 180.0;
+  r.supports.roller = 0.0;
+  r.masses = {{90.0, 50.0, 0.0}};
+  ring::CalculixOptions o;
+  o.elements = 12;
+  ring::StaticOptions st;
+  st.loads.pressure = {1000.0, ring::Pressure::Kind::follower};
+  st.loads.gravity = {0.0, -9.81};
+  calculix::Deck d = calculix::static_deck(r, o, st);
+  // Follower: the beam pressure P2 on the inner face, -p / (width (1 - h/(2R))).
+  const auto p2_line = d.text.substr(d.text.find("ERING, P2, ") + 11);
+  EXPECT_NEAR(std::stod(p2_line), -1000.0 / (d.width * (1.0 - d.height / 20.0)), 1e-12 * 1000.0 / d.width);
+  // Gravity: GRAV with |g| and its direction; the mass's weight at its node.
+  EXPECT_NE(d.text.find("ERING, GRAV, 9.8100000000000e+00, 0.0, -1.0000000000000e+00, 0.0\n"), std::string::npos);
+  const Parsed p = parse(d.text);
+  const int mass = node_near(p, 0.0, 10.0);
+  EXPECT_NE(d.text.find(std::to_string(mass) + ", 2, " + calculix::number(-50.0 * 9.81)), std::string::npos);
+  // Dead: consistent nodal forces that add up to no net force and to p times the circumference
+  // along the inward normals.
+  st.loads.pressure.kind = ring::Pressure::Kind::dead;
+  st.loads.gravity = {0.0, 0.0};
+  d = calculix::static_deck(r, o, st);
+  const auto f = block(d.text, "*CLOAD");
+  ASSERT_EQ(f.size(), 2 * p.nodes.size());
+  double fx = 0.0, fy = 0.0, inward = 0.0;
+  for (const auto& row : f) {
+    const auto c = p.nodes.at(std::stoi(row[0]));
+    const double v = std::stod(row[2]);
+    (row[1] == "1" ? fx : fy) += v;
+    inward -= v * (row[1] == "1" ? c[0] : c[1]) / 10.0;
+  }
+  EXPECT_NEAR(fx, 0.0, 1e-9);
+  EXPECT_NEAR(fy, 0.0, 1e-9);
+  EXPECT_NEAR(inward, 1000.0 * 2 * M_PI * 10.0, 1e-9);
 }
 
 TEST(CalculixDeck, NumbersFitCcxsTwentyCharacterFields) {
