@@ -414,7 +414,7 @@ SolverEntry calculix_entry() {
   e.no_buckling_because =
       "CalculiX's *BUCKLE keeps only the stress stiffness of the linear prebuckling state, not the displacement "
       "terms of ringvib's one definition (README, \"Buckling and the path to contact\"), so its factors would differ by model under loads "
-      "that bend the ring, and the deck writes no pressure yet";
+      "that bend the ring";
   e.response = [](const ring::Scene& s) {
     return with_scene_file(
         s, [&] { return calculix::respond(s.ring, s.calculix, *s.response, signal_hooks(), s.title); });

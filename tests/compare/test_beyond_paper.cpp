@@ -190,9 +190,9 @@ TEST(BeyondPaper, HangingRingAtItsFullWeightInEverySolver) {
 // The shipped ring under half its critical follower pressure: statics and the pressure pulse
 // run in every solver (exit 0), the squeeze is amplified as the linear series says (within the
 // chains' 6e-3 at n = 80 and the geometric nonlinearity of a 1.4 % shortening, 9e-3 measured
-// on the FE reference), and CalculiX,
-// which writes no distributed load, refuses the pressure by name (exit 2) before running.
-TEST(BeyondPaper, RingUnderPressureRunsInEverySolverAndCalculixRefusesThePressure) {
+// on the FE reference), and CalculiX, which writes follower and dead pressure but has no
+// load aimed at a fixed centre, refuses a central pressure by name (exit 2) before running.
+TEST(BeyondPaper, RingUnderPressureRunsInEverySolverAndCalculixRefusesACentralPressure) {
   ring::RingSpec spec;
   spec.section.diameter = 0.12;
   const double along = ring::closed_form::diametral_load_under_pressure(spec, 1000.0, {3200.0, ring::Pressure::Kind::follower}).along;
@@ -204,9 +204,10 @@ TEST(BeyondPaper, RingUnderPressureRunsInEverySolverAndCalculixRefusesThePressur
   }
   const auto r = ringvib("respond " + source("scenes/ring-under-pressure.toml") + " --format json --set response.t_end=1.0");
   EXPECT_EQ(r.code, 0) << r.err;
-  const auto c = ringvib("static " + source("scenes/ring-under-pressure.toml") + " --solver calculix --json");
+  const auto c = ringvib("static " + source("scenes/ring-under-pressure.toml") +
+                         " --solver calculix --json --set 'static.pressure={value=3200.0, kind=\"central\"}'");
   EXPECT_EQ(c.code, 2) << c.err;
-  EXPECT_NE(c.err.find("static.pressure"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("static.pressure.kind"), std::string::npos) << c.err;
 }
 
 }  // namespace
