@@ -112,7 +112,8 @@ class BeamEquilibrium : public paths::Equilibrium {
 
   const ring::RingSpec& spec_;
   const ring::StaticOptions& st_;
-  const RingModel model_;
+  const std::unique_ptr<BeamModel> built_;
+  const BeamModel& model_;
   const unsigned int N_;
   const unsigned int loaded_;
   const BeamPotential potential_;
@@ -135,7 +136,8 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
                                  StaticSolve& out)
     : spec_(spec),
       st_(st),
-      model_(spec, setup),
+      built_(make_beam(spec, setup)),
+      model_(*built_),
       N_(model_.n_free()),
       loaded_(model_.vertex_of(path_point(st))),
       potential_(model_, st.loads),
