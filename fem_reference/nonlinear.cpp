@@ -180,7 +180,7 @@ class BeamStepper : public paths::Stepper {
         res += Cv_;
       }
       return S_;
-    });
+    }, std::numeric_limits<double>::infinity(), &model_.lengths());
     if (it < 0) return {false, false, kMaxNewton, g_mean_};
     kinematics(q1_, h);
     return {true, false, it, g_mean_};

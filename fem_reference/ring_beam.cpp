@@ -204,6 +204,17 @@ double RingModel::rotation_spring(unsigned int v, double kr, const Vector<double
 BeamModel::BeamModel(const ring::RingSpec& spec, const Setup& setup)
     : LinearModel(spec, setup), theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0), h_(2.0 * kPi / setup.cells()) {}
 
+void BeamModel::measure_lengths() {
+  lengths_.assign(n_free_, 1.0);
+  const FESystem<1>& fe = this->fe();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  for (const auto& cell : cells_) {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (fe.system_to_component_index(i).first == 2 && free_[dofs[i]] >= 0) lengths_[free_[dofs[i]]] = spec_.radius;
+  }
+}
+
 unsigned int BeamModel::vertex_of(double degrees) const {
   const double pin = spec_.supports.pin.value_or(0.0);
   const unsigned int n = setup_.cells();

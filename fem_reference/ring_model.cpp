@@ -98,6 +98,7 @@ RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
   setup_reduced_system();
   setup_point_terms();
   assemble();
+  measure_lengths();
 }
 
 void RingModel::make_grid() {

@@ -257,9 +257,25 @@ class BeamModel : public LinearModel {
   /// `per_cell` equally spaced points of every cell, counter-clockwise from vertex 0
   /// (point k at the polar angle theta0 + k h / per_cell). O(cells per_cell dofs per cell).
   std::vector<std::array<double, 2>> centreline(const Vector<double>& full, unsigned int per_cell) const;
+  /// Per reduced unknown, the length by which one unit of it moves the ring: 1 for u and w
+  /// (m), R for a section rotation psi (rad; TimoshenkoModel). The statics' basin and
+  /// stopping rules (static_path.cpp) and the response's Newton (newton.hpp) measure a
+  /// change dz as max_i |dz_i| lengths_i, so that a ring's size does not change how far
+  /// its rotations may move in a step (with psi counted as 1 m, a ring of R = 1 cm took 728
+  /// load steps where R = 1 m takes 15: fem_reissner_test, ScaledRingsHaveTheSameShape).
+  const std::vector<double>& lengths() const { return lengths_; }
+  /// max_i |dz_i| lengths()_i over the first n_free() entries of dz. O(N).
+  template <class V>
+  double length_of(const V& dz) const {
+    double m = 0.0;
+    for (unsigned int i = 0; i < n_free_; ++i) m = std::max(m, std::abs(dz[i]) * lengths_[i]);
+    return m;
+  }
 
  protected:
   BeamModel(const ring::RingSpec& spec, const Setup& setup);
+  /// Fills lengths_ (after the reduced numbering and the cells exist).
+  void measure_lengths();
   /// The terms and loads read the mesh, the rule and the reduced numbering.
   friend class BeamPotential;
 
@@ -282,6 +298,7 @@ class BeamModel : public LinearModel {
     std::vector<std::array<double, 4>> row;
   };
   LoadRule load_rule_;
+  std::vector<double> lengths_;
 
   const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
   const double h_;       ///< cell size in theta, rad

@@ -14,6 +14,7 @@ TimoshenkoModel::TimoshenkoModel(const ring::RingSpec& spec, const Setup& setup)
   setup_reduced_system();
   setup_point_terms();
   assemble();
+  measure_lengths();
 }
 
 void TimoshenkoModel::make_grid() {

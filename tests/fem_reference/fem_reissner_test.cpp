@@ -430,6 +430,34 @@ TEST(FemReissnerStatics, NoLockingSameOrderAtDepthOverR1em3And1em1) {
   EXPECT_LT(std::max(finest[0], finest[1]), 3.0 * std::min(finest[0], finest[1]));
 }
 
+// Oracle: similarity. Rings of R = 1 cm and 100 m with the 1 m ring's shape (depth, width
+// scaled with R, the same E and nu) under the same P R^2/EI have the same displacement / R
+// and the same section rotations: the equations are unchanged when every length is scaled.
+// The unknowns mix lengths (u, w: m) and angles (psi: rad), so the statics' rules that
+// measure a step (the basin R/10, Newton's stop 1e-12 R) must count psi as the length R psi,
+// or a small ring's rotations would stall them. Bound 1e-9 relative (Newton's stop, 1e-12 R,
+// and the conditioning of the thick ring's tangent; measured in the record).
+TEST(FemReissnerStatics, ScaledRingsHaveTheSameShape) {
+  auto scaled = [](double R) {
+    ring::RingSpec s = held(0.2 * R);
+    s.radius = R;
+    s.section.width = 0.02 * R;
+    return s;
+  };
+  const ring::RingSpec unit = scaled(1.0);
+  const ring::StaticResult base = fem::solve_static(unit, fem_options(16, 4), pressed_crown(unit, 5.0));
+  for (double R : {1e-2, 1e2}) {
+    const ring::RingSpec spec = scaled(R);
+    const ring::StaticResult r = fem::solve_static(spec, fem_options(16, 4), pressed_crown(spec, 5.0));
+    double d = 0.0;
+    for (std::size_t i = 0; i < r.displacements.size(); ++i)
+      d = std::max({d, std::abs(r.displacements[i].ux / R - base.displacements[i].ux),
+                    std::abs(r.displacements[i].uy / R - base.displacements[i].uy)});
+    RecordProperty("R_" + sci(R), sci(d) + " steps " + std::to_string(r.steps));
+    EXPECT_LT(d, 1e-9) << "R = " << R;
+  }
+}
+
 // ---- Response --------------------------------------------------------------------------
 
 /// A step load P R^2/EI = 3 at the crown of the thick ring (d/R = 0.2), recorded there.
