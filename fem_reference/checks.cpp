@@ -134,9 +134,6 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
-  // The Reissner beam (ring.theory = "timoshenko") has statics and response; its buckling
-  // pencil is not built or tested yet.
-  ring::refuse_timoshenko(spec, "fem buckling (its buckling pencil is Euler-Bernoulli)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
   need(b.count >= 1, "buckling.count (=" + std::to_string(b.count) + ") must be >= 1");
   need(!b.loads.points_only() || !b.loads.points.empty(),
@@ -148,9 +145,6 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  // The Reissner beam (ring.theory = "timoshenko") has statics; its loaded modes are not
-  // built or tested yet.
-  ring::refuse_timoshenko(spec, "fem modes under load (its loaded pencil is Euler-Bernoulli)");
   // static.path shapes the path's report, not the equilibrium at the full load.
   ring::StaticOptions at_full_load = st;
   at_full_load.path = false;
