@@ -50,9 +50,12 @@
 // model's rows of (x, a), integrated with p + 1 Gauss points (the linear foundation's).
 // Mass: the linear model's, constant and exact: rho A on u, w, rho I on psi (the polar
 // basis does not move, psi_t is the section's angular velocity), point masses m on the
-// vertex's translation and J on its psi. Statics and response run the same drivers as the
-// Euler beam (make_beam picks the model); buckling and modes under load still refuse the
-// Timoshenko theory (their pencils are not built for it).
+// vertex's translation and J on its psi. Statics, response, linear buckling (buckling.hpp)
+// and modes under load (preload.hpp) run the same drivers on the same tangent as the Euler
+// beam (make_beam picks the model). The unknowns mix lengths (u, w) and angles (psi): the
+// statics' basin (R/10 per step) and Newton's stop (1e-12 R), and the buckling's path step,
+// count psi as the length R psi (BeamModel::lengths); the continuation's arc norm
+// (paths/continuation.hpp) takes the unknowns as they are.
 // Measured (tests/fem_reference/fem_reissner_test.cpp): see fem_reference/README.md.
 //
 // ## Terms and loads (beam_potential.hpp: one piece of code, used by statics and response)
