@@ -461,6 +461,58 @@ TEST(FemReissnerStatics, ScaledRingsHaveTheSameShape) {
   }
 }
 
+// Oracle: the Euler beam's continuation (fem_continuation_test: the pressed crown's limit
+// point at P R^2/EI ~ 7.61, past which the crown snaps down onto the bottom of the ring).
+// At P R^2/EI = 8 load stepping cannot reach the full load; the arc-length continuation of
+// the Reissner beam passes the limit point and follows the path down, as the Euler beam's
+// does, and the two limit loads differ by the shear correction, O((d/R)^2): their relative
+// difference falls like (d/R)^2 (fitted slope within 0.2 of 2 over d/R = 2e-2 and 1e-2;
+// 40 cells of degree 4, both beams), below 10 (d/R)^2. Measured: 4.48e-4 and 1.16e-4
+// (order 1.95); limit loads P R^2/EI = 7.6100 and 7.6131 (the multibody chain's
+// extrapolated inextensible Euler limit: 7.6141), 23 and 36 arc steps to contact.
+TEST(FemReissnerStatics, ContinuationPassesTheLimitPointAsTheEulerBeam) {
+  std::vector<double> ratio, diff;
+  std::string record;
+  for (double depth : {2e-2, 1e-2}) {
+    const ring::RingSpec spec = held(depth);
+    const ring::StaticOptions st = pressed_crown(spec, 8.0);
+    const fem::StaticPath t = fem::trace_static(spec, fem_options(40, 4), st);
+    const fem::StaticPath e = fem::trace_static(euler(spec), fem_options(40, 4), st);
+    ASSERT_FALSE(t.reached);
+    EXPECT_TRUE(t.continuation);
+    ASSERT_TRUE(std::isfinite(t.limit_load_factor)) << t.failure;
+    ASSERT_TRUE(std::isfinite(e.limit_load_factor)) << e.failure;
+    EXPECT_NE(t.failure.find("past a limit point at load factor"), std::string::npos) << t.failure;
+    // Through the limit: the load falls by more than 5 % after it.
+    EXPECT_LT(t.points.back().load_factor, 0.95 * t.limit_load_factor);
+    const double d = ringtest::rel(t.limit_load_factor, e.limit_load_factor);
+    record += sci(d) + " (limit " + std::to_string(8.0 * t.limit_load_factor) + ", " + std::to_string(t.arc_steps) +
+              " arc steps) ";
+    ratio.push_back(depth);
+    diff.push_back(d);
+    EXPECT_LT(d, 10.0 * depth * depth) << "depth " << depth;
+  }
+  const double order = slope(ratio, diff);
+  RecordProperty("differences", record + "order " + std::to_string(order));
+  EXPECT_NEAR(order, 2.0, 0.2);
+}
+
+// The converged reference (fem.reference: the degree raised, then cells split, until the
+// recorded displacements change by less than fem.tolerance = 1e-9) of the thick ring
+// pressed at the crown (P R^2/EI = 5) from 8 cells of degree 2 reaches the finest
+// discretization of ThickRingConvergesInElementsAndDegree (64 cells of degree 6) to 1e-8
+// (the tolerance and its estimate's factor ~10 of unseen error). Measured 3.3e-11.
+TEST(FemReissnerStatics, ReferenceReachesTheFinestDiscretization) {
+  const ring::RingSpec spec = held(0.2);
+  const ring::StaticOptions st = pressed_crown(spec, 5.0);
+  ring::FemOptions o = fem_options(8, 2);
+  o.reference = true;
+  o.tolerance = 1e-9;
+  const double d = difference(fem::solve_static(spec, o, st), fem::solve_static(spec, fem_options(64, 6), st));
+  RecordProperty("difference", sci(d));
+  EXPECT_LT(d, 1e-8);
+}
+
 // ---- Response --------------------------------------------------------------------------
 
 /// A step load P R^2/EI = 3 at the crown of the thick ring (d/R = 0.2), recorded there.
