@@ -82,11 +82,9 @@ Scalar fixed_force(const Y& y, double c_t, double c_n, double R) {
 
 }  // namespace
 
-BeamPotential::BeamPotential(const RingModel& model, const ring::Loads& loads)
+BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
     : model_(model), loads_(loads), rhoA_(model.spec_.rhoA()), constant_load_(model.n_free()) {
   const ring::RingSpec& spec = model.spec_;
-  const QGauss<1> gauss(model.setup_.degree + 2);  // the beam's own cell quadrature
-  for (const auto& p : gauss.get_points()) xi_.push_back(p[0]);
   for (const ring::PointLoad& p : loads.points)
     constant_load_ += model.vertex_force(model.vertex_of(p.angle), p.force);
   if (loads.has_gravity())
@@ -94,7 +92,7 @@ BeamPotential::BeamPotential(const RingModel& model, const ring::Loads& loads)
       constant_load_ += model.vertex_force(model.vertex_of(m.angle), {m.mass * loads.gravity[0], m.mass * loads.gravity[1]});
   for (const ring::Spring& k : spec.supports.springs) {
     const unsigned int v = model.vertex_of(k.angle);
-    const auto d = model.end_dofs(v, 0.0);
+    const auto d = model.translation_dofs(v);
     const double a = model.theta0_ + v * model.h_;
     // U = u t0 + w n0: Ux = -u sin a + w cos a, Uy = u cos a + w sin a.
     if (k.kx > 0) translations_.push_back({{d[0], d[1]}, {-std::sin(a), std::cos(a)}, k.kx});
@@ -106,7 +104,7 @@ BeamPotential::BeamPotential(const RingModel& model, const ring::Loads& loads)
 
 BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, Vector<double>* residual,
                                              SparseMatrix<double>* tangent, Vector<double>* load) const {
-  const RingModel& m = model_;
+  const BeamModel& m = model_;
   const ring::RingSpec& spec = m.spec_;
   const double R = spec.radius;
   Value out;
@@ -118,7 +116,7 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
   if (load) *load += constant_load_;
 
   const Vector<double> full = m.expand(q);
-  const unsigned int dpc = m.fe_.n_dofs_per_cell(), n = m.cells();
+  const unsigned int dpc = m.fe().n_dofs_per_cell(), n = m.cells();
   auto scatter = [&](const std::vector<types::global_dof_index>& dofs, const std::vector<double>& local,
                      Vector<double>& global) {
     for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -139,12 +137,11 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
       std::fill(fr.begin(), fr.end(), 0.0);
       std::fill(fl.begin(), fl.end(), 0.0);
       k = 0;
-      for (unsigned int qp = 0; qp < m.nq_; ++qp) {
+      const BeamModel::LoadRule& rule = m.load_rule_;
+      for (unsigned int qp = 0; qp < rule.xi.size(); ++qp) {
         Y y{0.0, R, 1.0, 0.0};
         for (unsigned int i = 0; i < dpc; ++i) {
-          const auto row = m.strain_row(i, qp);
-          const double v = m.v0_[qp * dpc + i];
-          dy[i] = m.component_[i] == 0 ? Y{v, 0.0, row[0], row[1]} : Y{0.0, v, row[0], row[1]};
+          dy[i] = rule.row[qp * dpc + i];
           for (int a = 0; a < 4; ++a) y[a] += x[i] * dy[i][a];
         }
         Scalar stored, potential;
@@ -157,12 +154,12 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
           }
         }
         if (loads_.has_gravity()) {
-          const double theta = m.theta0_ + (cell + xi_[qp]) * m.h_;
+          const double theta = m.theta0_ + (cell + rule.xi[qp]) * m.h_;
           const double gt = -g[0] * std::sin(theta) + g[1] * std::cos(theta);
           const double gn = g[0] * std::cos(theta) + g[1] * std::sin(theta);
           add(potential, fixed_force(y, rhoA_ * gt, rhoA_ * gn, R));
         }
-        const double ds = m.ds_[qp];
+        const double ds = rule.ds[qp];
         out.stored += ds * stored.value;
         out.load += ds * potential.value;
         Scalar total = stored;
@@ -203,51 +200,8 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
     }
   }
 
-  // Rotational springs: kr/2 {phi}^2 with {phi} = (phi_left + phi_right)/2 the mean of the
-  // two cells' exact tangent angles at the vertex (measured from t0, the right one as the
-  // left one plus the jump [[phi]] reduced to (-pi, pi], as the beam's vertex terms).
-  for (const auto& [v, kr] : rotations_) {
-    std::vector<types::global_dof_index> dofs(2 * dpc), side(dpc);
-    m.cells_[(v + n - 1) % n]->get_dof_indices(side);
-    std::copy(side.begin(), side.end(), dofs.begin());
-    m.cells_[v]->get_dof_indices(side);
-    std::copy(side.begin(), side.end(), dofs.begin() + dpc);
-    std::vector<Vec4> b(2 * dpc);
-    Vec4 gl{1.0, 0.0, 0.0, 0.0}, gr{1.0, 0.0, 0.0, 0.0};
-    for (unsigned int i = 0; i < dpc; ++i) {
-      b[i] = m.strain_row(i, m.nq_ + 1);  // right end of the left cell
-      b[dpc + i] = m.strain_row(i, m.nq_);  // left end of the right cell
-      for (int a = 0; a < 4; ++a) {
-        gl[a] += full[dofs[i]] * b[i][a];
-        gr[a] += full[dofs[dpc + i]] * b[dpc + i][a];
-      }
-    }
-    const Scalar pl = tangent_angle(gl), pr = tangent_angle(gr);
-    const double mean = pl.value + 0.5 * std::remainder(pr.value - pl.value, 2.0 * kPi);
-    out.stored += 0.5 * kr * mean * mean;
-    // d mean / d g (left | right) = (pl.d | pr.d) / 2; the Hessian is block-diagonal.
-    std::vector<double> f(2 * dpc), dm(2 * dpc);
-    for (unsigned int i = 0; i < 2 * dpc; ++i) {
-      const Scalar& side_angle = i < dpc ? pl : pr;
-      for (int a = 0; a < 4; ++a) dm[i] += 0.5 * side_angle.d[a] * b[i][a];
-      f[i] = kr * mean * dm[i];
-    }
-    if (residual) scatter(dofs, f, *residual);
-    if (tangent) {
-      FullMatrix<double> k(2 * dpc, 2 * dpc);
-      for (unsigned int i = 0; i < 2 * dpc; ++i)
-        for (unsigned int j = 0; j < 2 * dpc; ++j) {
-          double h = 0.0;
-          if ((i < dpc) == (j < dpc)) {
-            const Scalar& side_angle = i < dpc ? pl : pr;
-            for (int a = 0; a < 4; ++a)
-              for (int c = 0; c < 4; ++c) h += 0.5 * b[i][a] * side_angle.dd[a][c] * b[j][c];
-          }
-          k(i, j) = kr * (dm[i] * dm[j] + mean * h);
-        }
-      m.add_local(k, dofs, *tangent);
-    }
-  }
+  // Rotational springs: kr/2 theta^2 on the vertex's rotation (the model's, exact).
+  for (const auto& [v, kr] : rotations_) out.stored += m.rotation_spring(v, kr, full, residual, tangent);
   return out;
 }
 

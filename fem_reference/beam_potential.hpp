@@ -7,21 +7,23 @@
 
 namespace fem::detail {
 
-/// Pi(q; s) = V(q) - s Phi(q) on a RingModel's reduced unknowns q:
-///  - V, the stored energy: the beam (RingModel::beam_energy), the springs (kx, ky on the
-///    vertex's Cartesian displacement, kr on the mean of the two cells' exact tangent
-///    angles) and the foundation (radial and tangential, on the displacement along the
-///    undeformed point's fixed directions);
+/// Pi(q; s) = V(q) - s Phi(q) on a beam model's reduced unknowns q (BeamModel: the
+/// Euler-Bernoulli RingModel or the Reissner TimoshenkoModel):
+///  - V, the stored energy: the beam (BeamModel::beam_energy), the springs (kx, ky on the
+///    vertex's Cartesian displacement, kr on the vertex's rotation, BeamModel::rotation_spring:
+///    the mean of the two cells' exact tangent angles, or the section's psi) and the
+///    foundation (radial and tangential, on the displacement along the undeformed point's
+///    fixed directions);
 ///  - Phi, the potential of the loads at load factor 1 (F = grad Phi the generalized load,
 ///    -hess Phi its load stiffness): point loads, the weight of the point masses, uniform
 ///    pressure (follower: -p (A - A0), A the enclosed area; dead: -p int w ds0; central:
 ///    -p int (|x| - R) ds0) and the beam's weight rho A int g . U ds0.
-/// Pins, roller and clamp are RingModel's constraints (exact at any displacement).
+/// Pins, roller and clamp are the model's constraints (exact at any displacement).
 /// The object holds only constants of the model and the loads; evaluate() is reentrant.
 class BeamPotential {
  public:
   /// `model` and `loads` must outlive the object; every point on a vertex (check_nonlinear).
-  BeamPotential(const RingModel& model, const ring::Loads& loads);
+  BeamPotential(const BeamModel& model, const ring::Loads& loads);
 
   struct Value {
     double stored = 0.0;  ///< V(q), J
@@ -30,16 +32,14 @@ class BeamPotential {
   /// V and Phi at q; with non-null pointers also the residual grad V - s grad Phi (reinit),
   /// the tangent hess V - s hess Phi (on model.sparsity() or a pattern that contains it;
   /// the whole matrix is zeroed first) and the load grad Phi (reinit).
-  /// O(cells (p+2) (2p+3)^2), the beam's assembly.
+  /// O(cells (p+2) (2p+3)^2), the beam's assembly (Reissner: O(cells (p+1) (3p+3)^2)).
   Value evaluate(const Vector<double>& q, double s, Vector<double>* residual, SparseMatrix<double>* tangent,
                  Vector<double>* load = nullptr) const;
 
  private:
-  const RingModel& model_;
+  const BeamModel& model_;
   const ring::Loads& loads_;
   double rhoA_ = 0.0;
-  /// Gauss abscissae (reference cell, in [0, 1]) of the model's cell quadrature.
-  std::vector<double> xi_;
   /// The loads that do not depend on q: point loads and the point masses' weight.
   Vector<double> constant_load_;
   /// A translational spring: stiffness / 2 (c . x)^2 on the local DoFs of its vertex.

@@ -34,7 +34,8 @@ struct Buckled {
 /// of the reference (a size above the dense limit is then a failed refinement, not a
 /// request that can never work).
 Buckled buckle_once(const ring::RingSpec& spec, const Setup& setup, const ring::BucklingOptions& b, bool refining) {
-  const RingModel model(spec, setup);
+  const std::unique_ptr<BeamModel> built = make_beam(spec, setup);  // Euler or Reissner
+  const BeamModel& model = *built;
   const unsigned int N = model.n_free();
   check_dense_size(setup, N, refining, "buckling");
   if (b.count > static_cast<int>(N))
@@ -56,7 +57,7 @@ Buckled buckle_once(const ring::RingSpec& spec, const Setup& setup, const ring::
     throw ring::NumericalError(std::string("fem buckling: the tangent at rest is singular: ") + e.what());
   }
   lu.solve(u1);
-  const double largest = u1.linfty_norm();
+  const double largest = model.length_of(u1);  // a rotation psi counts as R psi
   if (!std::isfinite(largest)) throw ring::NumericalError("fem buckling: the linear prebuckling state is not finite");
   // Loads that do not displace the ring (f = 0) leave only their load stiffness; any h
   // then differences it exactly.
@@ -117,6 +118,7 @@ ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions
   setup.elements = o.elements;
   setup.degree = o.degree;
   setup.geometry = o.geometry;
+  setup.theory = spec.theory;
   Buckled result;
   double estimate = 0.0;
   int refinements = 0;

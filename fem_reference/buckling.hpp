@@ -9,7 +9,8 @@
 // includes here (see modes.hpp).
 //
 // Method (buckling.cpp), one discretization (fem.elements cells of fem.degree):
-//  - T_0 = T(0, 0), assembled on the reduced unknowns of RingModel (pin, roller, further
+//  - T_0 = T(0, 0), assembled on the reduced unknowns of the beam (make_beam: RingModel, or
+//    the Reissner TimoshenkoModel for ring.theory = "timoshenko"; pin, roller, further
 //    pins and clamp eliminated as the statics eliminate them: the constraints are linear
 //    and exact at any displacement, so the reduced space is the constraints' tangent space
 //    and they carry no multiplier term); it is the linear model's stiffness K_0;
@@ -30,7 +31,7 @@
 //    inverse-iteration corrections; pencil.cpp, refine()): the dense step in double
 //    loses 3e-9 (extensible) to 1e-7 (inextensible) of the bending factors to the membrane
 //    stiffness, the refined factors keep ~2e-11; shapes sampled at the ring::kStations
-//    common stations by the modes' RingModel::sample.
+//    common stations by the modes' sample().
 // Inextensible (fem.extensible = false): the modes' rule (modes.hpp): EA = beta EI / R^2
 // for beta = 1e6 and 2e6, lambda(beta) = lambda_inf + c / beta + O(beta^-2) extrapolated
 // to 2 lambda(2 beta) - lambda(beta); shapes of 2 beta. The extensible beam's factors

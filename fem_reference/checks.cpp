@@ -20,7 +20,6 @@ void need(bool ok, const std::string& what) {
 void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::Loads& loads,
                      const std::vector<double>& record, const std::string& section) {
   check_modes(spec, o);
-  ring::refuse_timoshenko(spec, "fem " + section + " (the geometrically exact beam is Euler-Bernoulli)");
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
   const double anchor = spec.supports.pin.value_or(0.0);
@@ -118,7 +117,6 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  ring::refuse_timoshenko(spec, "fem static (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, st.loads, st.record, "static");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
@@ -136,7 +134,6 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
-  ring::refuse_timoshenko(spec, "fem buckling (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
   need(b.count >= 1, "buckling.count (=" + std::to_string(b.count) + ") must be >= 1");
   need(!b.loads.points_only() || !b.loads.points.empty(),
@@ -148,7 +145,6 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  ring::refuse_timoshenko(spec, "fem modes under load (the geometrically exact beam is Euler-Bernoulli)");
   // static.path shapes the path's report, not the equilibrium at the full load.
   ring::StaticOptions at_full_load = st;
   at_full_load.path = false;
@@ -164,7 +160,6 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  ring::refuse_timoshenko(spec, "fem response (the geometrically exact beam is Euler-Bernoulli)");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under a "

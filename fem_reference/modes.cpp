@@ -11,6 +11,11 @@ std::unique_ptr<LinearModel> make_model(const ring::RingSpec& spec, const Setup&
   return std::make_unique<RingModel>(spec, setup);
 }
 
+std::unique_ptr<BeamModel> make_beam(const ring::RingSpec& spec, const Setup& setup) {
+  if (setup.theory == ring::Theory::timoshenko) return std::make_unique<TimoshenkoModel>(spec, setup);
+  return std::make_unique<RingModel>(spec, setup);
+}
+
 namespace {
 
 /// `refining`: a step of the reference refinement (not the user's own discretization).

@@ -14,9 +14,17 @@ constexpr int kMaxNewton = 25;
 /// takes the residual to round-off one iteration later). With `max_move`, an iterate
 /// that moves any value of q by more than that from the start counts as not converged:
 /// near a limit point Newton can otherwise land on a distant branch of equilibria.
+/// Corrections and moves are lengths: max_i |dq_i| lengths_i (BeamModel::lengths, a section
+/// rotation psi counts as R psi; all ones when `lengths` is null).
 template <class Residual>
 int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent,
-           double max_move = std::numeric_limits<double>::infinity()) {
+           double max_move = std::numeric_limits<double>::infinity(), const std::vector<double>* lengths = nullptr) {
+  auto length = [&](const Vector<double>& v) {
+    if (!lengths) return v.linfty_norm();
+    double m = 0.0;
+    for (unsigned int i = 0; i < v.size(); ++i) m = std::max(m, std::abs(v[i]) * (*lengths)[i]);
+    return m;
+  };
   SparseDirectUMFPACK lu;
   Vector<double> r, dq, moved;
   const Vector<double> start = q;
@@ -35,9 +43,9 @@ int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent,
     if (max_move < std::numeric_limits<double>::infinity()) {
       moved = q;
       moved -= start;
-      if (moved.linfty_norm() > max_move) return -1;
+      if (length(moved) > max_move) return -1;
     }
-    if (dq.linfty_norm() <= 1e-12 * radius) return it;
+    if (length(dq) <= 1e-12 * radius) return it;
   }
   return -1;
 }

@@ -22,6 +22,7 @@ Setup make_setup(const ring::RingSpec& spec, const ring::FemOptions& o, double b
   s.elements = o.elements;
   s.degree = o.degree;
   s.geometry = o.geometry;
+  s.theory = spec.theory;  // Euler-Bernoulli: RingModel; Timoshenko: the Reissner beam (make_beam)
   s.EA = o.extensible ? spec.EA() : beta * spec.EI() / (spec.radius * spec.radius);
   return s;
 }
@@ -119,7 +120,7 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
 /// by the trapezoidal rule on v^T C v.
 class BeamStepper : public paths::Stepper {
  public:
-  BeamStepper(const RingModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
+  BeamStepper(const BeamModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
       : model_(model), potential_(model, rs.loads), rs_(rs), radius_(spec.radius), N_(model.n_free()), M_(model.mass()),
         damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), S_(model.sparsity()) {
     if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
@@ -179,7 +180,7 @@ class BeamStepper : public paths::Stepper {
         res += Cv_;
       }
       return S_;
-    });
+    }, std::numeric_limits<double>::infinity(), &model_.lengths());
     if (it < 0) return {false, false, kMaxNewton, g_mean_};
     kinematics(q1_, h);
     return {true, false, it, g_mean_};
@@ -265,7 +266,7 @@ class BeamStepper : public paths::Stepper {
     }
   }
 
-  const RingModel& model_;
+  const BeamModel& model_;
   const BeamPotential potential_;
   const ring::ResponseOptions& rs_;
   const double radius_;
@@ -284,7 +285,8 @@ class BeamStepper : public paths::Stepper {
 /// whose Newton fails ends the run (step_too_small), and the reference refines dt itself.
 ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, const ring::ResponseOptions& rs) {
   const auto t0 = std::chrono::steady_clock::now();
-  const RingModel model(spec, setup);
+  const std::unique_ptr<BeamModel> built = make_beam(spec, setup);
+  const BeamModel& model = *built;
   BeamStepper stepper(model, spec, rs);
   // A gain is a failed integration, not a result (the one rule: ring/energy_guard.hpp).
   ring::EnergyGuard guard(spec, int(setup.elements * setup.subdivisions * setup.degree), ring::load_scale(spec, rs.loads));

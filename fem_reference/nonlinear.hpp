@@ -25,6 +25,39 @@
 // Inextensible option (fem.extensible = false): EA -> beta EI / R^2; statics extrapolate
 // the displacements from beta = 1e6 and 2e6 (error O(1/beta^2)), the response uses 1e7.
 //
+// ## Timoshenko (ring.theory = "timoshenko": the Reissner beam, reissner_beam.cpp)
+// The linear Timoshenko model's mesh, fields and constraints (modes.hpp, "Timoshenko";
+// timoshenko_model.hpp): u, w and the section's rotation psi, C0 FE_Q of degree p, psi
+// counter-clockwise from the rest direction (the same sense as phi above, so that the
+// linearized psi - phi is the linear model's shear gamma). With a = a_t t0 + a_n n0 as
+// above (exact) and the directors d1 = cos psi t0 - sin psi n0 (the section's tangent),
+// d2 = sin psi t0 + cos psi n0 (its normal), the strains of Reissner's (Simo's) rod:
+//   axial G1 = a . d1 - 1 = a_t cos psi - a_n sin psi - 1,
+//   shear G2 = a . d2 = a_t sin psi + a_n cos psi,
+//   bending K = psi'/R (the director angle theta + psi, minus the rest curvature 1/R);
+// each invariant under a rigid rotation (a turns, psi grows by the same angle).
+// Linearized: G1 = (u' + w)/R = eps, G2 = psi + (w' - u)/R = gamma, K = kappa: the linear
+// model's strains. Strain energy V = int (EA/2 G1^2 + kGA/2 G2^2 + EI/2 K^2) ds0 with the
+// linear model's selective reduced integration: membrane and shear with p Gauss points,
+// bending with p + 1 (exact), so the tangent at rest is exactly the linear model's
+// stiffness (the second-order parts of G1, G2 meet G = 0 there) and the beam does not
+// lock (measured: the same fitted order at d/R = 1e-3 and 0.1, fem_reissner_test).
+// H1 fields, no interior penalty. Gradient and Hessian are closed forms in
+// g = (a_t, a_n, psi) per reduced point (reissner_beam.cpp), checked against finite
+// differences. Terms: a pin is u = w = 0, a clamp also psi = 0 (exact at any motion); kr
+// of a spring acts on psi at the vertex, kr/2 psi^2 (exact); springs kx, ky, the
+// foundation and every load are the Euler beam's code below (BeamPotential) on the
+// model's rows of (x, a), integrated with p + 1 Gauss points (the linear foundation's).
+// Mass: the linear model's, constant and exact: rho A on u, w, rho I on psi (the polar
+// basis does not move, psi_t is the section's angular velocity), point masses m on the
+// vertex's translation and J on its psi. Statics, response, linear buckling (buckling.hpp)
+// and modes under load (preload.hpp) run the same drivers on the same tangent as the Euler
+// beam (make_beam picks the model). The unknowns mix lengths (u, w) and angles (psi): the
+// statics' basin (R/10 per step) and Newton's stop (1e-12 R), and the buckling's path step,
+// count psi as the length R psi (BeamModel::lengths); the continuation's arc norm
+// (paths/continuation.hpp) takes the unknowns as they are.
+// Measured (tests/fem_reference/fem_reissner_test.cpp): see fem_reference/README.md.
+//
 // ## Terms and loads (beam_potential.hpp: one piece of code, used by statics and response)
 // The equations are those of the total potential Pi(q; s) = V(q) - s Phi(q): V the stored
 // energy, Phi the loads' potential at load factor 1 (statics: s the load factor;
@@ -168,7 +201,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::FemOptio
 
 /// Forced response from rest (see the file comment). Requires a pin (or supports that
 /// hold every rigid motion), curved geometry,
-/// load and record points on vertices, no rotary inertia. Throws std::invalid_argument
+/// load and record points on vertices, no fem.rotary_inertia (the Timoshenko theory has
+/// the section's rotary inertia by definition). Throws std::invalid_argument
 /// for input that can never work and ring::IntegrationFailure (with the history so far)
 /// when a step fails or the energy balance grows.
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,

@@ -41,7 +41,7 @@ Pairs raw_pairs(const Eigen::MatrixXd& P, const Eigen::MatrixXd& Q, int count, u
   return p;
 }
 
-Pairs refine(const RingModel& model, const SparseDirectUMFPACK& P_inverse, const Eigen::MatrixXd& E,
+Pairs refine(const LinearModel& model, const SparseDirectUMFPACK& P_inverse, const Eigen::MatrixXd& E,
              const Eigen::MatrixXd& Q, Pairs p, int count, const std::string& who) {
   const unsigned int N = model.n_free();
   const int m = static_cast<int>(p.vectors.cols());

@@ -1,5 +1,5 @@
 // Internal to fem_reference/: the dense eigen step of a pencil on the geometrically exact
-// beam's reduced unknowns (RingModel) and its refinement, shared by linear buckling
+// beam's reduced unknowns (RingModel or the Reissner TimoshenkoModel) and its refinement, shared by linear buckling
 // (buckling.cpp) and the frequencies under load (preload.cpp). Both pencils have the form
 //
 //   (P + lambda Q) x = 0,   P = K_0 + E symmetric positive definite,
@@ -52,7 +52,7 @@ Pairs raw_pairs(const Eigen::MatrixXd& P, const Eigen::MatrixXd& Q, int count, u
 /// paper's ring, N = 130..570; refined: ~2e-11), because the P it factors holds the
 /// bending energy only as a cancellation of stiff terms.
 /// Rayleigh-Ritz on the span of the pairs with X^T K_0 X accumulated in extended precision
-/// from the strain fields (RingModel::stiffness_product; E and Q are applied in double:
+/// from the strain fields (LinearModel::stiffness_product; E and Q are applied in double:
 /// they hold no stiff part of their own, only the assembly's rounding of the stiff
 /// entries, see preload.hpp), then the corrections x -= P^-1 r of the wanted pairs,
 /// r = P x + lambda Q x (one step of inverse iteration in the form that keeps the digits),
@@ -62,7 +62,7 @@ Pairs raw_pairs(const Eigen::MatrixXd& P, const Eigen::MatrixXd& Q, int count, u
 /// whose residual stays above kAcceptedResidual is a ring::NumericalError naming `who`.
 /// `E` may be empty (0 x 0: none). `P_inverse` factors the sparse P.
 /// O(rounds (m N p + N^2 m)) for m pairs.
-Pairs refine(const RingModel& model, const SparseDirectUMFPACK& P_inverse, const Eigen::MatrixXd& E,
+Pairs refine(const LinearModel& model, const SparseDirectUMFPACK& P_inverse, const Eigen::MatrixXd& E,
              const Eigen::MatrixXd& Q, Pairs p, int count, const std::string& who);
 
 }  // namespace fem::detail

@@ -28,7 +28,8 @@ struct Loaded {
 
 /// The equilibrium of `st` at the full load with `setup` and the modes about it.
 Loaded loaded_once(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st, int count) {
-  const RingModel model(spec, setup);
+  const std::unique_ptr<BeamModel> built = make_beam(spec, setup);  // Euler or Reissner
+  const BeamModel& model = *built;
   const unsigned int N = model.n_free();
   check_dense_size(setup, N, false, "modes under load");
   if (count > static_cast<int>(N))
@@ -131,6 +132,7 @@ ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOp
   setup.elements = o.elements;
   setup.degree = o.degree;
   setup.geometry = o.geometry;
+  setup.theory = spec.theory;
   const Loaded result = loaded(spec, setup, o.extensible, st, count);
   ring::ModalResult r;
   r.solver = "fem";
@@ -140,7 +142,7 @@ ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOp
   r.model["geometry"] = ring::to_string(setup.geometry);
   r.model["theory"] = ring::to_string(spec.theory);
   r.model["extensible"] = o.extensible;
-  r.model["rotary_inertia"] = false;
+  r.model["rotary_inertia"] = spec.theory == ring::Theory::timoshenko;  // the Reissner beam's mass has rho I
   r.model["preload"] = std::string("static");
   r.model["reference"] = false;  // refused (check_preloaded_modes)
   r.rigid_modes = 0;

@@ -14,14 +14,17 @@
 //    follows it; statics.path is ignored (the modes need the full load's equilibrium). A
 //    path that does not reach the full load (past a bifurcation or a limit point, contact)
 //    is a ring::NumericalError;
-//  - T(q*, 1) on the reduced unknowns of RingModel: the supports are linear constraints,
+//  - T(q*, 1) on the reduced unknowns of the beam (make_beam: RingModel, or the Reissner
+//    TimoshenkoModel for ring.theory = "timoshenko"): the supports are linear constraints,
 //    exact at any displacement and eliminated, so the reduced space is the constraints'
 //    tangent space at q* and they carry no multiplier (prestress) term: the prestress is
 //    in the beam's own Hessian (EA eps and EI kappa at q*);
-//  - M: RingModel::mass(), the linear model's consistent mass, which is the geometrically
+//  - M: the model's mass(), the linear model's consistent mass, which is the geometrically
 //    exact beam's: the fields are polar components in the basis of the undeformed point
 //    (x = X + u t0 + w n0 with t0, n0 fixed in time), so the kinetic energy
-//    rho A/2 int |x_t|^2 ds0 is quadratic in the field rates with constant coefficients.
+//    rho A/2 int |x_t|^2 ds0 is quadratic in the field rates with constant coefficients
+//    (the Reissner beam adds rho I/2 int psi_t^2 ds0, exact: psi_t is the section's
+//    angular velocity).
 //    Point masses: m on the vertex's Cartesian velocity (exact); J on the rate of the
 //    linearized vertex rotation (u - w')/R, the response's constant mass (nonlinear.hpp):
 //    exact for small rotations of the vertex. These are exactly the frequencies of
@@ -99,7 +102,8 @@ namespace fem {
 ///                 path from rest; record and path are not used.
 /// \param count    modes wanted, 1 <= count <= the reduced unknowns.
 /// \return solver "fem"; model {elements, cells, degree, geometry, theory, extensible,
-///         rotary_inertia = false, preload = "static", reference = false};
+///         rotary_inertia (true for the Timoshenko theory, else false), preload = "static",
+///         reference = false};
 ///         rigid_modes 0 (the supports, or the loads, hold every rigid motion); omega
 ///         ascending (rad/s); shapes at ring::kStations stations; unknowns (reduced);
 ///         max_residual (dual norm, residual_norm = kDualResidualNorm); seconds.

@@ -1,6 +1,6 @@
 // The geometrically exact beam on RingModel's mesh: strain energy, internal force and
-// consistent tangent (nonlinear.hpp has the formulation), and the vertex helpers the
-// nonlinear drivers use.
+// consistent tangent (nonlinear.hpp has the formulation), its rotational springs, and the
+// vertex helpers of either beam (BeamModel) that the nonlinear drivers use.
 #include "fem_reference/beam_scalar.hpp"
 #include "fem_reference/ring_model.hpp"
 
@@ -149,50 +149,120 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
   return energy;
 }
 
-unsigned int RingModel::vertex_of(double degrees) const {
+double RingModel::rotation_spring(unsigned int v, double kr, const Vector<double>& full, Vector<double>* gradient,
+                                  SparseMatrix<double>* tangent) const {
+  // kr/2 {phi}^2 with {phi} = (phi_left + phi_right)/2 the mean of the two cells' exact
+  // tangent angles at the vertex (measured from t0, the right one as the left one plus the
+  // jump [[phi]] reduced to (-pi, pi], as the beam's vertex terms).
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  std::vector<types::global_dof_index> dofs(2 * dpc), side(dpc);
+  cells_[(v + n - 1) % n]->get_dof_indices(side);
+  std::copy(side.begin(), side.end(), dofs.begin());
+  cells_[v]->get_dof_indices(side);
+  std::copy(side.begin(), side.end(), dofs.begin() + dpc);
+  std::vector<Vec4> b(2 * dpc);
+  Vec4 gl{1.0, 0.0, 0.0, 0.0}, gr{1.0, 0.0, 0.0, 0.0};
+  for (unsigned int i = 0; i < dpc; ++i) {
+    b[i] = strain_row(i, nq_ + 1);        // right end of the left cell
+    b[dpc + i] = strain_row(i, nq_);      // left end of the right cell
+    for (int a = 0; a < 4; ++a) {
+      gl[a] += full[dofs[i]] * b[i][a];
+      gr[a] += full[dofs[dpc + i]] * b[dpc + i][a];
+    }
+  }
+  const Scalar pl = tangent_angle(gl), pr = tangent_angle(gr);
+  const double mean = pl.value + 0.5 * std::remainder(pr.value - pl.value, 2.0 * kPi);
+  // d mean / d g (left | right) = (pl.d | pr.d) / 2; the Hessian is block-diagonal.
+  std::vector<double> f(2 * dpc), dm(2 * dpc);
+  for (unsigned int i = 0; i < 2 * dpc; ++i) {
+    const Scalar& side_angle = i < dpc ? pl : pr;
+    for (int a = 0; a < 4; ++a) dm[i] += 0.5 * side_angle.d[a] * b[i][a];
+    f[i] = kr * mean * dm[i];
+  }
+  if (gradient)
+    for (unsigned int i = 0; i < 2 * dpc; ++i)
+      for (const auto& [j, w] : expansion_[dofs[i]]) (*gradient)[j] += w * f[i];
+  if (tangent) {
+    FullMatrix<double> k(2 * dpc, 2 * dpc);
+    for (unsigned int i = 0; i < 2 * dpc; ++i)
+      for (unsigned int j = 0; j < 2 * dpc; ++j) {
+        double h = 0.0;
+        if ((i < dpc) == (j < dpc)) {
+          const Scalar& side_angle = i < dpc ? pl : pr;
+          for (int a = 0; a < 4; ++a)
+            for (int c = 0; c < 4; ++c) h += 0.5 * b[i][a] * side_angle.dd[a][c] * b[j][c];
+        }
+        k(i, j) = kr * (dm[i] * dm[j] + mean * h);
+      }
+    add_local(k, dofs, *tangent);
+  }
+  return 0.5 * kr * mean * mean;
+}
+
+// ---- BeamModel: the vertices and the centreline, either model ----
+
+BeamModel::BeamModel(const ring::RingSpec& spec, const Setup& setup)
+    : LinearModel(spec, setup), theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0), h_(2.0 * kPi / setup.cells()) {}
+
+void BeamModel::measure_lengths() {
+  lengths_.assign(n_free_, 1.0);
+  const FESystem<1>& fe = this->fe();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  for (const auto& cell : cells_) {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (fe.system_to_component_index(i).first == 2 && free_[dofs[i]] >= 0) lengths_[free_[dofs[i]]] = spec_.radius;
+  }
+}
+
+unsigned int BeamModel::vertex_of(double degrees) const {
   const double pin = spec_.supports.pin.value_or(0.0);
   const unsigned int n = setup_.cells();
   return static_cast<unsigned int>(std::lround(ring::wrap_degrees(degrees - pin) * n / 360.0)) % n;
 }
 
-std::array<double, 2> RingModel::vertex_position(unsigned int k) const {
+std::array<double, 2> BeamModel::vertex_position(unsigned int k) const {
   const double a = theta0_ + k * h_;
   return {spec_.radius * std::cos(a), spec_.radius * std::sin(a)};
 }
 
-Vector<double> RingModel::vertex_force(unsigned int k, const std::array<double, 2>& f) const {
+Vector<double> BeamModel::vertex_force(unsigned int k, const std::array<double, 2>& f) const {
   // U = u t0 + w n0 at the vertex: the force's work is u (f . t0) + w (f . n0).
   const double a = theta0_ + k * h_;
   const std::array<double, 2> coef{-f[0] * std::sin(a) + f[1] * std::cos(a), f[0] * std::cos(a) + f[1] * std::sin(a)};
-  const auto dofs = end_dofs(k, 0.0);
+  const auto dofs = translation_dofs(k);
   Vector<double> out(n_free_);
   for (unsigned int c = 0; c < 2; ++c)
     for (const auto& [j, w] : expansion_[dofs[c]]) out[j] += w * coef[c];
   return out;
 }
 
-std::array<double, 2> RingModel::vertex_displacement(const Vector<double>& full, unsigned int k) const {
+std::array<double, 2> BeamModel::vertex_displacement(const Vector<double>& full, unsigned int k) const {
   const double a = theta0_ + k * h_;
-  const auto dofs = end_dofs(k, 0.0);
+  const auto dofs = translation_dofs(k);
   const double u = full[dofs[0]], w = full[dofs[1]];
   return {-u * std::sin(a) + w * std::cos(a), u * std::cos(a) + w * std::sin(a)};
 }
 
-std::vector<std::array<double, 2>> RingModel::centreline(const Vector<double>& full, unsigned int per_cell) const {
-  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+std::vector<std::array<double, 2>> BeamModel::centreline(const Vector<double>& full, unsigned int per_cell) const {
+  const FESystem<1>& fe = this->fe();
+  const unsigned int dpc = fe.n_dofs_per_cell(), n = setup_.cells();
   // Shape values at the points of the reference cell (all cells are affine images of it).
   std::vector<double> table(per_cell * dpc);
+  std::vector<unsigned int> component(dpc);
+  for (unsigned int i = 0; i < dpc; ++i) component[i] = fe.system_to_component_index(i).first;
   for (unsigned int k = 0; k < per_cell; ++k)
     for (unsigned int i = 0; i < dpc; ++i)
-      table[k * dpc + i] = fe_.shape_value(i, Point<1>(static_cast<double>(k) / per_cell));
+      table[k * dpc + i] = fe.shape_value(i, Point<1>(static_cast<double>(k) / per_cell));
   std::vector<types::global_dof_index> dofs(dpc);
   std::vector<std::array<double, 2>> out;
   out.reserve(n * per_cell);
   for (unsigned int cell = 0; cell < n; ++cell) {
     cells_[cell]->get_dof_indices(dofs);
     for (unsigned int k = 0; k < per_cell; ++k) {
-      double U[2] = {0.0, 0.0};  // (u, w): tangential, radial
-      for (unsigned int i = 0; i < dpc; ++i) U[component_[i]] += full[dofs[i]] * table[k * dpc + i];
+      double U[2] = {0.0, 0.0};  // (u, w): tangential, radial (a rotation field is not position)
+      for (unsigned int i = 0; i < dpc; ++i)
+        if (component[i] < 2) U[component[i]] += full[dofs[i]] * table[k * dpc + i];
       const double a = theta0_ + (cell + static_cast<double>(k) / per_cell) * h_;
       const double r = spec_.radius + U[1];
       out.push_back({r * std::cos(a) - U[0] * std::sin(a), r * std::sin(a) + U[0] * std::cos(a)});

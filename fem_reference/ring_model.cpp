@@ -90,9 +90,7 @@ Vector<double> LinearModel::expand(const Vector<double>& q) const {
 // ---- RingModel: the Euler-Bernoulli ring ----
 
 RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
-    : LinearModel(spec, setup),
-      theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0),
-      h_(2.0 * kPi / setup.cells()),
+    : BeamModel(spec, setup),
       fe_(make_fe(setup)),
       dof_handler_(triangulation_) {
   make_grid();
@@ -100,6 +98,7 @@ RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
   setup_reduced_system();
   setup_point_terms();
   assemble();
+  measure_lengths();
 }
 
 void RingModel::make_grid() {
@@ -139,6 +138,19 @@ void RingModel::make_grid() {
     }
   }
   for (unsigned int i = 0; i < dpc; ++i) component_.push_back(fe_.system_to_component_index(i).first);
+  // The geometrically exact beam's distributed terms use the same Gauss rule (curved
+  // geometry: the rows of x = u t0 + (R + w) n0 and a = dx/ds0, nonlinear.hpp).
+  if (setup_.geometry == Geometry::curved)
+    for (unsigned int q = 0; q < nq_; ++q) {
+      load_rule_.xi.push_back(gauss.point(q)[0]);
+      load_rule_.ds.push_back(ds_[q]);
+      for (unsigned int i = 0; i < dpc; ++i) {
+        const auto row = strain_row(i, q);
+        const double v = v0_[q * dpc + i];
+        load_rule_.row.push_back(component_[i] == 0 ? std::array<double, 4>{v, 0.0, row[0], row[1]}
+                                                    : std::array<double, 4>{0.0, v, row[0], row[1]});
+      }
+    }
   // sigma = 2 (q+1)(q+2) > (q+1)^2, the trace-inverse constant for kappa of degree
   // q = p (u' on the circle), makes the form coercive; h = arc length of a cell.
   const double q_kappa = setup_.degree;

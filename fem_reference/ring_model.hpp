@@ -229,25 +229,19 @@ class LinearModel {
   std::vector<PointTerm> point_terms_;
 };
 
-/// The Euler-Bernoulli ring (modes.hpp): C0 interior penalty for the bending field.
-class RingModel : public LinearModel {
+/// What the geometrically exact beam's terms and loads (BeamPotential) and its drivers
+/// (static_path.cpp, nonlinear.cpp) see of a model: the beam's stored energy with its exact
+/// gradient and Hessian, its rotational springs, the rows of the current position and
+/// stretch for the distributed terms, and the vertices. Both models' fields u (tangential)
+/// and w (radial) are components 0 and 1 of their FESystem on the same periodic mesh in the
+/// polar angle; RingModel (Euler-Bernoulli, nonlinear.hpp) and TimoshenkoModel (Reissner,
+/// reissner_beam.cpp) implement it. Curved geometry only.
+class BeamModel : public LinearModel {
  public:
-  /// Builds mesh, constraints and matrices. O(cells (2p+3)^2).
-  RingModel(const ring::RingSpec& spec, const Setup& setup);
-
-  /// Radial and tangential displacement of a full DoF vector at the common stations,
-  /// normalized. O(kStations (2p+3)).
-  ring::ModeShape sample(const Vector<double>& full) const override;
-  /// Writes the given full vectors to a VTU file with DataOut.
-  void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
-                 const std::string& file) const override;
-
-  // The geometrically exact beam on the same mesh, fields and constraints (ring_beam.cpp;
-  // curved geometry only, formulation in nonlinear.hpp).
-  /// Strain energy of the reduced displacement q; adds its gradient (the internal force)
-  /// and its Hessian (the consistent tangent, on sparsity()) when not null.
-  /// O(cells (p+2) (2p+3)^2).
-  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const;
+  /// Strain energy of the beam at the reduced displacement q; adds its gradient (the
+  /// internal force) and its Hessian (the consistent tangent, on sparsity()) when not null
+  /// (gradient reinit, tangent zeroed first).
+  virtual double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const = 0;
   // mass() (constant: the polar basis at fixed theta does not move) and stiffness() (the
   // tangent of beam_energy at q = 0) are LinearModel's.
   unsigned int cells() const { return setup_.cells(); }
@@ -261,13 +255,78 @@ class RingModel : public LinearModel {
   std::array<double, 2> vertex_position(unsigned int k) const;
   /// Deformed centreline X + U (curved geometry) of a full DoF vector (ring-centred frame, m) at
   /// `per_cell` equally spaced points of every cell, counter-clockwise from vertex 0
-  /// (point k at the polar angle theta0 + k h / per_cell). O(cells per_cell (2p+3)).
+  /// (point k at the polar angle theta0 + k h / per_cell). O(cells per_cell dofs per cell).
   std::vector<std::array<double, 2>> centreline(const Vector<double>& full, unsigned int per_cell) const;
+  /// Per reduced unknown, the length by which one unit of it moves the ring: 1 for u and w
+  /// (m), R for a section rotation psi (rad; TimoshenkoModel). The statics' basin and
+  /// stopping rules (static_path.cpp) and the response's Newton (newton.hpp) measure a
+  /// change dz as max_i |dz_i| lengths_i, so that a ring's size does not change how far
+  /// its rotations may move in a step (with psi counted as 1 m, a ring of R = 1 cm took 728
+  /// load steps where R = 1 m takes 15: fem_reissner_test, ScaledRingsHaveTheSameShape).
+  const std::vector<double>& lengths() const { return lengths_; }
+  /// max_i |dz_i| lengths()_i over the first n_free() entries of dz. O(N).
+  template <class V>
+  double length_of(const V& dz) const {
+    double m = 0.0;
+    for (unsigned int i = 0; i < n_free_; ++i) m = std::max(m, std::abs(dz[i]) * lengths_[i]);
+    return m;
+  }
+
+ protected:
+  BeamModel(const ring::RingSpec& spec, const Setup& setup);
+  /// Fills lengths_ (after the reduced numbering and the cells exist).
+  void measure_lengths();
+  /// The terms and loads read the mesh, the rule and the reduced numbering.
+  friend class BeamPotential;
+
+  /// The DoFs of u and w at vertex k (the left end of cell k).
+  virtual std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const = 0;
+  /// A rotational spring kr/2 theta^2 at vertex v, theta the vertex's rotation (RingModel:
+  /// the mean of the two cells' exact tangent angles; TimoshenkoModel: psi, exact): its
+  /// energy, and its gradient and Hessian added to `gradient` and `tangent` when not null.
+  virtual double rotation_spring(unsigned int v, double kr, const Vector<double>& full, Vector<double>* gradient,
+                                 SparseMatrix<double>* tangent) const = 0;
+  /// The FESystem (u component 0, w component 1).
+  virtual const FESystem<1>& fe() const = 0;
+
+  /// The cell rule of the distributed terms (foundation, pressure, gravity) on the
+  /// reference cell: abscissae in [0, 1], weight times ds at each, and per point and local
+  /// shape function i (index [q * dofs per cell + i]) the derivative of the local variables
+  /// y = (x_t, x_n, a_t, a_n) (beam_potential.cpp) by DoF i. Filled by the model.
+  struct LoadRule {
+    std::vector<double> xi, ds;
+    std::vector<std::array<double, 4>> row;
+  };
+  LoadRule load_rule_;
+  std::vector<double> lengths_;
+
+  const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
+  const double h_;       ///< cell size in theta, rad
+  std::vector<DoFHandler<1>::active_cell_iterator> cells_;  ///< counter-clockwise order
+};
+
+/// The Euler-Bernoulli ring (modes.hpp): C0 interior penalty for the bending field.
+class RingModel : public BeamModel {
+ public:
+  /// Builds mesh, constraints and matrices. O(cells (2p+3)^2).
+  RingModel(const ring::RingSpec& spec, const Setup& setup);
+
+  /// Radial and tangential displacement of a full DoF vector at the common stations,
+  /// normalized. O(kStations (2p+3)).
+  ring::ModeShape sample(const Vector<double>& full) const override;
+  /// Writes the given full vectors to a VTU file with DataOut.
+  void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
+                 const std::string& file) const override;
+
+  // The geometrically exact beam on the same mesh, fields and constraints (ring_beam.cpp;
+  // curved geometry only, formulation in nonlinear.hpp). O(cells (p+2) (2p+3)^2).
+  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const override;
 
  private:
-  /// The nonlinear terms and loads (beam_potential.cpp) read the mesh, the shape tables and
-  /// the reduced numbering.
-  friend class BeamPotential;
+  std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const override { return end_dofs(k, 0.0); }
+  double rotation_spring(unsigned int v, double kr, const Vector<double>& full, Vector<double>* gradient,
+                         SparseMatrix<double>* tangent) const override;
+  const FESystem<1>& fe() const override { return fe_; }
 
   /// d g / d x_i of local shape function i at table point qp, g = (a_t, a_n, b_t, b_n) the
   /// exact stretch vector a = dx/ds0 and b = da/dtheta in the rest frame (t0, n0)
@@ -301,13 +360,9 @@ class RingModel : public LinearModel {
   std::array<types::global_dof_index, 2> end_dofs(unsigned int cell, double xi) const;
   void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const override;
 
-  const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
-  const double h_;       ///< cell size in theta, rad
-
   Triangulation<1> triangulation_;
   FESystem<1> fe_;
   DoFHandler<1> dof_handler_;
-  std::vector<DoFHandler<1>::active_cell_iterator> cells_;  ///< counter-clockwise order
   std::vector<std::array<double, 2>> chord_t_;  ///< polygon: unit tangent of each chord
 
   /// Shape functions on the reference cell (all cells are equal affine images of it):
@@ -339,6 +394,9 @@ void write_ring_vtu(const ring::RingSpec& spec, const Setup& setup, double theta
 
 /// The model of setup.theory: RingModel or TimoshenkoModel (timoshenko_model.cpp).
 std::unique_ptr<LinearModel> make_model(const ring::RingSpec& spec, const Setup& setup);
+/// The geometrically exact beam of setup.theory: RingModel (Euler-Bernoulli, nonlinear.hpp)
+/// or TimoshenkoModel (Reissner, reissner_beam.cpp). Curved geometry.
+std::unique_ptr<BeamModel> make_beam(const ring::RingSpec& spec, const Setup& setup);
 
 /// Frequencies, shapes and residual of one discretization (with the inextensible
 /// extrapolation when asked). `full` receives the full DoF vectors if not null.

@@ -58,14 +58,15 @@ class BeamEquilibrium : public paths::Equilibrium {
   Eigen::Index size() const override { return N_; }
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override;
   bool solve(paths::Vector& y) override;
-  double move(const paths::Vector& dz) const override { return dz.cwiseAbs().maxCoeff() / (kMaxArcMove * radius_); }
+  /// Lengths (BeamModel::lengths: a rotation psi counts as R psi).
+  double move(const paths::Vector& dz) const override { return model_.length_of(dz) / (kMaxArcMove * radius_); }
   /// No value of q changed by more than 1e-12 R, or (from the third iteration) the
   /// correction, below 1e-9 R, did not shrink: the rounding floor of a nearly singular
   /// tangent next to a bifurcation (its mode amplifies the residual's rounding), where the
   /// bisection of the bifurcation would stop otherwise (measured: brackets 3e-6 to 2e-4
   /// wide without this). Regular Newton contracts quadratically and never stalls above 1e-12 R.
   bool converged(const paths::State&, const paths::Vector& dz, int iteration) override {
-    const double step = dz.cwiseAbs().maxCoeff();
+    const double step = model_.length_of(dz);
     const bool stalled = iteration >= 3 && step >= last_step_ && step <= 1e-9 * radius_;
     last_step_ = step;
     return step <= 1e-12 * radius_ || stalled;
@@ -112,7 +113,8 @@ class BeamEquilibrium : public paths::Equilibrium {
 
   const ring::RingSpec& spec_;
   const ring::StaticOptions& st_;
-  const RingModel model_;
+  const std::unique_ptr<BeamModel> built_;
+  const BeamModel& model_;
   const unsigned int N_;
   const unsigned int loaded_;
   const BeamPotential potential_;
@@ -135,7 +137,8 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
                                  StaticSolve& out)
     : spec_(spec),
       st_(st),
-      model_(spec, setup),
+      built_(make_beam(spec, setup)),
+      model_(*built_),
       N_(model_.n_free()),
       loaded_(model_.vertex_of(path_point(st))),
       potential_(model_, st.loads),

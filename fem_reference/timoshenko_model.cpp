@@ -6,9 +6,7 @@
 namespace fem::detail {
 
 TimoshenkoModel::TimoshenkoModel(const ring::RingSpec& spec, const Setup& setup)
-    : LinearModel(spec, setup),
-      theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0),
-      h_(2.0 * kPi / setup.cells()),
+    : BeamModel(spec, setup),
       fe_(make_fe(setup)),
       dof_handler_(triangulation_) {
   make_grid();
@@ -16,6 +14,7 @@ TimoshenkoModel::TimoshenkoModel(const ring::RingSpec& spec, const Setup& setup)
   setup_reduced_system();
   setup_point_terms();
   assemble();
+  measure_lengths();
 }
 
 void TimoshenkoModel::make_grid() {
@@ -28,8 +27,21 @@ void TimoshenkoModel::make_grid() {
   // the bending (degree 2p - 2), foundation and mass (2p) terms exactly; p points integrate
   // the membrane and shear terms as the square of the strain's L2 projection onto P_{p-1}
   // (modes.hpp).
-  full_ = make_table(QGauss<1>(setup_.degree + 1));
+  const QGauss<1> full(setup_.degree + 1);
+  full_ = make_table(full);
   reduced_ = make_table(QGauss<1>(setup_.degree));
+  // The Reissner beam's distributed terms (foundation, pressure, gravity) use the full
+  // rule, as the linear foundation: rows of x = u t0 + (R + w) n0 and a = dx/ds0 with
+  // a_t = 1 + eps, a_n = gamma - psi = (w' - u)/R.
+  const unsigned int dpc = fe_.n_dofs_per_cell();
+  for (unsigned int q = 0; q < full_.points; ++q) {
+    load_rule_.xi.push_back(full.point(q)[0]);
+    load_rule_.ds.push_back(full_.ds[q]);
+    for (unsigned int i = 0; i < dpc; ++i) {
+      const Strains& t = full_.at[q * dpc + i];
+      load_rule_.row.push_back({t.u, t.w, t.eps, t.gamma - t.psi});
+    }
+  }
 }
 
 TimoshenkoModel::Table TimoshenkoModel::make_table(const Quadrature<1>& quadrature) const {
@@ -63,12 +75,6 @@ TimoshenkoModel::Table TimoshenkoModel::make_table(const Quadrature<1>& quadratu
     }
   }
   return t;
-}
-
-unsigned int TimoshenkoModel::vertex_of(double degrees) const {
-  const double pin = spec_.supports.pin.value_or(0.0);
-  const unsigned int n = setup_.cells();
-  return static_cast<unsigned int>(std::lround(ring::wrap_degrees(degrees - pin) * n / 360.0)) % n;
 }
 
 std::array<types::global_dof_index, 3> TimoshenkoModel::vertex_dofs(unsigned int v) const {

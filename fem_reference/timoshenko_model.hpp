@@ -16,8 +16,9 @@ namespace fem::detail {
 /// rotation, counter-clockwise) of the polar angle, each C0 FE_Q of degree p, DoF order of
 /// the FESystem (components 0, 1, 2). Membrane and shear strains are integrated with p
 /// Gauss points (their L2 projection onto discontinuous P_{p-1}), bending, foundation and
-/// mass with p + 1 (exact).
-class TimoshenkoModel : public LinearModel {
+/// mass with p + 1 (exact). It is also the geometrically exact Reissner beam (BeamModel;
+/// reissner_beam.cpp, formulation in nonlinear.hpp, "Timoshenko").
+class TimoshenkoModel : public BeamModel {
  public:
   /// Builds mesh, constraints and matrices. O(cells (3p+3)^2).
   TimoshenkoModel(const ring::RingSpec& spec, const Setup& setup);
@@ -28,7 +29,21 @@ class TimoshenkoModel : public LinearModel {
   void write_vtu(const std::vector<Vector<double>>& modes, const std::vector<double>& omega,
                  const std::string& file) const override;
 
+  /// The Reissner beam's strain energy, its exact gradient and Hessian (reissner_beam.cpp):
+  /// membrane and shear with the p-point rule, bending with p + 1 points, as the linear
+  /// model's stiffness, which is its tangent at rest. O(cells (p+1) (3p+3)^2).
+  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const override;
+
  private:
+  std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const override {
+    const auto d = vertex_dofs(k);
+    return {d[0], d[1]};
+  }
+  /// kr/2 psi^2 at the vertex: exact (psi is the section's rotation from its rest direction).
+  double rotation_spring(unsigned int v, double kr, const Vector<double>& full, Vector<double>* gradient,
+                         SparseMatrix<double>* tangent) const override;
+  const FESystem<1>& fe() const override { return fe_; }
+
   /// What one shape function contributes at one point: tangential and radial displacement,
   /// rotation psi, strain eps = (u' + w)/R, shear gamma = psi - (u - w')/R, change of
   /// curvature kappa = psi'/R.
@@ -55,18 +70,12 @@ class TimoshenkoModel : public LinearModel {
 
   /// The table of `quadrature` on the reference cell.
   Table make_table(const Quadrature<1>& quadrature) const;
-  /// Index of the vertex at `degrees` (on a vertex: ring::on_node).
-  unsigned int vertex_of(double degrees) const;
   /// DoFs of u, w, psi at vertex v (the left end of cell v).
   std::array<types::global_dof_index, 3> vertex_dofs(unsigned int v) const;
-
-  const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
-  const double h_;       ///< cell size in theta, rad
 
   Triangulation<1> triangulation_;
   FESystem<1> fe_;
   DoFHandler<1> dof_handler_;
-  std::vector<DoFHandler<1>::active_cell_iterator> cells_;  ///< counter-clockwise order
   Table full_;     ///< p + 1 Gauss points: bending, foundation, mass
   Table reduced_;  ///< p Gauss points: membrane and shear
 };

@@ -333,9 +333,6 @@ TEST(FemPreload, RefusesWhatCannotWork) {
   ring::FemOptions inertia = o;
   inertia.rotary_inertia = true;
   expect_refusal(spec, inertia, st, 2, "fem.rotary_inertia");
-  ring::RingSpec thick = spec;
-  thick.theory = ring::Theory::timoshenko;
-  expect_refusal(thick, o, st, 2, "timoshenko");
   expect_refusal(ringtest::pinned_ring(270.0), o, st, 2, "rigid motion");
   ring::StaticOptions off = st;
   off.loads.points = {{100.0, {0.0, -1.0}}};
