@@ -41,6 +41,10 @@ Matrix condense(const Matrix& A, const std::vector<int>& I, const std::vector<in
 
 }  // namespace
 
+int linear_unknowns(const Chain& chain, const detail::LinearTerms* terms, const Shear* shear) {
+  return chain.dofs() + (shear ? chain.n() : 0) + (terms ? terms->hinge_dofs() : 0);
+}
+
 double j2_condition(const Matrix& J, int n) {
   Eigen::JacobiSVD<Eigen::Matrix2d> svd(J.block(0, n - 2, 2, 2).eval());
   const auto sv = svd.singularValues();
@@ -56,7 +60,7 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
               Matrix& J) {
   const Vector q0 = chain.q0();
   const int n = chain.n(), dofs = chain.dofs(), hinge0 = dofs + (shear ? n : 0);
-  const int N = hinge0 + (terms ? terms->hinge_dofs() : 0);
+  const int N = linear_unknowns(chain, terms, shear);
   M = chain.mass_matrix(q0);
   if (N > dofs) {
     Matrix full = Matrix::Zero(N, N);

@@ -56,6 +56,11 @@ struct Shear {
   static Shear of(const ring::RingSpec& spec, double l) { return {spec.kGA() * l, spec.rhoI() * l}; }
 };
 
+/// The unknowns of the linear model, in this order: the chain's coordinates q, the shear
+/// angles gamma (one per segment, when `shear` is given), the hinge rotations that carry a
+/// point inertia (`terms`). O(1).
+int linear_unknowns(const Chain& chain, const detail::LinearTerms* terms, const Shear* shear);
+
 /// Assembles K0 and M0 (and the implicit D) for `chain` with the given dependent-coordinate
 /// choice, with `terms` (attachments.hpp: foundation, springs, masses, further pins, a
 /// clamp) added to K, M(q0) and the constraint rows when given (robust only), and with the

@@ -243,7 +243,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (!spec.paper_terms_only()) terms = detail::linear_terms(chain, spec);
   std::optional<Shear> shear;  // the Timoshenko chain (linear_model.hpp), dense only (checks.cpp)
   if (spec.theory == ring::Theory::timoshenko) shear = Shear::of(spec, chain.l());
-  const int N = chain.dofs() + (shear ? chain.n() : 0) + (terms ? terms->hinge_dofs() : 0);
+  const int N = linear_unknowns(chain, terms ? &*terms : nullptr, shear ? &*shear : nullptr);
   const int r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
   const int expected_rigid = spec.rigid_modes();
   if (count < 1 || count > r - expected_rigid)
