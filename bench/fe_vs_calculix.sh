@@ -62,7 +62,7 @@ done
 
 printf '%s\n' "${cases[@]}" >"$out/cases.txt"
 python3 - "$out" <<'PY'
-import bisect, csv, math, statistics, sys
+import bisect, csv, math, shlex, statistics, sys
 d = sys.argv[1]
 def history(name):
     t, x, y = [], [], []
@@ -87,10 +87,10 @@ def times(name):
     rows = [list(map(float, l.split())) for l in open(f"{d}/{name}.times") if l.strip()]
     return statistics.median(r[0] for r in rows), statistics.median(r[1] + r[2] for r in rows), len(rows)
 def settings(args):
-    a = dict(p.split("=", 1) for p in args.split() if "=" in p)
+    a = dict(p.split("=", 1) for p in shlex.split(args) if "=" in p)
     if "fem.elements" in a:
         return f"FE {a['fem.elements']} el., p = {a['fem.degree']}, dt = {a['response.dt']}"
-    return f"ccx {a['calculix.element'].strip(chr(34) + chr(39))} {a['calculix.elements']} el., dt = {a['response.dt']}"
+    return f"ccx {a['calculix.element'].strip(chr(34))} {a['calculix.elements']} el., dt = {a['response.dt']}"
 print(f"reference: FE 20 el., p = 6, dt = 0.000625 s, peak |u_C| = {peak:.6f} m; its error estimate "
       f"(against p = 5, dt = 0.00125 s): {error('refcheck'):.1e}")
 cases = [l.rstrip("\n").split("|") for l in open(f"{d}/cases.txt") if l.strip()]
