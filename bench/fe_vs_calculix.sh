@@ -37,7 +37,7 @@ cases=(
   "B31_2e-3|2e-3|--solver calculix --set 'calculix.element=\"B31\"' --set calculix.elements=200 --set response.dt=0.01"
   "B31_8e-4|8e-4|--solver calculix --set 'calculix.element=\"B31\"' --set calculix.elements=360 --set response.dt=0.01"
   "B32R_2e-3|2e-3|--solver calculix --set 'calculix.element=\"B32R\"' --set calculix.elements=40 --set response.dt=0.01"
-  "B32R_8e-4|8e-4|--solver calculix --set 'calculix.element=\"B32R\"' --set calculix.elements=80 --set response.dt=0.005"
+  "B32R_8e-4|8e-4|--solver calculix --set 'calculix.element=\"B32R\"' --set calculix.elements=48 --set response.dt=0.0075"
 )
 
 # respond NAME ARGS...: one run, history to $out/NAME.csv, "wall user sys" appended to $out/NAME.times
