@@ -320,6 +320,7 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
     // undeformed position (SPRING1 keeps its direction under NLGEOM).
     const double L = 2.0 * kPi * spec.radius / o.elements;
     const bool quadratic = o.element != Element::b31;
+    const std::vector<double> shares = node_shares(spec, o);
     s << "** Winkler foundation: radial " << number(spec.foundation.radial) << " and tangential "
       << number(spec.foundation.tangential) << " N/m per metre of ring, a spring at every node\n"
       << "** times its share of the ring (" << (quadratic ? "end nodes L/3, middle nodes 2L/3" : "L")
@@ -333,8 +334,8 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
         const std::string set = std::string("EFOUND") + (dof == 1 ? "R" : "T") + (middle ? "MID" : "END");
         s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n";
         for (int k = middle; k < nodes; k += quadratic ? 2 : 1) s << ++element << ", " << k + 1 << "\n";
-        const double share = node_shares(spec, o)[middle];
-        s << "*SPRING, ELSET=" << set << ", ORIENTATION=CYLINDER\n" << dof << "\n" << number(modulus * share) << "\n";
+        s << "*SPRING, ELSET=" << set << ", ORIENTATION=CYLINDER\n" << dof << "\n"
+          << number(modulus * shares[middle]) << "\n";
       }
     }
   }

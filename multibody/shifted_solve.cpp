@@ -5,9 +5,7 @@
 
 namespace multibody {
 
-ShiftedSolve::ShiftedSolve(const Chain& c) : c_(c) {
-  cos_ = c.cos0();
-  sin_ = c.sin0();
+ShiftedSolve::ShiftedSolve(const Chain& c) : c_(c), cos_(c.cos0()), sin_(c.sin0()) {
   Jt_ = c.constraint_jacobian(c.q0()).transpose();
   qr_.compute(Jt_);
   N_ = c.dofs();

@@ -87,7 +87,8 @@ class ShiftedSolve {
 
   const Chain& c_;
   double s_ = 0.0;
-  Vector cos_, sin_;  ///< of phi0
+  const Vector& cos_;  ///< of phi0: the chain's own (Chain::cos0, sin0), not a copy
+  const Vector& sin_;
   int N_ = 0, nc_ = 0, na_ = 0;
   Eigen::HouseholderQR<Matrix> qr_;
   Eigen::Matrix<double, 3, Eigen::Dynamic> hzx_;  ///< Riccati cross terms per segment
