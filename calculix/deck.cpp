@@ -76,16 +76,11 @@ void check_refusals(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
                            "shape for ccx to expand (use \"equivalent-rectangle\")");
 }
 
-/// The free ring's anchor of a static or response deck: the first point load, as every
-/// solver and the scene reader take it (ring/scene.cpp check_nodes); else 0.
-double free_anchor(const ring::Loads& loads) { return loads.points.empty() ? 0.0 : loads.points.front().angle; }
-
-/// Every point term on a node: nodes every 360/nodes degrees from the pin, or from
-/// `free_ring_anchor` on a free ring.
-void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o, double free_ring_anchor) {
+/// Every point term on a node: nodes every 360/nodes degrees from spec.anchor().
+void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
   // Every point term on a node of the model (the scene reader checks this for every model;
   // the deck checks it again for callers without a scene).
-  const double step = 360.0 / node_count(o), anchor = spec.supports.pin.value_or(free_ring_anchor);
+  const double step = 360.0 / node_count(o), anchor = spec.anchor();
   auto need_node = [&](double angle, const std::string& key) {
     const double off = ring::wrap_degrees(angle - anchor) / step;
     if (std::abs(off - std::round(off)) > 1e-9)
@@ -107,7 +102,7 @@ void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o, do
 
 void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
   check_refusals(spec, o, inertia);
-  check_points(spec, o, spec.supports.pin.value_or(0.0));
+  check_points(spec, o);
 }
 
 namespace {
@@ -128,17 +123,16 @@ std::vector<double> node_shares(const ring::RingSpec& spec, const ring::Calculix
 /// `loads_on_nodes`: the step loads nodes beyond the paper's point loads (dead pressure,
 /// the masses' weight).
 Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const std::string& title,
-                const std::string& analysis, bool dynamic, bool loads_on_nodes = false,
-                double free_ring_anchor = 0.0) {
+                const std::string& analysis, bool dynamic, bool loads_on_nodes = false) {
   check_refusals(spec, o, dynamic ? Inertia::matters : Inertia::ignored);
-  check_points(spec, o, free_ring_anchor);
+  check_points(spec, o);
   using Element = ring::CalculixOptions::Element;
   Deck d;
   const bool width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
                            (dynamic && !spec.masses.empty()) || loads_on_nodes;
   const int nodes = node_count(o);
-  d.anchor = spec.supports.pin.value_or(free_ring_anchor);
-  d.node_angles = ring::node_angles(spec, nodes, free_ring_anchor);
+  d.anchor = spec.anchor();
+  d.node_angles = ring::node_angles(spec, nodes);
   const bool circle = o.section == ring::CalculixOptions::Section::as_given &&
                       spec.section.shape == ring::Section::Shape::circle;
   if (o.section == ring::CalculixOptions::Section::equivalent_rectangle) {
@@ -453,8 +447,7 @@ std::string load_blocks(const ring::RingSpec& spec, const ring::CalculixOptions&
 Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::ResponseOptions& rs,
                    const std::string& title) {
   check_response_deck(rs);
-  Deck d = model_deck(spec, o, title, "Forced nonlinear response", true, nodal_loads(spec, rs.loads),
-                      free_anchor(rs.loads));
+  Deck d = model_deck(spec, o, title, "Forced nonlinear response", true, nodal_loads(spec, rs.loads));
   const std::string cloads = load_blocks(spec, o, d, rs.loads, "response", true);
   std::vector<int> record;
   for (double a : rs.record) {
@@ -505,7 +498,7 @@ void check_response_deck(const ring::ResponseOptions& rs) {
 
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
-  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads), free_anchor(st.loads));
+  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads));
   const std::string cloads = load_blocks(spec, o, d, st.loads, "static", false);
   const double inc = 1.0 / st.steps;
   std::ostringstream s;

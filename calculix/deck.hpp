@@ -33,10 +33,9 @@
 //   under NLGEOM), a dead pressure as the undeformed ring's consistent nodal forces (*CLOAD),
 //   gravity as *DLOAD GRAV; a central pressure is refused (ccx has no such load).
 //
-// Node k (1-based k + 1) sits at polar angle anchor + 360 k / nodes (degrees), anchor the
-// pin, or for a free ring the first point load of a static or response deck (as every
-// solver and the scene reader take it), else 0; B31: nodes = elements, B32/B32R: nodes = 2 elements (the
-// middle nodes on the circle too).
+// Node k (1-based k + 1) sits at polar angle spec.anchor() + 360 k / nodes (degrees), the
+// anchor of every solver (the pin, or a free ring's free_anchor); B31: nodes = elements,
+// B32/B32R: nodes = 2 elements (the middle nodes on the circle too).
 #pragma once
 
 #include <string>

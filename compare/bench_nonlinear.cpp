@@ -56,7 +56,7 @@ std::pair<double, double> contact_load(const SolverEntry& e, const ring::Scene& 
 
 /// Every support, load and record point of the scene is a node of an n-piece model.
 bool nodes_fit(const ring::Scene& s, int n) {
-  const double anchor = s.ring.supports.pin.value_or(0.0);
+  const double anchor = s.ring.anchor();
   std::vector<double> points;
   if (s.ring.supports.roller) points.push_back(*s.ring.supports.roller);
   for (const ring::Loads* loads : {s.response ? &s.response->loads : nullptr, s.statics ? &s.statics->loads : nullptr,

@@ -176,7 +176,7 @@ SolverEntry lumped_entry() {
     const long long n = s.lumped.n;
     const ring::Supports& sup = s.ring.supports;
     const int held = sup.constraint_rows() + s.ring.rigid_modes();
-    const double anchor = sup.pin.value_or(0.0);
+    const double anchor = s.ring.anchor();
     auto node = [&](double deg) { return std::lround(ring::wrap_degrees(deg - anchor) * n / 360.0) % n; };
     std::vector<long> inertial_rotations;
     for (const ring::PointMass& m : s.ring.masses)

@@ -22,10 +22,10 @@ void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, cons
   check_modes(spec, o);
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
-  const double anchor = spec.supports.pin.value_or(0.0);
+  const double anchor = spec.anchor();
   auto on_vertex = [&](double a, const std::string& key) {
     need(ring::on_node(a, anchor, o.elements), section + "." + key + " (=" + std::to_string(a) +
-                                                   ") must fall on an FE vertex: " + (spec.supports.pin ? "pin" : "0") +
+                                                   ") must fall on an FE vertex: " + std::to_string(anchor) +
                                                    " + k * 360 / fem.elements");
   };
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
@@ -45,11 +45,11 @@ void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, cons
 /// on an FE vertex (anchor + k 360 / fem.elements), pins and clamp with a pin.
 void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
   const ring::Supports& s = spec.supports;
-  const double anchor = s.pin.value_or(0.0);
+  const double anchor = spec.anchor();
   auto on_vertex = [&](double a, const std::string& key) {
     need(std::isfinite(a), key + " must be finite");
     need(ring::on_node(a, anchor, o.elements), key + " (=" + std::to_string(a) +
-                                                   ") must fall on an FE vertex: " + (s.pin ? "pin" : "0") +
+                                                   ") must fall on an FE vertex: " + std::to_string(anchor) +
                                                    " + k * 360 / fem.elements");
   };
   auto non_negative = [&](double v, const std::string& key) {

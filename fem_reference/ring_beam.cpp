@@ -202,7 +202,7 @@ double RingModel::rotation_spring(unsigned int v, double kr, const Vector<double
 // ---- BeamModel: the vertices and the centreline, either model ----
 
 BeamModel::BeamModel(const ring::RingSpec& spec, const Setup& setup)
-    : LinearModel(spec, setup), theta0_(spec.supports.pin.value_or(0.0) * kPi / 180.0), h_(2.0 * kPi / setup.cells()) {}
+    : LinearModel(spec, setup), theta0_(spec.anchor() * kPi / 180.0), h_(2.0 * kPi / setup.cells()) {}
 
 void BeamModel::measure_lengths() {
   lengths_.assign(n_free_, 1.0);
@@ -216,7 +216,7 @@ void BeamModel::measure_lengths() {
 }
 
 unsigned int BeamModel::vertex_of(double degrees) const {
-  const double pin = spec_.supports.pin.value_or(0.0);
+  const double pin = spec_.anchor();
   const unsigned int n = setup_.cells();
   return static_cast<unsigned int>(std::lround(ring::wrap_degrees(degrees - pin) * n / 360.0)) % n;
 }

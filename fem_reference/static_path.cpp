@@ -213,7 +213,7 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
       for (int c = 0; c < 2; ++c) at[k][c] = last_centreline_[k][c] + w * (next[k][c] - last_centreline_[k][c]);
     const Approach a = closest_approach(at, min_gap_, depth_);
     if (a.first >= 0 && a.distance < depth_) {
-      const double pin = spec_.supports.pin.value_or(0.0);
+      const double pin = spec_.anchor();
       auto angle = [&](int edge) { return ring::wrap_degrees(pin + (edge + 0.5) * 360.0 / at.size()); };
       return paths::Touch{w, "the centreline near " + number(angle(a.first), 4) + " deg and near " +
                                  number(angle(a.second), 4) + " deg (rest positions) " +

@@ -24,7 +24,7 @@ Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   c.rho = c.l / (2.0 * std::sin(kPi / c.n));
   c.theta0 = 2.0 * kPi / c.n;
   c.depth = spec.section.depth();
-  c.anchor_deg = spec.supports.pin.value_or(0.0);
+  c.anchor_deg = spec.anchor();
   // The linear model checks every point of the spec (a node, the clamp at a pinned point,
   // the roller apart from the pin) and gives the support rows: one code for both analyses.
   c.S = assemble(spec, o).S;

@@ -16,7 +16,7 @@ namespace {
 /// several), none at the pin.
 void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::Loads& loads,
                  const std::string& section) {
-  const double anchor = spec.supports.pin.value_or(0.0);
+  const double anchor = spec.anchor();
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const double a = loads.points[i].angle;
     const std::string key =
@@ -83,7 +83,7 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
-  const double anchor = spec.supports.pin.value_or(0.0);
+  const double anchor = spec.anchor();
   std::vector<std::pair<std::string, double>> points;
   for (double a : spec.supports.pins) points.emplace_back("supports.pins", a);
   if (spec.supports.clamp) points.emplace_back("supports.clamp", *spec.supports.clamp);

@@ -400,7 +400,7 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   m.variant = options.variant;
   m.n = options.n;
   m.dofs_per_node = options.variant == ring::LumpedOptions::Variant::chain ? 2 : 3;
-  m.anchor_deg = spec.supports.pin.value_or(0.0);
+  m.anchor_deg = spec.anchor();
   m.side = 2.0 * M_PI * spec.radius / m.n;
   m.circumradius = m.side / (2.0 * std::sin(M_PI / m.n));
   m.expected_rigid = spec.rigid_modes();

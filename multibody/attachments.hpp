@@ -64,8 +64,7 @@ inline double condensed_rotation_stiffness(double kr, double K) {
   return std::isinf(kr) ? 4.0 * K : 4.0 * K * kr / (4.0 * K + kr);
 }
 
-/// The spec's terms on a chain (whose anchor is spec.supports.pin or the free ring's
-/// fallback). Immutable; every member O(n) memory.
+/// The spec's terms on a chain (whose anchor is spec.anchor()). Immutable; every member O(n) memory.
 class Attachments {
  public:
   /// Throws std::invalid_argument naming the key when a point is not a hinge. O(n).

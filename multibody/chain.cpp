@@ -32,9 +32,8 @@ Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
   k_ = spec.EI() / l_;
   rp_ = l_ / (2.0 * std::sin(kPi / n_));
 
-  const double fallback = loaded_angle.value_or(0.0);
-  anchor_deg_ = ring::wrap_degrees(spec.supports.pin.value_or(fallback));
-  angles_ = ring::node_angles(spec, n_, fallback);
+  anchor_deg_ = ring::wrap_degrees(spec.anchor());
+  angles_ = ring::node_angles(spec, n_);
   if (loaded_angle && !ring::on_node(*loaded_angle, anchor_deg_, n_))
     throw std::invalid_argument("multibody: loaded point at " + num(*loaded_angle) +
                                 " deg is not a hinge of the n = " + std::to_string(n_) +

@@ -7,8 +7,8 @@
 // ## Model
 // n equal straight rigid segments of length l = 2 pi R / n (perimeter = circumference)
 // form, undeformed, a regular n-gon. Hinges sit at its vertices, at the polar angles
-// ring::node_angles(spec, n, fallback): hinge k at a_k = anchor + 360 k / n degrees,
-// where the anchor is the pin (pinned ring) or `fallback` (free ring). The polygon's
+// ring::node_angles(spec, n): hinge k at a_k = anchor + 360 k / n degrees, where the
+// anchor is spec.anchor() (the pin, or the free ring's free_anchor). The polygon's
 // centre is the origin of the ring-centred reporting frame, so hinge k rests at
 // Rp (cos a_k, sin a_k) with circumradius Rp = l / (2 sin(pi/n)) (slightly above R).
 // Segment i (i = 0..n-1) runs from hinge i to hinge i+1 (hinge n = hinge 0), so the
@@ -60,11 +60,10 @@ using Matrix = Eigen::MatrixXd;
 
 class Chain {
  public:
-  /// Builds the chain of `spec` with `options.n` segments. `loaded_angle` (degrees), if
-  /// given, must be a hinge: for a free ring it becomes the anchor (hinge 0) when
-  /// there is no pin; for a pinned ring it must lie on a node of the pin-anchored
-  /// polygon. Throws std::invalid_argument when n < 4, when the roller or the loaded
-  /// point is not on a hinge, or when the roller coincides with the pin. O(n).
+  /// Builds the chain of `spec` with `options.n` segments, hinge 0 at spec.anchor().
+  /// `loaded_angle` (degrees), if given, must be a hinge. Throws std::invalid_argument when
+  /// n < 4, when the roller or the loaded point is not on a hinge, or when the roller
+  /// coincides with the pin. O(n).
   Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
         std::optional<double> loaded_angle = std::nullopt);
 

@@ -324,11 +324,7 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   for (const auto& m : schema.solvers)
     if (s.needs(m.name) || s.runs_nonlinear(m.name) || s.runs_buckling(m.name)) models.push_back({m.name, m.size_key, m.size(s)});
   const auto& sup = s.ring.supports;
-  double anchor = sup.pin.value_or(0.0);
-  if (!sup.pin) {
-    const Loads* loads = s.statics ? &s.statics->loads : s.response ? &s.response->loads : nullptr;
-    if (loads && !loads->points.empty()) anchor = loads->points.front().angle;
-  }
+  const double anchor = s.ring.anchor();
   struct Point { std::string key; double angle; };
   std::vector<Point> points;
   if (sup.roller) points.push_back({"supports.roller", *sup.roller});
@@ -696,6 +692,13 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
       r.fail(key + ".against", root.at_path("gates").node(),
              "compares with \"" + g.against + "\", which the scene does not run");
   }
+  // One anchor for every model of every analysis (RingSpec::free_anchor).
+  for (const Loads* loads : {s.statics ? &s.statics->loads : nullptr, s.response ? &s.response->loads : nullptr,
+                             s.buckling ? &s.buckling->loads : nullptr})
+    if (loads && !loads->points.empty()) {
+      s.ring.free_anchor = loads->points.front().angle;
+      break;
+    }
   check_nodes(r, s, root, schema);
   return s;
 }

@@ -165,8 +165,8 @@ double wrap_degrees(double a) {
   return r;
 }
 
-std::vector<double> node_angles(const RingSpec& spec, int n, double fallback) {
-  const double anchor = spec.supports.pin.value_or(fallback);
+std::vector<double> node_angles(const RingSpec& spec, int n) {
+  const double anchor = spec.anchor();
   std::vector<double> a(n);
   for (int k = 0; k < n; ++k) a[k] = wrap_degrees(anchor + 360.0 * k / n);
   return a;

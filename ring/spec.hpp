@@ -151,6 +151,13 @@ struct RingSpec {
   Supports supports;
   std::vector<PointMass> masses;
   Foundation foundation;
+  /// Degrees: where the models of a free ring (no pin) put their node 0, so that every model
+  /// of every solver has the same nodes. The scene reader sets it to the first point load of
+  /// the scene (static, then response, then buckling; 0 without one). A pinned
+  /// ring's models start at the pin and ignore it.
+  double free_anchor = 0.0;
+  /// Where every model puts its node 0: the pin, or free_anchor.
+  double anchor() const { return supports.pin.value_or(free_anchor); }
 
   double A() const { return section.area(); }
   double I() const { return section.inertia(); }
@@ -262,9 +269,8 @@ struct CalculixOptions {
   int threads = 1;         ///< OMP_NUM_THREADS and CCX_NPROC_* of the ccx process
 };
 
-/// Node angles of a model with n equal pieces: anchor + 360 k / n, k = 0..n-1,
-/// where the anchor is the pin (or, for a free ring, `fallback`).
-std::vector<double> node_angles(const RingSpec& spec, int n, double fallback = 0.0);
+/// Node angles of a model with n equal pieces: spec.anchor() + 360 k / n, k = 0..n-1.
+std::vector<double> node_angles(const RingSpec& spec, int n);
 /// True when `angle` (degrees) coincides with a node of an n-piece model anchored at `anchor`.
 bool on_node(double angle, double anchor, int n);
 /// Angle difference reduced to [0, 360).

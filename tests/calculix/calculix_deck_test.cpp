@@ -375,12 +375,13 @@ TEST(CalculixDeck, SpringsMassesAndTheFoundationAreElementsOnTheNodes) {
   EXPECT_NE(deck.find("NALL, 3, 3"), std::string::npos);
 }
 
-TEST(CalculixDeck, AFreeRingsStaticDeckHasItsFirstNodeAtTheLoad) {
-  // A free ring held by its foundation: every solver and the scene reader put a node at the
-  // first point load and count the others from there.
+TEST(CalculixDeck, AFreeRingsDecksHaveTheirFirstNodeAtTheSpecsAnchor) {
+  // A free ring held by its foundation: every solver puts node 0 at RingSpec::anchor(),
+  // which the scene reader sets to the first point load (ring/spec.hpp free_anchor).
   ring::RingSpec r = paper_ring();
   r.foundation = {1e4, 1e4};
   r.masses = {{62.0, 10.0, 0.0}};  // 2 + 60: a node from the load's anchor
+  r.free_anchor = 2.0;
   ring::CalculixOptions o;
   o.elements = 12;
   ring::StaticOptions st;
@@ -392,7 +393,11 @@ TEST(CalculixDeck, AFreeRingsStaticDeckHasItsFirstNodeAtTheLoad) {
   const Parsed p = parse(d.text);
   EXPECT_NEAR(p.nodes.at(1)[0], 10.0 * std::cos(2.0 * M_PI / 180.0), 1e-12);
   EXPECT_NE(d.text.find("*CLOAD\n1, 2, " + calculix::number(-1e3)), std::string::npos);
-  // The frequency deck of the same ring counts from 0, where the mass is no node.
+  // The frequency deck of the same ring counts from the same anchor: the mass is a node.
+  EXPECT_EQ(calculix::frequency_deck(r, o, {10}).anchor, 2.0);
+  // Anchored at 0, neither the mass nor the load is a node.
+  r.free_anchor = 0.0;
+  EXPECT_THROW(calculix::static_deck(r, o, st), ring::InputError);
   EXPECT_THROW(calculix::frequency_deck(r, o, {10}), ring::InputError);
 }
 
