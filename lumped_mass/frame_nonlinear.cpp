@@ -11,6 +11,8 @@
 
 #include "lumped_mass/checks.hpp"
 #include "lumped_mass/frame.hpp"
+#include "lumped_mass/stability.hpp"
+#include "modal/buckling.hpp"
 #include "paths/continuation.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
@@ -57,9 +59,8 @@ double correction_size(const Frame& f, const Vec& dq, double radius) {
 /// continuation driver. Unknowns z = (q, mu), mu in units of the frame's scale EI / l^3 (the
 /// rows balanced against the stiffness for the LU's pivoting), the bordered KKT matrix by
 /// factor_bordered (chain.hpp, shared with the chain's statics). The arc length is measured
-/// on all of q (positions in m, rotations in rad). No bifurcation test (unstable_directions
-/// stays the default: the frame's statics follow their branch and do not detect a
-/// bifurcation), no branch switching; the self-contact check is the chain's on the chords.
+/// on all of q (positions in m, rotations in rad). A bifurcation ends the path (dense count,
+/// up to n = 133); no branch switching; the self-contact check is the chain's on the chords.
 class FrameStatics : public paths::Equilibrium {
  public:
   FrameStatics(const Frame& f, const FrameLoads& loads, double radius)
@@ -93,6 +94,17 @@ class FrameStatics : public paths::Equilibrium {
     const bool stalled = iteration >= 3 && step >= last_step_ && step <= 1e-9 * radius_;
     last_step_ = step;
     return step <= 1e-12 * radius_ || stalled;
+  }
+  /// The tangent's unstable directions on ker S (modal::unstable_directions, dense: the
+  /// eigenvalues of Z^T T Z), for the driver's bifurcation test, while 3n <= the chain's
+  /// kDenseInertiaUnknowns (stability.hpp; O(n^3)); none above: no bifurcation is detected.
+  std::optional<int> unstable_directions(const paths::State& s) override {
+    if (N_ > kDenseInertiaUnknowns) return std::nullopt;
+    Springs sp = frame_energy(f_, s.z.head(N_), 1.0);
+    L_.add_hessian(s.z.head(N_), s.s, sp.hess);
+    Sparse T(N_, N_);
+    T.setFromTriplets(sp.hess.begin(), sp.hess.end());
+    return modal::unstable_directions(Eigen::MatrixXd(T), Eigen::MatrixXd(f_.S));
   }
   std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
     const Contact k = closest_nonadjacent(f_.geometry, f_.positions(to.z.head(N_)));

@@ -56,8 +56,9 @@
 // ## The Timoshenko frame (lumped.variant = "timoshenko-frame", frame.hpp)
 // solve_static, solve_static_detail and respond also take the corotational Timoshenko frame:
 // unknowns (x, y, theta) per node, no link constraints, the support rows only; the same
-// terms, loads, continuation driver and midpoint rule (frame_nonlinear.cpp). Its statics have
-// no bifurcation test and no static.path (refused); its response no hinge dampers (refused).
+// terms, loads, continuation driver and midpoint rule (frame_nonlinear.cpp). Its statics end
+// at a bifurcation (dense count up to n = 133, none above) and have no branch switching and
+// no static.path (refused); its response no hinge dampers (refused).
 // Buckling and modes under load remain the chain's.
 //
 // Cost: per Newton iteration one sparse LU (Eigen SparseLU, COLAMD) of the

@@ -11,6 +11,8 @@
 // - the ground's force balances the applied load (equilibrium of the whole ring);
 // - the response: the undamped energy balance T + V - W under a constant load, with the
 //   midpoint rule's error O(dt^2) (fitted), and the supports held;
+// - past the critical follower pressure the statics end at the bifurcation, at the closed
+//   form's pressure of the ring on a pin and a roller;
 // - the refusals of what the frame does not offer (checks.hpp).
 #include <gtest/gtest.h>
 
@@ -28,6 +30,9 @@
 #include "lumped_mass/model.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "ring/analysis.hpp"
+#include "ring/closed_form.hpp"
+#include "ring/errors.hpp"
+#include "tests/support/thick.hpp"
 
 namespace {
 
@@ -254,7 +259,38 @@ TEST(LumpedFrame, UndampedEnergyBalanceIsSecondOrderInDt) {
   EXPECT_NEAR(p, 2.0, 0.2);
 }
 
-// (6) What the frame does not offer is refused with the key named.
+// (6) Past the critical pressure the statics end at a bifurcation (the driver's test on the
+// tangent's count of unstable directions on ker S), bracketed at the continuum's critical
+// follower pressure 3 EI/R^3 of a ring on a pin and a roller
+// (ring::closed_form::pinned_ring_critical_pressure) on a thin ring (depth/R = 1e-2, where
+// shear and the prebuckling shortening move it by ~1e-4) at n = 80. Bound 1 %: the frame's
+// O(h^2) (the chain's buckling error is 2e-3 at n = 80, README) with room.
+TEST(LumpedFrame, FollowerPressureBeyondCriticalEndsAtTheBifurcation) {
+  ring::RingSpec spec = ringtest::thick_ring(ring::Section::Shape::rectangle, 0.01);
+  spec.supports.pin = 180.0;
+  spec.supports.roller = 0.0;
+  const double critical = ring::closed_form::pinned_ring_critical_pressure(spec, ring::Pressure::Kind::follower);
+  ring::StaticOptions st;
+  st.loads.pressure = {1.1 * critical, ring::Pressure::Kind::follower};
+  st.steps = 10;
+  try {
+    lumped::solve_static(spec, lumptest::options(80, kTimoshenko), st);
+    ADD_FAILURE() << "the frame passed the critical pressure without a bifurcation";
+  } catch (const ring::NumericalError& e) {
+    const std::string what = e.what();
+    const std::string key = "between load factors ";
+    const auto at = what.find(key);
+    ASSERT_NE(at, std::string::npos) << what;
+    const double low = std::stod(what.substr(at + key.size()));
+    const double found = 1.1 * low;
+    std::printf("frame bifurcation: p_cr = %.6e EI/R^3 (closed form %.6e), relative %.3e\n",
+                found * std::pow(spec.radius, 3) / spec.EI() * critical,
+                critical * std::pow(spec.radius, 3) / spec.EI(), found - 1.0);
+    EXPECT_NEAR(found, 1.0, 1e-2) << what;
+  }
+}
+
+// (7) What the frame does not offer is refused with the key named.
 TEST(LumpedFrame, RefusesWhatItDoesNotOffer) {
   const ring::RingSpec spec = thick();
   auto message = [](auto&& f) {
