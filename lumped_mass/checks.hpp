@@ -35,7 +35,8 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling);
 /// Modes under load (modes.preload = "static", preload.hpp): the nonlinear chain only
-/// (lumped.variant = "chain": the frames have no nonlinear statics here), lumped.n <=
+/// (lumped.variant = "chain": the Euler frames have no nonlinear statics here, the Timoshenko
+/// frame no modes under load), lumped.n <=
 /// kMaxPreloadHinges (the dense eigen step), then everything check_static checks. Point masses
 /// are taken (their translational mass is the chain's constant mass matrix, their rotary
 /// inertia J g(x) g(x)^T at the equilibrium).
