@@ -2,7 +2,7 @@
 // (Reissner) beam of fem_reference/, an independent discretization of the same continuum,
 // through the ringvib command as a user runs them, on scenes/thick-ring-nonlinear.toml
 // (depth/R = 0.2, pin and roller, a point load that moves the top by 0.52 R and turns the
-// sections by up to 0.33 rad):
+// elements (chords) by up to 0.33 rad):
 // - statics: the frame's displacements at five points meet the FE's at the frame's order 2 in
 //   h = 2 pi R / n, the FE's own error (40 cells of degree 4 against 24) being far below the
 //   frame's; the frame's own convergence and its continuum limit against the FE's;
