@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -96,5 +97,30 @@ Eigen::SparseMatrix<double> mass_matrix(const Chain& c);
 /// several, as the scene names them). A load at the pin is refused: the pin takes it whole.
 std::vector<int> load_hinges(const Chain& c, const ring::RingSpec& spec, const ring::Loads& loads,
                              const std::string& section);
+
+/// Smallest distance between the centre lines of links at least `gap` apart along the chain
+/// (link j runs from hinge j to hinge j + 1; gap = 2 + floor(2 depth / l), so that the
+/// undeformed chain is clear of the depth); links closer than the section depth mean the
+/// ring touches itself. Links, not hinges: with l above the depth, two links can cross while
+/// every hinge is still farther than the depth from the others (n = 40 on the paper's ring
+/// under ring-collapse.toml's loads: the hinges met at load factor 0.986, the links at
+/// 0.859). A uniform grid of cell l + depth over the links' midpoints: links closer than the
+/// depth have midpoints in neighbouring cells, so only those pairs are measured, O(n)
+/// expected; pairs not measured count as infinitely far. Reads c.n, c.l, c.depth and the 2n
+/// positions x only (the frame's chords use it too, frame.cpp). Defined in nonlinear.cpp.
+struct Contact {
+  double distance = INFINITY;
+  int i = -1, j = -1;  ///< the links
+};
+Contact closest_nonadjacent(const Chain& c, const Eigen::VectorXd& x);
+/// Where the ring touches itself: the two links and their distance.
+std::string contact_where(const Chain& c, const Contact& k);
+
+/// Factorizes the bordered Newton matrix of a continuation step, [A, b; w^T, ws] (A given
+/// as triplets of a size x size matrix, b and w of `size` values, zeros skipped), by one
+/// sparse LU (COLAMD). False when the factorization fails. O(nonzeros) fill on the ring's
+/// banded pattern. Shared by the chain's and the frame's statics.
+bool factor_bordered(Triplets t, int size, const Eigen::VectorXd& b, const Eigen::VectorXd& w, double ws,
+                     Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>>& lu);
 
 }  // namespace lumped

@@ -21,7 +21,7 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
 /// anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
-/// Nonlinear statics of the chain: variant "chain", n >= 4, a positive section and
+/// Nonlinear statics: variant "chain" or "timoshenko-frame" (static.path: the chain only), n >= 4, a positive section and
 /// material, every point of the spec (pins, clamp, springs, masses) and every point load on a
 /// node (none at the pin), a pin (or springs / a foundation that hold every rigid motion),
 /// supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0), finite
@@ -35,13 +35,15 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling);
 /// Modes under load (modes.preload = "static", preload.hpp): the nonlinear chain only
-/// (lumped.variant = "chain": the frames have no nonlinear statics here), lumped.n <=
+/// (lumped.variant = "chain": the Euler frames have no nonlinear statics here, the Timoshenko
+/// frame no modes under load), lumped.n <=
 /// kMaxPreloadHinges (the dense eigen step), then everything check_static checks. Point masses
 /// are taken (their translational mass is the chain's constant mass matrix, their rotary
 /// inertia J g(x) g(x)^T at the equilibrium).
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics);
-/// Forced response of the chain: as statics, but rigid motions are allowed when a pin holds
+/// Forced response of the chain or the Timoshenko frame (response.hinge_damping: the chain
+/// only): as statics, but rigid motions are allowed when a pin holds
 /// the ring (it swings about it); the integrator "midpoint"
 /// or "newmark" (the same implicit midpoint rule, nonlinear.hpp), 0 < dt <= t_end.
 /// "energy-momentum" is refused: the midpoint rule does not conserve the energy of the

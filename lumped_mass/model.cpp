@@ -394,6 +394,14 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
 
 }  // namespace
 
+NaturalStiffness timoshenko_natural_stiffness(const ring::RingSpec& spec, double l) {
+  const Element e = timoshenko_element(spec, l);
+  NaturalStiffness k;
+  k.axial = e.k(0, 0);
+  k.bending << e.k(2, 2), e.k(2, 5), e.k(5, 2), e.k(5, 5);
+  return k;
+}
+
 Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   check_spec(spec, options);
   Model m;

@@ -2,6 +2,7 @@
 
 #include "lumped_mass/chain.hpp"
 #include "lumped_mass/checks.hpp"
+#include "lumped_mass/frame.hpp"
 #include "lumped_mass/loads.hpp"
 #include "lumped_mass/model.hpp"
 #include "lumped_mass/stability.hpp"
@@ -48,19 +49,7 @@ double segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2&
   return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
 }
 
-/// Smallest distance between the centre lines of links at least `gap` apart along the chain
-/// (link j runs from hinge j to hinge j + 1; gap = 2 + floor(2 depth / l), so that the
-/// undeformed chain is clear of the depth); links closer than the section depth mean the
-/// ring touches itself. Links, not hinges: with l above the depth, two links can cross while
-/// every hinge is still farther than the depth from the others (n = 40 on the paper's ring
-/// under ring-collapse.toml's loads: the hinges met at load factor 0.986, the links at
-/// 0.859). A uniform grid of cell l + depth over the links' midpoints: links closer than the
-/// depth have midpoints in neighbouring cells, so only those pairs are measured, O(n)
-/// expected; pairs not measured count as infinitely far.
-struct Contact {
-  double distance = INFINITY;
-  int i = -1, j = -1;  ///< the links
-};
+}  // namespace
 
 Contact closest_nonadjacent(const Chain& c, const Vec& x) {
   const int gap = 2 + static_cast<int>(std::floor(2.0 * c.depth / c.l));
@@ -91,6 +80,27 @@ Contact closest_nonadjacent(const Chain& c, const Vec& x) {
   }
   return best;
 }
+
+bool factor_bordered(Triplets t, int size, const Vec& b, const Vec& w, double ws,
+                     Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>>& lu) {
+  for (int i = 0; i < size; ++i) {
+    if (b[i] != 0.0) t.emplace_back(i, size, b[i]);
+    if (w[i] != 0.0) t.emplace_back(size, i, w[i]);
+  }
+  t.emplace_back(size, size, ws);
+  Sparse A(size + 1, size + 1);
+  A.setFromTriplets(t.begin(), t.end());
+  lu.compute(A);
+  return lu.info() == Eigen::Success;
+}
+
+std::string contact_where(const Chain& c, const Contact& k) {
+  std::ostringstream s;
+  s << "links " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
+  return s.str();
+}
+
+namespace {
 
 /// Solves the sparse KKT system; throws ring::NumericalError if singular.
 Vec solve(const Sparse& A, const Vec& rhs) {
@@ -139,13 +149,6 @@ std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record
 }
 
 
-/// Where the ring touches itself: the two links and their distance.
-std::string contact_where(const Chain& c, const Contact& k) {
-  std::ostringstream s;
-  s << "links " << k.i << " and " << k.j << " come within " << k.distance << " m (section depth " << c.depth << " m)";
-  return s.str();
-}
-
 }  // namespace
 
 namespace {
@@ -176,15 +179,10 @@ class ChainStatics : public paths::Equilibrium {
     r.resize(S_);
     const Vec gP = L_.gradient(x);
     r << sp.grad + GT * (lambda * scale_) + s.s * gP, scale_ * constraints(c_, x);
-    for (int i = 0; i < N_; ++i) {
-      if (gP[i] != 0.0) t.emplace_back(i, S_, gP[i]);
-      if (w[i] != 0.0) t.emplace_back(S_, i, w[i]);
-    }
-    t.emplace_back(S_, S_, ws);
-    Sparse A(S_ + 1, S_ + 1);
-    A.setFromTriplets(t.begin(), t.end());
-    lu_.compute(A);
-    return r.allFinite() && lu_.info() == Eigen::Success;
+    Vec b = Vec::Zero(S_), wz = Vec::Zero(S_);
+    b.head(N_) = gP;
+    wz.head(N_) = w.head(N_);
+    return factor_bordered(std::move(t), S_, b, wz, ws, lu_) && r.allFinite();
   }
   bool solve(paths::Vector& y) override {
     y = lu_.solve(y).eval();
@@ -330,6 +328,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
                                  const ring::StaticOptions& statics, InertiaRoute route) {
   const auto t0 = std::chrono::steady_clock::now();
   check_static(spec, options, statics);
+  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) return frame_static(spec, options, statics);
   const Chain c = make_chain(spec, options);
   const auto at = load_hinges(c, spec, statics.loads, "static");
   const auto rec = record_hinges(c, statics.record, "static.record");
@@ -540,6 +539,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
                           const ring::ResponseOptions& r) {
   const auto t0 = std::chrono::steady_clock::now();
   check_response(spec, options, r);
+  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) return frame_respond(spec, options, r);
   const Chain c = make_chain(spec, options);
   const auto at = load_hinges(c, spec, r.loads, "response");
   const auto rec = record_hinges(c, r.record, "response.record");

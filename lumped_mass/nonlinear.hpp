@@ -53,6 +53,14 @@
 // Damping: Rayleigh C = a M + b K0 (K0 the stiffness at rest) and hinge dampers c on
 // the turning rate, both at the midpoint velocity; the dissipated energy is summed.
 //
+// ## The Timoshenko frame (lumped.variant = "timoshenko-frame", frame.hpp)
+// solve_static, solve_static_detail and respond also take the corotational Timoshenko frame:
+// unknowns (x, y, theta) per node, no link constraints, the support rows only; the same
+// terms, loads, continuation driver and midpoint rule (frame_nonlinear.cpp). Its statics end
+// at a bifurcation (dense count up to n = 133, none above) and have no branch switching and
+// no static.path (refused); its response no hinge dampers (refused).
+// Buckling and modes under load remain the chain's.
+//
 // Cost: per Newton iteration one sparse LU (Eigen SparseLU, COLAMD) of the
 // (3n + supports) KKT matrix, whose pattern is banded plus the closing corners: O(n)
 // time and memory.
@@ -71,8 +79,8 @@
 
 namespace lumped {
 
-/// Static equilibrium of the chain under `statics.loads` (full load). Requires the `chain`
-/// variant, supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0; a
+/// Static equilibrium of the chain (or the Timoshenko frame) under `statics.loads` (full
+/// load). Requires the `chain` or `timoshenko-frame` variant, supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0; a
 /// pin, unless the foundation or springs hold the ring), and the load and record points on
 /// hinges.
 /// Throws std::invalid_argument for inputs that can never work and ring::NumericalError
@@ -126,8 +134,8 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
 
 }  // namespace detail
 
-/// Forced response from rest in the undeformed state (see above). Requires the `chain`
-/// variant, a pin (or terms that hold every rigid motion), load and record points on hinges.
+/// Forced response from rest in the undeformed state (see above). Requires the `chain` or
+/// `timoshenko-frame` variant, a pin (or terms that hold every rigid motion), load and record points on hinges.
 /// Records every requested step as
 /// ring::TimeHistory (energies, constraint residual max |c_j|, Newton iterations, six
 /// snapshots). Throws ring::IntegrationFailure (with the history so far) when Newton

@@ -462,15 +462,20 @@ TEST(TimoshenkoFrameTheory, TheVariantIsTheModel) {
   EXPECT_THROW(lumped::compute_modes(general, lumptest::options(40, kTimoshenko), 4), std::invalid_argument);
   general.shear_coefficient = 0.85;
   EXPECT_NO_THROW(lumped::compute_modes(general, lumptest::options(40, kTimoshenko), 4));
-  // The nonlinear analyses have no Timoshenko model (the chain only); the chain, an
-  // Euler-Bernoulli model, is taken on a Timoshenko ring as for the modes.
+  // The nonlinear statics take the Timoshenko frame (corotational, frame_test.cpp) and the
+  // chain, an Euler-Bernoulli model, on a Timoshenko ring as for the modes; the Euler frames
+  // have none, and buckling is the chain's only.
   ring::RingSpec pinned = timo;
   pinned.supports.pin = 180.0;
   pinned.supports.roller = 0.0;
   ring::StaticOptions statics;
   statics.loads.points.push_back({0.0, {-1.0, 0.0}});
-  EXPECT_THROW(lumped::check_static(pinned, lumptest::options(40, kTimoshenko), statics), std::invalid_argument);
+  EXPECT_NO_THROW(lumped::check_static(pinned, lumptest::options(40, kTimoshenko), statics));
   EXPECT_NO_THROW(lumped::check_static(pinned, lumptest::options(40, lumptest::kChain), statics));
+  EXPECT_THROW(lumped::check_static(pinned, lumptest::options(40, kFrame), statics), std::invalid_argument);
+  ring::BucklingOptions buckling;
+  buckling.loads = statics.loads;
+  EXPECT_THROW(lumped::check_buckling(pinned, lumptest::options(40, kTimoshenko), buckling), std::invalid_argument);
 }
 
 }  // namespace

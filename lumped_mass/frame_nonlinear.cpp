@@ -1,0 +1,318 @@
+// Statics and response of the corotational Timoshenko frame (frame.hpp): the frame's model
+// in the shared drivers (paths/continuation.hpp, paths/time_stepping.hpp), as nonlinear.cpp
+// does for the chain. nonlinear.hpp states the contract and what is offered.
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "lumped_mass/checks.hpp"
+#include "lumped_mass/frame.hpp"
+#include "lumped_mass/stability.hpp"
+#include "modal/buckling.hpp"
+#include "paths/continuation.hpp"
+#include "paths/time_stepping.hpp"
+#include "ring/energy_guard.hpp"
+#include "ring/errors.hpp"
+
+namespace lumped {
+namespace {
+
+using Vec = Eigen::VectorXd;
+using Vec2 = Eigen::Vector2d;
+using Sparse = Eigen::SparseMatrix<double>;
+using LU = Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>>;
+
+/// The support rows S as triplets at (row_offset + row, col) times `scale`, and transposed.
+void support_triplets(const Frame& f, int row_offset, double scale, Triplets& out) {
+  for (int c = 0; c < f.S.outerSize(); ++c)
+    for (Sparse::InnerIterator it(f.S, c); it; ++it) {
+      out.emplace_back(row_offset + static_cast<int>(it.row()), c, scale * it.value());
+      out.emplace_back(c, row_offset + static_cast<int>(it.row()), scale * it.value());
+    }
+}
+
+/// The largest change of an element's chord direction (|d(x_{j+1} - x_j)| / l, rad to first
+/// order) or of a section rotation in dq, against half a radian (the chain's basin).
+double frame_move(const Frame& f, const Vec& dq) {
+  double turn = 0.0;
+  for (int j = 0; j < f.n; ++j) {
+    const int a = 3 * j, b = 3 * ((j + 1) % f.n);
+    turn = std::max({turn, std::hypot(dq[b] - dq[a], dq[b + 1] - dq[a + 1]) / f.l, std::abs(dq[a + 2])});
+  }
+  return turn / 0.5;
+}
+
+/// The size of a Newton correction: the largest node movement and R times the largest
+/// rotation change, m.
+double correction_size(const Frame& f, const Vec& dq, double radius) {
+  double m = 0.0;
+  for (int j = 0; j < f.n; ++j)
+    m = std::max({m, std::abs(dq[3 * j]), std::abs(dq[3 * j + 1]), radius * std::abs(dq[3 * j + 2])});
+  return m;
+}
+
+/// The frame's equilibrium grad V(q) + S^T mu + s grad P(q) = 0, S (q - rest) = 0, for the
+/// continuation driver. Unknowns z = (q, mu), mu in units of the frame's scale EI / l^3 (the
+/// rows balanced against the stiffness for the LU's pivoting), the bordered KKT matrix by
+/// factor_bordered (chain.hpp, shared with the chain's statics). The arc length is measured
+/// on all of q (positions in m, rotations in rad). A bifurcation ends the path (dense count,
+/// up to n = 133); no branch switching; the self-contact check is the chain's on the chords.
+class FrameStatics : public paths::Equilibrium {
+ public:
+  FrameStatics(const Frame& f, const FrameLoads& loads, double radius)
+      : f_(f), L_(loads), N_(3 * f.n), S_(3 * f.n + static_cast<int>(f.S.rows())), radius_(radius) {}
+  Eigen::Index size() const override { return S_; }
+  Eigen::Index arc_size() const override { return N_; }
+  bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const Vec q = s.z.head(N_), mu = s.z.tail(S_ - N_) * f_.scale;
+    Springs sp = frame_energy(f_, q, 1.0);
+    L_.add_hessian(q, s.s, sp.hess);
+    support_triplets(f_, N_, f_.scale, sp.hess);
+    const Vec gP = L_.gradient(q);
+    r.resize(S_);
+    r.head(N_) = sp.grad + f_.S.transpose() * mu + s.s * gP;
+    r.tail(S_ - N_) = f_.scale * (f_.S * (q - f_.rest));
+    Vec b = Vec::Zero(S_), wz = Vec::Zero(S_);
+    b.head(N_) = gP;
+    wz.head(N_) = w.head(N_);
+    return factor_bordered(std::move(sp.hess), S_, b, wz, ws, lu_) && r.allFinite();
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y).eval();
+    return y.allFinite();
+  }
+  double move(const paths::Vector& dz) const override { return frame_move(f_, dz.head(N_)); }
+  /// No node moved by more than 1e-12 R (nor a section turned by more than 1e-12 rad), or,
+  /// from the third iteration, the correction (below 1e-9 R) did not shrink: the rounding
+  /// floor of the stiff axial rows (the chain's rule).
+  bool converged(const paths::State&, const paths::Vector& dz, int iteration) override {
+    const double step = correction_size(f_, dz.head(N_), radius_);
+    const bool stalled = iteration >= 3 && step >= last_step_ && step <= 1e-9 * radius_;
+    last_step_ = step;
+    return step <= 1e-12 * radius_ || stalled;
+  }
+  /// The tangent's unstable directions on ker S (modal::unstable_directions, dense: the
+  /// eigenvalues of Z^T T Z), for the driver's bifurcation test, while 3n <= the chain's
+  /// kDenseInertiaUnknowns (stability.hpp; O(n^3)); none above: no bifurcation is detected.
+  std::optional<int> unstable_directions(const paths::State& s) override {
+    if (N_ > kDenseInertiaUnknowns) return std::nullopt;
+    Springs sp = frame_energy(f_, s.z.head(N_), 1.0);
+    L_.add_hessian(s.z.head(N_), s.s, sp.hess);
+    Sparse T(N_, N_);
+    T.setFromTriplets(sp.hess.begin(), sp.hess.end());
+    return modal::unstable_directions(Eigen::MatrixXd(T), Eigen::MatrixXd(f_.S));
+  }
+  std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
+    const Contact k = closest_nonadjacent(f_.geometry, f_.positions(to.z.head(N_)));
+    if (k.distance >= f_.geometry.depth) return std::nullopt;
+    return paths::Touch{1.0, contact_where(f_.geometry, k) + "; the frame model does not include contact"};
+  }
+
+ private:
+  const Frame& f_;
+  const FrameLoads& L_;
+  const int N_, S_;
+  const double radius_;
+  double last_step_ = INFINITY;
+  LU lu_;
+};
+
+std::vector<int> record_nodes(const Frame& f, const std::vector<double>& record, const std::string& key) {
+  std::vector<int> h;
+  for (double a : record) h.push_back(node_of(a, f.geometry.anchor_deg, f.n, key));
+  return h;
+}
+
+}  // namespace
+
+StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                          const ring::StaticOptions& statics) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Frame f = make_frame(spec, options);
+  const FrameLoads loads(f, spec, statics.loads, "static");
+  const auto rec = record_nodes(f, statics.record, "static.record");
+  const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
+  FrameStatics eq(f, loads, spec.radius);
+  paths::State rest{paths::Vector::Zero(N + R), 0.0};
+  rest.z.head(N) = f.rest;
+  const paths::Continuation policy{statics.steps};
+  const paths::Trace path = paths::follow(eq, rest, policy);
+  if (path.end != paths::Trace::End::reached)
+    throw ring::NumericalError("lumped statics (timoshenko-frame): " + paths::failure_message(path, policy));
+  const Vec q = path.state.z.head(N), mu = path.state.z.tail(R) * f.scale;
+  StaticDetail detail;
+  ring::StaticResult& out = detail.result;
+  out.steps = path.steps;
+  out.newton_iterations = path.iterations;
+  for (std::size_t p = 0; p < rec.size(); ++p) {
+    const int k = rec[p];
+    out.displacements.push_back({statics.record[p], q[3 * k] - f.rest[3 * k], q[3 * k + 1] - f.rest[3 * k + 1]});
+  }
+  for (int j = 0; j < f.n; ++j) {
+    out.node_x.push_back(q[3 * j]);
+    out.node_y.push_back(q[3 * j + 1]);
+  }
+  // What the ground exerts on the translations: the support rows' -S^T mu and the terms'
+  // -grad V_terms (springs, foundation).
+  Vec ground = Vec::Zero(N);
+  if (R > 0) ground -= f.S.transpose() * mu;
+  if (f.terms->any_stiffness()) {
+    Vec g = Vec::Zero(N);
+    f.terms->add_gradient(q - f.rest, g);
+    ground -= g;
+  }
+  for (int j = 0; j < f.n; ++j) {
+    detail.ground_force[0] += ground[3 * j];
+    detail.ground_force[1] += ground[3 * j + 1];
+  }
+  out.solver = "lumped";
+  out.unknowns = N + R;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return detail;
+}
+
+namespace {
+
+/// The frame's implicit midpoint step for the time-stepping driver, on (q, mu):
+///   M (q_1 - q_0 - h v_0) 2 / h^2 + grad V(q_m) + f(t_m) grad P(q_m) + C v_m + S^T mu = 0,
+///   S (q_1 - rest) = 0,   v_1 = 2 (q_1 - q_0) / h - v_0,   q_m = (q_0 + q_1) / 2,
+/// the chain's scheme (nonlinear.hpp) without link constraints: the supports are linear, so
+/// they hold to round-off and do no work; the balance error is the midpoint rule's O(h^2) on
+/// the non-quadratic element energy and the follower and central pressures. The point
+/// inertias' J sits in the constant mass on th (exact). The loads' work over a step is
+/// -f(t_m) (P(q_1) - P(q_0)).
+class FrameStepper : public paths::Stepper {
+ public:
+  FrameStepper(const Frame& f, const ring::ResponseOptions& r, double radius, const FrameLoads& loads, Sparse Cd,
+               std::vector<int> rec)
+      : f_(f), r_(r), radius_(radius), L_(loads), Cd_(std::move(Cd)), rec_(std::move(rec)),
+        damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0), q_(f.rest), v_(Vec::Zero(3 * f.n)),
+        mu_(Vec::Zero(f.S.rows())) {}
+
+  paths::StepOutcome try_step(double t, double hh) override {
+    const int N = 3 * f_.n, R = static_cast<int>(f_.S.rows());
+    const double tm = t + 0.5 * hh;
+    const double scale = 2.0 / (hh * hh) * f_.M.diagonal().maxCoeff();  // balances the support rows
+    hh_ = hh;
+    f_t_ = r_.history.factor(tm);
+    q1_ = q_ + hh * v_;
+    mu1_ = mu_;
+    paths::StepOutcome out;
+    out.load_factor = f_t_;
+    Sparse Mt = (2.0 / (hh * hh)) * f_.M;
+    if (damped_) Mt += Cd_ / hh;
+    Mt.conservativeResize(N + R, N + R);
+    for (int it = 0; it < 20; ++it) {
+      ++out.iterations;
+      const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
+      Springs sp = frame_energy(f_, qm, 0.5);
+      L_.add_hessian(qm, 0.5 * f_t_, sp.hess);
+      support_triplets(f_, N, scale, sp.hess);
+      Vec res(N + R);
+      res.head(N) = (2.0 / (hh * hh)) * (f_.M * (q1_ - q_ - hh * v_)) + sp.grad + f_t_ * L_.gradient(qm) +
+                    f_.S.transpose() * (mu1_ * scale);
+      if (damped_) res.head(N) += Cd_ * vm;
+      res.tail(R) = scale * (f_.S * (q1_ - f_.rest));
+      Sparse A(N + R, N + R);
+      A.setFromTriplets(sp.hess.begin(), sp.hess.end());
+      A += Mt;
+      LU lu;
+      lu.compute(A);
+      if (lu.info() != Eigen::Success || !res.allFinite()) break;
+      const Vec d = lu.solve(-res);
+      if (!d.allFinite() || !(frame_move(f_, d.head(N)) < 1.0)) break;
+      q1_ += d.head(N);
+      mu1_ += d.tail(R);
+      if (correction_size(f_, d.head(N), radius_) <= 1e-11 * radius_) {
+        out.converged = true;
+        break;
+      }
+    }
+    return out;
+  }
+
+  void accept(double) override {
+    const Vec vm = (q1_ - q_) / hh_;
+    work_ -= f_t_ * (L_.potential(q1_) - L_.potential(q_));
+    if (damped_) dissipated_ += hh_ * vm.dot(Cd_ * vm);
+    v_ = 2.0 * vm - v_;
+    q_ = q1_;
+    mu_ = mu1_;
+  }
+
+  bool finite() const override { return q_.allFinite() && v_.allFinite(); }
+
+  paths::Sample sample() const override {
+    paths::Sample out;
+    for (int k : rec_) {
+      out.ux.push_back(q_[3 * k] - f_.rest[3 * k]);
+      out.uy.push_back(q_[3 * k + 1] - f_.rest[3 * k + 1]);
+    }
+    out.kinetic = 0.5 * v_.dot(f_.M * v_);
+    out.strain = frame_energy(f_, q_, 0.0).energy;
+    out.work = work_;
+    out.dissipated = dissipated_;
+    out.constraint_residual = f_.S.rows() > 0 ? (f_.S * (q_ - f_.rest)).cwiseAbs().maxCoeff() : 0.0;
+    return out;
+  }
+
+  void shape(std::vector<double>& x, std::vector<double>& y) const override {
+    paths::interleaved_shape(f_.positions(q_), f_.n, x, y);
+  }
+
+  std::optional<std::string> contact() const override {
+    const Contact k = closest_nonadjacent(f_.geometry, f_.positions(q_));
+    if (k.distance >= f_.geometry.depth) return std::nullopt;
+    return contact_where(f_.geometry, k);
+  }
+
+ private:
+  const Frame& f_;
+  const ring::ResponseOptions& r_;
+  const double radius_;
+  const FrameLoads& L_;
+  const Sparse Cd_;
+  const std::vector<int> rec_;
+  const bool damped_;
+  Vec q_, v_, mu_, q1_, mu1_;
+  double hh_ = 0.0, f_t_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
+};
+
+}  // namespace
+
+ring::TimeHistory frame_respond(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                const ring::ResponseOptions& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Frame f = make_frame(spec, options);
+  const FrameLoads loads(f, spec, r.loads, "response");
+  const auto rec = record_nodes(f, r.record, "response.record");
+  const int N = 3 * f.n;
+  // Rayleigh damping C = a M + b K0, K0 the Hessian of the elements and terms at rest (the
+  // linear frame's stiffness).
+  Sparse Cd(N, N);
+  if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
+    const Springs s0 = frame_energy(f, f.rest, 1.0);
+    Sparse K0(N, N);
+    K0.setFromTriplets(s0.hess.begin(), s0.hess.end());
+    Cd = r.rayleigh_mass * f.M + r.rayleigh_stiffness * K0;
+  }
+  ring::EnergyGuard guard(spec, f.n, ring::load_scale(spec, r.loads));
+  FrameStepper stepper(f, r, spec.radius, loads, Cd, rec);
+  paths::Grid grid;
+  grid.dt = r.dt;
+  grid.t_end = r.t_end;
+  grid.guard = &guard;
+  grid.who = "lumped response (timoshenko-frame)";
+  grid.progress = r.progress;
+  ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
+  h.solver = "lumped";
+  h.unknowns = N + static_cast<int>(f.S.rows());
+  h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return h;
+}
+
+}  // namespace lumped
