@@ -13,6 +13,9 @@
 // more than detail::kBasin. Self-contact (non-adjacent segments closer than the section
 // depth) ends the path with a ring::NumericalError naming the load factor (and the limit
 // point, if the path went through one): the chain model has no contact.
+// The Timoshenko chain (ring.theory = "timoshenko", dense path only): its shear angles are
+// condensed exactly (sections.hpp), so K theta above is K_c theta, with the terms on the
+// rotations inside K_c; the unknowns and the path are the Euler chain's.
 #pragma once
 
 #include <memory>
