@@ -2,6 +2,7 @@
 #include "multibody/newton_backend.hpp"
 
 #include <Eigen/LU>
+#include <optional>
 
 #include "multibody/dynamics_sparse.hpp"
 
@@ -67,32 +68,27 @@ class DenseBackend final : public NewtonBackend {
   void residual(const Vector& q, const Vector& v, const Vector& qdd, double f, double cm, double cv, Vector& r,
                 bool tangent) override {
     const Vector qc = q.head(n_);
-    // The chain's terms on phi (inertia, loads, the terms on the translations) into rc, Tc;
-    // the springs on the rotations (the sections' with shear angles) after them.
-    Matrix Tc;
-    if (tangent) Tc = sections_ ? Matrix::Zero(n_, n_) : K_;
-    Vector rc;
-    inertia_terms(inertia_, qc, v.head(n_), qdd.head(n_), cm, cv, rc, tangent ? &Tc : nullptr);
-    rc -= f * load_forces_at(qc, f, tangent ? &Tc : nullptr);
-    if (terms_) {
-      Eigen::Ref<Matrix> t(Tc);
-      terms_->add_stiffness(qc, rc, tangent ? &t : nullptr, !sections_);
-    }
-    r = Vector::Zero(N_);
-    r.head(n_) = rc;
-    r += elastic_forces(q, false);
-    if (sections_) sections_->add_inertia_forces(qdd, r);
+    // The chain's terms on phi (inertia, loads, the terms on the translations) into rc and
+    // T_'s block on phi (in T_'s own storage: no second N x N); the springs on the rotations
+    // (the sections', with the shear angles) after them.
+    std::optional<Eigen::Ref<Matrix>> tc;
     if (tangent) {
-      if (sections_) {
-        T_ = Matrix::Zero(N_, N_);
-        T_.topLeftCorner(n_, n_) = Tc;
-        sections_->add_stiffness(T_);
-        sections_->add_mass(cm, T_);
-      } else {
-        T_ = std::move(Tc);
-      }
-      if (damping_.any()) T_ += cv * C_;
+      if (sections_) T_.setZero(N_, N_);
+      else T_ = K_;
+      tc.emplace(T_.topLeftCorner(n_, n_));
     }
+    Vector rc;
+    inertia_terms(inertia_, qc, v.head(n_), qdd.head(n_), cm, cv, rc, tangent ? &T_ : nullptr);
+    rc -= f * load_forces_at(qc, f, tc ? &*tc : nullptr);
+    if (terms_) terms_->add_stiffness(qc, rc, tc ? &*tc : nullptr, !sections_);
+    r = elastic_forces(q, false);
+    r.head(n_) += rc;
+    if (sections_) sections_->add_inertia_forces(qdd, r);
+    if (tangent && sections_) {
+      sections_->add_stiffness(T_);
+      sections_->add_mass(cm, T_);
+    }
+    if (tangent && damping_.any()) T_ += cv * C_;
     if (damping_.any()) r += C_ * v;
   }
 
@@ -234,7 +230,7 @@ class StructuredBackend final : public NewtonBackend {
 
 }  // namespace
 
-Vector NewtonBackend::load_forces_at(const Vector& q, double f, Matrix* tangent) const {
+Vector NewtonBackend::load_forces_at(const Vector& q, double f, Eigen::Ref<Matrix>* tangent) const {
   if (loading_) {
     if (tangent) loading_->add_stiffness(q, f, *tangent);
     return loading_->forces(q);

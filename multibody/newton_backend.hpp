@@ -76,7 +76,7 @@ class NewtonBackend {
       : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms), sections_(sections) {}
   /// The loads' generalized forces at q (the dead point load, or `loading`'s), and, if
   /// `tangent` is not null, f times their stiffness added to it.
-  Vector load_forces_at(const Vector& q, double f, Matrix* tangent) const;
+  Vector load_forces_at(const Vector& q, double f, Eigen::Ref<Matrix>* tangent) const;
   const Chain& chain_;
   DeadLoad load_;
   Damping damping_;

@@ -15,11 +15,16 @@ Sections::Sections(const Chain& chain, const Attachments* terms, const Shear& sh
     throw std::invalid_argument("multibody: the Timoshenko chain needs kGA > 0 and rho I >= 0 (ring.section, "
                                 "ring.shear_coefficient)");
   if (terms) terms->add_rotation_stiffness(A_);
+}
+
+Eigen::LLT<Matrix> Sections::shear_block() const {
+  Eigen::LLT<Matrix> llt(n_);
   Matrix B = A_;
-  B.diagonal().array() += shear.stiffness;
-  shear_block_.compute(B);
-  if (shear_block_.info() != Eigen::Success)
+  B.diagonal().array() += shear_.stiffness;
+  llt.compute(B);
+  if (llt.info() != Eigen::Success)
     throw ring::NumericalError("multibody: the Timoshenko chain's shear block A + kGA l I is not positive definite");
+  return llt;
 }
 
 double Sections::energy(const Vector& x) const {
@@ -68,10 +73,16 @@ void Sections::add_mass_times(const Matrix& E, Eigen::Ref<Matrix> out) const {
 }
 
 Matrix Sections::condensed() const {
-  Matrix K = A_ - A_ * shear_block_.solve(A_);
-  return 0.5 * (K + K.transpose());
+  Matrix K = A_;
+  {
+    const Matrix X = shear_block().solve(A_);
+    K.noalias() -= A_ * X;
+  }
+  for (int j = 0; j < n_; ++j)  // symmetric to round-off; made exactly so in place
+    for (int i = 0; i < j; ++i) K(i, j) = K(j, i) = 0.5 * (K(i, j) + K(j, i));
+  return K;
 }
 
-Vector Sections::static_shear(const Vector& theta) const { return -shear_block_.solve(A_ * theta); }
+Vector Sections::static_shear(const Vector& theta) const { return -shear_block().solve(A_ * theta); }
 
 }  // namespace multibody::detail

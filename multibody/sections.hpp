@@ -28,7 +28,7 @@
 // the condensed energy has the same stationary points and, since A + S is positive
 // definite, the same stability on the constraints' tangent space.
 //
-// Cost: O(n^2) memory; the condensation is one Cholesky of A + S, O(n^3), once.
+// Cost: O(n^2) memory (A); the condensation is one Cholesky of A + S, O(n^3), once.
 #pragma once
 
 #include <Eigen/Dense>
@@ -67,16 +67,20 @@ class Sections {
   void add_mass_times(const Matrix& E, Eigen::Ref<Matrix> out) const;
 
   /// K_c = A - A (A + S)^{-1} A: the energy of phi with gamma condensed (file comment), n x n.
+  /// O(n^3), 3 n^2 doubles at its peak besides A.
   Matrix condensed() const;
-  /// The shear angles of static equilibrium at theta: -(A + S)^{-1} A theta. O(n^2).
+  /// The shear angles of static equilibrium at theta: -(A + S)^{-1} A theta. O(n^3).
   Vector static_shear(const Vector& theta) const;
 
  private:
+  /// The Cholesky factor of A + S (positive definite: S > 0, A >= 0); throws
+  /// ring::NumericalError if it is not. O(n^3).
+  Eigen::LLT<Matrix> shear_block() const;
+
   const Chain& chain_;
   const int n_;
   const Shear shear_;
   Matrix A_;
-  Eigen::LLT<Matrix> shear_block_;  ///< A + S
 };
 
 }  // namespace multibody::detail
