@@ -36,8 +36,8 @@ using Shape = ring::Section::Shape;
 namespace detail = multibody::detail;
 
 /// The thick steel ring of tests/support/thick.hpp (R = 1 m, rectangle 0.02 m wide, depth
-/// `depth`) on a pin at 180 deg and a roller at 0 deg; with `terms`, a rotational and a
-/// translational spring and a foundation of the bending stiffness's scale.
+/// `depth`) on a pin at 180 deg and a roller at 0 deg; with `terms`, a clamp, a rotational and
+/// a translational spring and a foundation of the bending stiffness's scale.
 ring::RingSpec pinned(double depth, bool terms = false) {
   ring::RingSpec s = ringtest::thick_ring(Shape::rectangle, depth);
   s.supports.pin = 180.0;
@@ -48,6 +48,7 @@ ring::RingSpec pinned(double depth, bool terms = false) {
     s.supports.springs.push_back({270.0, 0.5 * k, 2.0 * k, 0.3 * s.EI() / s.radius});
     s.foundation.radial = 0.5 * k / s.radius;
     s.foundation.tangential = 0.2 * k / s.radius;
+    s.supports.clamp = 45.0;
   }
   return s;
 }
