@@ -38,7 +38,8 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
   // The shear angles live on the dense path only (sections.hpp); "auto" keeps it dense.
-  if (spec.theory == ring::Theory::timoshenko && backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
+  if (spec.theory == ring::Theory::timoshenko &&
+      backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
     throw std::invalid_argument(
         "multibody method = \"sparse\" (the O(n) statics) has no Timoshenko chain (ring.theory = \"timoshenko\"): set "
         "multibody.method = \"dense\" or \"auto\"");

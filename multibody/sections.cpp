@@ -9,11 +9,11 @@ namespace multibody::detail {
 
 Sections::Sections(const Chain& chain, const Attachments* terms, const Shear& shear)
     : chain_(chain), n_(chain.n()), shear_(shear), A_(chain.stiffness_matrix().topLeftCorner(chain.n(), chain.n())) {
-  if (chain.free())
-    throw std::invalid_argument("multibody: the nonlinear Timoshenko chain needs a pin (supports.pin)");
+  if (chain.free()) throw std::invalid_argument("multibody: the nonlinear Timoshenko chain needs a pin (supports.pin)");
   if (!(shear.stiffness > 0.0) || !(shear.inertia >= 0.0))
-    throw std::invalid_argument("multibody: the Timoshenko chain needs kGA > 0 and rho I >= 0 (ring.section, "
-                                "ring.shear_coefficient)");
+    throw std::invalid_argument(
+        "multibody: the Timoshenko chain needs kGA > 0 and rho I >= 0 (ring.section, "
+        "ring.shear_coefficient)");
   if (terms) terms->add_rotation_stiffness(A_);
 }
 
@@ -82,7 +82,5 @@ Matrix Sections::condensed() const {
     for (int i = 0; i < j; ++i) K(i, j) = K(j, i) = 0.5 * (K(i, j) + K(j, i));
   return K;
 }
-
-Vector Sections::static_shear(const Vector& theta) const { return -shear_block().solve(A_ * theta); }
 
 }  // namespace multibody::detail

@@ -26,7 +26,8 @@
 // a dense constant matrix: the statics runs on phi alone with K_c in place of the hinge
 // springs and the rotation terms (statics.hpp, DenseTangent). Exact, not an approximation:
 // the condensed energy has the same stationary points and, since A + S is positive
-// definite, the same stability on the constraints' tangent space.
+// definite, the same stability on the constraints' tangent space. The statics report hinge
+// positions only, so gamma is not recovered.
 //
 // Cost: O(n^2) memory (A); the condensation is one Cholesky of A + S, O(n^3), once.
 #pragma once
@@ -69,8 +70,6 @@ class Sections {
   /// K_c = A - A (A + S)^{-1} A: the energy of phi with gamma condensed (file comment), n x n.
   /// O(n^3), 3 n^2 doubles at its peak besides A.
   Matrix condensed() const;
-  /// The shear angles of static equilibrium at theta: -(A + S)^{-1} A theta. O(n^3).
-  Vector static_shear(const Vector& theta) const;
 
  private:
   /// The Cholesky factor of A + S (positive definite: S > 0, A >= 0); throws

@@ -66,7 +66,8 @@ double rel_diff(const Matrix& a, const Matrix& b) { return (a - b).cwiseAbs().ma
 double static_gap(const ring::StaticResult& a, const ring::StaticResult& b) {
   double d = 0.0, m = 0.0;
   for (std::size_t i = 0; i < a.displacements.size(); ++i) {
-    d = std::max(d, std::hypot(a.displacements[i].ux - b.displacements[i].ux, a.displacements[i].uy - b.displacements[i].uy));
+    d = std::max(
+        d, std::hypot(a.displacements[i].ux - b.displacements[i].ux, a.displacements[i].uy - b.displacements[i].uy));
     m = std::max(m, std::hypot(b.displacements[i].ux, b.displacements[i].uy));
   }
   return d / m;
@@ -294,7 +295,8 @@ TEST(TimoshenkoNonlinear, SmallLoadIsTheLinearSolution) {
     }
     errors.push_back(d / m);
   }
-  RecordProperty("relative_errors", mbtest::sci(errors[0]) + " " + mbtest::sci(errors[1]) + " " + mbtest::sci(errors[2]));
+  RecordProperty("relative_errors",
+                 mbtest::sci(errors[0]) + " " + mbtest::sci(errors[1]) + " " + mbtest::sci(errors[2]));
   // Rotations ~1e-3 rad at the largest load: the quadratic terms are ~1e-3 of the linear ones.
   EXPECT_LT(errors[0], 1e-2);
   EXPECT_NEAR(errors[0] / errors[1], 2.0, 0.1);
@@ -308,7 +310,8 @@ TEST(TimoshenkoNonlinear, PulseResponseKeepsTheEnergyBalance) {
   const ring::RingSpec spec = pinned(0.2, true);
   const double fy = -2.0 * spec.EI() / (spec.radius * spec.radius);
   const double T1 = 2 * M_PI / (2.68 * spec.bending_frequency_scale());
-  for (auto integ : {ring::ResponseOptions::Integrator::newmark, ring::ResponseOptions::Integrator::generalized_alpha}) {
+  for (auto integ :
+       {ring::ResponseOptions::Integrator::newmark, ring::ResponseOptions::Integrator::generalized_alpha}) {
     ring::ResponseOptions r = pulse(fy, 0.3 * T1, T1 / 200, 2 * T1);
     r.integrator = integ;
     r.rho_inf = 0.8;
@@ -354,7 +357,8 @@ TEST(TimoshenkoNonlinear, RefusesThePathsWithoutShearAngles) {
   expect_refusal([&] { multibody::respond(spec, sparse, r); }, "multibody.method = \"dense\"", "sparse response");
   r.integrator = ring::ResponseOptions::Integrator::energy_momentum;
   expect_refusal([&] { multibody::respond(spec, chain(40), r); }, "response.integrator", "energy-momentum");
-  expect_refusal([&] { multibody::compute_modes_under_load(spec, chain(40), st, 3); }, "Timoshenko", "modes under load");
+  expect_refusal([&] { multibody::compute_modes_under_load(spec, chain(40), st, 3); }, "Timoshenko",
+                 "modes under load");
   // "auto" keeps the Timoshenko chain dense above the statics' and the response's crossovers.
   ring::MultibodyOptions automatic = chain(1000);
   automatic.method = ring::MultibodyOptions::Method::automatic;
