@@ -120,8 +120,15 @@ SolverEntry multibody_entry() {
                  ? n * (380.0 + 13.0 * count)
                  : (s.ring.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
     double bytes = 0.0;
-    if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * n * n);
-    if (s.statics) bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : 60.0 * n * n);
+    // Nonlinear Timoshenko chain (dense only, multibody/sections.hpp): the response's state and
+    // Newton matrices are (phi, gamma), so its n^2 terms count N^2; the statics condense gamma
+    // (n unknowns) and build K_c once (68 n^2). Measured (test_memory_estimate.cpp): response
+    // 33.6 and 105 MB at n = 400, 800 (estimate / peak 1.25, 1.31), statics 18.8 and 43.2 MB
+    // (1.11, 1.24).
+    const bool shear = s.ring.theory == ring::Theory::timoshenko;
+    if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * N * N);
+    if (s.statics)
+      bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : (shear ? 68.0 : 60.0) * n * n);
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) {

@@ -99,13 +99,13 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
   has_stiffness_ = spec.foundation.any() || spec.supports.clamp || !spec.supports.springs.empty();
 }
 
-double Attachments::energy(const Vector& q) const {
+double Attachments::energy(const Vector& q, bool rotations) const {
   const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
   double e = 0.0;
   for (int k = 0; k < chain_.n(); ++k) {
     const Eigen::Vector2d u = p.col(k) - chain_.hinge_rest(k);
     e += 0.5 * u.dot(stiff_[k] * u);
-    if (rot_k_[k] > 0.0) {
+    if (rotations && rot_k_[k] > 0.0) {
       const int j = (k + chain_.n() - 1) % chain_.n();
       const double dm = 0.5 * (q[j] - q0_[j] + q[k] - q0_[k]);
       e += 0.5 * rot_k_[k] * dm * dm;
@@ -137,6 +137,8 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix
     (*hess)(j, j) -= chain_.l() * (std::cos(q[j]) * F[j + 1].x() + std::sin(q[j]) * F[j + 1].y());
   if (rotations) add_mean_rotations(chain_, rot_k_, hess->topLeftCorner(n, n));
 }
+
+void Attachments::add_rotation_stiffness(Eigen::Ref<Matrix> A) const { add_mean_rotations(chain_, rot_k_, A); }
 
 Matrix Attachments::rest_mass() const {
   Matrix M = Matrix::Zero(chain_.dofs(), chain_.dofs());

@@ -71,13 +71,18 @@ class Attachments {
   Attachments(const Chain& chain, const ring::RingSpec& spec);
 
   /// Energy of the foundation and the springs (translational and rotational, the clamp's
-  /// included) at q, J. O(n).
-  double energy(const Vector& q) const;
+  /// included) at q, J; `rotations` = false leaves out the terms on the hinges' rotation
+  /// (as add_stiffness). O(n).
+  double energy(const Vector& q, bool rotations = true) const;
   /// Adds its gradient to `grad` (dofs) and, if not null, its Hessian to `hess` (dofs x
   /// dofs, dense, e.g. a block of a bigger matrix). O(n) and O(n^2); nothing without such
   /// terms. `rotations` = false leaves out the terms on the hinges' rotation (rotational
   /// springs, the clamp), which hinge_rotations() gives apart.
   void add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix>* hess, bool rotations = true) const;
+  /// Adds the constant Hessian of the terms on the hinges' rotation (rotational springs, the
+  /// clamp: condensed on the mean rotation of the hinge's two segments) to `A`, n x n on the
+  /// segments' rotations: the Timoshenko chain puts it on its sections' (sections.hpp). O(n^2).
+  void add_rotation_stiffness(Eigen::Ref<Matrix> A) const;
   /// The point masses' mass matrix at rest, their translations only (dofs x dofs, dense;
   /// their inertias are hinge_rotations()'). O(n^2).
   Matrix rest_mass() const;

@@ -37,6 +37,12 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
+  // The shear angles live on the dense path only (sections.hpp); "auto" keeps it dense.
+  if (spec.theory == ring::Theory::timoshenko &&
+      backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
+    throw std::invalid_argument(
+        "multibody method = \"sparse\" (the O(n) statics) has no Timoshenko chain (ring.theory = \"timoshenko\"): set "
+        "multibody.method = \"dense\" or \"auto\"");
   // The O(n) statics (hinge positions) assemble the paper's terms only; "auto" keeps the rest dense.
   if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
     ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
@@ -45,7 +51,6 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
       throw std::invalid_argument("static.path = true needs the dense statics (its branch switching takes the tangent's "
                                   "eigenvectors): set multibody.method = \"dense\"");
   }
-  ring::refuse_timoshenko(spec, "the multibody statics (its Timoshenko chain has linear modes only)");
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
@@ -63,6 +68,8 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
                            const ring::StaticOptions& statics) {
   check_modes(spec, options);
   check_static(spec, options, statics);
+  ring::refuse_timoshenko(spec, "multibody modes.preload = \"static\" (its Timoshenko chain has linear modes, "
+                                "nonlinear statics and response, not yet modes under load)");
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("modes.preload = \"static\" is computed on the dense path: set multibody.method = "
                                 "\"dense\" or \"auto\"");
@@ -73,7 +80,17 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  ring::refuse_timoshenko(spec, "the multibody response (its Timoshenko chain has linear modes only)");
+  // The shear angles live on the dense angle path only (sections.hpp); "auto" keeps it dense.
+  if (spec.theory == ring::Theory::timoshenko) {
+    if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
+      throw std::invalid_argument(
+          "multibody response.integrator = \"energy-momentum\" (hinge positions) has no Timoshenko chain (ring.theory "
+          "= \"timoshenko\"): use \"newmark\" or \"generalized-alpha\"");
+    if (backend(options, spec, response.loads, Analysis::response) == Backend::banded)
+      throw std::invalid_argument(
+          "multibody method = \"sparse\" (the O(n) response) has no Timoshenko chain (ring.theory = \"timoshenko\"): "
+          "set multibody.method = \"dense\" or \"auto\"");
+  }
   // The dense path takes the foundation, springs and the clamp (stiffness only); point
   // masses (a configuration-dependent mass) and further pins (constraint rows) it has not.
   if (!spec.masses.empty() || !spec.supports.pins.empty())

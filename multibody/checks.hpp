@@ -12,16 +12,18 @@ namespace multibody {
 /// Linear modes: n >= 4, a positive section and material, method = "sparse" only with
 /// dependent = "robust" and n >= 10.
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options);
-/// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1.
+/// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1;
+/// the Timoshenko chain on the dense path only.
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
 /// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"),
-/// no point masses (their mass about a deformed state is not written yet).
+/// no point masses (their mass about a deformed state is not written yet), no Timoshenko chain.
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics);
 /// Forced response: a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
 /// none with the energy-momentum integrator; the integrator "newmark", "generalized-alpha"
-/// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here).
+/// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here); the
+/// Timoshenko chain on the dense path with "newmark" or "generalized-alpha" only.
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response);
 

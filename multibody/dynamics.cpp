@@ -15,6 +15,7 @@
 #include "multibody/energy_momentum.hpp"
 #include "multibody/integrators.hpp"
 #include "multibody/newton_backend.hpp"
+#include "multibody/sections.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 
@@ -38,8 +39,8 @@ class ChainStepper : public paths::Stepper {
       : chain_(chain), p_(p), co_(co), controls_(controls), nb_(nb), partitioned_(partitioned), damped_(damped),
         gap_(detail::contact_gap(chain, depth)), depth_(depth), s_(std::move(start)) {
     for (double a : record) rec_.push_back(chain.hinge_at(a));
-    x_load_ = chain.hinge_position(s_.q, p.load.hinge);
-    if (p.loading) potential_ = p.loading->potential(s_.q);
+    x_load_ = chain.hinge_position(coordinates(s_.q), p.load.hinge);
+    if (p.loading) potential_ = p.loading->potential(coordinates(s_.q));
   }
 
   paths::StepOutcome try_step(double, double h) override {
@@ -53,11 +54,11 @@ class ChainStepper : public paths::Stepper {
   void accept(double t) override {
     const double f = 0.5 * (p_.history.factor(s_.t) + p_.history.factor(s1_.t));
     if (p_.loading) {  // W = -sum f (Pi(q_n+1) - Pi(q_n)): exact for constant forces, as below
-      const double potential1 = p_.loading->potential(s1_.q);
+      const double potential1 = p_.loading->potential(coordinates(s1_.q));
       work_ -= f * (potential1 - potential_);
       potential_ = potential1;
     } else {
-      const Eigen::Vector2d x1 = chain_.hinge_position(s1_.q, p_.load.hinge);
+      const Eigen::Vector2d x1 = chain_.hinge_position(coordinates(s1_.q), p_.load.hinge);
       work_ += f * p_.load.force.dot(x1 - x_load_);
       x_load_ = x1;
     }
@@ -75,28 +76,34 @@ class ChainStepper : public paths::Stepper {
 
   paths::Sample sample() const override {
     paths::Sample out;
-    const Eigen::Matrix2Xd hp = chain_.hinge_positions(s_.q);
+    const Vector q = coordinates(s_.q), v = coordinates(s_.v);
+    const Eigen::Matrix2Xd hp = chain_.hinge_positions(q);
     for (int h : rec_) {
       const Eigen::Vector2d u = hp.col(h) - chain_.hinge_rest(h);
       out.ux.push_back(u.x());
       out.uy.push_back(u.y());
     }
-    out.kinetic = chain_.kinetic_energy(s_.q, s_.v);
-    out.strain = chain_.spring_energy(s_.q) + (p_.terms ? p_.terms->energy(s_.q) : 0.0);
+    out.kinetic = chain_.kinetic_energy(q, v);
+    if (p_.sections) {  // the springs on the sections' rotations and the shear; the terms' on translations
+      out.kinetic += p_.sections->kinetic_energy(s_.v);
+      out.strain = p_.sections->energy(s_.q) + (p_.terms ? p_.terms->energy(q, false) : 0.0);
+    } else {
+      out.strain = chain_.spring_energy(q) + (p_.terms ? p_.terms->energy(q) : 0.0);
+    }
     out.work = work_;
     out.dissipated = dissipated_;
-    out.constraint_residual = chain_.constraints(s_.q).cwiseAbs().maxCoeff();
+    out.constraint_residual = chain_.constraints(q).cwiseAbs().maxCoeff();
     return out;
   }
 
   void shape(std::vector<double>& x, std::vector<double>& y) const override {
-    const Eigen::Matrix2Xd hp = chain_.hinge_positions(s_.q);
+    const Eigen::Matrix2Xd hp = chain_.hinge_positions(coordinates(s_.q));
     x.assign(hp.row(0).begin(), hp.row(0).end());
     y.assign(hp.row(1).begin(), hp.row(1).end());
   }
 
   std::optional<std::string> contact() const override {
-    const auto cp = detail::closest_contact(chain_.hinge_positions(s_.q), chain_.l(), gap_, depth_);
+    const auto cp = detail::closest_contact(chain_.hinge_positions(coordinates(s_.q)), chain_.l(), gap_, depth_);
     if (cp.distance >= depth_) return std::nullopt;
     std::ostringstream m;
     m << detail::describe_contact(cp) << " (section depth " << depth_ << " m)";
@@ -104,6 +111,9 @@ class ChainStepper : public paths::Stepper {
   }
 
  private:
+  /// The chain's coordinates of a state vector (the head; the tail: the shear angles).
+  Vector coordinates(const Vector& x) const { return x.head(chain_.dofs()); }
+
   const Chain& chain_;
   const Problem& p_;
   const Coefficients& co_;
@@ -121,9 +131,11 @@ class ChainStepper : public paths::Stepper {
 
 }  // namespace
 
-ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
-                          const ring::ResponseOptions& response,
-                          const IntegrationControls& controls) {
+namespace {
+
+ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                                const ring::ResponseOptions& response, const IntegrationControls& controls,
+                                std::optional<Shear> shear) {
   check_response(spec, options, response);
   if (controls.max_newton < 1 || !(controls.min_dt_factor > 0 && controls.min_dt_factor <= 1))
     throw std::invalid_argument(
@@ -142,8 +154,16 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   if (!one_point) loading.emplace(chain, spec, response.loads, "response");
   std::optional<detail::Attachments> terms;
   if (!spec.paper_terms_only()) terms.emplace(chain, spec);
-  Problem p{chain, {one_point ? chain.hinge_at(load.angle) : 0, {load.force[0], load.force[1]}}, response.history,
-            loading ? &*loading : nullptr, terms ? &*terms : nullptr};
+  std::optional<detail::Sections> sections;  // the Timoshenko chain (sections.hpp)
+  if (spec.theory == ring::Theory::timoshenko)
+    sections.emplace(chain, terms ? &*terms : nullptr, shear ? *shear : Shear::of(spec, chain.l()));
+  Problem p{chain,
+            {one_point ? chain.hinge_at(load.angle) : 0, {load.force[0], load.force[1]}},
+            response.history,
+            loading ? &*loading : nullptr,
+            terms ? &*terms : nullptr,
+            sections ? &*sections : nullptr};
+  const int N = p.size();
   // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
   // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
   const detail::Damping damping{response.rayleigh_mass,
@@ -151,14 +171,15 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   const bool damped = damping.any();
   const bool banded = backend(options, spec, response.loads, Analysis::response) == Backend::banded;
   const std::unique_ptr<detail::NewtonBackend> newton =
-      detail::make_newton_backend(chain, p.load, damping, banded, p.loading, p.terms);
+      detail::make_newton_backend(chain, p.load, damping, banded, p.loading, p.terms, p.sections);
   detail::NewtonBackend& nb = *newton;
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
 
   State s;
-  s.q = chain.q0();
-  s.v = Vector::Zero(n);
+  s.q = Vector::Zero(N);  // at rest; the shear angles zero
+  s.q.head(n) = chain.q0();
+  s.v = Vector::Zero(N);
   if (!nb.initial_acceleration(s.q, s.v, p.history.factor(s.t), s.qdd, s.lambda))
     throw std::runtime_error("multibody::respond: initial accelerations not computable");
   s.a = s.qdd;
@@ -177,8 +198,24 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptio
   paths::Grid grid = detail::response_grid(response, controls, guard, "multibody::respond");
   grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
   ring::TimeHistory th = paths::integrate(stepper, grid, response.record);
-  th.unknowns = chain.dofs() + chain.constraint_count();  // angles and multipliers of the Newton system
+  th.unknowns = N + chain.constraint_count();  // angles (and shear angles) and multipliers of the Newton system
   return th;
+}
+
+}  // namespace
+
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                          const ring::ResponseOptions& response, const IntegrationControls& controls) {
+  return respond_chain(spec, options, response, controls, std::nullopt);
+}
+
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                          const ring::ResponseOptions& response, const IntegrationControls& controls,
+                          const Shear& shear) {
+  if (spec.theory != ring::Theory::timoshenko)
+    throw std::invalid_argument("multibody::respond: section constants are given for a Timoshenko ring only "
+                                "(ring.theory = \"timoshenko\")");
+  return respond_chain(spec, options, response, controls, shear);
 }
 
 paths::Grid detail::response_grid(const ring::ResponseOptions& response, const IntegrationControls& controls,

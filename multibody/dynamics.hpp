@@ -47,6 +47,11 @@
 // end exactly on the recorded grid. Below min_dt an IntegrationFailure is thrown, as it
 // is when non-adjacent segments come closer than the section depth (the ring touches
 // itself; the model has no contact).
+// The Timoshenko chain (ring.theory = "timoshenko", sections.hpp; dense path, newmark and
+// generalized-alpha): the unknowns are (phi, gamma), the shear angles with the section's
+// rotary inertia rho I l on psi = phi + gamma and the bending springs between the sections'
+// rotations; the same integrators and policies run on the 2n unknowns (the constraints do
+// not involve gamma; newmark's dependent coordinates are angles phi).
 // MultibodyOptions: n, rotary_inertia and method are used; `dependent` is not (the
 // partition is chosen by pivoting at every step).
 // method (backend.hpp, Analysis::response): the dense backend forms the n x n tangent
@@ -59,6 +64,7 @@
 
 #include <string>
 
+#include "multibody/linear_model.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
@@ -102,6 +108,13 @@ struct IntegrationControls {
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                           const ring::ResponseOptions& response,
                           const IntegrationControls& controls = {});
+
+/// respond() of the Timoshenko chain (spec.theory = timoshenko) with its section constants
+/// given instead of Shear::of(spec, l) (for tests and studies: e.g. the section's rotary
+/// inertia rho I l off). Same checks and cost.
+ring::TimeHistory respond(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
+                          const ring::ResponseOptions& response, const IntegrationControls& controls,
+                          const Shear& shear);
 
 namespace detail {
 /// The time-stepping driver's grid of a response (paths/time_stepping.hpp) under the

@@ -36,7 +36,7 @@ void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Ve
       }
     }
   }
-  if (T) T->diagonal() += tdiag;
+  if (T) T->diagonal().head(n) += tdiag;
 }
 
 Kinematic evaluate(const Chain& chain, const Vector& q, bool values, bool hessian) {

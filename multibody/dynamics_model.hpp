@@ -46,7 +46,7 @@ Inertia inertia_constants(const Chain& chain);
 ///   T += cm M(q) + cv d xi/dv + d(M qdd + xi)/dq   (if T is given),
 /// with S_jk = C0_jk sin(phi_j - phi_k), xi = S v.^2, d xi/dv = 2 S diag(v),
 /// d(M qdd)/dq = S diag(qdd) - diag(S qdd), d xi/dq = diag(M' v.^2) - M' diag(v.^2)
-/// (M' = M off the diagonal). O(n^2).
+/// (M' = M off the diagonal). T may be larger than n x n: its top-left block takes it. O(n^2).
 void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Vector& qdd,
                    double cm, double cv, Vector& r, Matrix* T);
 

@@ -47,6 +47,7 @@ struct RefreshPolicy {
 /// with the block G_y of `G` (the Jacobian at a nearby configuration: the caller's last
 /// one, which saves evaluating it here). O(n) per iteration. False if it fails.
 bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix& G, Vector& q) {
+  const int nc = ch.dofs();  // the dependent angles are among the chain's coordinates, q's head
   const int c = static_cast<int>(dep.size());
   // |g| is in metres; 1e-15 R sqrt(n) is the round-off of the closure sum of n terms.
   const double tol = 1e-15 * ch.circumradius() * std::sqrt(double(ch.n()));
@@ -54,7 +55,7 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
   for (int i = 0; i < c; ++i) Gy.col(i) = G.col(dep[i]);
   const Eigen::PartialPivLU<Matrix> lu(Gy);
   for (int it = 0; it < 30; ++it) {
-    const Vector g = ch.constraints(q);
+    const Vector g = ch.constraints(q.head(nc));
     if (!g.allFinite()) return false;
     if (g.cwiseAbs().maxCoeff() <= tol) return true;
     const Vector dy = -lu.solve(g);
@@ -62,10 +63,41 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
     for (int i = 0; i < c; ++i) q[dep[i]] += dy[i];
     if (dy.cwiseAbs().maxCoeff() <= 1e-15) return true;
   }
-  return ch.constraints(q).cwiseAbs().maxCoeff() <= 1e3 * tol;
+  return ch.constraints(q.head(nc)).cwiseAbs().maxCoeff() <= 1e3 * tol;
+}
+
+/// The constraints at the state q, and Gdot v. O(n).
+Vector constraints(const Problem& p, const Vector& q) { return p.chain.constraints(q.head(p.chain.dofs())); }
+Vector jdot_qdot(const Problem& p, const Vector& q, const Vector& v) {
+  const int nc = p.chain.dofs();
+  return p.chain.constraint_jdot_qdot(q.head(nc), v.head(nc));
+}
+
+/// M(q) E for the columns of E (Problem::size rows): the chain's mass, and the sections'. O(n k).
+Matrix mass_times_columns(const Problem& p, const Vector& q, const Matrix& E) {
+  const int nc = p.chain.dofs();
+  Matrix out = Matrix::Zero(E.rows(), E.cols());
+  out.topRows(nc) = p.chain.mass_times_columns(q.head(nc), E.topRows(nc));
+  if (p.sections) p.sections->add_mass_times(E, out);
+  return out;
 }
 
 }  // namespace
+
+Kinematic kinematics(const Problem& p, const Vector& q, bool values, bool hessian) {
+  const int nc = p.chain.dofs();
+  if (q.size() == nc) return detail::evaluate(p.chain, q, values, hessian);
+  Kinematic k = detail::evaluate(p.chain, q.head(nc), values, hessian);
+  auto widen = [&](Matrix& m) {
+    if (m.size() == 0) return;
+    Matrix w = Matrix::Zero(m.rows(), q.size());
+    w.leftCols(nc) = m;
+    m = std::move(w);
+  };
+  widen(k.G);
+  widen(k.hess_g);
+  return k;
+}
 
 Coefficients coefficients(const ring::ResponseOptions& r) {
   Coefficients c;
@@ -87,10 +119,10 @@ void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, doub
   const double cv = co.gamma / (co.beta * h);
   Vector r;
   nb.residual(s.q, s.v, Vector::Zero(s.q.size()), p.history.factor(s.t), c, cv, r, true);
-  const Kinematic k = detail::evaluate(p.chain, s.q, false, true);
+  const Kinematic k = kinematics(p, s.q, false, true);
   nb.add_to_tangent_diagonal(k.hess_g.transpose() * s.lambda);
   Vector a, mu;
-  const bool ok = nb.factor(k.G, p.chain.l(), h) && nb.solve(c * r, c * p.chain.constraint_jdot_qdot(s.q, s.v), a, mu);
+  const bool ok = nb.factor(k.G, p.chain.l(), h) && nb.solve(c * r, c * jdot_qdot(p, s.q, s.v), a, mu);
   nb.invalidate();  // the first step factors its own matrix
   if (!ok) throw std::runtime_error("multibody::respond: starting accelerations not computable");
   s.a = a;
@@ -122,7 +154,7 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
     v = v_hat + h * co.gamma * a1;
     qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
     policy.fresh = policy.refresh || !nb.usable(h);
-    const Kinematic k = detail::evaluate(ch, q, true, policy.fresh);
+    const Kinematic k = kinematics(p, q, true, policy.fresh);
     if (it == 1) out.reused = !policy.fresh;
     nb.residual(q, v, qdd, f1, dqdd_dq, dv_dq, r, policy.fresh);
     if (policy.fresh) {
@@ -142,8 +174,7 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
     lambda += dl;
     // Converged when the correction is below tol_q and the constraints hold to 1e-12 R
     // (a kept Newton matrix contracts g only linearly, so check it explicitly).
-    if (norm <= ctl.tol_q &&
-        ch.constraints(q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
+    if (norm <= ctl.tol_q && constraints(p, q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
       out.converged = true;
       break;
     }
@@ -162,10 +193,11 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
 StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
                              const IntegrationControls& ctl, NewtonBackend& nb, State& s1) {
   const Chain& ch = p.chain;
-  const int n = ch.dofs(), c = ch.constraint_count(), nz = n - c;
+  const int n = p.size(), c = ch.constraint_count(), nz = n - c;
   std::vector<int> dep(c), ind;
   {
-    const Eigen::ColPivHouseholderQR<Matrix> qr(ch.constraint_jacobian(s0.q));
+    // The shear angles' columns are zero: the pivoting takes the dependent ones among phi.
+    const Eigen::ColPivHouseholderQR<Matrix> qr(kinematics(p, s0.q, false, false).G);
     const auto& perm = qr.colsPermutation().indices();
     std::vector<bool> is_dep(n, false);
     for (int i = 0; i < c; ++i) {
@@ -200,7 +232,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   // constraint kinematics there. Partitioned: Newmark on z, the dependent ones from
   // G v = 0 and G qdd + Gdot v = 0.
   auto rates = [&] {
-    k = detail::evaluate(ch, q, true, true);
+    k = kinematics(p, q, true, true);
     for (int i = 0; i < c; ++i) Gy.col(i) = k.G.col(dep[i]);
     for (int i = 0; i < nz; ++i) Gz.col(i) = k.G.col(ind[i]);
     gy.compute(Gy);
@@ -214,7 +246,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     for (int i = 0; i < nz; ++i) v[ind[i]] = zd[i];
     const Vector vy = -gy.solve(Gz * zd);
     for (int i = 0; i < c; ++i) v[dep[i]] = vy[i];
-    const Vector ay = -gy.solve(Gz * zdd + ch.constraint_jdot_qdot(q, v));
+    const Vector ay = -gy.solve(Gz * zdd + jdot_qdot(p, q, v));
     for (int i = 0; i < nz; ++i) qdd[ind[i]] = zdd[i];
     for (int i = 0; i < c; ++i) qdd[dep[i]] = ay[i];
   };
@@ -226,7 +258,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
   auto prepare_correction = [&] {
     Matrix E = Matrix::Zero(n, c);
     for (int i = 0; i < c; ++i) E(dep[i], i) = 1.0;
-    if (!nb.solve_columns(ch.mass_times_columns(q, E), Yq, Yl)) return false;
+    if (!nb.solve_columns(mass_times_columns(p, q, E), Yq, Yl)) return false;
     Yq = -Yq;
     Yl = -Yl;
     have_y = true;
@@ -274,7 +306,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
       partitioned = true;
       continue;
     }
-    if (norm <= ctl.tol_q && ch.constraints(q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
+    if (norm <= ctl.tol_q && constraints(p, q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
       // The dependent angles to round-off, and the rates there.
       out.converged = solve_dependent(ch, dep, k.G, q);
       if (out.converged) rates();

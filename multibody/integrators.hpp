@@ -37,7 +37,16 @@ struct Problem {
   const Loading* loading = nullptr;
   /// The foundation, springs and clamp (attachments.hpp), on the dense backend only.
   const Attachments* terms = nullptr;
+  /// The Timoshenko chain's sections (sections.hpp), on the dense backend only: the state's
+  /// q is then (phi, gamma), the chain's coordinates its head.
+  const Sections* sections = nullptr;
+  /// Unknowns of the state: the chain's coordinates, and the shear angles.
+  int size() const { return chain.dofs() + (sections ? sections->n() : 0); }
 };
+
+/// The chain's constraint kinematics at the state q (Problem::size entries): on its head,
+/// with zero columns for the shear angles, which enter no constraint. O(n).
+Kinematic kinematics(const Problem& p, const Vector& q, bool values = true, bool hessian = true);
 
 /// Result of one attempted step.
 struct StepOutcome {

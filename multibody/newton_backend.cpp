@@ -2,62 +2,98 @@
 #include "multibody/newton_backend.hpp"
 
 #include <Eigen/LU>
+#include <optional>
 
 #include "multibody/dynamics_sparse.hpp"
 
 namespace multibody::detail {
 namespace {
 
-/// n x n matrices: the inertia constants, K, C, the tangent and an LU of the
-/// saddle-point matrix. O(n^2) memory.
+/// N x N matrices (N = n, or 2n with the Timoshenko chain's shear angles): the inertia
+/// constants, K, C, the tangent and an LU of the saddle-point matrix. O(N^2) memory.
 class DenseBackend final : public NewtonBackend {
  public:
   DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
-               const Attachments* terms)
-      : NewtonBackend(chain, load, damping, loading, terms), inertia_(inertia_constants(chain)), K_(chain.stiffness_matrix()) {
-    if (damping.any())
-      C_ = damping.mass * chain.mass_matrix(chain.q0()) + (damping.cyclic / chain.K()) * K_;
-    else
-      C_ = Matrix::Zero(K_.rows(), K_.cols());
+               const Attachments* terms, const Sections* sections)
+      : NewtonBackend(chain, load, damping, loading, terms, sections),
+        inertia_(inertia_constants(chain)),
+        K_(chain.stiffness_matrix()),
+        n_(chain.dofs()),
+        N_(n_ + (sections ? sections->n() : 0)) {
+    C_ = Matrix::Zero(N_, N_);
+    if (!damping.any()) return;
+    const Matrix cyclic = (damping.cyclic / chain.K()) * K_;
+    C_.topLeftCorner(n_, n_) = damping.mass * chain.mass_matrix(chain.q0()) + cyclic;
+    if (sections) {  // the mass [M + J, J; J, J]; the dampers between the sections' rotations
+      sections->add_mass(damping.mass, C_);
+      C_.topRightCorner(n_, n_) = cyclic;
+      C_.bottomLeftCorner(n_, n_) = cyclic;
+      C_.bottomRightCorner(n_, n_) = cyclic;
+    }
   }
 
   Vector damping_times(const Vector& v) const override { return C_ * v; }
 
   bool initial_acceleration(const Vector& q, const Vector& v, double f, Vector& qdd, Vector& lambda) const override {
-    const int n = chain_.dofs(), c = chain_.constraint_count();
-    const Matrix G = chain_.constraint_jacobian(q);
+    const Eigen::Index c = chain_.constraint_count();
+    const Vector qc = q.head(n_), vc = v.head(n_);
+    const Matrix G = chain_.constraint_jacobian(qc);
     Vector xi;
-    const Vector phi = load_forces_at(q, f, nullptr);
-    inertia_terms(inertia_, q, v, Vector::Zero(n), 0.0, 0.0, xi, nullptr);
-    Matrix A = Matrix::Zero(n + c, n + c);
-    A.topLeftCorner(n, n) = chain_.mass_matrix(q);
-    A.topRightCorner(n, c) = G.transpose();
-    A.bottomLeftCorner(c, n) = G;
-    Vector b(n + c);
-    Vector elastic = chain_.spring_forces(q);
-    if (terms_) terms_->add_stiffness(q, elastic, nullptr);
-    b.head(n) = f * phi - xi - C_ * v - elastic;
-    b.tail(c) = -chain_.constraint_jdot_qdot(q, v);
+    const Vector phi = load_forces_at(qc, f, nullptr);
+    inertia_terms(inertia_, qc, vc, Vector::Zero(n_), 0.0, 0.0, xi, nullptr);
+    Matrix A = Matrix::Zero(N_ + c, N_ + c);
+    A.topLeftCorner(n_, n_) = chain_.mass_matrix(qc);
+    if (sections_) sections_->add_mass(1.0, A.topLeftCorner(N_, N_));
+    A.block(0, N_, n_, c) = G.transpose();
+    A.block(N_, 0, c, n_) = G;
+    Vector b = Vector::Zero(N_ + c);
+    b.head(N_) = -elastic_forces(q) - C_ * v;
+    b.head(n_) += f * phi - xi;
+    b.tail(c) = -chain_.constraint_jdot_qdot(qc, vc);
+    if (sections_ && !(sections_->shear().inertia > 0.0)) {
+      // No rotary inertia: gamma is algebraic, A psi + S gamma = 0 at all times (linear, so
+      // also A phi'' + (A + S) gamma'' = 0): those rows in place of the massless ones.
+      Matrix H = Matrix::Zero(N_, N_);
+      sections_->add_stiffness(H);
+      A.middleRows(n_, N_ - n_).setZero();
+      A.block(n_, 0, N_ - n_, N_) = H.bottomRows(N_ - n_);
+      b.segment(n_, N_ - n_).setZero();
+    }
     const Vector x = A.partialPivLu().solve(b);
-    qdd = x.head(n);
+    qdd = x.head(N_);
     lambda = x.tail(c);
     return x.allFinite();
   }
 
   void residual(const Vector& q, const Vector& v, const Vector& qdd, double f, double cm, double cv, Vector& r,
                 bool tangent) override {
-    if (tangent) T_ = K_;
-    inertia_terms(inertia_, q, v, qdd, cm, cv, r, tangent ? &T_ : nullptr);
-    if (tangent && damping_.any()) T_ += cv * C_;
-    r += chain_.spring_forces(q) - f * load_forces_at(q, f, tangent ? &T_ : nullptr);
-    if (terms_) {
-      Eigen::Ref<Matrix> t(T_);
-      terms_->add_stiffness(q, r, tangent ? &t : nullptr);
+    const Vector qc = q.head(n_);
+    // The chain's terms on phi (inertia, loads, the terms on the translations) into rc and
+    // T_'s block on phi (in T_'s own storage: no second N x N); the springs on the rotations
+    // (the sections', with the shear angles) after them.
+    std::optional<Eigen::Ref<Matrix>> tc;
+    if (tangent) {
+      if (sections_) T_.setZero(N_, N_);
+      else T_ = K_;
+      tc.emplace(T_.topLeftCorner(n_, n_));
     }
+    Vector rc;
+    inertia_terms(inertia_, qc, v.head(n_), qdd.head(n_), cm, cv, rc, tangent ? &T_ : nullptr);
+    rc -= f * load_forces_at(qc, f, tc ? &*tc : nullptr);
+    if (terms_) terms_->add_stiffness(qc, rc, tc ? &*tc : nullptr, !sections_);
+    r = elastic_forces(q, false);
+    r.head(n_) += rc;
+    if (sections_) sections_->add_inertia_forces(qdd, r);
+    if (tangent && sections_) {
+      sections_->add_stiffness(T_);
+      sections_->add_mass(cm, T_);
+    }
+    if (tangent && damping_.any()) T_ += cv * C_;
     if (damping_.any()) r += C_ * v;
   }
 
   void add_to_tangent_diagonal(const Vector& d) override { T_.diagonal() += d; }
+  const Matrix* dense_tangent() const override { return &T_; }
 
   bool factor(const Matrix& G, double l, double h) override {
     const Eigen::Index n = T_.rows(), c = G.rows();
@@ -97,8 +133,25 @@ class DenseBackend final : public NewtonBackend {
   }
 
  private:
+  /// The springs' forces on the rotations (N entries): the hinge springs on phi, or the
+  /// sections' springs and shear on (phi, gamma); with `terms`, also the terms' forces on phi
+  /// (the translations' and, without sections, the rotations'). O(n) or O(n^2).
+  Vector elastic_forces(const Vector& q, bool terms = true) const {
+    Vector e = Vector::Zero(N_);
+    const Vector qc = q.head(n_);
+    if (sections_) sections_->add_forces(q, e);
+    else e = chain_.spring_forces(qc);
+    if (terms && terms_) {
+      Vector et = Vector::Zero(n_);
+      terms_->add_stiffness(qc, et, nullptr, !sections_);
+      e.head(n_) += et;
+    }
+    return e;
+  }
+
   Inertia inertia_;
   Matrix K_, C_, T_;
+  const Eigen::Index n_, N_;
   Eigen::PartialPivLU<Matrix> lu_;
 };
 
@@ -177,7 +230,7 @@ class StructuredBackend final : public NewtonBackend {
 
 }  // namespace
 
-Vector NewtonBackend::load_forces_at(const Vector& q, double f, Matrix* tangent) const {
+Vector NewtonBackend::load_forces_at(const Vector& q, double f, Eigen::Ref<Matrix>* tangent) const {
   if (loading_) {
     if (tangent) loading_->add_stiffness(q, f, *tangent);
     return loading_->forces(q);
@@ -190,11 +243,12 @@ Vector NewtonBackend::load_forces_at(const Vector& q, double f, Matrix* tangent)
 
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading,
-                                                   const Attachments* terms) {
-  if (structured && (loading || terms))
-    throw std::invalid_argument("multibody: the O(n) response takes the paper's ring and one point load only");
+                                                   const Attachments* terms, const Sections* sections) {
+  if (structured && (loading || terms || sections))
+    throw std::invalid_argument(
+        "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and one point load only");
   if (structured) return std::make_unique<StructuredBackend>(chain, load, damping);
-  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms);
+  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections);
 }
 
 }  // namespace multibody::detail

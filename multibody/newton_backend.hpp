@@ -7,6 +7,12 @@
 // Both give the same residuals and Newton corrections to round-off (tests at n = 40,
 // 160, 1280 in tests/multibody/test_dynamics_sparse.cpp).
 //
+// The Timoshenko chain (sections.hpp, dense only): the unknowns are (phi, gamma), 2n; the
+// residual and the tangent are the chain's on phi bordered by the sections' constant
+// blocks (stiffness [A, A; A, A + S] and mass [J, J; J, J]); the constraints' columns on
+// gamma are zero. Damping: Rayleigh a times that full mass at rest, and the cyclic dampers
+// (Rayleigh b K and the hinge dampers) between neighbouring sections, as the hinge springs.
+//
 // The Newton matrix is the scaled saddle-point system
 //   [T G^T; G 0] [dq; dl] = [-r; -g],
 // rows of g and columns of lambda multiplied by s = max|T_jj| / l so that both blocks
@@ -20,10 +26,12 @@
 #include "multibody/dynamics_model.hpp"
 #include "multibody/attachments.hpp"
 #include "multibody/loading.hpp"
+#include "multibody/sections.hpp"
 
 namespace multibody::detail {
 
-/// Damping C = mass M(q0) + cyclic (2, -1, -1 at every hinge), constant.
+/// Damping C = mass M(q0) + cyclic (2, -1, -1 at every hinge; Timoshenko: on the sections'
+/// rotations), constant.
 struct Damping {
   double mass = 0.0;    ///< Rayleigh a (1/s)
   double cyclic = 0.0;  ///< N m s / rad: Rayleigh b times the spring K, plus hinge dampers
@@ -47,6 +55,9 @@ class NewtonBackend {
                         Vector& r, bool tangent) = 0;
   /// Adds a diagonal (the constraint curvature sum_i lambda_i Hess g_i) to the tangent.
   virtual void add_to_tangent_diagonal(const Vector& d) = 0;
+  /// The dense backend's tangent of the last residual(..., tangent = true); null for the
+  /// structured one (for tests).
+  virtual const Matrix* dense_tangent() const { return nullptr; }
   /// Factors the scaled saddle-point matrix of the tangent and G for steps of size h.
   /// False if the factorization fails.
   virtual bool factor(const Matrix& G, double l, double h) = 0;
@@ -61,25 +72,28 @@ class NewtonBackend {
 
  protected:
   NewtonBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading = nullptr,
-                const Attachments* terms = nullptr)
-      : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms) {}
+                const Attachments* terms = nullptr, const Sections* sections = nullptr)
+      : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms), sections_(sections) {}
   /// The loads' generalized forces at q (the dead point load, or `loading`'s), and, if
   /// `tangent` is not null, f times their stiffness added to it.
-  Vector load_forces_at(const Vector& q, double f, Matrix* tangent) const;
+  Vector load_forces_at(const Vector& q, double f, Eigen::Ref<Matrix>* tangent) const;
   const Chain& chain_;
   DeadLoad load_;
   Damping damping_;
   const Loading* loading_;
   const Attachments* terms_;
+  const Sections* sections_;
   bool valid_ = false;
   double h_ = 0.0;
   double sc_ = 1.0;  ///< the constraint rows' scale of the last factorization
 };
 
 /// The dense or the structured backend for this chain, load and damping; `loading` (loads
-/// beyond one point load) and `terms` (foundation, springs, clamp) on the dense one only.
+/// beyond one point load), `terms` (foundation, springs, clamp) and `sections` (the
+/// Timoshenko chain: the unknowns become (phi, gamma)) on the dense one only.
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading = nullptr,
-                                                   const Attachments* terms = nullptr);
+                                                   const Attachments* terms = nullptr,
+                                                   const Sections* sections = nullptr);
 
 }  // namespace multibody::detail

@@ -17,6 +17,8 @@
 #include "multibody/natural.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
+#include "multibody/linear_model.hpp"
+#include "multibody/sections.hpp"
 
 namespace multibody {
 namespace detail {
@@ -69,7 +71,8 @@ DenseTangent::DenseTangent(const Chain& chain, const ring::RingSpec& spec, const
     : chain_(chain),
       loads_(chain, spec, loads, section),
       terms_(chain, spec),
-      K_(chain.stiffness_matrix()),
+      shear_(spec.theory == ring::Theory::timoshenko),
+      K_(shear_ ? Sections(chain, &terms_, Shear::of(spec, chain.l())).condensed() : chain.stiffness_matrix()),
       n_(chain.dofs()),
       c_(chain.constraint_count() + terms_.pin_rows()) {}
 
@@ -87,14 +90,14 @@ Chain::ConstraintKinematics DenseTangent::constraints(const Vector& q) const {
 }
 
 Vector DenseTangent::internal_forces(const Vector& q) const {
-  Vector forces = chain_.spring_forces(q);
-  terms_.add_stiffness(q, forces, nullptr);
+  Vector forces = shear_ ? Vector(K_ * (q - chain_.q0())) : chain_.spring_forces(q);
+  terms_.add_stiffness(q, forces, nullptr, !shear_);  // Timoshenko: the rotations' terms are in K_c
   return forces;
 }
 
 void DenseTangent::add_terms(const Vector& q, Eigen::Ref<Matrix> T) const {
   Vector unused = Vector::Zero(n_);
-  terms_.add_stiffness(q, unused, &T);
+  terms_.add_stiffness(q, unused, &T, !shear_);
 }
 
 void DenseTangent::add_tangent(const Vector& q, const Vector& lambda, double s, const Chain::ConstraintKinematics& ck,

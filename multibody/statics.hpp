@@ -13,6 +13,9 @@
 // more than detail::kBasin. Self-contact (non-adjacent segments closer than the section
 // depth) ends the path with a ring::NumericalError naming the load factor (and the limit
 // point, if the path went through one): the chain model has no contact.
+// The Timoshenko chain (ring.theory = "timoshenko", dense path only): its shear angles are
+// condensed exactly (sections.hpp), so K theta above is K_c theta, with the terms on the
+// rotations inside K_c; the unknowns and the path are the Euler chain's.
 #pragma once
 
 #include <memory>
@@ -38,7 +41,10 @@ namespace detail {
 /// with the chain's closure rows followed by the further pins' rows, and its tangent
 ///   T = K + the terms' Hessian + s (load stiffness) + diag(lambda . Hess g)
 /// (every constraint Hessian is diagonal in the angles: dynamics_model.hpp). O(n) for the
-/// forces and the constraints, O(n^2) for the tangent.
+/// forces and the constraints, O(n^2) for the tangent. For the Timoshenko chain
+/// (spec.theory) K is the condensed K_c of sections.hpp, which holds the hinge springs, the
+/// shear and the terms on the rotations (kr, the clamp): the shear angles are condensed
+/// exactly, and the forces K_c theta cost O(n^2).
 class DenseTangent {
  public:
   /// `section` names the keys of the loads in messages ("static", "buckling").
@@ -60,7 +66,8 @@ class DenseTangent {
   const Chain& chain_;
   const Loading loads_;      ///< point loads, pressure, gravity
   const Attachments terms_;  ///< foundation, springs, clamp, further pins
-  const Matrix K_;           ///< the n x n spring stiffness
+  const bool shear_;         ///< the Timoshenko chain: K_ is K_c, with the terms on the rotations
+  const Matrix K_;           ///< the n x n spring stiffness (Timoshenko: K_c, sections.hpp)
   const Eigen::Index n_, c_;
 };
 

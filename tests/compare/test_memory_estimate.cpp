@@ -88,6 +88,10 @@ const std::vector<Case> kCases = {
     {"multibody_response_dense", "multibody", "respond",
      {{"multibody.n=400", "multibody.method=\"dense\""}, {"multibody.n=800", "multibody.method=\"dense\""}}},
     {"multibody_response_sparse", "multibody", "respond", {{"multibody.n=30000"}, {"multibody.n=100000"}}},
+    {"multibody_timoshenko_response", "multibody", "respond",  // dense: (phi, gamma), 2n unknowns
+     {{"multibody.n=400", "ring.theory=\"timoshenko\""}, {"multibody.n=800", "ring.theory=\"timoshenko\""}}},
+    {"multibody_timoshenko_statics", "multibody", "static",  // dense: gamma condensed, K_c
+     {{"multibody.n=400", "ring.theory=\"timoshenko\""}, {"multibody.n=800", "ring.theory=\"timoshenko\""}}},
     {"multibody_statics_dense", "multibody", "static",
      {{"multibody.n=400", "multibody.method=\"dense\""}, {"multibody.n=800", "multibody.method=\"dense\""}}},
     {"multibody_statics_sparse", "multibody", "static", {{"multibody.n=40000"}, {"multibody.n=100000"}}},

@@ -12,7 +12,7 @@
 //   rounding;
 // - kGA -> infinity with the terms on a hinge's rotation (clamp, kr, a point inertia): the
 //   Euler-Bernoulli chain's linear model with the same terms, the difference falling as 1/kGA;
-// - the refusals (the O(n) path and the nonlinear analyses have no shear angles).
+// - the refusal of the O(n) path (it has no shear angles).
 //
 // Expected order 2 in l = 2 pi R / n, as the Euler-Bernoulli chain's (test_modes.cpp): the
 // hinge springs are a central difference of the curvature, the segments' lumped mass and
@@ -180,17 +180,7 @@ TEST(TimoshenkoChain, RefusesWhatHasNoShearAngles) {
   }
   // "auto" above the modes' crossover stays dense for it.
   EXPECT_EQ(std::get<std::string>(multibody::compute_modes(s, chain(400), 6).model.at("method")), "dense");
-  ring::RingSpec pinned = s;
-  pinned.supports.pin = 180.0;
-  pinned.supports.roller = 0.0;
-  ring::StaticOptions statics;
-  statics.loads.points.push_back({0.0, {-1e3, 0.0}});
-  try {
-    multibody::solve_static(pinned, chain(40), statics);
-    FAIL() << "the statics took a Timoshenko ring";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("linear modes only"), std::string::npos) << e.what();
-  }
+  // The nonlinear analyses' refusals: test_timoshenko_nonlinear.cpp.
 }
 
 }  // namespace
