@@ -12,8 +12,6 @@ namespace multibody {
 
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling) {
-  ring::refuse_timoshenko(spec, "the multibody buckling (the Timoshenko chain has linear modes, nonlinear statics and "
-                                "response, no buckling)");
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("multibody.method = \"sparse\": linear buckling is computed on the dense path (segment "
                                 "angles) only; use \"dense\" or \"auto\"");

@@ -21,8 +21,8 @@
 
 namespace multibody {
 
-/// What the chain's buckling refuses (std::invalid_argument naming the key): a Timoshenko
-/// ring, multibody.method = "sparse" (the O(n) path has no buckling), a ring that the
+/// What the chain's buckling refuses (std::invalid_argument naming the key):
+/// multibody.method = "sparse" (the O(n) path has no buckling), a ring that the
 /// supports leave free to move rigidly under the loads. O(1).
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling);

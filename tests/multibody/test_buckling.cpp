@@ -86,8 +86,41 @@ TEST(MultibodyBuckling, RefusesWhatItCannotDo) {
   EXPECT_THROW(multibody::check_buckling(ringtest::pinned_ring(270.0), {}, pressure(Kind::follower)),
                std::invalid_argument);
   ring::RingSpec thick = ringtest::pin_270_roller_90();
+  thick.theory = ring::Theory::timoshenko;  // buckling takes it, on the dense path only
+  EXPECT_THROW(multibody::check_buckling(thick, sparse, pressure(Kind::follower)), std::invalid_argument);
+}
+
+// The Timoshenko chain's buckling under follower pressure (its statics' condensed stiffness,
+// multibody/sections.hpp). Oracle, derived here for the inextensible ring with shear: in the
+// wave k the centroid line turns by beta = (1 - k^2) sin(k theta) / R (v = sin k theta,
+// w = -k cos k theta); the section turns by psi = Psi sin(k theta), the shear angle is
+// psi - beta, and minimizing EI/2 (psi'/R)^2 + kGA/2 (psi - beta)^2 over Psi leaves the
+// Euler ring's bending energy divided by 1 + k^2 EI / (kGA R^2). The pressure's work acts on
+// the centroid line alone, so p_cr = (k^2 - 1) EI/R^3 / (1 + k^2 EI / (kGA R^2)), k = 2, the
+// Euler ring's 3 EI/R^3 (Levy 1884; Timoshenko & Gere sec. 7.4) reduced by the shear
+// flexibility (0.9608 on this ring, depth/R = 0.2). The chain converges to it at order 2
+// (the Euler chain's, above): 0.79, 0.20, 0.049 % at n = 40, 80, 160 measured. With the
+// shear stiffness 1e6 times larger the chain is the Euler-Bernoulli chain to 1e-6.
+TEST(MultibodyBuckling, TheTimoshenkoChainConvergesToTheShearReducedCriticalPressure) {
+  ring::RingSpec thick = ringtest::pin_270_roller_90();
+  thick.radius = 0.1;
   thick.theory = ring::Theory::timoshenko;
-  EXPECT_THROW(multibody::check_buckling(thick, {}, pressure(Kind::follower)), std::invalid_argument);
+  thick.section.shape = ring::Section::Shape::rectangle;
+  thick.section.width = 0.01;
+  thick.section.height = 0.02;
+  const double EI = thick.EI(), R = thick.radius, shear = EI / (thick.kGA() * R * R);
+  const double exact = 3.0 * EI / std::pow(R, 3) / (1.0 + 4.0 * shear);
+  std::vector<double> err;
+  for (int n : {40, 80, 160}) err.push_back(std::abs(factors(thick, n, pressure(Kind::follower, 1.0, 1))[0] / exact - 1.0));
+  EXPECT_LT(err[2], 1e-3);
+  for (int i = 0; i + 1 < 3; ++i) EXPECT_NEAR(std::log2(err[i] / err[i + 1]), 2.0, 0.15);
+  // The shear-stiff limit: the Euler-Bernoulli chain's factor, to the size of EI / (kGA R^2).
+  ring::RingSpec stiff = thick;
+  stiff.shear_coefficient = 1e6 * thick.kappa();
+  ring::RingSpec euler = thick;
+  euler.theory = ring::Theory::euler_bernoulli;
+  const double fe = factors(euler, 40, pressure(Kind::follower, 1.0, 1))[0];
+  EXPECT_NEAR(factors(stiff, 40, pressure(Kind::follower, 1.0, 1))[0] / fe, 1.0, 4.0 * shear * 1e-6 * 10);
 }
 
 // (K_0 + lambda K_1) x = 0 with K_0 = diag(2, 1), K_1 = diag(-1, 0.5): lambda = 2 (and

@@ -7,7 +7,7 @@
 // - kGA -> infinity (section inertia off): today's Euler-Bernoulli chain, the difference
 //   falling as 1/kGA;
 // - small loads: the linear model's solution K0 x = D^T f, the difference O(load^2);
-// - the refusals (O(n) paths, energy-momentum, buckling, modes under load).
+// - the refusals (O(n) paths, energy-momentum, modes under load).
 // The comparison with the FE Reissner beam is test_timoshenko_fem.cpp.
 #include <gtest/gtest.h>
 
