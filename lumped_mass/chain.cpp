@@ -66,15 +66,34 @@ int dof(const Chain& c, int j, int i) {
   return 2 * h + i % 2;
 }
 
+void add_terms(const Terms& terms, const Vec& u, double hess_scale, Springs& s) {
+  if (!terms.any_stiffness()) return;
+  s.energy += terms.energy(u);
+  terms.add_gradient(u, s.grad);
+  if (hess_scale != 0.0) terms.add_hessian(u, hess_scale, s.hess);
+}
+
+std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const Vec& mu, const Terms& terms,
+                                   const Vec& u, int dofs_per_node) {
+  Vec ground = Vec::Zero(u.size());
+  if (S.rows() > 0) ground -= S.transpose() * mu;
+  if (terms.any_stiffness()) {
+    Vec g = Vec::Zero(u.size());
+    terms.add_gradient(u, g);
+    ground -= g;
+  }
+  std::array<double, 2> f{0.0, 0.0};
+  for (Eigen::Index j = 0; j < u.size(); j += dofs_per_node) {
+    f[0] += ground[j];
+    f[1] += ground[j + 1];
+  }
+  return f;
+}
+
 Springs springs(const Chain& c, const Vec& x, double hess_scale) {
   Springs s;
   s.grad = Vec::Zero(2 * c.n);
-  if (c.terms->any_stiffness()) {
-    const Vec u = x - c.rest;
-    s.energy += c.terms->energy(u);
-    c.terms->add_gradient(u, s.grad);
-    if (hess_scale != 0.0) c.terms->add_hessian(u, hess_scale, s.hess);
-  }
+  add_terms(*c.terms, x - c.rest, hess_scale, s);
   for (int j = 0; j < c.n; ++j) {
     const Turn t = turn(c, x, j, hess_scale != 0.0);
     const double d = t.theta - c.theta0;

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -68,6 +69,16 @@ struct Springs {
 /// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs and the
 /// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation).
 Springs springs(const Chain& c, const Eigen::VectorXd& x, double hess_scale);
+/// The spec's stiffness terms at displacement u added to s (energy, gradient of the size of
+/// u, and the Hessian scaled by `hess_scale` if not zero): the part of springs() and of the
+/// frame's energy (frame.hpp) that the two models share. O(terms).
+void add_terms(const Terms& terms, const Eigen::VectorXd& u, double hess_scale, Springs& s);
+
+/// The resultant force the ground exerts on the nodes (`dofs_per_node` unknowns each, the
+/// translations first) at displacement u: the support rows' -S^T mu and the terms'
+/// -grad V_terms (springs, foundation; a clamp's moment has no resultant). O(n).
+std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const Eigen::VectorXd& mu,
+                                   const Terms& terms, const Eigen::VectorXd& u, int dofs_per_node);
 
 /// The tangent stiffness of the chain's equilibrium grad V(x) + G(x)^T lambda + s grad P(x)
 /// on the hinge positions, times `scale`:

@@ -89,12 +89,7 @@ FrameElement frame_element(const Frame& f, const Vec& q, int j, bool with_hessia
 Springs frame_energy(const Frame& f, const Vec& q, double hess_scale) {
   Springs s;
   s.grad = Vec::Zero(3 * f.n);
-  if (f.terms->any_stiffness()) {
-    const Vec u = q - f.rest;
-    s.energy += f.terms->energy(u);
-    f.terms->add_gradient(u, s.grad);
-    if (hess_scale != 0.0) f.terms->add_hessian(u, hess_scale, s.hess);
-  }
+  add_terms(*f.terms, q - f.rest, hess_scale, s);
   for (int j = 0; j < f.n; ++j) {
     const FrameElement el = frame_element(f, q, j, hess_scale != 0.0);
     const int a = 3 * j, b = 3 * ((j + 1) % f.n);

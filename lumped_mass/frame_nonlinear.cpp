@@ -156,19 +156,7 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
     out.node_x.push_back(q[3 * j]);
     out.node_y.push_back(q[3 * j + 1]);
   }
-  // What the ground exerts on the translations: the support rows' -S^T mu and the terms'
-  // -grad V_terms (springs, foundation).
-  Vec ground = Vec::Zero(N);
-  if (R > 0) ground -= f.S.transpose() * mu;
-  if (f.terms->any_stiffness()) {
-    Vec g = Vec::Zero(N);
-    f.terms->add_gradient(q - f.rest, g);
-    ground -= g;
-  }
-  for (int j = 0; j < f.n; ++j) {
-    detail.ground_force[0] += ground[3 * j];
-    detail.ground_force[1] += ground[3 * j + 1];
-  }
+  detail.ground_force = ground_force(f.S, mu, *f.terms, q - f.rest, 3);
   out.solver = "lumped";
   out.unknowns = N + R;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -357,19 +357,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
     out.node_x.push_back(x[2 * j]);
     out.node_y.push_back(x[2 * j + 1]);
   }
-  // What the ground exerts: the support rows' forces -S^T mu and the terms' -grad V_terms
-  // (springs, foundation; the clamp's moment has no resultant).
-  Vec ground = Vec::Zero(N);
-  if (c.S.rows() > 0) ground -= c.S.transpose() * st.lambda.tail(c.S.rows());
-  if (c.terms->any_stiffness()) {
-    Vec g = Vec::Zero(N);
-    c.terms->add_gradient(x - c.rest, g);
-    ground -= g;
-  }
-  for (int j = 0; j < c.n; ++j) {
-    detail.ground_force[0] += ground[2 * j];
-    detail.ground_force[1] += ground[2 * j + 1];
-  }
+  detail.ground_force = ground_force(c.S, st.lambda.tail(c.S.rows()), *c.terms, x - c.rest, 2);
   out.solver = "lumped";
   out.unknowns = N + R;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
