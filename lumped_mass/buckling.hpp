@@ -1,4 +1,6 @@
-// Linear buckling of the lumped-mass `chain` (ring/analysis.hpp, BucklingOptions: the one
+// Linear buckling of the lumped-mass `chain` and of the corotational Timoshenko frame
+// (frame.hpp: the same steps on its tangent Hess V + s Hess P, its supports linear rows whose
+// multipliers leave no Hessian) (ring/analysis.hpp, BucklingOptions: the one
 // definition (K_0 + lambda K_1) phi = 0 of every solver), on the nonlinear chain's own
 // model (nonlinear.hpp: hinge positions x, rigid links c_j(x) = 0 and support rows, hinge
 // springs EI/l, the spec's terms, the loads as potentials; chain.hpp's tangent, the statics'

@@ -42,15 +42,11 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   // No ring::refuse_timoshenko: the variant is the model (check_theory). The nonlinear
   // variants: "chain" (the Euler-Bernoulli chain of either ring.theory; of a Timoshenko ring,
   // its thin-ring model, as for the modes) for every analysis, and "timoshenko-frame" (the
-  // corotational frame, frame.hpp) for statics and response; buckling is the chain's only.
+  // corotational frame, frame.hpp) for statics, response and buckling.
   using Variant = ring::LumpedOptions::Variant;
-  if (what == "buckling")
-    need(o.variant == Variant::chain,
-         "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no buckling model here; use \"chain\"");
-  else
-    need(o.variant == Variant::chain || o.variant == Variant::timoshenko_frame,
-         "lumped.variant = \"" + ring::to_string(o.variant) +
-             "\" has no nonlinear model here; use \"chain\" or \"timoshenko-frame\"");
+  need(o.variant == Variant::chain || o.variant == Variant::timoshenko_frame,
+       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no " +
+           (what == "buckling" ? "buckling" : "nonlinear") + " model here; use \"chain\" or \"timoshenko-frame\"");
   need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
   need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
        "radius, E, rho, area and inertia must be > 0");
