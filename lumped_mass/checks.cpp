@@ -116,14 +116,11 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics) {
-  if (options.variant != ring::LumpedOptions::Variant::chain)
-    throw std::invalid_argument(
-        "lumped: modes.preload = \"static\" is offered by the nonlinear chain only: lumped.variant = \"" +
-        ring::to_string(options.variant) + "\" " +
-        (options.variant == ring::LumpedOptions::Variant::timoshenko_frame
-             ? "has nonlinear statics but no modes under load here"
-             : "has no nonlinear statics here") +
-        "; use \"chain\"");
+  using Variant = ring::LumpedOptions::Variant;
+  if (options.variant != Variant::chain && options.variant != Variant::timoshenko_frame)
+    throw std::invalid_argument("lumped: modes.preload = \"static\" is offered by the nonlinear models only: "
+                                "lumped.variant = \"" + ring::to_string(options.variant) +
+                                "\" has no nonlinear statics here; use \"chain\" or \"timoshenko-frame\"");
   if (options.n > kMaxPreloadHinges)
     throw std::invalid_argument("lumped: modes.preload = \"static\" solves a dense eigenproblem (O(n^3)): lumped.n (=" +
                                 std::to_string(options.n) + ") must be <= " + std::to_string(kMaxPreloadHinges));

@@ -41,6 +41,7 @@
 #include "lumped_mass/model.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "lumped_mass/terms.hpp"
+#include "paths/continuation.hpp"
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
@@ -89,6 +90,11 @@ class FrameLoads {
   const Frame& f_;
   std::optional<ChainLoads> loads_;
 };
+
+/// The frame's equilibrium path from rest to the full load (the continuation driver on
+/// FrameStatics: frame_nonlinear.cpp), z = (q, mu scaled); throws ring::NumericalError
+/// "`who` (timoshenko-frame): ..." when it does not reach the full load.
+paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, int steps, const std::string& who);
 
 /// The frame's statics and response, the entry points of nonlinear.hpp for this variant
 /// (the caller has run check_static / check_response).

@@ -129,6 +129,18 @@ std::vector<int> record_nodes(const Frame& f, const std::vector<double>& record,
 
 }  // namespace
 
+paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, int steps, const std::string& who) {
+  const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
+  FrameStatics eq(f, loads, radius);
+  paths::State rest{paths::Vector::Zero(N + R), 0.0};
+  rest.z.head(N) = f.rest;
+  const paths::Continuation policy{steps};
+  paths::Trace path = paths::follow(eq, rest, policy);
+  if (path.end != paths::Trace::End::reached)
+    throw ring::NumericalError(who + " (timoshenko-frame): " + paths::failure_message(path, policy));
+  return path;
+}
+
 StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                           const ring::StaticOptions& statics) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -136,13 +148,7 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
   const FrameLoads loads(f, spec, statics.loads, "static");
   const auto rec = record_nodes(f, statics.record, "static.record");
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
-  FrameStatics eq(f, loads, spec.radius);
-  paths::State rest{paths::Vector::Zero(N + R), 0.0};
-  rest.z.head(N) = f.rest;
-  const paths::Continuation policy{statics.steps};
-  const paths::Trace path = paths::follow(eq, rest, policy);
-  if (path.end != paths::Trace::End::reached)
-    throw ring::NumericalError("lumped statics (timoshenko-frame): " + paths::failure_message(path, policy));
+  const paths::Trace path = frame_path(f, loads, spec.radius, statics.steps, "lumped statics");
   const Vec q = path.state.z.head(N), mu = path.state.z.tail(R) * f.scale;
   StaticDetail detail;
   ring::StaticResult& out = detail.result;

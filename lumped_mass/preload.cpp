@@ -11,6 +11,7 @@
 #include <string>
 
 #include "lumped_mass/chain.hpp"
+#include "lumped_mass/frame.hpp"
 #include "lumped_mass/loads.hpp"
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
@@ -82,12 +83,52 @@ void with_hinge_rotations(const Chain& c, const Vec& x, const Dense& Z, Dense& T
   Mr = std::move(M);
 }
 
+ring::ModalResult describe(const ring::LumpedOptions& options, const modal::LoadedModes& m, const Dense& Z,
+                           Eigen::Index unknowns, double anchor_deg, int dofs_per_node, int count) {
+  ring::ModalResult res;
+  res.solver = "lumped";
+  res.model["n"] = static_cast<long long>(options.n);
+  res.model["variant"] = ring::to_string(options.variant);
+  res.model["preload"] = std::string("static");
+  res.unknowns = unknowns;
+  res.max_residual = m.max_residual;
+  for (int k = 0; k < count; ++k) {
+    res.omega.push_back(std::sqrt(m.omega2(k)));
+    res.shapes.push_back(sample_shape(anchor_deg, dofs_per_node, Z * m.vectors.col(k).head(Z.cols())));
+  }
+  return res;
+}
+
+/// The corotational Timoshenko frame's frequencies under load (frame.hpp): its equilibrium on
+/// the statics' path, the tangent Hess V + Hess P there, its constant mass (J of the point
+/// masses on th), both on ker S (the supports are linear rows: the same space at every state).
+ring::ModalResult frame_modes_under_load(const ring::RingSpec& spec, const ring::LumpedOptions& options,
+                                         const ring::StaticOptions& statics, int count) {
+  const Frame f = make_frame(spec, options);
+  const FrameLoads loads(f, spec, statics.loads, "static");
+  const int N = 3 * f.n;
+  const Vec q = frame_path(f, loads, spec.radius, statics.steps, "lumped modes under load").state.z.head(N);
+  Springs sp = frame_energy(f, q, 1.0);
+  loads.add_hessian(q, 1.0, sp.hess);
+  Sparse T(N, N);
+  T.setFromTriplets(sp.hess.begin(), sp.hess.end());
+  const Dense Z = modal::kernel_basis(Dense(f.S), N);
+  const Dense Tr = Z.transpose() * (T * Z), Mr = Z.transpose() * (f.M * Z);
+  const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "lumped modes under load");
+  return describe(options, m, Z, Tr.rows(), f.geometry.anchor_deg, 3, count);
+}
+
 }  // namespace
 
 ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                                            const ring::StaticOptions& statics, int count) {
   const auto t0 = std::chrono::steady_clock::now();
   check_preloaded_modes(spec, options, statics);
+  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) {
+    ring::ModalResult res = frame_modes_under_load(spec, options, statics, count);
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return res;
+  }
   const Chain c = make_chain(spec, options);
   const int N = 2 * c.n;
   const ChainLoads loads(statics.loads, c.rest, c.l, mass_matrix(c), load_hinges(c, spec, statics.loads, "static"));
@@ -110,18 +151,7 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   Dense Mr = Z.transpose() * (mass_at(c, eq.x) * Z);
   with_hinge_rotations(c, eq.x, Z, Tr, Mr);
   const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "lumped modes under load");
-
-  ring::ModalResult res;
-  res.solver = "lumped";
-  res.model["n"] = static_cast<long long>(c.n);
-  res.model["variant"] = ring::to_string(options.variant);
-  res.model["preload"] = std::string("static");
-  res.unknowns = Tr.rows();
-  res.max_residual = m.max_residual;
-  for (int k = 0; k < count; ++k) {
-    res.omega.push_back(std::sqrt(m.omega2(k)));
-    res.shapes.push_back(sample_shape(c.anchor_deg, 2, Z * m.vectors.col(k).head(Z.cols())));
-  }
+  ring::ModalResult res = describe(options, m, Z, Tr.rows(), c.anchor_deg, 2, count);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

@@ -1,4 +1,6 @@
-// Frequencies under load (modes.preload = "static") of the lumped-mass `chain`: the small
+// Frequencies under load (modes.preload = "static") of the lumped-mass `chain` (and of the
+// corotational Timoshenko frame, frame.hpp: its tangent at its equilibrium and its constant
+// mass on the supports' kernel, the same pencil without links): the small
 // vibrations about the static equilibrium of `statics` at its full load, on the nonlinear
 // chain's own model (nonlinear.hpp: hinge positions x, rigid links c_j(x) = 0 and support
 // rows, hinge springs EI/l, the spec's terms, the loads as potentials). The multibody chain's
@@ -78,7 +80,7 @@ constexpr int kMaxPreloadHinges = 1000;
 /// modes.count). Throws ring::NumericalError when the statics' path does not reach the full
 /// load (a limit point, a bifurcation, self-contact) or the loaded ring is at or past a
 /// critical load (omega^2 <= 0).
-/// Result: solver "lumped"; model {n, variant ("chain"), preload ("static")}; unknowns = the
+/// Result: solver "lumped"; model {n, variant ("chain" or "timoshenko-frame"), preload ("static")}; unknowns = the
 /// pencil's size, dim ker G; omega (rad/s, ascending); shapes at the common stations (the
 /// displacements about the deformed state); max_residual the largest
 /// ||T_r y - w^2 M_r y|| / (||T_r y|| + w^2 ||M_r y||) on ker G; seconds (statics included).

@@ -30,7 +30,9 @@
 #include "lumped_mass/checks.hpp"
 #include "lumped_mass/frame.hpp"
 #include "lumped_mass/model.hpp"
+#include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
+#include "lumped_mass/preload.hpp"
 #include "ring/analysis.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/errors.hpp"
@@ -314,6 +316,19 @@ TEST(LumpedFrame, BucklesUnderFollowerPressureAtTheShearReducedCriticalPressure)
   for (int i = 0; i + 1 < 3; ++i) EXPECT_NEAR(std::log2(err[i] / err[i + 1]), 2.0, 0.15);
 }
 
+// Frequencies under a vanishing load are the linear frame's (model.cpp, an independent
+// assembly of the same small-displacement model): the load's effect is O(load), 1e-9 of the
+// frequencies at this load (1e-6 N against a collapse load of ~1e6 N).
+TEST(LumpedFrame, FrequenciesUnderAVanishingLoadAreTheLinearFramesModes) {
+  const ring::RingSpec spec = thick();
+  ring::StaticOptions st;
+  st.loads.points = {{90.0, {0.0, -1e-6}}};
+  st.steps = 1;
+  const auto loaded = lumped::compute_modes_under_load(spec, lumptest::options(40, kTimoshenko), st, 8);
+  const auto linear = lumped::compute_modes(spec, lumptest::options(40, kTimoshenko), 8);
+  for (int k = 0; k < 8; ++k) EXPECT_NEAR(loaded.omega.at(k) / linear.omega.at(k), 1.0, 1e-9) << "mode " << k + 1;
+}
+
 // (7) What the frame does not offer is refused with the key named.
 TEST(LumpedFrame, RefusesWhatItDoesNotOffer) {
   const ring::RingSpec spec = thick();
@@ -339,7 +354,7 @@ TEST(LumpedFrame, RefusesWhatItDoesNotOffer) {
   EXPECT_NE(message([&] { lumped::check_buckling(spec, lumptest::options(24, lumptest::kFrame), b); })
                 .find("lumped.variant"),
             std::string::npos);
-  EXPECT_NE(message([&] { lumped::check_preloaded_modes(spec, lumptest::options(24, kTimoshenko), st); })
+  EXPECT_NE(message([&] { lumped::check_preloaded_modes(spec, lumptest::options(24, lumptest::kFrame), st); })
                 .find("modes.preload"),
             std::string::npos);
   ring::ResponseOptions r;
