@@ -68,8 +68,9 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
                            const ring::StaticOptions& statics) {
   check_modes(spec, options);
   check_static(spec, options, statics);
-  ring::refuse_timoshenko(spec, "multibody modes.preload = \"static\" (its Timoshenko chain has linear modes, "
-                                "nonlinear statics and response, not yet modes under load)");
+  if (spec.theory == ring::Theory::timoshenko && spec.supports.free())
+    throw std::invalid_argument("multibody modes.preload = \"static\": the Timoshenko chain's modes under load need "
+                                "a pinned ring (supports.pin)");
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("modes.preload = \"static\" is computed on the dense path: set multibody.method = "
                                 "\"dense\" or \"auto\"");

@@ -207,8 +207,28 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   Chain::ConstraintKinematics ck;
   const Matrix T = eq.tangent(path.state, ck);
   const Vector q = path.state.z.head(ch.dofs());
-  const Matrix Z = modal::kernel_basis(ck.G, ch.dofs());
-  const Matrix Tr = Z.transpose() * T * Z, Mr = Z.transpose() * ch.mass_matrix(q) * Z;
+  Matrix Z = modal::kernel_basis(ck.G, ch.dofs());
+  Matrix Tr = Z.transpose() * T * Z, Mr = Z.transpose() * ch.mass_matrix(q) * Z;
+  if (spec.theory == ring::Theory::timoshenko) {
+    // The shear angles back as unknowns (sections.hpp): T holds K_c = A - A (A + S)^{-1} A, the
+    // Schur complement over gamma of [A, A; A, A + S], so on (phi, gamma) the full tangent is
+    // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J]; gamma has no constraint,
+    // so the tangent space is Z for phi and every gamma. O(n^3).
+    const int n = ch.n();
+    const detail::Attachments terms(ch, spec);
+    const detail::Sections sections(ch, &terms, Shear::of(spec, ch.l()));
+    Matrix Tf = Matrix::Zero(2 * n, 2 * n), Mf = Matrix::Zero(2 * n, 2 * n);
+    sections.add_stiffness(Tf);
+    Tf.topLeftCorner(n, n) += T - sections.condensed();
+    sections.add_mass(1.0, Mf);
+    Mf.topLeftCorner(n, n) += ch.mass_matrix(q);
+    Matrix Zf = Matrix::Zero(2 * n, Z.cols() + n);
+    Zf.topLeftCorner(n, Z.cols()) = Z;
+    Zf.bottomRightCorner(n, n).setIdentity();
+    Tr = Zf.transpose() * Tf * Zf;
+    Mr = Zf.transpose() * Mf * Zf;
+    Z = std::move(Zf);
+  }
   const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "multibody modes under load");
   ring::ModalResult res;
   res.solver = "multibody";
@@ -219,7 +239,7 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   res.max_residual = m.max_residual;
   for (int k = 0; k < count; ++k) {
     res.omega.push_back(std::sqrt(m.omega2(k)));
-    res.shapes.push_back(ch.shape_at(q, Z * m.vectors.col(k)));
+    res.shapes.push_back(ch.shape_at(q, (Z * m.vectors.col(k)).head(ch.dofs())));
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
