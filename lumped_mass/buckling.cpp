@@ -125,7 +125,7 @@ ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::Lu
   const auto t0 = std::chrono::steady_clock::now();
   check_buckling(spec, options, buckling);
   ring::BucklingResult r;
-  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) {
+  if (options.variant != ring::LumpedOptions::Variant::chain) {
     r = frame_buckling(spec, options, buckling);
   } else {
     const Chain c = make_chain(spec, options);

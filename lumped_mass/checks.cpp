@@ -39,14 +39,16 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   auto need = [&](bool ok, const std::string& msg) {
     if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
   };
-  // No ring::refuse_timoshenko: the variant is the model (check_theory). The nonlinear
-  // variants: "chain" (the Euler-Bernoulli chain of either ring.theory; of a Timoshenko ring,
-  // its thin-ring model, as for the modes) for every analysis, and "timoshenko-frame" (the
-  // corotational frame, frame.hpp) for statics, response and buckling.
+  // No ring::refuse_timoshenko: the variant is the model (check_theory). Every variant has a
+  // nonlinear model: "chain" (the Euler-Bernoulli chain of either ring.theory; of a Timoshenko
+  // ring, its thin-ring model, as for the modes), and the frames as corotational frames
+  // (frame.hpp) with their linear element's stiffness. The lumped "frame" has massless
+  // rotations: no response (a state without inertia; check_response).
   using Variant = ring::LumpedOptions::Variant;
-  need(o.variant == Variant::chain || o.variant == Variant::timoshenko_frame,
-       "lumped.variant = \"" + ring::to_string(o.variant) + "\" has no " +
-           (what == "buckling" ? "buckling" : "nonlinear") + " model here; use \"chain\" or \"timoshenko-frame\"");
+  if (what == "response")
+    need(o.variant != Variant::frame,
+         "lumped.variant = \"frame\" lumps no rotary inertia (its rotations are massless), so it has no response "
+         "here; use \"frame-consistent\", \"timoshenko-frame\" or \"chain\"");
   need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
   need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
        "radius, E, rho, area and inertia must be > 0");
@@ -108,19 +110,18 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
         "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs, "
         "a foundation or gravity from which the ring hangs, to keep it from turning about the pin");
   if (statics.steps < 1) throw std::invalid_argument("lumped statics: static.steps must be >= 1");
-  if (statics.path && options.variant == ring::LumpedOptions::Variant::timoshenko_frame)
+  if (statics.path && options.variant != ring::LumpedOptions::Variant::chain)
     throw std::invalid_argument("lumped statics: static.path = true (the path through bifurcations to contact) is "
-                                "offered by lumped.variant = \"chain\" only; the timoshenko-frame's statics give "
-                                "the equilibrium at the full load");
+                                "offered by lumped.variant = \"chain\" only; the frames' statics give the "
+                                "equilibrium at the full load");
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics) {
-  using Variant = ring::LumpedOptions::Variant;
-  if (options.variant != Variant::chain && options.variant != Variant::timoshenko_frame)
-    throw std::invalid_argument("lumped: modes.preload = \"static\" is offered by the nonlinear models only: "
-                                "lumped.variant = \"" + ring::to_string(options.variant) +
-                                "\" has no nonlinear statics here; use \"chain\" or \"timoshenko-frame\"");
+  if (options.variant == ring::LumpedOptions::Variant::frame)
+    throw std::invalid_argument("lumped: modes.preload = \"static\": lumped.variant = \"frame\" lumps no rotary "
+                                "inertia (its rotations are massless); use \"frame-consistent\", "
+                                "\"timoshenko-frame\" or \"chain\"");
   if (options.n > kMaxPreloadHinges)
     throw std::invalid_argument("lumped: modes.preload = \"static\" solves a dense eigenproblem (O(n^3)): lumped.n (=" +
                                 std::to_string(options.n) + ") must be <= " + std::to_string(kMaxPreloadHinges));
@@ -157,10 +158,10 @@ void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& optio
   if (r.integrator != Integrator::midpoint && r.integrator != Integrator::newmark)
     throw std::invalid_argument("lumped response: response.integrator = \"" + ring::to_string(r.integrator) +
                                 "\" is not offered by the lumped chain (accepted: \"midpoint\", \"newmark\")");
-  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame && r.hinge_damping > 0)
+  if (options.variant != ring::LumpedOptions::Variant::chain && r.hinge_damping > 0)
     throw std::invalid_argument("lumped response: response.hinge_damping (a damper on the chain's hinge turning "
-                                "rate) is not offered by lumped.variant = \"timoshenko-frame\"; use Rayleigh "
-                                "damping (response.rayleigh_mass, response.rayleigh_stiffness)");
+                                "rate) is not offered by lumped.variant = \"" + ring::to_string(options.variant) +
+                                "\"; use Rayleigh damping (response.rayleigh_mass, response.rayleigh_stiffness)");
   if (!(r.dt > 0) || !(r.t_end >= r.dt))
     throw std::invalid_argument("lumped response: response.dt must be > 0 and <= response.t_end");
 }

@@ -22,7 +22,7 @@ Frame make_frame(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   Frame f;
   f.n = o.n;
   f.l = 2.0 * kPi * spec.radius / f.n;
-  f.k = timoshenko_natural_stiffness(spec, f.l);
+  f.k = natural_stiffness(spec, f.l, o.variant);
   // The linear model checks every point of the spec and gives the support rows and the mass
   // (translations, section rotations, point masses): one code for the linear and the
   // nonlinear frame.

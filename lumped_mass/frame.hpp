@@ -14,7 +14,8 @@
 // the local deformations are
 //   e = L - L0,   t1 = th_j - alpha,   t2 = th_{j+1} - alpha,
 // and the energy is 1/2 EA/L0 e^2 + 1/2 t^T Kb t with Kb the bending block of the linear
-// element (model.hpp timoshenko_natural_stiffness: Przemieniecki's, with the shear). Gradient
+// element (model.hpp natural_stiffness: Przemieniecki's with the shear for timoshenko-frame,
+// the Hermite element's for frame and frame-consistent). Gradient
 // and Hessian by the chain rule, exact (terms.hpp angle_gradient, angle_hessian). At rest
 // e = t = 0, so the Hessian there is the linear timoshenko-frame's element stiffness: the
 // nonlinear frame is the linear one in small displacements (tests/lumped_mass/frame_test.cpp
@@ -93,7 +94,7 @@ class FrameLoads {
 
 /// The frame's equilibrium path from rest to the full load (the continuation driver on
 /// FrameStatics: frame_nonlinear.cpp), z = (q, mu scaled); throws ring::NumericalError
-/// "`who` (timoshenko-frame): ..." when it does not reach the full load.
+/// "`who`: ..." when it does not reach the full load.
 paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, int steps, const std::string& who);
 
 /// The frame's statics and response, the entry points of nonlinear.hpp for this variant

@@ -137,7 +137,7 @@ paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, 
   const paths::Continuation policy{steps};
   paths::Trace path = paths::follow(eq, rest, policy);
   if (path.end != paths::Trace::End::reached)
-    throw ring::NumericalError(who + " (timoshenko-frame): " + paths::failure_message(path, policy));
+    throw ring::NumericalError(who + ": " + paths::failure_message(path, policy));
   return path;
 }
 
@@ -148,7 +148,7 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
   const FrameLoads loads(f, spec, statics.loads, "static");
   const auto rec = record_nodes(f, statics.record, "static.record");
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
-  const paths::Trace path = frame_path(f, loads, spec.radius, statics.steps, "lumped statics");
+  const paths::Trace path = frame_path(f, loads, spec.radius, statics.steps, "lumped statics (" + ring::to_string(options.variant) + ")");
   const Vec q = path.state.z.head(N), mu = path.state.z.tail(R) * f.scale;
   StaticDetail detail;
   ring::StaticResult& out = detail.result;
@@ -300,7 +300,7 @@ ring::TimeHistory frame_respond(const ring::RingSpec& spec, const ring::LumpedOp
   grid.dt = r.dt;
   grid.t_end = r.t_end;
   grid.guard = &guard;
-  grid.who = "lumped response (timoshenko-frame)";
+  grid.who = "lumped response (" + ring::to_string(options.variant) + ")";
   grid.progress = r.progress;
   ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
   h.solver = "lumped";

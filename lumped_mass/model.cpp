@@ -394,8 +394,10 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
 
 }  // namespace
 
-NaturalStiffness timoshenko_natural_stiffness(const ring::RingSpec& spec, double l) {
-  const Element e = timoshenko_element(spec, l);
+NaturalStiffness natural_stiffness(const ring::RingSpec& spec, double l, ring::LumpedOptions::Variant variant) {
+  using Variant = ring::LumpedOptions::Variant;
+  if (variant == Variant::chain) throw std::invalid_argument("lumped: the chain has no frame element");
+  const Element e = variant == Variant::timoshenko_frame ? timoshenko_element(spec, l) : euler_element(spec, l, false);
   NaturalStiffness k;
   k.axial = e.k(0, 0);
   k.bending << e.k(2, 2), e.k(2, 5), e.k(5, 2), e.k(5, 5);

@@ -117,16 +117,18 @@ struct Model {
 ///     the rest of each model (tests/lumped_mass/terms_test.cpp measures the order).
 Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 
-/// The timoshenko_frame element's natural stiffness, for its corotational form (frame.hpp):
-/// the energy of an element of rest length l is 1/2 axial e^2 + 1/2 t^T bending t, e the
+/// A frame variant's element natural stiffness, for its corotational form (frame.hpp): the
+/// energy of an element of rest length l is 1/2 axial e^2 + 1/2 t^T bending t, e the
 /// elongation and t = (th1 - beta, th2 - beta) the section rotations relative to the chord
-/// rotation beta. Taken from the linear element above (Przemieniecki's): axial = EA/l and
-/// bending = its (th1, th2) block, EI / ((1 + phi) l) [4 + phi, 2 - phi; 2 - phi, 4 + phi]
-/// (the element matrix annihilates the rigid motions, so that block is all of it). O(1).
+/// rotation beta. Taken from the variant's linear element above: axial = EA/l and bending =
+/// its (th1, th2) block, EI / ((1 + phi) l) [4 + phi, 2 - phi; 2 - phi, 4 + phi] for
+/// Przemieniecki's (timoshenko_frame), phi = 0 for the Hermite element (frame,
+/// frame_consistent: the same stiffness) (the element matrix annihilates the rigid motions,
+/// so that block is all of it). std::invalid_argument for the chain. O(1).
 struct NaturalStiffness {
   double axial = 0.0;       ///< N/m
   Eigen::Matrix2d bending;  ///< N m/rad
 };
-NaturalStiffness timoshenko_natural_stiffness(const ring::RingSpec& spec, double l);
+NaturalStiffness natural_stiffness(const ring::RingSpec& spec, double l, ring::LumpedOptions::Variant variant);
 
 }  // namespace lumped

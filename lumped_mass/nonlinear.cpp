@@ -328,7 +328,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
                                  const ring::StaticOptions& statics, InertiaRoute route) {
   const auto t0 = std::chrono::steady_clock::now();
   check_static(spec, options, statics);
-  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) return frame_static(spec, options, statics);
+  if (options.variant != ring::LumpedOptions::Variant::chain) return frame_static(spec, options, statics);
   const Chain c = make_chain(spec, options);
   const auto at = load_hinges(c, spec, statics.loads, "static");
   const auto rec = record_hinges(c, statics.record, "static.record");
@@ -527,7 +527,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
                           const ring::ResponseOptions& r) {
   const auto t0 = std::chrono::steady_clock::now();
   check_response(spec, options, r);
-  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) return frame_respond(spec, options, r);
+  if (options.variant != ring::LumpedOptions::Variant::chain) return frame_respond(spec, options, r);
   const Chain c = make_chain(spec, options);
   const auto at = load_hinges(c, spec, r.loads, "response");
   const auto rec = record_hinges(c, r.record, "response.record");

@@ -107,14 +107,15 @@ ring::ModalResult frame_modes_under_load(const ring::RingSpec& spec, const ring:
   const Frame f = make_frame(spec, options);
   const FrameLoads loads(f, spec, statics.loads, "static");
   const int N = 3 * f.n;
-  const Vec q = frame_path(f, loads, spec.radius, statics.steps, "lumped modes under load").state.z.head(N);
+  const std::string who = "lumped modes under load (" + ring::to_string(options.variant) + ")";
+  const Vec q = frame_path(f, loads, spec.radius, statics.steps, who).state.z.head(N);
   Springs sp = frame_energy(f, q, 1.0);
   loads.add_hessian(q, 1.0, sp.hess);
   Sparse T(N, N);
   T.setFromTriplets(sp.hess.begin(), sp.hess.end());
   const Dense Z = modal::kernel_basis(Dense(f.S), N);
   const Dense Tr = Z.transpose() * (T * Z), Mr = Z.transpose() * (f.M * Z);
-  const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "lumped modes under load");
+  const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, who);
   return describe(options, m, Z, Tr.rows(), f.geometry.anchor_deg, 3, count);
 }
 
@@ -124,7 +125,7 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
                                            const ring::StaticOptions& statics, int count) {
   const auto t0 = std::chrono::steady_clock::now();
   check_preloaded_modes(spec, options, statics);
-  if (options.variant == ring::LumpedOptions::Variant::timoshenko_frame) {
+  if (options.variant != ring::LumpedOptions::Variant::chain) {
     ring::ModalResult res = frame_modes_under_load(spec, options, statics, count);
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;

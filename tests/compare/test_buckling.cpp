@@ -174,7 +174,7 @@ TEST(BucklingCli, FrequenciesUnderLoadFallAndTheOthersRefuse) {
   EXPECT_LT(lowest(0.9 * critical), 0.5 * lowest(0.01 * critical));
   // The lumped chain is the same discrete model in hinge positions: the same frequency
   // under load (to 1e-11 in tests/lumped_mass/preload_test.cpp; 1e-9 leaves the JSON's
-  // printed digits room); its frame variants have no nonlinear statics and are refused.
+  // printed digits room); its lumped frame has massless rotations and is refused.
   const std::string half = " --json -q --set static.pressure.value=" + std::to_string(0.5 * critical);
   const auto chain = ringvib("modes " + scene + " --solver lumped --set multibody.rotary_inertia=false" + half);
   const auto mb = ringvib("modes " + scene + " --solver multibody --set multibody.rotary_inertia=false" + half);
