@@ -211,13 +211,15 @@ SolverEntry lumped_entry() {
   // sparse LU's peak, or (from ~20 modes up) the factors plus the Lanczos basis,
   // 40 bytes per node and mode. Modes, with count 23: chain 4.1-4.4 KB, frame 5.8-5.9 KB,
   // frame-consistent 7.8-8.3 KB per node (linear up to n = 6 10^5, 4.6 GB); the nonlinear
-  // chain 4.5 KB (statics) to 5.0 KB (response). Used: those with ~3 % to spare.
+  // chain 4.5 KB (statics) to 5.0 KB (response); the corotational frames' statics 5.4 and
+  // 4.6 KB at n = 10^4, 3 10^4 (the process included). Used: those with ~3 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.lumped.n;
-    if (count == 0) return 5200.0 * n;
+    const bool frame = s.lumped.variant != ring::LumpedOptions::Variant::chain;
+    if (count == 0) return (frame ? 5600.0 : 5200.0) * n;
     // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
-    // n = 400, 800 (the process's 8 MB aside).
-    if (s.modes.preload_static) return 100.0 * n * n;
+    // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
+    if (s.modes.preload_static) return (frame ? 600.0 : 100.0) * n * n;
     auto per_node = [count](double factor_peak, double with_basis) {
       return std::max(factor_peak, with_basis + 40.0 * count);
     };
