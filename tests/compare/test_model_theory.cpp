@@ -14,6 +14,7 @@
 #include "cli.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/spec.hpp"
+#include "tests/support/thick.hpp"
 
 using ringtest::ringvib;
 using ringtest::source;
@@ -21,18 +22,7 @@ using ringtest::source;
 namespace {
 
 /// The ring of scenes/thick-ring.toml (depth/R = 0.2, Timoshenko theory, Cowper's kappa).
-ring::RingSpec thick_ring() {
-  ring::RingSpec s;
-  s.radius = 0.1;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.theory = ring::Theory::timoshenko;
-  s.nu = 0.3;
-  s.section.shape = ring::Section::Shape::rectangle;
-  s.section.width = 0.01;
-  s.section.height = 0.02;
-  return s;
-}
+ring::RingSpec thick_ring() { return ringtest::scene_thick_ring(); }
 
 /// One elastic frequency of the free ring in both theories: the Euler-Bernoulli extensible
 /// ring's and the Timoshenko ring's of the same wave number and branch.

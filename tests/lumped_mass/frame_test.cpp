@@ -48,15 +48,7 @@ constexpr LumpedOptions::Variant kTimoshenko = LumpedOptions::Variant::timoshenk
 /// The ring of scenes/thick-ring.toml (R = 0.1 m, depth/R = 0.2, Cowper's kappa), on a pin at
 /// 0 deg and a roller at 180 deg.
 ring::RingSpec thick() {
-  ring::RingSpec s;
-  s.radius = 0.1;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.theory = ring::Theory::timoshenko;
-  s.nu = 0.3;
-  s.section.shape = ring::Section::Shape::rectangle;
-  s.section.width = 0.01;
-  s.section.height = 0.02;
+  ring::RingSpec s = ringtest::scene_thick_ring();
   s.supports.pin = 0.0;
   s.supports.roller = 180.0;
   return s;

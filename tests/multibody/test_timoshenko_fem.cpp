@@ -22,19 +22,12 @@
 #include "multibody/dynamics.hpp"
 #include "multibody/statics.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/support/thick.hpp"
 
 namespace {
 
 ring::RingSpec thick_ring() {
-  ring::RingSpec s;
-  s.radius = 0.1;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.nu = 0.3;
-  s.theory = ring::Theory::timoshenko;
-  s.section.shape = ring::Section::Shape::rectangle;
-  s.section.width = 0.01;
-  s.section.height = 0.02;
+  ring::RingSpec s = ringtest::scene_thick_ring();
   s.supports.pin = 180.0;
   s.supports.roller = 0.0;
   return s;

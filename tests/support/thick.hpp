@@ -26,4 +26,13 @@ inline ring::RingSpec thick_ring(ring::Section::Shape shape, double depth) {
   return s;
 }
 
+/// The ring of scenes/thick-ring.toml: R = 0.1 m, steel, rectangle 0.01 m wide and 0.02 m
+/// deep (depth/R = 0.2), theory Timoshenko (nu = 0.3, Cowper's kappa), free.
+inline ring::RingSpec scene_thick_ring() {
+  ring::RingSpec s = thick_ring(ring::Section::Shape::rectangle, 0.02);
+  s.radius = 0.1;
+  s.section.width = 0.01;
+  return s;
+}
+
 }  // namespace ringtest
