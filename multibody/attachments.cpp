@@ -103,8 +103,7 @@ double Attachments::energy(const Vector& q, bool rotations) const {
   const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
   double e = 0.0;
   for (int k = 0; k < chain_.n(); ++k) {
-    const Eigen::Vector2d u = p.col(k) - chain_.hinge_rest(k);
-    e += 0.5 * u.dot(stiff_[k] * u);
+    e += 0.5 * (p.col(k) - chain_.hinge_rest(k)).dot(hinge_force(k, p.col(k)));
     if (rotations && rot_k_[k] > 0.0) {
       const int j = (k + chain_.n() - 1) % chain_.n();
       const double dm = 0.5 * (q[j] - q0_[j] + q[k] - q0_[k]);
@@ -120,7 +119,7 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix
   const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
   // F_m = sum_{k >= m} B_k u_k; grad_j = c_j . F_{j+1} (file comment).
   std::vector<Eigen::Vector2d> F(n + 1, Eigen::Vector2d::Zero());
-  for (int k = n - 1; k >= 0; --k) F[k] = F[k + 1] + stiff_[k] * (p.col(k) - chain_.hinge_rest(k));
+  for (int k = n - 1; k >= 0; --k) F[k] = F[k + 1] + hinge_force(k, p.col(k));
   for (int j = 0; j < n; ++j) {
     const Eigen::Vector2d c(-chain_.l() * std::sin(q[j]), chain_.l() * std::cos(q[j]));
     grad[j] += c.dot(F[j + 1]);

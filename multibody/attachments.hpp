@@ -96,6 +96,22 @@ class Attachments {
   Chain::ConstraintKinematics pins(const Vector& q) const;
   int pin_rows() const { return 2 * static_cast<int>(pins_.size()); }
 
+  // The terms by hinge, the one place they are written: the members above pull them back
+  // to the angles, the O(n) statics (statics_natural.cpp) takes them on hinge positions.
+
+  /// B_k, the foundation's and the translational springs' stiffness at hinge k (2 x 2, N/m):
+  /// the energy u_k^T B_k u_k / 2, u_k = p_k - P_k. O(1).
+  const Eigen::Matrix2d& hinge_stiffness(int k) const { return stiff_[k]; }
+  /// Its force B_k u_k (the energy's gradient in p_k) at hinge k's position p, N. O(1).
+  Eigen::Vector2d hinge_force(int k, const Eigen::Vector2d& p) const {
+    return stiff_[k] * (p - chain_.hinge_rest(k));
+  }
+  /// The stiffness on the mean rotation of hinge k's two segments (kr and the clamp,
+  /// condensed: condensed_rotation_stiffness), N m/rad; 0 without such a term. O(1).
+  double rotation_stiffness(int k) const { return rot_k_[k]; }
+  /// The further pins' hinges, in the order of their rows. O(1).
+  const std::vector<int>& pinned_hinges() const { return pins_; }
+
  private:
   const Chain& chain_;
   std::vector<Eigen::Matrix2d> stiff_, mass_;  ///< B_k of the springs and of the masses, by hinge

@@ -86,7 +86,8 @@ Eigen::Matrix2Xd Loading::hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<
   }
   if (central_ != 0.0) {
     const double l = chain_.l();
-    for (int j = 0; j < n; ++j)
+    for (int j = 0; j < n; ++j) {
+      Eigen::Matrix2d haa = Eigen::Matrix2d::Zero(), hab = haa, hbb = haa;  // the segment's blocks
       for (std::size_t q = 0; q < kXi.size(); ++q) {
         const double a = 1.0 - kXi[q], b = kXi[q], w = central_ * l * kW[q];
         const Eigen::Vector2d x = a * p.col(j) + b * p.col(j + 1);
@@ -94,14 +95,19 @@ Eigen::Matrix2Xd Loading::hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<
         const Eigen::Vector2d u = x / r;
         g.col(j) += w * a * u;
         g.col(j + 1) += w * b * u;
-        if (H) {
-          const Eigen::Matrix2d h = w * (Eigen::Matrix2d::Identity() - u * u.transpose()) / r;
-          H->push_back({j, j, a * a * h});
-          H->push_back({j, j + 1, a * b * h});
-          H->push_back({j + 1, j, a * b * h});
-          H->push_back({j + 1, j + 1, b * b * h});
-        }
+        if (!H) continue;
+        const Eigen::Matrix2d h = w * (Eigen::Matrix2d::Identity() - u * u.transpose()) / r;
+        haa += a * a * h;
+        hab += a * b * h;
+        hbb += b * b * h;
       }
+      if (H) {
+        H->push_back({j, j, haa});
+        H->push_back({j, j + 1, hab});
+        H->push_back({j + 1, j, hab});
+        H->push_back({j + 1, j + 1, hbb});
+      }
+    }
   }
   return g;
 }
@@ -142,16 +148,15 @@ void Loading::add_stiffness(const Vector& q, double s, Eigen::Ref<Matrix> hess) 
   const int n = chain_.n(), dofs = chain_.dofs();
   const double l = chain_.l();
   const Eigen::Matrix2Xd p = positions(q);
-  const bool shape_dependent = follower_ != 0.0 || central_ != 0.0;
   std::vector<Block> blocks;
-  const Eigen::Matrix2Xd g = hinge_gradient(p, shape_dependent ? &blocks : nullptr);
+  const Eigen::Matrix2Xd g = hinge_gradient(p, shape_dependent() ? &blocks : nullptr);
   // The curvature of the hinge positions in the angles: d2 p_k / d phi_j^2 = -l e(phi_j), j < k.
   Eigen::Vector2d G = g.col(n);
   for (int j = n - 1; j >= 0; --j) {
     hess(j, j) -= s * l * e(q[j]).dot(G);
     G += g.col(j);
   }
-  if (!shape_dependent) return;
+  if (!shape_dependent()) return;
   // S(a, b) = sum_{k >= a, m >= b} H_km by two-dimensional suffix sums, one array per entry
   // of the 2 x 2 blocks; row/column n + 1 is zero.
   std::array<Matrix, 4> S;

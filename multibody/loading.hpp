@@ -52,19 +52,27 @@ class Loading {
   /// not in the angles) to `hess` (dofs x dofs). O(n^2).
   void add_stiffness(const Vector& q, double s, Eigen::Ref<Matrix> hess) const;
 
- private:
-  /// Hinge positions p_0 .. p_n (2 x (n + 1)). O(n).
-  Eigen::Matrix2Xd positions(const Vector& q) const;
-  /// The shape-dependent part of Pi (follower and central pressure) at hinge positions p.
-  double shape_potential(const Eigen::Matrix2Xd& p) const;
+  // The loads on hinge positions, the one place they are written (file comment): the
+  // angles' members above pull them back, the O(n) statics (statics_natural.cpp) takes them
+  // as they are, with p_n = p_0.
+
   /// A 2 x 2 block d2Pi / dp_k dp_m.
   struct Block {
     int k, m;
     Eigen::Matrix2d h;
   };
-  /// Hinge gradients g_k = dPi/dp_k (2 x (n + 1)) and, if `H` is not null, the non-zero
-  /// Hessian blocks (O(n) of them: neighbours and the closing pair). O(n).
+  /// Hinge gradients g_k = dPi/dp_k at load factor 1 (2 x (n + 1)) at hinge positions p
+  /// (2 x (n + 1)) and, if `H` is not null, the non-zero Hessian blocks (O(n) of them:
+  /// hinge k with k and k + 1, and the closing pair (n, 0)). O(n).
   Eigen::Matrix2Xd hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<Block>* H) const;
+  /// True when Pi has a Hessian in the hinge positions (follower or central pressure).
+  bool shape_dependent() const { return follower_ != 0.0 || central_ != 0.0; }
+
+ private:
+  /// Hinge positions p_0 .. p_n (2 x (n + 1)). O(n).
+  Eigen::Matrix2Xd positions(const Vector& q) const;
+  /// The shape-dependent part of Pi (follower and central pressure) at hinge positions p.
+  double shape_potential(const Eigen::Matrix2Xd& p) const;
 
   const Chain& chain_;
   Eigen::Matrix2Xd f_;     ///< constant hinge forces f_0 .. f_n, N
