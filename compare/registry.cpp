@@ -128,7 +128,10 @@ SolverEntry multibody_entry() {
     const bool shear = s.ring.theory == ring::Theory::timoshenko;
     if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * N * N);
     if (s.statics)
-      bytes = std::max(bytes, banded(multibody::Analysis::statics) ? 1100.0 * n : (shear ? 68.0 : 60.0) * n * n);
+      bytes = std::max(bytes, multibody::backend(s.multibody, s.ring, s.statics->loads, multibody::Analysis::statics) ==
+                                      multibody::Backend::banded
+                                  ? 1100.0 * n
+                                  : (shear ? 68.0 : 60.0) * n * n);
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) {

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <algorithm>
+#include <string>
 
 #include "ring/spec.hpp"
 
@@ -43,7 +44,8 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
 
 /// The backend of `analysis` on `spec`: "auto" also stays dense when the spec has terms
 /// beyond the paper's (supports.pins, clamp, springs, masses, foundation), which only the
-/// dense paths assemble (attachments.hpp), and for the Timoshenko chain (linear_model.hpp). O(1).
+/// dense paths of the modes and the response assemble (attachments.hpp), and for the
+/// Timoshenko chain (linear_model.hpp). The statics' rule takes the loads: the next overload. O(1).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, Analysis analysis) {
   if (options.method == ring::MultibodyOptions::Method::automatic &&
       (!spec.paper_terms_only() || spec.theory == ring::Theory::timoshenko))
@@ -51,11 +53,28 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
   return backend(options, analysis);
 }
 
-/// The backend of a nonlinear analysis under `loads`: "auto" also stays dense for loads
-/// beyond one point load (several, pressure, gravity), which only the dense paths assemble
-/// (loading.hpp). O(1).
+/// What the O(n) statics cannot take of `spec`, as the words of a refusal ("" when it takes
+/// the scene): it assembles every term (attachments.hpp: foundation, springs, clamp,
+/// further pins; point masses weigh under gravity) and every load (loading.hpp), on hinge
+/// positions (statics_natural.cpp), but has neither shear angles nor a free ring (its pin
+/// is hinge 0's constraint rows). O(1).
+inline std::string banded_statics_lacks(const ring::RingSpec& spec) {
+  if (spec.theory == ring::Theory::timoshenko) return "Timoshenko chain (ring.theory = \"timoshenko\")";
+  if (spec.supports.free()) return "free ring (no supports.pin; its pin is hinge 0's rows)";
+  return "";
+}
+
+/// The backend of a nonlinear analysis under `loads`: "auto" also stays dense for what the
+/// O(n) path of `analysis` does not assemble: for the statics, banded_statics_lacks; for the
+/// response, loads beyond one point load (several, pressure, gravity) and the terms beyond
+/// the paper's ring (loading.hpp, attachments.hpp). O(1).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, const ring::Loads& loads,
                        Analysis analysis) {
+  if (analysis == Analysis::statics) {
+    if (options.method == ring::MultibodyOptions::Method::automatic && !banded_statics_lacks(spec).empty())
+      return Backend::dense;
+    return backend(options, analysis);
+  }
   if (options.method == ring::MultibodyOptions::Method::automatic && !loads.beyond_one_point("").empty())
     return Backend::dense;
   return backend(options, spec, analysis);

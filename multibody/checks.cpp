@@ -37,16 +37,12 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
-  // The shear angles live on the dense path only (sections.hpp); "auto" keeps it dense.
-  if (spec.theory == ring::Theory::timoshenko &&
-      backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
-    throw std::invalid_argument(
-        "multibody method = \"sparse\" (the O(n) statics) has no Timoshenko chain (ring.theory = \"timoshenko\"): set "
-        "multibody.method = \"dense\" or \"auto\"");
-  // The O(n) statics (hinge positions) assemble the paper's terms only; "auto" keeps the rest dense.
+  // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
+  // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp), a free ring.
   if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
-    ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) statics)");
-    ring::one_point_load(statics.loads, "static", "multibody method = \"sparse\" (the O(n) statics)");
+    if (const std::string lacks = banded_statics_lacks(spec); !lacks.empty())
+      throw std::invalid_argument("multibody method = \"sparse\" (the O(n) statics) has no " + lacks +
+                                  ": set multibody.method = \"dense\" or \"auto\"");
     if (statics.path)
       throw std::invalid_argument("static.path = true needs the dense statics (its branch switching takes the tangent's "
                                   "eigenvectors): set multibody.method = \"dense\"");

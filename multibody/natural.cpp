@@ -40,31 +40,52 @@ double turn_angle(const Vec6& y) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));  // angle(b) - angle(a)
 }
 
-Turn turn(const Vec6& y, bool hessian) {
+namespace {
+
+/// The gradient and Hessian of a vector's polar angle.
+Eigen::Vector2d grad_angle(const Eigen::Vector2d& v) { return Eigen::Vector2d(-v.y(), v.x()) / v.squaredNorm(); }
+Eigen::Matrix2d hess_angle(const Eigen::Vector2d& v) {
+  const double s2 = v.squaredNorm() * v.squaredNorm();
+  Eigen::Matrix2d h;
+  h << 2 * v.x() * v.y(), v.y() * v.y() - v.x() * v.x(), v.y() * v.y() - v.x() * v.x(), -2 * v.x() * v.y();
+  return h / s2;
+}
+
+/// The gradient and, if `hessian`, the Hessian in y of wa angle(a) + wb angle(b), a = y_1 - y_0,
+/// b = y_2 - y_1 (theta left at 0).
+Turn link_angles(const Vec6& y, double wa, double wb, bool hessian) {
   const Eigen::Vector2d a = y.segment<2>(2) - y.segment<2>(0), b = y.segment<2>(4) - y.segment<2>(2);
-  // Explicit return types: an `auto` lambda would return an expression that refers to a
-  // destroyed temporary.
-  auto grad_angle = [](const Eigen::Vector2d& v) -> Eigen::Vector2d {
-    return Eigen::Vector2d(-v.y(), v.x()) / v.squaredNorm();
-  };
-  auto hess_angle = [](const Eigen::Vector2d& v) -> Eigen::Matrix2d {
-    const double s2 = v.squaredNorm() * v.squaredNorm();
-    Eigen::Matrix2d h;
-    h << 2 * v.x() * v.y(), v.y() * v.y() - v.x() * v.x(), v.y() * v.y() - v.x() * v.x(), -2 * v.x() * v.y();
-    return h / s2;
-  };
   Turn t;
-  t.theta = turn_angle(y);
-  const Eigen::Vector2d ga = grad_angle(a), gb = grad_angle(b);
-  t.d << ga, -ga - gb, gb;
+  t.theta = 0.0;
+  const Eigen::Vector2d ga = wa * grad_angle(a), gb = wb * grad_angle(b);
+  t.d << -ga, ga - gb, gb;
   if (!hessian) {
     t.dd.setZero();
     return t;
   }
   const Eigen::Vector3d pa(-1, 1, 0), pb(0, -1, 1);
-  const Eigen::Matrix2d ha = hess_angle(a), hb = hess_angle(b);
+  const Eigen::Matrix2d ha = wa * hess_angle(a), hb = wb * hess_angle(b);
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) t.dd.block<2, 2>(2 * i, 2 * j) = -pa(i) * pa(j) * ha + pb(i) * pb(j) * hb;
+    for (int j = 0; j < 3; ++j) t.dd.block<2, 2>(2 * i, 2 * j) = pa(i) * pa(j) * ha + pb(i) * pb(j) * hb;
+  return t;
+}
+
+/// The angle from the unit vector e to v, in (-pi, pi].
+double angle_from(const Eigen::Vector2d& e, const Eigen::Vector2d& v) {
+  return std::atan2(e.x() * v.y() - e.y() * v.x(), e.dot(v));
+}
+
+}  // namespace
+
+Turn turn(const Vec6& y, bool hessian) {
+  Turn t = link_angles(y, -1.0, 1.0, hessian);  // angle(b) - angle(a)
+  t.theta = turn_angle(y);
+  return t;
+}
+
+Turn mean_rotation(const Vec6& y, const Eigen::Vector2d& ea, const Eigen::Vector2d& eb, bool hessian) {
+  Turn t = link_angles(y, 0.5, 0.5, hessian);
+  t.theta = 0.5 * (angle_from(ea, y.segment<2>(2) - y.segment<2>(0)) + angle_from(eb, y.segment<2>(4) - y.segment<2>(2)));
   return t;
 }
 
@@ -116,6 +137,8 @@ void constraints(const Natural& c, const Vec& x, Vec& g) {
   }
   g.segment<2>(c.n) = hinge(x, 0) - c.pin;
   if (c.roller >= 0) g(c.n + 2) = c.nu.dot(hinge(x, c.roller) - c.pin);
+  for (std::size_t i = 0; i < c.pins.size(); ++i)
+    g.segment<2>(c.pins_row() + 2 * i) = hinge(x, c.pins[i]) - c.pinned_at[i];
 }
 
 /// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
@@ -140,6 +163,8 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
   put(c.n + 1, 1, 1.0);
   if (c.roller >= 0)
     for (int a = 0; a < 2; ++a) put(c.n + 2, 2 * c.roller + a, c.nu(a));
+  for (std::size_t i = 0; i < c.pins.size(); ++i)
+    for (int a = 0; a < 2; ++a) put(c.pins_row() + 2 * static_cast<int>(i) + a, 2 * c.pins[i] + a, 1.0);
 }
 
 void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt) {
@@ -185,7 +210,7 @@ namespace {
 /// Calls visit(i, j) for every (i, j) that the KKT matrix of the chain may hold (natural
 /// order, repeats allowed): the springs' blocks (hinges k-1, k, k+1, which cover the mass
 /// matrix's and the links' curvature blocks), the links' gradients as rows and columns,
-/// the pin's and the roller's.
+/// the pin's, the roller's and the further pins'.
 template <class Visit>
 void kkt_pattern(const Natural& c, Visit visit) {
   const int N = 2 * c.n;
@@ -209,6 +234,8 @@ void kkt_pattern(const Natural& c, Visit visit) {
   row(c.n, 0);
   row(c.n + 1, 0);
   if (c.roller >= 0) row(c.n + 2, c.roller);
+  for (std::size_t i = 0; i < c.pins.size(); ++i)
+    for (int a = 0; a < 2; ++a) row(c.pins_row() + 2 * static_cast<int>(i) + a, c.pins[i]);
 }
 
 }  // namespace
@@ -228,7 +255,7 @@ BandedKkt::BandedKkt(const Natural& c) : perm_(Eigen::VectorXi::Constant(c.size(
   const int band = next;
   for (int k : {c.n - 1, 0}) put_hinge(k);
   perm_(N + c.n - 1) = next++;
-  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller
+  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller, further pins
   band_ = detail::BorderedBand(band, c.size() - band, [&](auto mark) {
     kkt_pattern(c, [&](int i, int j) { mark(perm_[i], perm_[j]); });
   });

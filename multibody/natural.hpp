@@ -30,7 +30,12 @@ struct Natural {
   int roller = -1;
   int load = 0;             ///< loaded hinge
   Eigen::Vector2d F;        ///< the dead force, N
-  int rows() const { return n + 2 + (roller >= 0 ? 1 : 0); }
+  /// Further pinned hinges and their rest positions (attachments.hpp): 2 rows each, after
+  /// the roller's, from pins_row().
+  std::vector<int> pins;
+  std::vector<Eigen::Vector2d> pinned_at;
+  int pins_row() const { return n + 2 + (roller >= 0 ? 1 : 0); }
+  int rows() const { return pins_row() + 2 * static_cast<int>(pins.size()); }
   int size() const { return 2 * n + rows(); }
   /// Radius of the hinges' circle, m (the scale of positions and their round-off).
   double radius() const;
@@ -51,6 +56,11 @@ struct Turn {
 };
 /// The turning angle, its gradient and, if `hessian` (else zero), its Hessian.
 Turn turn(const Vec6& y, bool hessian = true);
+/// The mean rotation from rest of the two links at a hinge, (alpha_a + alpha_b) / 2, alpha
+/// the angle from the link's rest direction (ea, eb: unit vectors) to the link (a = y_1 - y_0,
+/// b = y_2 - y_1), in (-pi, pi]; its gradient and, if `hessian`, its Hessian in y. The
+/// hinge's rotation that kr and a clamp act on (attachments.hpp).
+Turn mean_rotation(const Vec6& y, const Eigen::Vector2d& ea, const Eigen::Vector2d& eb, bool hessian = true);
 /// The turning angle alone (the same value as turn(y).theta).
 double turn_angle(const Vec6& y);
 /// The six coordinates of hinge k and its neighbours.
@@ -60,18 +70,19 @@ double spring_energy(const Natural& c, const Vec& x);
 Vec mass_times(const Natural& c, const Vec& v);
 /// The same into `out` (resized; no allocation when it has the size).
 void mass_times(const Natural& c, const Vec& v, Vec& out);
-/// Constraint values (rows: links, pin x, pin y, roller). O(n).
+/// Constraint values (rows: links, pin x, pin y, roller, further pins). O(n).
 Vec constraints(const Natural& c, const Vec& x);
 /// The same into `g` (resized; no allocation when it has the size).
 void constraints(const Natural& c, const Vec& x, Vec& g);
 /// The chain's KKT matrix, assembled straight into its factorization's storage: a
 /// detail::BorderedBand in a symmetric order of the unknowns (natural order: hinge
-/// coordinates 2k, 2k + 1, then the multipliers from 2n: links, pin, roller). The band:
+/// coordinates 2k, 2k + 1, then the multipliers from 2n: links, pin, roller, further pins). The band:
 /// link 0, hinge 1, link 1, ..., hinge n-2, link n-2 (chain order; widths 7, from the
 /// springs, which couple hinge k with k +- 2). The border: hinges n-1 and 0 (every spring
 /// and link that wraps around touches one of them), link n-1, the pin's two rows, the
-/// roller's row; only its four hinge coordinates and the roller's row have entries in the
-/// band. The LU (pivoting inside the band) fills only the band and the border: O(n) time
+/// roller's row, two rows per further pin; only its four hinge coordinates, the roller's
+/// and the further pins' rows have entries in the band (each such row one more solved
+/// border column: O(n) more per factorization). The LU (pivoting inside the band) fills only the band and the border: O(n) time
 /// and memory per assembly, factorization and solve, whatever the pivots (a general
 /// sparse LU with COLAMD ignores the pivoting that the statics' weak diagonal forces, and
 /// fills far beyond O(n)). The pattern (kkt_pattern in natural.cpp) is fixed at
@@ -140,8 +151,9 @@ class NewtonStop {
 };
 
 /// The chain's static equilibrium in hinge positions for the continuation driver
-/// (statics_natural.cpp): one BandedKkt factorization per Newton iteration, O(n).
-std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::StaticOptions& st,
-                                                              double depth);
+/// (statics_natural.cpp), with the terms of `spec` (attachments.hpp) and every load of
+/// `loads` (loading.hpp): one BandedKkt factorization per Newton iteration, O(n).
+std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::RingSpec& spec,
+                                                              const ring::Loads& loads, double depth);
 
 }  // namespace multibody::natural

@@ -254,7 +254,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
   if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
-    eq = natural::static_equilibrium(ch, statics, depth);
+    eq = natural::static_equilibrium(ch, spec, statics.loads, depth);
   else
     eq = std::make_unique<AngleStatics>(ch, spec, statics.loads, depth);
   paths::Continuation policy{statics.steps};

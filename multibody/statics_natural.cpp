@@ -1,31 +1,51 @@
 // Nonlinear statics on the O(n) path: the chain's equilibrium in hinge positions
-// (natural.hpp), grad V(x) + G(x)^T lambda = s F, c(x) = 0, for the continuation driver.
+// (natural.hpp), grad V(x) + s grad Pi(x) + G(x)^T lambda = 0, c(x) = 0, for the
+// continuation driver. V: the hinge springs and the terms of attachments.hpp, Pi: the loads
+// of loading.hpp, each taken on hinge positions from the one place it is written (with
+// p_n = p_0 for the loads' closing hinge): every block couples a hinge with itself or its
+// neighbours, inside the springs' band.
 
+#include "multibody/attachments.hpp"
 #include "multibody/dynamics_model.hpp"
+#include "multibody/loading.hpp"
 #include "multibody/natural.hpp"
 
 namespace multibody::natural {
 namespace {
 
-/// Unknowns z = (x, lambda): hinge positions, then the multipliers (links, pin, roller).
-/// The KKT matrix J, constraint rows and multipliers scaled by kappa = K / l^2 (the
-/// springs' stiffness scale), by the banded factorization (BandedKkt, O(n)); the arc's
-/// border [J c; w^T ws] (c = dR/ds = (-F, 0)) by block elimination with one more solve
+/// The natural model of `chain` with the further pins of `terms` (the loads are Loading's).
+Natural with_pins(const Chain& chain, const detail::Attachments& terms) {
+  Natural c = make_natural(chain, chain.anchor_deg(), Eigen::Vector2d::Zero());
+  c.pins = terms.pinned_hinges();
+  for (int h : c.pins) c.pinned_at.push_back(chain.hinge_rest(h));
+  return c;
+}
+
+/// Unknowns z = (x, lambda): hinge positions, then the multipliers (links, pin, roller,
+/// further pins). The KKT matrix J, constraint rows and multipliers scaled by kappa = K / l^2
+/// (the springs' stiffness scale), by the banded factorization (BandedKkt, O(n)); the arc's
+/// border [J c; w^T ws] (c = dR/ds = (grad Pi, 0)) by block elimination with one more solve
 /// per factorization, b = J^-1 c: y = a - y_s b with a = J^-1 rhs and
 /// y_s = (rhs_s - w . a) / (ws - w . b). J is singular only at the limit point itself,
 /// which the arc steps land on with probability zero; their Newton corrects the round-off
 /// that its near-singularity brings.
 class PositionStatics : public detail::StaticEquilibrium {
  public:
-  PositionStatics(const Chain& chain, const ring::StaticOptions& st, double depth)
+  PositionStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
       : StaticEquilibrium(chain, depth),
-        c_(make_natural(chain, ring::one_point_load(st.loads, "static", "multibody").angle,
-                        Eigen::Vector2d(st.loads.points.front().force[0], st.loads.points.front().force[1]))),
+        terms_(chain, spec),
+        loads_(chain, spec, loads, "static"),
+        c_(with_pins(chain, terms_)),
         N_(2 * c_.n),
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),
         kkt_(c_),
-        stop_(c_.radius()) {}
+        stop_(c_.radius()) {
+    for (int k = 0; k < c_.n; ++k) {
+      const Eigen::Vector2d a = chain.hinge_rest((k + 1) % c_.n) - chain.hinge_rest(k);
+      link0_.push_back(a.normalized());
+    }
+  }
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
 
@@ -33,11 +53,37 @@ class PositionStatics : public detail::StaticEquilibrium {
     const Vec x = s.z.head(N_), lambda = s.z.tail(c_.rows());
     kkt_.clear();
     Vec rx = Vec::Zero(N_);
-    rx.segment<2>(2 * c_.load) -= s.s * c_.F;
     for (int k = 0; k < c_.n; ++k) {
-      const Turn tk = turn(local(c_, x, k));
+      const Vec6 y = local(c_, x, k);
+      const Turn tk = turn(y);
       const double d = tk.theta - c_.theta0;
       add_spring(c_, k, c_.K * d * tk.d, c_.K * (tk.d * tk.d.transpose() + d * tk.dd), rx, kkt_);
+      // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
+      if (const double kr = terms_.rotation_stiffness(k); kr > 0.0) {
+        const Turn m = mean_rotation(y, link0_[(k + c_.n - 1) % c_.n], link0_[k]);
+        add_spring(c_, k, kr * m.theta * m.d, kr * (m.d * m.d.transpose() + m.theta * m.dd), rx, kkt_);
+      }
+      // The foundation and the translational springs (attachments.hpp).
+      const Eigen::Matrix2d& B = terms_.hinge_stiffness(k);
+      if (!B.isZero()) {
+        rx.segment<2>(2 * k) += terms_.hinge_force(k, hinge(x, k));
+        const int dofs[2] = {2 * k, 2 * k + 1};
+        kkt_.add(dofs, B);
+      }
+    }
+    // The loads (loading.hpp) at p_0 .. p_n = p_0: the hinge gradient is dR/ds.
+    Eigen::Matrix2Xd p(2, c_.n + 1);
+    p.leftCols(c_.n) = Eigen::Map<const Eigen::Matrix2Xd>(x.data(), 2, c_.n);
+    p.col(c_.n) = p.col(0);
+    std::vector<detail::Loading::Block> blocks;
+    const Eigen::Matrix2Xd g = loads_.hinge_gradient(p, loads_.shape_dependent() ? &blocks : nullptr);
+    Vec dRds = Vec::Zero(S_);
+    for (int k = 0; k <= c_.n; ++k) dRds.segment<2>(2 * (k % c_.n)) += g.col(k);
+    rx += s.s * dRds.head(N_);
+    for (const detail::Loading::Block& b : blocks) {
+      const int dofs[4] = {2 * (b.k % c_.n), 2 * (b.k % c_.n) + 1, 2 * (b.m % c_.n), 2 * (b.m % c_.n) + 1};
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) kkt_.add(dofs[i], dofs[2 + j], s.s * b.h(i, j));
     }
     add_constraint_curvature(c_, lambda, 1.0, kkt_);
     add_constraint_jacobian(c_, x, N_, true, kappa_, kkt_, &lambda, &rx);
@@ -45,8 +91,6 @@ class PositionStatics : public detail::StaticEquilibrium {
     r.resize(S_);
     r << rx, constraints(c_, x);
     if (!r.allFinite() || !kkt_.factor()) return false;
-    Vec dRds = Vec::Zero(S_);
-    dRds.segment<2>(2 * c_.load) = -c_.F;
     b_ = kkt_.solve(dRds);
     w_ = w;
     ws_ = ws;
@@ -79,20 +123,23 @@ class PositionStatics : public detail::StaticEquilibrium {
   }
 
  private:
+  const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
+  const detail::Loading loads_;      ///< point loads, pressure, gravity
   const Natural c_;
   const int N_, S_;
   const double kappa_;
   BandedKkt kkt_;
   NewtonStop stop_;
+  std::vector<Eigen::Vector2d> link0_;  ///< the links' rest directions
   Vec b_, w_;  ///< J^-1 dR/ds (scaled unknowns) and the border row of the last factorization
   double ws_ = 0.0;
 };
 
 }  // namespace
 
-std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::StaticOptions& st,
-                                                              double depth) {
-  return std::make_unique<PositionStatics>(chain, st, depth);
+std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::RingSpec& spec,
+                                                              const ring::Loads& loads, double depth) {
+  return std::make_unique<PositionStatics>(chain, spec, loads, depth);
 }
 
 }  // namespace multibody::natural

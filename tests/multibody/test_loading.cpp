@@ -151,9 +151,12 @@ TEST(MultibodyLoading, HangingRingMeetsTheSelfWeightSeries) {
   EXPECT_LT(sag.err.back(), 2e-3);  // the chain's O((2 pi / n)^2): 1.2e-3 measured at n = 160
 }
 
-// Loads beyond one point load need the dense path: "auto" takes it, a forced "sparse" refuses.
+// The O(n) statics takes every load (tests/multibody/test_statics_terms.cpp), and "auto"
+// takes it above the crossover; a free ring (its pin is hinge 0's constraint rows) it
+// refuses when forced, naming the key, and "auto" keeps that dense.
 TEST(MultibodyLoading, TheSparseStaticsRefusesWhatItCannotAssemble) {
-  ring::RingSpec spec = ringtest::pin_roller_ring();
+  ring::RingSpec spec = ringtest::free_ring();
+  spec.foundation = {1e3, 1e3};
   ring::StaticOptions st;
   st.loads.pressure = {1.0, Kind::follower};
   st.record = {0.0};
@@ -162,10 +165,15 @@ TEST(MultibodyLoading, TheSparseStaticsRefusesWhatItCannotAssemble) {
   o.method = ring::MultibodyOptions::Method::sparse;
   try {
     multibody::solve_static(spec, o, st);
-    ADD_FAILURE() << "the O(n) statics took a pressure";
+    ADD_FAILURE() << "the O(n) statics took a free ring";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("static.pressure"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("supports.pin"), std::string::npos) << e.what();
   }
+  o.method = ring::MultibodyOptions::Method::automatic;
+  o.n = 4000;
+  EXPECT_EQ(multibody::backend(o, spec, st.loads, multibody::Analysis::statics), multibody::Backend::dense);
+  EXPECT_EQ(multibody::backend(o, ringtest::pin_roller_ring(), st.loads, multibody::Analysis::statics),
+            multibody::Backend::banded);
 }
 
 // A pressure pulse of each kind with gravity and two point loads (the dense Newmark path):
