@@ -51,6 +51,17 @@ inline ring::ResponseOptions forced_scene(ring::ResponseOptions::Integrator inte
   return r;
 }
 
+/// The statics of a ring hanging under its own weight, g along -y scaled so that the thin
+/// ring's sag is about `sag` R (ring::closed_form::hanging_ring_self_weight), one load step,
+/// recorded at 0, 180 and 270 deg.
+inline ring::StaticOptions hanging_statics(const ring::RingSpec& spec, double sag) {
+  ring::StaticOptions st;
+  st.loads.gravity = {0.0, -sag * spec.EI() / (spec.rhoA() * std::pow(spec.radius, 3))};
+  st.steps = 1;
+  st.record = {0.0, 180.0, 270.0};
+  return st;
+}
+
 /// The worst |T + V - W|, the largest |work|, the largest constraint residual and the
 /// mean Newton iterations per step of a history.
 struct Balance {

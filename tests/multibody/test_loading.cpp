@@ -13,6 +13,7 @@
 #include "multibody/statics.hpp"
 #include "ring/closed_form.hpp"
 #include "support/paper.hpp"
+#include "tests/multibody/common.hpp"
 
 namespace {
 
@@ -131,12 +132,8 @@ TEST(MultibodyLoading, HangingRingMeetsTheSelfWeightSeries) {
   const ring::RingSpec spec = ringtest::pinned_ring(90.0);
   ASSERT_EQ(ring::static_rigid_modes(spec, ring::Loads{{}, {}, {0.0, -1.0}}), 0);
   ASSERT_EQ(ring::static_rigid_modes(spec, ring::Loads{{}, {}, {0.0, 1.0}}), 1) << "standing on its pin: unstable";
-  const double g = 1e-6 * spec.EI() / (spec.rhoA() * std::pow(spec.radius, 3));
-  const auto exact = ring::closed_form::hanging_ring_self_weight(spec, g);
-  ring::StaticOptions st;
-  st.loads.gravity = {0.0, -g};
-  st.steps = 1;
-  st.record = {0.0, 180.0, 270.0};
+  const ring::StaticOptions st = mbtest::hanging_statics(spec, 1e-6);
+  const auto exact = ring::closed_form::hanging_ring_self_weight(spec, -st.loads.gravity[1]);
   Fit sag, across;
   for (int n : {40, 80, 160}) {
     ring::MultibodyOptions o;
