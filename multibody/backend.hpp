@@ -55,13 +55,10 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
 
 /// What the O(n) statics cannot take of `spec`, as the words of a refusal ("" when it takes
 /// the scene): it assembles every term (attachments.hpp: foundation, springs, clamp,
-/// further pins; point masses weigh under gravity) and every load (loading.hpp), on hinge
-/// positions (statics_natural.cpp), but has neither shear angles nor a free ring (its pin
-/// is hinge 0's constraint rows). O(1).
+/// further pins; point masses weigh under gravity) and every load (loading.hpp) on hinge
+/// positions (statics_natural.cpp), pinned or free, but has no shear angles. O(1).
 inline std::string banded_statics_lacks(const ring::RingSpec& spec) {
-  if (spec.theory == ring::Theory::timoshenko) return "Timoshenko chain (ring.theory = \"timoshenko\")";
-  if (spec.supports.free()) return "free ring (no supports.pin; its pin is hinge 0's rows)";
-  return "";
+  return spec.theory == ring::Theory::timoshenko ? "Timoshenko chain (ring.theory = \"timoshenko\")" : "";
 }
 
 /// The backend of a nonlinear analysis under `loads`: "auto" also stays dense for what the

@@ -38,7 +38,7 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
-  // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp), a free ring.
+  // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
   if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
     if (const std::string lacks = banded_statics_lacks(spec); !lacks.empty())
       throw std::invalid_argument("multibody method = \"sparse\" (the O(n) statics) has no " + lacks +

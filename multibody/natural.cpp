@@ -19,6 +19,7 @@ Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d&
   c.K = chain.K();
   c.theta0 = 2.0 * kPi / c.n;
   c.pin = chain.hinge_rest(0);
+  c.pinned = !chain.free();
   if (const auto r = chain.roller_hinge()) {
     c.roller = *r;
     const Eigen::Vector2d d = (chain.hinge_rest(*r) - c.pin).normalized();
@@ -122,7 +123,7 @@ void mass_times(const Natural& c, const Vec& v, Vec& out) {
   }
 }
 
-/// Constraint values at x (rows: links, pin x, pin y, roller).
+/// Constraint values at x (rows: links, pin x, pin y, roller, further pins).
 Vec constraints(const Natural& c, const Vec& x) {
   Vec g;
   constraints(c, x, g);
@@ -135,8 +136,8 @@ void constraints(const Natural& c, const Vec& x, Vec& g) {
     const Eigen::Vector2d e = hinge(x, (i + 1) % c.n) - hinge(x, i);
     g(i) = (e.squaredNorm() - c.l * c.l) / (2.0 * c.l);
   }
-  g.segment<2>(c.n) = hinge(x, 0) - c.pin;
-  if (c.roller >= 0) g(c.n + 2) = c.nu.dot(hinge(x, c.roller) - c.pin);
+  if (c.pinned) g.segment<2>(c.n) = hinge(x, 0) - c.pin;
+  if (c.roller >= 0) g(c.roller_row()) = c.nu.dot(hinge(x, c.roller) - c.pin);
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     g.segment<2>(c.pins_row() + 2 * i) = hinge(x, c.pins[i]) - c.pinned_at[i];
 }
@@ -159,10 +160,12 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
       put(i, 2 * j + a, e(a));
     }
   }
-  put(c.n, 0, 1.0);
-  put(c.n + 1, 1, 1.0);
+  if (c.pinned) {
+    put(c.n, 0, 1.0);
+    put(c.n + 1, 1, 1.0);
+  }
   if (c.roller >= 0)
-    for (int a = 0; a < 2; ++a) put(c.n + 2, 2 * c.roller + a, c.nu(a));
+    for (int a = 0; a < 2; ++a) put(c.roller_row(), 2 * c.roller + a, c.nu(a));
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     for (int a = 0; a < 2; ++a) put(c.pins_row() + 2 * static_cast<int>(i) + a, 2 * c.pins[i] + a, 1.0);
 }
@@ -231,9 +234,11 @@ void kkt_pattern(const Natural& c, Visit visit) {
     row(k, k);
     row(k, hk[2]);
   }
-  row(c.n, 0);
-  row(c.n + 1, 0);
-  if (c.roller >= 0) row(c.n + 2, c.roller);
+  if (c.pinned) {
+    row(c.n, 0);
+    row(c.n + 1, 0);
+  }
+  if (c.roller >= 0) row(c.roller_row(), c.roller);
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     for (int a = 0; a < 2; ++a) row(c.pins_row() + 2 * static_cast<int>(i) + a, c.pins[i]);
 }

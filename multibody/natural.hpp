@@ -27,6 +27,7 @@ struct Natural {
   int n = 0;
   double l = 0, m = 0, Jr = 0, K = 0, theta0 = 0;
   Eigen::Vector2d pin, nu;  ///< pin position; unit normal of the roller's line
+  bool pinned = true;       ///< hinge 0 pinned (2 rows after the links'); false: a free ring
   int roller = -1;
   int load = 0;             ///< loaded hinge
   Eigen::Vector2d F;        ///< the dead force, N
@@ -34,7 +35,8 @@ struct Natural {
   /// the roller's, from pins_row().
   std::vector<int> pins;
   std::vector<Eigen::Vector2d> pinned_at;
-  int pins_row() const { return n + 2 + (roller >= 0 ? 1 : 0); }
+  int roller_row() const { return n + (pinned ? 2 : 0); }
+  int pins_row() const { return roller_row() + (roller >= 0 ? 1 : 0); }
   int rows() const { return pins_row() + 2 * static_cast<int>(pins.size()); }
   int size() const { return 2 * n + rows(); }
   /// Radius of the hinges' circle, m (the scale of positions and their round-off).
@@ -70,7 +72,7 @@ double spring_energy(const Natural& c, const Vec& x);
 Vec mass_times(const Natural& c, const Vec& v);
 /// The same into `out` (resized; no allocation when it has the size).
 void mass_times(const Natural& c, const Vec& v, Vec& out);
-/// Constraint values (rows: links, pin x, pin y, roller, further pins). O(n).
+/// Constraint values (rows: links, pin x, pin y (if pinned), roller, further pins). O(n).
 Vec constraints(const Natural& c, const Vec& x);
 /// The same into `g` (resized; no allocation when it has the size).
 void constraints(const Natural& c, const Vec& x, Vec& g);
