@@ -2,7 +2,9 @@
 // pins, a clamp, elastic supports, point masses, the Winkler foundation), each written once
 // as a term on hinge displacements, with its energy, gradient and Hessian in the chain's
 // coordinates at any configuration q; the linear modes evaluate them at rest (linear_terms),
-// the dense statics along the path.
+// the dense statics along the path. The O(n) statics (statics_natural.cpp) takes the same
+// terms by hinge (hinge_stiffness, hinge_force, rotation_stiffness, pinned_hinges) on hinge
+// positions.
 //
 // ## Terms (hinge k at rest P_k, displacement u_k = p_k(q) - P_k)
 // - foundation: a spring l (k_r r_k r_k^T + k_t t_k t_k^T) at every hinge (r_k, t_k the

@@ -1,6 +1,7 @@
 // Internal to multibody/: the loads of a static analysis on the chain (ring/spec.hpp, Loads:
 // point loads, uniform pressure of the three kinds, gravity), written once as a potential
-// Pi(q) of the hinge positions with its gradient and Hessian in the chain's coordinates.
+// Pi(q) of the hinge positions with its gradient and Hessian in the chain's coordinates; the
+// O(n) statics takes the same hinge gradient and blocks on hinge positions (hinge_gradient).
 // Equilibrium at load factor s: dV/dq + s dPi/dq + G^T lambda = 0.
 //
 // ## The loads on straight rigid segments (segment j from hinge p_j to p_{j+1}, length

@@ -1,13 +1,15 @@
 // Geometrically nonlinear statics of the rigid-segment chain: equilibrium of the
-// hinge springs with a dead point load under the closure and support constraints,
+// hinge springs and the terms of attachments.hpp (V) under the loads of loading.hpp (Phi),
+// the closure and support constraints,
 //
-//   K theta + G(phi)^T lambda = s Phi(phi),   g(phi) = 0,   s: load factor 0 -> 1,
+//   K theta + dV/dphi + G(phi)^T lambda = s Phi(phi),   g(phi) = 0,   s: load factor 0 -> 1,
 //
 // followed from rest by the shared continuation driver (paths/continuation.hpp: load
 // stepping with full Newton, Crisfield's arc length through limit points, the limit
-// point located). Either backend supplies the equilibrium: the dense path in the
-// paper's segment angles (analytic tangent K + sum_k lambda_k Hess g_k - s dPhi/dphi,
-// the bordered matrix by dense LU), the O(n) path in hinge positions (natural.hpp: the
+// point located). Either backend supplies the equilibrium, with every term and load (the
+// O(n) path has no Timoshenko chain): the dense path in the paper's segment angles
+// (analytic tangent K + Hess V + sum_k lambda_k Hess g_k - s dPhi/dphi, the bordered
+// matrix by dense LU), the O(n) path in hinge positions (natural.hpp: the
 // banded KKT factorization, the arc's border by block elimination). The arc length is
 // measured on the angles (dense) or the positions (O(n)); a step may turn no segment by
 // more than detail::kBasin. Self-contact (non-adjacent segments closer than the section
@@ -111,8 +113,8 @@ class StaticEquilibrium : public paths::Equilibrium {
 /// number of accepted load steps, the total Newton iterations, and every hinge's
 /// deformed position. Cost: O(n^3) per Newton iteration on the dense path, O(n) on the
 /// O(n) path (multibody.method = "sparse", or "auto" from kSparseStaticsCrossover); both
-/// pass limit points. Requires a pin and a roller (otherwise the rigid rotation about the
-/// pin is free). Throws std::invalid_argument for inputs that can never work and
+/// pass limit points. Requires the rigid motions held (ring::static_rigid_modes = 0: a pin
+/// and a roller, or springs, a foundation, gravity below a single pin). Throws std::invalid_argument for inputs that can never work and
 /// ring::NumericalError when the equilibrium path does not reach the full load (the ring
 /// touches itself; no return past a limit point).
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
