@@ -104,9 +104,9 @@ SolverEntry multibody_entry() {
   // response 42-47 n^2, dense statics 21 n^2 (50-56 n^2 since each accepted step counts the
   // tangent's unstable directions: T, the kernel basis Z, Z^T T Z and the eigensolver's
   // workspace; n = 800, 400), O(n) response 1.54-1.64 KB (newmark, the
-  // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 1.00-1.02 KB per
+  // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 1.15 KB per
   // segment (n = 4 10^4, 10^5: the continuation driver's states, tangent and bordered
-  // solve; 0.83-0.84 KB with plain load stepping). Used: those with 3-20 % to spare.
+  // solve, and since it takes every term, its terms and loads by hinge; 1.00-1.02 KB before). Used: those with 3-20 % to spare.
   e.memory = [](const ring::Scene& s, int count) {
     const double n = s.multibody.n;
     auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, s.ring, a) == multibody::Backend::banded; };
@@ -127,11 +127,16 @@ SolverEntry multibody_entry() {
     // (1.11, 1.24).
     const bool shear = s.ring.theory == ring::Theory::timoshenko;
     if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * N * N);
-    if (s.statics)
+    if (s.statics) {
+      // The O(n) statics with terms or loads beyond the paper's (Attachments, Loading, their
+      // hinge blocks): 1.50 KB per segment measured (n = 4 10^4, 10^5: foundation, springs,
+      // central pressure, gravity), 1.15 KB without.
+      const bool terms = !s.ring.paper_terms_only() || !s.statics->loads.points_only();
       bytes = std::max(bytes, multibody::backend(s.multibody, s.ring, s.statics->loads, multibody::Analysis::statics) ==
                                       multibody::Backend::banded
-                                  ? 1100.0 * n
+                                  ? (terms ? 1750.0 : 1300.0) * n
                                   : (shear ? 68.0 : 60.0) * n * n);
+    }
     return bytes;
   };
   e.check_modes = [](const ring::Scene& s) {

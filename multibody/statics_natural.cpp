@@ -40,12 +40,7 @@ class PositionStatics : public detail::StaticEquilibrium {
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),
         kkt_(c_),
-        stop_(c_.radius()) {
-    for (int k = 0; k < c_.n; ++k) {
-      const Eigen::Vector2d a = chain.hinge_rest((k + 1) % c_.n) - chain.hinge_rest(k);
-      link0_.push_back(a.normalized());
-    }
-  }
+        stop_(c_.radius()) {}
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
 
@@ -55,14 +50,10 @@ class PositionStatics : public detail::StaticEquilibrium {
     Vec rx = Vec::Zero(N_);
     for (int k = 0; k < c_.n; ++k) {
       const Vec6 y = local(c_, x, k);
-      const Turn tk = turn(y);
-      const double d = tk.theta - c_.theta0;
-      add_spring(c_, k, c_.K * d * tk.d, c_.K * (tk.d * tk.d.transpose() + d * tk.dd), rx, kkt_);
+      add_angle_spring(k, c_.K, turn(y), c_.theta0, rx);
       // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
-      if (const double kr = terms_.rotation_stiffness(k); kr > 0.0) {
-        const Turn m = mean_rotation(y, link0_[(k + c_.n - 1) % c_.n], link0_[k]);
-        add_spring(c_, k, kr * m.theta * m.d, kr * (m.d * m.d.transpose() + m.theta * m.dd), rx, kkt_);
-      }
+      if (const double kr = terms_.rotation_stiffness(k); kr > 0.0)
+        add_angle_spring(k, kr, mean_rotation(y, rest_link(k - 1), rest_link(k)), 0.0, rx);
       // The foundation and the translational springs (attachments.hpp).
       const Eigen::Matrix2d& B = terms_.hinge_stiffness(k);
       if (!B.isZero()) {
@@ -71,15 +62,16 @@ class PositionStatics : public detail::StaticEquilibrium {
         kkt_.add(dofs, B);
       }
     }
-    // The loads (loading.hpp) at p_0 .. p_n = p_0: the hinge gradient is dR/ds.
+    // The loads (loading.hpp) at p_0 .. p_n = p_0: the hinge gradient is dR/ds, kept in b_
+    // until the factorization solves for J^-1 dR/ds in place.
     Eigen::Matrix2Xd p(2, c_.n + 1);
     p.leftCols(c_.n) = Eigen::Map<const Eigen::Matrix2Xd>(x.data(), 2, c_.n);
     p.col(c_.n) = p.col(0);
     std::vector<detail::Loading::Block> blocks;
     const Eigen::Matrix2Xd g = loads_.hinge_gradient(p, loads_.shape_dependent() ? &blocks : nullptr);
-    Vec dRds = Vec::Zero(S_);
-    for (int k = 0; k <= c_.n; ++k) dRds.segment<2>(2 * (k % c_.n)) += g.col(k);
-    rx += s.s * dRds.head(N_);
+    b_.setZero(S_);
+    for (int k = 0; k <= c_.n; ++k) b_.segment<2>(2 * (k % c_.n)) += g.col(k);
+    rx += s.s * b_.head(N_);
     for (const detail::Loading::Block& b : blocks) {
       const int dofs[4] = {2 * (b.k % c_.n), 2 * (b.k % c_.n) + 1, 2 * (b.m % c_.n), 2 * (b.m % c_.n) + 1};
       for (int i = 0; i < 2; ++i)
@@ -91,7 +83,8 @@ class PositionStatics : public detail::StaticEquilibrium {
     r.resize(S_);
     r << rx, constraints(c_, x);
     if (!r.allFinite() || !kkt_.factor()) return false;
-    b_ = kkt_.solve(dRds);
+    Vec scratch;
+    kkt_.solve(b_, scratch);
     w_ = w;
     ws_ = ws;
     return b_.allFinite();
@@ -123,6 +116,19 @@ class PositionStatics : public detail::StaticEquilibrium {
   }
 
  private:
+  /// Adds the energy k (t.theta - t0)^2 / 2 of an angle t at hinge `at` (its force and
+  /// Jacobian) to the residual rx and the KKT matrix.
+  void add_angle_spring(int at, double k, const Turn& t, double t0, Vec& rx) {
+    const double d = t.theta - t0;
+    add_spring(c_, at, k * d * t.d, k * (t.d * t.d.transpose() + d * t.dd), rx, kkt_);
+  }
+
+  /// The rest direction of link k (cyclic), from hinge k to k + 1.
+  Eigen::Vector2d rest_link(int k) const {
+    k = (k + c_.n) % c_.n;
+    return (chain_.hinge_rest((k + 1) % c_.n) - chain_.hinge_rest(k)).normalized();
+  }
+
   const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
   const detail::Loading loads_;      ///< point loads, pressure, gravity
   const Natural c_;
@@ -130,7 +136,6 @@ class PositionStatics : public detail::StaticEquilibrium {
   const double kappa_;
   BandedKkt kkt_;
   NewtonStop stop_;
-  std::vector<Eigen::Vector2d> link0_;  ///< the links' rest directions
   Vec b_, w_;  ///< J^-1 dR/ds (scaled unknowns) and the border row of the last factorization
   double ws_ = 0.0;
 };
