@@ -62,6 +62,21 @@ inline ring::StaticOptions hanging_statics(const ring::RingSpec& spec, double sa
   return st;
 }
 
+/// The radial displacement under a small radial point load F of the free inextensible ring
+/// on a foundation, at the load: the inextensional Fourier modes a_k (w = a_k cos k theta,
+/// v = -a_k sin(k theta)/k) decouple, with stiffness K_k = pi (EI (k^2 - 1)^2 / R^3 + R (k_r +
+/// k_t / k^2)) and load F, so w(0) = sum_{k>=1} F / K_k (k = 0 has no inextensional radial
+/// mode), summed to k = 10^5 (the tail ~ R^3 / (3 EI k^3) is below 1e-15 of it).
+inline double foundation_point_load_series(const ring::RingSpec& spec, double F) {
+  double w = 0.0;
+  for (int k = 1; k <= 100000; ++k) {
+    const double k2 = double(k) * k;
+    w += F / (M_PI * (spec.EI() * (k2 - 1) * (k2 - 1) / std::pow(spec.radius, 3) +
+                      spec.radius * (spec.foundation.radial + spec.foundation.tangential / k2)));
+  }
+  return w;
+}
+
 /// The worst |T + V - W|, the largest |work|, the largest constraint residual and the
 /// mean Newton iterations per step of a history.
 struct Balance {

@@ -205,6 +205,35 @@ TEST(MultibodyStaticsTermsLargeN, SqueezeUnderPressureMeetsTheSeriesAtOrderTwo) 
   }
 }
 
+// The tyre's case: a free ring on a foundation under a small radial point load against the
+// inextensional Fourier series (mbtest::foundation_point_load_series), as test_attachments.cpp's
+// StaticsOnAFoundationConvergeToTheFourierSeries at n = 80 .. 320, here at n = 1000 .. 10^4 on
+// the O(n) path. The equilibrium's nonlinear part is -0.12 w/R relative (measured), above the
+// chain's error at large n for any load the solve resolves (w(F = 1 N) = 5.6e-6 R: -7e-7), so
+// the linear part is taken by Richardson in the load, (4 u(F) - u(2F)) / 2, exact for
+// u = a F + b F^2. F = 10 N (w ~ 6e-5 R) keeps the O(F^3) part and the solve's ~1e-12 R below
+// 1 % of the chain's error. Measured e n^2 = 11.47, 11.47, 11.47, 11.45 at n = 1000, 2000,
+// 4000, 10^4.
+TEST(MultibodyStaticsTermsLargeN, FreeRingOnAFoundationMeetsTheFourierSeriesAtOrderTwo) {
+  ring::RingSpec spec = ringtest::free_ring();
+  spec.foundation = {500.0, 300.0};
+  const double F = 10.0;
+  const double exact = mbtest::foundation_point_load_series(spec, F);
+  std::vector<double> err;
+  for (int n : kLarge) {
+    double u[2];
+    for (int i : {0, 1}) {
+      const ring::StaticOptions st = recorded({{0.0, {(i + 1) * F, 0.0}}}, 1);
+      ASSERT_EQ(multibody::backend(chain_options(n, Method::automatic), spec, st.loads, multibody::Analysis::statics),
+                multibody::Backend::banded);
+      u[i] = multibody::solve_static(spec, chain_options(n, Method::automatic), st).displacements[0].ux;
+    }
+    err.push_back(std::abs((4 * u[0] - u[1]) / 2 - exact) / exact);
+  }
+  EXPECT_NEAR(fitted_order(kLarge, err), 2.0, 0.05) << err[0] << " " << err[1] << " " << err[2] << " " << err[3];
+  EXPECT_LT(err.back(), 1.2e-7);  // 11.5 / n^2
+}
+
 // The ring on a foundation with translational springs, pinned (with a roller at the load)
 // and free (a tyre: the foundation alone holds it, under follower pressure too): the first
 // two scenes, P R^2/EI ~ 2, nonlinear equilibria without a closed form, converge at order 2
