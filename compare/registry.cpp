@@ -132,8 +132,7 @@ SolverEntry multibody_entry() {
       // hinge blocks): 1.50 KB per segment measured (n = 4 10^4, 10^5: foundation, springs,
       // central pressure, gravity), 1.15 KB without.
       const bool terms = !s.ring.paper_terms_only() || !s.statics->loads.points_only();
-      bytes = std::max(bytes, multibody::backend(s.multibody, s.ring, s.statics->loads, multibody::Analysis::statics) ==
-                                      multibody::Backend::banded
+      bytes = std::max(bytes, multibody::backend(s.multibody, s.ring, *s.statics) == multibody::Backend::banded
                                   ? (terms ? 1750.0 : 1300.0) * n
                                   : (shear ? 68.0 : 60.0) * n * n);
     }

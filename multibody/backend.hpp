@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <string>
 
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
@@ -75,6 +76,15 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
   if (options.method == ring::MultibodyOptions::Method::automatic && !loads.beyond_one_point("").empty())
     return Backend::dense;
   return backend(options, spec, analysis);
+}
+
+/// The statics' backend: the rule above under `statics.loads`, and "auto" also stays dense
+/// for static.path = true, whose branch switching takes the dense tangent's eigenvectors
+/// (check_static refuses it on a forced "sparse"). O(1).
+inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec,
+                       const ring::StaticOptions& statics) {
+  if (options.method == ring::MultibodyOptions::Method::automatic && statics.path) return Backend::dense;
+  return backend(options, spec, statics.loads, Analysis::statics);
 }
 
 /// The modes' backend for `count` modes of `spec`: "auto" also stays dense when the pairs

@@ -39,7 +39,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                   const ring::StaticOptions& statics) {
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
   // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
-  if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded) {
+  if (backend(options, spec, statics) == Backend::banded) {
     if (const std::string lacks = banded_statics_lacks(spec); !lacks.empty())
       throw std::invalid_argument("multibody method = \"sparse\" (the O(n) statics) has no " + lacks +
                                   ": set multibody.method = \"dense\" or \"auto\"");

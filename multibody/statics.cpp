@@ -253,7 +253,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   const Chain ch(spec, options, anchor);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
-  if (backend(options, spec, statics.loads, Analysis::statics) == Backend::banded)
+  if (backend(options, spec, statics) == Backend::banded)
     eq = natural::static_equilibrium(ch, spec, statics.loads, depth);
   else
     eq = std::make_unique<AngleStatics>(ch, spec, statics.loads, depth);

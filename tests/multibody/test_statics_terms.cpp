@@ -262,3 +262,35 @@ TEST(MultibodyStaticsTermsLargeN, RingsOnAFoundationConvergeAtOrderTwoToSixteenT
 }
 
 }  // namespace
+
+namespace {
+
+// The statics' backend rule (backend.hpp): "auto" takes the O(n) path from the crossover
+// for every term and load, stays dense for the Timoshenko chain and for static.path = true
+// (branch switching takes the dense tangent's eigenvectors); a forced "sparse" refuses
+// those two, naming the key.
+TEST(MultibodyStaticsTermsBackend, AutoTakesTheOnPathForEveryTermAndRefusesOnlyWhatItLacks) {
+  Scene s = scenes(8)[1];  // the free ring on a foundation under follower pressure
+  const ring::MultibodyOptions at = chain_options(multibody::sparse_crossover(multibody::Analysis::statics),
+                                                  Method::automatic);
+  EXPECT_EQ(multibody::backend(at, s.spec, s.statics), multibody::Backend::banded);
+  EXPECT_EQ(multibody::backend(chain_options(999, Method::automatic), s.spec, s.statics), multibody::Backend::dense);
+  s.statics.path = true;
+  EXPECT_EQ(multibody::backend(at, s.spec, s.statics), multibody::Backend::dense);
+  auto refusal = [](const ring::RingSpec& spec, const ring::StaticOptions& st) -> std::string {
+    try {
+      multibody::check_static(spec, chain_options(40, Method::sparse), st);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(refusal(s.spec, s.statics).find("static.path"), std::string::npos) << refusal(s.spec, s.statics);
+  s.statics.path = false;
+  EXPECT_EQ(refusal(s.spec, s.statics), "");
+  s.spec.theory = ring::Theory::timoshenko;
+  EXPECT_EQ(multibody::backend(at, s.spec, s.statics), multibody::Backend::dense);
+  EXPECT_NE(refusal(s.spec, s.statics).find("ring.theory"), std::string::npos) << refusal(s.spec, s.statics);
+}
+
+}  // namespace
