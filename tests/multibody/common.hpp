@@ -45,6 +45,13 @@ inline double loglog_slope(const std::vector<double>& x, const std::vector<doubl
   return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
+/// Options of an n-segment chain, every other option at its default.
+inline ring::MultibodyOptions segments(int n) {
+  ring::MultibodyOptions o;
+  o.n = n;
+  return o;
+}
+
 /// The reconstructed section-5 load (issue 7): a 20 kN step at C (0 deg) toward the pin,
 /// dt = 0.01 s, recorded points 0, 90, 180, 270 deg.
 inline ring::ResponseOptions forced_scene(ring::ResponseOptions::Integrator integrator, double t_end = 5.0) {
