@@ -139,10 +139,12 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
   int refinements = 0;
   if (o.reference) {
     // p-refinement (exponential convergence on these smooth, piecewise analytic modes),
-    // h-refinement once p reaches kMaxDegree. Stop when the largest relative
-    // change of the requested frequencies is below the tolerance.
-    double previous_change = 0.0;
-    bool refined = true;
+    // h-refinement once p reaches kMaxDegree. Stop when the largest relative change of the
+    // requested frequencies is below the tolerance, or when the current solution's error,
+    // extrapolated from the last two changes, is (modes.hpp, "Reference").
+    double previous_change = 0.0, before_previous = 0.0;
+    bool refined = !o.extensible;  // as the first solve above
+    bool previous_refined = false, previous_clean = false;
     for (;;) {
       if (++refinements > kReferenceMaxSteps)
         throw ring::NumericalError("fem: reference not converged after " + std::to_string(kReferenceMaxSteps) +
@@ -152,27 +154,38 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
         ++setup.degree;
       else
         setup.subdivisions *= 2;
-      // Raw pairs carry ~1e-7 round-off; refine them only once the changes get near it.
+      // Raw pairs carry ~1e-7 round-off; refine them once the change this step is expected
+      // to make (the last change times the last contraction) gets near it.
       // (The inextensible penalty and the Timoshenko ring's shear stiffness, kGA R^2/EI ~ 1e6
       // at depth/R = 1e-3, make raw pairs far noisier: always refine them; raw, a thin
       // Timoshenko ring's changes never fell below the tolerance and p ran to kMaxDegree.)
+      const double expected =
+          before_previous > 0 ? previous_change * std::min(1.0, previous_change / before_previous) : previous_change;
+      previous_refined = refined;
       refined = !o.extensible || spec.theory == ring::Theory::timoshenko ||
-                (refinements > 1 && previous_change < kRefineBelowChange);
+                (refinements > 1 && expected < kRefineBelowChange);
       Solved next = solve_once(spec, setup, o.extensible, count, false, refined, true);
       double change = 0.0;
       for (int i = 0; i < count; ++i)
         change = std::max(change, std::abs(next.result.omega[i] - s.result.omega[i]) / next.result.omega[i]);
       s = std::move(next);
-      if (change < o.tolerance) {
-        // The change is the error of the previous solution; with a contraction
-        // r = change / previous_change per step the current one has about change * r / (1 - r).
-        const double ratio = previous_change > 0 ? change / previous_change : 1.0;
+      // The change is the error of the previous solution; with a contraction
+      // r = change / previous_change per step the current one has about change r / (1 - r).
+      const double ratio = previous_change > 0 ? change / previous_change : 1.0;
+      const double extrapolated = ratio < 0.5 ? change * ratio / (1.0 - ratio) : change;
+      // The extrapolation is trusted when both changes are clean of the raw pairs' round-off
+      // (this one between refined pairs, the last one far above 1e-7) and contract fast.
+      const bool clean_now = refined && previous_refined;
+      const bool clean = clean_now && (previous_clean || previous_change > kRefineBelowChange / 10);
+      if (change < o.tolerance || (clean && ratio <= kTrustedContraction && extrapolated < o.tolerance)) {
         // Not below the refined solve's round-off: the free ring's k = 2..13 match the
         // closed form to ~1e-12, not better.
-        s.result.error_estimate = std::max(kRoundOffFloor, ratio < 0.5 ? change * ratio / (1.0 - ratio) : change);
+        s.result.error_estimate = std::max(kRoundOffFloor, extrapolated);
         break;
       }
+      before_previous = previous_change;
       previous_change = change;
+      previous_clean = clean_now;
     }
     if (keep_full || !refined) {
       const double estimate = s.result.error_estimate;

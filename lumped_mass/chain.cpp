@@ -66,11 +66,11 @@ int dof(const Chain& c, int j, int i) {
   return 2 * h + i % 2;
 }
 
-void add_terms(const Terms& terms, const Vec& u, double hess_scale, Springs& s) {
+void add_terms(const Terms& terms, const Vec& u, double hess_scale, Springs& s, HingeRotations hinges) {
   if (!terms.any_stiffness()) return;
-  s.energy += terms.energy(u);
-  terms.add_gradient(u, s.grad);
-  if (hess_scale != 0.0) terms.add_hessian(u, hess_scale, s.hess);
+  s.energy += terms.energy(u, hinges);
+  terms.add_gradient(u, s.grad, hinges);
+  if (hess_scale != 0.0) terms.add_hessian(u, hess_scale, s.hess, hinges);
 }
 
 std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const Vec& mu, const Terms& terms,
@@ -90,28 +90,60 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const V
   return f;
 }
 
-Springs springs(const Chain& c, const Vec& x, double hess_scale) {
+Springs springs(const Chain& c, const Vec& q, double hess_scale) {
+  const int N = 2 * c.n;
+  const auto& hr = c.terms->hinge_rotations();
+  const bool own = q.size() > N;
+  if (own && q.size() != N + static_cast<Eigen::Index>(hr.size()))
+    throw std::logic_error("lumped::springs: q has " + std::to_string(q.size()) + " values, not 2n (" +
+                           std::to_string(N) + ") or 2n + hinge rotations (" + std::to_string(N + hr.size()) + ")");
   Springs s;
-  s.grad = Vec::Zero(2 * c.n);
-  add_terms(*c.terms, x - c.rest, hess_scale, s);
+  s.grad = Vec::Zero(q.size());
+  const Vec u = q.head(N) - c.rest;
+  add_terms(*c.terms, u, hess_scale, s, own ? HingeRotations::unknowns : HingeRotations::condensed);
+  if (own)
+    for (std::size_t i = 0; i < hr.size(); ++i) {
+      const int chi = N + static_cast<int>(i);
+      for (const Terms::Split& sp : c.terms->split(u, i, q[chi], chi, hess_scale != 0.0))
+        add_spring(sp.r, sp.k, &s.energy, &s.grad, hess_scale, &s.hess);
+    }
   for (int j = 0; j < c.n; ++j) {
-    const Turn t = turn(c, x, j, hess_scale != 0.0);
+    const Turn t = turn(c, q, j, hess_scale != 0.0);
     const double d = t.theta - c.theta0;
     s.energy += 0.5 * c.k * d * d;
     for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += c.k * d * t.grad[i];
     if (hess_scale != 0.0) {
       const Eigen::Matrix<double, 6, 6> H = c.k * (t.grad * t.grad.transpose() + d * t.hess);
       for (int i = 0; i < 6; ++i)
-        for (int q = 0; q < 6; ++q) s.hess.emplace_back(dof(c, j, i), dof(c, j, q), hess_scale * H(i, q));
+        for (int p = 0; p < 6; ++p) s.hess.emplace_back(dof(c, j, i), dof(c, j, p), hess_scale * H(i, p));
     }
   }
   return s;
 }
 
-Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& x, const Vec& lambda, double s, double scale) {
-  Springs t = springs(c, x, scale);
+Vec relaxed_rotations(const Chain& c, const Vec& x) {
+  const int N = 2 * c.n;
+  const auto& hr = c.terms->hinge_rotations();
+  Vec chi(static_cast<Eigen::Index>(hr.size()));
+  const Vec u = x.head(N) - c.rest;
+  for (std::size_t i = 0; i < hr.size(); ++i) {
+    // The split springs are quadratic in chi: one Newton step from chi = 0 is the minimum.
+    double g = 0.0, h = 0.0;
+    for (const Terms::Split& sp : c.terms->split(u, i, 0.0, N, false))
+      for (std::size_t a = 0; a < sp.r.dofs.size(); ++a)
+        if (sp.r.dofs[a] == N) {
+          g += sp.k * sp.r.value * sp.r.grad[static_cast<Eigen::Index>(a)];
+          h += sp.k * sp.r.grad[static_cast<Eigen::Index>(a)] * sp.r.grad[static_cast<Eigen::Index>(a)];
+        }
+    chi[static_cast<Eigen::Index>(i)] = -g / h;
+  }
+  return chi;
+}
+
+Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& q, const Vec& lambda, double s, double scale) {
+  Springs t = springs(c, q, scale);
   constraint_hessian(c, lambda, scale, t.hess);
-  loads.add_hessian(x, scale * s, t.hess);
+  loads.add_hessian(q.head(2 * c.n), scale * s, t.hess);
   return t;
 }
 
@@ -152,10 +184,9 @@ void constraint_hessian(const Chain& c, const Vec& lambda, double scale, Triplet
   }
 }
 
-/// The constant translational mass matrix: the midpoint masses, m/4 [I I; I I] on every
-/// link, and the point masses on their hinges (terms.hpp; their rotary inertia is the
-/// stepper's, on the rotation of the tangent).
-Sparse mass_matrix(const Chain& c) {
+Sparse mass_matrix(const Chain& c, HingeRotations hinges) {
+  const auto& hr = c.terms->hinge_rotations();
+  const int N = 2 * c.n, Q = hinges == HingeRotations::unknowns ? N + static_cast<int>(hr.size()) : N;
   Triplets t;
   for (const Terms::Inertia& in : c.terms->inertia())
     for (int d = 0; d < 2; ++d) t.emplace_back(2 * in.node + d, 2 * in.node + d, in.mass);
@@ -165,7 +196,8 @@ Sparse mass_matrix(const Chain& c) {
       for (int p : {a + d, b + d})
         for (int q : {a + d, b + d}) t.emplace_back(p, q, c.m / 4.0);
   }
-  Sparse M(2 * c.n, 2 * c.n);
+  for (int i = 0; N + i < Q; ++i) t.emplace_back(N + i, N + i, hr[static_cast<std::size_t>(i)].inertia);
+  Sparse M(Q, Q);
   M.setFromTriplets(t.begin(), t.end());
   return M;
 }

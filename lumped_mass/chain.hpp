@@ -67,12 +67,22 @@ struct Springs {
   Triplets hess;
 };
 /// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs and the
-/// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation).
-Springs springs(const Chain& c, const Eigen::VectorXd& x, double hess_scale);
+/// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation). q: the 2n hinge
+/// positions x (statics, buckling: the kr of a hinge with a point inertia condensed on its
+/// chord rotation), or x followed by the rotation chi of every Terms::hinge_rotations() entry
+/// in that order (the response's and the modes under load's unknowns: that kr is then the
+/// hinge's split springs on chi, Terms::split), with grad and Hess of q's size. Else
+/// std::logic_error.
+Springs springs(const Chain& c, const Eigen::VectorXd& q, double hess_scale);
+/// The rotations chi of Terms::hinge_rotations() (in its order) at which their split springs
+/// are in equilibrium with the positions x (2n values): their minimum over chi, the state the
+/// condensed kr of the statics stands for, chi = 4K m_h / (4K + kr). O(hinges).
+Eigen::VectorXd relaxed_rotations(const Chain& c, const Eigen::VectorXd& x);
 /// The spec's stiffness terms at displacement u added to s (energy, gradient of the size of
 /// u, and the Hessian scaled by `hess_scale` if not zero): the part of springs() and of the
 /// frame's energy (frame.hpp) that the two models share. O(terms).
-void add_terms(const Terms& terms, const Eigen::VectorXd& u, double hess_scale, Springs& s);
+void add_terms(const Terms& terms, const Eigen::VectorXd& u, double hess_scale, Springs& s,
+               HingeRotations hinges = HingeRotations::condensed);
 
 /// The resultant force the ground exerts on the nodes (`dofs_per_node` unknowns each, the
 /// translations first) at displacement u: the support rows' -S^T mu and the terms'
@@ -81,7 +91,7 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const E
                                    const Terms& terms, const Eigen::VectorXd& u, int dofs_per_node);
 
 /// The tangent stiffness of the chain's equilibrium grad V(x) + G(x)^T lambda + s grad P(x)
-/// on the hinge positions, times `scale`:
+/// on the hinge positions (or on q = (x, chi), as springs() takes it), times `scale`:
 ///   scale (Hess V(x) + sum_j lambda_j Hess c_j + s Hess P(x)),
 /// with V, grad V (unscaled) as springs() gives them; `tangent.hess` holds the sum as
 /// triplets of the 2n x 2n block (springs and terms, then the links, then the load
@@ -101,8 +111,9 @@ void jacobian(const Chain& c, const Eigen::VectorXd& x, int row_offset, double s
 void constraint_hessian(const Chain& c, const Eigen::VectorXd& lambda, double scale, Triplets& out);
 
 /// The constant translational mass matrix: the midpoint masses, m/4 [I I; I I] on every
-/// link, and the point masses on their hinges (terms.hpp).
-Eigen::SparseMatrix<double> mass_matrix(const Chain& c);
+/// link, and the point masses on their hinges (terms.hpp), 2n x 2n; with
+/// HingeRotations::unknowns on q = (x, chi) (springs()), J on every hinge rotation chi.
+Eigen::SparseMatrix<double> mass_matrix(const Chain& c, HingeRotations hinges = HingeRotations::condensed);
 
 /// The hinge of every point load (`section`.at for one load, `section`.loads[i].at for
 /// several, as the scene names them). A load at the pin is refused: the pin takes it whole.

@@ -23,7 +23,7 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
         loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
     if (!std::isfinite(a) || !ring::on_node(a, anchor, o.n))
       throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(a) + ") is not a hinge of the chain (lumped.n = " +
-                                  std::to_string(o.n) + ": pin + 360 k / n)");
+                                  std::to_string(o.n) + "; valid: anchor " + std::to_string(anchor) + " deg + 360 k / n)");
     if (spec.supports.pin && std::abs(std::remainder(a - anchor, 360.0)) < 1e-9)
       throw std::invalid_argument("lumped: " + key + " acts at the pin");
   }

@@ -39,7 +39,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& optio
 /// frame no modes under load), lumped.n <=
 /// kMaxPreloadHinges (the dense eigen step), then everything check_static checks. Point masses
 /// are taken (their translational mass is the chain's constant mass matrix, their rotary
-/// inertia J g(x) g(x)^T at the equilibrium).
+/// inertia J the mass of their hinge's own rotation, preload.hpp).
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics);
 /// Forced response of the chain or the Timoshenko frame (response.hinge_damping: the chain

@@ -332,7 +332,8 @@ SpMat stacked(const SpMat& A, const Triplets& extra, int extra_rows) {
 ///     K (phi_a - chi)^2 + K (phi_b - chi)^2 = K theta_h^2 / 2 + 4K (m_h - chi)^2 / 2,
 ///   so the hinge's row theta_h (D = K) stays and one row m_h - chi with D = 4K joins it
 ///   (the same energy as two rows phi - chi with D = 2K, and B keeps one row per hinge);
-///   kr is a row on chi (D = kr), J is chi's mass. O(n).
+///   kr is a row on chi (D = kr): the gradients at rest of Terms::split's measures. J is
+///   chi's mass. O(n).
 void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m) {
   Eigen::VectorXd rest(2 * m.n);
   for (int k = 0; k < m.n; ++k) rest.segment<2>(2 * k) << p[k].x, p[k].y;
@@ -350,25 +351,21 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
     m.C.conservativeResize(m.C.rows(), N);
     m.massless.resize(N, 0);  // chi carries J
   }
-  const double k4 = 4.0 * spec.EI() / m.side;
   for (std::size_t i = 0; i < terms.hinge_rotations().size(); ++i) {
-    const Terms::HingeRotation& hr = terms.hinge_rotations()[i];
     const int chi = N0 + static_cast<int>(i);
-    const Measure g = terms.rotation(zero, hr.node, false);  // m_h's gradient at rest
-    for (std::size_t a = 0; a < g.dofs.size(); ++a) bt.emplace_back(rows, g.dofs[a], g.grad[static_cast<Eigen::Index>(a)]);
-    bt.emplace_back(rows++, chi, -1.0);
-    d.push_back(k4);
-    if (hr.kr > 0.0) {
-      bt.emplace_back(rows++, chi, 1.0);
-      d.push_back(hr.kr);
+    for (const Terms::Split& sp : terms.split(zero, i, 0.0, chi, false)) {  // m_h - chi (4K), chi (kr)
+      for (std::size_t a = 0; a < sp.r.dofs.size(); ++a)
+        bt.emplace_back(rows, sp.r.dofs[a], sp.r.grad[static_cast<Eigen::Index>(a)]);
+      d.push_back(sp.k);
+      ++rows;
     }
-    mt.emplace_back(chi, chi, hr.inertia);
+    mt.emplace_back(chi, chi, terms.hinge_rotations()[i].inertia);
   }
   for (const Terms::Inertia& in : terms.inertia()) {
     const int h = in.node;
     mt.emplace_back(dpn * h, dpn * h, in.mass);
     mt.emplace_back(dpn * h + 1, dpn * h + 1, in.mass);
-    if (in.rotary > 0.0 && !terms.own_rotation(h)) {
+    if (in.rotary > 0.0) {  // the frames' (the chain's J is chi's mass, above)
       const Measure g = terms.rotation(zero, h, false);
       for (std::size_t a = 0; a < g.dofs.size(); ++a)
         for (std::size_t b = 0; b < g.dofs.size(); ++b)

@@ -114,28 +114,32 @@ Vec solve(const Sparse& A, const Vec& rhs) {
 
 enum class Newton { failed, iterating, converged };
 
-/// One Newton correction of (x, lambda) from the KKT system A d = -(residual, scale g):
-/// failed when A is singular or the correction moves a hinge by half a link or more,
-/// converged when it moves no hinge by more than `tol` and the links then hold to
-/// 1e-10 R (R: the ring's radius).
+/// One Newton correction of (q, lambda), q = (x, chi) (the positions, then the response's hinge
+/// rotations, if any), from the KKT system A d = -(residual, scale g): failed when A is
+/// singular or the correction moves a hinge by half a link or more (a hinge rotation by
+/// half a radian: l chi counts as a displacement), converged when it moves nothing by more
+/// than `tol` and the links then hold to 1e-10 R (R: the ring's radius).
 Newton newton_update(const Chain& c, const Sparse& A, const Vec& residual, double scale, double tol, double radius,
-                     Vec& x, Vec& lambda) {
+                     Vec& q, Vec& lambda) {
   const int N = 2 * c.n;
+  const Eigen::Index Q = q.size();
   Vec rhs(A.rows());
-  rhs.head(N) = -residual;
-  rhs.tail(A.rows() - N) = -scale * constraints(c, x);
+  rhs.head(Q) = -residual;
+  rhs.tail(A.rows() - Q) = -scale * constraints(c, q.head(N));
   Vec d;
   try {
     d = solve(A, rhs);
   } catch (const ring::NumericalError&) {
     return Newton::failed;
   }
-  const double move = d.head(N).cwiseAbs().maxCoeff();
+  double move = d.head(N).cwiseAbs().maxCoeff();
+  if (Q > N) move = std::max(move, c.l * d.segment(N, Q - N).cwiseAbs().maxCoeff());
   if (!(move < 0.5 * c.l)) return Newton::failed;
-  x += d.head(N);
-  lambda += d.tail(A.rows() - N);
+  q += d.head(Q);
+  lambda += d.tail(A.rows() - Q);
   if (move > tol) return Newton::iterating;
-  return constraints(c, x).head(c.n).cwiseAbs().maxCoeff() <= 1e-10 * radius ? Newton::converged : Newton::failed;
+  return constraints(c, q.head(N)).head(c.n).cwiseAbs().maxCoeff() <= 1e-10 * radius ? Newton::converged
+                                                                                      : Newton::failed;
 }
 
 std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record, const std::string& key) {
@@ -372,87 +376,68 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 namespace {
 
 /// The chain's midpoint step (a Newton solve on the constrained midpoint equations,
-/// x_1 = x_0 + h v_m, v_1 = 2 v_m - v_0) for the time-stepping driver
-/// (paths/time_stepping.hpp); the loads' force, the damping and the point inertias at the
-/// step's midpoint.
-/// Rotary inertia J of a point mass (terms.hpp) acts on the rotation r(x) of the tangent at
-/// its hinge, with its own rate w as a state: w_1 = 2 (r(x_1) - r(x_0)) / h - w_0 (the
-/// midpoint rule on dr/dt = w) and the inertial force J (w_1 - w_0) / h grad r(x_m); its
-/// kinetic energy J w^2 / 2. The work the force does over a step, J (w_1 - w_0)/h grad r(x_m)
-/// . (x_1 - x_0), equals the change of J w^2/2 up to O(h^3) (r's curvature), the midpoint
-/// rule's error on every non-quadratic energy here.
+/// q_1 = q_0 + h v_m, v_1 = 2 v_m - v_0) for the time-stepping driver
+/// (paths/time_stepping.hpp); the loads' force, the damping and the springs at the step's
+/// midpoint. The unknowns q = (x, chi): the hinge positions, then the rotation chi of every
+/// hinge with a point inertia (Terms::hinge_rotations: the linear modes' unknowns, model.cpp),
+/// whose mass is J and whose springs are the hinge's split springs (chain.hpp, springs(); the
+/// kr of such a hinge acts on chi, not condensed). The mass on q is constant (the midpoint
+/// masses, the point masses, J on chi), so the kinetic energy v^T M v / 2 is quadratic and
+/// the midpoint rule conserves it with the quadratic part of V exactly.
 /// The loads' work over a step: -f(t_m) (P(x_1) - P(x_0)), P their potential (loads.hpp):
 /// exact for a constant load factor, whatever the configuration dependence of the load.
 class MidpointStepper : public paths::Stepper {
  public:
+  /// M, Cd: mass and damping on q (2n + hinge rotations); rest: q at rest (chi = 0).
   MidpointStepper(const Chain& c, const ring::ResponseOptions& r, double radius, const ChainLoads& loads, Sparse M,
-                  Sparse Cd, std::vector<int> rec)
+                  Sparse Cd, std::vector<int> rec, Vec rest)
       : c_(c), r_(r), radius_(radius), L_(loads), M_(std::move(M)), Cd_(std::move(Cd)), rec_(std::move(rec)),
         ch_(r.hinge_damping), damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || r.hinge_damping > 0),
-        x_(c.rest), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())) {
-    // The condensed J (4K / (4K + kr))^2 on the chord rotation (terms.hpp): the linear modes
-    // carry J on the hinge's own rotation chi (order 2), this stepper has no chi state yet,
-    // so a large point inertia's response converges at order 1 in l.
-    for (const Terms::Inertia& in : c.terms->inertia())
-      if (in.rotary > 0.0) rotary_.push_back({in.node, in.rotary});
-    w_ = Vec::Zero(static_cast<Eigen::Index>(rotary_.size()));
-    w1_ = w_;
-  }
+        q_(std::move(rest)), v_(Vec::Zero(q_.size())), lambda_(Vec::Zero(c.rows())) {}
 
   paths::StepOutcome try_step(double t, double hh) override {
-    const int N = 2 * c_.n, R = c_.rows();
+    const int N = 2 * c_.n, R = c_.rows(), Q = static_cast<int>(q_.size());
     const double tm = t + 0.5 * hh;
     const double scale = 2.0 / (hh * hh) * c_.m;  // balances the constraint rows
     hh_ = hh;
     f_ = r_.history.factor(tm);
-    x1_ = x_ + hh * v_;
+    q1_ = q_ + hh * v_;
     l1_ = lambda_;
     paths::StepOutcome out;
     out.load_factor = f_;
     for (int it = 0; it < 20; ++it) {
       ++out.iterations;
-      const Vec xm = 0.5 * (x_ + x1_), vm = (x1_ - x_) / hh;
-      const Springs sp = tangent(c_, L_, xm, l1_ * scale, f_, 0.5);
+      const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
+      const Vec xm = qm.head(N), x1 = q1_.head(N);
+      const Springs sp = tangent(c_, L_, qm, l1_ * scale, f_, 0.5);
       Triplets trip = sp.hess;
-      jacobian(c_, xm, N, scale, true, trip);
-      jacobian(c_, x1_, N, scale, false, trip);
-      Vec res = (2.0 / (hh * hh)) * (M_ * (x1_ - x_ - hh * v_)) + sp.grad + f_ * L_.gradient(xm);
+      jacobian(c_, xm, Q, scale, true, trip);
+      jacobian(c_, x1, Q, scale, false, trip);
+      Vec res = (2.0 / (hh * hh)) * (M_ * (q1_ - q_ - hh * v_)) + sp.grad;
+      res.head(N) += f_ * L_.gradient(xm);
       if (damped_) res += Cd_ * vm;
-      for (std::size_t i = 0; i < rotary_.size(); ++i) {
-        const auto [h, J] = rotary_[i];
-        const Measure r0 = c_.terms->rotation(x_ - c_.rest, h, false), r1 = c_.terms->rotation(x1_ - c_.rest, h, false);
-        const Measure rm = c_.terms->rotation(xm - c_.rest, h, true);
-        w1_[i] = 2.0 * (r1.value - r0.value) / hh - w_[i];
-        const double moment = J * (w1_[i] - w_[i]) / hh;
-        for (std::size_t a = 0; a < rm.dofs.size(); ++a) {
-          res[rm.dofs[a]] += moment * rm.grad[a];
-          for (std::size_t b = 0; b < rm.dofs.size(); ++b)
-            trip.emplace_back(rm.dofs[a], r1.dofs[b],
-                              2.0 * J / (hh * hh) * rm.grad[a] * r1.grad[b] + 0.5 * moment * rm.hess(a, b));
-        }
-      }
       if (ch_ > 0)
         for (int j = 0; j < c_.n; ++j) {
           const Turn tm_ = turn(c_, xm, j, false);
-          const double rate = (turn(c_, x1_, j, false).theta - turn(c_, x_, j, false).theta) / hh;
+          const double rate = (turn(c_, x1, j, false).theta - turn(c_, q_, j, false).theta) / hh;
           for (int i = 0; i < 6; ++i) {
             res[dof(c_, j, i)] += ch_ * rate * tm_.grad[i];
-            for (int q = 0; q < 6; ++q)
-              trip.emplace_back(dof(c_, j, i), dof(c_, j, q), ch_ / hh * tm_.grad[i] * tm_.grad[q]);
+            for (int p = 0; p < 6; ++p)
+              trip.emplace_back(dof(c_, j, i), dof(c_, j, p), ch_ / hh * tm_.grad[i] * tm_.grad[p]);
           }
         }
       Triplets gt;
       jacobian(c_, xm, 0, 1.0, true, gt);
-      Sparse GT(N, R);
+      Sparse GT(Q, R);
       GT.setFromTriplets(gt.begin(), gt.end());
       res += GT * (l1_ * scale);
-      Sparse A(N + R, N + R);
+      Sparse A(Q + R, Q + R);
       A.setFromTriplets(trip.begin(), trip.end());
       Sparse Mt = (2.0 / (hh * hh)) * M_;
       if (damped_) Mt += Cd_ / hh;
-      Mt.conservativeResize(N + R, N + R);
+      Mt.conservativeResize(Q + R, Q + R);
       A += Mt;
-      const Newton step = newton_update(c_, A, res, scale, 1e-11 * radius_, radius_, x1_, l1_);
+      const Newton step = newton_update(c_, A, res, scale, 1e-11 * radius_, radius_, q1_, l1_);
       if (step == Newton::iterating) continue;
       out.converged = step == Newton::converged;
       break;
@@ -461,48 +446,43 @@ class MidpointStepper : public paths::Stepper {
   }
 
   void accept(double) override {
-    const Vec dx = x1_ - x_, vm = dx / hh_;
-    work_ -= f_ * (L_.potential(x1_) - L_.potential(x_));
+    const int N = 2 * c_.n;
+    const Vec dq = q1_ - q_, vm = dq / hh_;
+    work_ -= f_ * (L_.potential(q1_.head(N)) - L_.potential(q_.head(N)));
     if (damped_) dissipated_ += hh_ * vm.dot(Cd_ * vm);
     if (ch_ > 0)
       for (int j = 0; j < c_.n; ++j) {
-        const double rate = (turn(c_, x1_, j, false).theta - turn(c_, x_, j, false).theta) / hh_;
+        const double rate = (turn(c_, q1_, j, false).theta - turn(c_, q_, j, false).theta) / hh_;
         dissipated_ += hh_ * ch_ * rate * rate;
       }
     v_ = 2.0 * vm - v_;
-    for (std::size_t i = 0; i < rotary_.size(); ++i) {
-      const int h = rotary_[i].first;
-      w_[i] = 2.0 * (c_.terms->rotation(x1_ - c_.rest, h, false).value -
-                     c_.terms->rotation(x_ - c_.rest, h, false).value) / hh_ - w_[i];
-    }
-    x_ = x1_;
+    q_ = q1_;
     lambda_ = l1_;
   }
 
-  bool finite() const override { return x_.allFinite() && v_.allFinite() && w_.allFinite(); }
+  bool finite() const override { return q_.allFinite() && v_.allFinite(); }
 
   paths::Sample sample() const override {
     paths::Sample out;
     for (int h : rec_) {
-      const Vec2 u = c_.at(x_, h) - c_.at(c_.rest, h);
+      const Vec2 u = c_.at(q_, h) - c_.at(c_.rest, h);
       out.ux.push_back(u.x());
       out.uy.push_back(u.y());
     }
-    out.kinetic = 0.5 * v_.dot(M_ * v_);
-    for (std::size_t i = 0; i < rotary_.size(); ++i) out.kinetic += 0.5 * rotary_[i].second * w_[i] * w_[i];
-    out.strain = springs(c_, x_, 0.0).energy;
+    out.kinetic = 0.5 * v_.dot(M_ * v_);  // J w^2 / 2 of the hinge rotations included
+    out.strain = springs(c_, q_, 0.0).energy;
     out.work = work_;
     out.dissipated = dissipated_;
-    out.constraint_residual = constraints(c_, x_).head(c_.n).cwiseAbs().maxCoeff();
+    out.constraint_residual = constraints(c_, q_.head(2 * c_.n)).head(c_.n).cwiseAbs().maxCoeff();
     return out;
   }
 
   void shape(std::vector<double>& x, std::vector<double>& y) const override {
-    paths::interleaved_shape(x_, c_.n, x, y);
+    paths::interleaved_shape(q_, c_.n, x, y);
   }
 
   std::optional<std::string> contact() const override {
-    const Contact k = closest_nonadjacent(c_, x_);
+    const Contact k = closest_nonadjacent(c_, q_.head(2 * c_.n));
     if (k.distance >= c_.depth) return std::nullopt;
     return contact_where(c_, k);
   }
@@ -516,8 +496,7 @@ class MidpointStepper : public paths::Stepper {
   const std::vector<int> rec_;
   const double ch_;
   const bool damped_;
-  std::vector<std::pair<int, double>> rotary_;  ///< (hinge, J) of the point inertias
-  Vec x_, v_, lambda_, x1_, l1_, w_, w1_;
+  Vec q_, v_, lambda_, q1_, l1_;
   double hh_ = 0.0, f_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
 };
 
@@ -534,21 +513,27 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const int N = 2 * c.n, R = c.rows();
   const Sparse M = mass_matrix(c);
   const ChainLoads loads(r.loads, c.rest, c.l, M, at);
-  // Rayleigh damping C = a M + b K0, M the translational mass, K0 the Hessian of the springs
-  // and terms at rest (no link forces there).
-  Sparse Cd(N, N);
+  // The unknowns q = (x, chi) (MidpointStepper): J on every hinge rotation chi.
+  const auto& hr = c.terms->hinge_rotations();
+  const int Q = N + static_cast<int>(hr.size());
+  Vec rest = Vec::Zero(Q);
+  rest.head(N) = c.rest;
+  const Sparse Mq = mass_matrix(c, HingeRotations::unknowns);
+  // Rayleigh damping C = a M + b K0, M the mass on q, K0 the Hessian of the springs and terms
+  // at rest (no link forces there), the hinge rotations' split springs included.
+  Sparse Cd(Q, Q);
   if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
-    const Springs s0 = springs(c, c.rest, 1.0);
-    Sparse K0(N, N);
+    const Springs s0 = springs(c, rest, 1.0);
+    Sparse K0(Q, Q);
     K0.setFromTriplets(s0.hess.begin(), s0.hess.end());
-    Cd = r.rayleigh_mass * M + r.rayleigh_stiffness * K0;
+    Cd = r.rayleigh_mass * Mq + r.rayleigh_stiffness * K0;
   }
 
   // The balance error of the midpoint rule is O(h^2) of the spring energy, of either
   // sign; a gain beyond the one rule's bound (ring/energy_guard.hpp) is a failed
   // integration, not a result.
   ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, r.loads));
-  MidpointStepper stepper(c, r, spec.radius, loads, M, Cd, rec);
+  MidpointStepper stepper(c, r, spec.radius, loads, Mq, Cd, rec, rest);
   paths::Grid grid;
   grid.dt = r.dt;
   grid.t_end = r.t_end;
@@ -557,7 +542,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   grid.progress = r.progress;
   ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
   h.solver = "lumped";
-  h.unknowns = N + R;
+  h.unknowns = Q + R;
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;
 }

@@ -15,8 +15,8 @@
 //    rotation below pi between neighbours): V = k/2 sum_j (theta_j - 2 pi / n)^2.
 //  - The spec's terms (terms.hpp, the same code as the linear model's): elastic supports
 //    kx, ky, kr, the clamp (4 EI/l on the rotation of the tangent), the Winkler foundation
-//    (fixed directions of the undeformed point), point masses (m on the hinge, J on the
-//    rotation of the tangent).
+//    (fixed directions of the undeformed point), point masses (m on the hinge; J, statics
+//    aside, on the hinge's own rotation chi, below).
 //  - Point masses m = rho A l at the link midpoints: T = m/2 sum_j |(v_j + v_{j+1})/2|^2,
 //    so the mass matrix M is constant (block-tridiagonal plus the closing corners).
 //  - Loads (loads.hpp), all scaled by the load factor (statics: s; response: f(t)): point
@@ -37,20 +37,24 @@
 // up to n = 200 (the dense least stable direction).
 //
 // ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
-//   M (v_{n+1} - v_n) / h = -f(t_{n+1/2}) grad P(x_m) - grad V(x_m) - C v_m - G(x_m)^T lambda
-//                           (- the point inertias' moments, nonlinear.cpp's MidpointStepper),
-//   (x_{n+1} - x_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   x_m = (x_n + x_{n+1}) / 2.
+//   M (v_{n+1} - v_n) / h = -f(t_{n+1/2}) grad P(x_m) - grad V(q_m) - C v_m - G(x_m)^T lambda,
+//   (q_{n+1} - q_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   q_m = (q_n + q_{n+1}) / 2,
+// on q = (x, chi): the positions, then the rotation chi of every hinge with a point inertia
+// (terms.hpp, Terms::hinge_rotations: the linear modes' unknowns), whose mass is J and whose
+// springs are the hinge's split springs, 2K (m_h - chi)^2 + kr chi^2 / 2 (Terms::split) in
+// place of the statics' condensed kr. M is constant on q.
 // Second order; for a linear system it is the average-acceleration Newmark scheme
 // (the paper's). Because the constraints are quadratic, c(x_{n+1}) - c(x_n) =
 // G(x_m)(x_{n+1} - x_n) exactly, so the constraint forces do no work and the
 // constraints hold to round-off at every step; the energy balance error comes only
 // from the midpoint rule on the non-quadratic energies (springs, the clamp's and kr's
-// rotation, follower and central pressure, the point inertias: O(h^2), no drift for undamped
-// runs). The work W of the loads is -sum f(t_m) (P(x_{n+1}) - P(x_n)), exact for a constant
-// load factor; V counts the terms' energy (foundation, springs, clamp). Offered for response.integrator = "midpoint" and "newmark" (the same
+// rotation and the split springs' m_h, follower and central pressure: O(h^2), no drift for
+// undamped runs; the kinetic energy, J w^2 / 2 of the hinge rotations included, is quadratic
+// and exact). The work W of the loads is -sum f(t_m) (P(x_{n+1}) - P(x_n)), exact for a
+// constant load factor; V counts the terms' energy (foundation, springs, clamp, split springs). Offered for response.integrator = "midpoint" and "newmark" (the same
 // scheme); "energy-momentum" (the name of a scheme that conserves energy, which this one
 // does not) and "generalized-alpha" are refused (std::invalid_argument, checks.hpp).
-// Damping: Rayleigh C = a M + b K0 (K0 the stiffness at rest) and hinge dampers c on
+// Damping: Rayleigh C = a M + b K0 (M and K0, the stiffness at rest, on q) and hinge dampers c on
 // the turning rate, both at the midpoint velocity; the dissipated energy is summed.
 //
 // ## The Timoshenko frame (lumped.variant = "timoshenko-frame", frame.hpp)

@@ -26,63 +26,6 @@ using Vec = Eigen::VectorXd;
 using Dense = Eigen::MatrixXd;
 using Sparse = Eigen::SparseMatrix<double>;
 
-/// The chain's mass about the configuration x: the constant mass_matrix (chain.hpp) plus
-/// J g(x) g(x)^T for every point mass with rotary inertia J, g the gradient of the tangent's
-/// rotation at its hinge (terms.hpp), but for the inertias on a hinge rotation of their own
-/// (Terms::hinge_rotations, with_hinge_rotations below). O(n).
-Sparse mass_at(const Chain& c, const Vec& x) {
-  Sparse M = mass_matrix(c);
-  Triplets t;
-  for (const Terms::Inertia& in : c.terms->inertia()) {
-    if (!(in.rotary > 0.0) || c.terms->own_rotation(in.node)) continue;
-    const Measure g = c.terms->rotation(x - c.rest, in.node, false);
-    for (std::size_t a = 0; a < g.dofs.size(); ++a)
-      for (std::size_t b = 0; b < g.dofs.size(); ++b)
-        t.emplace_back(g.dofs[a], g.dofs[b],
-                       in.rotary * g.grad[static_cast<Eigen::Index>(a)] * g.grad[static_cast<Eigen::Index>(b)]);
-  }
-  if (t.empty()) return M;
-  Sparse J(M.rows(), M.cols());
-  J.setFromTriplets(t.begin(), t.end());
-  return M + J;
-}
-
-/// The reduced pencil (Tr, Mr) on Z's columns, then the rotation chi of every hinge of
-/// Terms::hinge_rotations (terms.hpp: the linear modes' unknowns, model.cpp) after them.
-/// tangent() has each such hinge's energy with chi condensed: K theta^2 / 2 + (kr and the
-/// half springs in series) m^2 / 2, the minimum over chi of
-///   E = K (phi_a - chi)^2 + K (phi_b - chi)^2 + kr chi^2 / 2,
-/// quadratic in the links' rotations (phi_a, phi_b) and chi, m = (phi_a + phi_b) / 2. The
-/// Hessian of a minimum over chi is E_xx - E_x,chi E_chi,chi^-1 E_chi,x, exactly, at the
-/// statics' chi = chi*(x); with E_x,chi = -4K g (g = grad m at x) and E_chi,chi = 4K + kr
-/// the full Hessian on (x, chi) is
-///   [T + w w^T / (4K + kr), -w; -w^T, 4K + kr],   w = 4K g,
-/// and J is chi's mass. At a vanishing load x is the rest n-gon: the linear model's pencil.
-/// O(Z.cols()^2) per hinge.
-void with_hinge_rotations(const Chain& c, const Vec& x, const Dense& Z, Dense& Tr, Dense& Mr) {
-  const auto& hr = c.terms->hinge_rotations();
-  if (hr.empty()) return;
-  const Eigen::Index r = Z.cols(), e = static_cast<Eigen::Index>(hr.size());
-  Dense T = Dense::Zero(r + e, r + e), M = Dense::Zero(r + e, r + e);
-  T.topLeftCorner(r, r) = Tr;
-  M.topLeftCorner(r, r) = Mr;
-  const double k4 = 4.0 * c.k;
-  for (Eigen::Index i = 0; i < e; ++i) {
-    const Measure g = c.terms->rotation(x - c.rest, hr[i].node, false);
-    Vec w = Vec::Zero(Z.rows());
-    for (std::size_t a = 0; a < g.dofs.size(); ++a) w[g.dofs[a]] = k4 * g.grad[static_cast<Eigen::Index>(a)];
-    const Vec wr = Z.transpose() * w;
-    const double kc = k4 + hr[i].kr;
-    T.topLeftCorner(r, r) += wr * wr.transpose() / kc;
-    T.block(0, r + i, r, 1) = -wr;
-    T.block(r + i, 0, 1, r) = -wr.transpose();
-    T(r + i, r + i) = kc;
-    M(r + i, r + i) = hr[i].inertia;
-  }
-  Tr = std::move(T);
-  Mr = std::move(M);
-}
-
 ring::ModalResult describe(const ring::LumpedOptions& options, const modal::LoadedModes& m, const Dense& Z,
                            Eigen::Index unknowns, double anchor_deg, int dofs_per_node, int count) {
   ring::ModalResult res;
@@ -138,19 +81,29 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   const detail::StaticState eq =
       detail::follow_statics(c, loads, spec, statics, nullptr, InertiaRoute::automatic, "lumped modes under load");
 
-  // 2. The tangent there and the constraints' tangent space at the deformed state.
-  const Triplets tt = tangent(c, loads, eq.x, eq.lambda, 1.0, 1.0).hess;
-  Sparse T(N, N);
+  // 2. The tangent there and the constraints' tangent space at the deformed state. The
+  //    unknowns q = (x, chi): the positions, then the rotation of every hinge with a point
+  //    inertia (Terms::hinge_rotations, the linear modes' and the response's), at the chi in
+  //    equilibrium with x (relaxed_rotations: the statics' condensed kr is its minimum), so
+  //    that the tangent on q holds the split springs (chain.hpp, springs()).
+  const int Q = N + static_cast<int>(c.terms->hinge_rotations().size());
+  Vec q(Q);
+  q << eq.x, relaxed_rotations(c, eq.x);
+  const Triplets tt = tangent(c, loads, q, eq.lambda, 1.0, 1.0).hess;
+  Sparse T(Q, Q);
   T.setFromTriplets(tt.begin(), tt.end());
   Triplets gt;
   jacobian(c, eq.x, 0, 1.0, false, gt);
   Sparse G(c.rows(), N);
   G.setFromTriplets(gt.begin(), gt.end());
   const Dense Z = modal::kernel_basis(Dense(G), N);
-  // 3-4. The pencil (Z^T T Z, Z^T M Z) at the equilibrium (modal::loaded_modes).
-  Dense Tr = Z.transpose() * (T * Z);
-  Dense Mr = Z.transpose() * (mass_at(c, eq.x) * Z);
-  with_hinge_rotations(c, eq.x, Z, Tr, Mr);
+  // 3-4. The pencil (Zq^T T Zq, Zq^T M Zq) at the equilibrium (modal::loaded_modes), Zq =
+  //    diag(Z, I): ker G in the positions, every chi free; M the constant mass on q.
+  Dense Zq = Dense::Zero(Q, Z.cols() + (Q - N));
+  Zq.topLeftCorner(N, Z.cols()) = Z;
+  Zq.bottomRightCorner(Q - N, Q - N).setIdentity();
+  const Dense Tr = Zq.transpose() * (T * Zq);
+  const Dense Mr = Zq.transpose() * (mass_matrix(c, HingeRotations::unknowns) * Zq);
   const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "lumped modes under load");
   ring::ModalResult res = describe(options, m, Z, Tr.rows(), c.anchor_deg, 2, count);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

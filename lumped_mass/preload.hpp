@@ -16,14 +16,12 @@
 //     follower and central pressures' load stiffness); the statics' Newton matrix), the
 //     constraint Jacobian G(x) at the deformed state and Z an orthonormal basis of its kernel
 //     (modal::kernel_basis: column-pivoted Householder QR of G^T, rank-revealing).
-//  3. The mass about x: chain.hpp's constant mass_matrix (the links' midpoint masses, the point
-//     masses on their hinges) plus, for a point mass with rotary inertia J, J g g^T, g the
-//     gradient of the tangent's rotation at its hinge at x (terms.hpp): the kinetic energy
-//     J (g . v)^2 / 2 of the response (nonlinear.cpp) linearized about a state at rest, the
-//     linear model's J term (model.cpp) at x instead of at rest. A point inertia at an
-//     unclamped hinge of the chain rides instead on the hinge's own rotation chi, an unknown
-//     after the kernel's coordinates, as in the linear modes (terms.hpp; preload.cpp,
-//     with_hinge_rotations: the tangent with chi condensed, expanded exactly).
+//  3. The mass: chain.hpp's constant mass_matrix (the links' midpoint masses, the point
+//     masses on their hinges). A point inertia J at an unclamped hinge of the chain rides on
+//     the hinge's own rotation chi, an unknown after the kernel's coordinates, as in the
+//     linear modes and the response (terms.hpp): the tangent is taken on (x, chi) with chi in
+//     equilibrium with x (chain.hpp, relaxed_rotations, springs(): the split springs,
+//     Terms::split), J is chi's mass, and the pencil lives on diag(Z, I).
 //  4. The pencil (Z^T T Z, Z^T M Z) by the shifted inverse of the multibody version: the
 //     largest mu of S^-1 M_r, S = T_r + sigma M_r = L L^T (Cholesky), sigma =
 //     modal::bending_scale(spec), omega^2 = 1/mu - sigma; shapes Z y, the hinges'

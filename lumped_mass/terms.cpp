@@ -30,7 +30,7 @@ void check_nonnegative(double v, const std::string& key) {
 }
 
 Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, double side, const Eigen::VectorXd& rest)
-    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), rest_(rest) {
+    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), k4_(4.0 * spec.EI() / side), rest_(rest) {
   const int n = n_, dpn = dpn_;
   auto stiffness = [&](std::vector<std::pair<int, double>> row, double k) {
     if (k > 0.0) springs_.push_back({-1, std::move(row), k});
@@ -58,7 +58,7 @@ Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, d
   }
   const bool chain = dpn == 2;
   if (chain && spec.supports.clamp) kr[node_of(*spec.supports.clamp, anchor_deg, n, "supports.clamp")] = HUGE_VAL;
-  const double k4 = 4.0 * spec.EI() / side;  // the chain's two half hinge springs 2K in parallel
+  const double k4 = k4_;
   for (int h = 0; h < n; ++h)
     if (kr[h] > 0.0)
       springs_.push_back({h, {}, !chain ? kr[h] : std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h])});
@@ -69,12 +69,10 @@ Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, d
     const int h = node_of(pm.angle, anchor_deg, n, key);
     check_nonnegative(pm.mass, key + ".mass");
     check_nonnegative(pm.inertia, key + ".inertia");
-    // The chain's psi follows the chord rotation by 4K / (4K + kr) (0 at a clamp).
-    const double follows = !chain ? 1.0 : std::isinf(kr[h]) ? 0.0 : k4 / (k4 + kr[h]);
     Inertia& in = by_node[h];
     in.node = h;
     in.mass += pm.mass;
-    in.rotary += pm.inertia * follows * follows;
+    if (!chain) in.rotary += pm.inertia;  // the chain's J rides on chi (hinge_rotations_)
   }
   for (const auto& [h, in] : by_node) {
     inertia_.push_back(in);
@@ -140,40 +138,68 @@ Measure Terms::measure(const Spring& s, const Eigen::VectorXd& u, bool with_hess
   return m;
 }
 
-double Terms::energy(const Eigen::VectorXd& u) const {
+void add_spring(const Measure& r, double k, double* energy, Eigen::VectorXd* grad, double hess_scale, Triplets* out) {
+  if (energy) *energy += 0.5 * k * r.value * r.value;
+  if (grad)
+    for (std::size_t i = 0; i < r.dofs.size(); ++i) (*grad)[r.dofs[i]] += k * r.value * r.grad[static_cast<Eigen::Index>(i)];
+  if (!out || hess_scale == 0.0) return;
+  const Eigen::Index q = r.grad.size();
+  for (Eigen::Index i = 0; i < q; ++i)
+    for (Eigen::Index j = 0; j < q; ++j) {
+      double h = r.grad[i] * r.grad[j];
+      if (r.hess.size() > 0) h += r.value * r.hess(i, j);
+      if (h != 0.0) out->emplace_back(r.dofs[i], r.dofs[j], hess_scale * k * h);
+    }
+}
+
+bool Terms::left_out(const Spring& s, HingeRotations hinges) const {
+  return hinges == HingeRotations::unknowns && s.node >= 0 && own_rotation(s.node);
+}
+
+double Terms::energy(const Eigen::VectorXd& u, HingeRotations hinges) const {
   double e = 0.0;
-  for (const Spring& s : springs_) {
-    const double r = measure(s, u, false).value;
-    e += 0.5 * s.k * r * r;
-  }
+  for (const Spring& s : springs_)
+    if (!left_out(s, hinges)) add_spring(measure(s, u, false), s.k, &e, nullptr, 0.0, nullptr);
   return e;
 }
 
-void Terms::add_gradient(const Eigen::VectorXd& u, Eigen::VectorXd& grad) const {
-  for (const Spring& s : springs_) {
-    const Measure m = measure(s, u, false);
-    for (std::size_t i = 0; i < m.dofs.size(); ++i) grad[m.dofs[i]] += s.k * m.value * m.grad[static_cast<Eigen::Index>(i)];
-  }
+void Terms::add_gradient(const Eigen::VectorXd& u, Eigen::VectorXd& grad, HingeRotations hinges) const {
+  for (const Spring& s : springs_)
+    if (!left_out(s, hinges)) add_spring(measure(s, u, false), s.k, nullptr, &grad, 0.0, nullptr);
 }
 
-void Terms::add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out) const {
-  for (const Spring& s : springs_) {
-    const Measure m = measure(s, u, true);
-    const Eigen::Index q = m.grad.size();
-    for (Eigen::Index i = 0; i < q; ++i)
-      for (Eigen::Index j = 0; j < q; ++j) {
-        double h = m.grad[i] * m.grad[j];
-        if (m.hess.size() > 0) h += m.value * m.hess(i, j);
-        if (h != 0.0) out.emplace_back(m.dofs[i], m.dofs[j], scale * s.k * h);
-      }
+void Terms::add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out, HingeRotations hinges) const {
+  for (const Spring& s : springs_)
+    if (!left_out(s, hinges)) add_spring(measure(s, u, true), s.k, nullptr, nullptr, scale, &out);
+}
+
+std::vector<Terms::Split> Terms::split(const Eigen::VectorXd& u, std::size_t i, double chi, int chi_dof,
+                                       bool with_hessian) const {
+  const HingeRotation& hr = hinge_rotations_.at(i);
+  std::vector<Split> out(1);
+  Measure& r = out[0].r;
+  r = rotation(u, hr.node, with_hessian);  // m_h
+  r.value -= chi;
+  r.dofs.push_back(chi_dof);
+  r.grad.conservativeResize(r.grad.size() + 1);
+  r.grad[r.grad.size() - 1] = -1.0;
+  if (with_hessian) r.hess.conservativeResizeLike(Eigen::MatrixXd::Zero(r.grad.size(), r.grad.size()));
+  out[0].k = k4_;
+  if (hr.kr > 0.0) {
+    Measure g;
+    g.value = chi;
+    g.dofs = {chi_dof};
+    g.grad = Eigen::VectorXd::Ones(1);
+    out.push_back({std::move(g), hr.kr});
   }
+  return out;
 }
 
 int Terms::rest_rows(int row0, Triplets& rows, std::vector<double>& d) const {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dpn_ * n_);
   int r = row0;
   for (const Spring& s : springs_) {
-    if (s.node >= 0 && own_rotation(s.node)) continue;  // kr on chi (model.cpp)
+    if (left_out(s, HingeRotations::unknowns)) continue;  // kr on chi (split(), model.cpp)
     const Measure m = measure(s, zero, false);
     for (std::size_t i = 0; i < m.dofs.size(); ++i) rows.emplace_back(r, m.dofs[i], m.grad[static_cast<Eigen::Index>(i)]);
     d.push_back(s.k);

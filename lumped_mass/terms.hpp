@@ -24,16 +24,20 @@
 // Point masses: m on (ux_h, uy_h) (a constant mass; its weight under gravity is loads.hpp's
 // business through the translational mass), and the rotary inertia J: the frames put it on
 // their rotation unknown. The chain's hinge rotation chi (model.hpp: the hinge spring EI/l is
-// two half springs 2EI/l from each link to chi, kr from chi to the ground) carries it:
-//   - the linear modes (model.cpp) and the modes under load (preload.cpp) make chi an unknown
-//     of its own at every hinge with a point inertia and no clamp (hinge_rotations()), J on
-//     chi and kr on chi; order 2, where J (4K / (4K + kr))^2 on the chord rotation m_h (chi
-//     condensed quasi-statically) converged at order 1 (1.43 -> 0.75 % at n = 160 -> 320 on
-//     scenes/thick-ring.toml with 1e-4 kg m^2, README);
-//   - the response (nonlinear.cpp) keeps that condensed J (4K / (4K + kr))^2 on m_h
-//     (Inertia::rotary): chi as a state of the time stepper is not written yet, so a large
-//     inertia's response is first order in l there.
-// The statics have no inertia: kr condensed on m_h (4K kr / (4K + kr)) is exact for them.
+// two half springs 2EI/l from each link to chi, kr from chi to the ground) carries it: the
+// linear modes (model.cpp), the modes under load (preload.cpp) and the response
+// (nonlinear.cpp) make chi an unknown of its own at every hinge with a point inertia and no
+// clamp (hinge_rotations()), J on chi and kr on chi. Order 2, where J (4K / (4K + kr))^2 on
+// the chord rotation m_h (chi condensed quasi-statically) converged at order 1 (1.43 -> 0.75 %
+// at n = 160 -> 320 on scenes/thick-ring.toml with 1e-4 kg m^2, README). The split springs of
+// such a hinge are written once, split(): with theta_h = phi_b - phi_a (the hinge spring's
+// turning angle) and m_h = (phi_a + phi_b) / 2,
+//   K (phi_a - chi)^2 + K (phi_b - chi)^2 = K theta_h^2 / 2 + 4K (m_h - chi)^2 / 2,
+// so the hinge spring K theta_h^2 / 2 stays as it is and the measures m_h - chi (k = 4K) and
+// chi (k = kr) join it; the linear modes take their gradients at rest as rows of B, the modes
+// under load and the response their energy, gradient and Hessian at any state.
+// The statics have no inertia: kr condensed on m_h (4K kr / (4K + kr)) is exact for them
+// (the minimum of the split springs over chi; HingeRotations::condensed).
 //
 // Cost: O(terms) for every member, O(n) to build (the foundation has 2 per node).
 #pragma once
@@ -66,6 +70,15 @@ struct Measure {
   Eigen::MatrixXd hess;    ///< d2r / du[dofs]^2; empty for a linear measure
 };
 
+/// k/2 r^2 of a measure r, added where the pointers are not null: energy; grad[dofs] += k r dr;
+/// out += hess_scale k (dr dr^T + r Hess r) as triplets (when hess_scale != 0). O(dofs^2).
+void add_spring(const Measure& r, double k, double* energy, Eigen::VectorXd* grad, double hess_scale, Triplets* out);
+
+/// How the kr of a hinge of Terms::hinge_rotations() enters the energy of the positions:
+/// condensed on the chord rotation m_h (4K kr / (4K + kr), the statics), or not at all (the
+/// caller carries that hinge's chi and its split springs, Terms::split).
+enum class HingeRotations { condensed, unknowns };
+
 class Terms {
  public:
   /// \param rest node rest positions (x_0, y_0, x_1, ...), 2n values, on the model's n-gon
@@ -78,12 +91,12 @@ class Terms {
   struct Inertia {
     int node = 0;
     double mass = 0.0;    ///< kg, on (ux, uy)
-    double rotary = 0.0;  ///< kg m^2, on rotation(node) (the chain's: J (4K / (4K + kr))^2, the
-                          ///< response's; the linear modes take hinge_rotations() instead)
+    double rotary = 0.0;  ///< kg m^2, on the frames' rotation(node); 0 in the chain, whose J
+                          ///< rides on the hinge's own rotation (hinge_rotations())
   };
   const std::vector<Inertia>& inertia() const { return inertia_; }
 
-  /// A chain's hinge whose rotation chi is an unknown of the linear modes (file comment): a
+  /// A chain's hinge whose rotation chi is an unknown of every analysis with inertia (file comment): a
   /// point inertia at an unclamped hinge. Half springs 2K from each link to chi, kr (finite,
   /// >= 0) from chi to the ground, J on chi.
   struct HingeRotation {
@@ -100,12 +113,26 @@ class Terms {
   /// The rotation of the centroid line's tangent at node h at displacement u (see above).
   Measure rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const;
 
-  /// Elastic energy of the terms at u, J.
-  double energy(const Eigen::VectorXd& u) const;
+  /// Elastic energy of the terms at u, J. `hinges`: the kr of a hinge of hinge_rotations()
+  /// condensed on m_h, or left out (the caller adds split()).
+  double energy(const Eigen::VectorXd& u, HingeRotations hinges = HingeRotations::condensed) const;
   /// grad += its gradient at u.
-  void add_gradient(const Eigen::VectorXd& u, Eigen::VectorXd& grad) const;
+  void add_gradient(const Eigen::VectorXd& u, Eigen::VectorXd& grad,
+                    HingeRotations hinges = HingeRotations::condensed) const;
   /// out += scale * its Hessian at u, as (row, col) triplets of the DOFs.
-  void add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out) const;
+  void add_hessian(const Eigen::VectorXd& u, double scale, Triplets& out,
+                   HingeRotations hinges = HingeRotations::condensed) const;
+
+  /// The split springs of hinge_rotations()[i] (file comment) at displacement u and rotation
+  /// chi, as stiffness measures on (u, chi), chi the caller's unknown `chi_dof`: r = m_h(u) - chi
+  /// with k = 4K (K = EI/l), then r = chi with k = kr when kr > 0. Their energy
+  /// 2K (m_h - chi)^2 + kr chi^2 / 2 is quadratic in chi, its minimum over chi the condensed
+  /// 4K kr / (4K + kr) m_h^2 / 2 (chi = 4K m_h / (4K + kr)). The chain only. O(1).
+  struct Split {
+    Measure r;
+    double k = 0.0;
+  };
+  std::vector<Split> split(const Eigen::VectorXd& u, std::size_t i, double chi, int chi_dof, bool with_hessian) const;
   /// The factored stiffness at rest: one row per term, its measure's gradient at u = 0, at
   /// rows row0, row0 + 1, ...; d gets the stiffnesses (all > 0). Returns the rows added.
   /// The condensed kr at a hinge of hinge_rotations() is left out: the linear modes put kr on
@@ -120,7 +147,11 @@ class Terms {
   };
   Measure measure(const Spring& s, const Eigen::VectorXd& u, bool with_hessian) const;
 
+  /// Whether a spring is one that HingeRotations::unknowns leaves out.
+  bool left_out(const Spring& s, HingeRotations hinges) const;
+
   int n_ = 0, dpn_ = 2;
+  double k4_ = 0.0;  ///< the chain's two half hinge springs 2K in parallel, 4 EI/l
   Eigen::VectorXd rest_;
   std::vector<Spring> springs_;
   std::vector<Inertia> inertia_;

@@ -97,6 +97,7 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
     if (kr[h] > 0.0 || inertia[h] > 0.0) rotations_.push_back({h, kr[h], inertia[h]});
   for (double p : spec.supports.pins) pins_.push_back(hinge(chain, p, "supports.pins"));
   has_stiffness_ = spec.foundation.any() || spec.supports.clamp || !spec.supports.springs.empty();
+  has_mass_ = !spec.masses.empty();
 }
 
 double Attachments::energy(const Vector& q, bool rotations) const {
@@ -141,8 +142,24 @@ void Attachments::add_rotation_stiffness(Eigen::Ref<Matrix> A) const { add_mean_
 
 Matrix Attachments::rest_mass() const {
   Matrix M = Matrix::Zero(chain_.dofs(), chain_.dofs());
-  add_pull_back(chain_, q0_, mass_, M);
+  add_mass(q0_, 1.0, M);
   return M;
+}
+
+void Attachments::add_mass(const Vector& q, double c, Eigen::Ref<Matrix> M) const {
+  if (!has_mass_) return;
+  if (c == 1.0) return add_pull_back(chain_, q, mass_, M);
+  Matrix P = Matrix::Zero(chain_.dofs(), chain_.dofs());
+  add_pull_back(chain_, q, mass_, P);
+  M += c * P;
+}
+
+double Attachments::kinetic_energy(const Vector& q, const Vector& v) const {
+  if (!has_mass_) return 0.0;
+  const Eigen::Matrix2Xd w = chain_.displacements_at(q, v);  // the hinges' velocities
+  double T = 0.0;
+  for (int k = 0; k < chain_.n(); ++k) T += 0.5 * w.col(k).dot(mass_[k] * w.col(k));
+  return T;
 }
 
 std::vector<HingeRotation> Attachments::hinge_rotations() const { return rotations_; }
@@ -157,6 +174,82 @@ Chain::ConstraintKinematics Attachments::pins(const Vector& q) const {
     for (int j = 0; j < h; ++j) k.hess.block(r, j, 2, 1) = -chain_.l() * Eigen::Vector2d(std::cos(q[j]), std::sin(q[j]));
   }
   return k;
+}
+
+Chain::ConstraintKinematics Attachments::constraints(const Vector& q) const {
+  Chain::ConstraintKinematics ck = chain_.constraint_kinematics(q);
+  if (pin_rows() == 0) return ck;
+  const Chain::ConstraintKinematics p = pins(q);
+  const Eigen::Index c = ck.g.size() + p.g.size();
+  ck.g.conservativeResize(c);
+  ck.g.tail(p.g.size()) = p.g;
+  ck.G.conservativeResize(c, Eigen::NoChange);
+  ck.G.bottomRows(p.G.rows()) = p.G;
+  ck.hess.conservativeResize(c, Eigen::NoChange);
+  ck.hess.bottomRows(p.hess.rows()) = p.hess;
+  return ck;
+}
+
+Chain::ConstraintKinematics constraint_kinematics(const Chain& chain, const Attachments* terms, const Vector& q) {
+  return terms ? terms->constraints(q) : chain.constraint_kinematics(q);
+}
+
+HingeInertias::HingeInertias(const Chain& chain, const Attachments& terms) : chain_(chain) {
+  const int n = chain.n(), dofs = chain.dofs();
+  const std::vector<HingeRotation> rotations = terms.hinge_rotations();
+  for (const HingeRotation& r : rotations) p_ += r.moves();
+  H_ = Matrix::Zero(dofs + p_, dofs + p_);
+  J_ = Vector::Zero(p_);
+  auto at = [&](int i) { return i < n ? i : dofs + i - n; };
+  auto spring = [&](int i, int j, double c) {
+    H_(at(i), at(i)) += c;
+    H_(at(j), at(j)) += c;
+    H_(at(i), at(j)) -= c;
+    H_(at(j), at(i)) -= c;
+  };
+  split_hinges(rotations, n, chain.K(), spring, [](int, double) {}, [&](int i, double j) { J_[i - n] = j; });
+  springs_ = H_;
+  split_hinges(
+      rotations, n, chain.K(), [](int, int, double) {}, [&](int i, double c) { H_(at(i), at(i)) += c; },
+      [](int, double) {});
+  // Less kr condensed on the mean rotation, which Attachments puts at every hinge with kr.
+  for (const HingeRotation& t : rotations)
+    if (t.moves() && t.kr > 0.0) {
+      const double c = condensed_rotation_stiffness(t.kr, chain.K()) / 4.0;
+      for (int i : {(t.hinge + n - 1) % n, t.hinge})
+        for (int j : {(t.hinge + n - 1) % n, t.hinge}) H_(i, j) -= c;
+    }
+}
+
+Vector HingeInertias::relative(const Vector& x) const {
+  Vector y = x;
+  y.head(chain_.dofs()) -= chain_.q0();
+  return y;
+}
+
+double HingeInertias::energy(const Vector& x) const {
+  const Vector y = relative(x);
+  return 0.5 * y.dot(H_ * y);
+}
+
+void HingeInertias::add_forces(const Vector& x, Eigen::Ref<Vector> r) const { r += H_ * relative(x); }
+
+void HingeInertias::add_stiffness(double c, Eigen::Ref<Matrix> T, bool springs_only) const {
+  T += c * (springs_only ? springs_ : H_);
+}
+
+double HingeInertias::kinetic_energy(const Vector& v) const { return 0.5 * J_.dot(v.tail(p_).cwiseAbs2()); }
+
+void HingeInertias::add_inertia_forces(const Vector& a, Eigen::Ref<Vector> r) const {
+  r.tail(p_) += J_.cwiseProduct(a.tail(p_));
+}
+
+void HingeInertias::add_mass(double c, Eigen::Ref<Matrix> M) const {
+  M.bottomRightCorner(p_, p_).diagonal() += c * J_;
+}
+
+void HingeInertias::add_mass_times(const Matrix& E, Eigen::Ref<Matrix> out) const {
+  out.bottomRows(p_) += J_.asDiagonal() * E.bottomRows(p_);
 }
 
 LinearTerms linear_terms(const Chain& chain, const ring::RingSpec& spec) {

@@ -88,6 +88,14 @@ class Attachments {
   /// The point masses' mass matrix at rest, their translations only (dofs x dofs, dense;
   /// their inertias are hinge_rotations()'). O(n^2).
   Matrix rest_mass() const;
+  /// Adds c times their mass matrix at q to M (dofs x dofs): sum_k m_k (d u_k/dq)^T (d u_k/dq),
+  /// whose angle block is l^2 sum_{k > max(i,j)} m_k cos(phi_i - phi_j), the structure of the
+  /// chain's own (dynamics_model.hpp: the quadratic-velocity terms follow from its constants).
+  /// O(n^2); nothing without point masses.
+  void add_mass(const Vector& q, double c, Eigen::Ref<Matrix> M) const;
+  bool has_mass() const { return has_mass_; }
+  /// Their kinetic energy sum_k m_k |d u_k/dt|^2 / 2 at (q, v), J. O(n).
+  double kinetic_energy(const Vector& q, const Vector& v) const;
   /// The terms on the hinges' rotations as they are, for the linear modes: kr (infinity at a
   /// clamp) and the point inertias, by hinge. O(n).
   std::vector<HingeRotation> hinge_rotations() const;
@@ -97,6 +105,9 @@ class Attachments {
   /// Chain::ConstraintKinematics. O(n p).
   Chain::ConstraintKinematics pins(const Vector& q) const;
   int pin_rows() const { return 2 * static_cast<int>(pins_.size()); }
+  /// The chain's constraint rows (closure, roller) with the further pins' after them, as
+  /// Chain::constraint_kinematics: what the dense statics and response hold. O(n p).
+  Chain::ConstraintKinematics constraints(const Vector& q) const;
 
   // The terms by hinge, the one place they are written: the members above pull them back
   // to the angles, the O(n) statics (statics_natural.cpp) takes them on hinge positions.
@@ -122,6 +133,79 @@ class Attachments {
   std::vector<int> pins_;                      ///< hinges of the further pins
   Vector q0_;
   bool has_stiffness_ = false;                 ///< a foundation, a spring or a clamp
+  bool has_mass_ = false;                      ///< a point mass
+};
+
+/// The constraint rows held along a path: the chain's, and `terms`' further pins when given;
+/// their rate Gdot v = hess v.^2 (every row is a sum of single-angle sinusoids). O(n p).
+Chain::ConstraintKinematics constraint_kinematics(const Chain& chain, const Attachments* terms, const Vector& q);
+inline Vector constraint_jdot_qdot(const Chain::ConstraintKinematics& ck, const Vector& v) {
+  return ck.hess * v.cwiseAbs2();
+}
+
+/// The hinges whose rotation chi is an unknown (HingeRotation::moves), written once for the
+/// linear modes (linear_model.cpp) and the nonlinear analyses (HingeInertias): hinge h's
+/// spring K between its segments a = h - 1 and b = h is split in two halves 2K, from a to
+/// chi and from b to chi; kr joins chi to the ground and the inertia sits on chi. Calls
+/// spring(i, j, c) for a spring c (r_i - r_j)^2 / 2 between rotations i and j (i, j < n: the
+/// segments'; n + x: the x-th moving hinge's chi, in the order of `rotations`; a negative c
+/// takes the hinge's own spring out), ground(i, c) for c r_i^2 / 2 and mass(i, J) for
+/// J r_i'^2 / 2. O(moving hinges).
+template <class Spring, class Ground, class Mass>
+void split_hinges(const std::vector<HingeRotation>& rotations, int n, double K, Spring spring, Ground ground,
+                  Mass mass) {
+  int x = n;
+  for (const HingeRotation& t : rotations) {
+    if (!t.moves()) continue;
+    const int a = (t.hinge + n - 1) % n, b = t.hinge;
+    spring(a, b, -K);
+    spring(a, x, 2.0 * K);
+    spring(b, x, 2.0 * K);
+    ground(x, t.kr);
+    mass(x, t.inertia);
+    ++x;
+  }
+}
+
+/// The point inertias' hinge rotations chi as unknowns of the nonlinear response and of the
+/// modes under load (Euler-Bernoulli chain; pinned): the state is x = (q, chi), chi the
+/// hinges' rotations from rest. split_hinges' springs are quadratic in (theta, chi) with
+/// constant coefficients, so they are a constant border H of the chain's tangent, and J a
+/// constant mass on chi, as the Timoshenko chain's sections (sections.hpp). H holds the
+/// split springs minus what Chain and Attachments already put at those hinges (the hinge
+/// spring K, kr condensed on the mean rotation): condensing chi out of H gives zero, so the
+/// statics (no inertia) stay exact without chi, and the response and the modes under load
+/// border the chain's matrices with H. Memory (n + p)^2 for H (the dense path's size).
+class HingeInertias {
+ public:
+  HingeInertias(const Chain& chain, const Attachments& terms);
+
+  /// The unknowns chi (moving hinges), p.
+  int n() const { return p_; }
+  /// H's energy (theta, chi)^T H (theta, chi) / 2 at x = (q, chi): the split springs less
+  /// the terms they replace (class comment), J. O(n^2).
+  double energy(const Vector& x) const;
+  /// Adds H (theta, chi) to r (dofs + p). O(n^2).
+  void add_forces(const Vector& x, Eigen::Ref<Vector> r) const;
+  /// Adds c times H to T ((dofs + p) square); `springs_only`: the hinge springs' part, without
+  /// kr (the hinge dampers follow it). O(n^2).
+  void add_stiffness(double c, Eigen::Ref<Matrix> T, bool springs_only = false) const;
+  /// J chi'^2 / 2, J. O(p).
+  double kinetic_energy(const Vector& v) const;
+  /// Adds J a_chi to r's tail. O(p).
+  void add_inertia_forces(const Vector& a, Eigen::Ref<Vector> r) const;
+  /// Adds c diag(0, J) to M. O(p).
+  void add_mass(double c, Eigen::Ref<Matrix> M) const;
+  /// Adds diag(0, J) E to out for the columns of E. O(p k).
+  void add_mass_times(const Matrix& E, Eigen::Ref<Matrix> out) const;
+
+ private:
+  /// theta = q - q0 and chi, as one vector on H's rows.
+  Vector relative(const Vector& x) const;
+  const Chain& chain_;
+  int p_ = 0;
+  Matrix H_, springs_;  ///< on (q, chi): all of H, and its hinge springs' part
+  Vector J_;            ///< the inertias on chi
 };
 
 /// The terms linearized about the rest n-gon, for the linear modes. The terms on a hinge's

@@ -7,6 +7,15 @@
 #include "multibody/backend.hpp"
 
 namespace multibody {
+namespace {
+
+bool has_point_inertia(const ring::RingSpec& spec) {
+  for (const ring::PointMass& m : spec.masses)
+    if (m.inertia > 0.0) return true;
+  return false;
+}
+
+}  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
@@ -70,9 +79,9 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("modes.preload = \"static\" is computed on the dense path: set multibody.method = "
                                 "\"dense\" or \"auto\"");
-  if (!spec.masses.empty())
-    throw std::invalid_argument("modes.preload = \"static\" with point masses (masses) is not offered yet: their mass "
-                                "about the deformed chain is not written");
+  if (spec.theory == ring::Theory::timoshenko && has_point_inertia(spec))
+    throw std::invalid_argument("multibody modes.preload = \"static\": the Timoshenko chain (ring.theory = "
+                                "\"timoshenko\") does not take point inertias (masses[].inertia > 0) yet");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
@@ -88,14 +97,12 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
           "multibody method = \"sparse\" (the O(n) response) has no Timoshenko chain (ring.theory = \"timoshenko\"): "
           "set multibody.method = \"dense\" or \"auto\"");
   }
-  // The dense path takes the foundation, springs and the clamp (stiffness only); point
-  // masses (a configuration-dependent mass) and further pins (constraint rows) it has not.
-  if (!spec.masses.empty() || !spec.supports.pins.empty())
-    throw std::invalid_argument(std::string("multibody response does not take ") +
-                                (spec.masses.empty()          ? "supports.pins"
-                                 : spec.supports.pins.empty() ? "masses"
-                                                              : "masses, supports.pins") +
-                                " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
+  // The dense path takes every term; a point inertia's hinge rotation (attachments.hpp,
+  // HingeInertias) is written on the Euler-Bernoulli chain's segment angles only.
+  if (spec.theory == ring::Theory::timoshenko && has_point_inertia(spec))
+    throw std::invalid_argument(
+        "multibody response: the Timoshenko chain (ring.theory = \"timoshenko\") does not take point inertias "
+        "(masses[].inertia > 0) yet; their translational mass it takes");
   if (!spec.paper_terms_only() && (response.integrator == ring::ResponseOptions::Integrator::energy_momentum ||
                                    backend(options, spec, response.loads, Analysis::response) == Backend::banded))
     ring::refuse_terms_beyond_paper(spec, "multibody response (energy-momentum and the O(n) path)");

@@ -16,14 +16,15 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 /// the Timoshenko chain on the dense path only.
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
-/// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"),
-/// no point masses (their mass about a deformed state is not written yet), no Timoshenko chain.
+/// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"), a
+/// pinned Timoshenko chain without point inertias.
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics);
 /// Forced response: a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
 /// none with the energy-momentum integrator; the integrator "newmark", "generalized-alpha"
 /// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here); the
-/// Timoshenko chain on the dense path with "newmark" or "generalized-alpha" only.
+/// Timoshenko chain on the dense path with "newmark" or "generalized-alpha" only, without
+/// point inertias; the terms beyond the paper's ring on the dense path only.
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response);
 

@@ -2,6 +2,7 @@
 
 #include "multibody/checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -83,16 +84,18 @@ class ChainStepper : public paths::Stepper {
       out.ux.push_back(u.x());
       out.uy.push_back(u.y());
     }
-    out.kinetic = chain_.kinetic_energy(q, v);
+    out.kinetic = chain_.kinetic_energy(q, v) + (p_.terms ? p_.terms->kinetic_energy(q, v) : 0.0);
+    if (p_.hinges) out.kinetic += p_.hinges->kinetic_energy(s_.v);
     if (p_.sections) {  // the springs on the sections' rotations and the shear; the terms' on translations
       out.kinetic += p_.sections->kinetic_energy(s_.v);
       out.strain = p_.sections->energy(s_.q) + (p_.terms ? p_.terms->energy(q, false) : 0.0);
     } else {
       out.strain = chain_.spring_energy(q) + (p_.terms ? p_.terms->energy(q) : 0.0);
+      if (p_.hinges) out.strain += p_.hinges->energy(s_.q);
     }
     out.work = work_;
     out.dissipated = dissipated_;
-    out.constraint_residual = chain_.constraints(q).cwiseAbs().maxCoeff();
+    out.constraint_residual = detail::constraint_kinematics(chain_, p_.terms, q).g.cwiseAbs().maxCoeff();
     return out;
   }
 
@@ -157,12 +160,16 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   std::optional<detail::Sections> sections;  // the Timoshenko chain (sections.hpp)
   if (spec.theory == ring::Theory::timoshenko)
     sections.emplace(chain, terms ? &*terms : nullptr, shear ? *shear : Shear::of(spec, chain.l()));
+  std::optional<detail::HingeInertias> hinges;  // point inertias: their hinges' rotations (attachments.hpp)
+  if (terms && std::any_of(spec.masses.begin(), spec.masses.end(), [](const ring::PointMass& m) { return m.inertia > 0.0; }))
+    hinges.emplace(chain, *terms);
   Problem p{chain,
             {one_point ? chain.hinge_at(load.angle) : 0, {load.force[0], load.force[1]}},
             response.history,
             loading ? &*loading : nullptr,
             terms ? &*terms : nullptr,
-            sections ? &*sections : nullptr};
+            sections ? &*sections : nullptr,
+            hinges ? &*hinges : nullptr};
   const int N = p.size();
   // Rayleigh damping about the undeformed chain; hinge dampers follow the springs'
   // pattern (cyclic 2, -1, -1), so they add c / K times the stiffness.
@@ -171,13 +178,13 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   const bool damped = damping.any();
   const bool banded = backend(options, spec, response.loads, Analysis::response) == Backend::banded;
   const std::unique_ptr<detail::NewtonBackend> newton =
-      detail::make_newton_backend(chain, p.load, damping, banded, p.loading, p.terms, p.sections);
+      detail::make_newton_backend(chain, p.load, damping, banded, p.loading, p.terms, p.sections, p.hinges);
   detail::NewtonBackend& nb = *newton;
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
 
   State s;
-  s.q = Vector::Zero(N);  // at rest; the shear angles zero
+  s.q = Vector::Zero(N);  // at rest; the shear angles and hinge rotations zero
   s.q.head(n) = chain.q0();
   s.v = Vector::Zero(N);
   if (!nb.initial_acceleration(s.q, s.v, p.history.factor(s.t), s.qdd, s.lambda))
@@ -198,7 +205,7 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   paths::Grid grid = detail::response_grid(response, controls, guard, "multibody::respond");
   grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
   ring::TimeHistory th = paths::integrate(stepper, grid, response.record);
-  th.unknowns = N + chain.constraint_count();  // angles (and shear angles) and multipliers of the Newton system
+  th.unknowns = N + p.constraint_count();  // angles (shear angles, hinge rotations) and multipliers of the Newton system
   return th;
 }
 

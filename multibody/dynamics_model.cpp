@@ -6,9 +6,15 @@
 
 namespace multibody::detail {
 
-Inertia inertia_constants(const Chain& chain) {
+Matrix mass_matrix(const Chain& chain, const Attachments* terms, const Vector& q) {
+  Matrix M = chain.mass_matrix(q);
+  if (terms) terms->add_mass(q, 1.0, M);
+  return M;
+}
+
+Inertia inertia_constants(const Chain& chain, const Attachments* terms) {
   Inertia in;
-  in.C0 = chain.mass_matrix(Vector::Zero(chain.dofs()));
+  in.C0 = mass_matrix(chain, terms, Vector::Zero(chain.dofs()));
   in.diag = in.C0.diagonal();
   in.C0.diagonal().setZero();
   return in;

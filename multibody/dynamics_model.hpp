@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 
+#include "multibody/attachments.hpp"
 #include "multibody/chain.hpp"
 
 namespace multibody::detail {
@@ -32,14 +33,18 @@ struct DeadLoad {
   Eigen::Vector2d force{0.0, 0.0};
 };
 
-/// Constant parts of the inertia, read once from the chain's mass matrix at phi = 0
-/// (where every cosine is 1): M_jk = C0_jk cos(phi_j - phi_k) for j != k and
-/// M_jj = diag_j, the structure of chain.hpp (checked in the unit tests). O(n^2).
+/// Constant parts of the inertia, read once from the mass matrix at phi = 0 (where every
+/// cosine is 1): M_jk = C0_jk cos(phi_j - phi_k) for j != k and M_jj = diag_j, the
+/// structure of chain.hpp, which `terms`' point masses share (Attachments::add_mass; both
+/// checked in the unit tests). O(n^2).
 struct Inertia {
-  Matrix C0;    ///< m l^2 (L^T L)_jk off the diagonal, zero on it
+  Matrix C0;    ///< m l^2 (L^T L)_jk (+ the point masses' l^2 sum_{k > max(j,k)} m_k) off the diagonal, zero on it
   Vector diag;  ///< M_jj, constant
 };
-Inertia inertia_constants(const Chain& chain);
+Inertia inertia_constants(const Chain& chain, const Attachments* terms = nullptr);
+/// The mass matrix M(q) of the chain's coordinates: the chain's and `terms`' point masses'
+/// translations (dofs x dofs). O(n^2).
+Matrix mass_matrix(const Chain& chain, const Attachments* terms, const Vector& q);
 
 /// Inertia force and its tangent in one pass over the n x n entries (no M or S formed):
 ///   r = M(q) qdd + xi(q, v),

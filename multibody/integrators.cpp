@@ -43,11 +43,22 @@ struct RefreshPolicy {
   }
 };
 
+/// The constraints at the state q, and Gdot v. O(n).
+Vector constraints(const Problem& p, const Vector& q) {
+  const int nc = p.chain.dofs();
+  return p.terms ? p.terms->constraints(q.head(nc)).g : p.chain.constraints(q.head(nc));
+}
+Vector jdot_qdot(const Problem& p, const Vector& q, const Vector& v) {
+  const int nc = p.chain.dofs();
+  if (p.terms) return constraint_jdot_qdot(p.terms->constraints(q.head(nc)), v.head(nc));
+  return p.chain.constraint_jdot_qdot(q.head(nc), v.head(nc));
+}
+
 /// Solves g(q) = 0 for the dependent angles `dep` with the others fixed: chord iterations
 /// with the block G_y of `G` (the Jacobian at a nearby configuration: the caller's last
 /// one, which saves evaluating it here). O(n) per iteration. False if it fails.
-bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix& G, Vector& q) {
-  const int nc = ch.dofs();  // the dependent angles are among the chain's coordinates, q's head
+bool solve_dependent(const Problem& p, const std::vector<int>& dep, const Matrix& G, Vector& q) {
+  const Chain& ch = p.chain;  // the dependent angles are among the chain's coordinates, q's head
   const int c = static_cast<int>(dep.size());
   // |g| is in metres; 1e-15 R sqrt(n) is the round-off of the closure sum of n terms.
   const double tol = 1e-15 * ch.circumradius() * std::sqrt(double(ch.n()));
@@ -55,7 +66,7 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
   for (int i = 0; i < c; ++i) Gy.col(i) = G.col(dep[i]);
   const Eigen::PartialPivLU<Matrix> lu(Gy);
   for (int it = 0; it < 30; ++it) {
-    const Vector g = ch.constraints(q.head(nc));
+    const Vector g = constraints(p, q);
     if (!g.allFinite()) return false;
     if (g.cwiseAbs().maxCoeff() <= tol) return true;
     const Vector dy = -lu.solve(g);
@@ -63,22 +74,22 @@ bool solve_dependent(const Chain& ch, const std::vector<int>& dep, const Matrix&
     for (int i = 0; i < c; ++i) q[dep[i]] += dy[i];
     if (dy.cwiseAbs().maxCoeff() <= 1e-15) return true;
   }
-  return ch.constraints(q.head(nc)).cwiseAbs().maxCoeff() <= 1e3 * tol;
+  return constraints(p, q).cwiseAbs().maxCoeff() <= 1e3 * tol;
 }
 
-/// The constraints at the state q, and Gdot v. O(n).
-Vector constraints(const Problem& p, const Vector& q) { return p.chain.constraints(q.head(p.chain.dofs())); }
-Vector jdot_qdot(const Problem& p, const Vector& q, const Vector& v) {
-  const int nc = p.chain.dofs();
-  return p.chain.constraint_jdot_qdot(q.head(nc), v.head(nc));
-}
-
-/// M(q) E for the columns of E (Problem::size rows): the chain's mass, and the sections'. O(n k).
+/// M(q) E for the columns of E (Problem::size rows): the chain's mass, the point masses', and
+/// the sections' or the hinge rotations'. O(n k), O(n^2 k) with point masses.
 Matrix mass_times_columns(const Problem& p, const Vector& q, const Matrix& E) {
   const int nc = p.chain.dofs();
   Matrix out = Matrix::Zero(E.rows(), E.cols());
   out.topRows(nc) = p.chain.mass_times_columns(q.head(nc), E.topRows(nc));
+  if (p.terms && p.terms->has_mass()) {
+    Matrix Mt = Matrix::Zero(nc, nc);
+    p.terms->add_mass(q.head(nc), 1.0, Mt);
+    out.topRows(nc) += Mt * E.topRows(nc);
+  }
   if (p.sections) p.sections->add_mass_times(E, out);
+  if (p.hinges) p.hinges->add_mass_times(E, out);
   return out;
 }
 
@@ -86,8 +97,14 @@ Matrix mass_times_columns(const Problem& p, const Vector& q, const Matrix& E) {
 
 Kinematic kinematics(const Problem& p, const Vector& q, bool values, bool hessian) {
   const int nc = p.chain.dofs();
-  if (q.size() == nc) return detail::evaluate(p.chain, q, values, hessian);
-  Kinematic k = detail::evaluate(p.chain, q.head(nc), values, hessian);
+  Kinematic k;
+  if (p.terms && p.terms->pin_rows() > 0) {
+    Chain::ConstraintKinematics ck = p.terms->constraints(q.head(nc));
+    k = {std::move(ck.G), std::move(ck.g), std::move(ck.hess)};
+  } else {
+    k = detail::evaluate(p.chain, q.head(nc), values, hessian);
+  }
+  if (q.size() == nc) return k;
   auto widen = [&](Matrix& m) {
     if (m.size() == 0) return;
     Matrix w = Matrix::Zero(m.rows(), q.size());
@@ -193,7 +210,7 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
 StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const State& s0, double h,
                              const IntegrationControls& ctl, NewtonBackend& nb, State& s1) {
   const Chain& ch = p.chain;
-  const int n = p.size(), c = ch.constraint_count(), nz = n - c;
+  const int n = p.size(), c = p.constraint_count(), nz = n - c;
   std::vector<int> dep(c), ind;
   {
     // The shear angles' columns are zero: the pivoting takes the dependent ones among phi.
@@ -308,7 +325,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     }
     if (norm <= ctl.tol_q && constraints(p, q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
       // The dependent angles to round-off, and the rates there.
-      out.converged = solve_dependent(ch, dep, k.G, q);
+      out.converged = solve_dependent(p, dep, k.G, q);
       if (out.converged) rates();
       break;
     }

@@ -40,12 +40,18 @@ struct Problem {
   /// The Timoshenko chain's sections (sections.hpp), on the dense backend only: the state's
   /// q is then (phi, gamma), the chain's coordinates its head.
   const Sections* sections = nullptr;
-  /// Unknowns of the state: the chain's coordinates, and the shear angles.
-  int size() const { return chain.dofs() + (sections ? sections->n() : 0); }
+  /// The point inertias' hinge rotations (attachments.hpp), on the dense backend only: the
+  /// state's q is then (q, chi), the chain's coordinates its head.
+  const HingeInertias* hinges = nullptr;
+  /// Unknowns of the state: the chain's coordinates, and the shear angles or hinge rotations.
+  int size() const { return chain.dofs() + (sections ? sections->n() : 0) + (hinges ? hinges->n() : 0); }
+  /// Constraint rows: the chain's and the further pins'.
+  int constraint_count() const { return chain.constraint_count() + (terms ? terms->pin_rows() : 0); }
 };
 
-/// The chain's constraint kinematics at the state q (Problem::size entries): on its head,
-/// with zero columns for the shear angles, which enter no constraint. O(n).
+/// The constraint kinematics at the state q (Problem::size entries): the chain's rows and the
+/// further pins' on its head, with zero columns for the shear angles and hinge rotations,
+/// which enter no constraint. O(n).
 Kinematic kinematics(const Problem& p, const Vector& q, bool values = true, bool hessian = true);
 
 /// Result of one attempted step.

@@ -91,25 +91,19 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
   const double Kh = chain.K();
   for (int h = 0; h < n; ++h) spring((h + n - 1) % n, h, Kh);  // the hinge springs
   if (terms) {
-    int extra = n;
     for (const detail::HingeRotation& t : terms->rotations) {
+      if (t.moves()) continue;
+      // Condensed onto the mean rotation (attachments.hpp): c m^2 / 2, m = (r_a + r_b) / 2.
       const int a = (t.hinge + n - 1) % n, b = t.hinge;
-      if (!t.moves()) {
-        // Condensed onto the mean rotation (attachments.hpp): c m^2 / 2, m = (r_a + r_b) / 2.
-        const double c = detail::condensed_rotation_stiffness(t.kr, Kh) / 4.0;
-        for (int i : {a, b})
-          for (int j : {a, b}) add(K, i, j, c);
-        continue;
-      }
-      // The hinge's spring split into two halves 2K from each segment to the hinge's rotation
-      // chi, which carries the inertia and kr.
-      const int x = extra++;
-      spring(a, b, -Kh);
-      spring(a, x, 2.0 * Kh);
-      spring(b, x, 2.0 * Kh);
-      add(K, x, x, t.kr);
-      add(M, x, x, t.inertia);
+      const double c = detail::condensed_rotation_stiffness(t.kr, Kh) / 4.0;
+      for (int i : {a, b})
+        for (int j : {a, b}) add(K, i, j, c);
     }
+    // The moving hinges: the spring split in two halves 2K to the hinge's rotation chi, which
+    // carries the inertia and kr.
+    detail::split_hinges(
+        terms->rotations, n, Kh, spring, [&](int x, double kr) { add(K, x, x, kr); },
+        [&](int x, double j) { add(M, x, x, j); });
   }
   if (shear)
     for (int i = 0; i < n; ++i) {

@@ -14,16 +14,20 @@ namespace {
 class DenseBackend final : public NewtonBackend {
  public:
   DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
-               const Attachments* terms, const Sections* sections)
-      : NewtonBackend(chain, load, damping, loading, terms, sections),
-        inertia_(inertia_constants(chain)),
+               const Attachments* terms, const Sections* sections, const HingeInertias* hinges)
+      : NewtonBackend(chain, load, damping, loading, terms, sections, hinges),
+        inertia_(inertia_constants(chain, terms)),
         K_(chain.stiffness_matrix()),
         n_(chain.dofs()),
-        N_(n_ + (sections ? sections->n() : 0)) {
+        N_(n_ + (sections ? sections->n() : 0) + (hinges ? hinges->n() : 0)) {
     C_ = Matrix::Zero(N_, N_);
     if (!damping.any()) return;
     const Matrix cyclic = (damping.cyclic / chain.K()) * K_;
-    C_.topLeftCorner(n_, n_) = damping.mass * chain.mass_matrix(chain.q0()) + cyclic;
+    C_.topLeftCorner(n_, n_) = damping.mass * mass_matrix(chain, terms, chain.q0()) + cyclic;
+    if (hinges) {  // the mass J on chi; the dampers on the split springs
+      hinges->add_mass(damping.mass, C_);
+      hinges->add_stiffness(damping.cyclic / chain.K(), C_, true);
+    }
     if (sections) {  // the mass [M + J, J; J, J]; the dampers between the sections' rotations
       sections->add_mass(damping.mass, C_);
       C_.topRightCorner(n_, n_) = cyclic;
@@ -35,21 +39,23 @@ class DenseBackend final : public NewtonBackend {
   Vector damping_times(const Vector& v) const override { return C_ * v; }
 
   bool initial_acceleration(const Vector& q, const Vector& v, double f, Vector& qdd, Vector& lambda) const override {
-    const Eigen::Index c = chain_.constraint_count();
     const Vector qc = q.head(n_), vc = v.head(n_);
-    const Matrix G = chain_.constraint_jacobian(qc);
+    const Chain::ConstraintKinematics ck = constraint_kinematics(chain_, terms_, qc);
+    const Matrix& G = ck.G;
+    const Eigen::Index c = G.rows();
     Vector xi;
     const Vector phi = load_forces_at(qc, f, nullptr);
     inertia_terms(inertia_, qc, vc, Vector::Zero(n_), 0.0, 0.0, xi, nullptr);
     Matrix A = Matrix::Zero(N_ + c, N_ + c);
-    A.topLeftCorner(n_, n_) = chain_.mass_matrix(qc);
+    A.topLeftCorner(n_, n_) = mass_matrix(chain_, terms_, qc);
     if (sections_) sections_->add_mass(1.0, A.topLeftCorner(N_, N_));
+    if (hinges_) hinges_->add_mass(1.0, A.topLeftCorner(N_, N_));
     A.block(0, N_, n_, c) = G.transpose();
     A.block(N_, 0, c, n_) = G;
     Vector b = Vector::Zero(N_ + c);
     b.head(N_) = -elastic_forces(q) - C_ * v;
     b.head(n_) += f * phi - xi;
-    b.tail(c) = -chain_.constraint_jdot_qdot(qc, vc);
+    b.tail(c) = -constraint_jdot_qdot(ck, vc);
     if (sections_ && !(sections_->shear().inertia > 0.0)) {
       // No rotary inertia: gamma is algebraic, A psi + S gamma = 0 at all times (linear, so
       // also A phi'' + (A + S) gamma'' = 0): those rows in place of the massless ones.
@@ -73,8 +79,8 @@ class DenseBackend final : public NewtonBackend {
     // (the sections', with the shear angles) after them.
     std::optional<Eigen::Ref<Matrix>> tc;
     if (tangent) {
-      if (sections_) T_.setZero(N_, N_);
-      else T_ = K_;
+      T_.setZero(N_, N_);
+      if (!sections_) T_.topLeftCorner(n_, n_) = K_;
       tc.emplace(T_.topLeftCorner(n_, n_));
     }
     Vector rc;
@@ -84,9 +90,14 @@ class DenseBackend final : public NewtonBackend {
     r = elastic_forces(q, false);
     r.head(n_) += rc;
     if (sections_) sections_->add_inertia_forces(qdd, r);
+    if (hinges_) hinges_->add_inertia_forces(qdd, r);
     if (tangent && sections_) {
       sections_->add_stiffness(T_);
       sections_->add_mass(cm, T_);
+    }
+    if (tangent && hinges_) {
+      hinges_->add_stiffness(1.0, T_);
+      hinges_->add_mass(cm, T_);
     }
     if (tangent && damping_.any()) T_ += cv * C_;
     if (damping_.any()) r += C_ * v;
@@ -140,7 +151,8 @@ class DenseBackend final : public NewtonBackend {
     Vector e = Vector::Zero(N_);
     const Vector qc = q.head(n_);
     if (sections_) sections_->add_forces(q, e);
-    else e = chain_.spring_forces(qc);
+    else e.head(n_) = chain_.spring_forces(qc);
+    if (hinges_) hinges_->add_forces(q, e);
     if (terms && terms_) {
       Vector et = Vector::Zero(n_);
       terms_->add_stiffness(qc, et, nullptr, !sections_);
@@ -243,12 +255,13 @@ Vector NewtonBackend::load_forces_at(const Vector& q, double f, Eigen::Ref<Matri
 
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading,
-                                                   const Attachments* terms, const Sections* sections) {
-  if (structured && (loading || terms || sections))
+                                                   const Attachments* terms, const Sections* sections,
+                                                   const HingeInertias* hinges) {
+  if (structured && (loading || terms || sections || hinges))
     throw std::invalid_argument(
         "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and one point load only");
   if (structured) return std::make_unique<StructuredBackend>(chain, load, damping);
-  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections);
+  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges);
 }
 
 }  // namespace multibody::detail

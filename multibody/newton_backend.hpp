@@ -13,6 +13,11 @@
 // gamma are zero. Damping: Rayleigh a times that full mass at rest, and the cyclic dampers
 // (Rayleigh b K and the hinge dampers) between neighbouring sections, as the hinge springs.
 //
+// Point inertias (attachments.hpp, HingeInertias, dense only): the unknowns are (phi, chi),
+// the residual and tangent bordered by the constant H and the mass J on chi, the same way;
+// the dampers follow the split hinge springs. Point masses add to the chain's inertia
+// constants (their mass has its structure); further pins add constraint rows.
+//
 // The Newton matrix is the scaled saddle-point system
 //   [T G^T; G 0] [dq; dl] = [-r; -g],
 // rows of g and columns of lambda multiplied by s = max|T_jj| / l so that both blocks
@@ -72,8 +77,10 @@ class NewtonBackend {
 
  protected:
   NewtonBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading = nullptr,
-                const Attachments* terms = nullptr, const Sections* sections = nullptr)
-      : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms), sections_(sections) {}
+                const Attachments* terms = nullptr, const Sections* sections = nullptr,
+                const HingeInertias* hinges = nullptr)
+      : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms), sections_(sections),
+        hinges_(hinges) {}
   /// The loads' generalized forces at q (the dead point load, or `loading`'s), and, if
   /// `tangent` is not null, f times their stiffness added to it.
   Vector load_forces_at(const Vector& q, double f, Eigen::Ref<Matrix>* tangent) const;
@@ -83,17 +90,20 @@ class NewtonBackend {
   const Loading* loading_;
   const Attachments* terms_;
   const Sections* sections_;
+  const HingeInertias* hinges_;
   bool valid_ = false;
   double h_ = 0.0;
   double sc_ = 1.0;  ///< the constraint rows' scale of the last factorization
 };
 
 /// The dense or the structured backend for this chain, load and damping; `loading` (loads
-/// beyond one point load), `terms` (foundation, springs, clamp) and `sections` (the
-/// Timoshenko chain: the unknowns become (phi, gamma)) on the dense one only.
+/// beyond one point load), `terms` (foundation, springs, clamp, point masses, further pins),
+/// `sections` (the Timoshenko chain: the unknowns become (phi, gamma)) and `hinges` (point
+/// inertias: the unknowns become (phi, chi)) on the dense one only.
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading = nullptr,
                                                    const Attachments* terms = nullptr,
-                                                   const Sections* sections = nullptr);
+                                                   const Sections* sections = nullptr,
+                                                   const HingeInertias* hinges = nullptr);
 
 }  // namespace multibody::detail

@@ -76,18 +76,7 @@ DenseTangent::DenseTangent(const Chain& chain, const ring::RingSpec& spec, const
       n_(chain.dofs()),
       c_(chain.constraint_count() + terms_.pin_rows()) {}
 
-Chain::ConstraintKinematics DenseTangent::constraints(const Vector& q) const {
-  Chain::ConstraintKinematics ck = chain_.constraint_kinematics(q);
-  if (terms_.pin_rows() == 0) return ck;
-  const Chain::ConstraintKinematics p = terms_.pins(q);
-  ck.g.conservativeResize(c_);
-  ck.g.tail(p.g.size()) = p.g;
-  ck.G.conservativeResize(c_, Eigen::NoChange);
-  ck.G.bottomRows(p.G.rows()) = p.G;
-  ck.hess.conservativeResize(c_, Eigen::NoChange);
-  ck.hess.bottomRows(p.hess.rows()) = p.hess;
-  return ck;
-}
+Chain::ConstraintKinematics DenseTangent::constraints(const Vector& q) const { return terms_.constraints(q); }
 
 Vector DenseTangent::internal_forces(const Vector& q) const {
   Vector forces = shear_ ? Vector(K_ * (q - chain_.q0())) : chain_.spring_forces(q);
@@ -208,26 +197,42 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   const Matrix T = eq.tangent(path.state, ck);
   const Vector q = path.state.z.head(ch.dofs());
   Matrix Z = modal::kernel_basis(ck.G, ch.dofs());
-  Matrix Tr = Z.transpose() * T * Z, Mr = Z.transpose() * ch.mass_matrix(q) * Z;
+  const detail::Attachments terms(ch, spec);
+  const Matrix M = detail::mass_matrix(ch, &terms, q);  // the chain's and the point masses' about q
+  Matrix Tr = Z.transpose() * T * Z, Mr = Z.transpose() * M * Z;
+  // Unknowns that enter no constraint appended to q (tangent Tf, mass Mf on (q, extra)): the
+  // tangent space is Z for q and every extra unknown. O(n^3).
+  auto border = [&](const Matrix& Tf, const Matrix& Mf) {
+    const Eigen::Index d = ch.dofs(), extra = Tf.rows() - d;
+    Matrix Zf = Matrix::Zero(d + extra, Z.cols() + extra);
+    Zf.topLeftCorner(d, Z.cols()) = Z;
+    Zf.bottomRightCorner(extra, extra).setIdentity();
+    Tr = Zf.transpose() * Tf * Zf;
+    Mr = Zf.transpose() * Mf * Zf;
+    Z = std::move(Zf);
+  };
   if (spec.theory == ring::Theory::timoshenko) {
     // The shear angles back as unknowns (sections.hpp): T holds K_c = A - A (A + S)^{-1} A, the
     // Schur complement over gamma of [A, A; A, A + S], so on (phi, gamma) the full tangent is
-    // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J]; gamma has no constraint,
-    // so the tangent space is Z for phi and every gamma. O(n^3).
+    // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J].
     const int n = ch.n();
-    const detail::Attachments terms(ch, spec);
     const detail::Sections sections(ch, &terms, Shear::of(spec, ch.l()));
     Matrix Tf = Matrix::Zero(2 * n, 2 * n), Mf = Matrix::Zero(2 * n, 2 * n);
     sections.add_stiffness(Tf);
     Tf.topLeftCorner(n, n) += T - sections.condensed();
     sections.add_mass(1.0, Mf);
-    Mf.topLeftCorner(n, n) += ch.mass_matrix(q);
-    Matrix Zf = Matrix::Zero(2 * n, Z.cols() + n);
-    Zf.topLeftCorner(n, Z.cols()) = Z;
-    Zf.bottomRightCorner(n, n).setIdentity();
-    Tr = Zf.transpose() * Tf * Zf;
-    Mr = Zf.transpose() * Mf * Zf;
-    Z = std::move(Zf);
+    Mf.topLeftCorner(n, n) += M;
+    border(Tf, Mf);
+  } else if (const detail::HingeInertias hinges(ch, terms); hinges.n() > 0) {
+    // The point inertias' hinge rotations back as unknowns (attachments.hpp): T holds what
+    // condensing chi gives, H's border restores chi with its inertia J.
+    const Eigen::Index d = ch.dofs(), N = d + hinges.n();
+    Matrix Tf = Matrix::Zero(N, N), Mf = Matrix::Zero(N, N);
+    Tf.topLeftCorner(d, d) = T;
+    hinges.add_stiffness(1.0, Tf);
+    Mf.topLeftCorner(d, d) = M;
+    hinges.add_mass(1.0, Mf);
+    border(Tf, Mf);
   }
   const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "multibody modes under load");
   ring::ModalResult res;

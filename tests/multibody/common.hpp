@@ -23,6 +23,14 @@ inline std::string sci(double x) {
   return s.str();
 }
 
+/// A chain of n segments on the dense path (the paper's formulation, every analysis).
+inline ring::MultibodyOptions dense_chain(int n) {
+  ring::MultibodyOptions o;
+  o.n = n;
+  o.method = ring::MultibodyOptions::Method::dense;
+  return o;
+}
+
 /// Least-squares slope of log y against log x (a fitted convergence order).
 inline double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -35,6 +43,13 @@ inline double loglog_slope(const std::vector<double>& x, const std::vector<doubl
     sxy += lx * ly;
   }
   return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+/// Options of an n-segment chain, every other option at its default.
+inline ring::MultibodyOptions segments(int n) {
+  ring::MultibodyOptions o;
+  o.n = n;
+  return o;
 }
 
 /// The reconstructed section-5 load (issue 7): a 20 kN step at C (0 deg) toward the pin,

@@ -17,11 +17,16 @@
 #include "multibody/statics.hpp"
 #include "tests/support/close.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/multibody/modal_superposition.hpp"
 
 namespace {
 
 using mbtest::sci;
 using ringtest::pin_roller_ring;
+using mbtest::Linear;
+using mbtest::modal_superposition;
+using mbtest::relative_deviation;
+using mbtest::segments;
 
 using Integrator = ring::ResponseOptions::Integrator;
 
@@ -41,105 +46,6 @@ ring::ResponseOptions paper_scene(double force = 20e3, Integrator integrator = I
   return r;
 }
 
-ring::MultibodyOptions n_segments(int n) {
-  ring::MultibodyOptions o;
-  o.n = n;
-  return o;
-}
-
-/// Response of one undamped mode x'' + w^2 x = f g(t) (g = the load history of `r`, from
-/// rest) on the time grid t: exact for a step, (1 - cos w t) f / w^2, or (`discrete`, any
-/// history) by the integrator of `r` applied to
-/// this scalar equation, written here from Chung & Hulbert (1993) and Arnold & Bruls
-/// (2007) independently of multibody/dynamics.cpp: equilibrium at t_{n+1},
-/// (1-am) a_{n+1} + am a_n = (1-af) x''_{n+1} + af x''_n, Newmark updates with (beta,
-/// gamma); Newmark is am = af = 0, beta = 1/4, gamma = 1/2. x''_0 is consistent; the
-/// pseudo-acceleration starts (generalized-alpha, dynamics.hpp) from the Newton matrix of
-/// the first step, (c + w^2) a_0 = c x''_0 with c = (1-am) / ((1-af) beta h^2). A linear
-/// integrator commutes with the modal transformation, so applied mode by mode it gives
-/// what it gives on the linearized chain.
-std::vector<double> modal_response(double w, double f, const std::vector<double>& t,
-                                   const ring::ResponseOptions& r, bool discrete) {
-  std::vector<double> x(t.size());
-  if (!discrete) {
-    EXPECT_EQ(r.history.kind, ring::LoadHistory::Kind::step);
-    for (size_t i = 0; i < t.size(); ++i) x[i] = f * (1.0 - std::cos(w * t[i])) / (w * w);
-    return x;
-  }
-  double am = 0.0, af = 0.0, beta = 0.25, gamma = 0.5;
-  if (r.integrator == Integrator::generalized_alpha) {
-    am = (2.0 * r.rho_inf - 1.0) / (r.rho_inf + 1.0);
-    af = r.rho_inf / (r.rho_inf + 1.0);
-    gamma = 0.5 + af - am;
-    beta = 0.25 * (gamma + 0.5) * (gamma + 0.5);
-  }
-  const ring::LoadHistory& g = r.history;
-  double xn = 0.0, vn = 0.0, qdd = f * g.factor(0.0), a = qdd;
-  if (t.size() > 1) {
-    // Both integrators start from the acceleration filtered by the first step's Newton
-    // matrix (multibody/dynamics.cpp): generalized-alpha's pseudo-acceleration, Newmark's
-    // acceleration.
-    const double h = t[1] - t[0], c = (1.0 - am) / ((1.0 - af) * beta * h * h);
-    a = c * qdd / (c + w * w);
-    if (r.integrator == Integrator::newmark) qdd = a;
-  }
-  x[0] = 0.0;
-  for (size_t i = 1; i < t.size(); ++i) {
-    const double h = t[i] - t[i - 1];
-    // x1 = xhat + h^2 beta a1, x''1 = ((1-am) a1 + am a - af x'') / (1-af), x''1 + w^2 x1 = f.
-    const double xhat = xn + h * vn + h * h * (0.5 - beta) * a;
-    const double c1 = (1.0 - am) / (1.0 - af), c0 = (am * a - af * qdd) / (1.0 - af);
-    const double a1 = (f * g.factor(t[i]) - c0 - w * w * xhat) / (c1 + w * w * h * h * beta);
-    const double x1 = xhat + h * h * beta * a1;
-    vn = vn + h * ((1.0 - gamma) * a + gamma * a1);
-    qdd = c1 * a1 + c0;
-    a = a1;
-    xn = x1;
-    x[i] = x1;
-  }
-  return x;
-}
-
-/// Linear modal superposition of a step force F at hinge `load` of the chain about q0,
-/// all r = n - 3 modes: u_p(t) = sum_k J_p dq_k x_k(t), x_k'' + w_k^2 x_k = dq_k . Phi,
-/// with M0-orthonormal modes from solve_modes. Returns [point][step] for ux and uy.
-struct Linear {
-  std::vector<std::vector<double>> ux, uy;
-};
-Linear modal_superposition(const ring::RingSpec& spec, int n, const ring::ResponseOptions& r,
-                           const std::vector<double>& t, bool discrete) {
-  const ring::MultibodyOptions o = n_segments(n);
-  const multibody::Chain chain(spec, o, r.loads.points.at(0).angle);
-  const int modes = chain.dofs() - chain.constraint_count();
-  const multibody::ModalSolution sol = multibody::solve_modes(spec, o, modes);
-  const multibody::Vector q0 = chain.q0();
-  const multibody::Vector phi = chain.point_load_forces(
-      q0, chain.hinge_at(r.loads.points.at(0).angle), Eigen::Vector2d(r.loads.points.at(0).force[0], r.loads.points.at(0).force[1]));
-  Linear lin;
-  for (double a : r.record) {
-    const multibody::Matrix J = chain.hinge_jacobian(q0, chain.hinge_at(a));
-    std::vector<double> ux(t.size(), 0.0), uy(t.size(), 0.0);
-    for (int k = 0; k < modes; ++k) {
-      const double w = sol.result.omega[k];
-      const Eigen::Vector2d shape = J * sol.dq.col(k);
-      const std::vector<double> eta = modal_response(w, sol.dq.col(k).dot(phi), t, r, discrete);
-      for (size_t i = 0; i < t.size(); ++i) {
-        ux[i] += shape.x() * eta[i];
-        uy[i] += shape.y() * eta[i];
-      }
-    }
-    lin.ux.push_back(ux);
-    lin.uy.push_back(uy);
-  }
-  return lin;
-}
-
-double max_abs(const std::vector<double>& x) {
-  double m = 0.0;
-  for (double v : x) m = std::max(m, std::abs(v));
-  return m;
-}
-
 // Small load (P = 20 N, displacements ~3 mm on a 10 m ring): the geometric
 // nonlinearity is ~3e-4 relative, so the response is the linear one of the same chain.
 // Tolerance 0.5 % of the peak over 5 s (the acceptance). It covers the
@@ -147,25 +53,15 @@ double max_abs(const std::vector<double>& x) {
 // mode (w = 4.2 rad/s) is (w dt)^2/12 = 9e-6, ~1e-3 rad after 5 s.
 class MultibodyDynamicsSmallLoad : public ::testing::TestWithParam<Integrator> {};
 
-/// Largest deviation between the response and a linear reference, relative to the
-/// reference's peak, over the points that move.
-double relative_deviation(const ring::TimeHistory& th, const Linear& lin, int p) {
-  const double peak = std::max(max_abs(lin.ux[p]), max_abs(lin.uy[p]));
-  double worst = 0.0;
-  for (size_t i = 0; i < th.t.size(); ++i)
-    worst = std::max({worst, std::abs(th.ux[p][i] - lin.ux[p][i]), std::abs(th.uy[p][i] - lin.uy[p][i])});
-  return worst / peak;
-}
-
 TEST_P(MultibodyDynamicsSmallLoad, EqualsLinearModalSuperposition) {
   const ring::RingSpec spec = pin_roller_ring();
   const ring::ResponseOptions r = paper_scene(20.0, GetParam(), 0.0025);
-  const ring::TimeHistory th = multibody::respond(spec, n_segments(40), r);
+  const ring::TimeHistory th = multibody::respond(spec, segments(40), r);
   const Linear exact = modal_superposition(spec, 40, r, th.t, false);
   const Linear same = modal_superposition(spec, 40, r, th.t, true);
   // A tenth of the load: the linear part must scale away the deviation that is left.
   const ring::ResponseOptions r10 = paper_scene(2.0, GetParam(), 0.0025);
-  const ring::TimeHistory th10 = multibody::respond(spec, n_segments(40), r10);
+  const ring::TimeHistory th10 = multibody::respond(spec, segments(40), r10);
   const Linear same10 = modal_superposition(spec, 40, r10, th10.t, true);
   for (int p : {0, 1, 3}) {  // C, 90 and 270 deg; the pin (180 deg) does not move
     const double d_exact = relative_deviation(th, exact, p), d_same = relative_deviation(th, same, p);
@@ -201,7 +97,7 @@ TEST_P(MultibodyDynamicsSmallLoad, HistoriesAndObliqueLoadsFollowTheModes) {
     r.loads.points.at(0).force = {-14.0, 14.0};
     r.history.kind = kind;
     r.history.period = 0.7;
-    const ring::TimeHistory th = multibody::respond(spec, n_segments(40), r);
+    const ring::TimeHistory th = multibody::respond(spec, segments(40), r);
     const Linear same = modal_superposition(spec, 40, r, th.t, true);
     for (int p : {0, 1, 3}) {
       const double d = relative_deviation(th, same, p);
@@ -243,7 +139,7 @@ std::vector<double> successive_differences(Integrator integrator, double t_end,
   for (double dt : dts) {
     ring::ResponseOptions r = paper_scene(20e3, integrator, dt, t_end);
     r.history = history;
-    runs.push_back(multibody::respond(spec, n_segments(n), r));
+    runs.push_back(multibody::respond(spec, segments(n), r));
   }
   std::vector<double> d;
   for (size_t k = 0; k + 1 < runs.size(); ++k) d.push_back(history_difference(runs[k], runs[k + 1]));
@@ -319,7 +215,7 @@ class MultibodyDynamicsPaperScene : public ::testing::TestWithParam<Integrator> 
 
 TEST_P(MultibodyDynamicsPaperScene, ConstraintsHoldAndEnergyBalances) {
   const ring::RingSpec spec = pin_roller_ring();
-  const ring::TimeHistory th = multibody::respond(spec, n_segments(40), paper_scene(20e3, GetParam()));
+  const ring::TimeHistory th = multibody::respond(spec, segments(40), paper_scene(20e3, GetParam()));
   ASSERT_EQ(th.t.size(), 501u);
   double worst_g = 0.0, worst_e = 0.0, max_w = 0.0;
   for (size_t i = 0; i < th.t.size(); ++i) {
@@ -329,7 +225,7 @@ TEST_P(MultibodyDynamicsPaperScene, ConstraintsHoldAndEnergyBalances) {
     ASSERT_LT(th.constraint_residual[i], 1e-10) << "t = " << th.t[i];
   }
   const ring::TimeHistory half =
-      multibody::respond(spec, n_segments(40), paper_scene(20e3, GetParam(), 0.005));
+      multibody::respond(spec, segments(40), paper_scene(20e3, GetParam(), 0.005));
   double worst_e_half = 0.0;
   for (double e : half.energy_error) worst_e_half = std::max(worst_e_half, std::abs(e));
   RecordProperty("max_constraint_residual_m", sci(worst_g));
@@ -372,11 +268,11 @@ TEST(MultibodyDynamics, DampedResponseSettlesOnTheStaticEquilibrium) {
   ring::ResponseOptions r = paper_scene(20e3, Integrator::newmark, 0.01, 8.0);
   r.rayleigh_mass = 4.0;
   r.hinge_damping = 1e4;
-  const ring::TimeHistory th = multibody::respond(spec, n_segments(40), r);
+  const ring::TimeHistory th = multibody::respond(spec, segments(40), r);
   ring::StaticOptions st;
   st.loads = r.loads;
   st.record = r.record;
-  const ring::StaticResult eq = multibody::solve_static(spec, n_segments(40), st);
+  const ring::StaticResult eq = multibody::solve_static(spec, segments(40), st);
   for (size_t p = 0; p < r.record.size(); ++p) {
     EXPECT_TRUE(ringtest::IsClose(th.ux[p].back(), eq.displacements[p].ux, 1e-4, 1e-9)) << p;
     EXPECT_TRUE(ringtest::IsClose(th.uy[p].back(), eq.displacements[p].uy, 1e-4, 1e-9)) << p;
@@ -401,14 +297,14 @@ TEST(MultibodyDynamics, FailedStepsAreHalvedAndReported) {
   const ring::ResponseOptions r = paper_scene(20e3, Integrator::newmark, 0.01, 0.5);
   multibody::IntegrationControls ctl;
   ctl.max_newton = 3;
-  const ring::TimeHistory plain = multibody::respond(spec, n_segments(40), r);
-  const ring::TimeHistory halved = multibody::respond(spec, n_segments(40), r, ctl);
+  const ring::TimeHistory plain = multibody::respond(spec, segments(40), r);
+  const ring::TimeHistory halved = multibody::respond(spec, segments(40), r, ctl);
   ASSERT_EQ(halved.t.size(), plain.t.size());
   int more = 0;
   for (size_t i = 1; i < plain.t.size(); ++i) more += halved.newton_iterations[i] > plain.newton_iterations[i];
   EXPECT_GT(more, 0);  // some steps did need sub-steps
   const ring::TimeHistory fine =
-      multibody::respond(spec, n_segments(40), paper_scene(20e3, Integrator::newmark, 0.000625, 0.5));
+      multibody::respond(spec, segments(40), paper_scene(20e3, Integrator::newmark, 0.000625, 0.5));
   const double e_plain = std::abs(plain.ux[0].back() - fine.ux[0].back());
   const double e_halved = std::abs(halved.ux[0].back() - fine.ux[0].back());
   RecordProperty("error_plain_m", sci(e_plain));
@@ -417,7 +313,7 @@ TEST(MultibodyDynamics, FailedStepsAreHalvedAndReported) {
   ctl.max_newton = 1;
   ctl.min_dt_factor = 1e-3;
   try {
-    multibody::respond(spec, n_segments(40), r, ctl);
+    multibody::respond(spec, segments(40), r, ctl);
     FAIL() << "expected IntegrationFailure";
   } catch (const multibody::IntegrationFailure& e) {
     EXPECT_EQ(e.reason(), multibody::IntegrationFailure::Reason::step_too_small);
@@ -433,18 +329,18 @@ TEST(MultibodyDynamics, RejectsInputsThatCannotWork) {
   ring::RingSpec spec = pin_roller_ring();
   ring::ResponseOptions r = paper_scene();
   r.dt = 0.0;
-  EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);
+  EXPECT_THROW(multibody::respond(spec, segments(40), r), std::invalid_argument);
   r = paper_scene();
   r.rho_inf = 1.5;
-  EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);
+  EXPECT_THROW(multibody::respond(spec, segments(40), r), std::invalid_argument);
   r = paper_scene();
   r.record = {5.0};  // not a hinge
-  EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);
+  EXPECT_THROW(multibody::respond(spec, segments(40), r), std::invalid_argument);
   r = paper_scene();
-  EXPECT_THROW(multibody::respond(spec, n_segments(41), r), std::invalid_argument);  // roller off the hinges
+  EXPECT_THROW(multibody::respond(spec, segments(41), r), std::invalid_argument);  // roller off the hinges
   spec.supports.pin.reset();
   spec.supports.roller.reset();
-  EXPECT_THROW(multibody::respond(spec, n_segments(40), r), std::invalid_argument);
+  EXPECT_THROW(multibody::respond(spec, segments(40), r), std::invalid_argument);
 }
 
 }  // namespace

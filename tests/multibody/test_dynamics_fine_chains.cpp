@@ -18,13 +18,8 @@
 namespace {
 
 using mbtest::sci;
+using mbtest::segments;
 using Integrator = ring::ResponseOptions::Integrator;
-
-ring::MultibodyOptions segments(int n) {
-  ring::MultibodyOptions o;
-  o.n = n;
-  return o;
-}
 
 /// First minimum of u_x at C (record 0, the loaded point moving toward the pin),
 /// refined by the parabola through the sample and its neighbours (the grid alone is off

@@ -33,13 +33,6 @@ ring::RingSpec thick_ring() {
   return s;
 }
 
-ring::MultibodyOptions chain(int n) {
-  ring::MultibodyOptions o;
-  o.n = n;
-  o.method = ring::MultibodyOptions::Method::dense;
-  return o;
-}
-
 ring::FemOptions fem_options() {
   ring::FemOptions o;
   o.elements = 24;
@@ -90,7 +83,7 @@ TEST(TimoshenkoChainVsFem, StaticsConvergeToTheReissnerBeam) {
   RecordProperty("fem_change", mbtest::sci(fe_change / peak));
   std::vector<double> ns, errors;
   for (int n : {40, 80}) {
-    const ring::StaticResult mb = multibody::solve_static(spec, chain(n), st);
+    const ring::StaticResult mb = multibody::solve_static(spec, mbtest::dense_chain(n), st);
     double d = 0.0;
     for (std::size_t i = 0; i < fe.displacements.size(); ++i)
       d = std::max(d, std::hypot(mb.displacements[i].ux - fe.displacements[i].ux,
@@ -137,7 +130,7 @@ TEST(TimoshenkoChainVsFem, PulseResponseConvergesToTheReissnerBeam) {
     for (std::size_t k = 0; k < fe.ux[p].size(); ++k) peak = std::max(peak, std::hypot(fe.ux[p][k], fe.uy[p][k]));
   std::vector<double> ns, errors;
   for (int n : {40, 80}) {
-    const ring::TimeHistory mb = multibody::respond(spec, chain(n), r);
+    const ring::TimeHistory mb = multibody::respond(spec, mbtest::dense_chain(n), r);
     ASSERT_EQ(mb.t.size(), fe.t.size());
     const mbtest::Balance b = mbtest::balance(mb);
     RecordProperty("energy_n" + std::to_string(n), mbtest::sci(b.worst / b.work));

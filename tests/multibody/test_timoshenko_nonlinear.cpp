@@ -54,13 +54,6 @@ ring::RingSpec pinned(double depth, bool terms = false) {
   return s;
 }
 
-ring::MultibodyOptions chain(int n) {
-  ring::MultibodyOptions o;
-  o.n = n;
-  o.method = ring::MultibodyOptions::Method::dense;
-  return o;
-}
-
 double rel_diff(const Matrix& a, const Matrix& b) { return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff(); }
 
 /// The largest |u| difference between two static results, over the largest |u| of `b`.
@@ -112,7 +105,7 @@ ring::ResponseOptions pulse(double fy, double period, double dt, double t_end) {
 TEST(TimoshenkoNonlinear, ResponseTangentAtRestIsTheLinearModel) {
   for (const bool terms : {false, true}) {
     const ring::RingSpec spec = pinned(0.2, terms);
-    const Chain ch(spec, chain(24), 90.0);
+    const Chain ch(spec, mbtest::dense_chain(24), 90.0);
     const detail::Attachments att(ch, spec);
     const detail::LinearTerms lt = detail::linear_terms(ch, spec);
     const multibody::Shear sh = multibody::Shear::of(spec, ch.l());
@@ -146,7 +139,7 @@ TEST(TimoshenkoNonlinear, ResponseTangentAtRestIsTheLinearModel) {
 TEST(TimoshenkoNonlinear, StaticTangentAtRestIsTheLinearModelCondensed) {
   for (const bool terms : {false, true}) {
     const ring::RingSpec spec = pinned(0.2, terms);
-    const Chain ch(spec, chain(24), 90.0);
+    const Chain ch(spec, mbtest::dense_chain(24), 90.0);
     const int n = ch.n();
     const detail::DenseTangent dt(ch, spec, ring::Loads{}, "static");
     const Vector q0 = ch.q0();
@@ -177,7 +170,7 @@ TEST(TimoshenkoNonlinear, StaticTangentAtRestIsTheLinearModelCondensed) {
 // analytic tangents, at a random deformed, moving state, with every term, a load and damping.
 TEST(TimoshenkoNonlinear, TangentsAreTheResidualsDerivatives) {
   const ring::RingSpec spec = pinned(0.2, true);
-  const Chain ch(spec, chain(16), 90.0);
+  const Chain ch(spec, mbtest::dense_chain(16), 90.0);
   const int n = ch.n(), N = 2 * n;
   std::mt19937 gen(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -238,12 +231,12 @@ TEST(TimoshenkoNonlinear, StiffShearIsTheEulerChain) {
   euler.theory = ring::Theory::euler_bernoulli;
   const double fy = -2.0 * euler.EI() / (euler.radius * euler.radius);
   const ring::StaticOptions st = point_load(fy);
-  const ring::StaticResult e = multibody::solve_static(euler, chain(24), st);
+  const ring::StaticResult e = multibody::solve_static(euler, mbtest::dense_chain(24), st);
   std::vector<double> gaps;
   for (double kappa : {1e3, 1e4}) {
     ring::RingSpec t = pinned(0.2, true);
     t.shear_coefficient = kappa;
-    gaps.push_back(static_gap(multibody::solve_static(t, chain(24), st), e));
+    gaps.push_back(static_gap(multibody::solve_static(t, mbtest::dense_chain(24), st), e));
   }
   RecordProperty("static_gaps", mbtest::sci(gaps[0]) + " " + mbtest::sci(gaps[1]));
   EXPECT_LT(gaps[0], 1e-3);
@@ -251,13 +244,13 @@ TEST(TimoshenkoNonlinear, StiffShearIsTheEulerChain) {
 
   const double T1 = 2 * M_PI / (2.68 * euler.bending_frequency_scale());  // ~ the first period
   const ring::ResponseOptions r = pulse(fy, 0.3 * T1, T1 / 200, T1);
-  const ring::TimeHistory he = multibody::respond(euler, chain(24), r);
+  const ring::TimeHistory he = multibody::respond(euler, mbtest::dense_chain(24), r);
   std::vector<double> rgaps;
   for (double kappa : {1e3, 1e4}) {
     ring::RingSpec t = pinned(0.2, true);
     t.shear_coefficient = kappa;
-    const Chain ch(t, chain(24), 90.0);
-    rgaps.push_back(history_gap(multibody::respond(t, chain(24), r, {}, {t.kGA() * ch.l(), 0.0}), he));
+    const Chain ch(t, mbtest::dense_chain(24), 90.0);
+    rgaps.push_back(history_gap(multibody::respond(t, mbtest::dense_chain(24), r, {}, {t.kGA() * ch.l(), 0.0}), he));
   }
   RecordProperty("response_gaps", mbtest::sci(rgaps[0]) + " " + mbtest::sci(rgaps[1]));
   EXPECT_LT(rgaps[0], 1e-3);
@@ -269,7 +262,7 @@ TEST(TimoshenkoNonlinear, StiffShearIsTheEulerChain) {
 // relative difference halves with the load.
 TEST(TimoshenkoNonlinear, SmallLoadIsTheLinearSolution) {
   const ring::RingSpec spec = pinned(0.2, true);
-  const Chain ch(spec, chain(24), 90.0);
+  const Chain ch(spec, mbtest::dense_chain(24), 90.0);
   const detail::LinearTerms lt = detail::linear_terms(ch, spec);
   const multibody::Shear sh = multibody::Shear::of(spec, ch.l());
   const multibody::LinearModel lm = multibody::linearize(ch, ring::MultibodyOptions::Dependent::robust, &lt, &sh);
@@ -287,7 +280,7 @@ TEST(TimoshenkoNonlinear, SmallLoadIsTheLinearSolution) {
     f.head(ch.n()) = ch.point_load_forces(ch.q0(), ch.hinge_at(90.0), F);
     const Vector dq = D * lm.K0.ldlt().solve(D.transpose() * f);
     const Eigen::Matrix2Xd u = ch.rest_displacements(dq.head(ch.n()));
-    const ring::StaticResult res = multibody::solve_static(spec, chain(24), st);
+    const ring::StaticResult res = multibody::solve_static(spec, mbtest::dense_chain(24), st);
     double d = 0.0, m = 0.0;
     for (const ring::PointDisplacement& p : res.displacements) {
       const Eigen::Vector2d ul = u.col(ch.hinge_at(p.angle));
@@ -316,7 +309,7 @@ TEST(TimoshenkoNonlinear, PulseResponseKeepsTheEnergyBalance) {
     ring::ResponseOptions r = pulse(fy, 0.3 * T1, T1 / 200, 2 * T1);
     r.integrator = integ;
     r.rho_inf = 0.8;
-    const ring::TimeHistory h = multibody::respond(spec, chain(24), r);
+    const ring::TimeHistory h = multibody::respond(spec, mbtest::dense_chain(24), r);
     const mbtest::Balance b = mbtest::balance(h);
     EXPECT_EQ(h.unknowns, 2 * 24 + 3);
     EXPECT_LT(b.constraint, 1e-11);
@@ -334,7 +327,7 @@ TEST(TimoshenkoNonlinear, PulseResponseKeepsTheEnergyBalance) {
   ring::ResponseOptions r = pulse(fy, 0.3 * T1, T1 / 200, 2 * T1);
   r.rayleigh_mass = 0.05 / T1;
   r.hinge_damping = 1e-3 * T1 * spec.EI() / (2 * M_PI * spec.radius / 24);
-  const ring::TimeHistory h = multibody::respond(spec, chain(24), r);
+  const ring::TimeHistory h = multibody::respond(spec, mbtest::dense_chain(24), r);
   const mbtest::Balance b = mbtest::balance(h);
   EXPECT_LT(b.worst, 1e-3 * b.work);
   EXPECT_LT(h.kinetic.back() + h.strain.back(), 0.99 * h.work.back()) << "the dampers took no energy";
@@ -350,8 +343,8 @@ TEST(TimoshenkoNonlinear, FrequenciesUnderAVanishingLoadAreTheLinearChainsModes)
     ring::StaticOptions st;
     st.loads.points = {{90.0, {0.0, -1e-6}}};
     st.steps = 1;
-    const auto loaded = multibody::compute_modes_under_load(spec, chain(40), st, 8);
-    const auto linear = multibody::compute_modes(spec, chain(40), 8);
+    const auto loaded = multibody::compute_modes_under_load(spec, mbtest::dense_chain(40), st, 8);
+    const auto linear = multibody::compute_modes(spec, mbtest::dense_chain(40), 8);
     for (int k = 0; k < 8; ++k)
       EXPECT_NEAR(loaded.omega.at(k) / linear.omega.at(k), 1.0, 1e-9) << "terms " << terms << ", mode " << k + 1;
   }
@@ -359,7 +352,7 @@ TEST(TimoshenkoNonlinear, FrequenciesUnderAVanishingLoadAreTheLinearChainsModes)
 
 TEST(TimoshenkoNonlinear, RefusesThePathsWithoutShearAngles) {
   const ring::RingSpec spec = pinned(0.2);
-  ring::MultibodyOptions sparse = chain(40);
+  ring::MultibodyOptions sparse = mbtest::dense_chain(40);
   sparse.method = ring::MultibodyOptions::Method::sparse;
   auto expect_refusal = [](auto&& run, const std::string& key, const std::string& what) {
     try {
@@ -374,9 +367,9 @@ TEST(TimoshenkoNonlinear, RefusesThePathsWithoutShearAngles) {
   ring::ResponseOptions r = pulse(-1e3, 1e-3, 1e-4, 1e-3);
   expect_refusal([&] { multibody::respond(spec, sparse, r); }, "multibody.method = \"dense\"", "sparse response");
   r.integrator = ring::ResponseOptions::Integrator::energy_momentum;
-  expect_refusal([&] { multibody::respond(spec, chain(40), r); }, "response.integrator", "energy-momentum");
+  expect_refusal([&] { multibody::respond(spec, mbtest::dense_chain(40), r); }, "response.integrator", "energy-momentum");
   // "auto" keeps the Timoshenko chain dense above the statics' and the response's crossovers.
-  ring::MultibodyOptions automatic = chain(1000);
+  ring::MultibodyOptions automatic = mbtest::dense_chain(1000);
   automatic.method = ring::MultibodyOptions::Method::automatic;
   EXPECT_EQ(multibody::backend(automatic, spec, st.loads, multibody::Analysis::statics), multibody::Backend::dense);
   EXPECT_EQ(multibody::backend(automatic, spec, r.loads, multibody::Analysis::response), multibody::Backend::dense);
