@@ -26,9 +26,9 @@ ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::Mu
   check_buckling(spec, options, buckling);
   const auto start = std::chrono::steady_clock::now();
   const ring::Loads& loads = buckling.loads;
-  const std::optional<double> anchor =
+  const std::optional<double> loaded =
       loads.points.empty() ? std::nullopt : std::optional<double>(loads.points.front().angle);
-  const Chain chain(spec, options, anchor);
+  const Chain chain(spec, options, loaded);
   const detail::DenseTangent tangent(chain, spec, loads, "buckling");
   const Eigen::Index n = tangent.dofs(), c = tangent.rows();
   const Vector q0 = chain.q0();

@@ -184,9 +184,9 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
                                            const ring::StaticOptions& statics, int count) {
   check_preloaded_modes(spec, options, statics);
   const auto start = std::chrono::steady_clock::now();
-  const std::optional<double> anchor =
+  const std::optional<double> loaded =
       statics.loads.points.empty() ? std::nullopt : std::optional<double>(statics.loads.points.front().angle);
-  const Chain ch(spec, options, anchor);
+  const Chain ch(spec, options, loaded);
   AngleStatics eq(ch, spec, statics.loads, spec.section.depth());
   const paths::Continuation policy{statics.steps};
   const paths::Trace path = paths::follow(eq, {eq.rest(), 0.0}, policy);
@@ -253,9 +253,9 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 const ring::StaticOptions& statics) {
   check_static(spec, options, statics);
-  const std::optional<double> anchor =
+  const std::optional<double> loaded =
       statics.loads.points.empty() ? std::nullopt : std::optional<double>(statics.loads.points.front().angle);
-  const Chain ch(spec, options, anchor);
+  const Chain ch(spec, options, loaded);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
   if (backend(options, spec, statics) == Backend::banded)
