@@ -142,16 +142,12 @@ void Attachments::add_rotation_stiffness(Eigen::Ref<Matrix> A) const { add_mean_
 
 Matrix Attachments::rest_mass() const {
   Matrix M = Matrix::Zero(chain_.dofs(), chain_.dofs());
-  add_mass(q0_, 1.0, M);
+  add_mass(q0_, M);
   return M;
 }
 
-void Attachments::add_mass(const Vector& q, double c, Eigen::Ref<Matrix> M) const {
-  if (!has_mass_) return;
-  if (c == 1.0) return add_pull_back(chain_, q, mass_, M);
-  Matrix P = Matrix::Zero(chain_.dofs(), chain_.dofs());
-  add_pull_back(chain_, q, mass_, P);
-  M += c * P;
+void Attachments::add_mass(const Vector& q, Eigen::Ref<Matrix> M) const {
+  if (has_mass_) add_pull_back(chain_, q, mass_, M);
 }
 
 double Attachments::kinetic_energy(const Vector& q, const Vector& v) const {

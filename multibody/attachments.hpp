@@ -88,11 +88,11 @@ class Attachments {
   /// The point masses' mass matrix at rest, their translations only (dofs x dofs, dense;
   /// their inertias are hinge_rotations()'). O(n^2).
   Matrix rest_mass() const;
-  /// Adds c times their mass matrix at q to M (dofs x dofs): sum_k m_k (d u_k/dq)^T (d u_k/dq),
+  /// Adds their mass matrix at q to M (dofs x dofs): sum_k m_k (d u_k/dq)^T (d u_k/dq),
   /// whose angle block is l^2 sum_{k > max(i,j)} m_k cos(phi_i - phi_j), the structure of the
   /// chain's own (dynamics_model.hpp: the quadratic-velocity terms follow from its constants).
   /// O(n^2); nothing without point masses.
-  void add_mass(const Vector& q, double c, Eigen::Ref<Matrix> M) const;
+  void add_mass(const Vector& q, Eigen::Ref<Matrix> M) const;
   bool has_mass() const { return has_mass_; }
   /// Their kinetic energy sum_k m_k |d u_k/dt|^2 / 2 at (q, v), J. O(n).
   double kinetic_energy(const Vector& q, const Vector& v) const;

@@ -95,7 +95,8 @@ class ChainStepper : public paths::Stepper {
     }
     out.work = work_;
     out.dissipated = dissipated_;
-    out.constraint_residual = detail::constraint_kinematics(chain_, p_.terms, q).g.cwiseAbs().maxCoeff();
+    // Values only: the kinematics (G, its Hessian) are the step's business, not the sample's.
+    out.constraint_residual = (p_.terms ? p_.terms->constraints(q).g : chain_.constraints(q)).cwiseAbs().maxCoeff();
     return out;
   }
 

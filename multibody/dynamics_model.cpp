@@ -8,7 +8,7 @@ namespace multibody::detail {
 
 Matrix mass_matrix(const Chain& chain, const Attachments* terms, const Vector& q) {
   Matrix M = chain.mass_matrix(q);
-  if (terms) terms->add_mass(q, 1.0, M);
+  if (terms) terms->add_mass(q, M);
   return M;
 }
 

@@ -85,7 +85,7 @@ Matrix mass_times_columns(const Problem& p, const Vector& q, const Matrix& E) {
   out.topRows(nc) = p.chain.mass_times_columns(q.head(nc), E.topRows(nc));
   if (p.terms && p.terms->has_mass()) {
     Matrix Mt = Matrix::Zero(nc, nc);
-    p.terms->add_mass(q.head(nc), 1.0, Mt);
+    p.terms->add_mass(q.head(nc), Mt);
     out.topRows(nc) += Mt * E.topRows(nc);
   }
   if (p.sections) p.sections->add_mass_times(E, out);
