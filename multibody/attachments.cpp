@@ -42,6 +42,18 @@ void add_pull_back(const Chain& chain, const Vector& q, const std::vector<Eigen:
   (void)N;
 }
 
+/// grad += sum_k (d u_k/dq)^T f_k for the suffix sums F_m = sum_{k >= m} f_k of hinge forces
+/// f_k at the angles of q: grad_j += c_j . F_{j+1}, and F_0 on a free ring's (x_0, y_0) (file
+/// comment). O(n).
+void add_pulled_back(const Chain& chain, const Vector& q, const std::vector<Eigen::Vector2d>& F, Vector& grad) {
+  const int n = chain.n();
+  for (int j = 0; j < n; ++j) {
+    const Eigen::Vector2d c(-chain.l() * std::sin(q[j]), chain.l() * std::cos(q[j]));
+    grad[j] += c.dot(F[j + 1]);
+  }
+  if (chain.free()) grad.tail<2>() += F[0];
+}
+
 /// The mean rotation of hinge h's two segments (h - 1 cyclic) as a row on q: its value is
 /// (q[h-1] + q[h]) / 2.
 void add_mean_rotation(const Chain& chain, int h, double scale, Vector& v) {
@@ -121,21 +133,37 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix
   // F_m = sum_{k >= m} B_k u_k; grad_j = c_j . F_{j+1} (file comment).
   std::vector<Eigen::Vector2d> F(n + 1, Eigen::Vector2d::Zero());
   for (int k = n - 1; k >= 0; --k) F[k] = F[k + 1] + hinge_force(k, p.col(k));
-  for (int j = 0; j < n; ++j) {
-    const Eigen::Vector2d c(-chain_.l() * std::sin(q[j]), chain_.l() * std::cos(q[j]));
-    grad[j] += c.dot(F[j + 1]);
-  }
-  if (chain_.free()) grad.tail<2>() += F[0];
-  for (int h = 0; h < n && rotations; ++h)
-    if (rot_k_[h] > 0.0) {
-      const int j = (h + n - 1) % n;
-      add_mean_rotation(chain_, h, rot_k_[h] * 0.5 * (q[j] - q0_[j] + q[h] - q0_[h]), grad);
-    }
+  add_pulled_back(chain_, q, F, grad);
+  if (rotations) add_rotation_forces(q - q0_, grad);
   if (!hess) return;
   add_pull_back(chain_, q, stiff_, *hess);
   for (int j = 0; j < n; ++j)
     (*hess)(j, j) -= chain_.l() * (std::cos(q[j]) * F[j + 1].x() + std::sin(q[j]) * F[j + 1].y());
   if (rotations) add_mean_rotations(chain_, rot_k_, hess->topLeftCorner(n, n));
+}
+
+void Attachments::add_rotation_forces(const Vector& dq, Vector& grad) const {
+  const int n = chain_.n();
+  for (int h = 0; h < n; ++h)
+    if (rot_k_[h] > 0.0) {
+      const int j = (h + n - 1) % n;
+      add_mean_rotation(chain_, h, rot_k_[h] * 0.5 * (dq[j] + dq[h]), grad);
+    }
+}
+
+void Attachments::add_rest_products(const Vector& v, Vector* kv, Vector* mv) const {
+  const int n = chain_.n();
+  const Eigen::Matrix2Xd du = chain_.rest_displacements(v);
+  auto add = [&](const std::vector<Eigen::Matrix2d>& B, Vector& out) {
+    std::vector<Eigen::Vector2d> F(n + 1, Eigen::Vector2d::Zero());
+    for (int k = n - 1; k >= 0; --k) F[k] = F[k + 1] + B[k] * du.col(k);
+    add_pulled_back(chain_, q0_, F, out);
+  };
+  if (kv) {
+    add(stiff_, *kv);
+    add_rotation_forces(v, *kv);
+  }
+  if (mv) add(mass_, *mv);
 }
 
 void Attachments::add_rotation_stiffness(Eigen::Ref<Matrix> A) const { add_mean_rotations(chain_, rot_k_, A); }

@@ -99,6 +99,11 @@ class Attachments {
   /// The terms on the hinges' rotations as they are, for the linear modes: kr (infinity at a
   /// clamp) and the point inertias, by hinge. O(n).
   std::vector<HingeRotation> hinge_rotations() const;
+  /// The rest Hessian of the terms (as add_stiffness at rest, the rotations' included) times
+  /// v, added to *kv, and the point masses' rest mass matrix times v, added to *mv (dofs each;
+  /// either may be null): the dense path's K and M of the terms as O(n) products, through the
+  /// suffix sums of the file comment. O(n).
+  void add_rest_products(const Vector& v, Vector* kv, Vector* mv) const;
 
   /// The further pins' rows (2 per pin): g = u_h, G = d u_h / d q (2p x dofs), and the
   /// rows' Hessians, diagonal in the angles (hess(i, j) = d^2 g_i / d phi_j^2), as
@@ -122,10 +127,16 @@ class Attachments {
   /// The stiffness on the mean rotation of hinge k's two segments (kr and the clamp,
   /// condensed: condensed_rotation_stiffness), N m/rad; 0 without such a term. O(1).
   double rotation_stiffness(int k) const { return rot_k_[k]; }
+  /// The point masses' mass at hinge k (m I, 2 x 2, kg). O(1).
+  const Eigen::Matrix2d& hinge_mass(int k) const { return mass_[k]; }
   /// The further pins' hinges, in the order of their rows. O(1).
   const std::vector<int>& pinned_hinges() const { return pins_; }
 
  private:
+  /// Adds the rotational springs' and the clamp's force at the rotations dq from rest
+  /// (condensed on the mean rotations) to grad. O(n).
+  void add_rotation_forces(const Vector& dq, Vector& grad) const;
+
   const Chain& chain_;
   std::vector<Eigen::Matrix2d> stiff_, mass_;  ///< B_k of the springs and of the masses, by hinge
   std::vector<double> rot_k_;                  ///< condensed on the mean rotation m_h, by hinge

@@ -1,8 +1,9 @@
 // Dense or banded: the one rule that picks the multibody backend of each analysis.
 //
 // Dense: segment angles with n x n matrices, O(n^2) memory, O(n^3) per factorization.
-// Banded: nothing of size n^2, O(n) per solve (ShiftedSolve's sweep for the modes;
-// BorderedBands for the response, SparseSaddle, and the statics, natural::BandedKkt).
+// Banded: nothing of size n^2, O(n) per solve (ShiftedSolve's sweep for the paper's ring's
+// modes, natural::BandedKkt for the modes with the terms beyond it and the statics;
+// BorderedBands for the response, SparseSaddle).
 // multibody.method = "dense" or "sparse" forces one for every analysis; "auto" takes the
 // banded one from the analysis's crossover on (evidence: docs/measured.md):
 //
@@ -43,13 +44,30 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
   return options.n >= sparse_crossover(analysis) ? Backend::banded : Backend::dense;
 }
 
-/// The backend of `analysis` on `spec`: "auto" also stays dense when the spec has terms
-/// beyond the paper's (supports.pins, clamp, springs, masses, foundation), which only the
-/// dense paths of the modes and the response assemble (attachments.hpp), and for the
-/// Timoshenko chain (linear_model.hpp). The statics' rule takes the loads: the next overload. O(1).
+/// What the O(n) linear modes cannot take of `spec`, as the words of a refusal ("" when they
+/// take it): the paper's ring runs in segment angles (shifted_solve.hpp), its terms beyond
+/// (attachments.hpp: foundation, springs, clamp, further pins, point masses) in hinge
+/// positions (position_modes.hpp), pinned or free; neither has the shear angles, nor a point
+/// inertia's own hinge rotation (the dense path's unknown chi, linear_model.hpp). The modes
+/// under load (modes.preload) are the dense path's as well: check_preloaded_modes. O(masses).
+inline std::string banded_modes_lacks(const ring::RingSpec& spec) {
+  if (spec.theory == ring::Theory::timoshenko) return "Timoshenko chain (ring.theory = \"timoshenko\")";
+  for (std::size_t i = 0; i < spec.masses.size(); ++i)
+    if (spec.masses[i].inertia > 0.0)
+      return "point inertia (masses[" + std::to_string(i + 1) + "].inertia = " + std::to_string(spec.masses[i].inertia) +
+             " kg m^2: its hinge's own rotation is an unknown of the dense path only)";
+  return "";
+}
+
+/// The backend of `analysis` on `spec`: "auto" also stays dense for what the O(n) path of
+/// the analysis does not assemble: for the modes, banded_modes_lacks; for the others, the
+/// terms beyond the paper's ring (supports.pins, clamp, springs, masses, foundation; the
+/// statics' rule takes them and the loads: the next overload) and the Timoshenko chain
+/// (linear_model.hpp). O(masses).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, Analysis analysis) {
   if (options.method == ring::MultibodyOptions::Method::automatic &&
-      (!spec.paper_terms_only() || spec.theory == ring::Theory::timoshenko))
+      (analysis == Analysis::modes ? !banded_modes_lacks(spec).empty()
+                                   : !spec.paper_terms_only() || spec.theory == ring::Theory::timoshenko))
     return Backend::dense;
   return backend(options, analysis);
 }
@@ -89,11 +107,12 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
 
 /// The modes' backend for `count` modes of `spec`: "auto" also stays dense when the pairs
 /// computed, nev = min(r, count + rigid modes + 2), exceed a third of the r = n [+ 2 free] - c
-/// unknowns or 4 nev + 60 reaches r, and when the spec has terms beyond the paper's (supports.pins, clamp,
-/// springs, masses, foundation), which only the dense path assembles. O(1).
+/// unknowns (c: closure, roller, two rows per further pin) or 4 nev + 60 reaches r, and for
+/// what the O(n) modes lack (banded_modes_lacks). O(masses).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, int count) {
   const ring::Supports& supports = spec.supports;
-  const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2);
+  const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2) -
+                2 * static_cast<int>(supports.pins.size());
   // And when its Lanczos would need the whole space (lanczos.cpp: 4 nev + 60 steps at most):
   // a Krylov basis that fills all r unknowns has lost its orthogonality (measured: 64 modes
   // of a free n = 320 chain, relative residual 1.0), where the dense path costs milliseconds.

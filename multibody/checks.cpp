@@ -19,20 +19,17 @@ bool has_point_inertia(const ring::RingSpec& spec) {
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
-  // The shear angles live on the dense path only (linear_model.hpp); "auto" keeps it dense.
-  if (spec.theory == ring::Theory::timoshenko && sparse)
-    throw std::invalid_argument(
-        "multibody method = \"sparse\" (the O(n) modes path) has no Timoshenko chain (ring.theory = "
-        "\"timoshenko\"): set multibody.method = \"dense\" or \"auto\"");
+  // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
+  if (sparse)
+    if (const std::string lacks = banded_modes_lacks(spec); !lacks.empty())
+      throw std::invalid_argument("multibody method = \"sparse\" (the O(n) modes path) has no " + lacks +
+                                  ": set multibody.method = \"dense\" or \"auto\"");
   // The paper's dependent angles are chosen for its pin and roller; further constraint rows
-  // (pins, a clamp) need the robust null-space basis, and the O(n) path assembles none of
-  // the terms beyond the paper's ring (backend.hpp keeps "auto" dense for them).
+  // (pins, a clamp) need the robust null-space basis.
   if (options.dependent == ring::MultibodyOptions::Dependent::paper && !spec.supports.paper_only())
     throw std::invalid_argument(
         "multibody: dependent = \"paper\" takes the paper's pin and roller only; use dependent = \"robust\" with "
         "supports.pins, supports.clamp or supports.springs");
-  if (options.method == ring::MultibodyOptions::Method::sparse && !spec.paper_terms_only())
-    ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) modes path)");
   if (sparse && options.dependent == ring::MultibodyOptions::Dependent::paper)
     throw std::invalid_argument(
         "multibody: method = sparse needs dependent = robust (the paper's dependent angles are "

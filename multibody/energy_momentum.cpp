@@ -67,15 +67,7 @@ Step step(const Natural& c, const Vec& x0, const Vec& v0, double h, double f, Ve
     mass_times(c, work.w, rx);
     rx *= cm;
     rx.segment<2>(2 * c.load) -= f * c.F;
-    for (int i = 0; i < c.n; ++i) {
-      const int j = (i + 1) % c.n;
-      for (int a = 0; a < 2; ++a) {
-        kkt.add(2 * i + a, 2 * i + a, cm * (s + r));
-        kkt.add(2 * j + a, 2 * j + a, cm * (s + r));
-        kkt.add(2 * i + a, 2 * j + a, cm * (s - r));
-        kkt.add(2 * j + a, 2 * i + a, cm * (s - r));
-      }
-    }
+    add_mass(c, cm, kkt);
     // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = 1/2 sum lambda_i Hess c_i.
     add_constraint_curvature(c, lambda, 0.5, kkt);
     // Springs: each one's discrete gradient and its exact Jacobian in y1.

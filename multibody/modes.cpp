@@ -16,7 +16,9 @@
 
 #include "modal/lanczos.hpp"
 #include "modal/modes.hpp"
+#include "multibody/attachments.hpp"
 #include "multibody/lanczos.hpp"
+#include "multibody/position_modes.hpp"
 #include "multibody/shifted_solve.hpp"
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
@@ -168,12 +170,64 @@ class DensePath final : public ModesPath {
   std::optional<Shear> shear_;
 };
 
-/// The O(n) path: the shifted constrained solve as the operator, K and M as products,
-/// D applied only to the final vectors.
-class SparsePath final : public ModesPath {
+/// The O(n) paths' side in chain coordinates: the shapes dq, their M-normalization, the
+/// norms and the residuals' products, through the O(n) products of K and M and the
+/// projection onto the null space of the constraint rows that each path supplies.
+class ChainPath : public ModesPath {
+ public:
+  // dq with dq^T M dq = 1, in vecs's own columns (the selected columns ascend, so column
+  // k is written only after it is read: no second N x count matrix, whose fresh pages were
+  // 184 MB of page faults at n = 10^6). x = D^T dq is not formed (modes.hpp).
+  void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
+    const Eigen::Index N = vecs.rows(), count = static_cast<Eigen::Index>(columns.size());
+    Vector md(N);
+    for (Eigen::Index k = 0; k < count; ++k) {
+      const Eigen::Index from = columns[static_cast<std::size_t>(k)];
+      m_times(vecs.col(from), md);
+      vecs.col(k) = vecs.col(from) / std::sqrt(vecs.col(from).dot(md));
+    }
+    vecs.conservativeResize(N, count);  // column-major, same rows: keeps the front
+    sol.dq = std::move(vecs);
+  }
+  // The unreduced K and M (N = r + c: the c constrained directions barely move the
+  // largest eigenvalue), O(n) per product.
+  std::pair<double, double> norms(const ModalSolution&) override {
+    const int N = chain_.dofs();
+    return {modal::norm_estimate([&](const Vector& v) { Vector y(N); k_times(v, y); return y; }, N),
+            modal::norm_estimate([&](const Vector& v) { Vector y(N); m_times(v, y); return y; }, N)};
+  }
+  // P K dq and P M dq, P = D D^T the projection onto the null space of J: with dq = D x
+  // and D's orthonormal columns, ||P v|| = ||D^T v||, so every norm of the residual is
+  // that of D^T (K - w M) dq = K0 x - w M0 x, in O(n c) per product instead of a
+  // Householder application (and without N x block temporaries: 1.1 GB of page faults
+  // at n = 10^6).
+  double products(const ModalSolution& sol, int k, Vector& kx, Vector& mx) override {
+    kx.resize(chain_.dofs());
+    mx.resize(chain_.dofs());
+    k_times(sol.dq.col(k), kx);
+    m_times(sol.dq.col(k), mx);
+    project(kx);
+    project(mx);
+    return sol.dq.col(k).norm();  // ||D x|| = ||x||
+  }
+  void shapes(ModalSolution&) override {}
+
+ protected:
+  explicit ChainPath(const Chain& chain) : chain_(chain) {}
+  /// y = K v and y = M v (y has dofs() entries), and v = P v.
+  virtual void k_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y) = 0;
+  virtual void m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y) = 0;
+  virtual void project(Vector& v) const = 0;
+
+  const Chain& chain_;
+};
+
+/// The O(n) path of the paper's ring: the shifted constrained solve in segment angles as
+/// the operator, K and M as products, D applied only to the final vectors.
+class SparsePath final : public ChainPath {
  public:
   SparsePath(const Chain& chain, double s, SparseEigensolver eigensolver)
-      : chain_(chain), sp_(chain), eigensolver_(eigensolver) {
+      : ChainPath(chain), sp_(chain), eigensolver_(eigensolver) {
     sp_.set_shift(-s);
   }
   void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
@@ -184,50 +238,70 @@ class SparsePath final : public ModesPath {
     model.qr = sp_.qr();
     model.j2_condition = j2_condition(chain_.constraint_jacobian(chain_.q0()), chain_.n());
   }
-  // dq with dq^T M dq = 1, in vecs's own columns (the selected columns ascend, so column
-  // k is written only after it is read: no second N x count matrix, whose fresh pages were
-  // 184 MB of page faults at n = 10^6). x = D^T dq is not formed (modes.hpp).
-  void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
-    const Eigen::Index N = vecs.rows(), count = static_cast<Eigen::Index>(columns.size());
-    ShiftedSolve::Workspace ws;
-    Vector md(N);
-    for (Eigen::Index k = 0; k < count; ++k) {
-      const Eigen::Index from = columns[static_cast<std::size_t>(k)];
-      sp_.m_times(vecs.col(from), md, ws);
-      vecs.col(k) = vecs.col(from) / std::sqrt(vecs.col(from).dot(md));
-    }
-    vecs.conservativeResize(N, count);  // column-major, same rows: keeps the front
-    sol.dq = std::move(vecs);
-  }
-  // The unreduced K and M (N = r + c: the c constrained directions barely move the
-  // largest eigenvalue), O(n) per product.
-  std::pair<double, double> norms(const ModalSolution&) override {
-    const int N = chain_.dofs();
-    ShiftedSolve::Workspace ws;
-    return {modal::norm_estimate([&](const Vector& v) { Vector y(N); sp_.k_times(v, y); return y; }, N),
-            modal::norm_estimate([&](const Vector& v) { Vector y(N); sp_.m_times(v, y, ws); return y; }, N)};
-  }
-  // P K dq and P M dq, P = D D^T the projection onto the null space of J: with dq = D x
-  // and D's orthonormal columns, ||P v|| = ||D^T v||, so every norm of the residual is
-  // that of D^T (K - w M) dq = K0 x - w M0 x, in O(n c) per product instead of a
-  // Householder application (and without N x block temporaries: 1.1 GB of page faults
-  // at n = 10^6).
-  double products(const ModalSolution& sol, int k, Vector& kx, Vector& mx) override {
-    kx.resize(chain_.dofs());
-    mx.resize(chain_.dofs());
-    sp_.k_times(sol.dq.col(k), kx);
-    sp_.m_times(sol.dq.col(k), mx, ws_);
-    sp_.project(kx);
-    sp_.project(mx);
-    return sol.dq.col(k).norm();  // ||D x|| = ||x||
-  }
-  void shapes(ModalSolution&) override {}
   const char* name() const override { return "sparse"; }
 
  private:
-  const Chain& chain_;
+  void k_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y) override { sp_.k_times(v, y); }
+  void m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y) override { sp_.m_times(v, y, ws_); }
+  void project(Vector& v) const override { sp_.project(v); }
+
   ShiftedSolve sp_;
   SparseEigensolver eigensolver_;
+  ShiftedSolve::Workspace ws_;
+};
+
+/// The O(n) path of the ring with its terms (attachments.hpp) in hinge positions
+/// (position_modes.hpp): the eigen layer's shift-invert Lanczos on one bordered-band solve
+/// per step, its vectors converted to chain coordinates, where the residuals are those of
+/// the dense path's pencil (the chain's K and M with the terms', the constraint rows with
+/// the further pins').
+class PositionPath final : public ChainPath {
+ public:
+  PositionPath(const Chain& chain, const ring::RingSpec& spec, double s)
+      : ChainPath(chain), terms_(chain, spec), chain_products_(chain), s_(s) {
+    Jt_ = terms_.constraints(chain.q0()).G.transpose();
+    jjt_.compute(Jt_.transpose() * Jt_);
+  }
+  /// r: the chain's unknowns less the constraint rows (closure, roller, further pins).
+  int unknowns() const { return chain_.dofs() - static_cast<int>(Jt_.cols()); }
+  void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
+    natural::ShiftedKkt op(chain_, terms_);
+    natural::PositionMass mass(op.model(), terms_);
+    modal::LanczosOptions opt;
+    opt.tol = kLibraryLanczosTol;
+    opt.ncv = modal::subspace_size(nev, unknowns());  // the Krylov space lives in G u = 0
+    modal::ShiftInvertLanczos<natural::ShiftedKkt, natural::PositionMass> eigs(op, mass, nev, -s_, opt);
+    eigs.compute();
+    omega2 = eigs.eigenvalues();  // throws ring::NumericalError unless Successful
+    vecs = natural::chain_coordinates(chain_, eigs.eigenvectors());
+    model.kind = Dependent::robust;
+    model.qr.compute(Jt_);
+    model.j2_condition = j2_condition(Jt_.transpose(), chain_.n());
+  }
+  const char* name() const override { return "sparse"; }
+
+ private:
+  void k_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y) override {
+    chain_products_.k_times(v, y);
+    add_terms(v, y, true);
+  }
+  void m_times(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y) override {
+    chain_products_.m_times(v, y, ws_);
+    add_terms(v, y, false);
+  }
+  void project(Vector& v) const override { v.noalias() -= Jt_ * jjt_.solve(Jt_.transpose() * v); }
+  /// y += the terms' K v (`stiffness`) or M v.
+  void add_terms(const Eigen::Ref<const Vector>& v, Eigen::Ref<Vector> y, bool stiffness) const {
+    Vector t = Vector::Zero(y.size());
+    terms_.add_rest_products(v, stiffness ? &t : nullptr, stiffness ? nullptr : &t);
+    y += t;
+  }
+
+  const detail::Attachments terms_;
+  ShiftedSolve chain_products_;  ///< the chain's own K and M(q0) products (never factored)
+  double s_;
+  Matrix Jt_;                    ///< the constraint rows at rest, transposed: N x c
+  Eigen::LLT<Matrix> jjt_;       ///< J J^T
   ShiftedSolve::Workspace ws_;
 };
 
@@ -239,24 +313,33 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
   check_modes(spec, options);
   const Chain chain(spec, options);
   const bool sparse = backend(options, spec, count) == Backend::banded;
+  const double s = modal::bending_scale(spec);
+  // The paths (modes.hpp): the paper's ring on the O(n) path in segment angles, its terms
+  // (attachments.hpp) in hinge positions; the dense path with the terms' n x n matrices.
   std::optional<detail::LinearTerms> terms;
-  if (!spec.paper_terms_only()) terms = detail::linear_terms(chain, spec);
   std::optional<Shear> shear;  // the Timoshenko chain (linear_model.hpp), dense only (checks.cpp)
-  if (spec.theory == ring::Theory::timoshenko) shear = Shear::of(spec, chain.l());
-  const int N = linear_unknowns(chain, terms ? &*terms : nullptr, shear ? &*shear : nullptr);
-  const int r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
+  std::unique_ptr<ModesPath> path;
+  int r = 0;
+  if (sparse && spec.paper_terms_only()) {
+    path = std::make_unique<SparsePath>(chain, s, eigensolver);
+    r = chain.dofs() - chain.constraint_count();
+  } else if (sparse) {
+    auto on_positions = std::make_unique<PositionPath>(chain, spec, s);
+    r = on_positions->unknowns();
+    path = std::move(on_positions);
+  } else {
+    if (!spec.paper_terms_only()) terms = detail::linear_terms(chain, spec);
+    if (spec.theory == ring::Theory::timoshenko) shear = Shear::of(spec, chain.l());
+    const int N = linear_unknowns(chain, terms ? &*terms : nullptr, shear ? &*shear : nullptr);
+    r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
+    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr, shear);
+  }
   const int expected_rigid = spec.rigid_modes();
   if (count < 1 || count > r - expected_rigid)
     throw std::invalid_argument("multibody: count = " + std::to_string(count) +
                                 " must satisfy 1 <= count <= " + std::to_string(r - expected_rigid) +
                                 " (elastic modes of the n = " + std::to_string(chain.n()) + " chain)");
-  const double s = modal::bending_scale(spec);
   const int nev = std::min(r, count + expected_rigid + 2);
-  std::unique_ptr<ModesPath> path;
-  if (sparse)
-    path = std::make_unique<SparsePath>(chain, s, eigensolver);
-  else
-    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr, shear);
 
   ModalSolution sol;
   Vector omega2;  // computed eigenvalues, ascending

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "multibody/attachments.hpp"
+
 namespace multibody::natural {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -27,6 +29,13 @@ Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d&
   }
   c.load = chain.hinge_at(load_deg);
   c.F = F;
+  return c;
+}
+
+Natural make_natural(const Chain& chain, const detail::Attachments& terms) {
+  Natural c = make_natural(chain, chain.anchor_deg(), Eigen::Vector2d::Zero());
+  c.pins = terms.pinned_hinges();
+  for (int h : c.pins) c.pinned_at.push_back(chain.hinge_rest(h));
   return c;
 }
 
@@ -190,6 +199,55 @@ void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight
       kkt.add(2 * j + a, 2 * j + a, w);
       kkt.add(2 * i + a, 2 * j + a, -w);
       kkt.add(2 * j + a, 2 * i + a, -w);
+    }
+  }
+}
+
+void add_mass(const Natural& c, double scale, BandedKkt& kkt) {
+  const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
+  for (int i = 0; i < c.n; ++i) {
+    const int j = (i + 1) % c.n;
+    for (int a = 0; a < 2; ++a) {
+      kkt.add(2 * i + a, 2 * i + a, scale * (s + r));
+      kkt.add(2 * j + a, 2 * j + a, scale * (s + r));
+      kkt.add(2 * i + a, 2 * j + a, scale * (s - r));
+      kkt.add(2 * j + a, 2 * i + a, scale * (s - r));
+    }
+  }
+}
+
+namespace {
+
+/// Adds the energy k (t.theta - t0)^2 / 2 of an angle t at hinge `at` (its force and
+/// Jacobian) to `force` and the KKT matrix.
+void add_angle_spring(const Natural& c, int at, double k, const Turn& t, double t0, Vec& force, BandedKkt& kkt) {
+  const double d = t.theta - t0;
+  add_spring(c, at, k * d * t.d, k * (t.d * t.d.transpose() + d * t.dd), force, kkt);
+}
+
+/// The rest direction of link k (cyclic), from hinge k to k + 1.
+Eigen::Vector2d rest_link(const Chain& chain, int k) {
+  const int n = chain.n();
+  k = (k + n) % n;
+  return (chain.hinge_rest((k + 1) % n) - chain.hinge_rest(k)).normalized();
+}
+
+}  // namespace
+
+void add_stiffness(const Chain& chain, const Natural& c, const detail::Attachments& terms, const Vec& x, Vec& force,
+                   BandedKkt& kkt) {
+  for (int k = 0; k < c.n; ++k) {
+    const Vec6 y = local(c, x, k);
+    add_angle_spring(c, k, c.K, turn(y), c.theta0, force, kkt);
+    // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
+    if (const double kr = terms.rotation_stiffness(k); kr > 0.0)
+      add_angle_spring(c, k, kr, mean_rotation(y, rest_link(chain, k - 1), rest_link(chain, k)), 0.0, force, kkt);
+    // The foundation and the translational springs (attachments.hpp).
+    const Eigen::Matrix2d& B = terms.hinge_stiffness(k);
+    if (!B.isZero()) {
+      force.segment<2>(2 * k) += terms.hinge_force(k, hinge(x, k));
+      const int dofs[2] = {2 * k, 2 * k + 1};
+      kkt.add(dofs, B);
     }
   }
 }

@@ -16,6 +16,10 @@
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
 
+namespace multibody::detail {
+class Attachments;
+}
+
 namespace multibody::natural {
 
 using Vec = Eigen::VectorXd;
@@ -45,6 +49,8 @@ struct Natural {
 
 /// The natural model of `chain` with a dead force F at the hinge at `load_deg`.
 Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d& F);
+/// The unloaded natural model of `chain` with the further pins of `terms` (attachments.hpp).
+Natural make_natural(const Chain& chain, const detail::Attachments& terms);
 /// The rest positions (x_0, y_0, ..., x_{n-1}, y_{n-1}).
 Vec rest(const Chain& chain);
 
@@ -131,6 +137,15 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
 void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt);
 /// Adds sum_i lambda_i Hess c_i (the links' constant Hessians), times `weight`.
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, BandedKkt& kkt);
+/// Adds `scale` times the constant bar mass matrix (mass_times's) to the KKT matrix. O(n).
+void add_mass(const Natural& c, double scale, BandedKkt& kkt);
+/// The ring's stiffness on hinge positions, written once for the O(n) statics and the O(n)
+/// linear modes (whose K is its tangent at rest): the hinge springs on the turning angle, kr
+/// and the clamp on the mean rotation of a hinge's links, the foundation and the
+/// translational springs on the hinges' displacements (attachments.hpp, by hinge). Adds its
+/// gradient at x to `force` (2n) and its Hessian to `kkt`. O(n).
+void add_stiffness(const Chain& chain, const Natural& c, const detail::Attachments& terms, const Vec& x, Vec& force,
+                   BandedKkt& kkt);
 
 /// The largest change of a link's direction that the position correction dx makes,
 /// |dx_{k+1} - dx_k| / l (rad, to first order): compared with detail::kBasin, as the

@@ -13,14 +13,6 @@
 namespace multibody::natural {
 namespace {
 
-/// The natural model of `chain` with the further pins of `terms` (the loads are Loading's).
-Natural with_pins(const Chain& chain, const detail::Attachments& terms) {
-  Natural c = make_natural(chain, chain.anchor_deg(), Eigen::Vector2d::Zero());
-  c.pins = terms.pinned_hinges();
-  for (int h : c.pins) c.pinned_at.push_back(chain.hinge_rest(h));
-  return c;
-}
-
 /// Unknowns z = (x, lambda): hinge positions, then the multipliers (links, pin, roller,
 /// further pins). The KKT matrix J, constraint rows and multipliers scaled by kappa = K / l^2
 /// (the springs' stiffness scale), by the banded factorization (BandedKkt, O(n)); the arc's
@@ -35,7 +27,7 @@ class PositionStatics : public detail::StaticEquilibrium {
       : StaticEquilibrium(chain, depth),
         terms_(chain, spec),
         loads_(chain, spec, loads, "static"),
-        c_(with_pins(chain, terms_)),
+        c_(make_natural(chain, terms_)),
         N_(2 * c_.n),
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),
@@ -48,20 +40,7 @@ class PositionStatics : public detail::StaticEquilibrium {
     const Vec x = s.z.head(N_), lambda = s.z.tail(c_.rows());
     kkt_.clear();
     Vec rx = Vec::Zero(N_);
-    for (int k = 0; k < c_.n; ++k) {
-      const Vec6 y = local(c_, x, k);
-      add_angle_spring(k, c_.K, turn(y), c_.theta0, rx);
-      // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
-      if (const double kr = terms_.rotation_stiffness(k); kr > 0.0)
-        add_angle_spring(k, kr, mean_rotation(y, rest_link(k - 1), rest_link(k)), 0.0, rx);
-      // The foundation and the translational springs (attachments.hpp).
-      const Eigen::Matrix2d& B = terms_.hinge_stiffness(k);
-      if (!B.isZero()) {
-        rx.segment<2>(2 * k) += terms_.hinge_force(k, hinge(x, k));
-        const int dofs[2] = {2 * k, 2 * k + 1};
-        kkt_.add(dofs, B);
-      }
-    }
+    add_stiffness(chain_, c_, terms_, x, rx, kkt_);
     // The loads (loading.hpp) at p_0 .. p_n = p_0: the hinge gradient is dR/ds, kept in b_
     // until the factorization solves for J^-1 dR/ds in place.
     Eigen::Matrix2Xd p(2, c_.n + 1);
@@ -116,19 +95,6 @@ class PositionStatics : public detail::StaticEquilibrium {
   }
 
  private:
-  /// Adds the energy k (t.theta - t0)^2 / 2 of an angle t at hinge `at` (its force and
-  /// Jacobian) to the residual rx and the KKT matrix.
-  void add_angle_spring(int at, double k, const Turn& t, double t0, Vec& rx) {
-    const double d = t.theta - t0;
-    add_spring(c_, at, k * d * t.d, k * (t.d * t.d.transpose() + d * t.dd), rx, kkt_);
-  }
-
-  /// The rest direction of link k (cyclic), from hinge k to k + 1.
-  Eigen::Vector2d rest_link(int k) const {
-    k = (k + c_.n) % c_.n;
-    return (chain_.hinge_rest((k + 1) % c_.n) - chain_.hinge_rest(k)).normalized();
-  }
-
   const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
   const detail::Loading loads_;      ///< point loads, pressure, gravity
   const Natural c_;
