@@ -32,6 +32,17 @@
 // outputs. Robust dependent coordinates only; n >= 10 (forcing it below is an input
 // error: at n = 8 every mode is wanted and the Krylov space degenerates).
 //
+// ## Sparse path with the terms beyond the paper's ring (method = sparse, or auto from n = 257)
+// The foundation, springs, a clamp, further pins and point masses without rotary inertia
+// (backend.hpp, banded_modes_lacks) are taken in hinge positions (position_modes.hpp): K the
+// O(n) statics' tangent at rest, M the constant bar mass plus the point masses, the links
+// and pins as constraint rows; the eigen layer's shift-invert Lanczos runs on one refined
+// bordered-band KKT solve per step, and its vectors are converted to chain coordinates
+// (dphi_k = e_k x (du_{k+1} - du_k) / l), where the residuals below are those of the dense
+// path's pencil (the chain's K and M with the terms', the constraint rows with the further
+// pins'), as O(n) products. Cost O(n) per step; memory 2n x ncv doubles for the basis plus the
+// band's factors.
+//
 // ## Residuals: why max_residual grows like n^2 on either path and what to read instead
 // For a smooth low mode x, K0 x is a second difference of a smooth vector: it is computed
 // with an absolute error ~eps ||K0|| ||x|| while its size is ~omega^2 ||M0 x||, so the

@@ -34,9 +34,11 @@
 // K (dphi_k - dphi_{k-1}) and the mean rotations' kr (dphi_{k-1} + dphi_k) / 2 gathered into
 // link torques tau_k, the hinge forces tau_{k-1} e'_{k-1} / l - tau_k e'_k / l (the same
 // energy's gradient without adding K/l^2-sized entries): its rounding is a relative eps n in
-// the low modes' energies. Each refinement step divides the error by ~eps (n / 2 pi)^4, so the
-// path holds the dense path's frequencies to ~1e-12 up to n ~ 2 10^4 (measured: docs/measured.md)
-// and fails beyond ~5 10^4, where one band solve no longer contracts.
+// the low modes' energies. Each refinement step divides the error by ~eps (n / 2 pi)^4
+// (at most kMaxRefinementSteps; it stops at the rounding floor), so the path converges to the
+// closed form at order 2 up to n = 16000 (tests/multibody/test_modes_terms.cpp: without
+// refinement mode 1's error was 1e-3 there) and fails from ~5 10^4 on, where one band solve
+// no longer contracts: its pairs then miss modes.cpp's backward-error gate (exit 3).
 //
 // Cost: set_shift O(n) (assembly and the band LU), perform_op and PositionMass O(n);
 // memory: the band's factors, O(n).
