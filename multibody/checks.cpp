@@ -24,6 +24,16 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
     if (const std::string lacks = banded_modes_lacks(spec); !lacks.empty())
       throw std::invalid_argument("multibody method = \"sparse\" (the O(n) modes path) has no " + lacks +
                                   ": set multibody.method = \"dense\" or \"auto\"");
+  // The terms' O(n) path (hinge positions) holds its precision to kPositionModesMaxN only.
+  if (sparse && !spec.paper_terms_only() && options.n > kPositionModesMaxN) {
+    std::string keys;
+    for (const std::string& k : spec.terms_beyond_paper()) keys += (keys.empty() ? "" : ", ") + k;
+    throw std::invalid_argument(
+        "multibody: the O(n) modes with the terms beyond the paper's ring (" + keys +
+        ") hold their precision to multibody.n = " + std::to_string(kPositionModesMaxN) + " (n = " +
+        std::to_string(options.n) + "): the refined band solve in hinge positions loses eps (n/2pi)^4 of the low "
+        "modes; use a smaller n (the chain's error is order 2 in 1/n: below 1e-8 there)");
+  }
   // The paper's dependent angles are chosen for its pin and roller; further constraint rows
   // (pins, a clamp) need the robust null-space basis.
   if (options.dependent == ring::MultibodyOptions::Dependent::paper && !spec.supports.paper_only())

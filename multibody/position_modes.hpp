@@ -37,8 +37,9 @@
 // the low modes' energies. Each refinement step divides the error by ~eps (n / 2 pi)^4
 // (at most kMaxRefinementSteps; it stops at the rounding floor), so the path converges to the
 // closed form at order 2 up to n = 16000 (tests/multibody/test_modes_terms.cpp: without
-// refinement mode 1's error was 1e-3 there) and fails from ~5 10^4 on, where one band solve
-// no longer contracts: its pairs then miss modes.cpp's backward-error gate (exit 3).
+// refinement mode 1's error was 1e-3 there; scenes/tyre-ring.toml: still order 2 at n = 80000)
+// and fails near n = 10^5, where one band solve no longer contracts (its pairs miss modes.cpp's
+// residual gate, exit 3): check_modes refuses n > kPositionModesMaxN (backend.hpp).
 //
 // Cost: set_shift O(n) (assembly and the band LU), perform_op and PositionMass O(n);
 // memory: the band's factors, O(n).

@@ -221,4 +221,23 @@ TEST(MultibodyModesTerms, ForcedSparseRefusesAPointInertia) {
   EXPECT_NO_THROW(multibody::check_modes(spec, chain_options(400, Method::automatic)));
 }
 
+// Beyond kPositionModesMaxN the refined band solve in hinge positions no longer holds the
+// low modes (position_modes.hpp): an input error naming multibody.n, forced or "auto"; the
+// paper's ring keeps its angle path at any n.
+TEST(MultibodyModesTerms, RefusesTheTermsBeyondItsPrecisionLimit) {
+  const int most = multibody::kPositionModesMaxN;
+  ASSERT_EQ(multibody::backend(chain_options(most + 2, Method::automatic), tyre(), 15), multibody::Backend::banded);
+  EXPECT_NO_THROW(multibody::check_modes(tyre(), chain_options(most, Method::sparse)));
+  for (Method m : {Method::sparse, Method::automatic}) {
+    try {
+      multibody::check_modes(tyre(), chain_options(most + 2, m));
+      ADD_FAILURE() << "the O(n) modes took the terms beyond n = " << most;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("multibody.n = " + std::to_string(most)), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("foundation"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(multibody::check_modes(ringtest::pinned_ring(), chain_options(10 * most, Method::automatic)));
+}
+
 }  // namespace
