@@ -115,9 +115,13 @@ SolverEntry multibody_entry() {
     if (count > 0 && s.modes.preload_static) return 100.0 * n * n;
     // The Timoshenko chain's dense matrices are (2n)^2: its shear angles double the unknowns.
     const double N = s.ring.theory == ring::Theory::timoshenko ? 2.0 * n : n;
+    // The O(n) modes with the terms (hinge positions, multibody/position_modes.hpp): the
+    // Lanczos basis of 2n rows, the band's factors, the vectors in both coordinates; slopes
+    // between n = 2 10^4 and 5 10^4 (pinned, a spring and the foundation) for count = 5, 23,
+    // 50: 1579, 2165, 3476 bytes per segment, n (1370 + 42 count). Used: n (1500 + 45 count).
     if (count > 0)
       return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
-                 ? n * (380.0 + 13.0 * count)
+                 ? (s.ring.paper_terms_only() ? n * (380.0 + 13.0 * count) : n * (1500.0 + 45.0 * count))
                  : (s.ring.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
     double bytes = 0.0;
     // Nonlinear Timoshenko chain (dense only, multibody/sections.hpp): the response's state and

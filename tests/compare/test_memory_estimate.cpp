@@ -55,7 +55,8 @@ rho = 7.8e3
 section = { shape = "circle", diameter = 0.12 }
 )";
 
-/// A scene with only `solver` in it and one analysis: modes, response, statics, the statics
+/// A scene with only `solver` in it and one analysis: modes, the modes with a spring and the
+/// foundation (modes-terms: the multibody chain's O(n) path in hinge positions), response, statics, the statics
 /// with terms and loads beyond the paper's (static-terms: springs, a foundation, central
 /// pressure, gravity), or the modes under a follower pressure of half the critical one
 /// (modes.preload = "static").
@@ -63,6 +64,9 @@ std::string scene(const std::string& solver, const std::string& analysis) {
   std::string s = std::string("title = \"memory\"\n") + kRing;
   if (analysis == "modes") return s + "[supports]\npin = 180.0\n[" + solver + "]\n[modes]\ncount = 23\nsolvers = [\"" +
                                   solver + "\"]\n";
+  if (analysis == "modes-terms")
+    return s + "[supports]\npin = 180.0\nsprings = [{ at = 90.0, kx = 1e5, ky = 1e5, kr = 1e5 }]\n[foundation]\nradial = "
+               "1e4\ntangential = 1e3\n[" + solver + "]\n[modes]\ncount = 23\nsolvers = [\"" + solver + "\"]\n";
   s += "[supports]\npin = 180.0\nroller = 0.0\n";
   if (analysis == "static-terms")
     return s + "springs = [{ at = 90.0, kx = 1e5, ky = 1e5, kr = 1e5 }]\n[foundation]\nradial = 1e4\ntangential = 1e3\n[" +
@@ -80,7 +84,8 @@ std::string scene(const std::string& solver, const std::string& analysis) {
 }
 
 struct Case {
-  std::string name, solver, analysis;  ///< analysis: the ringvib command (modes, respond, static), preload or static-terms
+  std::string name, solver, analysis;  ///< analysis: the ringvib command (modes, respond, static), preload,
+                                       ///< modes-terms or static-terms
   std::vector<std::vector<std::string>> sizes;  ///< two sets of --set overrides
 };
 
@@ -91,6 +96,7 @@ const std::vector<Case> kCases = {
     {"multibody_modes_dense", "multibody", "modes",
      {{"multibody.n=1000", "multibody.method=\"dense\""}, {"multibody.n=2000", "multibody.method=\"dense\""}}},
     {"multibody_modes_sparse", "multibody", "modes", {{"multibody.n=100000"}, {"multibody.n=250000"}}},
+    {"multibody_modes_sparse_terms", "multibody", "modes-terms", {{"multibody.n=20000"}, {"multibody.n=50000"}}},
     {"multibody_timoshenko_modes", "multibody", "modes",  // dense: 2n unknowns
      {{"multibody.n=500", "ring.theory=\"timoshenko\""}, {"multibody.n=1000", "ring.theory=\"timoshenko\""}}},
     {"multibody_response_dense", "multibody", "respond",
@@ -140,7 +146,8 @@ TEST_P(MemoryEstimate, NeverBelowThePeakAndAtMostOneAndAHalfTimesIt) {
     SCOPED_TRACE(label);
     const double estimate = cmp::estimate_memory(cmp::load_scene(path, sets)).bytes;
     const std::string command =
-        c.analysis == "preload" ? "modes" : (c.analysis == "static-terms" ? "static" : c.analysis);
+        c.analysis == "preload" || c.analysis == "modes-terms" ? "modes"
+                                     : (c.analysis == "static-terms" ? "static" : c.analysis);
     std::vector<std::string> args = {command, path, "--solver", c.solver, "--force", "-q"};
     for (const auto& s : sets) {
       args.push_back("--set");
