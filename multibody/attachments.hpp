@@ -139,6 +139,8 @@ class Attachments {
 /// The constraint rows held along a path: the chain's, and `terms`' further pins when given;
 /// their rate Gdot v = hess v.^2 (every row is a sum of single-angle sinusoids). O(n p).
 Chain::ConstraintKinematics constraint_kinematics(const Chain& chain, const Attachments* terms, const Vector& q);
+/// The values of those rows alone (constraint_kinematics(...).g without the matrices). O(n p).
+Vector constraint_values(const Chain& chain, const Attachments* terms, const Vector& q);
 inline Vector constraint_jdot_qdot(const Chain::ConstraintKinematics& ck, const Vector& v) {
   return ck.hess * v.cwiseAbs2();
 }
