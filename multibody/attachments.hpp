@@ -119,6 +119,8 @@ class Attachments {
   Eigen::Vector2d hinge_force(int k, const Eigen::Vector2d& p) const {
     return stiff_[k] * (p - chain_.hinge_rest(k));
   }
+  /// The point mass at hinge k, kg (its translation; 0 without one). O(1).
+  double hinge_mass(int k) const { return mass_[k](0, 0); }
   /// The stiffness on the mean rotation of hinge k's two segments (kr and the clamp,
   /// condensed: condensed_rotation_stiffness), N m/rad; 0 without such a term. O(1).
   double rotation_stiffness(int k) const { return rot_k_[k]; }

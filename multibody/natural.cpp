@@ -10,7 +10,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 double Natural::radius() const { return n * l / (2.0 * kPi); }
 
-Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d& F) {
+Natural make_natural(const Chain& chain, const std::vector<int>& pins) {
   Natural c;
   c.n = chain.n();
   c.l = chain.l();
@@ -25,9 +25,15 @@ Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d&
     const Eigen::Vector2d d = (chain.hinge_rest(*r) - c.pin).normalized();
     c.nu = Eigen::Vector2d(-d.y(), d.x());
   }
-  c.load = chain.hinge_at(load_deg);
-  c.F = F;
+  c.pins = pins;
+  for (int h : pins) c.pinned_at.push_back(chain.hinge_rest(h));
   return c;
+}
+
+Eigen::Vector2d rest_link(const Chain& chain, int k) {
+  const int n = chain.n();
+  k = (k + n) % n;
+  return (chain.hinge_rest((k + 1) % n) - chain.hinge_rest(k)).normalized();
 }
 
 Vec rest(const Chain& chain) {

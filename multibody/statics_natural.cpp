@@ -13,14 +13,6 @@
 namespace multibody::natural {
 namespace {
 
-/// The natural model of `chain` with the further pins of `terms` (the loads are Loading's).
-Natural with_pins(const Chain& chain, const detail::Attachments& terms) {
-  Natural c = make_natural(chain, chain.anchor_deg(), Eigen::Vector2d::Zero());
-  c.pins = terms.pinned_hinges();
-  for (int h : c.pins) c.pinned_at.push_back(chain.hinge_rest(h));
-  return c;
-}
-
 /// Unknowns z = (x, lambda): hinge positions, then the multipliers (links, pin, roller,
 /// further pins). The KKT matrix J, constraint rows and multipliers scaled by kappa = K / l^2
 /// (the springs' stiffness scale), by the banded factorization (BandedKkt, O(n)); the arc's
@@ -35,7 +27,7 @@ class PositionStatics : public detail::StaticEquilibrium {
       : StaticEquilibrium(chain, depth),
         terms_(chain, spec),
         loads_(chain, spec, loads, "static"),
-        c_(with_pins(chain, terms_)),
+        c_(make_natural(chain, terms_.pinned_hinges())),
         N_(2 * c_.n),
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),
@@ -53,7 +45,7 @@ class PositionStatics : public detail::StaticEquilibrium {
       add_angle_spring(k, c_.K, turn(y), c_.theta0, rx);
       // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
       if (const double kr = terms_.rotation_stiffness(k); kr > 0.0)
-        add_angle_spring(k, kr, mean_rotation(y, rest_link(k - 1), rest_link(k)), 0.0, rx);
+        add_angle_spring(k, kr, mean_rotation(y, rest_link(chain_, k - 1), rest_link(chain_, k)), 0.0, rx);
       // The foundation and the translational springs (attachments.hpp).
       const Eigen::Matrix2d& B = terms_.hinge_stiffness(k);
       if (!B.isZero()) {
@@ -121,12 +113,6 @@ class PositionStatics : public detail::StaticEquilibrium {
   void add_angle_spring(int at, double k, const Turn& t, double t0, Vec& rx) {
     const double d = t.theta - t0;
     add_spring(c_, at, k * d * t.d, k * (t.d * t.d.transpose() + d * t.dd), rx, kkt_);
-  }
-
-  /// The rest direction of link k (cyclic), from hinge k to k + 1.
-  Eigen::Vector2d rest_link(int k) const {
-    k = (k + c_.n) % c_.n;
-    return (chain_.hinge_rest((k + 1) % c_.n) - chain_.hinge_rest(k)).normalized();
   }
 
   const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
