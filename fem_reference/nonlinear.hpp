@@ -56,7 +56,8 @@
 // statics' basin (R/10 per step) and Newton's stop (1e-12 R), and the buckling's path step,
 // count psi as the length R psi (BeamModel::lengths); the continuation's arc norm
 // (paths/continuation.hpp) takes the unknowns as they are.
-// Measured (tests/fem_reference/fem_reissner_test.cpp): see fem_reference/README.md.
+// Measured (tests/fem_reference/fem_reissner_test.cpp): see docs/measured.md, "fem_reference: the
+// Reissner beam".
 //
 // ## Terms and loads (beam_potential.hpp: one piece of code, used by statics and response)
 // The equations are those of the total potential Pi(q; s) = V(q) - s Phi(q): V the stored

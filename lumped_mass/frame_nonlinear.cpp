@@ -11,6 +11,7 @@
 
 #include "lumped_mass/checks.hpp"
 #include "lumped_mass/frame.hpp"
+#include "lumped_mass/midpoint.hpp"
 #include "lumped_mass/stability.hpp"
 #include "modal/buckling.hpp"
 #include "paths/continuation.hpp"
@@ -171,88 +172,17 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
 
 namespace {
 
-/// The frame's implicit midpoint step for the time-stepping driver, on (q, mu):
-///   M (q_1 - q_0 - h v_0) 2 / h^2 + grad V(q_m) + f(t_m) grad P(q_m) + C v_m + S^T mu = 0,
-///   S (q_1 - rest) = 0,   v_1 = 2 (q_1 - q_0) / h - v_0,   q_m = (q_0 + q_1) / 2,
-/// the chain's scheme (nonlinear.hpp) without link constraints: the supports are linear, so
-/// they hold to round-off and do no work; the balance error is the midpoint rule's O(h^2) on
-/// the non-quadratic element energy and the follower and central pressures. The point
-/// inertias' J sits in the constant mass on th (exact). The loads' work over a step is
-/// -f(t_m) (P(q_1) - P(q_0)).
-class FrameStepper : public paths::Stepper {
+/// The frame's implicit midpoint step (midpoint.hpp) on (q, mu), the constraint rows
+/// S (q_1 - rest) = 0 with the forces S^T mu: the chain's scheme without link constraints. The
+/// supports are linear, so they hold to round-off and do no work; the balance error is the
+/// midpoint rule's O(h^2) on the non-quadratic element energy and the follower and central
+/// pressures. The point inertias' J sits in the constant mass on th (exact).
+class FrameStepper : public detail::MidpointStepper {
  public:
-  FrameStepper(const Frame& f, const ring::ResponseOptions& r, double radius, const FrameLoads& loads, Sparse Cd,
+  FrameStepper(const Frame& f, const ring::ResponseOptions& r, double radius, const FrameLoads& loads, Sparse C,
                std::vector<int> rec)
-      : f_(f), r_(r), radius_(radius), L_(loads), Cd_(std::move(Cd)), rec_(std::move(rec)),
-        damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0), q_(f.rest), v_(Vec::Zero(3 * f.n)),
-        mu_(Vec::Zero(f.S.rows())) {}
-
-  paths::StepOutcome try_step(double t, double hh) override {
-    const int N = 3 * f_.n, R = static_cast<int>(f_.S.rows());
-    const double tm = t + 0.5 * hh;
-    const double scale = 2.0 / (hh * hh) * f_.M.diagonal().maxCoeff();  // balances the support rows
-    hh_ = hh;
-    f_t_ = r_.history.factor(tm);
-    q1_ = q_ + hh * v_;
-    mu1_ = mu_;
-    paths::StepOutcome out;
-    out.load_factor = f_t_;
-    Sparse Mt = (2.0 / (hh * hh)) * f_.M;
-    if (damped_) Mt += Cd_ / hh;
-    Mt.conservativeResize(N + R, N + R);
-    for (int it = 0; it < 20; ++it) {
-      ++out.iterations;
-      const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
-      Springs sp = frame_energy(f_, qm, 0.5);
-      L_.add_hessian(qm, 0.5 * f_t_, sp.hess);
-      support_triplets(f_, N, scale, sp.hess);
-      Vec res(N + R);
-      res.head(N) = (2.0 / (hh * hh)) * (f_.M * (q1_ - q_ - hh * v_)) + sp.grad + f_t_ * L_.gradient(qm) +
-                    f_.S.transpose() * (mu1_ * scale);
-      if (damped_) res.head(N) += Cd_ * vm;
-      res.tail(R) = scale * (f_.S * (q1_ - f_.rest));
-      Sparse A(N + R, N + R);
-      A.setFromTriplets(sp.hess.begin(), sp.hess.end());
-      A += Mt;
-      LU lu;
-      lu.compute(A);
-      if (lu.info() != Eigen::Success || !res.allFinite()) break;
-      const Vec d = lu.solve(-res);
-      if (!d.allFinite() || !(frame_move(f_, d.head(N)) < 1.0)) break;
-      q1_ += d.head(N);
-      mu1_ += d.tail(R);
-      if (correction_size(f_, d.head(N), radius_) <= 1e-11 * radius_) {
-        out.converged = true;
-        break;
-      }
-    }
-    return out;
-  }
-
-  void accept(double) override {
-    const Vec vm = (q1_ - q_) / hh_;
-    work_ -= f_t_ * (L_.potential(q1_) - L_.potential(q_));
-    if (damped_) dissipated_ += hh_ * vm.dot(Cd_ * vm);
-    v_ = 2.0 * vm - v_;
-    q_ = q1_;
-    mu_ = mu1_;
-  }
-
-  bool finite() const override { return q_.allFinite() && v_.allFinite(); }
-
-  paths::Sample sample() const override {
-    paths::Sample out;
-    for (int k : rec_) {
-      out.ux.push_back(q_[3 * k] - f_.rest[3 * k]);
-      out.uy.push_back(q_[3 * k + 1] - f_.rest[3 * k + 1]);
-    }
-    out.kinetic = 0.5 * v_.dot(f_.M * v_);
-    out.strain = frame_energy(f_, q_, 0.0).energy;
-    out.work = work_;
-    out.dissipated = dissipated_;
-    out.constraint_residual = f_.S.rows() > 0 ? (f_.S * (q_ - f_.rest)).cwiseAbs().maxCoeff() : 0.0;
-    return out;
-  }
+      : MidpointStepper(r, f.M, std::move(C), f.rest, f.S.rows()), f_(f), radius_(radius), L_(loads),
+        rec_(std::move(rec)) {}
 
   void shape(std::vector<double>& x, std::vector<double>& y) const override {
     paths::interleaved_shape(f_.positions(q_), f_.n, x, y);
@@ -265,15 +195,54 @@ class FrameStepper : public paths::Stepper {
   }
 
  private:
+  bool newton(double hh, double factor, int& iterations) override {
+    const int N = 3 * f_.n, R = static_cast<int>(f_.S.rows());
+    const double scale = 2.0 / (hh * hh) * M_.diagonal().maxCoeff();  // balances the support rows
+    Sparse Mt = (2.0 / (hh * hh)) * M_;
+    if (damped_) Mt += C_ / hh;
+    Mt.conservativeResize(N + R, N + R);
+    for (int it = 0; it < 20; ++it) {
+      ++iterations;
+      const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
+      Springs sp = frame_energy(f_, qm, 0.5);
+      L_.add_hessian(qm, 0.5 * factor, sp.hess);
+      support_triplets(f_, N, scale, sp.hess);
+      Vec res(N + R);
+      res.head(N) = (2.0 / (hh * hh)) * (M_ * (q1_ - q_ - hh * v_)) + sp.grad + factor * L_.gradient(qm) +
+                    f_.S.transpose() * (mu1_ * scale);
+      if (damped_) res.head(N) += C_ * vm;
+      res.tail(R) = scale * (f_.S * (q1_ - f_.rest));
+      Sparse A(N + R, N + R);
+      A.setFromTriplets(sp.hess.begin(), sp.hess.end());
+      A += Mt;
+      LU lu;
+      lu.compute(A);
+      if (lu.info() != Eigen::Success || !res.allFinite()) return false;
+      const Vec d = lu.solve(-res);
+      if (!d.allFinite() || !(frame_move(f_, d.head(N)) < 1.0)) return false;
+      q1_ += d.head(N);
+      mu1_ += d.tail(R);
+      if (correction_size(f_, d.head(N), radius_) <= 1e-11 * radius_) return true;
+    }
+    return false;
+  }
+
+  double potential(const Vec& q) const override { return L_.potential(q); }
+  double strain(const Vec& q) const override { return frame_energy(f_, q, 0.0).energy; }
+  double constraint_residual(const Vec& q) const override {
+    return f_.S.rows() > 0 ? (f_.S * (q - f_.rest)).cwiseAbs().maxCoeff() : 0.0;
+  }
+  void record(const Vec& q, paths::Sample& out) const override {
+    for (int k : rec_) {
+      out.ux.push_back(q[3 * k] - f_.rest[3 * k]);
+      out.uy.push_back(q[3 * k + 1] - f_.rest[3 * k + 1]);
+    }
+  }
+
   const Frame& f_;
-  const ring::ResponseOptions& r_;
   const double radius_;
   const FrameLoads& L_;
-  const Sparse Cd_;
   const std::vector<int> rec_;
-  const bool damped_;
-  Vec q_, v_, mu_, q1_, mu1_;
-  double hh_ = 0.0, f_t_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
 };
 
 }  // namespace
@@ -287,24 +256,11 @@ ring::TimeHistory frame_respond(const ring::RingSpec& spec, const ring::LumpedOp
   const int N = 3 * f.n;
   // Rayleigh damping C = a M + b K0, K0 the Hessian of the elements and terms at rest (the
   // linear frame's stiffness).
-  Sparse Cd(N, N);
-  if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
-    const Springs s0 = frame_energy(f, f.rest, 1.0);
-    Sparse K0(N, N);
-    K0.setFromTriplets(s0.hess.begin(), s0.hess.end());
-    Cd = r.rayleigh_mass * f.M + r.rayleigh_stiffness * K0;
-  }
-  ring::EnergyGuard guard(spec, f.n, ring::load_scale(spec, r.loads));
-  FrameStepper stepper(f, r, spec.radius, loads, Cd, rec);
-  paths::Grid grid;
-  grid.dt = r.dt;
-  grid.t_end = r.t_end;
-  grid.guard = &guard;
-  grid.who = "lumped response (" + ring::to_string(options.variant) + ")";
-  grid.progress = r.progress;
-  ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
-  h.solver = "lumped";
-  h.unknowns = N + static_cast<int>(f.S.rows());
+  FrameStepper stepper(f, r, spec.radius, loads, detail::rayleigh_damping(r, f.M, frame_energy(f, f.rest, 1.0).hess),
+                       rec);
+  ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, f.n, r,
+                                                   "lumped response (" + ring::to_string(options.variant) + ")",
+                                                   N + static_cast<int>(f.S.rows()));
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;
 }

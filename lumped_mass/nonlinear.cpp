@@ -4,6 +4,7 @@
 #include "lumped_mass/checks.hpp"
 #include "lumped_mass/frame.hpp"
 #include "lumped_mass/loads.hpp"
+#include "lumped_mass/midpoint.hpp"
 #include "lumped_mass/model.hpp"
 #include "lumped_mass/stability.hpp"
 #include "lumped_mass/terms.hpp"
@@ -375,47 +376,45 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 
 namespace {
 
-/// The chain's midpoint step (a Newton solve on the constrained midpoint equations,
-/// q_1 = q_0 + h v_m, v_1 = 2 v_m - v_0) for the time-stepping driver
-/// (paths/time_stepping.hpp); the loads' force, the damping and the springs at the step's
-/// midpoint. The unknowns q = (x, chi): the hinge positions, then the rotation chi of every
-/// hinge with a point inertia (Terms::hinge_rotations: the linear modes' unknowns, model.cpp),
-/// whose mass is J and whose springs are the hinge's split springs (chain.hpp, springs(); the
-/// kr of such a hinge acts on chi, not condensed). The mass on q is constant (the midpoint
-/// masses, the point masses, J on chi), so the kinetic energy v^T M v / 2 is quadratic and
-/// the midpoint rule conserves it with the quadratic part of V exactly.
-/// The loads' work over a step: -f(t_m) (P(x_1) - P(x_0)), P their potential (loads.hpp):
-/// exact for a constant load factor, whatever the configuration dependence of the load.
-class MidpointStepper : public paths::Stepper {
+/// The chain's midpoint step (midpoint.hpp): a Newton solve on the constrained midpoint
+/// equations, the loads' force, the damping and the springs at the step's midpoint. The
+/// unknowns q = (x, chi): the hinge positions, then the rotation chi of every hinge with a point
+/// inertia (Terms::hinge_rotations: the linear modes' unknowns, model.cpp), whose mass is J and
+/// whose springs are the hinge's split springs (chain.hpp, springs(); the kr of such a hinge
+/// acts on chi, not condensed). The mass on q is constant (the midpoint masses, the point
+/// masses, J on chi). The hinge dampers act on the rate of each turning angle.
+class ChainStepper : public detail::MidpointStepper {
  public:
-  /// M, Cd: mass and damping on q (2n + hinge rotations); rest: q at rest (chi = 0).
-  MidpointStepper(const Chain& c, const ring::ResponseOptions& r, double radius, const ChainLoads& loads, Sparse M,
-                  Sparse Cd, std::vector<int> rec, Vec rest)
-      : c_(c), r_(r), radius_(radius), L_(loads), M_(std::move(M)), Cd_(std::move(Cd)), rec_(std::move(rec)),
-        ch_(r.hinge_damping), damped_(r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0 || r.hinge_damping > 0),
-        q_(std::move(rest)), v_(Vec::Zero(q_.size())), lambda_(Vec::Zero(c.rows())) {}
+  ChainStepper(const Chain& c, const ring::ResponseOptions& r, double radius, const ChainLoads& loads, Sparse M,
+               Sparse C, std::vector<int> rec, Vec rest)
+      : MidpointStepper(r, std::move(M), std::move(C), std::move(rest), c.rows()), c_(c), radius_(radius), L_(loads),
+        rec_(std::move(rec)), ch_(r.hinge_damping) {}
 
-  paths::StepOutcome try_step(double t, double hh) override {
+  void shape(std::vector<double>& x, std::vector<double>& y) const override {
+    paths::interleaved_shape(q_, c_.n, x, y);
+  }
+
+  std::optional<std::string> contact() const override {
+    const Contact k = closest_nonadjacent(c_, q_.head(2 * c_.n));
+    if (k.distance >= c_.depth) return std::nullopt;
+    return contact_where(c_, k);
+  }
+
+ private:
+  bool newton(double hh, double factor, int& iterations) override {
     const int N = 2 * c_.n, R = c_.rows(), Q = static_cast<int>(q_.size());
-    const double tm = t + 0.5 * hh;
     const double scale = 2.0 / (hh * hh) * c_.m;  // balances the constraint rows
-    hh_ = hh;
-    f_ = r_.history.factor(tm);
-    q1_ = q_ + hh * v_;
-    l1_ = lambda_;
-    paths::StepOutcome out;
-    out.load_factor = f_;
     for (int it = 0; it < 20; ++it) {
-      ++out.iterations;
+      ++iterations;
       const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
       const Vec xm = qm.head(N), x1 = q1_.head(N);
-      const Springs sp = tangent(c_, L_, qm, l1_ * scale, f_, 0.5);
+      const Springs sp = tangent(c_, L_, qm, mu1_ * scale, factor, 0.5);
       Triplets trip = sp.hess;
       jacobian(c_, xm, Q, scale, true, trip);
       jacobian(c_, x1, Q, scale, false, trip);
       Vec res = (2.0 / (hh * hh)) * (M_ * (q1_ - q_ - hh * v_)) + sp.grad;
-      res.head(N) += f_ * L_.gradient(xm);
-      if (damped_) res += Cd_ * vm;
+      res.head(N) += factor * L_.gradient(xm);
+      if (damped_) res += C_ * vm;
       if (ch_ > 0)
         for (int j = 0; j < c_.n; ++j) {
           const Turn tm_ = turn(c_, xm, j, false);
@@ -430,74 +429,46 @@ class MidpointStepper : public paths::Stepper {
       jacobian(c_, xm, 0, 1.0, true, gt);
       Sparse GT(Q, R);
       GT.setFromTriplets(gt.begin(), gt.end());
-      res += GT * (l1_ * scale);
+      res += GT * (mu1_ * scale);
       Sparse A(Q + R, Q + R);
       A.setFromTriplets(trip.begin(), trip.end());
       Sparse Mt = (2.0 / (hh * hh)) * M_;
-      if (damped_) Mt += Cd_ / hh;
+      if (damped_) Mt += C_ / hh;
       Mt.conservativeResize(Q + R, Q + R);
       A += Mt;
-      const Newton step = newton_update(c_, A, res, scale, 1e-11 * radius_, radius_, q1_, l1_);
-      if (step == Newton::iterating) continue;
-      out.converged = step == Newton::converged;
-      break;
+      const Newton step = newton_update(c_, A, res, scale, 1e-11 * radius_, radius_, q1_, mu1_);
+      if (step != Newton::iterating) return step == Newton::converged;
     }
-    return out;
+    return false;
   }
 
-  void accept(double) override {
-    const int N = 2 * c_.n;
-    const Vec dq = q1_ - q_, vm = dq / hh_;
-    work_ -= f_ * (L_.potential(q1_.head(N)) - L_.potential(q_.head(N)));
-    if (damped_) dissipated_ += hh_ * vm.dot(Cd_ * vm);
-    if (ch_ > 0)
-      for (int j = 0; j < c_.n; ++j) {
-        const double rate = (turn(c_, q1_, j, false).theta - turn(c_, q_, j, false).theta) / hh_;
-        dissipated_ += hh_ * ch_ * rate * rate;
-      }
-    v_ = 2.0 * vm - v_;
-    q_ = q1_;
-    lambda_ = l1_;
+  double potential(const Vec& q) const override { return L_.potential(q.head(2 * c_.n)); }
+  double strain(const Vec& q) const override { return springs(c_, q, 0.0).energy; }
+  double constraint_residual(const Vec& q) const override {
+    return constraints(c_, q.head(2 * c_.n)).head(c_.n).cwiseAbs().maxCoeff();
   }
-
-  bool finite() const override { return q_.allFinite() && v_.allFinite(); }
-
-  paths::Sample sample() const override {
-    paths::Sample out;
+  void record(const Vec& q, paths::Sample& out) const override {
     for (int h : rec_) {
-      const Vec2 u = c_.at(q_, h) - c_.at(c_.rest, h);
+      const Vec2 u = c_.at(q, h) - c_.at(c_.rest, h);
       out.ux.push_back(u.x());
       out.uy.push_back(u.y());
     }
-    out.kinetic = 0.5 * v_.dot(M_ * v_);  // J w^2 / 2 of the hinge rotations included
-    out.strain = springs(c_, q_, 0.0).energy;
-    out.work = work_;
-    out.dissipated = dissipated_;
-    out.constraint_residual = constraints(c_, q_.head(2 * c_.n)).head(c_.n).cwiseAbs().maxCoeff();
-    return out;
+  }
+  double own_dissipation(const Vec& q0, const Vec& q1, double hh) const override {
+    double d = 0.0;
+    if (ch_ > 0)
+      for (int j = 0; j < c_.n; ++j) {
+        const double rate = (turn(c_, q1, j, false).theta - turn(c_, q0, j, false).theta) / hh;
+        d += hh * ch_ * rate * rate;
+      }
+    return d;
   }
 
-  void shape(std::vector<double>& x, std::vector<double>& y) const override {
-    paths::interleaved_shape(q_, c_.n, x, y);
-  }
-
-  std::optional<std::string> contact() const override {
-    const Contact k = closest_nonadjacent(c_, q_.head(2 * c_.n));
-    if (k.distance >= c_.depth) return std::nullopt;
-    return contact_where(c_, k);
-  }
-
- private:
   const Chain& c_;
-  const ring::ResponseOptions& r_;
   const double radius_;
   const ChainLoads& L_;
-  const Sparse M_, Cd_;
   const std::vector<int> rec_;
   const double ch_;
-  const bool damped_;
-  Vec q_, v_, lambda_, q1_, l1_;
-  double hh_ = 0.0, f_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
 };
 
 }  // namespace
@@ -513,7 +484,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const int N = 2 * c.n, R = c.rows();
   const Sparse M = mass_matrix(c);
   const ChainLoads loads(r.loads, c.rest, c.l, M, at);
-  // The unknowns q = (x, chi) (MidpointStepper): J on every hinge rotation chi.
+  // The unknowns q = (x, chi) (ChainStepper): J on every hinge rotation chi.
   const auto& hr = c.terms->hinge_rotations();
   const int Q = N + static_cast<int>(hr.size());
   Vec rest = Vec::Zero(Q);
@@ -521,30 +492,30 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const Sparse Mq = mass_matrix(c, HingeRotations::unknowns);
   // Rayleigh damping C = a M + b K0, M the mass on q, K0 the Hessian of the springs and terms
   // at rest (no link forces there), the hinge rotations' split springs included.
-  Sparse Cd(Q, Q);
-  if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
-    const Springs s0 = springs(c, rest, 1.0);
-    Sparse K0(Q, Q);
-    K0.setFromTriplets(s0.hess.begin(), s0.hess.end());
-    Cd = r.rayleigh_mass * Mq + r.rayleigh_stiffness * K0;
-  }
+  ChainStepper stepper(c, r, spec.radius, loads, Mq, detail::rayleigh_damping(r, Mq, springs(c, rest, 1.0).hess), rec,
+                       rest);
+  ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, c.n, r, "lumped response", Q + R);
+  h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return h;
+}
 
-  // The balance error of the midpoint rule is O(h^2) of the spring energy, of either
-  // sign; a gain beyond the one rule's bound (ring/energy_guard.hpp) is a failed
-  // integration, not a result.
-  ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, r.loads));
-  MidpointStepper stepper(c, r, spec.radius, loads, Mq, Cd, rec, rest);
+namespace detail {
+
+ring::TimeHistory integrate_midpoint(MidpointStepper& stepper, const ring::RingSpec& spec, int nodes,
+                                     const ring::ResponseOptions& r, const std::string& who, int unknowns) {
+  ring::EnergyGuard guard(spec, nodes, ring::load_scale(spec, r.loads));
   paths::Grid grid;
   grid.dt = r.dt;
   grid.t_end = r.t_end;
   grid.guard = &guard;
-  grid.who = "lumped response";
+  grid.who = who;
   grid.progress = r.progress;
   ring::TimeHistory h = paths::integrate(stepper, grid, r.record);
   h.solver = "lumped";
-  h.unknowns = Q + R;
-  h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  h.unknowns = unknowns;
   return h;
 }
+
+}  // namespace detail
 
 }  // namespace lumped

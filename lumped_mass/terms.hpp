@@ -29,7 +29,8 @@
 // (nonlinear.cpp) make chi an unknown of its own at every hinge with a point inertia and no
 // clamp (hinge_rotations()), J on chi and kr on chi. Order 2, where J (4K / (4K + kr))^2 on
 // the chord rotation m_h (chi condensed quasi-statically) converged at order 1 (1.43 -> 0.75 %
-// at n = 160 -> 320 on scenes/thick-ring.toml with 1e-4 kg m^2, README). The split springs of
+// at n = 160 -> 320 on scenes/thick-ring.toml with 1e-4 kg m^2; docs/measured.md, "multibody:
+// terms beyond the paper's ring"). The split springs of
 // such a hinge are written once, split(): with theta_h = phi_b - phi_a (the hinge spring's
 // turning angle) and m_h = (phi_a + phi_b) / 2,
 //   K (phi_a - chi)^2 + K (phi_b - chi)^2 = K theta_h^2 / 2 + 4K (m_h - chi)^2 / 2,

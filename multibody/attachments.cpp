@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace multibody::detail {
 
@@ -218,6 +220,17 @@ Chain::ConstraintKinematics constraint_kinematics(const Chain& chain, const Atta
   return terms ? terms->constraints(q) : chain.constraint_kinematics(q);
 }
 
+Vector constraint_values(const Chain& chain, const Attachments* terms, const Vector& q) {
+  Vector g = chain.constraints(q);
+  if (!terms || terms->pin_rows() == 0) return g;
+  const std::vector<int>& pins = terms->pinned_hinges();
+  const Eigen::Index c = g.size();
+  g.conservativeResize(c + terms->pin_rows());
+  for (std::size_t i = 0; i < pins.size(); ++i)
+    g.segment<2>(c + 2 * static_cast<Eigen::Index>(i)) = chain.hinge_position(q, pins[i]) - chain.hinge_rest(pins[i]);
+  return g;
+}
+
 HingeInertias::HingeInertias(const Chain& chain, const Attachments& terms) : chain_(chain) {
   const int n = chain.n(), dofs = chain.dofs();
   const std::vector<HingeRotation> rotations = terms.hinge_rotations();
@@ -231,11 +244,12 @@ HingeInertias::HingeInertias(const Chain& chain, const Attachments& terms) : cha
     H_(at(i), at(j)) -= c;
     H_(at(j), at(i)) -= c;
   };
-  split_hinges(rotations, n, chain.K(), spring, [](int, double) {}, [&](int i, double j) { J_[i - n] = j; });
-  springs_ = H_;
+  std::vector<std::pair<int, double>> ground;  // kr from chi to the ground: H's part beyond the springs'
   split_hinges(
-      rotations, n, chain.K(), [](int, int, double) {}, [&](int i, double c) { H_(at(i), at(i)) += c; },
-      [](int, double) {});
+      rotations, n, chain.K(), spring, [&](int i, double c) { ground.emplace_back(i, c); },
+      [&](int i, double j) { J_[i - n] = j; });
+  springs_ = H_;
+  for (const auto& [i, c] : ground) H_(at(i), at(i)) += c;
   // Less kr condensed on the mean rotation, which Attachments puts at every hinge with kr.
   for (const HingeRotation& t : rotations)
     if (t.moves() && t.kr > 0.0) {

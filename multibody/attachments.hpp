@@ -124,11 +124,11 @@ class Attachments {
   Eigen::Vector2d hinge_force(int k, const Eigen::Vector2d& p) const {
     return stiff_[k] * (p - chain_.hinge_rest(k));
   }
+  /// The point mass at hinge k, kg (its translation; 0 without one). O(1).
+  double hinge_mass(int k) const { return mass_[k](0, 0); }
   /// The stiffness on the mean rotation of hinge k's two segments (kr and the clamp,
   /// condensed: condensed_rotation_stiffness), N m/rad; 0 without such a term. O(1).
   double rotation_stiffness(int k) const { return rot_k_[k]; }
-  /// The point masses' mass at hinge k (m I, 2 x 2, kg). O(1).
-  const Eigen::Matrix2d& hinge_mass(int k) const { return mass_[k]; }
   /// The further pins' hinges, in the order of their rows. O(1).
   const std::vector<int>& pinned_hinges() const { return pins_; }
 
@@ -150,6 +150,8 @@ class Attachments {
 /// The constraint rows held along a path: the chain's, and `terms`' further pins when given;
 /// their rate Gdot v = hess v.^2 (every row is a sum of single-angle sinusoids). O(n p).
 Chain::ConstraintKinematics constraint_kinematics(const Chain& chain, const Attachments* terms, const Vector& q);
+/// The values of those rows alone (constraint_kinematics(...).g without the matrices). O(n p).
+Vector constraint_values(const Chain& chain, const Attachments* terms, const Vector& q);
 inline Vector constraint_jdot_qdot(const Chain::ConstraintKinematics& ck, const Vector& v) {
   return ck.hess * v.cwiseAbs2();
 }

@@ -110,14 +110,18 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
     throw std::invalid_argument(
         "multibody response: the Timoshenko chain (ring.theory = \"timoshenko\") does not take point inertias "
         "(masses[].inertia > 0) yet; their translational mass it takes");
-  if (!spec.paper_terms_only() && (response.integrator == ring::ResponseOptions::Integrator::energy_momentum ||
-                                   backend(options, spec, response.loads, Analysis::response) == Backend::banded))
-    ring::refuse_terms_beyond_paper(spec, "multibody response (energy-momentum and the O(n) path)");
-  // Loads beyond one point load: the dense Newmark and generalized-alpha paths (loading.hpp).
-  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
-    ring::one_point_load(response.loads, "response", "multibody response.integrator = \"energy-momentum\"");
-  else if (backend(options, spec, response.loads, Analysis::response) == Backend::banded)
+  // The energy-momentum scheme (hinge positions) takes every term and load but a point
+  // inertia, whose hinge rotation is an unknown of the angle paths only (HingeInertias).
+  if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum && has_point_inertia(spec))
+    throw std::invalid_argument(
+        "multibody response.integrator = \"energy-momentum\" (hinge positions) does not take point inertias "
+        "(masses[].inertia > 0): use \"newmark\" or \"generalized-alpha\", or inertia = 0");
+  // The O(n) angle path: the paper's terms and one point load (backend.hpp keeps "auto" dense).
+  if (response.integrator != ring::ResponseOptions::Integrator::energy_momentum &&
+      backend(options, spec, response.loads, Analysis::response) == Backend::banded) {
+    if (!spec.paper_terms_only()) ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) response)");
     ring::one_point_load(response.loads, "response", "multibody method = \"sparse\" (the O(n) response)");
+  }
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
     throw std::invalid_argument("multibody::respond: dt must be > 0");

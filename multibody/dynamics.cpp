@@ -96,7 +96,7 @@ class ChainStepper : public paths::Stepper {
     out.work = work_;
     out.dissipated = dissipated_;
     // Values only: the kinematics (G, its Hessian) are the step's business, not the sample's.
-    out.constraint_residual = (p_.terms ? p_.terms->constraints(q).g : chain_.constraints(q)).cwiseAbs().maxCoeff();
+    out.constraint_residual = detail::constraint_values(chain_, p_.terms, q).cwiseAbs().maxCoeff();
     return out;
   }
 

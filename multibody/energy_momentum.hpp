@@ -14,16 +14,25 @@
 //    its rest position, 1 row).
 //  - Springs K/2 (theta_k - 2 pi/n)^2 on the turning angle between neighbouring segments,
 //    theta_k = atan2(a x b, a . b) (exact for any rotation below pi between neighbours).
-//  - A dead force F f(t) at one hinge.
+//  - The terms beyond the paper's ring, by hinge as attachments.hpp writes them: point
+//    masses m I on their hinge's velocity (M stays constant); the foundation's and the
+//    supports' springs u_k^T B_k u_k / 2 (quadratic); kr and the clamp on the mean rotation of
+//    the hinge's two links (an angle spring like K's); further pins (2 linear rows each). A
+//    point mass's rotary inertia is refused: its hinge rotation is an unknown of the angle
+//    paths only (HingeInertias).
+//  - The loads times f(t) (loading.hpp): their hinge gradients dPi/dp, constant for point
+//    loads, gravity and dead pressure, configuration-dependent for follower and central
+//    pressure (with their Jacobian blocks).
 //
 // ## The scheme (Gonzalez 1996 discrete gradient; Betsch 2005 for the constraints)
-//   M (v_{n+1} - v_n) / h = F f(t_{n+1/2}) - grad_d V(x_n, x_{n+1}) - G(x_m)^T lambda,
+//   M (v_{n+1} - v_n) / h = F - grad_d V(x_n, x_{n+1}) - G(x_m)^T lambda,
 //   (x_{n+1} - x_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   x_m = (x_n + x_{n+1})/2,
 // with grad_d V the sum over springs of each spring's discrete gradient on its own six
-// coordinates: grad V_k(y_m) + (V_k(y_{n+1}) - V_k(y_n) - grad V_k(y_m) . dy) dy / |dy|^2.
+// coordinates: grad V_k(y_m) + (V_k(y_{n+1}) - V_k(y_n) - grad V_k(y_m) . dy) dy / |dy|^2
+// (for the quadratic terms, their midpoint gradient), and F = -f(t_{n+1/2}) dPi(x_m).
 // Then dV = grad_d V . dx exactly, and because c is quadratic G(x_m) dx = c(x_{n+1}) -
 // c(x_n) = 0: the constraint forces do no work, and T + V - W is conserved to the Newton
-// tolerance for any dt (W summed as F f(t_{n+1/2}) . dx, the scheme's own work). Second
+// tolerance for any dt (W summed as F . dx, the scheme's own work). Second
 // order. Newton on (x_{n+1}, lambda) with the exact Jacobian (the discrete gradient's
 // included): quadratic convergence. Damping is not offered (the scheme's point is the
 // undamped balance; use newmark).

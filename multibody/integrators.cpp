@@ -46,7 +46,7 @@ struct RefreshPolicy {
 /// The constraints at the state q, and Gdot v. O(n).
 Vector constraints(const Problem& p, const Vector& q) {
   const int nc = p.chain.dofs();
-  return p.terms ? p.terms->constraints(q.head(nc)).g : p.chain.constraints(q.head(nc));
+  return constraint_values(p.chain, p.terms, q.head(nc));
 }
 Vector jdot_qdot(const Problem& p, const Vector& q, const Vector& v) {
   const int nc = p.chain.dofs();

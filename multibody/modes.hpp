@@ -24,7 +24,8 @@
 // of <= 6 unknowns (shifted_solve.hpp). The eigenpairs come either from the eigen layer
 // (modal/lanczos.hpp: Spectra's shift-invert Lanczos with that solve as the operator and
 // M as B) or from the hand-written Lanczos of lanczos.hpp; kDefaultSparseEigensolver says
-// which one runs by default and multibody/README.md why (measured side by side). The
+// which one runs by default and multibody/README.md why (measured side by side in
+// docs/measured.md, "Time and memory, 23 modes"). The
 // orthonormal basis D (Householder of J^T) is never applied: the residuals' norms are
 // those of the projections onto the null space of J (modes.cpp), and the result is the
 // chain-coordinate shapes dq. Cost: O(n) per Lanczos step, ~50 steps for 23 modes at every n, plus
@@ -51,7 +52,7 @@
 // the oracles. ModalSolution::backward_error (normwise,
 // ||r|| / ((||K0|| + w^2 ||M0||) ||x||)) is the measure that says whether the eigensolver
 // did its job; the tests bound it. Measured values of both, per path and n:
-// multibody/README.md.
+// docs/measured.md, "Residuals".
 //
 // ## Rigid modes
 // The eigen layer's rule (modal/modes.hpp): omega^2 < modal::kRigidThreshold * s is a

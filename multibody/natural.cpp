@@ -12,7 +12,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 double Natural::radius() const { return n * l / (2.0 * kPi); }
 
-Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d& F) {
+Natural make_natural(const Chain& chain, const std::vector<int>& pins) {
   Natural c;
   c.n = chain.n();
   c.l = chain.l();
@@ -27,16 +27,15 @@ Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d&
     const Eigen::Vector2d d = (chain.hinge_rest(*r) - c.pin).normalized();
     c.nu = Eigen::Vector2d(-d.y(), d.x());
   }
-  c.load = chain.hinge_at(load_deg);
-  c.F = F;
+  c.pins = pins;
+  for (int h : pins) c.pinned_at.push_back(chain.hinge_rest(h));
   return c;
 }
 
-Natural make_natural(const Chain& chain, const detail::Attachments& terms) {
-  Natural c = make_natural(chain, chain.anchor_deg(), Eigen::Vector2d::Zero());
-  c.pins = terms.pinned_hinges();
-  for (int h : c.pins) c.pinned_at.push_back(chain.hinge_rest(h));
-  return c;
+Eigen::Vector2d rest_link(const Chain& chain, int k) {
+  const int n = chain.n();
+  k = (k + n) % n;
+  return (chain.hinge_rest((k + 1) % n) - chain.hinge_rest(k)).normalized();
 }
 
 Vec rest(const Chain& chain) {
@@ -223,13 +222,6 @@ namespace {
 void add_angle_spring(const Natural& c, int at, double k, const Turn& t, double t0, Vec& force, BandedKkt& kkt) {
   const double d = t.theta - t0;
   add_spring(c, at, k * d * t.d, k * (t.d * t.d.transpose() + d * t.dd), force, kkt);
-}
-
-/// The rest direction of link k (cyclic), from hinge k to k + 1.
-Eigen::Vector2d rest_link(const Chain& chain, int k) {
-  const int n = chain.n();
-  k = (k + n) % n;
-  return (chain.hinge_rest((k + 1) % n) - chain.hinge_rest(k)).normalized();
 }
 
 }  // namespace

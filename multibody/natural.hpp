@@ -33,8 +33,6 @@ struct Natural {
   Eigen::Vector2d pin, nu;  ///< pin position; unit normal of the roller's line
   bool pinned = true;       ///< hinge 0 pinned (2 rows after the links'); false: a free ring
   int roller = -1;
-  int load = 0;             ///< loaded hinge
-  Eigen::Vector2d F;        ///< the dead force, N
   /// Further pinned hinges and their rest positions (attachments.hpp): 2 rows each, after
   /// the roller's, from pins_row().
   std::vector<int> pins;
@@ -47,10 +45,9 @@ struct Natural {
   double radius() const;
 };
 
-/// The natural model of `chain` with a dead force F at the hinge at `load_deg`.
-Natural make_natural(const Chain& chain, double load_deg, const Eigen::Vector2d& F);
-/// The unloaded natural model of `chain` with the further pins of `terms` (attachments.hpp).
-Natural make_natural(const Chain& chain, const detail::Attachments& terms);
+/// The natural model of `chain` with further pins at hinges `pins` (attachments.hpp,
+/// pinned_hinges; the loads are detail::Loading's). O(n).
+Natural make_natural(const Chain& chain, const std::vector<int>& pins = {});
 /// The rest positions (x_0, y_0, ..., x_{n-1}, y_{n-1}).
 Vec rest(const Chain& chain);
 
@@ -69,6 +66,9 @@ Turn turn(const Vec6& y, bool hessian = true);
 /// b = y_2 - y_1), in (-pi, pi]; its gradient and, if `hessian`, its Hessian in y. The
 /// hinge's rotation that kr and a clamp act on (attachments.hpp).
 Turn mean_rotation(const Vec6& y, const Eigen::Vector2d& ea, const Eigen::Vector2d& eb, bool hessian = true);
+/// The rest direction of link k (cyclic: k = -1 is link n - 1), from hinge k to k + 1: the
+/// directions mean_rotation measures from. O(1).
+Eigen::Vector2d rest_link(const Chain& chain, int k);
 /// The turning angle alone (the same value as turn(y).theta).
 double turn_angle(const Vec6& y);
 /// The six coordinates of hinge k and its neighbours.

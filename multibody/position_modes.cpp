@@ -11,7 +11,7 @@ namespace multibody::natural {
 ShiftedKkt::ShiftedKkt(const Chain& chain, const detail::Attachments& terms)
     : chain_(chain),
       terms_(terms),
-      c_(make_natural(chain, terms)),
+      c_(make_natural(chain, terms.pinned_hinges())),
       N_(2 * c_.n),
       kappa_(c_.K / (c_.l * c_.l)),
       kkt_(c_),
@@ -32,14 +32,13 @@ void ShiftedKkt::set_shift(double sigma) {
   add_stiffness(chain_, c_, terms_, x, force, kkt_);
   add_mass(c_, -sigma, kkt_);
   for (int k = 0; k < c_.n; ++k)
-    if (const Eigen::Matrix2d& m = terms_.hinge_mass(k); !m.isZero()) {
-      const int dofs[2] = {2 * k, 2 * k + 1};
-      kkt_.add(dofs, Eigen::Matrix2d(-sigma * m));
-    }
+    if (const double m = terms_.hinge_mass(k); m > 0.0)
+      for (int a = 0; a < 2; ++a) kkt_.add(2 * k + a, 2 * k + a, -sigma * m);
   add_constraint_jacobian(c_, x, N_, true, kappa_, kkt_, nullptr, nullptr);
   add_constraint_jacobian(c_, x, N_, false, kappa_, kkt_, nullptr, nullptr);
   sigma_ = sigma;
-  for (int k = 0; k < c_.n; ++k) B_[k] = terms_.hinge_stiffness(k) - sigma * terms_.hinge_mass(k);
+  for (int k = 0; k < c_.n; ++k)
+    B_[k] = terms_.hinge_stiffness(k) - sigma * terms_.hinge_mass(k) * Eigen::Matrix2d::Identity();
   if (!kkt_.factor())
     throw ring::NumericalError("multibody: K - sigma M in hinge positions is singular (sigma = " +
                                std::to_string(sigma) + ", n = " + std::to_string(c_.n) + ")");
@@ -113,7 +112,7 @@ void ShiftedKkt::subtract_product(const Vec& y, const Vec& mu, Vec& r_x, Vec& r_
 
 PositionMass::PositionMass(const Natural& c, const detail::Attachments& terms) : c_(c) {
   for (int k = 0; k < c.n; ++k)
-    if (const double m = terms.hinge_mass(k)(0, 0); m > 0.0) masses_.emplace_back(k, m);
+    if (const double m = terms.hinge_mass(k); m > 0.0) masses_.emplace_back(k, m);
 }
 
 void PositionMass::perform_op(const double* x_in, double* y_out) const {

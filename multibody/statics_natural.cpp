@@ -27,7 +27,7 @@ class PositionStatics : public detail::StaticEquilibrium {
       : StaticEquilibrium(chain, depth),
         terms_(chain, spec),
         loads_(chain, spec, loads, "static"),
-        c_(make_natural(chain, terms_)),
+        c_(make_natural(chain, terms_.pinned_hinges())),
         N_(2 * c_.n),
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),

@@ -20,6 +20,7 @@
 #include "calculix/modes.hpp"
 #include "calculix/statics.hpp"
 #include "ring/closed_form.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -27,18 +28,6 @@ namespace {
   if (calculix::find_ccx().empty()) GTEST_SKIP() << "ccx is not on the PATH (Debian package calculix-ccx; " \
                                                     "scripts/install-deps.sh installs it)"
 
-/// scenes/tyre-ring.toml: a steel-cord belt on a radial and tangential foundation.
-ring::RingSpec tyre_belt() {
-  ring::RingSpec r;
-  r.radius = 0.3;
-  r.E = 2.0e10;
-  r.rho = 1600.0;
-  r.section.shape = ring::Section::Shape::rectangle;
-  r.section.width = 0.15;
-  r.section.height = 0.008;
-  r.foundation = {1.0e6, 3.0e5};
-  return r;
-}
 
 /// The lowest in-plane frequencies (rad/s) of a free, extensible Timoshenko ring on a
 /// Winkler foundation, every k >= 1 twice. For u = U sin k t, w = W cos k t, psi = P sin k t
@@ -88,7 +77,7 @@ std::vector<double> timoshenko_ring_on_foundation(const ring::RingSpec& r, int c
 
 TEST(CalculixTerms, FreeRingOnAFoundationMatchesTheTimoshenkoClosedForm) {
   REQUIRE_CCX();
-  const ring::RingSpec r = tyre_belt();
+  const ring::RingSpec r = ringtest::tyre_ring();
   ring::CalculixOptions o;
   o.elements = 160;
   const ring::ModalResult m = calculix::compute_modes(r, o, 13);
@@ -118,7 +107,7 @@ class CalculixFoundationOrder : public ::testing::TestWithParam<FoundationOrderC
 TEST_P(CalculixFoundationOrder, ObservedOrder) {
   REQUIRE_CCX();
   const FoundationOrderCase c = GetParam();
-  const ring::RingSpec r = tyre_belt();
+  const ring::RingSpec r = ringtest::tyre_ring();
   std::vector<double> w;
   for (int n = c.coarse; n <= 4 * c.coarse; n *= 2) {
     ring::CalculixOptions o;
@@ -158,7 +147,7 @@ TEST_P(CalculixFoundationWeight, IsotropicFoundationCarriesTheWeightByATranslati
   // the uniform weight rho A g per unit length meets k u at every point when the ring
   // translates by u = rho A g / k, unstrained; statics with NLGEOM.
   const WeightCase c = GetParam();
-  ring::RingSpec r = tyre_belt();
+  ring::RingSpec r = ringtest::tyre_ring();
   r.foundation = {1.0e6, 1.0e6};
   ring::StaticOptions st;
   st.loads.gravity = {0.0, -9.81};

@@ -15,6 +15,7 @@
 
 #include "cli.hpp"
 #include "ring/closed_form.hpp"
+#include "support/paper.hpp"
 #include "ring/spec.hpp"
 #include "support/close.hpp"
 
@@ -29,19 +30,6 @@ nlohmann::json table(const std::string& scene, const std::string& sets = "") {
   return nlohmann::json::parse(r.out);
 }
 
-/// The tyre scene's ring (scenes/tyre-ring.toml).
-ring::RingSpec tyre() {
-  ring::RingSpec s;
-  s.radius = 0.3;
-  s.E = 2.0e10;
-  s.rho = 1600.0;
-  s.section.shape = ring::Section::Shape::rectangle;
-  s.section.width = 0.15;
-  s.section.height = 0.008;
-  s.foundation.radial = 1.0e6;
-  s.foundation.tangential = 3.0e5;
-  return s;
-}
 
 // The flexible-ring tyre model: the reference is the extensible ring on the foundation, whose
 // frequencies the 2 x 2 Fourier problem gives exactly (closed_form::free_ring_extensible with
@@ -53,8 +41,8 @@ TEST(BeyondPaper, TyreRingReferenceIsTheClosedFormAndEveryColumnConverges) {
       table("scenes/tyre-ring.toml", sets + " --set multibody.n=160 --set lumped.n=160 --set fem.elements=80");
   const auto& rows = coarse["rows"];
   ASSERT_EQ(rows.size(), 15u);
-  std::vector<double> exact{ring::closed_form::free_ring_extensible(tyre(), 0)[0]};
-  for (int k = 1; exact.size() < 15; ++k) exact.insert(exact.end(), 2, ring::closed_form::free_ring_extensible(tyre(), k)[0]);
+  std::vector<double> exact{ring::closed_form::free_ring_extensible(ringtest::tyre_ring(), 0)[0]};
+  for (int k = 1; exact.size() < 15; ++k) exact.insert(exact.end(), 2, ring::closed_form::free_ring_extensible(ringtest::tyre_ring(), k)[0]);
   auto error = [](const nlohmann::json& t, std::size_t i, const std::string& solver) {
     EXPECT_GT(t["rows"][i][solver + "_mac"].get<double>(), 0.99) << solver << " mode " << i + 1;
     return std::abs(t["rows"][i][solver + "_error_pct"].get<double>());

@@ -106,7 +106,7 @@ namespace {
 
 // The shipped scene, each kind of pressure: the converged FE reference is the extensible
 // ring's, above the inextensible closed form by 5 to 9 I/(A R^2) = 9e-6 (measured:
-// fem_reference/README.md, linear buckling), so within 12 I/(A R^2); the chains at n = 80
+// docs/measured.md, "fem_reference: linear buckling"), so within 12 I/(A R^2); the chains at n = 80
 // within their O(1/n^2) error of it (measured 0.11 to 0.21 %: 0.25 % bound), the FE column
 // (40 cubic elements, order 2(p - 1) = 4) within 0.02 % of its reference (measured 0.00 %).
 // Dead pressure's second factor is Levy's 4 EI/R^3 (the shape in phase with the pin).

@@ -80,7 +80,8 @@ TEST(IntegratorNames, LumpedChainRunsMidpointAndItDoesNotConserveEnergy) {
 
 TEST(IntegratorNames, EnergyMomentumConservesWhereItIsOffered) {
   // The multibody chain's discrete gradient: the balance to the Newton tolerance for any
-  // dt (multibody/README.md: 3.2e-13 of the work at n = 10^4); 1e-9 leaves room for n = 40.
+  // dt (docs/measured.md, "1000 steps, every integrator": 3.2e-13 of the work at n = 10^4);
+  // 1e-9 leaves room for n = 40.
   const auto r = ringvib("respond " + source(kForced) +
                          " --solver multibody --set response.t_end=1.0 --set response.integrator=energy-momentum");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -36,7 +36,8 @@ ring::FemOptions fem_options() {
 }
 
 // Each kind at 1.5 lambda_1: a NumericalError whose bracket, under 1e-6 wide, holds 1 / 1.5
-// to the pre-buckling compression's 1e-4 (measured offsets in the README).
+// to the pre-buckling compression's 1e-4 (measured offsets: docs/measured.md, "fem_reference:
+// bifurcations and the path to contact").
 TEST(FemBifurcation, StaticsPastTheCriticalPressureEndAtTheBifurcation) {
   const ring::RingSpec spec = ringtest::pin_270_roller_90();
   const ring::FemOptions o = fem_options();

@@ -8,7 +8,8 @@
 //    strains projected onto P_{p-1} (a conforming mixed method, modes.hpp); the same fitted
 //    order and constant at depth/R = 1e-3 and 0.1 is the absence of shear (and membrane)
 //    locking. (Fully integrated, the same elements lock: at depth/R = 1e-3, p = 3, 32 cells
-//    the k = 2 error is 7.8e-3 instead of 8.6e-8; fem_reference/README.md.)
+//    the k = 2 error is 7.8e-3 instead of 8.6e-8; docs/measured.md, "fem_reference: the
+//    Timoshenko model".)
 //  - The independent Euler-Bernoulli model (C0 interior penalty, rotary inertia on) as the
 //    limit kGA -> infinity of a clamped ring with springs, a point mass and a foundation.
 #include <gtest/gtest.h>

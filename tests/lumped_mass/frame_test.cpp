@@ -261,7 +261,8 @@ TEST(LumpedFrame, UndampedEnergyBalanceIsSecondOrderInDt) {
 // follower pressure 3 EI/R^3 of a ring on a pin and a roller
 // (ring::closed_form::pinned_ring_critical_pressure) on a thin ring (depth/R = 1e-2, where
 // shear and the prebuckling shortening move it by ~1e-4) at n = 80. Bound 1 %: the frame's
-// O(h^2) (the chain's buckling error is 2e-3 at n = 80, README) with room.
+// O(h^2) (the chain's buckling error is 2e-3 at n = 80; docs/measured.md, "lumped_mass: linear
+// buckling") with room.
 TEST(LumpedFrame, FollowerPressureBeyondCriticalEndsAtTheBifurcation) {
   ring::RingSpec spec = ringtest::thick_ring(ring::Section::Shape::rectangle, 0.01);
   spec.supports.pin = 180.0;

@@ -11,7 +11,8 @@
 //  - the condensation identity: chi without inertia is the statics' condensed kr, so J -> 0
 //    gives the response without chi (the one with J = 0).
 // The ring: the paper's, pinned at 180 deg, a roller at 0 deg, a point inertia J = 5000 kg m^2
-// (the README's study: it moves mode 5 of the pinned ring by several per cent) with a
+// (the study in docs/measured.md, "lumped_mass: terms beyond the paper": it moves mode 5 of
+// the pinned ring by several per cent) with a
 // rotational spring kr at 270 deg.
 #include <gtest/gtest.h>
 
@@ -100,7 +101,8 @@ std::string list(const std::vector<double>& v) {
 // error then is the same to O(l^2) at every n and leaves the differences). e_n = the largest
 // difference of the recorded histories between n and 2n over the largest displacement; a
 // scheme of order p has e_n / e_2n -> 2^p. F = 2 N: u/R ~ 4e-6, nearly linear.
-// Measured with J on the chord rotation (condensed, before): see the README; with chi: order
+// Measured with J on the chord rotation (condensed, before): see docs/measured.md, "lumped_mass:
+// a point inertia in the chain's response"; with chi: order
 // 2. Bound: the fitted order within 0.25 of 2 (three differences; the next term of an order-2
 // scheme is O(l^4), a quarter of the leading one at n = 40 at most), and an order 1 scheme
 // would fail it.
@@ -134,7 +136,7 @@ TEST(LumpedInertia, PulseResponseConvergesAtOrderTwoInTheLinkLength) {
 // recorded component on those 76 functions leaves a residual from the nonlinear terms,
 // O(u/l) ~ 2e-6 of the signal (u ~ 4e-6 m at F = 0.2 N, l = 1.57 m), and from the Newton
 // tolerance, 1e-11 R = 1e-10 m against u: ~3e-5 at most (measured 2.7e-7); a frequency off by
-// delta leaves ~delta t of the mode's share (the condensed inertia, README). Bound 1e-4.
+// delta leaves ~delta t of the mode's share (the condensed inertia, docs/measured.md). Bound 1e-4.
 TEST(LumpedInertia, SmallFreeVibrationCarriesTheLinearModesFrequencies) {
   const ring::RingSpec s = ring_with_inertia(kJ);
   const int n = 40;

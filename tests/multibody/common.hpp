@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ring/analysis.hpp"
+#include "ring/closed_form.hpp"
 #include "ring/results.hpp"
 #include "ring/spec.hpp"
 #include "support/paper.hpp"
@@ -43,6 +44,33 @@ inline double loglog_slope(const std::vector<double>& x, const std::vector<doubl
     sxy += lx * ly;
   }
   return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+/// Options of an n-segment chain on the path `method`, every other option at its default.
+inline ring::MultibodyOptions chain_options(int n, ring::MultibodyOptions::Method method) {
+  ring::MultibodyOptions o;
+  o.n = n;
+  o.method = method;
+  return o;
+}
+
+/// The free ring on a Winkler foundation where bending and the foundation both matter in the
+/// lowest modes (k_r = 500 N/m^2, about 2.3 EI/R^4; k_t = 300 N/m^2).
+inline ring::RingSpec on_foundation() {
+  ring::RingSpec s = ringtest::free_ring();
+  s.foundation.radial = 500.0;
+  s.foundation.tangential = 300.0;
+  return s;
+}
+
+/// Closed-form frequencies of the free inextensible ring on a foundation
+/// (ring::closed_form::ring_on_foundation_inextensional), k = 0 once and each k >= 1 twice, ascending.
+inline std::vector<double> foundation_spectrum(const ring::RingSpec& spec, int count) {
+  std::vector<double> w{ring::closed_form::ring_on_foundation_inextensional(spec, 0)};
+  for (int k = 1; static_cast<int>(w.size()) < count; ++k)
+    w.insert(w.end(), 2, ring::closed_form::ring_on_foundation_inextensional(spec, k));
+  w.resize(count);
+  return w;
 }
 
 /// Options of an n-segment chain, every other option at its default.

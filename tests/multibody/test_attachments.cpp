@@ -19,6 +19,8 @@
 
 namespace {
 
+using mbtest::foundation_spectrum;
+using mbtest::on_foundation;
 using ringtest::IsClose;
 
 ring::ModalResult modes(const ring::RingSpec& spec, int n, int count, bool rotary_inertia = false) {
@@ -28,21 +30,7 @@ ring::ModalResult modes(const ring::RingSpec& spec, int n, int count, bool rotar
   return multibody::compute_modes(spec, o, count);
 }
 
-/// Closed-form frequencies of the free ring on a foundation, each k >= 1 twice, ascending.
-std::vector<double> foundation_spectrum(const ring::RingSpec& spec, int count) {
-  std::vector<double> w{ring::closed_form::ring_on_foundation_inextensional(spec, 0)};
-  for (int k = 1; static_cast<int>(w.size()) < count; ++k)
-    w.insert(w.end(), 2, ring::closed_form::ring_on_foundation_inextensional(spec, k));
-  w.resize(count);
-  return w;
-}
 
-ring::RingSpec on_foundation() {
-  ring::RingSpec s = ringtest::free_ring();
-  s.foundation.radial = 500.0;      // N/m^2, about 2.3 EI/R^4: foundation and bending
-  s.foundation.tangential = 300.0;  // both matter in the lowest modes
-  return s;
-}
 
 // The chain converges to the inextensible ring at order 2 in 1/n (README): with the
 // foundation lumped at the hinges it must still do so, toward the closed form.

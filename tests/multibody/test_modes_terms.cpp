@@ -22,32 +22,15 @@
 
 namespace {
 
+using mbtest::chain_options;
+using mbtest::foundation_spectrum;
+using mbtest::on_foundation;
 using Method = ring::MultibodyOptions::Method;
-
-ring::MultibodyOptions chain_options(int n, Method method) {
-  ring::MultibodyOptions o;
-  o.n = n;
-  o.method = method;
-  return o;
-}
 
 struct TermScene {
   std::string name;
   ring::RingSpec spec;
 };
-
-/// scenes/tyre-ring.toml: the belt on its radial and tangential foundation, no support.
-ring::RingSpec tyre() {
-  ring::RingSpec s;
-  s.radius = 0.3;
-  s.E = 2.0e10;
-  s.rho = 1600.0;
-  s.section.shape = ring::Section::Shape::rectangle;
-  s.section.width = 0.15;
-  s.section.height = 0.008;
-  s.foundation = {1.0e6, 3.0e5};
-  return s;
-}
 
 /// One scene per term, at EI/R^4-scaled stiffnesses where bending and the term both count.
 /// Every point is a multiple of 18 deg from the pin at 180: a hinge for n = 40, 120, 300.
@@ -86,7 +69,7 @@ std::vector<TermScene> scenes() {
     s.spec.foundation = {20.0 * EI_R4, 5.0 * EI_R4};
     out.push_back(s);
   }
-  out.push_back({"free ring on a foundation (tyre)", tyre()});
+  out.push_back({"free ring on a foundation (tyre)", ringtest::tyre_ring()});
   return out;
 }
 
@@ -134,22 +117,6 @@ TEST_P(DenseVsBanded, EveryTermGivesTheDensePathsModes) {
 
 INSTANTIATE_TEST_SUITE_P(Segments, DenseVsBanded, ::testing::Values(40, 120, 300));
 
-/// The free ring on a foundation (bending and foundation both count in the lowest modes).
-ring::RingSpec on_foundation() {
-  ring::RingSpec s = ringtest::free_ring();
-  s.foundation.radial = 500.0;      // N/m^2, about 2.3 EI/R^4
-  s.foundation.tangential = 300.0;
-  return s;
-}
-
-/// Closed-form frequencies of the free ring on a foundation, each k >= 1 twice, ascending.
-std::vector<double> foundation_spectrum(const ring::RingSpec& spec, int count) {
-  std::vector<double> w{ring::closed_form::ring_on_foundation_inextensional(spec, 0)};
-  for (int k = 1; static_cast<int>(w.size()) < count; ++k)
-    w.insert(w.end(), 2, ring::closed_form::ring_on_foundation_inextensional(spec, k));
-  w.resize(count);
-  return w;
-}
 
 // Where the dense path cannot go: n = 2000 .. 16000 on the O(n) path alone, against
 // ring::closed_form::ring_on_foundation_inextensional. The chain converges at order 2 in
@@ -198,7 +165,7 @@ TEST(MultibodyModesTerms, AutoTakesTheTermsFromTheCrossover) {
   ring::RingSpec inertia = ringtest::pin_roller_ring();
   inertia.masses = {{90.0, 10.0, 0.0}, {270.0, 10.0, 1e-3}};
   EXPECT_EQ(multibody::backend(chain_options(10000, Method::automatic), inertia, 10), Backend::dense);
-  ring::RingSpec thick = tyre();
+  ring::RingSpec thick = ringtest::tyre_ring();
   thick.theory = ring::Theory::timoshenko;
   EXPECT_EQ(multibody::backend(chain_options(10000, Method::automatic), thick, 10), Backend::dense);
 }
@@ -226,11 +193,11 @@ TEST(MultibodyModesTerms, ForcedSparseRefusesAPointInertia) {
 // paper's ring keeps its angle path at any n.
 TEST(MultibodyModesTerms, RefusesTheTermsBeyondItsPrecisionLimit) {
   const int most = multibody::kPositionModesMaxN;
-  ASSERT_EQ(multibody::backend(chain_options(most + 2, Method::automatic), tyre(), 15), multibody::Backend::banded);
-  EXPECT_NO_THROW(multibody::check_modes(tyre(), chain_options(most, Method::sparse)));
+  ASSERT_EQ(multibody::backend(chain_options(most + 2, Method::automatic), ringtest::tyre_ring(), 15), multibody::Backend::banded);
+  EXPECT_NO_THROW(multibody::check_modes(ringtest::tyre_ring(), chain_options(most, Method::sparse)));
   for (Method m : {Method::sparse, Method::automatic}) {
     try {
-      multibody::check_modes(tyre(), chain_options(most + 2, m));
+      multibody::check_modes(ringtest::tyre_ring(), chain_options(most + 2, m));
       ADD_FAILURE() << "the O(n) modes took the terms beyond n = " << most;
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find("multibody.n = " + std::to_string(most)), std::string::npos) << e.what();

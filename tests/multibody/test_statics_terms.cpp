@@ -19,15 +19,10 @@
 
 namespace {
 
+using mbtest::chain_options;
 using Method = ring::MultibodyOptions::Method;
 using Kind = ring::Pressure::Kind;
 
-ring::MultibodyOptions chain_options(int n, Method method) {
-  ring::MultibodyOptions o;
-  o.n = n;
-  o.method = method;
-  return o;
-}
 
 /// A scene: the ring with its terms and the statics with its loads.
 struct Scene {

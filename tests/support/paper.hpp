@@ -61,6 +61,18 @@ inline ring::StaticOptions collapse_statics() {
   return st;
 }
 
+/// The ring of scenes/tyre-ring.toml: a steel-cord belt on a radial and tangential Winkler
+/// foundation, no support (the foundation holds every rigid motion).
+inline ring::RingSpec tyre_ring() {
+  ring::RingSpec s;
+  s.radius = 0.3;                                                    // m
+  s.E = 2.0e10;                                                      // Pa, the steel-cord belt
+  s.rho = 1600.0;                                                    // kg/m^3
+  s.section = {ring::Section::Shape::rectangle, 0.0, 0.15, 0.008};  // width, height (m)
+  s.foundation = {1.0e6, 3.0e5};                                     // N/m^2, radial and tangential
+  return s;
+}
+
 #ifdef RINGVIB_SOURCE_DIR  // defined for the test programs
 /// The text of a file of the source tree (scenes, data), e.g. "scenes/paper1990.toml".
 inline std::string source_text(const std::string& relative) {
