@@ -256,7 +256,7 @@ ring::TimeHistory frame_respond(const ring::RingSpec& spec, const ring::LumpedOp
   const int N = 3 * f.n;
   // Rayleigh damping C = a M + b K0, K0 the Hessian of the elements and terms at rest (the
   // linear frame's stiffness).
-  FrameStepper stepper(f, r, spec.radius, loads, detail::rayleigh_damping(r, f.M, frame_energy(f, f.rest, 1.0).hess),
+  FrameStepper stepper(f, r, spec.radius, loads, detail::rayleigh_damping(r, f.M, [&] { return frame_energy(f, f.rest, 1.0).hess; }),
                        rec);
   ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, f.n, r,
                                                    "lumped response (" + ring::to_string(options.variant) + ")",

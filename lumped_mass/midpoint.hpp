@@ -96,15 +96,16 @@ class MidpointStepper : public paths::Stepper {
 };
 
 /// Rayleigh damping C = a M + b K0 on the unknowns (`r`'s rayleigh_mass and
-/// rayleigh_stiffness), K0 from the Hessian triplets of the springs and terms at rest; empty
-/// when both are zero. O(nonzeros).
-template <class Triplets>
+/// rayleigh_stiffness), K0 from the Hessian triplets of the springs and terms at rest that
+/// `k0()` returns: called only when a coefficient is not zero (C is empty then). O(nonzeros).
+template <class RestHessian>
 Eigen::SparseMatrix<double> rayleigh_damping(const ring::ResponseOptions& r, const Eigen::SparseMatrix<double>& M,
-                                             const Triplets& k0) {
+                                             const RestHessian& k0) {
   Eigen::SparseMatrix<double> C(M.rows(), M.cols());
   if (r.rayleigh_mass > 0 || r.rayleigh_stiffness > 0) {
+    const auto triplets = k0();
     Eigen::SparseMatrix<double> K0(M.rows(), M.cols());
-    K0.setFromTriplets(k0.begin(), k0.end());
+    K0.setFromTriplets(triplets.begin(), triplets.end());
     C = r.rayleigh_mass * M + r.rayleigh_stiffness * K0;
   }
   return C;

@@ -492,7 +492,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const Sparse Mq = mass_matrix(c, HingeRotations::unknowns);
   // Rayleigh damping C = a M + b K0, M the mass on q, K0 the Hessian of the springs and terms
   // at rest (no link forces there), the hinge rotations' split springs included.
-  ChainStepper stepper(c, r, spec.radius, loads, Mq, detail::rayleigh_damping(r, Mq, springs(c, rest, 1.0).hess), rec,
+  ChainStepper stepper(c, r, spec.radius, loads, Mq, detail::rayleigh_damping(r, Mq, [&] { return springs(c, rest, 1.0).hess; }), rec,
                        rest);
   ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, c.n, r, "lumped response", Q + R);
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

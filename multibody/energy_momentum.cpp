@@ -44,7 +44,6 @@ class Terms {
   Terms(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads)
       : chain_(chain), attached_(chain, spec), loading_(chain, spec, loads, "response") {
     for (int k = 0; k < chain.n(); ++k) {
-      if (attached_.hinge_mass(k) > 0.0) masses_.push_back(k);
       if (!attached_.hinge_stiffness(k).isZero()) springs_.push_back(k);
       if (attached_.rotation_stiffness(k) > 0.0) rotations_.push_back(k);
     }
@@ -53,15 +52,6 @@ class Terms {
   }
   const detail::Attachments& attached() const { return attached_; }
 
-  /// Adds c times the point masses to M x (rx) and to the KKT matrix's diagonal. O(masses).
-  void add_mass(double c, const Vec& x, Vec& rx, BandedKkt* kkt) const {
-    for (int k : masses_) {
-      const double m = c * attached_.hinge_mass(k);
-      rx.segment<2>(2 * k) += m * x.segment<2>(2 * k);
-      if (kkt)
-        for (int a = 0; a < 2; ++a) kkt->add(2 * k + a, 2 * k + a, m);
-    }
-  }
   /// The mean rotation of hinge k's links from rest (kr's and the clamp's angle).
   Turn rotation(int k, const Vec6& y, bool hessian) const {
     return mean_rotation(y, rest_link(chain_, k - 1), rest_link(chain_, k), hessian);
@@ -70,11 +60,7 @@ class Terms {
   /// The quadratic terms' discrete gradient, B_k (u_k at the midpoint) (exact for a quadratic
   /// energy), with its Jacobian in x1, B_k / 2. O(springs).
   void add_springs(const Vec& xm, Vec& rx, BandedKkt& kkt) const {
-    for (int k : springs_) {
-      rx.segment<2>(2 * k) += attached_.hinge_force(k, hinge(xm, k));
-      const int dofs[2] = {2 * k, 2 * k + 1};
-      kkt.add(dofs, Eigen::Matrix2d(0.5 * attached_.hinge_stiffness(k)));
-    }
+    for (int k : springs_) add_hinge_spring(attached_, k, xm, 0.5, rx, kkt);
   }
   /// The energy of the foundation, the springs and kr at x, J. O(n).
   double energy(const Natural& c, const Vec& x) const {
@@ -117,7 +103,7 @@ class Terms {
   const Chain& chain_;
   const detail::Attachments attached_;
   const detail::Loading loading_;
-  std::vector<int> masses_, springs_, rotations_;  ///< hinges with such a term
+  std::vector<int> springs_, rotations_;  ///< hinges with such a term
   mutable Eigen::Matrix2Xd g_;  ///< the last hinge gradients (constant ones: computed once)
 };
 
@@ -188,7 +174,7 @@ Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, do
     work.w = x1 - x0 - h * v0;
     mass_times(c, work.w, rx);
     rx *= cm;
-    terms.add_mass(cm, work.w, rx, &kkt);
+    add_point_masses(c, terms.attached(), cm, work.w, &rx, &kkt);
     terms.add_loads(xm, f, rx, &kkt);
     add_mass(c, cm, kkt);
     // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = 1/2 sum lambda_i Hess c_i.
@@ -261,7 +247,7 @@ class EnergyMomentumStepper : public paths::Stepper {
       out.uy.push_back(u.y());
     }
     Vec mv = mass_times(c_, v_);
-    terms_.add_mass(1.0, v_, mv, nullptr);
+    add_point_masses(c_, terms_.attached(), 1.0, v_, &mv, nullptr);
     out.kinetic = 0.5 * v_.dot(mv);
     out.strain = spring_energy(c_, x_) + terms_.energy(c_, x_);
     out.work = work_;

@@ -234,13 +234,27 @@ void add_stiffness(const Chain& chain, const Natural& c, const detail::Attachmen
     // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
     if (const double kr = terms.rotation_stiffness(k); kr > 0.0)
       add_angle_spring(c, k, kr, mean_rotation(y, rest_link(chain, k - 1), rest_link(chain, k)), 0.0, force, kkt);
-    // The foundation and the translational springs (attachments.hpp).
-    const Eigen::Matrix2d& B = terms.hinge_stiffness(k);
-    if (!B.isZero()) {
-      force.segment<2>(2 * k) += terms.hinge_force(k, hinge(x, k));
-      const int dofs[2] = {2 * k, 2 * k + 1};
-      kkt.add(dofs, B);
-    }
+    add_hinge_spring(terms, k, x, 1.0, force, kkt);
+  }
+}
+
+void add_hinge_spring(const detail::Attachments& terms, int k, const Vec& x, double weight, Vec& force,
+                      BandedKkt& kkt) {
+  const Eigen::Matrix2d& B = terms.hinge_stiffness(k);
+  if (B.isZero()) return;
+  force.segment<2>(2 * k) += terms.hinge_force(k, hinge(x, k));
+  const int dofs[2] = {2 * k, 2 * k + 1};
+  kkt.add(dofs, Eigen::Matrix2d(weight * B));
+}
+
+void add_point_masses(const Natural& c, const detail::Attachments& terms, double scale, const Eigen::Ref<const Vec>& x, Vec* mx,
+                      BandedKkt* kkt) {
+  for (int k = 0; k < c.n; ++k) {
+    const double m = scale * terms.hinge_mass(k);
+    if (m == 0.0) continue;
+    if (mx) mx->segment<2>(2 * k) += m * x.segment<2>(2 * k);
+    if (kkt)
+      for (int a = 0; a < 2; ++a) kkt->add(2 * k + a, 2 * k + a, m);
   }
 }
 

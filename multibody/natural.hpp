@@ -139,6 +139,17 @@ void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, B
 void add_constraint_curvature(const Natural& c, const Vec& lambda, double weight, BandedKkt& kkt);
 /// Adds `scale` times the constant bar mass matrix (mass_times's) to the KKT matrix. O(n).
 void add_mass(const Natural& c, double scale, BandedKkt& kkt);
+/// Adds `scale` times the point masses (attachments.hpp) to M x (`mx`, when not null; `x`
+/// is read only then) and to the KKT matrix's diagonal (when not null): the one place the
+/// energy-momentum scheme's constant mass and the modes' pencil take them. O(n).
+void add_point_masses(const Natural& c, const detail::Attachments& terms, double scale, const Eigen::Ref<const Vec>& x, Vec* mx,
+                      BandedKkt* kkt);
+/// Adds hinge k's quadratic terms (the foundation and the translational springs,
+/// attachments.hpp: u_k^T B_k u_k / 2) at hinge positions x: their force B_k u_k to `force`
+/// and `weight` B_k to the KKT matrix (the energy-momentum scheme's Jacobian at the
+/// midpoint takes 1/2). Nothing where B_k = 0. O(1).
+void add_hinge_spring(const detail::Attachments& terms, int k, const Vec& x, double weight, Vec& force,
+                      BandedKkt& kkt);
 /// The ring's stiffness on hinge positions, written once for the O(n) statics and the O(n)
 /// linear modes (whose K is its tangent at rest): the hinge springs on the turning angle, kr
 /// and the clamp on the mean rotation of a hinge's links, the foundation and the

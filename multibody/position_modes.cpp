@@ -31,9 +31,7 @@ void ShiftedKkt::set_shift(double sigma) {
   kkt_.clear();
   add_stiffness(chain_, c_, terms_, x, force, kkt_);
   add_mass(c_, -sigma, kkt_);
-  for (int k = 0; k < c_.n; ++k)
-    if (const double m = terms_.hinge_mass(k); m > 0.0)
-      for (int a = 0; a < 2; ++a) kkt_.add(2 * k + a, 2 * k + a, -sigma * m);
+  add_point_masses(c_, terms_, -sigma, x, nullptr, &kkt_);
   add_constraint_jacobian(c_, x, N_, true, kappa_, kkt_, nullptr, nullptr);
   add_constraint_jacobian(c_, x, N_, false, kappa_, kkt_, nullptr, nullptr);
   sigma_ = sigma;
@@ -110,16 +108,13 @@ void ShiftedKkt::subtract_product(const Vec& y, const Vec& mu, Vec& r_x, Vec& r_
   }
 }
 
-PositionMass::PositionMass(const Natural& c, const detail::Attachments& terms) : c_(c) {
-  for (int k = 0; k < c.n; ++k)
-    if (const double m = terms.hinge_mass(k); m > 0.0) masses_.emplace_back(k, m);
-}
+PositionMass::PositionMass(const Natural& c, const detail::Attachments& terms) : c_(c), terms_(terms) {}
 
 void PositionMass::perform_op(const double* x_in, double* y_out) const {
   const Eigen::Map<const Vec> x(x_in, rows());
   Vec y;
   mass_times(c_, x, y);
-  for (const auto& [k, m] : masses_) y.segment<2>(2 * k) += m * x.segment<2>(2 * k);
+  add_point_masses(c_, terms_, 1.0, x, &y, nullptr);
   Eigen::Map<Vec>(y_out, rows()) = y;
 }
 

@@ -103,7 +103,7 @@ class PositionMass {
 
  private:
   const Natural& c_;
-  std::vector<std::pair<int, double>> masses_;  ///< (hinge, mass) of the point masses
+  const detail::Attachments& terms_;
 };
 
 /// The chain coordinates (chain.hpp) of hinge displacements u (2n x k, columns as
