@@ -231,31 +231,40 @@ Vector constraint_values(const Chain& chain, const Attachments* terms, const Vec
   return g;
 }
 
-HingeInertias::HingeInertias(const Chain& chain, const Attachments& terms) : chain_(chain) {
-  const int n = chain.n(), dofs = chain.dofs();
+HingeInertias::HingeInertias(const Chain& chain, const Attachments& terms, bool shear) : chain_(chain) {
+  const int n = chain.n(), dofs = chain.dofs(), s = shear ? n : 0;
   const std::vector<HingeRotation> rotations = terms.hinge_rotations();
   for (const HingeRotation& r : rotations) p_ += r.moves();
-  H_ = Matrix::Zero(dofs + p_, dofs + p_);
+  H_ = Matrix::Zero(dofs + s + p_, dofs + s + p_);
   J_ = Vector::Zero(p_);
-  auto at = [&](int i) { return i < n ? i : dofs + i - n; };
+  // The unknowns a rotation r_i is the sum of: segment i's angle (and its shear angle, the
+  // section's rotation psi = theta + gamma), or a moving hinge's chi.
+  auto add = [&](int i, int j, double c) {
+    const int a[2] = {i < n ? i : dofs + s + i - n, i < n && shear ? dofs + i : -1};
+    const int b[2] = {j < n ? j : dofs + s + j - n, j < n && shear ? dofs + j : -1};
+    for (int x : a)
+      for (int y : b)
+        if (x >= 0 && y >= 0) H_(x, y) += c;
+  };
   auto spring = [&](int i, int j, double c) {
-    H_(at(i), at(i)) += c;
-    H_(at(j), at(j)) += c;
-    H_(at(i), at(j)) -= c;
-    H_(at(j), at(i)) -= c;
+    add(i, i, c);
+    add(j, j, c);
+    add(i, j, -c);
+    add(j, i, -c);
   };
   std::vector<std::pair<int, double>> ground;  // kr from chi to the ground: H's part beyond the springs'
   split_hinges(
       rotations, n, chain.K(), spring, [&](int i, double c) { ground.emplace_back(i, c); },
       [&](int i, double j) { J_[i - n] = j; });
   springs_ = H_;
-  for (const auto& [i, c] : ground) H_(at(i), at(i)) += c;
-  // Less kr condensed on the mean rotation, which Attachments puts at every hinge with kr.
+  for (const auto& [i, c] : ground) add(i, i, c);
+  // Less kr condensed on the mean rotation, which Attachments (and the Sections' A) puts at
+  // every hinge with kr.
   for (const HingeRotation& t : rotations)
     if (t.moves() && t.kr > 0.0) {
       const double c = condensed_rotation_stiffness(t.kr, chain.K()) / 4.0;
       for (int i : {(t.hinge + n - 1) % n, t.hinge})
-        for (int j : {(t.hinge + n - 1) % n, t.hinge}) H_(i, j) -= c;
+        for (int j : {(t.hinge + n - 1) % n, t.hinge}) add(i, j, -c);
     }
 }
 

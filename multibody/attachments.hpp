@@ -180,27 +180,37 @@ void split_hinges(const std::vector<HingeRotation>& rotations, int n, double K, 
   }
 }
 
+/// True when a point mass of `spec` has a rotary inertia (HingeInertias below). O(masses).
+inline bool has_point_inertia(const ring::RingSpec& spec) {
+  for (const ring::PointMass& m : spec.masses)
+    if (m.inertia > 0.0) return true;
+  return false;
+}
+
 /// The point inertias' hinge rotations chi as unknowns of the nonlinear response and of the
-/// modes under load (Euler-Bernoulli chain; pinned): the state is x = (q, chi), chi the
-/// hinges' rotations from rest. split_hinges' springs are quadratic in (theta, chi) with
-/// constant coefficients, so they are a constant border H of the chain's tangent, and J a
-/// constant mass on chi, as the Timoshenko chain's sections (sections.hpp). H holds the
-/// split springs minus what Chain and Attachments already put at those hinges (the hinge
-/// spring K, kr condensed on the mean rotation): condensing chi out of H gives zero, so the
-/// statics (no inertia) stay exact without chi, and the response and the modes under load
-/// border the chain's matrices with H. Memory (n + p)^2 for H (the dense path's size).
+/// modes under load (pinned): the state is x = (q, chi), chi the hinges' rotations from rest,
+/// or on the Timoshenko chain x = (q, gamma, chi) with the split springs on the sections'
+/// rotations theta + gamma (sections.hpp). split_hinges' springs are quadratic in (theta,
+/// [gamma,] chi) with constant coefficients, so they are a constant border H of the chain's
+/// tangent, and J a constant mass on chi, as the Timoshenko chain's sections. H holds the
+/// split springs minus what Chain and Attachments (or the Sections' A) already put at those
+/// hinges (the hinge spring K, kr condensed on the mean rotation): condensing chi out of H
+/// gives zero, so the statics (no inertia) stay exact without chi, and the response and the
+/// modes under load border the chain's matrices with H. Memory (n + p)^2 for H (the dense
+/// path's size).
 class HingeInertias {
  public:
-  HingeInertias(const Chain& chain, const Attachments& terms);
+  /// `shear`: on the Timoshenko chain's unknowns (q, gamma, chi) (class comment).
+  HingeInertias(const Chain& chain, const Attachments& terms, bool shear = false);
 
   /// The unknowns chi (moving hinges), p.
   int n() const { return p_; }
   /// H's energy (theta, chi)^T H (theta, chi) / 2 at x = (q, chi): the split springs less
   /// the terms they replace (class comment), J. O(n^2).
   double energy(const Vector& x) const;
-  /// Adds H (theta, chi) to r (dofs + p). O(n^2).
+  /// Adds H (theta, [gamma,] chi) to r (all unknowns). O(n^2).
   void add_forces(const Vector& x, Eigen::Ref<Vector> r) const;
-  /// Adds c times H to T ((dofs + p) square); `springs_only`: the hinge springs' part, without
+  /// Adds c times H to T (the unknowns square); `springs_only`: the hinge springs' part, without
   /// kr (the hinge dampers follow it). O(n^2).
   void add_stiffness(double c, Eigen::Ref<Matrix> T, bool springs_only = false) const;
   /// J chi'^2 / 2, J. O(p).
@@ -213,7 +223,7 @@ class HingeInertias {
   void add_mass_times(const Matrix& E, Eigen::Ref<Matrix> out) const;
 
  private:
-  /// theta = q - q0 and chi, as one vector on H's rows.
+  /// theta = q - q0, [gamma,] chi, as one vector on H's rows.
   Vector relative(const Vector& x) const;
   const Chain& chain_;
   int p_ = 0;

@@ -4,18 +4,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
 
 namespace multibody {
-namespace {
-
-bool has_point_inertia(const ring::RingSpec& spec) {
-  for (const ring::PointMass& m : spec.masses)
-    if (m.inertia > 0.0) return true;
-  return false;
-}
-
-}  // namespace
+using detail::has_point_inertia;
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
@@ -86,9 +79,6 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("modes.preload = \"static\" is computed on the dense path: set multibody.method = "
                                 "\"dense\" or \"auto\"");
-  if (spec.theory == ring::Theory::timoshenko && has_point_inertia(spec))
-    throw std::invalid_argument("multibody modes.preload = \"static\": the Timoshenko chain (ring.theory = "
-                                "\"timoshenko\") does not take point inertias (masses[].inertia > 0) yet");
 }
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
@@ -104,12 +94,8 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
           "multibody method = \"sparse\" (the O(n) response) has no Timoshenko chain (ring.theory = \"timoshenko\"): "
           "set multibody.method = \"dense\" or \"auto\"");
   }
-  // The dense path takes every term; a point inertia's hinge rotation (attachments.hpp,
-  // HingeInertias) is written on the Euler-Bernoulli chain's segment angles only.
-  if (spec.theory == ring::Theory::timoshenko && has_point_inertia(spec))
-    throw std::invalid_argument(
-        "multibody response: the Timoshenko chain (ring.theory = \"timoshenko\") does not take point inertias "
-        "(masses[].inertia > 0) yet; their translational mass it takes");
+  // The dense path takes every term (a point inertia's hinge rotation on the Timoshenko
+  // chain's sections as well: attachments.hpp, HingeInertias).
   // The energy-momentum scheme (hinge positions) takes every term and load but a point
   // inertia, whose hinge rotation is an unknown of the angle paths only (HingeInertias).
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum && has_point_inertia(spec))

@@ -17,7 +17,7 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
 /// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"), a
-/// pinned Timoshenko chain without point inertias.
+/// pinned Timoshenko chain.
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics);
 /// Forced response: a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and

@@ -91,8 +91,8 @@ class ChainStepper : public paths::Stepper {
       out.strain = p_.sections->energy(s_.q) + (p_.terms ? p_.terms->energy(q, false) : 0.0);
     } else {
       out.strain = chain_.spring_energy(q) + (p_.terms ? p_.terms->energy(q) : 0.0);
-      if (p_.hinges) out.strain += p_.hinges->energy(s_.q);
     }
+    if (p_.hinges) out.strain += p_.hinges->energy(s_.q);
     out.work = work_;
     out.dissipated = dissipated_;
     // Values only: the kinematics (G, its Hessian) are the step's business, not the sample's.
@@ -162,8 +162,8 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   if (spec.theory == ring::Theory::timoshenko)
     sections.emplace(chain, terms ? &*terms : nullptr, shear ? *shear : Shear::of(spec, chain.l()));
   std::optional<detail::HingeInertias> hinges;  // point inertias: their hinges' rotations (attachments.hpp)
-  if (terms && std::any_of(spec.masses.begin(), spec.masses.end(), [](const ring::PointMass& m) { return m.inertia > 0.0; }))
-    hinges.emplace(chain, *terms);
+  if (terms && detail::has_point_inertia(spec))
+    hinges.emplace(chain, *terms, sections.has_value());
   Problem p{chain,
             {one_point ? chain.hinge_at(load.angle) : 0, {load.force[0], load.force[1]}},
             response.history,

@@ -9,7 +9,8 @@
 namespace multibody::detail {
 namespace {
 
-/// N x N matrices (N = n, or 2n with the Timoshenko chain's shear angles): the inertia
+/// N x N matrices (N = n, + n with the Timoshenko chain's shear angles, + the point inertias'
+/// hinge rotations): the inertia
 /// constants, K, C, the tangent and an LU of the saddle-point matrix. O(N^2) memory.
 class DenseBackend final : public NewtonBackend {
  public:
@@ -24,15 +25,15 @@ class DenseBackend final : public NewtonBackend {
     if (!damping.any()) return;
     const Matrix cyclic = (damping.cyclic / chain.K()) * K_;
     C_.topLeftCorner(n_, n_) = damping.mass * mass_matrix(chain, terms, chain.q0()) + cyclic;
-    if (hinges) {  // the mass J on chi; the dampers on the split springs
-      hinges->add_mass(damping.mass, C_);
-      hinges->add_stiffness(damping.cyclic / chain.K(), C_, true);
-    }
     if (sections) {  // the mass [M + J, J; J, J]; the dampers between the sections' rotations
       sections->add_mass(damping.mass, C_);
-      C_.topRightCorner(n_, n_) = cyclic;
-      C_.bottomLeftCorner(n_, n_) = cyclic;
-      C_.bottomRightCorner(n_, n_) = cyclic;
+      C_.block(0, n_, n_, n_) += cyclic;
+      C_.block(n_, 0, n_, n_) += cyclic;
+      C_.block(n_, n_, n_, n_) += cyclic;
+    }
+    if (hinges) {  // the mass J on chi; the dampers on the split springs (on the sections' rotations)
+      hinges->add_mass(damping.mass, C_);
+      hinges->add_stiffness(damping.cyclic / chain.K(), C_, true);
     }
   }
 
@@ -57,13 +58,16 @@ class DenseBackend final : public NewtonBackend {
     b.head(n_) += f * phi - xi;
     b.tail(c) = -constraint_jdot_qdot(ck, vc);
     if (sections_ && !(sections_->shear().inertia > 0.0)) {
-      // No rotary inertia: gamma is algebraic, A psi + S gamma = 0 at all times (linear, so
-      // also A phi'' + (A + S) gamma'' = 0): those rows in place of the massless ones.
+      // No rotary inertia: gamma is algebraic, dV/dgamma = A psi + S gamma (+ the split
+      // springs' H of the point inertias) = 0 at all times (linear, so also its second
+      // derivative): those rows, the Hessian's on gamma, in place of the massless ones.
+      const int s = sections_->n();
       Matrix H = Matrix::Zero(N_, N_);
       sections_->add_stiffness(H);
-      A.middleRows(n_, N_ - n_).setZero();
-      A.block(n_, 0, N_ - n_, N_) = H.bottomRows(N_ - n_);
-      b.segment(n_, N_ - n_).setZero();
+      if (hinges_) hinges_->add_stiffness(1.0, H);
+      A.middleRows(n_, s).setZero();
+      A.block(n_, 0, s, N_) = H.middleRows(n_, s);
+      b.segment(n_, s).setZero();
     }
     const Vector x = A.partialPivLu().solve(b);
     qdd = x.head(N_);

@@ -28,48 +28,48 @@ Eigen::LLT<Matrix> Sections::shear_block() const {
 }
 
 double Sections::energy(const Vector& x) const {
-  const Vector theta = x.head(n_) - chain_.phi0(), gamma = x.tail(n_);
+  const Vector theta = x.head(n_) - chain_.phi0(), gamma = x.segment(n_, n_);
   const Vector psi = theta + gamma;
   return 0.5 * psi.dot(A_ * psi) + 0.5 * shear_.stiffness * gamma.squaredNorm();
 }
 
 void Sections::add_forces(const Vector& x, Eigen::Ref<Vector> r) const {
-  const Vector psi = x.head(n_) - chain_.phi0() + x.tail(n_);
+  const Vector psi = x.head(n_) - chain_.phi0() + x.segment(n_, n_);
   const Vector f = A_ * psi;
   r.head(n_) += f;
-  r.tail(n_) += f + shear_.stiffness * x.tail(n_);
+  r.segment(n_, n_) += f + shear_.stiffness * x.segment(n_, n_);
 }
 
 void Sections::add_stiffness(Eigen::Ref<Matrix> T) const {
   T.topLeftCorner(n_, n_) += A_;
-  T.topRightCorner(n_, n_) += A_;
-  T.bottomLeftCorner(n_, n_) += A_;
-  T.bottomRightCorner(n_, n_) += A_;
-  T.bottomRightCorner(n_, n_).diagonal().array() += shear_.stiffness;
+  T.block(0, n_, n_, n_) += A_;
+  T.block(n_, 0, n_, n_) += A_;
+  T.block(n_, n_, n_, n_) += A_;
+  T.block(n_, n_, n_, n_).diagonal().array() += shear_.stiffness;
 }
 
 double Sections::kinetic_energy(const Vector& v) const {
-  return 0.5 * shear_.inertia * (v.head(n_) + v.tail(n_)).squaredNorm();
+  return 0.5 * shear_.inertia * (v.head(n_) + v.segment(n_, n_)).squaredNorm();
 }
 
 void Sections::add_inertia_forces(const Vector& a, Eigen::Ref<Vector> r) const {
-  const Vector f = shear_.inertia * (a.head(n_) + a.tail(n_));
+  const Vector f = shear_.inertia * (a.head(n_) + a.segment(n_, n_));
   r.head(n_) += f;
-  r.tail(n_) += f;
+  r.segment(n_, n_) += f;
 }
 
 void Sections::add_mass(double c, Eigen::Ref<Matrix> M) const {
   const double j = c * shear_.inertia;
   M.topLeftCorner(n_, n_).diagonal().array() += j;
-  M.topRightCorner(n_, n_).diagonal().array() += j;
-  M.bottomLeftCorner(n_, n_).diagonal().array() += j;
-  M.bottomRightCorner(n_, n_).diagonal().array() += j;
+  M.block(0, n_, n_, n_).diagonal().array() += j;
+  M.block(n_, 0, n_, n_).diagonal().array() += j;
+  M.block(n_, n_, n_, n_).diagonal().array() += j;
 }
 
 void Sections::add_mass_times(const Matrix& E, Eigen::Ref<Matrix> out) const {
-  const Matrix f = shear_.inertia * (E.topRows(n_) + E.bottomRows(n_));
+  const Matrix f = shear_.inertia * (E.topRows(n_) + E.middleRows(n_, n_));
   out.topRows(n_) += f;
-  out.bottomRows(n_) += f;
+  out.middleRows(n_, n_) += f;
 }
 
 Matrix Sections::condensed() const {

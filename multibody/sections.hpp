@@ -51,7 +51,9 @@ class Sections {
   /// A: the stiffness on the sections' rotations (file comment), n x n.
   const Matrix& rotation_stiffness() const { return A_; }
 
-  // x = (phi, gamma), 2n entries; v, a its rates.
+  // x = (phi, gamma, ...): the first 2n entries (the point inertias' hinge rotations may
+  // follow, attachments.hpp: HingeInertias); v, a its rates; matrices likewise (their
+  // leading 2n x 2n block).
   /// V_s, J. O(n^2).
   double energy(const Vector& x) const;
   /// Adds dV_s/dx to r (2n). O(n^2).

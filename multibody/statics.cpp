@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -211,27 +212,31 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
     Mr = Zf.transpose() * Mf * Zf;
     Z = std::move(Zf);
   };
-  if (spec.theory == ring::Theory::timoshenko) {
-    // The shear angles back as unknowns (sections.hpp): T holds K_c = A - A (A + S)^{-1} A, the
-    // Schur complement over gamma of [A, A; A, A + S], so on (phi, gamma) the full tangent is
-    // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J].
-    const int n = ch.n();
-    const detail::Sections sections(ch, &terms, Shear::of(spec, ch.l()));
-    Matrix Tf = Matrix::Zero(2 * n, 2 * n), Mf = Matrix::Zero(2 * n, 2 * n);
-    sections.add_stiffness(Tf);
-    Tf.topLeftCorner(n, n) += T - sections.condensed();
-    sections.add_mass(1.0, Mf);
-    Mf.topLeftCorner(n, n) += M;
-    border(Tf, Mf);
-  } else if (const detail::HingeInertias hinges(ch, terms); hinges.n() > 0) {
-    // The point inertias' hinge rotations back as unknowns (attachments.hpp): T holds what
-    // condensing chi gives, H's border restores chi with its inertia J.
-    const Eigen::Index d = ch.dofs(), N = d + hinges.n();
+  // The shear angles and the point inertias' hinge rotations back as unknowns (q, [gamma,]
+  // chi). The shear angles (sections.hpp): T holds K_c = A - A (A + S)^{-1} A, the Schur
+  // complement over gamma of [A, A; A, A + S], so on (phi, gamma) the full tangent is
+  // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J]. The hinge rotations
+  // (attachments.hpp): T holds what condensing chi gives, H's border restores chi with its
+  // inertia J (on the sections' rotations on the Timoshenko chain).
+  const bool shear = spec.theory == ring::Theory::timoshenko;
+  std::optional<detail::HingeInertias> hinges;  // its (n + p)^2 border only where there is one
+  if (detail::has_point_inertia(spec))
+    hinges.emplace(ch, terms, shear);
+  if (shear || hinges) {
+    const Eigen::Index d = ch.dofs(), N = d + (shear ? ch.n() : 0) + (hinges ? hinges->n() : 0);
     Matrix Tf = Matrix::Zero(N, N), Mf = Matrix::Zero(N, N);
     Tf.topLeftCorner(d, d) = T;
-    hinges.add_stiffness(1.0, Tf);
     Mf.topLeftCorner(d, d) = M;
-    hinges.add_mass(1.0, Mf);
+    if (shear) {
+      const detail::Sections sections(ch, &terms, Shear::of(spec, ch.l()));
+      sections.add_stiffness(Tf);
+      Tf.topLeftCorner(d, d) -= sections.condensed();
+      sections.add_mass(1.0, Mf);
+    }
+    if (hinges) {
+      hinges->add_stiffness(1.0, Tf);
+      hinges->add_mass(1.0, Mf);
+    }
     border(Tf, Mf);
   }
   const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "multibody modes under load");

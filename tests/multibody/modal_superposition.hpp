@@ -84,11 +84,14 @@ inline Linear modal_superposition(const ring::RingSpec& spec, int n, const ring:
   ring::MultibodyOptions o;
   o.n = n;
   const multibody::Chain chain(spec, o, r.loads.points.at(0).angle);
-  // Every elastic mode: the unknowns (with the point inertias' hinge rotations) less the
-  // constraint rows (with the further pins'); the supports leave no rigid mode.
+  // Every elastic mode: the unknowns (with the point inertias' hinge rotations and the
+  // Timoshenko chain's shear angles, linear_model.hpp) less the constraint rows (with the
+  // further pins'); the supports leave no rigid mode.
   const multibody::detail::LinearTerms terms = multibody::detail::linear_terms(chain, spec);
-  const int modes = multibody::linear_unknowns(chain, &terms, nullptr) - chain.constraint_count() -
-                    static_cast<int>(terms.J.rows());
+  const multibody::Shear shear = multibody::Shear::of(spec, chain.l());
+  const bool timoshenko = spec.theory == ring::Theory::timoshenko;
+  const int modes = multibody::linear_unknowns(chain, &terms, timoshenko ? &shear : nullptr) -
+                    chain.constraint_count() - static_cast<int>(terms.J.rows());
   const multibody::ModalSolution sol = multibody::solve_modes(spec, o, modes);
   const multibody::Vector q0 = chain.q0();
   const multibody::Vector phi = chain.point_load_forces(
