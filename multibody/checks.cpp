@@ -102,11 +102,16 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
     throw std::invalid_argument(
         "multibody response.integrator = \"energy-momentum\" (hinge positions) does not take point inertias "
         "(masses[].inertia > 0): use \"newmark\" or \"generalized-alpha\", or inertia = 0");
-  // The O(n) angle path: the paper's terms and one point load (backend.hpp keeps "auto" dense).
+  // The O(n) angle path: the paper's terms and constant loads (backend.hpp keeps "auto" dense).
   if (response.integrator != ring::ResponseOptions::Integrator::energy_momentum &&
       backend(options, spec, response.loads, Analysis::response) == Backend::banded) {
     if (!spec.paper_terms_only()) ring::refuse_terms_beyond_paper(spec, "multibody method = \"sparse\" (the O(n) response)");
-    ring::one_point_load(response.loads, "response", "multibody method = \"sparse\" (the O(n) response)");
+    if (response.loads.shape_dependent())
+      throw std::invalid_argument(
+          "multibody method = \"sparse\" (the O(n) response) does not take response.pressure of kind \"" +
+          std::string(response.loads.pressure.kind == ring::Pressure::Kind::follower ? "follower" : "central") +
+          "\" yet (its load stiffness is not diagonal in the angles): set multibody.method = \"dense\" or \"auto\", "
+          "or response.integrator = \"energy-momentum\"");
   }
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))

@@ -147,8 +147,8 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
     return respond_energy_momentum(spec, options, response, controls);
 
-  // One point load on either backend (the paper's DeadLoad); more loads through Loading on
-  // the dense one (backend.hpp keeps "auto" dense for them).
+  // One point load as the paper's DeadLoad; more loads through Loading (on the O(n) backend
+  // the constant ones only: backend.hpp keeps "auto" dense for follower and central pressure).
   const bool one_point = response.loads.beyond_one_point("response").empty() && !response.loads.points.empty();
   const ring::PointLoad load = one_point ? response.loads.points.front() : ring::PointLoad{};
   const Chain chain(spec, options,

@@ -90,8 +90,8 @@ struct IntegrationControls {
 
 /// Forced response from rest in the undeformed state (phi = phi0, phi' = 0).
 /// Requires a pin (and normally a roller; without one the rigid rotation about the
-/// pin is left to the dynamics). The load (one point load) acts at a point that must be
-/// a hinge of the chain; the recorded angles must be hinges too.
+/// pin is left to the dynamics). Point loads act at points that must be hinges of the
+/// chain (as must point masses and supports); the recorded angles must be hinges too.
 /// Records one entry per requested step dt (t = 0 first; halved sub-steps are not
 /// recorded): displacements of the recorded points (ring-centred frame, m), kinetic
 /// energy T, hinge spring energy V, work of the load W (trapezoidal in time), energy

@@ -33,7 +33,7 @@ struct Problem {
   const Chain& chain;
   DeadLoad load;
   ring::LoadHistory history;
-  /// Loads beyond one point load (loading.hpp), on the dense backend only; null: `load`.
+  /// Loads beyond one point load (loading.hpp; on the O(n) backend the constant ones only); null: `load`.
   const Loading* loading = nullptr;
   /// The foundation, springs and clamp (attachments.hpp), on the dense backend only.
   const Attachments* terms = nullptr;

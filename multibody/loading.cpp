@@ -144,18 +144,31 @@ Vector Loading::forces(const Vector& q) const {
   return out;
 }
 
+Vector Loading::angle_curvature(const Vector& q, const Eigen::Matrix2Xd& g) const {
+  const int n = chain_.n();
+  Vector d(n);
+  Eigen::Vector2d G = g.col(n);  // sum_{k > j} g_k
+  for (int j = n - 1; j >= 0; --j) {
+    d[j] = -chain_.l() * e(q[j]).dot(G);
+    G += g.col(j);
+  }
+  return d;
+}
+
+Vector Loading::constant_stiffness_diagonal(const Vector& q) const {
+  if (shape_dependent()) throw std::logic_error("Loading::constant_stiffness_diagonal: a shape-dependent load");
+  Vector d = Vector::Zero(chain_.dofs());
+  d.head(chain_.n()) = angle_curvature(q, -f_);
+  return d;
+}
+
 void Loading::add_stiffness(const Vector& q, double s, Eigen::Ref<Matrix> hess) const {
   const int n = chain_.n(), dofs = chain_.dofs();
   const double l = chain_.l();
   const Eigen::Matrix2Xd p = positions(q);
   std::vector<Block> blocks;
   const Eigen::Matrix2Xd g = hinge_gradient(p, shape_dependent() ? &blocks : nullptr);
-  // The curvature of the hinge positions in the angles: d2 p_k / d phi_j^2 = -l e(phi_j), j < k.
-  Eigen::Vector2d G = g.col(n);
-  for (int j = n - 1; j >= 0; --j) {
-    hess(j, j) -= s * l * e(q[j]).dot(G);
-    G += g.col(j);
-  }
+  hess.diagonal().head(n) += s * angle_curvature(q, g);
   if (!shape_dependent()) return;
   // S(a, b) = sum_{k >= a, m >= b} H_km by two-dimensional suffix sums, one array per entry
   // of the 2 x 2 blocks; row/column n + 1 is zero.

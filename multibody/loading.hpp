@@ -52,6 +52,11 @@ class Loading {
   /// Adds s d2Pi/dq2 (the load stiffness; zero for constant hinge forces in the hinges,
   /// not in the angles) to `hess` (dofs x dofs). O(n^2).
   void add_stiffness(const Vector& q, double s, Eigen::Ref<Matrix> hess) const;
+  /// d2Pi/dq2 when no load is shape-dependent (constant hinge forces): diagonal in the angles
+  /// (the curvature of the hinge positions), this diagonal (dofs; 0 on a free ring's x0, y0),
+  /// for the O(n) response (newton_backend.hpp). Throws std::logic_error if shape_dependent().
+  /// O(n).
+  Vector constant_stiffness_diagonal(const Vector& q) const;
 
   // The loads on hinge positions, the one place they are written (file comment): the
   // angles' members above pull them back, the O(n) statics (statics_natural.cpp) takes them
@@ -72,6 +77,9 @@ class Loading {
  private:
   /// Hinge positions p_0 .. p_n (2 x (n + 1)). O(n).
   Eigen::Matrix2Xd positions(const Vector& q) const;
+  /// -l e(phi_j) . sum_{k > j} g_k: the hinge gradients g pulled through the curvature of
+  /// the hinge positions in the angles (d2 p_k / d phi_j^2 = -l e(phi_j), j < k). O(n).
+  Vector angle_curvature(const Vector& q, const Eigen::Matrix2Xd& g) const;
   /// The shape-dependent part of Pi (follower and central pressure) at hinge positions p.
   double shape_potential(const Eigen::Matrix2Xd& p) const;
 

@@ -171,11 +171,13 @@ class DenseBackend final : public NewtonBackend {
   Eigen::PartialPivLU<Matrix> lu_;
 };
 
-/// The structured O(n) forms of dynamics_sparse.hpp; nothing of size n^2.
+/// The structured O(n) forms of dynamics_sparse.hpp; nothing of size n^2. The loads: one
+/// point load (DeadLoad) or constant hinge forces (`loading` without a shape-dependent part:
+/// point loads, gravity, dead pressure), whose stiffness is diagonal in the angles.
 class StructuredBackend final : public NewtonBackend {
  public:
-  StructuredBackend(const Chain& chain, const DeadLoad& load, const Damping& damping)
-      : NewtonBackend(chain, load, damping) {}
+  StructuredBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading)
+      : NewtonBackend(chain, load, damping, loading) {}
 
   Vector damping_times(const Vector& v) const override {
     Vector y = damping_.mass * chain_.mass_times(chain_.q0(), v);
@@ -187,7 +189,7 @@ class StructuredBackend final : public NewtonBackend {
 
   bool initial_acceleration(const Vector& q, const Vector& v, double f, Vector& qdd, Vector& lambda) const override {
     Vector phi;
-    load_forces(chain_, load_, q, phi, nullptr);
+    forces(q, phi, nullptr);
     const Vector b = f * phi - chain_.quadratic_velocity(q, v) - damping_times(v) - chain_.spring_forces(q);
     SparseSaddle lu;
     return lu.factor(mass_structured(chain_, q), chain_.constraint_jacobian(q), 1.0) &&
@@ -197,7 +199,7 @@ class StructuredBackend final : public NewtonBackend {
   void residual(const Vector& q, const Vector& v, const Vector& qdd, double f, double cm, double cv, Vector& r,
                 bool tangent) override {
     Vector phi, dphi;
-    load_forces(chain_, load_, q, phi, tangent ? &dphi : nullptr);
+    forces(q, phi, tangent ? &dphi : nullptr);
     if (tangent) {
       T_ = StructuredMatrix{};
       T_.diag = Vector::Zero(q.size());
@@ -219,6 +221,14 @@ class StructuredBackend final : public NewtonBackend {
   }
 
   void add_to_tangent_diagonal(const Vector& d) override { T_.diag += d; }
+
+  /// The loads' generalized forces phi at q and, if `dphi`, their derivative's diagonal (the
+  /// whole of it: load_forces.hpp's point load and constant hinge forces). O(n).
+  void forces(const Vector& q, Vector& phi, Vector* dphi) const {
+    if (!loading_) return load_forces(chain_, load_, q, phi, dphi);
+    phi = loading_->forces(q);
+    if (dphi) *dphi = -loading_->constant_stiffness_diagonal(q);  // phi = -dPi/dq
+  }
 
   bool factor(const Matrix& G, double l, double h) override {
     sc_ = T_.diagonal().cwiseAbs().maxCoeff() / l;
@@ -261,10 +271,10 @@ std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const Dea
                                                    bool structured, const Loading* loading,
                                                    const Attachments* terms, const Sections* sections,
                                                    const HingeInertias* hinges) {
-  if (structured && (loading || terms || sections || hinges))
+  if (structured && ((loading && loading->shape_dependent()) || terms || sections || hinges))
     throw std::invalid_argument(
-        "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and one point load only");
-  if (structured) return std::make_unique<StructuredBackend>(chain, load, damping);
+        "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and constant loads only");
+  if (structured) return std::make_unique<StructuredBackend>(chain, load, damping, loading);
   return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges);
 }
 

@@ -97,9 +97,10 @@ class NewtonBackend {
 };
 
 /// The dense or the structured backend for this chain, load and damping; `loading` (loads
-/// beyond one point load), `terms` (foundation, springs, clamp, point masses, further pins),
-/// `sections` (the Timoshenko chain: the unknowns become (phi, gamma)) and `hinges` (point
-/// inertias: the unknowns become (phi, chi)) on the dense one only.
+/// beyond one point load: on the structured one without a shape-dependent part), `terms`
+/// (foundation, springs, clamp, point masses, further pins), `sections` (the Timoshenko
+/// chain: the unknowns become (phi, gamma)) and `hinges` (point inertias: the unknowns
+/// become (phi, [gamma,] chi)) on the dense one only.
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading = nullptr,
                                                    const Attachments* terms = nullptr,

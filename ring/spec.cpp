@@ -124,12 +124,6 @@ void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
   refuse_keys(spec.terms_beyond_paper(), who);
 }
 
-const PointLoad& one_point_load(const Loads& loads, const std::string& section, const std::string& who) {
-  std::vector<std::string> keys = loads.beyond_one_point(section);
-  if (keys.empty() && loads.points.empty()) keys.push_back(section + ".pressure or " + section + ".gravity alone");
-  refuse_keys(keys, who);
-  return loads.points.front();
-}
 
 int static_rigid_modes(const RingSpec& spec, const Loads& loads) {
   const int rigid = spec.rigid_modes();

@@ -124,6 +124,9 @@ struct Loads {
   bool has_gravity() const { return gravity[0] != 0.0 || gravity[1] != 0.0; }
   /// True when only point loads act (the paper's loading, in any number).
   bool points_only() const { return !pressure.any() && !has_gravity(); }
+  /// True when a load's direction or size follows the deformed ring (follower or central
+  /// pressure); the others (point loads, gravity, dead pressure) are constant forces.
+  bool shape_dependent() const { return pressure.any() && pressure.kind != Pressure::Kind::dead; }
   /// The scene keys of the loads beyond one point load ("pressure", "gravity", "loads"), in
   /// `section` ("static", "response"), for refusals that name them.
   std::vector<std::string> beyond_one_point(const std::string& section) const;
@@ -198,10 +201,6 @@ void refuse_timoshenko(const RingSpec& spec, const std::string& who);
 /// the paper's ring (RingSpec::terms_beyond_paper), for an analysis that lacks them.
 void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);
 
-/// The one point load of `loads`, for an analysis that takes no other load: throws
-/// std::invalid_argument "`who` does not take KEYS yet" when `loads` has several point loads,
-/// pressure or gravity (Loads::beyond_one_point of `section`), or no point load.
-const PointLoad& one_point_load(const Loads& loads, const std::string& section, const std::string& who);
 
 /// The rigid motions that a static analysis under `loads` leaves free: spec.rigid_modes(),
 /// less the rotation about a single pin when gravity holds it (the ring hangs from the pin:

@@ -242,6 +242,51 @@ TEST(MultibodySparseDynamics, DampedSceneAgrees) {
   }
 }
 
+// Constant loads beyond the one point load (two point loads, gravity on the ring, dead
+// pressure: constant hinge forces, loading.hpp) on the O(n) path: the generalized forces by
+// suffix sums and their stiffness, diagonal in the angles, in the structured tangent. Same
+// histories as the dense path's (which assembles Loading's full Hessian; tolerance one Newton
+// tolerance, as above); "auto" takes the O(n) path for them from the crossover on.
+TEST(MultibodySparseDynamics, ConstantLoadsHistoriesAgree) {
+  for (Integrator integ : {Integrator::newmark, Integrator::generalized_alpha}) {
+    ring::ResponseOptions r = paper_scene(integ, 2.0);
+    r.loads.points.push_back({90.0, {0.0, 5e3}});
+    r.loads.gravity = {0.0, -2.0};
+    r.loads.pressure = {500.0, ring::Pressure::Kind::dead};
+    for (int n : {40, 160}) {
+      const auto dense = multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::dense), r);
+      const auto sparse = multibody::respond(pin_roller_ring(), opts(n, ring::MultibodyOptions::Method::sparse), r);
+      ASSERT_EQ(dense.t.size(), sparse.t.size());
+      const Diff d = compare(sparse, dense);
+      RecordProperty("max_rel_displacement_diff_" + std::to_string(n), sci(d.u));
+      EXPECT_LE(d.u, 1e-8) << n;
+      EXPECT_LE(d.energy, 1e-8) << n;
+      EXPECT_LT(d.max_g, 1e-10) << n;
+    }
+    EXPECT_EQ(multibody::backend(opts(multibody::kSparseResponseCrossover, ring::MultibodyOptions::Method::automatic),
+                                 pin_roller_ring(), r.loads, multibody::Analysis::response),
+              multibody::Backend::banded);
+  }
+}
+
+// Follower and central pressure have a load stiffness that is not diagonal in the angles: a
+// forced O(n) path refuses them by key, "auto" stays dense.
+TEST(MultibodySparseDynamics, ShapeDependentPressureStaysDense) {
+  for (auto kind : {ring::Pressure::Kind::follower, ring::Pressure::Kind::central}) {
+    ring::ResponseOptions r = paper_scene(Integrator::newmark, 0.1);
+    r.loads.pressure = {500.0, kind};
+    EXPECT_EQ(multibody::backend(opts(1000, ring::MultibodyOptions::Method::automatic), pin_roller_ring(), r.loads,
+                                 multibody::Analysis::response),
+              multibody::Backend::dense);
+    try {
+      multibody::respond(pin_roller_ring(), opts(40, ring::MultibodyOptions::Method::sparse), r);
+      ADD_FAILURE() << "the O(n) response took a shape-dependent pressure";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("response.pressure"), std::string::npos) << e.what();
+    }
+  }
+}
+
 // Self-contact is reported the same way on both paths (the issue-7 crushing load of
 // 150 kN, test_dynamics_stress.cpp), at n = 40 (O(n^2) contact loop) and n = 160 (grid):
 // same reason, same step. With Newmark: under this load generalized-alpha gains more
