@@ -76,7 +76,8 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& options,
 /// The lowest buckling.count positive critical load factors of buckling.loads and their
 /// shapes (file comment).
 /// \return solver "fem"; model {elements, cells, subdivisions, degree, extensible,
-///         reference, refinements, path_step}; factors ascending; shapes at ring::kStations
+///         reference, refinements, path_step, max_residual (the refined pairs', dual norm
+///         of K_0)}; factors ascending; shapes at ring::kStations
 ///         stations (ModeShape's scaling); unknowns (reduced); seconds; error_estimate
 ///         (reference runs only).
 /// \throws std::invalid_argument for input that can never work (check_buckling; a count

@@ -129,7 +129,8 @@
 // extrapolation is below it, trusted only where both changes are clean of the raw pairs'
 // round-off and r <= kTrustedContraction (ring_model.hpp). On the paper's ring (40 cells)
 // it stops at p = 7 with an estimate of 5.5e-10 (the change to p = 8 is 3.2e-10), where
-// waiting for c_k < 1e-9 took p = 8, 40 % of the reference's time.
+// waiting for c_k < 1e-9 took p = 8, 40 % of the reference's time. The refinement is
+// uniform (p, then h); adaptive refinement is not offered.
 //
 // Round-off and refinement. The thin ring's membrane stiffness makes
 // lambda_max / lambda_1 ~ 1e9..1e10, so a double-precision eigen-solve returns the

@@ -58,6 +58,8 @@
 // (paths/continuation.hpp) takes the unknowns as they are.
 // Measured (tests/fem_reference/fem_reissner_test.cpp): see docs/measured.md, "fem_reference: the
 // Reissner beam".
+// Inextensible (fem.extensible = false) needs beta >> kGA R^2 / EI (about 4 (R/d)^2 for
+// steel); otherwise the extrapolation error can exceed the shear correction.
 //
 // ## Terms and loads (beam_potential.hpp: one piece of code, used by statics and response)
 // The equations are those of the total potential Pi(q; s) = V(q) - s Phi(q): V the stored
@@ -150,6 +152,15 @@
 // Cost: per Newton iteration an assembly and a sparse LU of the bordered matrix; per
 // accepted step one more solve (the tangent) and a self-contact check, O(2 pi R / depth)
 // expected (a uniform grid of buckets).
+// Bifurcations: the count of the tangent's negative eigenvalues on the free unknowns
+// (modal::frontal_inertia, O(N) per step; a dense count up to 1500 unknowns should the front
+// outgrow its bound, static_path.cpp) lets the driver end a path at a bifurcation with its
+// bracket: without static.path the continuation follows limit points on the primary path
+// and ends at a bifurcation. With static.path (fem.reference and fem.extensible = false
+// refused) the path switches branch along the least eigenvector of the tangent (dense, up to
+// 1500 unknowns; above, the path ends at the bifurcation), the clearance of non-neighbouring
+// parts of the centreline lets the driver bisect the touch, every accepted equilibrium is a
+// ring::PathPoint, and a touch ends the path as a result (end = "contact: ...", end_load).
 //
 // ## Dynamics
 // M a + C v + grad V(q) = g(t) grad Phi(q) from rest, C = a M + b K0 (Rayleigh, K0 the
@@ -166,7 +177,8 @@
 // as a Newton failure or a non-finite state is. Newmark starts from the consistent
 // acceleration M qdd_0 = F g(0); generalized-alpha from the acceleration its first step's
 // Newton matrix filters (nonlinear.cpp), as the multibody chain's integrators do. `energy-momentum` and hinge damping are not offered
-// (std::invalid_argument): the FE beam has no hinges.
+// (std::invalid_argument): the FE beam has no hinges. A step whose Newton fails ends the run
+// (step_too_small): there is no halving, and the reference refines dt itself.
 //
 // ## Converged references (fem.reference = true)
 // Statics: the degree is raised (then cells split) until the recorded displacements

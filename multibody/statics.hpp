@@ -18,6 +18,9 @@
 // The Timoshenko chain (ring.theory = "timoshenko", dense path only): its shear angles are
 // condensed exactly (sections.hpp), so K theta above is K_c theta, with the terms on the
 // rotations inside K_c; the unknowns and the path are the Euler chain's.
+// Its frequencies under load restore gamma about the equilibrium: the stiffness
+// [T - K_c + A, A; A, A + S] and the mass [M + J, J; J, J] (A, S, J as in sections.hpp;
+// statics.cpp).
 #pragma once
 
 #include <memory>
