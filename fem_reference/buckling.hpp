@@ -66,9 +66,9 @@ namespace fem {
 constexpr long long kDenseBucklingLimit = 3000;
 
 /// What linear buckling refuses before it computes (std::invalid_argument naming the key):
-/// everything the statics refuse (check_static: a Timoshenko ring, named, since the
-/// geometrically exact beam is Euler-Bernoulli; the curved geometry; loads on vertices;
-/// supports that hold every rigid motion the loads leave free), buckling.count >= 1. The
+/// everything the statics refuse (check_static: the curved geometry; loads on vertices;
+/// supports that hold every rigid motion the loads leave free; a Timoshenko ring buckles as
+/// the Reissner beam), buckling.count >= 1. The
 /// upper bound of buckling.count (the model's positive factors) is known only after the
 /// solve (compute_buckling). No deal.II: compiled into the driver's fem_checks. O(1).
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& options, const ring::BucklingOptions& buckling);

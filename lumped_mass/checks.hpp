@@ -21,29 +21,28 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
 /// anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
-/// Nonlinear statics: variant "chain" or "timoshenko-frame" (static.path: the chain only), n >= 4, a positive section and
+/// Nonlinear statics: every variant (static.path: the chain only), n >= 4, a positive section and
 /// material, every point of the spec (pins, clamp, springs, masses) and every point load on a
 /// node (none at the pin), a pin (or springs / a foundation that hold every rigid motion),
 /// supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0), finite
 /// pressure and gravity, static.steps >= 1.
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
-/// Linear buckling of the chain (buckling.hpp): variant "chain" (the frames have no buckling
-/// model here), as statics for the ring and the loads (named buckling.*), at least one load,
+/// Linear buckling (buckling.hpp): every variant, as statics for the ring and the loads (named
+/// buckling.*), at least one load,
 /// buckling.count >= 1, and supports and terms that hold the ring at rest
 /// (RingSpec::rigid_modes() == 0: K_0 must be positive definite, so a ring that only hangs
 /// from its pin under gravity is refused).
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling);
-/// Modes under load (modes.preload = "static", preload.hpp): the nonlinear chain only
-/// (lumped.variant = "chain": the Euler frames have no nonlinear statics here, the Timoshenko
-/// frame no modes under load), lumped.n <=
+/// Modes under load (modes.preload = "static", preload.hpp): every variant but "frame" (its
+/// rotations are massless), lumped.n <=
 /// kMaxPreloadHinges (the dense eigen step), then everything check_static checks. Point masses
 /// are taken (their translational mass is the chain's constant mass matrix, their rotary
 /// inertia J the mass of their hinge's own rotation, preload.hpp).
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics);
-/// Forced response of the chain or the Timoshenko frame (response.hinge_damping: the chain
-/// only): as statics, but rigid motions are allowed when a pin holds
+/// Forced response of every variant but "frame" (its rotations are massless;
+/// response.hinge_damping: the chain only): as statics, but rigid motions are allowed when a pin holds
 /// the ring (it swings about it); the integrator "midpoint"
 /// or "newmark" (the same implicit midpoint rule, nonlinear.hpp), 0 < dt <= t_end.
 /// "energy-momentum" is refused: the midpoint rule does not conserve the energy of the

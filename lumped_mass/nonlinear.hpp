@@ -83,8 +83,8 @@
 
 namespace lumped {
 
-/// Static equilibrium of the chain (or the Timoshenko frame) under `statics.loads` (full
-/// load). Requires the `chain` or `timoshenko-frame` variant, supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0; a
+/// Static equilibrium of the chain (or a corotational frame, frame.hpp) under `statics.loads`
+/// (full load). Requires supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0; a
 /// pin, unless the foundation or springs hold the ring), and the load and record points on
 /// hinges.
 /// Throws std::invalid_argument for inputs that can never work and ring::NumericalError
@@ -138,8 +138,8 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
 
 }  // namespace detail
 
-/// Forced response from rest in the undeformed state (see above). Requires the `chain` or
-/// `timoshenko-frame` variant, a pin (or terms that hold every rigid motion), load and record points on hinges.
+/// Forced response from rest in the undeformed state (see above). Requires a variant with
+/// rotary inertia (not "frame"), a pin (or terms that hold every rigid motion), load and record points on hinges.
 /// Records every requested step as
 /// ring::TimeHistory (energies, constraint residual max |c_j|, Newton iterations, six
 /// snapshots). Throws ring::IntegrationFailure (with the history so far) when Newton
