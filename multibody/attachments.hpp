@@ -205,7 +205,7 @@ class HingeInertias {
 
   /// The unknowns chi (moving hinges), p.
   int n() const { return p_; }
-  /// H's energy (theta, chi)^T H (theta, chi) / 2 at x = (q, chi): the split springs less
+  /// H's energy y^T H y / 2, y = (theta, [gamma,] chi) at x: the split springs less
   /// the terms they replace (class comment), J. O(n^2).
   double energy(const Vector& x) const;
   /// Adds H (theta, [gamma,] chi) to r (all unknowns). O(n^2).

@@ -95,9 +95,9 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
           "set multibody.method = \"dense\" or \"auto\"");
   }
   // The dense path takes every term (a point inertia's hinge rotation on the Timoshenko
-  // chain's sections as well: attachments.hpp, HingeInertias).
-  // The energy-momentum scheme (hinge positions) takes every term and load but a point
-  // inertia, whose hinge rotation is an unknown of the angle paths only (HingeInertias).
+  // chain's sections as well: attachments.hpp, HingeInertias); the energy-momentum scheme
+  // (hinge positions) every term and load but a point inertia, whose hinge rotation is an
+  // unknown of the angle paths only.
   if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum && has_point_inertia(spec))
     throw std::invalid_argument(
         "multibody response.integrator = \"energy-momentum\" (hinge positions) does not take point inertias "
@@ -109,8 +109,7 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
     if (response.loads.shape_dependent())
       throw std::invalid_argument(
           "multibody method = \"sparse\" (the O(n) response) does not take response.pressure of kind \"" +
-          std::string(response.loads.pressure.kind == ring::Pressure::Kind::follower ? "follower" : "central") +
-          "\" yet (its load stiffness is not diagonal in the angles): set multibody.method = \"dense\" or \"auto\", "
+          ring::to_string(response.loads.pressure.kind) + "\" yet (its load stiffness is not diagonal in the angles): set multibody.method = \"dense\" or \"auto\", "
           "or response.integrator = \"energy-momentum\"");
   }
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
