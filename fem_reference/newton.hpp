@@ -1,5 +1,5 @@
-// Internal to fem_reference/: full Newton on the geometrically exact beam's equations,
-// shared by the statics (static_path.cpp) and the response (nonlinear.cpp).
+// Internal to fem_reference/: full Newton on the geometrically exact beam's equations and the
+// LU of its matrix, shared by the statics (static_path.cpp) and the response (nonlinear.cpp).
 #pragma once
 
 #include "fem_reference/ring_model.hpp"
@@ -7,6 +7,40 @@
 namespace fem::detail {
 
 constexpr int kMaxNewton = 25;
+
+/// Up to this many unknowns the Newton matrix is factored dense (LAPACK getrf, O(N^3)):
+/// UMFPACK's fixed cost per factorization (ordering, symbolic analysis, sorted copies of
+/// the arrays) outweighs it there. Measured on the half-sine response (degree 4, dt = 0.01 s,
+/// 600 factorizations; docs/measured.md, "The Newton matrix's LU"): dense ~20 % faster at 96
+/// nodal values (8 elements), even at 144 (12), sparse ahead from 192 (16).
+constexpr unsigned int kDenseNewtonLimit = 120;
+
+/// The LU of a Newton matrix: dense up to kDenseNewtonLimit unknowns, UMFPACK above. Throws
+/// on a singular matrix as SparseDirectUMFPACK does.
+class NewtonLu {
+ public:
+  void initialize(const SparseMatrix<double>& S) {
+    dense_size_ = S.m() <= kDenseNewtonLimit ? S.m() : 0;
+    if (dense_size_ == 0) {
+      sparse_.initialize(S);
+      return;
+    }
+    dense_.reinit(dense_size_);
+    dense_ = S;
+    dense_.compute_lu_factorization();
+  }
+  void solve(Vector<double>& x) const {
+    if (dense_size_ == 0)
+      sparse_.solve(x);
+    else
+      dense_.solve(x);
+  }
+
+ private:
+  unsigned int dense_size_ = 0;
+  SparseDirectUMFPACK sparse_;
+  LAPACKFullMatrix<double> dense_;
+};
 
 /// Newton on grad V(q) - rhs(q) = 0 with the tangent `tangent(q) + extra`; q updated in
 /// place. Returns the iterations, or -1 when it did not converge (q then unusable).
@@ -25,7 +59,7 @@ int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent,
     for (unsigned int i = 0; i < v.size(); ++i) m = std::max(m, std::abs(v[i]) * (*lengths)[i]);
     return m;
   };
-  SparseDirectUMFPACK lu;
+  NewtonLu lu;
   Vector<double> r, dq, moved;
   const Vector<double> start = q;
   for (int it = 1; it <= kMaxNewton; ++it) {

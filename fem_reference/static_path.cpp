@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fem_reference/beam_potential.hpp"
+#include "fem_reference/newton.hpp"
 #include "fem_reference/self_contact.hpp"
 #include "modal/buckling.hpp"
 #include "modal/inertia.hpp"
@@ -126,7 +127,7 @@ class BeamEquilibrium : public paths::Equilibrium {
   SparsityPattern pattern_;
   SparseMatrix<double> B_;
   Vector<double> q_, r_, y_;
-  SparseDirectUMFPACK lu_;
+  NewtonLu lu_;  ///< the bordered Newton matrix's LU
   std::vector<Point2> last_centreline_;
   bool recording_ = false;
   std::vector<unsigned int> record_vertices_;
