@@ -7,9 +7,10 @@
 # ringvib_order_loader_scope(target library) lists library's dependency closure in the
 # target's DT_NEEDED, most-bound first: the search list then starts with them. The counts
 # come from the loader itself (`LD_DEBUG=bindings ldd -r`, which prints the loader's trace
-# on stdout; about 1 s, once per configure and cached). Only the order changes: the same libraries load, and a symbol that several
-# of them define (vague linkage, identical by the ODR) may bind to another identical copy.
-# When the probe fails the target links as before.
+# on stdout; about 1 s, once per configure and cached). Only the order changes: the same
+# libraries load, and a symbol that several of them define (vague linkage, identical by the
+# ODR) may bind to another identical copy. When the probe fails the target links as before.
+# Measured: docs/measured.md, "The FE plug-in's start".
 function(ringvib_order_loader_scope target library)
   if(NOT CMAKE_SYSTEM_NAME STREQUAL "Linux")
     return()
