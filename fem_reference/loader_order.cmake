@@ -15,7 +15,7 @@ function(ringvib_order_loader_scope target library)
   if(NOT CMAKE_SYSTEM_NAME STREQUAL "Linux")
     return()
   endif()
-  if(NOT DEFINED RINGVIB_LOADER_ORDER_FOR OR NOT RINGVIB_LOADER_ORDER_FOR STREQUAL library)
+  if(NOT RINGVIB_LOADER_ORDER_FOR STREQUAL library)  # unset on the first configure
     # The C and C++ run-time libraries are in the executable's global scope, searched before
     # the plug-in's list; the loader and the vDSO (no path) cannot be linked.
     execute_process(

@@ -20,26 +20,26 @@ constexpr unsigned int kDenseNewtonLimit = 120;
 class NewtonLu {
  public:
   void initialize(const SparseMatrix<double>& S) {
-    dense_size_ = S.m() <= kDenseNewtonLimit ? S.m() : 0;
-    if (dense_size_ == 0) {
+    dense_ = S.m() <= kDenseNewtonLimit;
+    if (!dense_) {
       sparse_.initialize(S);
       return;
     }
-    dense_.reinit(dense_size_);
-    dense_ = S;
-    dense_.compute_lu_factorization();
+    lu_.reinit(S.m());
+    lu_ = S;
+    lu_.compute_lu_factorization();
   }
   void solve(Vector<double>& x) const {
-    if (dense_size_ == 0)
-      sparse_.solve(x);
+    if (dense_)
+      lu_.solve(x);
     else
-      dense_.solve(x);
+      sparse_.solve(x);
   }
 
  private:
-  unsigned int dense_size_ = 0;
+  bool dense_ = false;
   SparseDirectUMFPACK sparse_;
-  LAPACKFullMatrix<double> dense_;
+  LAPACKFullMatrix<double> lu_;
 };
 
 /// Newton on grad V(q) - rhs(q) = 0 with the tangent `tangent(q) + extra`; q updated in

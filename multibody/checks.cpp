@@ -109,8 +109,9 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
     if (response.loads.shape_dependent())
       throw std::invalid_argument(
           "multibody method = \"sparse\" (the O(n) response) does not take response.pressure of kind \"" +
-          ring::to_string(response.loads.pressure.kind) + "\" yet (its load stiffness is not diagonal in the angles): set multibody.method = \"dense\" or \"auto\", "
-          "or response.integrator = \"energy-momentum\"");
+          ring::to_string(response.loads.pressure.kind) +
+          "\" yet (its load stiffness is not diagonal in the angles): set multibody.method = \"dense\" or "
+          "\"auto\", or response.integrator = \"energy-momentum\"");
   }
   if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
