@@ -1,6 +1,7 @@
 // Stress: 1e5 unknowns, 23 modes, through ARPACK + UMFPACK, without running out of memory.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -9,6 +10,7 @@
 #include "ring/closed_form.hpp"
 #include "tests/support/close.hpp"
 #include "support/paper.hpp"
+#include "support/study.hpp"
 
 namespace {
 
@@ -18,22 +20,27 @@ std::string scientific(double x) {
   return b;
 }
 
+// The suite runs it at 25 600 unknowns (5120 cells), the study (bench/studies.sh) at the
+// 102 400 of its name: the same ARPACK + UMFPACK path, the same 23 modes, the bound scaled
+// by the same law. Checked at the suite's size: the ARPACK path's pairs out of order
+// (ring_eigen.cpp) fail it.
 TEST(FemStress, HundredThousandUnknownsTwentyThreeModes) {
   const auto spec = ringtest::pinned_ring();
   ring::FemOptions o;
-  o.elements = 20480;  // degree 2: 3 + 2 unknowns per cell -> 102 400 - 2 constrained
+  o.elements = ringtest::study_size(5120, 20480);  // degree 2: 3 + 2 unknowns per cell, 2 constrained
   o.degree = 2;
   const auto r = fem::compute_modes(spec, o, 23);
-  EXPECT_GE(r.unknowns, 100000);
+  EXPECT_GE(r.unknowns, 5 * o.elements - 2);
   ASSERT_EQ(r.omega.size(), 23u);
-  // Oracle: the converged reference. Bound 1e-5: the p = 2 law measured by FemConvergence
-  // (relative error 1.7e-2 for k = 13 at 128 cells) scaled by (128 / 20480)^2 gives
-  // 7e-7 for the highest of these modes; a 10x margin for the round-off of a
-  // 1e5-unknown thin-ring solve.
+  // Oracle: the converged reference. Bound: the p = 2 law measured by FemConvergence
+  // (relative error 1.7e-2 for k = 13 at 128 cells) scaled by (128 / cells)^2 (7e-7 at
+  // 20480 cells, 1.1e-5 at 5120) for the highest of these modes; a 10x margin for the
+  // round-off of a large thin-ring solve.
+  const double bound = 10.0 * 1.7e-2 * std::pow(128.0 / o.elements, 2);
   ring::FemOptions ref;
   ref.reference = true;
   const auto f = fem::compute_modes(spec, ref, 23);
-  for (int i = 0; i < 23; ++i) EXPECT_TRUE(ringtest::IsClose(r.omega[i], f.omega[i], 1e-5)) << "mode " << i + 1;
+  for (int i = 0; i < 23; ++i) EXPECT_TRUE(ringtest::IsClose(r.omega[i], f.omega[i], bound)) << "mode " << i + 1;
 }
 
 // Issue 23: 10^4 elements of degree 12 failed with "mesh too coarse to represent the

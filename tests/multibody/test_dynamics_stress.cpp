@@ -10,6 +10,7 @@
 
 #include "multibody/dynamics.hpp"
 #include "tests/multibody/common.hpp"
+#include "support/study.hpp"
 
 namespace {
 
@@ -67,15 +68,19 @@ TEST(MultibodyDynamicsStress, GeneralizedAlphaRunsTenToTheFiveSteps) {
   EXPECT_LT(worst_u, 2.0 * spec.radius);
 }
 
-// The 5 s paper scene (step load, newmark) at time steps small enough to resolve all 37
+// The paper scene (step load, newmark) at time steps small enough to resolve all 37
 // modes of the chain (w_max = 432 rad/s) over the whole run: dt = 3.125e-4 .. 3.9e-5 s.
 // The observed order of the successive max-norm differences must reach 2 +- 0.2 (the
-// issue) over the last two refinements (measured 1.85 and 1.99; 0.86 one level coarser).
+// issue) over the last two refinements (measured 1.85 and 1.99 over the whole 5 s; 0.86
+// one level coarser). The suite integrates the first second, the study (bench/studies.sh)
+// the 5 s of the scene. Checked at the suite's length: Newmark's gamma = 0.6 instead of 1/2
+// (first order, integrators.cpp) fails it (orders 0.65 and 0.75).
 TEST(MultibodyDynamicsStress, NewmarkFullSceneReachesSecondOrder) {
   const ring::RingSpec spec = pin_roller_ring();
+  const double t_end = ringtest::study_size(1.0, 5.0);
   std::vector<ring::TimeHistory> runs;
   for (double dt : {3.125e-4, 1.5625e-4, 7.8125e-5, 3.90625e-5})
-    runs.push_back(multibody::respond(spec, n40(), paper_scene(20e3, Integrator::newmark, dt, 5.0)));
+    runs.push_back(multibody::respond(spec, n40(), paper_scene(20e3, Integrator::newmark, dt, t_end)));
   std::vector<double> d;
   for (size_t k = 0; k + 1 < runs.size(); ++k) {
     const auto &c = runs[k], &f = runs[k + 1];
