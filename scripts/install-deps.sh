@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config git
+  cmake g++ make ninja-build pkg-config git
   libeigen3-dev            # dense and sparse linear algebra (all solvers)
   libarpack2-dev           # ARPACK (through deal.II in fem_reference/)
   libspectra-dev           # shift-invert Lanczos on Eigen sparse matrices (multibody, lumped)

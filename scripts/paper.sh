@@ -4,5 +4,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-bash scripts/build.sh
+bash scripts/build.sh ringvib
 ./build/bin/ringvib run scenes/paper1990.toml --paper --out out/paper1990
