@@ -118,7 +118,7 @@ ring::ModalResult read_imported(const ring::ImportedColumn& column) {
   r.model["file"] = column.file;
   r.model["unit"] = unit == "hz" ? std::string("hz") : std::string("rad/s");
   r.residual_norm = "imported";
-  r.max_residual = std::nan("");  // not known: JSON null, not a perfect 0
+  r.max_residual.reset();  // not known: JSON null, not a perfect 0
   while (f.next(cells)) {
     if (cells.size() != 2) f.fail(0, "expected two values (mode, " + unit + "), got " + std::to_string(cells.size()));
     const double mode = f.number(cells, 1, "the mode number");

@@ -81,10 +81,13 @@ void assemble(ring::ModalResult& result, const std::string& solver, const Eigen:
 }
 
 void require_eigenpairs(const ring::ModalResult& result) {
-  if (result.max_residual <= kAcceptedResidual) return;
+  // A result that reports no residual is no accepted answer either.
+  if (result.max_residual && *result.max_residual <= kAcceptedResidual) return;
   std::ostringstream m;
-  m << result.solver << ": the computed pairs are not eigenpairs (largest relative residual " << result.max_residual
-    << ", accepted " << kAcceptedResidual << ")";
+  m << result.solver << ": the computed pairs are not eigenpairs (largest relative residual ";
+  if (result.max_residual) m << *result.max_residual;
+  else m << "not computed";
+  m << ", accepted " << kAcceptedResidual << ")";
   throw ring::NumericalError(m.str());
 }
 
