@@ -113,6 +113,19 @@ ring::Scene reference_scene(const ring::Scene& scene);
 /// entries apply it themselves; O(size of the scene), a copy.
 ring::Scene model_scene(const ring::Scene& scene, const SolverEntry& e);
 
+/// No NaN or infinity is a result: each throws ring::NumericalError (exit 3) naming the
+/// solver and the first value of the result that is not finite (its quantity, mode or
+/// recorded point, and step or station). Every analysis of the registry's entries passes
+/// through them, so a solver's overflow is reported, never printed. Checked: frequencies,
+/// max_residual (where reported), shapes; load factors; displacements, node positions and
+/// path points; the time history's times and displacements and its snapshots (its energy
+/// columns are the energy guard's, ring/energy_guard.hpp, and NaN in ccx's, which computes
+/// none). O(size of the result).
+void require_finite(const ring::ModalResult& r);
+void require_finite(const ring::BucklingResult& r);
+void require_finite(const ring::StaticResult& r);
+void require_finite(const ring::TimeHistory& r);
+
 /// The `count` lowest elastic modes of a solver with the scene's options.
 ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count);
 /// The converged modal reference: the reference solver with its reference option on.
