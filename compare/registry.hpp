@@ -97,9 +97,11 @@ ring::Scene load_scene(const std::string& path, const std::vector<std::string>& 
 ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
                         const std::vector<std::string>& overrides = {});
 
-/// Every solver's checks (SolverEntry::check_*) for the analyses the scene runs with it,
-/// and the reference solver's for the references it asks for: the scene is refused
-/// (ring::InputError naming the solver or analysis, exit 2) before any solver runs.
+/// The model's scales (ring::scale_violation: values whose products overflow, named by
+/// their key), then every solver's checks (SolverEntry::check_*) for the analyses the scene
+/// runs with it, and the reference solver's for the references it asks for: the scene is
+/// refused (ring::InputError naming the key, solver or analysis, exit 2) before any solver
+/// runs.
 void check_scene(const ring::Scene& scene);
 /// One solver's modal checks (SolverEntry::check_modes) on the scene, as check_scene runs
 /// them for its columns: for `modes --solver NAME` on a solver the scene does not list.
