@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -27,6 +28,55 @@ std::string read_all(const std::string& path) {
   std::ostringstream s;
   s << f.rdbuf();
   return s.str();
+}
+
+/// ccx's output as RunOutput::log keeps it (ccx.hpp), and whether "*ERROR" occurs anywhere
+/// in it. A ccx that wrote 200 MB before failing made ringvib hold the whole log (790 MB
+/// peak) to print its last 12 lines (issue 46): the head is read from the start, the tail
+/// at the end (pread at size - kLogKeep / 2), and the search for "*ERROR" goes through the
+/// rest in chunks.
+/// Memory O(kLogKeep) whatever ccx wrote; time O(the log's size) for the search.
+struct Log {
+  std::string text;
+  bool error = false;
+};
+
+Log read_log(const std::string& path) {
+  Log log;
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return log;
+  struct stat st;
+  const off_t size = fstat(fd, &st) == 0 ? st.st_size : 0;
+  const std::string marker = "*ERROR";
+  // Reads [from, to) in chunks; each chunk keeps the last marker.size() - 1 bytes of the one
+  // before it, so that a marker across two chunks is found.
+  auto scan = [&](off_t from, off_t to, std::string* keep) {
+    std::string carry;
+    std::vector<char> chunk(kLogKeep / 2);
+    for (off_t at = from; at < to;) {
+      const ssize_t n = pread(fd, chunk.data(), static_cast<std::size_t>(std::min<off_t>(to - at, chunk.size())), at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      carry.append(chunk.data(), static_cast<std::size_t>(n));
+      if (keep) keep->append(chunk.data(), static_cast<std::size_t>(n));
+      log.error |= carry.find(marker) != std::string::npos;
+      carry.erase(0, carry.size() - std::min(carry.size(), marker.size() - 1));
+      at += n;
+    }
+  };
+  if (size <= static_cast<off_t>(kLogKeep)) {
+    scan(0, size, &log.text);
+  } else {
+    const off_t half = static_cast<off_t>(kLogKeep / 2);
+    std::string head, tail;
+    scan(0, half, &head);
+    scan(half - static_cast<off_t>(marker.size()) + 1, size - half, nullptr);
+    scan(size - half - static_cast<off_t>(marker.size()) + 1, size, &tail);
+    tail.erase(0, marker.size() - 1);
+    log.text = head + "\n[... " + std::to_string(size - 2 * half) + " bytes of ccx's output not kept ...]\n" + tail;
+  }
+  close(fd);
+  return log;
 }
 
 /// Removes the job folder: ccx writes only plain files into it.
@@ -157,7 +207,8 @@ RunOutput run(const std::string& deck, const RunOptions& options, const Hooks& h
   RunOutput o;
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   o.cpu_seconds = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  o.log = read_all(log_path);
+  const Log log = read_log(log_path);
+  o.log = log.text;
   auto fail = [&](const std::string& why) {
     throw ring::NumericalError("calculix: " + why + "; the last lines of its output:\n" + tail(o.log, 12));
   };
@@ -165,7 +216,7 @@ RunOutput run(const std::string& deck, const RunOptions& options, const Hooks& h
   if (WIFSIGNALED(status)) fail("ccx died of signal " + std::to_string(WTERMSIG(status)));
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && o.log.empty()) fail("ccx could not be started (" + ccx + ")");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail("ccx exited with status " + std::to_string(WEXITSTATUS(status)));
-  if (o.log.find("*ERROR") != std::string::npos) fail("ccx reported an error");
+  if (log.error) fail("ccx reported an error");
   o.dat = read_all(job.path() + "/ring.dat");
   o.sta = read_all(job.path() + "/ring.sta");
   if (o.dat.empty()) fail("ccx wrote no ring.dat");

@@ -12,6 +12,7 @@
 //   handler, compare/files.cpp, kills the child and removes the folder).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -28,11 +29,17 @@ struct RunOptions {
   int threads = 1;
 };
 
+/// The most of ccx's output that run() holds, bytes (RunOutput::log).
+constexpr std::size_t kLogKeep = std::size_t(128) << 10;
+
 /// What a successful run leaves: the files ringvib reads, and ccx's output.
 struct RunOutput {
   std::string dat;          ///< job.dat
   std::string sta;          ///< job.sta (the increments of a nonlinear step)
-  std::string log;          ///< ccx's standard output and error
+  /// ccx's standard output and error: whole up to kLogKeep bytes, else its first and last
+  /// kLogKeep / 2 bytes (where ccx prints the equation count, and its last lines) joined by
+  /// a line that says how much was left out.
+  std::string log;
   double seconds = 0.0;     ///< wall time of the ccx process
   double cpu_seconds = 0.0; ///< its user + system time
 };

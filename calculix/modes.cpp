@@ -64,14 +64,15 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
                                  " in-plane modes of the " + std::to_string(rigid + count) + " asked (" +
                                  std::to_string(modes.size()) + " eigenvalues)");
     }
-    // The rigid modes the supports leave must be ccx's lowest, near zero.
+    // The rigid modes the supports leave must be ccx's lowest, near zero (each comparison
+    // written so that a NaN frequency fails it).
     const double scale = spec.bending_frequency_scale();
     for (int r = 0; r < rigid; ++r)
-      if (in_plane[r]->omega > 1e-2 * scale)
+      if (!(in_plane[r]->omega <= 1e-2 * scale))
         throw ring::NumericalError("calculix: the supports leave " + std::to_string(rigid) +
                                    " rigid modes, but ccx's in-plane mode " + std::to_string(r + 1) + " has omega = " +
                                    std::to_string(in_plane[r]->omega) + " rad/s");
-    if (in_plane[rigid]->omega < 1e-2 * scale)
+    if (!(in_plane[rigid]->omega >= 1e-2 * scale))
       throw ring::NumericalError("calculix: more zero modes than the supports leave (" + std::to_string(rigid) + ")");
 
     ring::ModalResult res;
@@ -91,8 +92,8 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
       res.shapes.push_back(ring::sample_polygon(deck.anchor, m.ux, m.uy));
     }
     res.unknowns = equation_count(out.log);
-    // ccx reports no residual: NaN (JSON null), not a perfect 0.
-    res.max_residual = std::nan("");
+    // ccx reports no residual: none (JSON null), not a perfect 0.
+    res.max_residual.reset();
     res.residual_norm = "not reported by ccx";
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return res;

@@ -75,7 +75,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::CalculixOption
   h.work.assign(n, NAN);
   h.energy_error.assign(n, NAN);
   h.constraint_residual.assign(n, NAN);
-  if (std::abs(h.t.back() - rs.t_end) > 1e-6 * rs.t_end + 1e-12)
+  if (!(std::abs(h.t.back() - rs.t_end) <= 1e-6 * rs.t_end + 1e-12))  // a NaN time fails too
     throw ring::IntegrationFailure(ring::IntegrationFailure::Reason::step_too_small, h.t.back(), h,
                                    "calculix: ccx stopped at t = " + std::to_string(h.t.back()) + " s of " +
                                        std::to_string(rs.t_end) + " s; the last lines of its output:\n" +

@@ -72,8 +72,8 @@ std::string modes_text(const ring::ModalResult& m) {
   s << "\nrigid modes: " << m.rigid_modes << "\n\n  mode   omega rad/s        Hz\n";
   for (std::size_t i = 0; i < m.omega.size(); ++i)
     s << fmt::format("  {:4d}  {:>12}  {:>8}\n", i + 1, sig4(m.omega[i]), sig4(m.omega[i] / (2 * M_PI)));
-  s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {:.1e} ({})\n", m.unknowns,
-                   m.seconds, m.max_residual, m.residual_norm);
+  s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {} ({})\n", m.unknowns,
+                   m.seconds, residual_cell(m), m.residual_norm);
   return s.str();
 }
 

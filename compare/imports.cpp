@@ -1,10 +1,10 @@
 #include "compare/imports.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "ring/errors.hpp"
+#include "ring/input_file.hpp"
 #include "ring/sampling.hpp"
 
 namespace cmp {
@@ -12,12 +12,13 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-/// One CSV file read line by line, its failures named by file, line and column.
+/// One CSV file read line by line, its failures named by file, line and column. The file
+/// is checked and read whole first, within `cap` (ring::read_input_file): a FIFO or device
+/// named in a scene is refused unopened, a file over the cap unread.
 class CsvFile {
  public:
-  explicit CsvFile(std::string path) : path_(std::move(path)), in_(path_) {
-    if (!in_) throw ring::InputError(path_, "", "cannot read the imported file (missing or unreadable)");
-  }
+  CsvFile(std::string path, std::size_t cap, const std::string& what)
+      : path_(std::move(path)), in_(ring::read_input_file(path_, cap, what)) {}
   /// The next line that is neither blank nor a comment, split at commas; false at the end.
   bool next(std::vector<std::string>& cells) {
     for (std::string line; std::getline(in_, line);) {
@@ -54,12 +55,12 @@ class CsvFile {
 
  private:
   std::string path_;
-  std::ifstream in_;
+  std::istringstream in_;
   int line_ = 0;
 };
 
 std::vector<ring::ModeShape> read_shapes(const std::string& path, std::size_t modes) {
-  CsvFile f(path);
+  CsvFile f(path, ring::kMaxShapesBytes, "the imported shapes file");
   std::vector<std::string> cells;
   if (!f.next(cells)) f.fail(0, "empty: expected the header angle_deg,radial_1,tangential_1,...");
   if (cells.size() != 1 + 2 * modes)
@@ -104,7 +105,7 @@ std::vector<ring::ModeShape> read_shapes(const std::string& path, std::size_t mo
 }  // namespace
 
 ring::ModalResult read_imported(const ring::ImportedColumn& column) {
-  CsvFile f(column.file);
+  CsvFile f(column.file, ring::kMaxImportBytes, "the imported file");
   std::vector<std::string> cells;
   if (!f.next(cells)) f.fail(0, "empty: expected the header mode,omega (rad/s) or mode,hz");
   if (cells.size() != 2) f.fail(0, "expected the header mode,omega (rad/s) or mode,hz: two columns");
@@ -118,7 +119,7 @@ ring::ModalResult read_imported(const ring::ImportedColumn& column) {
   r.model["file"] = column.file;
   r.model["unit"] = unit == "hz" ? std::string("hz") : std::string("rad/s");
   r.residual_norm = "imported";
-  r.max_residual = std::nan("");  // not known: JSON null, not a perfect 0
+  r.max_residual.reset();  // not known: JSON null, not a perfect 0
   while (f.next(cells)) {
     if (cells.size() != 2) f.fail(0, "expected two values (mode, " + unit + "), got " + std::to_string(cells.size()));
     const double mode = f.number(cells, 1, "the mode number");

@@ -32,6 +32,10 @@ std::string model_value(const ring::ModelValue& v) {
   return s.str();
 }
 
+std::string residual_cell(const ring::ModalResult& m) {
+  return m.max_residual ? fmt::format("{:.1e}", *m.max_residual) : "-";
+}
+
 std::string pct2(double v) {
   const std::string text = fmt::format("{:.2f}", v);
   return text == "-0.00" ? "0.00" : text;

@@ -14,5 +14,8 @@ std::string model_value(const ring::ModelValue& v);
 std::string sig4(double v);
 /// Formats a percentage with two decimals (-0.93).
 std::string pct2(double v);
+/// A modal result's max_residual in a table or a line of text (1.2e-14), or "-" where the
+/// solver reports none (ccx, an imported column).
+std::string residual_cell(const ring::ModalResult& m);
 
 }  // namespace cmp

@@ -75,6 +75,9 @@ void render(const std::string& dir, const std::string& name, const std::string& 
     done += static_cast<std::size_t>(n);
   }
   close(in[1]);
+  // gnuplot's messages, of which a failure shows the last: kept to their last 64 KiB
+  // however much it prints (an external program's log is read from its tail).
+  constexpr std::size_t kKeep = 64 << 10;
   std::string out;
   char buf[512];
   for (ssize_t n; (n = read(out_pipe[0], buf, sizeof buf)) != 0;) {
@@ -83,7 +86,9 @@ void render(const std::string& dir, const std::string& name, const std::string& 
       break;
     }
     out.append(buf, static_cast<std::size_t>(n));
+    if (out.size() > 2 * kKeep) out.erase(0, out.size() - kKeep);
   }
+  if (out.size() > kKeep) out.erase(0, out.size() - kKeep);
   close(out_pipe[0]);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {

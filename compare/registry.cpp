@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "calculix/modes.hpp"
@@ -445,6 +447,18 @@ SolverEntry calculix_entry() {
   return e;
 }
 
+/// Wraps an analysis so that a result holding a NaN or an infinity is a numerical failure
+/// (require_finite), whatever solver and acceptance checks produced it.
+template <class Result, class... Args>
+std::function<Result(const ring::Scene&, Args...)> finite(std::function<Result(const ring::Scene&, Args...)> f) {
+  if (!f) return f;
+  return [f](const ring::Scene& s, Args... args) {
+    Result r = f(s, args...);
+    require_finite(r);
+    return r;
+  };
+}
+
 /// Wraps a nonlinear analysis so that its result names the solver and carries the wall
 /// time even where the solver leaves them out.
 template <class Result>
@@ -510,14 +524,105 @@ std::vector<SolverEntry> make_registry() {
       const SolverEntry copy = e;
       e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
     }
-    e.statics = named_and_timed(e.name, e.statics);
-    e.response = named_and_timed(e.name, e.response);
-    e.buckling = named_and_timed(e.name, e.buckling);
+    e.statics = finite(named_and_timed(e.name, e.statics));
+    e.response = finite(named_and_timed(e.name, e.response));
+    e.buckling = finite(named_and_timed(e.name, e.buckling));
+    e.modes = finite(e.modes);
   }
   return v;
 }
 
+/// A number as a message shows it (270, 1e+300, nan).
+std::string text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+/// Throws ring::NumericalError "<solver>: <what> is <x>, not a finite number" for the first
+/// value of `values` that is not finite; `what(i)` names the i-th.
+template <class Name>
+void finite_values(const std::string& solver, const std::vector<double>& values, Name&& what) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw ring::NumericalError((solver.empty() ? std::string("result") : solver) + ": " + what(i) + " is " +
+                                 text(values[i]) + ", not a finite number (the model's values overflowed "
+                                 "or the solve broke down; nothing is printed as a result)");
+}
+
+void finite_shapes(const std::string& solver, const std::vector<ring::ModeShape>& shapes, const std::string& what) {
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    auto at = [&](const char* part) {
+      return [&, part](std::size_t s) {
+        return what + " " + std::to_string(k + 1) + "'s " + part + " displacement at " +
+               std::to_string(static_cast<int>(ring::station_angle(static_cast<int>(s)))) + " deg";
+      };
+    };
+    finite_values(solver, shapes[k].radial, at("radial"));
+    finite_values(solver, shapes[k].tangential, at("tangential"));
+  }
+}
+
+void finite_points(const std::string& solver, const std::vector<ring::PointDisplacement>& points,
+                   const std::string& where) {
+  for (const auto& p : points) {
+    const std::vector<double> u = {p.ux, p.uy};
+    finite_values(solver, u, [&](std::size_t i) {
+      return std::string(i ? "uy" : "ux") + " at " + text(p.angle) + " deg" + where;
+    });
+  }
+}
+
 }  // namespace
+
+void require_finite(const ring::ModalResult& r) {
+  finite_values(r.solver, r.omega, [](std::size_t i) { return "the frequency of mode " + std::to_string(i + 1); });
+  if (r.max_residual)
+    finite_values(r.solver, {*r.max_residual}, [](std::size_t) { return std::string("the max eigen-residual"); });
+  finite_shapes(r.solver, r.shapes, "mode");
+}
+
+void require_finite(const ring::BucklingResult& r) {
+  finite_values(r.solver, r.factors, [](std::size_t i) { return "critical load factor " + std::to_string(i + 1); });
+  finite_shapes(r.solver, r.shapes, "buckling mode");
+}
+
+void require_finite(const ring::StaticResult& r) {
+  finite_points(r.solver, r.displacements, "");
+  finite_values(r.solver, r.node_x, [](std::size_t i) { return "x of node " + std::to_string(i + 1); });
+  finite_values(r.solver, r.node_y, [](std::size_t i) { return "y of node " + std::to_string(i + 1); });
+  for (std::size_t k = 0; k < r.path.size(); ++k) {
+    const ring::PathPoint& p = r.path[k];
+    const std::string at = " at path point " + std::to_string(k + 1);
+    finite_values(r.solver, {p.load_factor, p.ovalisation}, [&](std::size_t i) {
+      return (i ? "the ovalisation" : "the load factor") + at;
+    });
+    finite_points(r.solver, p.displacements, at);
+    finite_values(r.solver, p.node_x, [&](std::size_t i) { return "x of node " + std::to_string(i + 1) + at; });
+    finite_values(r.solver, p.node_y, [&](std::size_t i) { return "y of node " + std::to_string(i + 1) + at; });
+  }
+}
+
+void require_finite(const ring::TimeHistory& r) {
+  finite_values(r.solver, r.t, [](std::size_t i) { return "the time of step " + std::to_string(i); });
+  for (std::size_t p = 0; p < r.ux.size() && p < r.record_angles.size(); ++p) {
+    auto at = [&](const char* c) {
+      return [&, c](std::size_t k) {
+        return std::string(c) + " at " + text(r.record_angles[p]) + " deg, step " + std::to_string(k);
+      };
+    };
+    finite_values(r.solver, r.ux[p], at("ux"));
+    if (p < r.uy.size()) finite_values(r.solver, r.uy[p], at("uy"));
+  }
+  for (std::size_t k = 0; k < r.snapshot_x.size(); ++k) {
+    auto at = [&](const char* c) {
+      return [&, c](std::size_t i) { return std::string(c) + " of node " + std::to_string(i + 1) + " in snapshot " +
+                                            std::to_string(k + 1); };
+    };
+    finite_values(r.solver, r.snapshot_x[k], at("x"));
+    if (k < r.snapshot_y.size()) finite_values(r.solver, r.snapshot_y[k], at("y"));
+  }
+}
 
 const std::vector<SolverEntry>& registry() {
   static const std::vector<SolverEntry> r = make_registry();
@@ -567,6 +672,11 @@ ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
 }
 
 void check_scene(const ring::Scene& scene) {
+  // Values whose products overflow are refused before any solver runs (the rule:
+  // ring/spec.hpp, scale_violation): a ring of E = 1e300 Pa solved to NaN, not to an error.
+  // Here and not in the reader: a scene is valid TOML with valid values; that no solver's
+  // arithmetic holds it is a refusal of the solvers, like their own checks below.
+  if (const auto v = ring::scale_violation(scene.ring)) throw ring::InputError(scene.file, v->key, v->what);
   // One analysis of one solver; a std::invalid_argument names the solver's key.
   auto check = [&](const std::function<void(const ring::Scene&)>& f, const ring::Scene& s, const std::string& what) {
     if (f) as_input_error(s, what, [&] { f(s); });

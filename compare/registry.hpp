@@ -97,9 +97,11 @@ ring::Scene load_scene(const std::string& path, const std::vector<std::string>& 
 ring::Scene parse_scene(const std::string& toml_text, const std::string& name,
                         const std::vector<std::string>& overrides = {});
 
-/// Every solver's checks (SolverEntry::check_*) for the analyses the scene runs with it,
-/// and the reference solver's for the references it asks for: the scene is refused
-/// (ring::InputError naming the solver or analysis, exit 2) before any solver runs.
+/// The model's scales (ring::scale_violation: values whose products overflow, named by
+/// their key), then every solver's checks (SolverEntry::check_*) for the analyses the scene
+/// runs with it, and the reference solver's for the references it asks for: the scene is
+/// refused (ring::InputError naming the key, solver or analysis, exit 2) before any solver
+/// runs.
 void check_scene(const ring::Scene& scene);
 /// One solver's modal checks (SolverEntry::check_modes) on the scene, as check_scene runs
 /// them for its columns: for `modes --solver NAME` on a solver the scene does not list.
@@ -112,6 +114,19 @@ ring::Scene reference_scene(const ring::Scene& scene);
 /// theory (SolverEntry::theory; unchanged for a solver without one). The registry's
 /// entries apply it themselves; O(size of the scene), a copy.
 ring::Scene model_scene(const ring::Scene& scene, const SolverEntry& e);
+
+/// No NaN or infinity is a result: each throws ring::NumericalError (exit 3) naming the
+/// solver and the first value of the result that is not finite (its quantity, mode or
+/// recorded point, and step or station). Every analysis of the registry's entries passes
+/// through them, so a solver's overflow is reported, never printed. Checked: frequencies,
+/// max_residual (where reported), shapes; load factors; displacements, node positions and
+/// path points; the time history's times and displacements and its snapshots (its energy
+/// columns are the energy guard's, ring/energy_guard.hpp, and NaN in ccx's, which computes
+/// none). O(size of the result).
+void require_finite(const ring::ModalResult& r);
+void require_finite(const ring::BucklingResult& r);
+void require_finite(const ring::StaticResult& r);
+void require_finite(const ring::TimeHistory& r);
 
 /// The `count` lowest elastic modes of a solver with the scene's options.
 ring::ModalResult solve_modes(const ring::Scene& scene, const std::string& name, int count);

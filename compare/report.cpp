@@ -29,7 +29,7 @@ nlohmann::json modes_json_value(const ring::ModalResult& m, bool with_shapes) {
   j["omega"] = m.omega;
   j["seconds"] = m.seconds;
   j["unknowns"] = m.unknowns;
-  j["max_residual"] = m.max_residual;
+  j["max_residual"] = m.max_residual ? nlohmann::json(*m.max_residual) : nlohmann::json();  // null: none reported
   j["residual_norm"] = m.residual_norm;
   if (m.error_estimate > 0) j["error_estimate"] = m.error_estimate;
   if (with_shapes) {
@@ -106,8 +106,8 @@ void write_report(const std::string& dir, const RunReport& r) {
     for (const auto& m : all) {
       std::ostringstream model;
       for (const auto& [k, v] : m.model) model << k << "=" << model_value(v) << " ";
-      md << fmt::format("| {} | {}| {} | {} | {:.3g} | {:.1e} | {} |\n", m.solver, model.str(), m.rigid_modes,
-                        m.unknowns, m.seconds, m.max_residual, m.residual_norm);
+      md << fmt::format("| {} | {}| {} | {} | {:.3g} | {} | {} |\n", m.solver, model.str(), m.rigid_modes,
+                        m.unknowns, m.seconds, residual_cell(m), m.residual_norm);
       put("modes_" + m.solver + ".json", modal_json(m, true));
       put("modes_" + m.solver + ".csv", modal_csv(m));
       if (!m.shapes.empty()) put("shapes_" + m.solver + ".csv", shapes_csv(m));

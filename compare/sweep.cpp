@@ -1,7 +1,10 @@
 #include "compare/sweep.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -27,6 +30,7 @@
 #include "compare/sweep_mpi.hpp"
 #include "compare/table.hpp"
 #include "ring/errors.hpp"
+#include "ring/input_file.hpp"
 
 namespace cmp {
 namespace {
@@ -193,11 +197,9 @@ std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
     const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
     const std::function<double(std::size_t)>& expected_rows) {
   std::map<std::vector<std::string>, std::vector<SweepRow>> done;
-  std::ifstream f(file, std::ios::binary);
-  if (!f) return done;  // nothing to resume: every case runs
-  std::stringstream all;
-  all << f.rdbuf();
-  const std::string text = all.str();
+  struct stat st;
+  if (stat(file.c_str(), &st) != 0 && errno == ENOENT) return done;  // nothing to resume: every case runs
+  const std::string text = ring::read_input_file(file, ring::kMaxResumeBytes, "the --resume table (sweep.csv)");
   const bool cut = !text.empty() && text.back() != '\n';
   std::vector<std::string> lines;
   for (std::size_t start = 0; start < text.size();) {

@@ -59,7 +59,9 @@ std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>
 /// their values: a case of `cases` is kept only if every row it would have is there
 /// (`expected_rows(i)` for case i) and ok. A missing file keeps nothing; a last line cut
 /// short (a crash, a full disk) drops its case; any other malformed line or value is a
-/// ring::InputError naming the file and the line.
+/// ring::InputError naming the file and the line, and so is a file that is not a regular
+/// file or is over ring::kMaxResumeBytes (ring::read_input_file: checked before it is
+/// opened).
 std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
     const std::string& file, const std::vector<std::string>& keys, const std::vector<std::vector<std::string>>& cases,
     const std::function<double(std::size_t)>& expected_rows);

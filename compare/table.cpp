@@ -86,8 +86,12 @@ std::string header(const Table& t, const Column& c) {
   return label(c.solver) + (mixed_theories(t) && !c.theory.empty() ? " (" + c.theory + ")" : "");
 }
 
-/// A difference or error, or "unlike" where a pairing below kWeakMac made it meaningless.
-std::string pct_cell(double v) { return std::isnan(v) ? "unlike" : pct2(v); }
+/// True when row i of the column has a mode (Column::mode).
+bool paired(const Column& c, int i) { return c.mode[i] > 0; }
+
+/// A difference or error, or "unlike" where a pairing below kWeakMac made it meaningless,
+/// or empty where a column has no mode in that row (nothing was compared).
+std::string pct_cell(double v, bool compared) { return !compared ? "" : std::isnan(v) ? "unlike" : pct2(v); }
 
 /// Rows of cells; the first row is the header.
 std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
@@ -109,22 +113,27 @@ std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
     std::vector<std::string> r = {std::to_string(i + 1)};
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       const Column& col = t.columns[c];
-      std::string v = sig4(col.omega[i]);
-      if (with_flags && col.mode[i] != i + 1) v += "*";
-      if (with_flags && c > 0 && col.subspace[i]) v += "=";
-      if (with_flags && weak(col.mac[i])) v += "?";
+      std::string v;
+      if (paired(col, i)) {
+        v = sig4(col.omega[i]);
+        if (with_flags && col.mode[i] != i + 1) v += "*";
+        if (with_flags && c > 0 && col.subspace[i]) v += "=";
+        if (with_flags && weak(col.mac[i])) v += "?";
+      }
       r.push_back(v);
-      if (c > 0) r.push_back(pct_cell(col.diff_pct[i]));
-      if (t.reference) r.push_back(pct_cell(col.error_pct[i]));
+      if (c > 0) r.push_back(pct_cell(col.diff_pct[i], paired(col, i) && paired(t.columns.front(), i)));
+      if (t.reference) r.push_back(pct_cell(col.error_pct[i], paired(col, i) && paired(*t.reference, i)));
     }
     if (t.reference)
-      r.push_back(sig4(t.reference->omega[i]) + (with_flags && t.reference->subspace[i] ? "=" : "") +
-                  (with_flags && weak(t.reference->mac[i]) ? "?" : ""));
+      r.push_back(paired(*t.reference, i) ? sig4(t.reference->omega[i]) +
+                                                (with_flags && t.reference->subspace[i] ? "=" : "") +
+                                                (with_flags && weak(t.reference->mac[i]) ? "?" : "")
+                                          : "");
     if (!t.paper.empty())
       for (const auto& col : t.columns) {
         const auto p = i < static_cast<int>(t.paper.size()) ? paper_value(t.paper[i], col.solver) : std::nullopt;
         r.push_back(p ? sig4(*p) : "");
-        r.push_back(p ? pct2((col.omega[i] - *p) / *p * 100.0) : "");
+        r.push_back(p && paired(col, i) ? pct2((col.omega[i] - *p) / *p * 100.0) : "");
       }
     out.push_back(r);
   }
@@ -134,7 +143,7 @@ std::vector<std::vector<std::string>> cells(const Table& t, bool with_flags) {
 bool any_reordered(const Table& t) {
   for (const auto& c : t.columns)
     for (int i = 0; i < t.rows; ++i)
-      if (c.mode[i] != i + 1) return true;
+      if (paired(c, i) && c.mode[i] != i + 1) return true;
   return false;
 }
 
@@ -297,17 +306,26 @@ std::string format_csv(const Table& t) {
     s << i + 1;
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       const Column& col = t.columns[c];
-      s << "," << col.omega[i] << "," << col.mode[i] << "," << col.mac[i];
-      auto cell = [&](double v) { s << ","; if (!std::isnan(v)) s << v; };  // NaN: unlike modes, no datum
+      // NaN: no datum (no mode in this row, no MAC without shapes, unlike modes): empty.
+      auto cell = [&](double v) { s << ","; if (!std::isnan(v)) s << v; };
+      cell(col.omega[i]);
+      s << ",";
+      if (paired(col, i)) s << col.mode[i];
+      cell(col.mac[i]);
       if (c > 0) cell(col.diff_pct[i]);
       if (t.reference) cell(col.error_pct[i]);
     }
-    if (t.reference) s << "," << t.reference->omega[i];
+    if (t.reference) {
+      s << ",";
+      if (paired(*t.reference, i)) s << t.reference->omega[i];
+    }
     if (!t.paper.empty())
       for (const auto& col : t.columns) {
         const auto p = i < static_cast<int>(t.paper.size()) ? paper_value(t.paper[i], col.solver) : std::nullopt;
-        if (p) s << "," << *p << "," << (col.omega[i] - *p) / *p * 100.0;
-        else s << ",,";
+        s << ",";
+        if (p) s << *p;
+        s << ",";
+        if (p && paired(col, i)) s << (col.omega[i] - *p) / *p * 100.0;
       }
     s << "\n";
   }
@@ -321,6 +339,7 @@ std::string format_json(const Table& t) {
     r["mode"] = i + 1;
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       const Column& col = t.columns[c];
+      if (!paired(col, i)) continue;  // no mode in this row: its keys left out
       r[col.solver] = col.omega[i];
       r[col.solver + "_mode"] = col.mode[i];
       if (std::isfinite(col.mac[i])) r[col.solver + "_mac"] = col.mac[i];
@@ -332,7 +351,7 @@ std::string format_json(const Table& t) {
           r[col.solver + "_vs_paper_pct"] = (col.omega[i] - *p) / *p * 100.0;
         }
     }
-    if (t.reference) r["reference"] = t.reference->omega[i];
+    if (t.reference && paired(*t.reference, i)) r["reference"] = t.reference->omega[i];
     rows.push_back(r);
   }
   nlohmann::json j;

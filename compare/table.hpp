@@ -17,8 +17,14 @@ namespace cmp {
 struct Column {
   std::string solver;
   std::vector<double> omega;      ///< [row], rad/s (the paired mode of this solver)
-  std::vector<int> mode;          ///< [row], 1-based mode number in this solver's own order
-  std::vector<double> mac;        ///< [row], MAC with the base mode (1 for the base; see pair_modes)
+  /// [row], 1-based mode number in this solver's own order; 0: no mode of this column pairs
+  /// with the row (an imported column with fewer modes than modes.count). Then omega, mac,
+  /// diff_pct and error_pct of the row hold NaN, and every format leaves them empty (text,
+  /// Markdown and CSV: an empty cell; JSON: the key left out) instead of printing NaN.
+  std::vector<int> mode;
+  /// [row], MAC with the base mode (1 for the base; see pair_modes); NaN where the modes
+  /// paired by order (a column without shapes): no MAC, an empty cell.
+  std::vector<double> mac;
   std::vector<bool> subspace;     ///< [row], paired against a (near-)degenerate cluster
   std::vector<double> diff_pct;   ///< [row], (base - this) / this * 100 (empty for the base; NaN: unlike)
   std::vector<double> error_pct;  ///< [row], (this - reference) / reference * 100 (if a reference; NaN: unlike)

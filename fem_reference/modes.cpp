@@ -3,6 +3,7 @@
 #include "fem_reference/checks.hpp"
 #include "fem_reference/ring_model.hpp"
 #include "fem_reference/timoshenko_model.hpp"
+#include "modal/modes.hpp"
 
 namespace fem::detail {
 
@@ -88,7 +89,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
     max_res = 0.0;
     r.shapes.clear();
     for (unsigned int i = rigid; i < wanted; ++i) {
-      max_res = std::max(max_res, pairs.residual[i]);
+      max_res = modal::worst(max_res, pairs.residual[i]);
       const auto f = model.expand(pairs.q[i]);
       r.shapes.push_back(model.sample(f));
       if (full) full->push_back(f);
@@ -109,7 +110,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
     run(base, lambda1, res1, r, nullptr);
     run(2.0 * base, lambda, max_res, r, keep_full ? &out.full : nullptr);
     for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = 2.0 * lambda[i] - lambda1[i];
-    max_res = std::max(max_res, res1);
+    max_res = modal::worst(max_res, res1);
   }
   for (double l : lambda) {
     if (!(l > 0)) throw ring::NumericalError("fem: non-positive elastic eigenvalue " + std::to_string(l));

@@ -7,6 +7,7 @@
 
 #include "fem_reference/buckling.hpp"
 #include "modal/buckling.hpp"
+#include "modal/modes.hpp"
 
 namespace fem::detail {
 
@@ -100,7 +101,7 @@ Pairs refine(const LinearModel& model, const SparseDirectUMFPACK& P_inverse, con
         for (unsigned int i = 0; i < N; ++i) xpx += X(i, k) * PX(i, k);
         const double rz = r * z;
         p.residuals[k] = rz >= 0 && xpx > 0 ? std::sqrt(rz / xpx) : std::numeric_limits<double>::infinity();
-        worst = std::max(worst, p.residuals[k]);
+        worst = modal::worst(worst, p.residuals[k]);
         for (unsigned int i = 0; i < N; ++i) next(i, k) -= z[i];
       } else {
         for (unsigned int i = 0; i < N; ++i) r[i] = QX(i, k);

@@ -94,7 +94,7 @@ Loaded loaded_once(const ring::RingSpec& spec, const Setup& setup, const ring::S
     out.omega2.push_back(w2);
     // refine()'s sqrt(r^T P^-1 r / x^T P x) -> the modes' ||r||_* / (||T x||_* + w2 ||M x||_*):
     // for a pair, x^T P x = (w2 + s) x^T M x and the denominator is 2 w2 sqrt(x^T M x / (w2 + s)).
-    out.residual = std::max(out.residual, pairs.residuals[k] * (w2 + s) / (2.0 * w2));
+    out.residual = modal::worst(out.residual, pairs.residuals[k] * (w2 + s) / (2.0 * w2));
     for (unsigned int i = 0; i < N; ++i) x[i] = pairs.vectors(i, k);
     out.shapes.push_back(model.sample(model.expand(x)));
   }
@@ -119,7 +119,7 @@ Loaded loaded(const ring::RingSpec& spec, Setup setup, bool extensible, const ri
                                  " <= 0 for mode " + std::to_string(i + 1) +
                                  ": the loaded ring is at or past a critical load");
   }
-  hi.residual = std::max(hi.residual, lo.residual);
+  hi.residual = modal::worst(hi.residual, lo.residual);
   return hi;
 }
 

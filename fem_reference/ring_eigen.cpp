@@ -3,6 +3,7 @@
 #include <deal.II/base/parallel.h>
 
 #include "fem_reference/ring_model.hpp"
+#include "modal/modes.hpp"
 #include "modal/subspace.hpp"
 
 namespace fem::detail {
@@ -140,7 +141,7 @@ EigenPairs LinearModel::refine(EigenPairs raw, unsigned int wanted, const Sparse
     // residual divides by lambda ~ 0 (the lowest `rigid` pairs: kRigidSeparation), the
     // guard pairs converge last.
     double worst = 0.0;
-    for (unsigned int k = rigid; k < std::min(wanted, m); ++k) worst = std::max(worst, raw.residual[k]);
+    for (unsigned int k = rigid; k < std::min(wanted, m); ++k) worst = modal::worst(worst, raw.residual[k]);
     return worst;
   };
   ritz();

@@ -336,7 +336,7 @@ Eigenpairs solve(const Model& m, int count, Method method) {
                                std::to_string(modal::kRigidThreshold) + " EI/(rho A R^4), the supports leave " +
                                std::to_string(m.expected_rigid));
   const std::vector<double> res = residuals(m, p);
-  for (std::size_t i = p.rigid; i < res.size(); ++i) p.max_residual = std::max(p.max_residual, res[i]);
+  for (std::size_t i = p.rigid; i < res.size(); ++i) p.max_residual = modal::worst(p.max_residual, res[i]);
   return p;
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "modal/modes.hpp"
 #include "ring/errors.hpp"
 
 namespace modal {
@@ -84,7 +85,7 @@ LoadedModes loaded_modes(const Eigen::MatrixXd& T, const Eigen::MatrixXd& M, dou
       throw ring::NumericalError(who + ": omega^2 = " + std::to_string(w2) +
                                  " <= 0 at the equilibrium: the loaded ring is at or past a critical load");
     const Eigen::VectorXd y = llt.matrixU().solve(eig.eigenvectors().col(r - 1 - k));
-    out.max_residual = std::max(out.max_residual, (Ts * y - w2 * M * y).norm() / ((Ts * y).norm() + w2 * (M * y).norm()));
+    out.max_residual = worst(out.max_residual, (Ts * y - w2 * M * y).norm() / ((Ts * y).norm() + w2 * (M * y).norm()));
     out.omega2(k) = w2;
     out.vectors.col(k) = y;
   }

@@ -77,14 +77,19 @@ void assemble(ring::ModalResult& result, const std::string& solver, const Eigen:
   result.rigid_modes = static_cast<int>(selection.rigid.size());
   result.omega.clear();
   for (int i : selection.elastic) result.omega.push_back(std::sqrt(omega2[i]));
-  result.max_residual = relative.empty() ? 0.0 : *std::max_element(relative.begin(), relative.end());
+  double largest = 0.0;
+  for (double r : relative) largest = worst(largest, r);
+  result.max_residual = largest;
 }
 
 void require_eigenpairs(const ring::ModalResult& result) {
-  if (result.max_residual <= kAcceptedResidual) return;
+  // NaN fails (it is no answer), and so does a result that reports no residual.
+  if (result.max_residual && *result.max_residual <= kAcceptedResidual) return;
   std::ostringstream m;
-  m << result.solver << ": the computed pairs are not eigenpairs (largest relative residual " << result.max_residual
-    << ", accepted " << kAcceptedResidual << ")";
+  m << result.solver << ": the computed pairs are not eigenpairs (largest relative residual ";
+  if (result.max_residual) m << *result.max_residual;
+  else m << "not computed";
+  m << ", accepted " << kAcceptedResidual << ")";
   throw ring::NumericalError(m.str());
 }
 

@@ -356,7 +356,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     const double x_norm = path->products(sol, k, kx, mx);
     const modal::PairResidual pr = modal::pair_residual(kx, mx, omega2[sel.elastic[k]], x_norm, normK, normM);
     relative.push_back(pr.relative);
-    sol.backward_error = std::max(sol.backward_error, pr.backward);
+    sol.backward_error = modal::worst(sol.backward_error, pr.backward);
   }
   ring::ModalResult& res = sol.result;
   modal::assemble(res, "multibody", omega2, sel, relative);

@@ -4,6 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,8 @@ struct Modes {
   int rigid_modes = 0;
   py::object omega, shapes, stations_deg;
   long long unknowns = 0;
-  double seconds = 0.0, max_residual = 0.0, error_estimate = 0.0;
+  double seconds = 0.0, error_estimate = 0.0;
+  std::optional<double> max_residual;  ///< None where the solver reports none (ccx, imports)
   std::string residual_norm;
 };
 Modes to_python(const ring::ModalResult& m);

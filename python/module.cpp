@@ -181,7 +181,8 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("seconds", &Modes::seconds, "Solver wall time, s.")
       .def_readonly("max_residual", &Modes::max_residual,
                     "Largest relative eigen-residual ||Kx - w^2 Mx|| / (||Kx|| + w^2 ||Mx||) of the returned\n"
-                    "modes, in the norm residual_norm names (README, `modes --json`).")
+                    "modes, in the norm residual_norm names (README, `modes --json`); None where the solver\n"
+                    "reports none (calculix).")
       .def_readonly("residual_norm", &Modes::residual_norm)
       .def_readonly("error_estimate", &Modes::error_estimate,
                     "Estimated remaining relative error of a converged reference (0: not estimated).")

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -50,8 +51,10 @@ struct ModalResult {
   /// count. Rigid pairs are not included. For a double-precision vector this ratio has a
   /// rounding floor ~eps ||K|| / w^2 that grows with the discretization whatever the
   /// solver (modal/modes.hpp); a solver whose floor would hide every digit reports the
-  /// same ratio in another norm and names it in residual_norm.
-  double max_residual = 0.0;
+  /// same ratio in another norm and names it in residual_norm. Empty where the solver
+  /// reports none (ccx, an imported column): printed empty or "-" and written as JSON null,
+  /// never as NaN or as a perfect 0.
+  std::optional<double> max_residual = 0.0;
   /// The norm of max_residual: kResidual2Norm (the definition above), or the solver's own,
   /// documented where it is computed ("dual norm of K - sigma M": fem_reference/modes.hpp).
   std::string residual_norm = kResidual2Norm;

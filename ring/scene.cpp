@@ -7,12 +7,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <set>
 #include <stdexcept>
 #include <sstream>
-
-#include <sys/stat.h>
 
 #include <toml++/toml.h>
 
@@ -1097,21 +1094,9 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
 }
 
 std::string read_scene_text(const std::string& path) {
-  struct stat st;
-  if (stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw InputError(path, "", "is a folder; expected a scene file (TOML)");
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path, "", "cannot read the scene file (missing or unreadable)");
-  // Read at most one byte past the limit: a scene larger than that (or an endless
-  // device) is refused instead of read.
-  std::string text(kMaxSceneBytes + 1, '\0');
-  f.read(&text[0], static_cast<std::streamsize>(text.size()));
-  if (f.bad()) throw InputError(path, "", "cannot read the scene file");
-  text.resize(static_cast<std::size_t>(f.gcount()));
-  if (text.size() > kMaxSceneBytes)
-    throw InputError(path, "", "is larger than " + std::to_string(kMaxSceneBytes / 1024) +
-                                   " KiB; a scene is a short TOML file");
-  return text;
+  // A scene may come down a pipe (/dev/stdin, a FIFO: README, "ringvib sweep"): the user
+  // named it on the command line; the cap bounds an endless device.
+  return read_input_file(path, kMaxSceneBytes, "the scene file", InputKind::stream);
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema) {

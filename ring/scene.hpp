@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ring/analysis.hpp"
+#include "ring/input_file.hpp"
 #include "ring/spec.hpp"
 
 namespace ring {
@@ -128,9 +129,9 @@ struct Scene {
   bool runs_buckling(const std::string& solver) const;
 };
 
-/// Largest scene file read (bytes), and the deepest nesting of tables and arrays (dotted-key
-/// parts, [table] header parts, open arrays and inline tables) at any point of it.
-constexpr std::size_t kMaxSceneBytes = 1 << 20;
+/// The deepest nesting of tables and arrays (dotted-key parts, [table] header parts, open
+/// arrays and inline tables) at any point of a scene; its largest size is kMaxSceneBytes
+/// (ring/input_file.hpp).
 constexpr std::size_t kMaxNesting = 1000;
 
 /// Refuses TOML text nested deeper than kMaxNesting at some point (InputError naming `name`
@@ -148,8 +149,8 @@ void check_nesting(const std::string& text, const std::string& name);
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, const SceneSchema& schema);
 
 /// The text of the scene file at `path` (at most kMaxSceneBytes; a FIFO or /dev/stdin is
-/// read once), for a caller that parses it several times (a sweep's cases). Throws
-/// InputError naming the path.
+/// read once: read_input_file's InputKind::stream), for a caller that parses it several
+/// times (a sweep's cases). Throws InputError naming the path.
 std::string read_scene_text(const std::string& path);
 
 /// The elements of a TOML array given as text (a `--vary` list: "[v1, v2, ...]", which may

@@ -3,6 +3,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace ring {
@@ -124,6 +125,59 @@ void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who) {
   refuse_keys(spec.terms_beyond_paper(), who);
 }
 
+
+std::optional<ScaleViolation> scale_violation(const RingSpec& spec) {
+  auto text = [](double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  };
+  const std::string window = "[" + text(kMinScale) + ", " + text(kMaxScale) + "]";
+  // `!(x <= hi)`: a NaN scale is outside too.
+  auto outside = [](double x, double lo) { return !(x >= lo && x <= kMaxScale); };
+  const double R = spec.radius, rhoA_ = spec.rhoA();
+  const std::string ring_keys = "ring.E, ring.rho, ring.section, ring.radius";
+  const std::pair<const char*, double> own[] = {{"EI/R^4 (N/m^2)", spec.EI() / std::pow(R, 4)},
+                                                {"EA/R^2 (N/m^2)", spec.EA() / (R * R)},
+                                                {"rho A (kg/m)", rhoA_},
+                                                {"EI/(rho A R^4) (1/s^2)", spec.EI() / (rhoA_ * std::pow(R, 4))}};
+  for (const auto& [name, x] : own)
+    if (outside(x, kMinScale))
+      return ScaleViolation{ring_keys, std::string("the ring's ") + name + " = " + text(x) + " is outside " + window +
+                                           ", the magnitudes the solvers' arithmetic holds (products of the model "
+                                           "overflow or underflow); give the ring in SI units of ordinary size"};
+  // A term: at most kMaxScale per metre of ring, and over the ring's mass per metre.
+  auto term = [&](const std::string& key, const char* formula, double per_metre, bool stiffness) {
+    const char* unit = stiffness ? "N/m^2" : "kg/m";
+    std::optional<ScaleViolation> v;
+    if (outside(per_metre, 0.0))
+      v = ScaleViolation{key, "per metre of ring (" + std::string(formula) + ") it is " + text(per_metre) + " " + unit +
+                                  ", above " + text(kMaxScale) + ", the largest scale the solvers' arithmetic holds"};
+    else if (stiffness && outside(per_metre / rhoA_, 0.0))
+      v = ScaleViolation{key, "its frequency scale over the ring's mass (" + std::string(formula) + ")/(rho A) is " +
+                                  text(per_metre / rhoA_) + " 1/s^2, above " + text(kMaxScale) +
+                                  ", the largest scale the solvers' arithmetic holds"};
+    return v;
+  };
+  std::optional<ScaleViolation> v;
+  if ((v = term("foundation.radial", "k", spec.foundation.radial, true))) return v;
+  if ((v = term("foundation.tangential", "k", spec.foundation.tangential, true))) return v;
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
+    const Spring& s = spec.supports.springs[i];
+    const std::string key = "supports.springs[" + std::to_string(i + 1) + "]";
+    if ((v = term(key + ".kx", "kx/R", s.kx / R, true)) || (v = term(key + ".ky", "ky/R", s.ky / R, true)) ||
+        (v = term(key + ".kr", "kr/R^3", s.kr / (R * R * R), true)))
+      return v;
+  }
+  for (std::size_t i = 0; i < spec.masses.size(); ++i) {
+    const PointMass& m = spec.masses[i];
+    const std::string key = "masses[" + std::to_string(i + 1) + "]";
+    if ((v = term(key + ".mass", "mass/R", m.mass / R, false)) ||
+        (v = term(key + ".inertia", "inertia/R^3", m.inertia / (R * R * R), false)))
+      return v;
+  }
+  return std::nullopt;
+}
 
 int static_rigid_modes(const RingSpec& spec, const Loads& loads) {
   const int rigid = spec.rigid_modes();

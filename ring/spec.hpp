@@ -202,6 +202,33 @@ void refuse_timoshenko(const RingSpec& spec, const std::string& who);
 void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);
 
 
+/// The window of magnitudes that the solvers' arithmetic holds, for every scale of the model
+/// (check_scales). Why 1e100: a discretized model multiplies a scale by at most
+/// (n / 2 pi)^4 <= 1e30 (a fourth difference over n <= 1e8 pieces), and the residuals, norms
+/// and Gram products square their entries, so an entry must stay within [1e-154, 1e154] for
+/// its square to remain a normal double: 1e100 x 1e30 = 1e130 and 1e-100 / 1e30 = 1e-130
+/// leave a factor 1e24 to spare. A ring outside it (E = 1e300 Pa, a foundation of 1e200
+/// N/m^2) overflowed to NaN residuals that passed as eigenpairs (issue 46).
+constexpr double kMinScale = 1e-100, kMaxScale = 1e100;
+
+/// One scale of the model outside [kMinScale, kMaxScale]: the scene key (or keys) that set
+/// it and what was found and expected.
+struct ScaleViolation {
+  std::string key;
+  std::string what;
+};
+
+/// The first scale of `spec` outside the window, or nothing. The rule (README, "Scene
+/// reference"), in SI units:
+/// - the ring's own scales, EI/R^4 and EA/R^2 (N/m^2), rho A (kg/m) and its squared
+///   frequency scale EI/(rho A R^4) (1/s^2), lie within [kMinScale, kMaxScale];
+/// - each term added to the ring is at most kMaxScale as a stiffness or mass per metre of
+///   ring, and so is its frequency scale against the ring's mass: the foundation moduli k
+///   (N/m^2, and k/(rho A)), each spring's kx/R, ky/R, kr/R^3 (N/m^2, and over rho A), each
+///   point mass's m/R and inertia/R^3 (kg/m). A term may be as small as it likes (0 is none).
+/// O(supports + masses).
+std::optional<ScaleViolation> scale_violation(const RingSpec& spec);
+
 /// The rigid motions that a static analysis under `loads` leaves free: spec.rigid_modes(),
 /// less the rotation about a single pin when gravity holds it (the ring hangs from the pin:
 /// the centre lies below it, g . (centre - pin) > 0, so turning raises the centre of mass).

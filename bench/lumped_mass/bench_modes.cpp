@@ -48,7 +48,7 @@ void BM_LumpedModes(benchmark::State& state) {
   }
   state.counters["peak_rss_MB"] = peak_rss_mb();
   state.counters["omega1"] = r.omega[0];
-  state.counters["max_residual"] = r.max_residual;
+  state.counters["max_residual"] = r.max_residual.value();
   state.SetLabel(ring::to_string(o.variant) + (std::get<std::string>(r.model.at("method")) == "dense" ? " dense" : " sparse"));
 }
 

@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "compare/cli.hpp"
 
@@ -78,6 +81,51 @@ TEST(CalculixCli, ACcxThatPrintsAnErrorButExitsZeroIsExit3) {
   EXPECT_EQ(r.code, 3) << r.err;
   EXPECT_NE(r.err.find("at least one fatal error"), std::string::npos) << r.err;
   EXPECT_TRUE(ringtest::empty_dir(f.tmp));
+}
+
+/// Runs `ringvib ARGS` (no shell) with `env`, output to /dev/null: its exit code and its
+/// peak resident set in bytes (the kernel's ru_maxrss of the child).
+std::pair<int, double> run_measured(const std::vector<std::string>& args,
+                                    const std::vector<std::pair<std::string, std::string>>& env) {
+  std::vector<std::string> all = {ringtest::ringvib_path()};
+  all.insert(all.end(), args.begin(), args.end());
+  const pid_t pid = ringtest::spawn(all, env);
+  int status = 0;
+  struct rusage ru {};
+  if (pid < 0 || wait4(pid, &status, 0, &ru) != pid) return {-1, 0.0};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1024.0 * double(ru.ru_maxrss)};  // Linux: KiB
+}
+
+// Issue 46, finding 7: ccx's log was read whole: a ccx writing 200 MB and then failing made
+// ringvib peak at 790 MB to print the last 12 lines. The log is read from its ends; its size
+// must not show in ringvib's peak memory. Oracle: the kernel's peak RSS of the same failing
+// run with a one-line log; 100 MB of log held whole, even once, would add 100 MB, so the
+// 16 MiB allowance (ringvib holds 128 KiB of it) separates the two by a factor 6.
+TEST(CalculixCli, ALongLogIsReadFromItsEndsInBoundedMemory) {
+  Fixture f;
+  const std::vector<std::pair<std::string, std::string>> env = {{"TMPDIR", f.tmp}, {"PATH", f.bin + ":/usr/bin:/bin"}};
+  const std::vector<std::string> args = {"modes", f.scene, "--solver", "calculix"};
+  f.fake_ccx("echo '*ERROR in e_c3d: a fake failure'\nexit 201");
+  const auto [small_code, small_peak] = run_measured(args, env);
+  ASSERT_EQ(small_code, 3);
+  f.fake_ccx("echo ' number of equations'\necho ' 246'\nyes ' iteration 7, residual 1.0e-3' | head -c 100000000\n"
+             "echo\necho '*ERROR in e_c3d: a fake failure after 100 MB'\nexit 201");
+  const auto [big_code, big_peak] = run_measured(args, env);
+  ASSERT_EQ(big_code, 3);
+  EXPECT_LT(big_peak, small_peak + 16.0 * (1 << 20))
+      << "peak " << big_peak / 1e6 << " MB with a 100 MB log, " << small_peak / 1e6 << " MB with one line";
+  // The message still ends with ccx's last lines, and an *ERROR far from either end of a
+  // log whose ccx exited 0 is still found.
+  const auto r = ringvib("modes " + f.scene + " --solver calculix", f.env(f.bin + ":/usr/bin:/bin"));
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("*ERROR in e_c3d: a fake failure after 100 MB"), std::string::npos) << r.err.substr(0, 2000);
+  EXPECT_LT(r.err.size(), 4096u) << "the last 12 lines, not more";
+  f.fake_ccx("yes ' iteration 7' | head -c 50000000\necho\necho '*ERROR in the middle'\n"
+             "yes ' iteration 8' | head -c 50000000\nexit 0");
+  const auto middle = ringvib("modes " + f.scene + " --solver calculix", f.env(f.bin + ":/usr/bin:/bin"));
+  EXPECT_EQ(middle.code, 3) << middle.err.substr(0, 2000);
+  EXPECT_NE(middle.err.find("ccx reported an error"), std::string::npos) << middle.err.substr(0, 2000);
+  EXPECT_TRUE(ringtest::empty_dir(f.tmp)) << ringtest::shell("ls -A " + f.tmp);
 }
 
 TEST(CalculixCli, ACcxOutlastingItsTimeoutIsKilledAndExit3) {

@@ -19,6 +19,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "cli.hpp"
 #include "support/paper.hpp"
@@ -348,6 +349,79 @@ TEST(Files, ASweepsOwnMemoryIsInTheBudget) {
   EXPECT_EQ(ringvib("sweep " + source(kMultibody) + " --vary 'multibody.n=[40, 80, 160]' --max-memory 1e-6 --force -q")
                 .code,
             0);
+}
+
+}  // namespace
+
+namespace {
+
+/// `ringvib ARGS` (no shell) bounded to `seconds`: its exit code, or -1 when it had to be
+/// killed (it blocked or read without end), so that a hang fails the test.
+int bounded_code(const std::vector<std::string>& args, double seconds) {
+  std::vector<std::string> all = {ringtest::ringvib_path()};
+  all.insert(all.end(), args.begin(), args.end());
+  const int status = ringtest::wait_bounded(ringtest::spawn(all), seconds);
+  return status >= 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+const char* kImportRing = R"([ring]
+radius = 10.0
+E = 2.1e11
+rho = 7.8e3
+section = { shape = "circle", diameter = 0.12 }
+[supports]
+pin = 180.0
+[multibody]
+n = 40
+[modes]
+count = 5
+solvers = ["multibody"]
+)";
+
+// Issue 46, finding 3: an imported column was read without bound and unchecked: `file =
+// "/dev/zero"` grew to 4.2 GB, a FIFO blocked open() forever. Every file a scene names
+// (frequencies, shapes) must be a regular file within its cap (README, "Exit codes": 4 MiB
+// and 64 MiB), checked before it is opened: exit 2 naming the file, at once. 5 s bounds a
+// run that reads nothing (the refusals take milliseconds; the probe's hang never ends).
+TEST(Files, ImportedFilesAreRegularFilesWithinTheirCapCheckedBeforeOpening) {
+  const std::string dir = ringtest::temp_dir();
+  ASSERT_EQ(mkfifo((dir + "/fifo.csv").c_str(), 0644), 0);
+  ringtest::write(dir + "/modes.csv", "mode,omega\n1,2.48\n2,3.8\n3,11.3\n4,13.7\n5,27.4\n");
+  // A file one byte over 4 MiB (sparse: no disk) and a shapes file one byte over 64 MiB.
+  ringtest::write(dir + "/big.csv", "mode,omega\n");
+  ringtest::write(dir + "/shapes.csv", "angle_deg");
+  ASSERT_EQ(truncate((dir + "/big.csv").c_str(), (4 << 20) + 1), 0);
+  ASSERT_EQ(truncate((dir + "/shapes.csv").c_str(), (64 << 20) + 1), 0);
+  struct Case {
+    std::string import, names;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"file = \"/dev/zero\"", "/dev/zero: is a character device"},
+           {"file = \"fifo.csv\"", "fifo.csv: is a FIFO"},
+           {"file = \"" + dir + "\"", "is a folder"},
+           {"file = \"big.csv\"", "is 4194305 bytes, larger than the 4 MiB"},
+           {"file = \"modes.csv\", shapes = \"fifo.csv\"", "fifo.csv: is a FIFO"},
+           {"file = \"modes.csv\", shapes = \"/dev/zero\"", "/dev/zero: is a character device"},
+           {"file = \"modes.csv\", shapes = \"shapes.csv\"", "is 67108865 bytes, larger than the 64 MiB"}}) {
+    const std::string scene = dir + "/scene.toml";
+    ringtest::write(scene, std::string(kImportRing) + "[table]\nimport = [{ label = \"ext\", " + c.import + " }]\n");
+    ASSERT_EQ(bounded_code({"table", scene, "-q"}, 5.0), 2) << c.import;
+    expect_input_error(ringvib("table " + scene + " -q"), c.names);
+  }
+  // The regular file within its cap is read.
+  ringtest::write(dir + "/scene.toml", std::string(kImportRing) + "[table]\nimport = [{ label = \"ext\", file = \"modes.csv\" }]\n");
+  EXPECT_EQ(ringvib("table " + dir + "/scene.toml -q").code, 0);
+}
+
+// Issue 46, finding 3: a --resume table was read whole whatever its size. Over its cap
+// (256 MiB; a sparse file, no disk) it is refused naming the cap, before it is read.
+TEST(Files, AResumeTableOverItsCapIsRefusedUnread) {
+  const std::string out = ringtest::temp_dir() + "/s";
+  const std::string scene = source(kMultibody);
+  ASSERT_EQ(ringvib("sweep " + scene + " --vary 'multibody.n=[40, 80]' --out " + out + " -q").code, 0);
+  ASSERT_EQ(truncate((out + "/sweep.csv").c_str(), (256ll << 20) + 1), 0);
+  const auto r = ringvib("sweep " + scene + " --vary 'multibody.n=[40, 80]' --out " + out + " --resume -q");
+  expect_input_error(r, "sweep.csv: is 268435457 bytes, larger than the 256 MiB");
 }
 
 }  // namespace

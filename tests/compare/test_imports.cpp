@@ -4,10 +4,12 @@
 // refused with exit 2 naming the file, the line and the column.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "cli.hpp"
 #include "ring/paper_table.hpp"
@@ -211,6 +213,98 @@ TEST(ImportedColumn, AMissingFileOrAClashingLabelIsExit2) {
   r = ringvib("table " + scene + " -q");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("table.import.label"), std::string::npos) << r.err;
+}
+
+/// Lower-cased, so that "nan", "NaN" and "-nan" are all found.
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// Issue 46, finding 4: an imported column printed NaN where it has no datum: its modes past
+// the file's last (fewer than modes.count) as "nan*  unlike", its MAC as `ext_mac = nan` in
+// every row of table.csv although no shapes were given (paired by order: no MAC), and its
+// max residual as "nan" in report.md (an imported column reports none). The oracle is the
+// README ("Imported columns": fewer modes leave the rest empty) and the exit-code contract
+// (no non-finite number is printed as a result).
+TEST(ImportedColumn, MissingModesMacAndResidualAreEmptyNotNan) {
+  Folder f;
+  std::string five;
+  {
+    std::istringstream all(paper_fe_csv(false));
+    std::string line;
+    for (int k = 0; k < 7 && std::getline(all, line); ++k) five += line + "\n";  // comment, header, modes 1-5
+  }
+  f.put("five.csv", five);
+  const std::string scene = f.put("scene.toml", std::string(kRing) + R"(
+[table]
+base = "multibody"
+import = [{ label = "ext", file = "five.csv" }]
+)");
+  const auto text = ringvib("table " + scene + " -q");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_EQ(lower(text.out).find("nan"), std::string::npos) << text.out;
+  // Rows 6..23 hold the multibody value and nothing in the imported column's cells.
+  std::istringstream lines(text.out);
+  int empty_rows = 0;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream cells(line);
+    std::vector<std::string> c;
+    for (std::string w; cells >> w;) c.push_back(w);
+    if (c.size() == 2 && std::isdigit(static_cast<unsigned char>(c[0][0])) && std::stoi(c[0]) >= 6) ++empty_rows;
+  }
+  EXPECT_EQ(empty_rows, 23 - 5) << text.out;
+
+  const auto csv = ringvib("table " + scene + " --format csv -q");
+  ASSERT_EQ(csv.code, 0) << csv.err;
+  EXPECT_EQ(lower(csv.out).find("nan"), std::string::npos) << csv.out;
+  // mode,multibody,multibody_mode,multibody_mac,ext,ext_mode,ext_mac,ext_diff_pct: row 1 has
+  // the import's value and mode but no MAC; row 6 has none of its cells.
+  std::istringstream rows(csv.out);
+  std::vector<std::string> row(7);
+  for (auto& r : row) std::getline(rows, r);
+  auto split = [](const std::string& line) {
+    std::vector<std::string> c;
+    std::stringstream s(line);
+    for (std::string x; std::getline(s, x, ',');) c.push_back(x);
+    if (!line.empty() && line.back() == ',') c.push_back("");
+    return c;
+  };
+  const auto head = split(row[0]), first = split(row[1]), sixth = split(row[6]);
+  ASSERT_EQ(head.size(), 8u) << row[0];
+  ASSERT_EQ(first.size(), 8u) << row[1];
+  ASSERT_EQ(sixth.size(), 8u) << row[6];
+  EXPECT_EQ(head[6], "ext_mac");
+  EXPECT_EQ(first[5], "1");
+  EXPECT_EQ(first[6], "") << row[1];
+  for (int c = 4; c < 8; ++c) EXPECT_EQ(sixth[c], "") << "column " << head[c] << ": " << row[6];
+
+  const auto json = ringvib("table " + scene + " --format json -q");
+  ASSERT_EQ(json.code, 0) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_TRUE(j["rows"][0].contains("ext"));
+  EXPECT_FALSE(j["rows"][0].contains("ext_mac")) << j["rows"][0];
+  EXPECT_FALSE(j["rows"][5].contains("ext")) << j["rows"][5];
+  EXPECT_EQ(json.out.find("null"), std::string::npos) << json.out;
+
+  const std::string out = f.dir + "/out";
+  const auto run = ringvib("run " + scene + " --out " + out + " -q");
+  ASSERT_EQ(run.code, 0) << run.err;
+  for (const char* name : {"table.csv", "report.md", "modes_ext.json", "modes_ext.csv"}) {
+    const std::string written = file_text(out + "/" + name);
+    EXPECT_FALSE(written.empty()) << name;
+    EXPECT_EQ(lower(written).find("nan"), std::string::npos) << name << ":\n" << written;
+  }
+  // The import's row of the models table: no residual ("-"), and JSON null in its modes file.
+  EXPECT_NE(file_text(out + "/report.md").find("| - | imported |"), std::string::npos) << file_text(out + "/report.md");
+  EXPECT_TRUE(nlohmann::json::parse(file_text(out + "/modes_ext.json"))["max_residual"].is_null());
 }
 
 }  // namespace

@@ -5,7 +5,10 @@
 
 #include "compare/gates.hpp"
 #include "compare/output.hpp"
+#include "compare/registry.hpp"
 #include "compare/table.hpp"
+#include "modal/modes.hpp"
+#include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
 namespace {
@@ -195,6 +198,64 @@ TEST(Table, NoDifferenceOrErrorAgainstAWeakPartner) {
   EXPECT_FALSE(r[0].pass);
   EXPECT_EQ(r[0].worst_mode, 1);
   EXPECT_NE(r[0].line().find("paired with MAC"), std::string::npos) << r[0].line();
+}
+
+// Issue 46, finding 1: the backward-error acceptance passed a NaN. std::max(0, NaN) is 0 and
+// std::max_element keeps a small residual ahead of a later NaN, so a pair that broke down
+// read as a perfect one. Oracle: IEEE comparisons (NaN is no number below a bound).
+TEST(Acceptance, ANanResidualIsNoEigenpairWhereverItStands) {
+  EXPECT_TRUE(std::isnan(modal::worst(0.0, NAN)));
+  EXPECT_TRUE(std::isnan(modal::worst(NAN, 1e-15)));
+  EXPECT_EQ(modal::worst(1e-15, 2e-15), 2e-15);
+  for (const std::vector<double>& relative : {std::vector<double>{1e-15, NAN}, std::vector<double>{NAN, 1e-15}}) {
+    ring::ModalResult r;
+    const Eigen::VectorXd omega2 = Eigen::Vector2d(1.0, 4.0);
+    modal::assemble(r, "multibody", omega2, modal::select_modes("multibody", omega2, 1e-3, 2), relative);
+    EXPECT_THROW(modal::require_eigenpairs(r), ring::NumericalError) << relative[0] << ", " << relative[1];
+  }
+}
+
+// Issue 46, finding 1: a result holding a value that is not finite is a numerical failure
+// (exit 3) naming the value, whatever produced it; a residual the solver does not report
+// (ccx, an imported column) is none, not a non-finite value.
+TEST(Acceptance, ANonFiniteResultIsANumericalFailureNamingTheValue) {
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const ring::NumericalError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no ring::NumericalError)");
+  };
+  ring::ModalResult m = fake("multibody", {2.0, 3.0}, {2, 3});
+  EXPECT_NO_THROW(cmp::require_finite(m));
+  m.max_residual.reset();
+  EXPECT_NO_THROW(cmp::require_finite(m));
+  m.omega[1] = INFINITY;
+  EXPECT_NE(message([&] { cmp::require_finite(m); }).find("multibody: the frequency of mode 2 is inf"), std::string::npos);
+  m.omega[1] = 3.0;
+  m.max_residual = -NAN;
+  EXPECT_NE(message([&] { cmp::require_finite(m); }).find("max eigen-residual"), std::string::npos);
+  m.max_residual = 0.0;
+  m.shapes[0].tangential[90] = NAN;
+  EXPECT_NE(message([&] { cmp::require_finite(m); }).find("mode 1's tangential displacement at 90 deg"),
+            std::string::npos);
+
+  ring::StaticResult st;
+  st.solver = "lumped";
+  st.displacements = {{90.0, 0.1, NAN}};
+  EXPECT_NE(message([&] { cmp::require_finite(st); }).find("lumped: uy at 90 deg is nan"), std::string::npos);
+  ring::BucklingResult b;
+  b.solver = "fem";
+  b.factors = {3.0, NAN};
+  EXPECT_NE(message([&] { cmp::require_finite(b); }).find("critical load factor 2"), std::string::npos);
+  ring::TimeHistory h;
+  h.solver = "multibody";
+  h.record_angles = {0.0};
+  h.t = {0.0, 1e-3};
+  h.ux = {{0.0, -INFINITY}};
+  h.uy = {{0.0, 0.0}};
+  EXPECT_NE(message([&] { cmp::require_finite(h); }).find("ux at 0 deg, step 1"), std::string::npos);
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST_P(LumpedStress, FreeRingStaysOnTheSecondOrderLawAtTenThousand) {
   // double-precision vector has a floor ~eps ||K|| / w^2 (the frames' axial EA/l), which
   // grows with n regardless of the solver; printed for the report.
   std::printf("[lumped %s stress] n = 10000 max_residual (contract metric) %.2e\n", ring::to_string(v).c_str(),
-              fine.max_residual);
+              fine.max_residual.value());
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, LumpedStress,

@@ -52,7 +52,7 @@ void check_oracles(int n, multibody::SparseEigensolver eigensolver = multibody::
       double worst = 0;
       for (int i = 0; i < count; ++i) worst = std::max(worst, ringtest::rel(sol.result.omega[i], ref[i]));
       std::printf("%8d %8s %6d %12.3e %12.3e %12.3e %6d\n", n, pinned ? "pin" : "free", rot, worst,
-                  sol.backward_error, sol.result.max_residual, sol.result.rigid_modes);
+                  sol.backward_error, sol.result.max_residual.value(), sol.result.rigid_modes);
       EXPECT_EQ(std::get<std::string>(sol.result.model.at("method")), "sparse");
       EXPECT_LT(worst, 1e-10) << "n = " << n;
       EXPECT_EQ(sol.result.rigid_modes, pinned ? 1 : 3) << "n = " << n;
