@@ -89,7 +89,7 @@ Solved solve_once(const ring::RingSpec& spec, Setup setup, bool extensible, int 
     max_res = 0.0;
     r.shapes.clear();
     for (unsigned int i = rigid; i < wanted; ++i) {
-      max_res = modal::worst(max_res, pairs.residual[i]);
+      if (refine) max_res = modal::worst(max_res, pairs.residual[i]);  // raw pairs carry NaN: none measured
       const auto f = model.expand(pairs.q[i]);
       r.shapes.push_back(model.sample(f));
       if (full) full->push_back(f);
