@@ -53,17 +53,28 @@ TEST(FemStress, HundredThousandUnknownsTwentyThreeModes) {
 // (3 free, 1 pinned), the free ring's closed form (flexural pairs k = 2..13), and the
 // pinned ring's frequencies from 40 elements of degree 12 (converged to ~1e-12 by
 // p-refinement, FemConvergence; an independent discretization).
-TEST(FemStress, NearThePrecisionLimitRigidModesAndFrequenciesHold) {
+// It cannot be smaller: the ratio grows like cells^4 and p^6 to p^8, and only this mesh of
+// the highest degree comes near the limit (ring_model.hpp, kPrecisionLimit). The free and
+// the pinned ring are two tests so that they run side by side.
+/// The larger of two errors, NaN if either is: a NaN frequency fails the bound below.
+double worse(double a, double b) { return std::isnan(a) || a > b ? a : b; }
+
+ring::FemOptions near_the_precision_limit() {
   ring::FemOptions fine;
   fine.elements = 3000;
   fine.degree = 12;
+  return fine;
+}
+
+TEST(FemStress, NearThePrecisionLimitTheFreeRingsRigidModesAndFrequenciesHold) {
+  const ring::FemOptions fine = near_the_precision_limit();
   const auto free_spec = ringtest::free_ring();
   const auto f = fem::compute_modes(free_spec, fine, 24);
   EXPECT_EQ(f.rigid_modes, 3);
   double worst = 0.0;
   for (int k = 2; k <= 13; ++k) {
     const double exact = ring::closed_form::free_ring_extensible(free_spec, k)[0];
-    for (int j = 0; j < 2; ++j) worst = std::max(worst, ringtest::rel(f.omega[2 * (k - 2) + j], exact));
+    for (int j = 0; j < 2; ++j) worst = worse(worst, ringtest::rel(f.omega[2 * (k - 2) + j], exact));
   }
   RecordProperty("free_ring_worst_relative_error", scientific(worst));
   // 1e-7 relative: measured 4.7e-9 here (free) and 4.5e-9 (pinned), against ~1e-12 at 40
@@ -71,7 +82,10 @@ TEST(FemStress, NearThePrecisionLimitRigidModesAndFrequenciesHold) {
   // the bound leaves a factor 20. Without the extra corrections the pinned ring's lowest
   // frequency was 6.5e-5 off at this size (residual 6.6e-3).
   EXPECT_LT(worst, 1e-7);
+}
 
+TEST(FemStress, NearThePrecisionLimitThePinnedRingsFrequenciesHold) {
+  const ring::FemOptions fine = near_the_precision_limit();
   const auto pinned_spec = ringtest::pinned_ring();
   const auto p = fem::compute_modes(pinned_spec, fine, 5);
   EXPECT_EQ(p.rigid_modes, 1);
@@ -79,7 +93,7 @@ TEST(FemStress, NearThePrecisionLimitRigidModesAndFrequenciesHold) {
   coarse.degree = 12;
   const auto c = fem::compute_modes(pinned_spec, coarse, 5);
   double worst_pinned = 0.0;
-  for (int i = 0; i < 5; ++i) worst_pinned = std::max(worst_pinned, ringtest::rel(p.omega[i], c.omega[i]));
+  for (int i = 0; i < 5; ++i) worst_pinned = worse(worst_pinned, ringtest::rel(p.omega[i], c.omega[i]));
   RecordProperty("pinned_ring_worst_relative_difference", scientific(worst_pinned));
   EXPECT_LT(worst_pinned, 1e-7);  // as above
 }
