@@ -95,8 +95,7 @@ void remove_folder(const std::string& dir) {
 class JobFolder {
  public:
   explicit JobFolder(const Hooks& hooks) : hooks_(hooks) {
-    const char* tmp = std::getenv("TMPDIR");
-    std::string tmpl = std::string(tmp && *tmp ? tmp : "/tmp") + "/ringvib-ccx-XXXXXX";
+    std::string tmpl = temp_root() + "/ringvib-ccx-XXXXXX";
     std::vector<char> buf(tmpl.begin(), tmpl.end());
     buf.push_back('\0');
     if (!mkdtemp(buf.data()))
@@ -118,6 +117,27 @@ class JobFolder {
 };
 
 }  // namespace
+
+std::string temp_root() {
+  const char* tmp = std::getenv("TMPDIR");
+  return tmp && *tmp ? tmp : "/tmp";
+}
+
+void require_environment(const std::string& solver) {
+  require_ccx(solver);
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string key = tmp && *tmp ? "TMPDIR" : "/tmp";
+  const std::string root = temp_root();
+  struct stat st;
+  std::string why;
+  if (stat(root.c_str(), &st) != 0) why = std::strerror(errno);
+  else if (!S_ISDIR(st.st_mode)) why = "not a folder";
+  else if (access(root.c_str(), W_OK | X_OK) != 0) why = "not writable: " + std::string(std::strerror(errno));
+  if (!why.empty())
+    throw ring::InputError("", key,
+                           "the " + solver + " solver runs ccx in a temporary folder under " + root + " (" + why +
+                               "); expected an existing writable folder: set TMPDIR to one, or unset it for /tmp");
+}
 
 std::string tail(const std::string& text, int lines) {
   std::size_t pos = text.size();
@@ -194,6 +214,17 @@ RunOutput run(const std::string& deck, const RunOptions& options, const Hooks& h
   for (;;) {
     const pid_t r = wait4(pid, &status, WNOHANG, &usage);
     if (r == pid) break;
+    if (hooks.poll) {
+      try {
+        hooks.poll();
+      } catch (...) {  // interrupted: ccx first, then the folder (JobFolder), then the caller
+        kill(pid, SIGKILL);
+        while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+        }
+        if (hooks.child) hooks.child(0);
+        throw;
+      }
+    }
     if (r < 0 && errno != EINTR) break;
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > options.timeout) {
       kill(pid, SIGKILL);

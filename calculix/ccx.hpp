@@ -22,6 +22,10 @@ namespace calculix {
 struct Hooks {
   std::function<void(const std::string& folder)> folder_made, folder_removed;
   std::function<void(int pid)> child;  ///< the running ccx; 0 when it ended
+  /// Called about every 10 ms while ccx runs, on the calling thread. An exception it throws
+  /// (an interruption: the Python module's Ctrl-C) kills ccx, removes the job folder and
+  /// leaves run() as that exception.
+  std::function<void()> poll;
 };
 
 struct RunOptions {
@@ -49,6 +53,14 @@ std::string find_ccx();
 
 /// Throws ring::InputError (exit 2) naming `solver` and the package when ccx is missing.
 void require_ccx(const std::string& solver = "calculix");
+
+/// The temporary folder jobs run in: $TMPDIR if set and not empty, else /tmp.
+std::string temp_root();
+
+/// What every run needs of its environment, checked before anything is computed: ccx on
+/// the PATH (require_ccx) and temp_root() an existing folder that this process can write
+/// and enter. Throws ring::InputError (exit 2) naming TMPDIR (or /tmp) and why.
+void require_environment(const std::string& solver = "calculix");
 
 /// Runs ccx on `deck` (job name "ring") and returns its output. Throws as above.
 RunOutput run(const std::string& deck, const RunOptions& options, const Hooks& hooks = {});

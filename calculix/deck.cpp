@@ -90,8 +90,8 @@ void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
                                  (spec.supports.pin ? std::string("the pin") : number(anchor)) + ")");
   };
   if (spec.supports.roller) need_node(*spec.supports.roller, "supports.roller");
+  if (spec.supports.clamp) need_node(*spec.supports.clamp, "supports.clamp");  // before pins, which hold it too
   for (double p : spec.supports.pins) need_node(p, "supports.pins");
-  if (spec.supports.clamp) need_node(*spec.supports.clamp, "supports.clamp");
   for (std::size_t i = 0; i < spec.supports.springs.size(); ++i)
     need_node(spec.supports.springs[i].angle, "supports.springs[" + std::to_string(i + 1) + "].at");
   for (std::size_t i = 0; i < spec.masses.size(); ++i)

@@ -30,40 +30,51 @@ std::string fem_module_path() {
   return dir + "/libringvib_fem.so";
 }
 
+/// Opens the plug-in: sets `plugin` and returns "", or returns why it cannot be used.
+std::string load(const fem::Plugin*& plugin) {
+  const std::string path = fem_module_path();
+  // Lazy binding: the plug-in's own calls into deal.II resolve when first made, not all
+  // at load (about 45 ms of a 0.25 s tiny FE run, bench/process.sh). 117 of the ~200
+  // libraries deal.II pulls in are linked with BIND_NOW by Debian and resolve at load
+  // anyway. A symbol missing at call time would abort, not report: fem_plugin_test opens
+  // the same plug-in with RTLD_NOW, which fails on any missing symbol.
+  void* h = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
+  if (!h) {
+    const char* why = dlerror();
+    return std::string("the FE solver is not available: cannot load ") + path + " (" + (why ? why : "unknown") +
+           "); build with -DRINGVIB_WITH_FEM=ON";
+  }
+  using Entry = const fem::Plugin* (*)();
+  auto entry = reinterpret_cast<Entry>(dlsym(h, "ringvib_fem_plugin"));
+  if (!entry) return "the FE module " + path + " has no entry point ringvib_fem_plugin";
+  const fem::Plugin* p = entry();
+  if (!p || p->abi_version != fem::kAbiVersion)
+    return "the FE module " + path + " has ABI version " + (p ? std::to_string(p->abi_version) : std::string("?")) +
+           ", expected " + std::to_string(fem::kAbiVersion) + " (rebuild it with this ringvib)";
+  plugin = p;
+  return "";
+}
+
 bool g_loaded = false;
 
+/// The plug-in, loaded by the first call. A plain mutex around a plain "tried" flag, not
+/// std::call_once: a failed load is remembered and refused at once in every thread, and
+/// nothing is left in a state that another thread waits on (issue 46: two threads of a
+/// ThreadPoolExecutor hung on a plug-in that could not be loaded). The load never runs
+/// under g_solve, so a refusal never waits for another thread's solve either.
 const fem::Plugin& fem_plugin() {
+  static std::mutex m;
+  static bool tried = false;
   static const fem::Plugin* plugin = nullptr;
-  static std::once_flag once;
   static std::string failure;
-  std::call_once(once, [] {
-    const std::string path = fem_module_path();
-    // Lazy binding: the plug-in's own calls into deal.II resolve when first made, not all
-    // at load (about 45 ms of a 0.25 s tiny FE run, bench/process.sh). 117 of the ~200
-    // libraries deal.II pulls in are linked with BIND_NOW by Debian and resolve at load
-    // anyway. A symbol missing at call time would abort, not report: fem_plugin_test opens
-    // the same plug-in with RTLD_NOW, which fails on any missing symbol.
-    void* h = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
-    if (!h) {
-      failure = std::string("the FE solver is not available: cannot load ") + path + " (" + dlerror() +
-                "); build with -DRINGVIB_WITH_FEM=ON";
-      return;
+  {
+    std::lock_guard<std::mutex> lock(m);
+    if (!tried) {
+      tried = true;
+      failure = load(plugin);
+      if (plugin) g_loaded = true;
     }
-    using Entry = const fem::Plugin* (*)();
-    auto entry = reinterpret_cast<Entry>(dlsym(h, "ringvib_fem_plugin"));
-    if (!entry) {
-      failure = "the FE module " + path + " has no entry point ringvib_fem_plugin";
-      return;
-    }
-    plugin = entry();
-    if (plugin->abi_version != fem::kAbiVersion) {
-      failure = "the FE module " + path + " has ABI version " + std::to_string(plugin->abi_version) + ", expected " +
-                std::to_string(fem::kAbiVersion) + " (rebuild it with this ringvib)";
-      plugin = nullptr;
-      return;
-    }
-    g_loaded = true;
-  });
+  }
   if (!plugin) throw ring::InputError("", "solver fem", failure);
   return *plugin;
 }
@@ -82,25 +93,28 @@ void check(int status, const std::string& error) {
 std::mutex g_solve;
 
 ring::ModalResult modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count) {
+  const fem::Plugin& plugin = fem_plugin();
   std::lock_guard<std::mutex> lock(g_solve);
   ring::ModalResult out;
   std::string error;
-  check(fem_plugin().modes(spec, options, count, out, error), error);
+  check(plugin.modes(spec, options, count, out, error), error);
   return out;
 }
 
 void write_vtu(const ring::RingSpec& spec, const ring::FemOptions& options, int count, const std::string& dir) {
+  const fem::Plugin& plugin = fem_plugin();
   std::lock_guard<std::mutex> lock(g_solve);
   std::string error;
-  check(fem_plugin().write_vtu(spec, options, count, dir, error), error);
+  check(plugin.write_vtu(spec, options, count, dir, error), error);
 }
 
 ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& options,
                            const ring::StaticOptions& statics) {
+  const fem::Plugin& plugin = fem_plugin();
   std::lock_guard<std::mutex> lock(g_solve);
   ring::StaticResult out;
   std::string error;
-  const int status = fem_plugin().statics(spec, options, statics, out, error);
+  const int status = plugin.statics(spec, options, statics, out, error);
   if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
   check(status, error);
   return out;
@@ -108,12 +122,13 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
 
 ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& options,
                           const ring::ResponseOptions& response) {
+  const fem::Plugin& plugin = fem_plugin();
   std::lock_guard<std::mutex> lock(g_solve);
   ring::TimeHistory out;
   std::string error;
   int reason = 0;
   double t_reached = 0.0;
-  const int status = fem_plugin().respond(spec, options, response, out, reason, t_reached, error);
+  const int status = plugin.respond(spec, options, response, out, reason, t_reached, error);
   if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
   if (status == 3 && reason >= 0)
     throw ring::IntegrationFailure(static_cast<ring::IntegrationFailure::Reason>(reason), t_reached, std::move(out),
@@ -124,10 +139,11 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::FemOptions& op
 
 ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions& options,
                               const ring::BucklingOptions& buckling) {
+  const fem::Plugin& plugin = fem_plugin();
   std::lock_guard<std::mutex> lock(g_solve);
   ring::BucklingResult out;
   std::string error;
-  const int status = fem_plugin().buckling(spec, options, buckling, out, error);
+  const int status = plugin.buckling(spec, options, buckling, out, error);
   if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
   check(status, error);
   return out;
@@ -135,10 +151,11 @@ ring::BucklingResult buckling(const ring::RingSpec& spec, const ring::FemOptions
 
 ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOptions& options,
                                    const ring::StaticOptions& statics, int count) {
+  const fem::Plugin& plugin = fem_plugin();
   std::lock_guard<std::mutex> lock(g_solve);
   ring::ModalResult out;
   std::string error;
-  const int status = fem_plugin().modes_under_load(spec, options, statics, count, out, error);
+  const int status = plugin.modes_under_load(spec, options, statics, count, out, error);
   if (status == 2) throw std::invalid_argument(error);  // the registry names the file and key
   check(status, error);
   return out;

@@ -511,4 +511,11 @@ void Outputs::discard() noexcept {
   }
 }
 
+namespace {
+thread_local std::function<void()> g_interrupt_check;
+}  // namespace
+
+void set_interrupt_check(std::function<void()> check) { g_interrupt_check = std::move(check); }
+const std::function<void()>& interrupt_check() { return g_interrupt_check; }
+
 }  // namespace cmp

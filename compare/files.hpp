@@ -31,6 +31,7 @@
 //   out.publish();                                    // all at once
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -111,5 +112,14 @@ void register_temp_folder(const std::string& path);
 void unregister_temp_folder(const std::string& path);
 void add_child(int pid);
 void remove_child(int pid);
+
+/// The calling thread's check for an interruption, for a caller that must not die of a
+/// signal (the Python module: Ctrl-C raises KeyboardInterrupt). Long work calls it where
+/// it can stop, at least every 0.1 s: ccx's wait (calculix::Hooks::poll, which kills ccx
+/// first) and the time-stepping driver (ResponseOptions::progress). It throws to stop;
+/// whatever was staged is removed on the way out (Outputs' destructor). Empty (the
+/// default, and the command's: its signal handler ends the process): never called.
+void set_interrupt_check(std::function<void()> check);
+const std::function<void()>& interrupt_check();
 
 }  // namespace cmp

@@ -13,6 +13,7 @@
 #include "compare/grid.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/files.hpp"
 #include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "ring/errors.hpp"
@@ -30,13 +31,19 @@ NonlinearRun run_nonlinear(const ring::Scene& scene, const std::string& only, st
   };
   // A response longer than ProgressLine::kDelay shows the fraction of t_end on a
   // terminal: the solver's time loop reports it through ResponseOptions::progress.
+  // The same callback carries the thread's interruption check (interrupt_check(): the
+  // Python module's Ctrl-C), which throws to end the run.
   std::optional<ProgressLine> line;
   auto with_progress = [&](const std::string& who) {
     ring::Scene s = scene;
-    if (!progress) return s;
+    const std::function<void()>& check = interrupt_check();
+    if (!progress && !check) return s;
     line.reset();
-    line.emplace("response " + who, "", progress);
-    s.response->progress = [&line](double f) { line->fraction(f); };
+    if (progress) line.emplace("response " + who, "", progress);
+    s.response->progress = [&line, check](double f) {
+      if (line) line->fraction(f);
+      if (check) check();
+    };
     return s;
   };
   auto say = [&](const std::string& what) {

@@ -382,6 +382,7 @@ calculix::Hooks signal_hooks() {
     else remove_child(running);
     running = pid;
   };
+  h.poll = interrupt_check();  // the Python module's Ctrl-C (empty for the command)
   return h;
 }
 
@@ -419,7 +420,7 @@ SolverEntry calculix_entry() {
     refuse_preload(s);
     with_scene_file(s, [&] {
       calculix::check_deck(s.ring, s.calculix);
-      calculix::require_ccx();
+      calculix::require_environment();
     });
   };
   e.modes = [](const ring::Scene& s, int count) {
@@ -427,14 +428,20 @@ SolverEntry calculix_entry() {
   };
   e.check_static = [](const ring::Scene& s) {
     refuse_path(*s.statics);
-    with_scene_file(s, [&] { calculix::check_static(s.ring, s.calculix, *s.statics); });
+    with_scene_file(s, [&] {
+      calculix::check_static(s.ring, s.calculix, *s.statics);
+      calculix::require_environment();
+    });
   };
   e.statics = [](const ring::Scene& s) {
     return with_scene_file(
         s, [&] { return calculix::solve_static(s.ring, s.calculix, *s.statics, signal_hooks(), s.title); });
   };
   e.check_response = [](const ring::Scene& s) {
-    with_scene_file(s, [&] { calculix::check_response(s.ring, s.calculix, *s.response); });
+    with_scene_file(s, [&] {
+      calculix::check_response(s.ring, s.calculix, *s.response);
+      calculix::require_environment();
+    });
   };
   e.no_buckling_because =
       "CalculiX's *BUCKLE keeps only the stress stiffness of the linear prebuckling state, not the displacement "

@@ -3,6 +3,7 @@
 #include "fem_reference/buckling.hpp"  // check_buckling: declared with its analysis, checked here
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,12 +15,14 @@ void need(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("fem: " + what);
 }
 
+void check_linear(const ring::RingSpec& spec, const ring::FemOptions& o);
+
 /// What the geometrically exact beam needs of every nonlinear analysis: the terms of the
 /// linear modes (check_modes), the curved geometry, and loads that it can place: every
 /// point load and record point on a vertex, finite forces, pressure and gravity.
 void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::Loads& loads,
                      const std::vector<double>& record, const std::string& section) {
-  check_modes(spec, o);
+  check_linear(spec, o);
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
   const double anchor = spec.anchor();
@@ -56,7 +59,9 @@ void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
     need(std::isfinite(v) && v >= 0.0, key + " (=" + std::to_string(v) + ") must be finite and >= 0");
   };
   need(s.pins.empty() || s.pin, "supports.pins needs supports.pin (the first pinned point)");
-  for (double a : s.pins) on_vertex(a, "supports.pins");
+  // The clamp is one of the pinned points (the scene reader puts it there): named as itself.
+  for (double a : s.pins)
+    on_vertex(a, s.clamp && ring::wrap_degrees(a - *s.clamp + 1e-9) < 2e-9 ? "supports.clamp" : "supports.pins");
   if (s.clamp) {
     need(s.pin.has_value(), "supports.clamp needs supports.pin");
     bool pinned = false;
@@ -87,9 +92,9 @@ void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
   }
 }
 
-}  // namespace
-
-void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
+/// The linear terms every analysis of the FE beam shares (the public check_modes adds the
+/// eigen-solve's precision limit).
+void check_linear(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(spec.theory != ring::Theory::timoshenko || o.geometry == ring::FemOptions::Geometry::curved,
        "ring.theory = \"timoshenko\" needs fem.geometry = \"curved\" (the polygon is the paper's Euler-Bernoulli "
        "SAP5 frame)");
@@ -113,6 +118,44 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
     need(ring::on_node(*spec.supports.roller, *spec.supports.pin, o.elements),
          "supports.roller (=" + std::to_string(*spec.supports.roller) +
              ") must fall on an FE vertex: pin + k * 360 / fem.elements");
+  }
+}
+
+}  // namespace
+
+double precision_ratio_bound(int elements, int degree) {
+  // Lower envelope of the measured ratios (table above kPrecisionLimit's doc): 2.0e4 at
+  // 10^4 cells of degree 6, times cells^4, times p^7 above p = 6 (measured p^7.2 from 6 to
+  // 8, p^7.5 from 8 to 12) and p^8 below it (the steepest growth measured, so the bound
+  // falls fastest towards low p). It stays 7 to 35 % under every measured ratio:
+  // 1000 x 12: 256 (340), 3000 x 12: 2.1e4 (2.8e4), 10^4 x 8: 1.5e5 (1.6e5), 5000 x 12:
+  // 1.6e5 (2.1e5), 7000 x 12: 6.1e5 (8.2e5), 10^4 x 12: 2.6e6 (3.4e6).
+  const double cells = elements / 1e4, p = degree / 6.0;
+  return 2.0e4 * std::pow(cells, 4) * std::pow(p, degree >= 6 ? 7.0 : 8.0);
+}
+
+void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  check_linear(spec, o);
+  // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused
+  // here, before any assembly, where the bound already exceeds the limit (the model's own
+  // ratio, measured after assembly in modes.cpp, catches the rest). 10^4 elements of
+  // degree 12 were refused only after 10 s and 707 MB of assembly (issue 46). The bound is
+  // the Euler-Bernoulli ring's bending, which no other term lowers; a Timoshenko model's
+  // high end grows like cells^2 (shear), so only the assembled ratio judges it.
+  const ring::Theory theory = o.theory.value_or(spec.theory);
+  if (theory == ring::Theory::euler_bernoulli && o.geometry == ring::FemOptions::Geometry::curved) {
+    const double bound = precision_ratio_bound(o.elements, o.degree);
+    if (!(bound <= kPrecisionLimit)) {
+      // The bound grows like cells^4: this many cells of the degree reach the limit.
+      const int most = static_cast<int>(o.elements * std::pow(kPrecisionLimit / bound, 0.25));
+      char ratio[32];
+      std::snprintf(ratio, sizeof ratio, "%.3g", bound);
+      need(false, "fem.elements (=" + std::to_string(o.elements) + ") with fem.degree (=" + std::to_string(o.degree) +
+                      ") are too fine for double precision: the stiffness spans at least eps lambda_max / |sigma| = " +
+                      ratio + " (limit " + std::to_string(static_cast<int>(kPrecisionLimit)) +
+                      "), and the lowest frequencies would be wrong; use at most about " + std::to_string(most) +
+                      " elements of this degree, or a lower degree");
+    }
   }
 }
 

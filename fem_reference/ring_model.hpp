@@ -89,16 +89,8 @@ constexpr double kRigidSeparation = 1e-2;
 /// of the residual near the precision limit: 10^4 cells of degree 8, residual 1.9e-2,
 /// frequency 0.09 % off; 3000 of degree 12 with one correction, 6.6e-3 and 0.007 %).
 constexpr double kAcceptedResidual = 1e-4;
-/// Largest eps lambda_max / |sigma| (precision_ratio()) that the eigen-solve resolves.
-/// The shift-invert solve factors K - sigma M in double; when its spectrum spans more
-/// than ~1/eps the factorization no longer represents the low end of the operator.
-/// Measured on the paper's pinned ring (lambda_max by row sums, below): ratio 2.0e4
-/// (10^4 cells, p = 6) and 2.8e4 (3000, p = 12): the lowest frequencies to 1e-7 after the
-/// refinement; 1.6e5 (10^4, p = 8): 0.09 % off, residual 2e-2; 2.1e5 (5000, p = 12),
-/// 8.2e5 (7000, p = 12), 3.4e6 (10^4, p = 12): wrong by 4 % to 40 times (lambda_1 = 234
-/// instead of 6.17 at 10^4), iterative refinement of a solve against apply() diverging
-/// 16-fold per step. The limit sits between the last good and the first bad ratio.
-constexpr double kPrecisionLimit = 6e4;
+/// kPrecisionLimit (checks.hpp): the largest eps lambda_max / |sigma| (precision_ratio())
+/// that the eigen-solve resolves, with its measurements.
 /// Relative round-off of refined frequencies (measured, see the estimate below).
 constexpr double kRoundOffFloor = 1e-12;
 /// Inextensible limit: EA -> beta EI / R^2 for these beta, then Richardson in 1/beta.

@@ -89,8 +89,8 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
   const double anchor = spec.anchor();
   std::vector<std::pair<std::string, double>> points;
+  if (spec.supports.clamp) points.emplace_back("supports.clamp", *spec.supports.clamp);  // before pins, which hold it too
   for (double a : spec.supports.pins) points.emplace_back("supports.pins", a);
-  if (spec.supports.clamp) points.emplace_back("supports.clamp", *spec.supports.clamp);
   for (std::size_t i = 0; i < spec.supports.springs.size(); ++i)
     points.emplace_back("supports.springs[" + std::to_string(i + 1) + "]", spec.supports.springs[i].angle);
   for (std::size_t i = 0; i < spec.masses.size(); ++i)

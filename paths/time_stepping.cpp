@@ -1,6 +1,7 @@
 #include "paths/time_stepping.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -66,6 +67,20 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
   double t = 0.0, h = grid.dt;
   int successes = 0;
   const long stride = std::max(1L, steps / 200);
+  // Also after every kProgressInterval of work, so that a caller who checks for an
+  // interruption there (the Python module's Ctrl-C) hears from a long run often enough.
+  using Clock = std::chrono::steady_clock;
+  auto last_progress = Clock::now();
+  double last_fraction = 0.0;  // never reported lower: a drop would read as a new run
+  auto report = [&](double fraction) {
+    last_fraction = std::max(last_fraction, fraction);
+    grid.progress(last_fraction);
+    last_progress = Clock::now();
+  };
+  auto report_if_due = [&](double fraction) {
+    if (grid.progress && Clock::now() - last_progress >= std::chrono::duration<double>(kProgressInterval))
+      report(fraction);
+  };
   for (long k = 1; k <= steps; ++k) {
     const double t_target = grid.dt * double(k);
     int iterations = 0;
@@ -79,6 +94,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
       const double hs = last ? remaining : (remaining < 2.0 * h ? 0.5 * remaining : h);
       const StepOutcome o = stepper.try_step(t, hs);
       iterations += o.iterations;
+      report_if_due(t / (grid.dt * double(steps)));
       if (!o.converged) {
         if (o.retry && !retried) {
           retried = true;
@@ -116,7 +132,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
       const auto v = grid.guard->check(s.kinetic, s.strain, s.work);
       if (v.gained) fail(Reason::energy_growth, ring::describe(v, t) + grid.energy_hint);
     }
-    if (grid.progress && (k % stride == 0 || k == steps)) grid.progress(double(k) / double(steps));
+    if (grid.progress && (k % stride == 0 || k == steps)) report(double(k) / double(steps));
   }
   return th;
 }

@@ -14,8 +14,9 @@
 // - after every grid step: the record (points, energies, constraint residual, Newton
 //   iterations), `snapshots` deformed shapes evenly spaced over the grid, and the energy
 //   guard (ring/energy_guard.hpp: a gain of T + V - W beyond 1 % of the work and the
-//   round-off bound fails with energy_growth), and, every ~1/200 of the run, the optional
-//   progress callback with the fraction of t_end reached;
+//   round-off bound fails with energy_growth), and, every ~1/200 of the run and at least
+//   every kProgressInterval of work, the optional progress callback with the fraction of
+//   t_end reached;
 // - every failure is ring::IntegrationFailure with the history up to the last grid point.
 //
 // Cost: the steps' own; the driver adds O(points) per grid step and O(nodes) per snapshot.
@@ -90,9 +91,15 @@ struct Grid {
   std::string energy_hint;     ///< appended to the energy guard's message (what to try instead)
   std::string who;             ///< the solver, named first in every message ("multibody::respond")
   /// Optional: called with the fraction of t_end reached after every `stride`-th grid step
-  /// (stride = max(1, steps / 200)) and at the end; empty: never (one test per step).
+  /// (stride = max(1, steps / 200)), at the end, and after any step attempt that ends
+  /// kProgressInterval or more after the last call; empty: never (one test per step). An
+  /// exception it throws ends the integration as that exception (an interruption).
   std::function<void(double fraction)> progress;
 };
+
+/// Seconds of work after which the driver calls Grid::progress at the latest (once a step
+/// attempt ends): the Python module checks for Ctrl-C there, at least every 0.1 s.
+constexpr double kProgressInterval = 0.05;
 
 /// The node positions of a state stored as (x_0, y_0, x_1, y_1, ...), n nodes, as
 /// Stepper::shape gives them. V: anything with operator[] (an Eigen vector, a std::vector).

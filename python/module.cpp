@@ -6,12 +6,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <exception>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "compare/files.hpp"
 #include "compare/nonlinear.hpp"
 #include "compare/registry.hpp"
 #include "compare/runner.hpp"
@@ -72,6 +75,79 @@ auto input_checked(const ring::Scene& s, F&& f) -> decltype(f()) {
 }
 
 py::object json_rows(const std::string& json) { return py::module_::import("json").attr("loads")(json)["rows"]; }
+
+/// Thrown by CtrlC::poll to end a solve; the binding raises what Python's handler raised.
+struct Interrupted : std::exception {
+  const char* what() const noexcept override { return "interrupted"; }
+};
+
+/// Ctrl-C during a solve (issue 46). Python's own SIGINT handler only sets a flag; its
+/// KeyboardInterrupt is raised when the main thread next runs Python code, which a solve
+/// with the GIL released never does. So for the length of one call on the main thread
+/// this is the thread's interrupt check (compare/files.hpp, interrupt_check()): the
+/// solve's long loops call it (ccx's wait every 10 ms, the time-stepping driver at least
+/// every 0.05 s), and at most every 0.05 s it takes the GIL and runs PyErr_CheckSignals().
+/// When a handler raised, the exception is kept and Interrupted thrown: ccx is killed and
+/// its folder removed on the way out (calculix/ccx.cpp), the module writes nothing, and
+/// the call raises the kept exception (KeyboardInterrupt) instead of the solve's outcome.
+/// Other threads' calls do not check: Python runs signal handlers on the main thread only.
+class CtrlC {
+ public:
+  CtrlC() {  // with the GIL
+    const auto main = py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+    if (PyThread_get_thread_ident() != main) return;
+    active_ = true;
+    cmp::set_interrupt_check([this] { poll(); });
+  }
+  ~CtrlC() {
+    if (active_) cmp::set_interrupt_check({});
+  }
+  CtrlC(const CtrlC&) = delete;
+  CtrlC& operator=(const CtrlC&) = delete;
+
+  /// On the solving thread, without the GIL.
+  void poll() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(50)) return;
+    last_ = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() == 0) return;
+    raised_.emplace();  // takes the raised exception from the thread state
+    throw Interrupted();
+  }
+  /// With the GIL: raises what a signal handler raised during the solve, if anything.
+  void raise_if_interrupted() {
+    if (!raised_) return;
+    py::error_already_set e = std::move(*raised_);
+    raised_.reset();
+    throw e;
+  }
+
+ private:
+  bool active_ = false;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  std::optional<py::error_already_set> raised_;
+};
+
+/// Runs `f` with the GIL released and Ctrl-C honoured (CtrlC); returns its result or
+/// rethrows its exception, unless a signal handler raised, whose exception wins.
+template <class F>
+auto released(F&& f) -> decltype(f()) {
+  CtrlC ctrl_c;
+  decltype(f()) out{};
+  std::exception_ptr failure;
+  {
+    py::gil_scoped_release free;
+    try {
+      out = f();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }
+  ctrl_c.raise_if_interrupted();
+  if (failure) std::rethrow_exception(failure);
+  return out;
+}
 
 const char* const kBudgetDoc =
     "max_memory_gib: the cost guard's budget (GiB; the command's --max-memory), force: skip the\n"
@@ -250,11 +326,9 @@ PYBIND11_MODULE(ringvib, m) {
   m.def(
       "modes",
       [](const Scene& s, const std::string& solver, std::optional<int> count, double max_memory_gib, bool force) {
-        ring::ModalResult r;
-        {
-          py::gil_scoped_release free;
-          // As `ringvib modes SCENE --solver NAME [--count K]`.
-          r = input_checked(s.scene, [&] {
+        // As `ringvib modes SCENE --solver NAME [--count K]`.
+        const ring::ModalResult r = released([&] {
+          return input_checked(s.scene, [&] {
             cmp::check_runnable(s.scene, max_memory_gib, force);
             const cmp::SolverEntry& e = cmp::solver(solver);
             const int k = count.value_or(s.scene.modes.count);
@@ -265,7 +339,7 @@ PYBIND11_MODULE(ringvib, m) {
                                          std::to_string(e.elastic_modes(s.scene)) + " elastic modes");
             return e.modes(s.scene, k);
           });
-        }
+        });
         return to_python(r);
       },
       py::arg("scene"), py::arg("solver"), py::arg("count") = py::none(), py::kw_only(),
@@ -279,10 +353,8 @@ PYBIND11_MODULE(ringvib, m) {
   m.def(
       "table",
       [](const Scene& s, bool paper, double max_memory_gib, bool force) {
-        std::string json;
-        {
-          py::gil_scoped_release free;
-          json = input_checked(s.scene, [&] {
+        const std::string json = released([&] {
+          return input_checked(s.scene, [&] {
             cmp::check_runnable(s.scene, max_memory_gib, force);
             if (!cmp::modal(s.scene))
               throw ring::InputError(s.scene.file, "modes",
@@ -290,7 +362,7 @@ PYBIND11_MODULE(ringvib, m) {
                                      "[modes] or [table] section, or a solver section without [response]/[static])");
             return cmp::format_json(cmp::make_table(s.scene, cmp::compute_modal(s.scene, nullptr), paper));
           });
-        }
+        });
         return json_rows(json);
       },
       py::arg("scene"), py::kw_only(), py::arg("paper") = false, py::arg("max_memory_gib") = 8.0,
@@ -306,17 +378,15 @@ PYBIND11_MODULE(ringvib, m) {
   m.def(
       "static",
       [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
-        ring::StaticResult r;
-        {
-          py::gil_scoped_release free;
+        const ring::StaticResult r = released([&] {
           const ring::Scene n = narrowed(s.scene, &ring::Scene::static_request, solver);
-          r = input_checked(n, [&] {
+          return input_checked(n, [&] {
             cmp::check_runnable(n, max_memory_gib, force);
             if (!n.statics) throw ring::InputError(n.file, "static", "the scene has no [static] section");
             const std::string one = single(n, n.static_request, solver, "static.solvers", "static_table");
             return cmp::run_nonlinear(n, one, nullptr).statics.front();
           });
-        }
+        });
         return to_python(r);
       },
       py::arg("scene"), py::arg("solver") = "", py::kw_only(), py::arg("max_memory_gib") = 8.0,
@@ -330,11 +400,9 @@ PYBIND11_MODULE(ringvib, m) {
   m.def(
       "respond",
       [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
-        ring::TimeHistory h;
-        {
-          py::gil_scoped_release free;
+        const ring::TimeHistory h = released([&] {
           const ring::Scene n = narrowed(s.scene, &ring::Scene::response_request, solver);
-          h = input_checked(n, [&] {
+          return input_checked(n, [&] {
             cmp::check_runnable(n, max_memory_gib, force);
             if (!n.response) throw ring::InputError(n.file, "response", "the scene has no [response] section");
             const std::string one = single(n, n.response_request, solver, "response.solvers", "response_table");
@@ -347,7 +415,7 @@ PYBIND11_MODULE(ringvib, m) {
               throw ring::IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
             }
           });
-        }
+        });
         return to_python(h);
       },
       py::arg("scene"), py::arg("solver") = "", py::kw_only(), py::arg("max_memory_gib") = 8.0,
@@ -361,10 +429,8 @@ PYBIND11_MODULE(ringvib, m) {
 
   auto nonlinear_table = [](bool response) {
     return [response](const Scene& s, double max_memory_gib, bool force) {
-      std::string json;
-      {
-        py::gil_scoped_release free;
-        json = input_checked(s.scene, [&] {
+      const std::string json = released([&] {
+        return input_checked(s.scene, [&] {
           cmp::check_runnable(s.scene, max_memory_gib, force);
           if (response ? !s.scene.response : !s.scene.statics)
             throw ring::InputError(
@@ -376,7 +442,7 @@ PYBIND11_MODULE(ringvib, m) {
                           : cmp::format_json(cmp::static_table(s.scene.title, r.statics,
                                                                r.static_reference ? &*r.static_reference : nullptr));
         });
-      }
+      });
       return json_rows(json);
     };
   };

@@ -31,10 +31,12 @@ struct ResponseOptions {
   double hinge_damping = 0.0;          ///< N m s/rad at every hinge (a rotational damper
                                        ///< on the relative rotation of neighbouring pieces)
   /// Optional: told the fraction of t_end reached (0 .. 1), by the time-stepping driver
-  /// (paths::Grid::progress), at most ~200 times a run, on the integrating thread. Empty
-  /// (the default): never called, no cost. The driver's progress line uses it; a solver
-  /// only hands it on. It must not throw: it crosses the FE plug-in's boundary, which no
-  /// exception crosses (fem_reference/plugin.hpp).
+  /// (paths::Grid::progress), every ~1/200 of the run and at least every 0.05 s of work,
+  /// on the integrating thread. Empty (the default): never called, no cost. The driver's
+  /// progress line uses it; a solver only hands it on. An exception it throws ends the run:
+  /// the Python module's Ctrl-C check does so. No exception crosses the FE plug-in's
+  /// boundary (fem_reference/plugin.hpp): there it becomes a failure status, and the
+  /// thrower, which knows why, reports it.
   std::function<void(double fraction)> progress;
 };
 

@@ -115,6 +115,27 @@ TEST(Robustness, CostGuardRefusesAbsurdRequests) {
   EXPECT_EQ(ringvib("modes " + mb + " --solver multibody --max-memory 1e-6 --force").code, 0);
 }
 
+// Issue 46: what a run needs of its environment and of its discretization is refused
+// before anything is computed, naming the cause (exit 2, nothing on stdout). A CalculiX
+// column with TMPDIR=/nonexistent computed the other columns, then exited 3; 10^4 FE
+// elements of degree 12 were refused after 10 s and 707 MB of assembly (and without the
+// plug-in, refused as a plug-in that cannot be loaded instead of as too fine). Oracles:
+// the file system (the folder does not exist) and the measured precision limit
+// (fem_reference/checks.hpp, kPrecisionLimit).
+TEST(Robustness, EnvironmentAndPrecisionLimitRefusedBeforeComputing) {
+  const std::string paper = source("scenes/paper1990.toml");
+  const auto fine = ringvib("modes " + paper + " --solver fem --set fem.degree=12 --set fem.elements=10000");
+  expect_input_error(fine, "fem.elements (=10000)");
+  EXPECT_NE(fine.err.find("double precision"), std::string::npos) << fine.err;
+  EXPECT_TRUE(fine.out.empty()) << fine.out;
+  if (ringtest::shell("command -v ccx").empty())
+    GTEST_SKIP() << "no ccx on the PATH (calculix-ccx): the TMPDIR case needs it";
+  const auto tmp = ringvib("table " + source("scenes/paper1990-calculix.toml"), "TMPDIR=/nonexistent");
+  expect_input_error(tmp, "TMPDIR");
+  EXPECT_NE(tmp.err.find("/nonexistent"), std::string::npos) << tmp.err;
+  EXPECT_TRUE(tmp.out.empty()) << tmp.out;  // no column computed, no table printed
+}
+
 // Class 5: a re-run replaces the earlier run's files (and keeps the user's own).
 TEST(Robustness, AFolderHoldsOneRunsFiles) {
   const std::string out = ringtest::temp_dir() + "/out";

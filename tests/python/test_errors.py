@@ -125,3 +125,85 @@ def test_response_failure_raises_numerical_error_with_the_time_reached(capfd):
     assert partial.solver == "multibody"
     assert partial.t[-1] == t and len(partial.history) == len(partial.t)
     assert capfd.readouterr() == ("", "")
+
+
+# ---- Ctrl-C (issue 46) ----
+# SIGINT to a process inside a solve raises KeyboardInterrupt there, after cleaning up:
+# a solve checks for a pending signal at least every 0.1 s of work (README, "Python").
+# Before, a respond ignored it for the whole run (58 s measured) and a hung ccx ran until
+# calculix.timeout. Each case runs in a child process that prints "solving" just before the
+# call; the parent sends SIGINT a moment later and gives the child a few seconds to print
+# what the call raised. The runs asked for would take minutes (or forever: a ccx that never
+# finishes), so an ignored signal fails by the timeout.
+INTERRUPT_SCRIPT = r"""
+import sys, ringvib
+scene = ringvib.Scene.load(sys.argv[1], set=eval(sys.argv[3]))
+print("solving", flush=True)
+try:
+    if sys.argv[2] == "calculix":
+        ringvib.modes(scene, "calculix", 4)
+    else:
+        ringvib.respond(scene, sys.argv[2])
+    print("finished", flush=True)
+except KeyboardInterrupt:
+    print("KeyboardInterrupt", flush=True)
+"""
+
+
+def interrupted(scene, solver, overrides, env=None):
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    p = subprocess.Popen([sys.executable, "-c", INTERRUPT_SCRIPT, scene, solver, repr(overrides)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, stdin=subprocess.DEVNULL, text=True,
+                         env=env or dict(os.environ))
+    try:
+        assert p.stdout.readline().strip() == "solving"
+        time.sleep(1.0)  # well inside the solve
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=5)
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+    return out.split(), err
+
+
+def test_ctrl_c_interrupts_a_long_response():
+    # 10^6 steps of the 160-link chain: about a minute.
+    out, err = interrupted(FORCED, "multibody", {"multibody.n": 160, "response.dt": 1e-3, "response.t_end": 1000.0,
+                                                 "response.record": [0.0]})
+    assert out == ["KeyboardInterrupt"], err
+
+
+def test_ctrl_c_kills_a_hung_ccx_and_leaves_nothing(tmp_path):
+    import os
+    import time
+
+    # A ccx that never finishes (it records its pid first), on the PATH ahead of any other.
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    pid_file = tmp_path / "ccx.pid"
+    ccx = bin_dir / "ccx"
+    ccx.write_text(f"#!/bin/sh\necho $$ > {pid_file}\nexec sleep 600\n")
+    ccx.chmod(0o755)
+    tmp = tmp_path / "tmp"
+    tmp.mkdir()
+    env = dict(os.environ, PATH=f"{bin_dir}:{os.environ.get('PATH', '')}", TMPDIR=str(tmp))
+    out, err = interrupted(scene_path("paper1990-calculix.toml"), "calculix", {}, env)
+    assert out == ["KeyboardInterrupt"], err
+    pid = int(pid_file.read_text())
+    deadline = time.monotonic() + 2.0
+    while time.monotonic() < deadline:  # killed with SIGKILL and reaped: gone at once
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            break
+        time.sleep(0.05)
+    else:
+        os.kill(pid, 9)
+        raise AssertionError(f"ccx (pid {pid}) still runs after the KeyboardInterrupt")
+    assert list(tmp.iterdir()) == []  # its job folder removed

@@ -44,3 +44,44 @@ def test_threads_sharing_one_scene():
         results = list(pool.map(lambda _: ringvib.modes(s, "multibody", 10).omega, range(8)))
     for r in results[1:]:
         assert np.array_equal(r, results[0])
+
+
+# Issue 46: two threads asking for FE modes when the plug-in cannot be loaded hung forever
+# (one raised InputError at once). The oracle is the contract: every call raises InputError
+# naming the FE solver, none waits on another. Run in a child process whose
+# RINGVIB_FEM_MODULE names a file that does not exist, so that a deadlock fails the test by
+# its timeout instead of hanging the suite, and so that this process's own plug-in (the
+# other tests') stays loadable.
+MISSING_PLUGIN_SCRIPT = r"""
+import sys
+from concurrent.futures import ThreadPoolExecutor
+import ringvib
+
+scene = ringvib.Scene.load(sys.argv[1], set={"fem.elements": 16})
+
+def fem(_):
+    try:
+        ringvib.modes(scene, "fem", 4)
+        return "solved"
+    except ringvib.InputError as e:
+        return "InputError: " + str(e)
+
+with ThreadPoolExecutor(max_workers=2) as pool:
+    for outcome in pool.map(fem, range(4)):
+        print(outcome, flush=True)
+"""
+
+
+def test_threads_refused_by_a_missing_plugin_do_not_deadlock(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    env = dict(os.environ, RINGVIB_FEM_MODULE=str(tmp_path / "no-such-dir" / "libringvib_fem.so"))
+    run = subprocess.run([sys.executable, "-c", MISSING_PLUGIN_SCRIPT, scene_path("paper1990.toml")], env=env,
+                         capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60)
+    assert run.returncode == 0, run.stderr
+    outcomes = run.stdout.splitlines()
+    assert len(outcomes) == 4, run.stdout + run.stderr
+    for o in outcomes:
+        assert o.startswith("InputError: ") and "not available" in o and "no-such-dir" in o, o
