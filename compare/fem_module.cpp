@@ -1,6 +1,7 @@
 #include "compare/fem_module.hpp"
 
 #include <dlfcn.h>
+#include <link.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <stdexcept>
+#include <vector>
 #include <sys/stat.h>
 
 #include "ring/errors.hpp"
@@ -17,17 +19,80 @@
 namespace cmp::fem_module {
 namespace {
 
-/// Where the FE plug-in is: $RINGVIB_FEM_MODULE, else beside the executable.
-std::string fem_module_path() {
-  if (const char* p = std::getenv("RINGVIB_FEM_MODULE")) return p;
-  char buf[PATH_MAX];
-  const ssize_t len = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  std::string dir = ".";
-  if (len > 0) {
-    dir.assign(buf, len);
-    dir = dir.substr(0, dir.rfind('/'));
+// Where the FE plug-in is. Never a build path compiled in: a build tree and an installed
+// prefix can both be moved, so the plug-in is looked up relative to the file this code runs
+// from, which is the `ringvib` executable (or a test program) or the Python module that
+// links compare statically. The layouts (the relative folders come from CMake,
+// compare/CMakeLists.txt, so that they follow the install directories):
+//   executable  build tree: bin/ringvib             -> bin/libringvib_fem.so
+//               installed:  P/bin/ringvib           -> P/lib/ringvib/libringvib_fem.so
+//   module      build tree: python/ringvib.*.so     -> bin/libringvib_fem.so
+//               installed:  P/lib/python3/dist-packages/ringvib.*.so -> P/lib/ringvib/...
+// $RINGVIB_FEM_MODULE, when set, names the plug-in and nothing else is tried.
+constexpr const char* kPluginName = "libringvib_fem.so";
+
+struct Anchor {
+  std::string dir;          ///< the folder of the file this code runs from, symlinks resolved
+  bool executable = true;   ///< the main program (true) or a shared object (the Python module)
+};
+
+/// The file that holds this code: dladdr() names the shared object (its link map has a
+/// name); the main program's is empty, and /proc/self/exe names it instead.
+Anchor find_anchor() {
+  Anchor a;
+  std::string file;
+  Dl_info info{};
+  link_map* map = nullptr;
+  if (dladdr1(reinterpret_cast<void*>(&find_anchor), &info, reinterpret_cast<void**>(&map), RTLD_DL_LINKMAP) != 0 &&
+      map != nullptr && map->l_name != nullptr && map->l_name[0] != '\0') {
+    file = map->l_name;
+    a.executable = false;
+  } else {
+    char buf[PATH_MAX];
+    const ssize_t len = readlink("/proc/self/exe", buf, sizeof buf - 1);
+    if (len > 0) file.assign(buf, len);
   }
-  return dir + "/libringvib_fem.so";
+  if (char* real = file.empty() ? nullptr : realpath(file.c_str(), nullptr)) {
+    file = real;
+    std::free(real);
+  }
+  const auto slash = file.rfind('/');
+  a.dir = slash == std::string::npos ? std::string(".") : file.substr(0, slash);
+  return a;
+}
+
+// Resolved when the program or the module is loaded, before anyone changes the working
+// directory (Python names a module by a relative path when PYTHONPATH is relative).
+const Anchor g_anchor = find_anchor();
+
+/// dir/rel/libringvib_fem.so, without a "." folder.
+std::string in(const std::string& dir, const char* rel) {
+  return (std::string(rel) == "." ? dir : dir + "/" + rel) + "/" + kPluginName;
+}
+
+std::vector<std::string> candidates() {
+  if (const char* p = std::getenv("RINGVIB_FEM_MODULE")) return {p};
+  const std::string& d = g_anchor.dir;
+  if (g_anchor.executable) return {in(d, RINGVIB_FEM_FROM_BUILD_BIN), in(d, RINGVIB_FEM_FROM_BINDIR)};
+  return {in(d, RINGVIB_FEM_FROM_BUILD_PYTHON), in(d, RINGVIB_FEM_FROM_PYTHONDIR)};
+}
+
+bool exists(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+
+/// The first candidate that exists, as a real path (no "bin/.."); when none does, the first
+/// one (for the message).
+std::string fem_module_path() {
+  const std::vector<std::string> c = candidates();
+  for (const std::string& p : c)
+    if (char* real = realpath(p.c_str(), nullptr)) {
+      std::string r = real;
+      std::free(real);
+      return r;
+    }
+  return c.front();
 }
 
 /// Opens the plug-in: sets `plugin` and returns "", or returns why it cannot be used.
@@ -41,8 +106,10 @@ std::string load(const fem::Plugin*& plugin) {
   void* h = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
   if (!h) {
     const char* why = dlerror();
+    std::string tried;
+    for (const std::string& p : candidates()) tried += (tried.empty() ? "" : ", ") + p;
     return std::string("the FE solver is not available: cannot load ") + path + " (" + (why ? why : "unknown") +
-           "); build with -DRINGVIB_WITH_FEM=ON";
+           "; looked for " + tried + "); build with -DRINGVIB_WITH_FEM=ON";
   }
   using Entry = const fem::Plugin* (*)();
   auto entry = reinterpret_cast<Entry>(dlsym(h, "ringvib_fem_plugin"));
@@ -163,9 +230,13 @@ ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOp
 
 bool loaded() { return g_loaded; }
 
-bool available() {
-  struct stat st;
-  return stat(fem_module_path().c_str(), &st) == 0;
+bool available() { return exists(fem_module_path()); }
+
+std::string plugin_path() {
+  const std::string p = fem_module_path();
+  return exists(p) ? p : std::string();
 }
+
+std::vector<std::string> plugin_candidates() { return candidates(); }
 
 }  // namespace cmp::fem_module

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "ring/analysis.hpp"
 #include "ring/results.hpp"
@@ -38,5 +39,12 @@ ring::ModalResult modes_under_load(const ring::RingSpec& spec, const ring::FemOp
 bool loaded();
 /// True when the plug-in exists on disk.
 bool available();
+/// The plug-in this process loads on first FE use: $RINGVIB_FEM_MODULE when set, otherwise
+/// the first that exists of plugin_candidates(); empty when none exists. Nothing is loaded.
+std::string plugin_path();
+/// Where the plug-in is looked for, in order: $RINGVIB_FEM_MODULE alone when set; else beside
+/// the executable (build tree) and in ../lib/ringvib (installed), or, in the Python module,
+/// the build tree's bin/ and the installed plug-in folder, each relative to the module's file.
+std::vector<std::string> plugin_candidates();
 
 }  // namespace cmp::fem_module

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "compare/commands.hpp"
+#include "compare/fem_module.hpp"
 #include "compare/files.hpp"
 #include "compare/registry.hpp"
 #include "compare/sweep.hpp"
@@ -38,7 +39,15 @@ void add_common(CLI::App* c, cmp::CommonArgs& a) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ringvib: in-plane vibration of thin rings; three solvers cross-validated (Yin & Wang 1989/90)"};
-  app.set_version_flag("--version", std::string("ringvib ") + RINGVIB_VERSION);
+  // The version and the FE plug-in this program would load (found relative to it, never by a
+  // build path: compare/fem_module.cpp), so that an install can be checked without a solve.
+  app.set_version_flag("--version", [] {
+    const std::string plugin = cmp::fem_module::plugin_path();
+    std::string where;
+    for (const std::string& p : cmp::fem_module::plugin_candidates()) where += (where.empty() ? "" : ", ") + p;
+    return std::string("ringvib ") + RINGVIB_VERSION + "\nFE plug-in: " +
+           (plugin.empty() ? "not found (looked for " + where + ")" : plugin);
+  });
   app.require_subcommand(1);
   cmp::CommonArgs a;
   std::string out, junit, format = "text", solver, vtu, csv;

@@ -171,11 +171,6 @@ PYBIND11_MODULE(ringvib, m) {
   m.attr("__version__") = RINGVIB_VERSION;
   m.attr("STATIONS") = ring::kStations;
 
-#ifdef RINGVIB_FEM_PLUGIN
-  // The FE plug-in of this build tree, unless the caller named another.
-  setenv("RINGVIB_FEM_MODULE", RINGVIB_FEM_PLUGIN, /*overwrite=*/0);
-#endif
-
   register_errors(m);
 
   py::class_<Scene>(m, "Scene",
