@@ -2,7 +2,7 @@
 # Process wall time and peak memory of ringvib commands, median of N runs (default 5),
 # wall time from the shell's clock (includes /usr/bin/time's own start, about 1 ms),
 # peak memory from /usr/bin/time -v. Usage: bench/process.sh [N] -- ARGS...   (one command)
-# or without arguments: the README's benchmark (a multibody-only scene, the full paper
+# or without arguments: the benchmark of docs/development.md (a multibody-only scene, the full paper
 # table and run, and a tiny FE scene, which is mostly the FE plug-in's start: dlopen of
 # libringvib_fem.so and the ~200 libraries deal.II pulls in).
 set -euo pipefail

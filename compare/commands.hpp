@@ -1,4 +1,4 @@
-// The subcommands of `ringvib` (README, "The command"). Each returns the process
+// The subcommands of `ringvib` (docs/commands.md). Each returns the process
 // exit code: 0 success, 1 a gate failed; bad input throws ring::InputError (2) and a
 // numerical failure ring::NumericalError (3), caught in main().
 #pragma once

@@ -1,4 +1,4 @@
-// The file contract of every command (README, "Files a run writes"):
+// The file contract of every command (docs/commands.md, "Files a run writes"):
 //
 // - own files only: ringvib writes, replaces and removes only files it writes itself. An
 //   output folder's manifest (DIR/.ringvib-files) is read as a list of candidates, and a

@@ -4,7 +4,7 @@
 // the estimate instead of minutes of work and an out-of-memory crash.
 //
 // The estimates are per solver (SolverEntry::memory) and per analysis, calibrated on
-// measured peaks (README "Cost guard"): they aim at the right order of magnitude, not
+// measured peaks (docs/commands.md, "Cost guard"): they aim at the right order of magnitude, not
 // at the byte.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Columns of other codes' results ([[table.import]]; README "Imported columns"): their
+// Columns of other codes' results ([[table.import]]; docs/solvers.md, "Imported columns"): their
 // frequencies, and optionally their mode shapes, read into a ring::ModalResult that the
 // table pairs, differences, errors and gates like any solver's column.
 //

@@ -97,7 +97,7 @@ SolverEntry multibody_entry() {
   e.richardson = true;
   e.paper = [](const ring::PaperRow& r) { return r.mb_corrected; };
   // Working memory beyond the process (compare/guard.cpp adds that), fitted to the peak
-  // RSS measured at n = 200 ... 10^6 (README "Cost guard"; tests/compare/test_memory_estimate.cpp
+  // RSS measured at n = 200 ... 10^6 (docs/commands.md, "Cost guard"; tests/compare/test_memory_estimate.cpp
   // holds it within [1, 1.5] of the measured peak). Measured: dense modes 49 n^2 bytes
   // (LAPACK's n x n pencil and workspace); O(n) modes n (320 + 11 count) (slopes between
   // n = 10^4 and 10^5 for count = 5, 23, 50, 100: 374, 582, 879, 1412 bytes per segment;
@@ -445,7 +445,7 @@ SolverEntry calculix_entry() {
   };
   e.no_buckling_because =
       "CalculiX's *BUCKLE keeps only the stress stiffness of the linear prebuckling state, not the displacement "
-      "terms of ringvib's one definition (README, \"Buckling and the path to contact\"), so its factors would differ by model under loads "
+      "terms of ringvib's one definition (docs/solvers.md, \"Buckling and the path to contact\"), so its factors would differ by model under loads "
       "that bend the ring";
   e.response = [](const ring::Scene& s) {
     return with_scene_file(

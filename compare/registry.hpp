@@ -53,7 +53,7 @@ struct SolverEntry {
   int converge_steps = 5;      ///< refinements size x 1, 2, 4, ... in `ringvib converge`
   bool richardson = false;     ///< add a Richardson column (order 2) in convergence and bench
   /// Estimated peak memory (bytes) of `count` modes (count 0: the nonlinear solves) under
-  /// the scene's options, for the cost guard (guard.hpp); calibrated in the README.
+  /// the scene's options, for the cost guard (guard.hpp); calibrated in docs/commands.md ("Cost guard").
   std::function<double(const ring::Scene&, int count)> memory;
   /// Estimated peak memory (bytes) of its linear buckling (dense pencils), for the cost guard.
   std::function<double(const ring::Scene&)> buckling_memory;

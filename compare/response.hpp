@@ -11,7 +11,7 @@
 namespace cmp {
 
 /// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, work,
-/// energy_error, constraint_residual, newton_iterations (README, "The command").
+/// energy_error, constraint_residual, newton_iterations (docs/commands.md, "What each command does").
 std::string history_csv(const ring::TimeHistory& h);
 /// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations", "solver",
 /// "unknowns", "seconds"}.

@@ -35,7 +35,7 @@ bool built() { return true; }
 namespace {
 constexpr int kRequest = 1, kAssign = 2;
 
-// Signals under mpirun (measured with Open MPI 4.1.4, Debian 12; README "ringvib sweep").
+// Signals under mpirun (measured with Open MPI 4.1.4, Debian 12; docs/commands.md, "ringvib sweep").
 // The run's files are rank 0's alone: it stages them and, on SIGINT, SIGTERM or SIGHUP,
 // its handler (install_signal_cleanup) removes the stage and the folders the run made,
 // then dies of the signal.

@@ -164,7 +164,7 @@ std::string footnotes(const Table& t) {
   if (any_subspace(t))
     s << "= one of a double value (equal to " << kDegenerate << " relative), compared as a subspace: its MAC is\n"
       << "  cos^2 of the base mode's angle to the pair's plane (each solver may return any basis of it).\n";
-  if (!t.paper.empty()) s << "paper = Yin & Wang Table 1 (corrected values, README \"The paper\"); vs paper % = (computed - paper) / paper * 100.\n";
+  if (!t.paper.empty()) s << "paper = Yin & Wang Table 1 (corrected values, docs/paper.md); vs paper % = (computed - paper) / paper * 100.\n";
   double worst = 1.0;
   auto count = [&](const Column& c) {
     for (double m : c.mac)

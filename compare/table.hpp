@@ -76,7 +76,7 @@ std::vector<int> pair_by_mac(const ring::ModalResult& base, const ring::ModalRes
 Table build_table(const std::string& title, const std::vector<ring::ModalResult>& results,
                   const ring::ModalResult* reference, int rows);
 
-/// Formats: aligned text, Markdown, CSV, JSON (the README's contract).
+/// Formats: aligned text, Markdown, CSV, JSON (the contract of docs/commands.md).
 std::string format_text(const Table& t);
 std::string format_markdown(const Table& t);
 std::string format_csv(const Table& t);

@@ -3,7 +3,7 @@
 fitted order of convergence, through the ringvib Python module.
 
 The reference is the converged FE solution of the inextensible ring (the continuum a chain
-of rigid links converges to; README, `converge`): fem.reference = true refines until the
+of rigid links converges to; docs/commands.md, `converge`): fem.reference = true refines until the
 frequencies change by less than fem.tolerance (1e-9). Modes are paired with the reference's
 by the modal assurance criterion (MAC) on the 360 common stations, as the table pairs them.
 

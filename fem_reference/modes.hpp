@@ -14,7 +14,7 @@
 //    kinematics of ring/closed_form.hpp.
 //  - geometry `polygon`: straight chords between the vertices (the paper's SAP5 frame):
 //    the regular n-gon of side 2 pi R / n, i.e. perimeter = circumference, vertices at
-//    radius R (pi/n) / sin(pi/n) in the node directions (README, "The paper": what SAP5 computed);
+//    radius R (pi/n) / sin(pi/n) in the node directions (docs/paper.md: what SAP5 computed);
 //    fields are the Cartesian components (ux, uy); on a chord with unit tangent t and
 //    outward normal n, eps = t.U_s, kappa = -n.U_ss, phi = -n.U_s (s: arc length).
 // Energies: strain EA/2 int eps^2 + EI/2 int kappa^2 ds, kinetic rho A/2 int |U|^2 ds

@@ -28,7 +28,7 @@ namespace lumped {
 /// max_residual (largest relative residual of the elastic pairs, eigen.hpp residuals()).
 /// \param count 1 <= count <= elastic_dofs() (n - 3 for the chain, 2n - 3 for frame,
 ///              3n - 3 for frame-consistent and timoshenko-frame with the paper's
-///              supports; README's model
+///              supports; docs/solvers.md's model
 ///              table for further pins, a clamp, point inertias and rigid modes held).
 /// Every term of `spec` is modelled (model.hpp): pins, clamp, roller, springs, point
 /// masses, foundation; a point off the nodes is std::invalid_argument naming the key, and so

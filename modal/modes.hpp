@@ -97,7 +97,7 @@ inline double worst(double a, double b) { return std::isnan(a) || a > b ? a : b;
 /// 2.6e-5 at the extreme the stress suite measures (the paper's dependent angles at n = 2000),
 /// 1e-13 in the common case; a silently failed eigensolver gives order 1 (measured: the O(n)
 /// Lanczos of a free chain that filled its whole Krylov space, and the paper's dependent angles
-/// without rotary inertia at n = 2000, both 1.0; README "Exit codes"). The bound sits between.
+/// without rotary inertia at n = 2000, both 1.0; docs/commands.md, "Exit codes"). The bound sits between.
 constexpr double kAcceptedResidual = 1e-2;
 
 /// Throws ring::NumericalError naming result.solver when result.max_residual is above

@@ -174,7 +174,7 @@ PYBIND11_MODULE(ringvib, m) {
   register_errors(m);
 
   py::class_<Scene>(m, "Scene",
-                    "A scene: what to compute (README, 'Scene reference'), read and validated once.\n"
+                    "A scene: what to compute (docs/scenes.md), read and validated once.\n"
                     "Immutable; Scene.with_() gives a new scene with more overrides.")
       .def_static(
           "load",
@@ -252,7 +252,7 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("seconds", &Modes::seconds, "Solver wall time, s.")
       .def_readonly("max_residual", &Modes::max_residual,
                     "Largest relative eigen-residual ||Kx - w^2 Mx|| / (||Kx|| + w^2 ||Mx||) of the returned\n"
-                    "modes, in the norm residual_norm names (README, `modes --json`); None where the solver\n"
+                    "modes, in the norm residual_norm names (docs/commands.md, `modes --json`); None where the solver\n"
                     "reports none (calculix).")
       .def_readonly("residual_norm", &Modes::residual_norm)
       .def_readonly("error_estimate", &Modes::error_estimate,

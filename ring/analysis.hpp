@@ -20,7 +20,7 @@ struct ResponseOptions {
   /// (1993) with rho_inf; energy_momentum: a scheme that conserves the undamped energy
   /// balance T + V - W to the Newton tolerance for any dt (only such a scheme carries this
   /// name); midpoint: the implicit midpoint rule (second order, its energy error O(dt^2)
-  /// on a non-quadratic energy). Each solver offers some of them (README,
+  /// on a non-quadratic energy). Each solver offers some of them (docs/scenes.md,
   /// response.integrator) and refuses the others in its check_response.
   enum class Integrator { newmark, generalized_alpha, energy_momentum, midpoint };
   Integrator integrator = Integrator::newmark;

@@ -1,4 +1,4 @@
-// The kinds of failure a user can meet, with the exit codes of the README.
+// The kinds of failure a user can meet, with the exit codes of docs/commands.md ("Exit codes").
 #pragma once
 
 #include <stdexcept>

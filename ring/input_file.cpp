@@ -58,8 +58,9 @@ std::string read_input_file(const std::string& path, std::size_t cap, const std:
     throw InputError(path, "", std::string("is ") + kind_name(st.st_mode) + "; " + what + " must be " + expected +
                                    (S_ISDIR(st.st_mode) ? "" : " (a FIFO or device may block or never end)"));
   auto too_large = [&](const std::string& size) {
-    return InputError(path, "", "is " + (size.empty() ? "" : size + ", ") + "larger than the " +
-                                    size_text(double(cap)) + " that " + what + " may be (README, \"Exit codes\")");
+    return InputError(path, "",
+                      "is " + (size.empty() ? "" : size + ", ") + "larger than the " + size_text(double(cap)) +
+                          " that " + what + " may be (docs/commands.md, \"Exit codes\")");
   };
   if (S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) > cap)
     throw too_large(std::to_string(st.st_size) + " bytes");

@@ -2,7 +2,7 @@
 // sweep's --resume table. Each is checked before it is opened for reading and read with a
 // cap, so that no path makes ringvib read without bound (/dev/zero), block in open() (a
 // FIFO named in a scene) or hold a file larger than its purpose needs (issue 46). The caps
-// are documented in the README ("Exit codes").
+// are documented in docs/commands.md ("Exit codes").
 #pragma once
 
 #include <cstddef>
@@ -22,7 +22,7 @@ constexpr std::size_t kMaxResumeBytes = std::size_t(256) << 20;   // 256 MiB
 enum class InputKind {
   regular,  ///< a regular file only: a FIFO, device, socket or folder is refused unopened
   stream,   ///< also a FIFO or a character device, read once up to the cap: a scene given
-            ///< as /dev/stdin or a pipe on the command line (README, "ringvib sweep")
+            ///< as /dev/stdin or a pipe on the command line (docs/commands.md, "ringvib sweep")
 };
 
 /// The text of the file at `path` (symlinks followed), at most `cap` bytes. Before the file

@@ -10,7 +10,7 @@ namespace ring {
 
 /// One row of compare/data/table1.csv (rad/s; empty cells are std::nullopt).
 /// *_corrected replace printed values that contradict the paper's own error
-/// percentages (README, "The paper").
+/// percentages (docs/paper.md).
 struct PaperRow {
   int mode = 0;
   std::optional<double> mb_printed, lm_printed, lm_error_pct_printed, fe_printed,

@@ -486,7 +486,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   read_supports(r, root, s.ring);
   read_attachments(r, root, s.ring);
 
-  // Solver sections: each optional, defaults as in the README's scene reference.
+  // Solver sections: each optional, defaults as in the scene reference (docs/scenes.md).
   const toml::table* mt = r.table(root, "", "multibody");
   if (mt) {
     r.known_keys(*mt, "multibody", {"n", "rotary_inertia", "dependent", "method", "theory"});
@@ -560,7 +560,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   }
 
   // A scene that lists no analysis at all: the modes of the solver sections present
-  // (README, modes.solvers), rather than nothing.
+  // (docs/scenes.md, modes.solvers), rather than nothing.
   if (!root.get("modes") && !root.get("table") && !root.get("response") && !root.get("static") && !root.get("buckling"))
     for (const auto& m : schema.solvers)
       if (root.get(m.name)) s.modes.solvers.push_back(m.name);
@@ -1125,7 +1125,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
 }
 
 std::string read_scene_text(const std::string& path) {
-  // A scene may come down a pipe (/dev/stdin, a FIFO: README, "ringvib sweep"): the user
+  // A scene may come down a pipe (/dev/stdin, a FIFO: docs/commands.md, "ringvib sweep"): the user
   // named it on the command line; the cap bounds an endless device.
   return read_input_file(path, kMaxSceneBytes, "the scene file", InputKind::stream);
 }

@@ -1,4 +1,4 @@
-// A scene: one TOML file that says what to compute (README, "Scene reference").
+// A scene: one TOML file that says what to compute (docs/scenes.md).
 // Parsed and validated once; the driver computes exactly what it lists.
 #pragma once
 

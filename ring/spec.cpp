@@ -101,14 +101,14 @@ int RingSpec::rigid_modes() const {
 
 namespace {
 
-/// Throws std::invalid_argument "`who` does not take KEY, KEY yet (see the README ...)" for a
+/// Throws std::invalid_argument "`who` does not take KEY, KEY yet (see docs/solvers.md ...)" for a
 /// non-empty list of scene keys.
 void refuse_keys(const std::vector<std::string>& keys, const std::string& who) {
   if (keys.empty()) return;
   std::string list;
   for (std::size_t i = 0; i < keys.size(); ++i) list += (i ? ", " : "") + keys[i];
   throw std::invalid_argument(who + " does not take " + list +
-                              " yet (see the README, \"Beyond the paper's ring\", for what each solver takes)");
+                              " yet (see docs/solvers.md, \"Beyond the paper's ring\", for what each solver takes)");
 }
 
 }  // namespace
@@ -117,7 +117,7 @@ void refuse_timoshenko(const RingSpec& spec, const std::string& who) {
   if (spec.theory == Theory::timoshenko)
     throw std::invalid_argument(who +
                                 " has no Timoshenko model yet (the model's theory is \"timoshenko\": ring.theory, or the "
-                                "solver's own multibody.theory or fem.theory where given; see the README, "
+                                "solver's own multibody.theory or fem.theory where given; see docs/solvers.md, "
                                 "\"Thick rings\", for what each solver takes)");
 }
 

@@ -218,8 +218,8 @@ struct ScaleViolation {
   std::string what;
 };
 
-/// The first scale of `spec` outside the window, or nothing. The rule (README, "Scene
-/// reference"), in SI units:
+/// The first scale of `spec` outside the window, or nothing. The rule (docs/scenes.md, "The scale
+/// rule"), in SI units:
 /// - the ring's own scales, EI/R^4 and EA/R^2 (N/m^2), rho A (kg/m) and its squared
 ///   frequency scale EI/(rho A R^4) (1/s^2), lie within [kMinScale, kMaxScale];
 /// - each term added to the ring is at most kMaxScale as a stiffness or mass per metre of

@@ -67,7 +67,7 @@ TEST(CalculixReference, ForcedResponseAgainstTheFeBeamAtTheSameTimeStep) {
   // Section 5's 20 kN step at C, to just past the first peak (1.24 s), ccx's NLGEOM
   // *DYNAMIC (ALPHA = 0: Newmark's average acceleration) beside the geometrically exact FE
   // beam with Newmark at the same dt: the time-step error (0.12 % of the peak for the FE
-  // beam at dt = 0.01 s, README "The paper") is common to both, so what is left is the
+  // beam at dt = 0.01 s, docs/paper.md) is common to both, so what is left is the
   // models' difference.
   const auto r = ringtest::ringvib("respond " + ringtest::source("scenes/paper1990-forced-compare.toml") +
                                    " --format json -q --set 'response.solvers=[\"calculix\", \"fem\"]'"

@@ -1,5 +1,5 @@
 // The ringvib command as a user meets it: exit codes, messages, nothing written on bad
-// input, the JSON contracts of the README, and "skip what a scene doesn't need".
+// input, the JSON contracts of docs/commands.md, and "skip what a scene doesn't need".
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,7 +67,7 @@ TEST(Cli, BadScenesExit2AndWriteNothing) {
   EXPECT_EQ(set.code, 2);
 }
 
-// the README: {"solver", "model": {...}, "rigid_modes", "omega": [ascending], "seconds"};
+// docs/commands.md: {"solver", "model": {...}, "rigid_modes", "omega": [ascending], "seconds"};
 // modes.count = 9 computes 9 modes, and --count 3 three.
 // Code_Aster's validation case SDLL11 (free thin ring: R = 0.1 m, 10 x 5 mm section, 5 mm
 // in the plane, E = 72 GPa, rho = 2700 kg/m^3): every elastic frequency is double, and
@@ -105,7 +105,7 @@ TEST(Cli, ModesJsonContract) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["solver"], "multibody");
-  EXPECT_EQ(j["rigid_modes"], 1);  // pinned: rotation about the pin (README "The paper", check 2)
+  EXPECT_EQ(j["rigid_modes"], 1);  // pinned: rotation about the pin (docs/paper.md, check 2)
   EXPECT_EQ(j["model"]["n"], 40);
   ASSERT_EQ(j["omega"].size(), 9u);
   for (std::size_t i = 1; i < 9; ++i) EXPECT_LE(j["omega"][i - 1].get<double>(), j["omega"][i].get<double>());

@@ -6,7 +6,7 @@
 // from the consistent acceleration) under a 200 kN step with dt = 0.2 s holds 8.8 % more
 // energy than the load put in after its first step (measured: T + V - W = +6.4e4 J
 // against a work of 7.2e5 J), nine times the 1 % that the rule (ring/energy_guard.hpp)
-// allows. Oracle: the exit-code contract of the README and the energy balance itself.
+// allows. Oracle: the exit-code contract of docs/commands.md and the energy balance itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,7 +27,7 @@ struct Case {
   std::string solver, integrator;
 };
 
-/// Every solver and integrator that offers the forced response (README, response.integrator).
+/// Every solver and integrator that offers the forced response (docs/scenes.md, response.integrator).
 const std::vector<Case> kIntegrators = {
     {"multibody", "newmark"}, {"multibody", "generalized-alpha"}, {"multibody", "energy-momentum"},
     {"lumped", "newmark"},    {"lumped", "midpoint"},             {"fem", "newmark"},

@@ -1,7 +1,7 @@
 // The file contract under hostile input (issue 23), through the binary: ringvib touches
 // only its own files, checks every destination before computing, publishes nothing of a
 // failed or interrupted run, leaves no stage, and refuses what it cannot measure instead of
-// printing NaN. The oracle is the README's contract ("Exit codes", "Files a run writes");
+// printing NaN. The oracle is the contract of docs/commands.md ("Exit codes", "Files a run writes");
 // each test names the probe finding it holds.
 #include <gtest/gtest.h>
 
@@ -380,7 +380,7 @@ solvers = ["multibody"]
 
 // Issue 46, finding 3: an imported column was read without bound and unchecked: `file =
 // "/dev/zero"` grew to 4.2 GB, a FIFO blocked open() forever. Every file a scene names
-// (frequencies, shapes) must be a regular file within its cap (README, "Exit codes": 4 MiB
+// (frequencies, shapes) must be a regular file within its cap (docs/commands.md, "Exit codes": 4 MiB
 // and 64 MiB), checked before it is opened: exit 2 naming the file, at once. 5 s bounds a
 // run that reads nothing (the refusals take milliseconds; the probe's hang never ends).
 TEST(Files, ImportedFilesAreRegularFilesWithinTheirCapCheckedBeforeOpening) {

@@ -101,7 +101,7 @@ import = [{ label = "sap5", file = "paper_fe.csv" }]
     const auto& row = j["rows"][i];
     const double ref = row["reference"], fe = paper[i].fe_corrected.value();
     EXPECT_NEAR(row["sap5_error_pct"].get<double>(), (fe - ref) / ref * 100.0, 1e-12) << "mode " << i + 1;
-    // The paper's FE column (40 straight frame elements) is high by 0.1-1 % (README "The paper").
+    // The paper's FE column (40 straight frame elements) is high by 0.1-1 % (docs/paper.md).
     EXPECT_GT(row["sap5_error_pct"].get<double>(), -0.2) << "mode " << i + 1;
     EXPECT_LT(row["sap5_error_pct"].get<double>(), 1.5) << "mode " << i + 1;
   }
@@ -232,7 +232,7 @@ std::string file_text(const std::string& path) {
 // the file's last (fewer than modes.count) as "nan*  unlike", its MAC as `ext_mac = nan` in
 // every row of table.csv although no shapes were given (paired by order: no MAC), and its
 // max residual as "nan" in report.md (an imported column reports none). The oracle is the
-// README ("Imported columns": fewer modes leave the rest empty) and the exit-code contract
+// docs/solvers.md ("Imported columns": fewer modes leave the rest empty) and the exit-code contract
 // (no non-finite number is printed as a result).
 TEST(ImportedColumn, MissingModesMacAndResidualAreEmptyNotNan) {
   Folder f;

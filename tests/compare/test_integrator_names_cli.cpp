@@ -3,7 +3,7 @@
 // gradient); the lumped chain's implicit midpoint rule does not, so it is offered as
 // "midpoint" and a request for "energy-momentum" is refused with exit 2, naming the
 // scene file, the key and "midpoint". A solver without a midpoint rule refuses "midpoint".
-// Oracles: the README's contract (response.integrator, "Exit codes") and the energy
+// Oracles: the contract of docs/scenes.md (response.integrator) and docs/commands.md ("Exit codes") and the energy
 // balance T + V - W of each history, which says whether a scheme conserves energy.
 #include <gtest/gtest.h>
 
@@ -68,7 +68,8 @@ TEST(IntegratorNames, LumpedChainRunsMidpointAndItDoesNotConserveEnergy) {
   const std::string sets = " --solver lumped --set response.t_end=1.0 --set response.integrator=";
   const auto midpoint = ringvib("respond " + source(kForced) + sets + "midpoint");
   ASSERT_EQ(midpoint.code, 0) << midpoint.err;
-  // "newmark" runs the same scheme on the chain (README): the same history, digit for digit.
+  // "newmark" runs the same scheme on the chain (docs/scenes.md, response.integrator): the same
+  // history, digit for digit.
   const auto newmark = ringvib("respond " + source(kForced) + sets + "newmark");
   ASSERT_EQ(newmark.code, 0) << newmark.err;
   EXPECT_EQ(midpoint.out, newmark.out);

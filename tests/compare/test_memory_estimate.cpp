@@ -6,7 +6,7 @@
 // it refuses scenes that fit). Oracle: the kernel's accounting of the child, ru_maxrss of
 // wait4(). Sizes stay at a few hundred MB and a few seconds each.
 //
-// Each run prints "estimate / measured" (MB); README "Cost guard" records them.
+// Each run prints "estimate / measured" (MB); docs/commands.md, "Cost guard", records them.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>

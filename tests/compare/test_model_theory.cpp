@@ -1,5 +1,5 @@
 // The model theory of each solver against the ring's physics, through the ringvib command
-// (README, "Thick rings"): ring.theory is what the reference solves, fem.theory and
+// (docs/solvers.md, "Thick rings"): ring.theory is what the reference solves, fem.theory and
 // lumped.variant the models the columns are. The oracle is outside the code: the closed forms
 // of the free extensible Euler-Bernoulli ring and of the free Timoshenko ring
 // (ring/closed_form.hpp), whose difference an Euler-Bernoulli FE column of a Timoshenko ring

@@ -5,7 +5,7 @@
 // their forced responses differ by the rotary inertia the lumped chain leaves out and
 // by each integrator's O(dt^2) error, which at the paper's dt = 0.01 s is below 0.5 % of
 // the loaded point's peak (measured 0.04 %); both chains converge to the FE reference
-// at second order in n; the contracts of the README (JSON keys, single-solver outputs,
+// at second order in n; the contracts of docs/commands.md (JSON keys, single-solver outputs,
 // gates, files).
 #include <gtest/gtest.h>
 

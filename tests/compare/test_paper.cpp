@@ -57,7 +57,7 @@ TEST_F(PaperTable, DifferencesAndErrorsFollowTheDefinitions) {
 
 // Oracle: Table 1 (corrected), with the acceptance tolerances of the solver issues:
 // multibody modes 1-9 within 0.8 %, all 23 within 2.5 % (issue 3); lumped chain modes 1-9
-// within 1.0 % (issue 5); README "The paper" check 4: the paper's FE column is 40 straight frame
+// within 1.0 % (issue 5); docs/paper.md, check 4: the paper's FE column is 40 straight frame
 // elements, which lie 0.1-1 % above the continuum, so the converged reference and the
 // accurate curved FE column lie within 1.2 % of it (issue 4's bound for 40 chords).
 TEST_F(PaperTable, ColumnsAgreeWithThePublishedTable) {
@@ -73,7 +73,7 @@ TEST_F(PaperTable, ColumnsAgreeWithThePublishedTable) {
   }
 }
 
-// Oracle: README "The paper" check 7: against the converged limit the n = 40 multibody chain is low
+// Oracle: docs/paper.md, check 7: against the converged limit the n = 40 multibody chain is low
 // by about 0.8 % (mode 1) to 5 % (mode 23). Bounds: strictly below, by at most 6 %.
 TEST_F(PaperTable, MultibodyIsLowAgainstTheReference) {
   for (const auto& r : rows()) {

@@ -1,7 +1,7 @@
 // The exit-code contract held against hostile but realistic use, through the binary:
 // every input problem is exit 2 naming the key or option, found before anything is
 // computed or written; a signal during the write phase leaves no temporary file; a
-// folder holds one run's files. The oracle is the README's contract ("Exit codes",
+// folder holds one run's files. The oracle is the contract of docs/commands.md ("Exit codes",
 // "What run --out DIR writes").
 #include <gtest/gtest.h>
 
@@ -182,9 +182,9 @@ static std::string lower(std::string s) {
 // of 1e300 or 1e200 N/m^2, or E = 1e300 Pa, exited 0 printing "max relative eigen-residual
 // -nan" (its frequencies ~700 times the closed form): the residual and the backward error
 // overflowed to NaN, which the acceptance comparisons let through. Values whose products
-// overflow are refused by the scale rule (README, "Scene reference") with exit 2 naming the
+// overflow are refused by the scale rule (docs/scenes.md, "The scale rule") with exit 2 naming the
 // key, before anything is solved or written; nothing non-finite is printed. Oracle: the
-// exit-code contract (README, "Exit codes").
+// exit-code contract (docs/commands.md, "Exit codes").
 TEST(Robustness, ValuesWhoseProductsOverflowAreRefusedNotPrintedAsNaN) {
   const std::string pin_roller = source("scenes/paper1990.toml") +
                                  " --solver multibody --set supports.pin=270.0 --set supports.roller=90.0";

@@ -1,6 +1,6 @@
 // The scene parser: every rejected input gets an InputError that names the key, and
 // --set overrides go through the same validation. The oracle is the scene format of
-// the README and README ("Scene reference").
+// the README and docs/scenes.md.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -125,7 +125,7 @@ TEST(SceneReject, RollerWithoutPin) { expect_rejected(replace(kPaper, "pin = 180
 TEST(SceneReject, RollerAtThePin) {
   expect_rejected(replace(kPaper, "pin = 180.0", "pin = 180.0\nroller = -180.0"), "supports.roller", "different angle");
 }
-// The ring beyond the paper (README, scene reference: supports, masses, foundation).
+// The ring beyond the paper (docs/scenes.md: supports, masses, foundation).
 TEST(SceneParse, SupportsMassesAndFoundationReadAsWritten) {
   const ring::Scene s = cmp::parse_scene(
       replace(replace(kPaper, "pin = 180.0",
@@ -269,7 +269,7 @@ TEST(SceneReject, LoadNotOnANode) {
   expect_rejected(kRollered + "[static]\nat = 5.0\nforce = [-1.0, 0.0]\n", "static.at", "not a node");
 }
 TEST(SceneReject, LoadAtThePin) { expect_rejected(kRollered + "[static]\nat = 180.0\nforce = [-1.0, 0.0]\n", "static.at", "at the pin"); }
-// Loads beyond one point load (README, "[static] and [response]").
+// Loads beyond one point load (docs/solvers.md, "Loads").
 TEST(SceneLoads, ListPressureAndGravity) {
   const ring::Scene s = cmp::parse_scene(kRollered +
                                              "[static]\nloads = [{at = 90.0, force = [0.0, -1.0]}, {at = 270.0, force = [0.0, 1.0]}]\n"
@@ -312,7 +312,7 @@ TEST(SceneReject, NonFinitePressureAndGravity) {
 TEST(SceneReject, GravityOnAFreeRing) {
   expect_rejected(replace(kPaper, "pin = 180.0", "") + "[response]\ngravity = [0.0, -9.81]\n", "supports.pin");
 }
-// The Timoshenko vocabulary (README, "[ring]").
+// The Timoshenko vocabulary (docs/scenes.md, ring.theory).
 TEST(SceneTheory, TimoshenkoWithCowpersCoefficient) {
   const ring::Scene s = cmp::parse_scene(replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\ntheory = \"timoshenko\"\nnu = 0.25"),
                                          "p.toml", {});
@@ -326,7 +326,7 @@ TEST(SceneReject, TimoshenkoGeneralSectionNeedsShearCoefficient) {
   expect_rejected(general, "ring.shear_coefficient", "Cowper");
   EXPECT_NO_THROW(cmp::parse_scene(general, "p.toml", {"ring.shear_coefficient=0.85"}));
 }
-// A solver's model theory (README, "Thick rings"): ring.theory is the physics, and
+// A solver's model theory (docs/solvers.md, "Thick rings"): ring.theory is the physics, and
 // multibody.theory and fem.theory the models, each following ring.theory unless given.
 TEST(SceneTheory, ModelTheoriesFollowTheRingUnlessGiven) {
   const std::string timo = replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\ntheory = \"timoshenko\"");

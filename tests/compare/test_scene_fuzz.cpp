@@ -27,7 +27,7 @@ std::string read(const std::string& path) {
   return s.str();
 }
 
-/// The invariants every accepted scene must satisfy (the ranges of the README's scene reference).
+/// The invariants every accepted scene must satisfy (the ranges of the scene reference, docs/scenes.md).
 void expect_valid(const ring::Scene& s, const std::string& text) {
   EXPECT_GT(s.ring.radius, 0.0) << text;
   EXPECT_GT(s.ring.E, 0.0) << text;

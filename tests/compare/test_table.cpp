@@ -148,7 +148,7 @@ TEST(Gates, NanFails) {
 }
 
 // Oracle: the shipped copy of Table 1 has the paper's 23 modes and the corrections of
-// README "The paper" ("Corrections"): mode 2 MB 3.798, mode 3 FE 8.967, mode 8 MB 35.75.
+// docs/paper.md ("Corrections"): mode 2 MB 3.798, mode 3 FE 8.967, mode 8 MB 35.75.
 TEST(Table, EmbeddedPaperTable) {
   const auto rows = cmp::paper_table();
   ASSERT_EQ(rows.size(), 23u);

@@ -256,7 +256,7 @@ TEST(LumpedModel, SlendernessExtremes) {
 
 // Mode shapes at the common stations honour the supports: the pin (station 180) does not
 // move; the roller (station 0, opposite the pin) moves only along the pin-roller line,
-// i.e. radially at 0 deg. Oracle: the support definitions of the README.
+// i.e. radially at 0 deg. Oracle: the support definitions of docs/scenes.md (supports.pin, supports.roller).
 TEST(LumpedModel, ShapesHonourSupports) {
   ring::RingSpec spec = ringtest::pinned_ring();
   spec.supports.roller = 0.0;

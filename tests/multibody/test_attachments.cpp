@@ -32,7 +32,7 @@ ring::ModalResult modes(const ring::RingSpec& spec, int n, int count, bool rotar
 
 
 
-// The chain converges to the inextensible ring at order 2 in 1/n (README): with the
+// The chain converges to the inextensible ring at order 2 in 1/n (docs/solvers.md): with the
 // foundation lumped at the hinges it must still do so, toward the closed form.
 TEST(MultibodyAttachments, FoundationConvergesToTheClosedFormAtOrderTwo) {
   const ring::RingSpec spec = on_foundation();

@@ -43,13 +43,13 @@ TEST(MultibodyModes, PaperTableOneN40) {
   const auto rows = ring::read_paper_table(RINGVIB_SOURCE_DIR "/compare/data/table1.csv");
   ASSERT_EQ(rows.size(), 23u);
   const auto r = multibody::compute_modes(pinned_ring(), opts(40), 23);
-  EXPECT_EQ(r.rigid_modes, 1);  // rotation about the pin (README "The paper", "Support")
+  EXPECT_EQ(r.rigid_modes, 1);  // rotation about the pin (docs/paper.md)
   ASSERT_EQ(r.omega.size(), 23u);
   ASSERT_EQ(r.shapes.size(), 23u);
   for (int i = 0; i < 23; ++i) {
     const double ref = rows[i].mb_corrected.value();
     // Issue 3: modes 1-9 within 0.8 %, all 23 within 2.5 % of the paper's multibody
-    // column (README "The paper" item 3 measured 0.8 % and 2.1 %).
+    // column (docs/paper.md, item 3 measured 0.8 % and 2.1 %).
     const double tol = i < 9 ? 0.008 : 0.025;
     EXPECT_TRUE(ringtest::IsClose(r.omega[i], ref, tol)) << "mode " << i + 1;
     if (i > 0) {

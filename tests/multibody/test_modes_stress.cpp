@@ -68,7 +68,7 @@ TEST(MultibodyStress, RobustStaysAtDiscretizationLevelUpToN2000) {
       EXPECT_LT(r.numerical, 1e-8) << "n = " << n;
       if (n >= 32) {
         // discretization level: mode 1 error ~ C / n^2 with C ~ 0.8 % * 40^2 = 13
-        // (README "The paper" item 7); allow 2 C for the pre-asymptotic range.
+        // (docs/paper.md, item 7); allow 2 C for the pre-asymptotic range.
         EXPECT_LT(r.discrete1 * n * n, 26.0) << "n = " << n;
       }
     }

@@ -8,7 +8,7 @@ each a double eigenvalue (cos and sin k theta) (Hoppe 1871; Love, "Treatise on t
 Mathematical Theory of Elasticity", 4th ed., sec. 294; Soedel, "Vibrations of Shells and
 Plates", 3rd ed., eq. 6.6.14; ring/closed_form.hpp cites the same).
 
-The rigid-segment chain converges to the inextensible ring at second order in 1/n (README,
+The rigid-segment chain converges to the inextensible ring at second order in 1/n (docs/commands.md,
 `converge`: the multibody chain's Richardson column is order 2).
 """
 import math

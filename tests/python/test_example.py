@@ -1,5 +1,5 @@
 """examples/convergence.py runs as documented and measures what theory says: the chain of
-rigid segments converges to the inextensible ring at second order in 1/n (the README's
+rigid segments converges to the inextensible ring at second order in 1/n (docs/commands.md,
 `converge`: Richardson order 2), against the FE reference, an independent discretization.
 """
 import os

@@ -1,5 +1,5 @@
 // The paper's ring, one definition for every suite and benchmark program, each helper
-// named by the supports it sets (Yin & Wang, Table 1; README "The paper"): R = 10 m,
+// named by the supports it sets (Yin & Wang, Table 1; docs/paper.md): R = 10 m,
 // solid circle d = 0.12 m, E = 2.1e11 Pa, rho = 7.8e3 kg/m^3 (the printed 9.8e3 is a
 // misprint).
 #pragma once
