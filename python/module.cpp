@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/buckling.hpp"
 #include "compare/files.hpp"
 #include "compare/nonlinear.hpp"
 #include "compare/registry.hpp"
@@ -421,6 +422,56 @@ PYBIND11_MODULE(ringvib, m) {
                    "NumericalError with t_reached and the partial Response. ") +
        kBudgetDoc)
           .c_str());
+
+  m.def(
+      "buckling",
+      [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
+        const ring::BucklingResult r = released([&] {
+          const ring::Scene n = narrowed(s.scene, &ring::Scene::buckling_request, solver);
+          return input_checked(n, [&] {
+            cmp::check_runnable(n, max_memory_gib, force);
+            if (!n.buckling) throw ring::InputError(n.file, "buckling", "the scene has no [buckling] section");
+            const std::string one = single(n, n.buckling_request, solver, "buckling.solvers", "buckling_table");
+            return cmp::run_buckling(n, one, nullptr).results.front();
+          });
+        });
+        // The shapes as the modes carry them (cmp::as_modal: the factors in omega's place).
+        const Modes as_modes = to_python(cmp::as_modal(r));
+        py::dict d;
+        d["solver"] = r.solver;
+        d["model"] = as_modes.model;
+        d["factors"] = as_modes.omega;
+        d["shapes"] = as_modes.shapes;
+        d["stations_deg"] = as_modes.stations_deg;
+        d["unknowns"] = r.unknowns;
+        d["seconds"] = r.seconds;
+        return d;
+      },
+      py::arg("scene"), py::arg("solver") = "", py::kw_only(), py::arg("max_memory_gib") = 8.0,
+      py::arg("force") = false,
+      (std::string("The linear buckling of the scene's [buckling] with `solver` (default: the one\n"
+                   "buckling.solvers lists): a dict with solver, model, factors (the critical load factors\n"
+                   "lambda, ascending: ndarray), shapes (ndarray (k, 360, 2): radial, tangential at the\n"
+                   "stations), stations_deg, unknowns and seconds. As `ringvib buckling SCENE --solver NAME\n"
+                   "--json`, with the shapes. ") +
+       kBudgetDoc)
+          .c_str());
+  m.def(
+      "buckling_table",
+      [](const Scene& s, double max_memory_gib, bool force) {
+        const std::string json = released([&] {
+          return input_checked(s.scene, [&] {
+            cmp::check_runnable(s.scene, max_memory_gib, force);
+            if (!s.scene.buckling) throw ring::InputError(s.scene.file, "buckling", "the scene has no [buckling] section");
+            return cmp::format_json(cmp::buckling_table(s.scene, cmp::run_buckling(s.scene, "", nullptr)));
+          });
+        });
+        return json_rows(json);
+      },
+      py::arg("scene"), py::kw_only(), py::arg("max_memory_gib") = 8.0, py::arg("force") = false,
+      "The comparison of buckling.solvers (and the reference), paired by MAC: the rows of\n"
+      "`ringvib buckling SCENE --format json` (mode, <solver> load factor, <solver>_diff_pct,\n"
+      "reference, <solver>_error_pct in %; None where not defined).");
 
   auto nonlinear_table = [](bool response) {
     return [response](const Scene& s, double max_memory_gib, bool force) {

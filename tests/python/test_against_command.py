@@ -223,3 +223,37 @@ def test_the_library_prints_nothing(capfd):
     ringvib.static(ringvib.Scene.load(scene_path("paper1990-static.toml")))
     ringvib.respond(ringvib.Scene.load(scene_path("paper1990-forced.toml"), set={"response.t_end": 0.1}))
     assert capfd.readouterr() == ("", "")
+
+
+# Linear buckling: the module's factors are the command's JSON, exactly; its shapes (which the
+# command's JSON leaves out) are those of the same eigenpairs, checked against the closed form's
+# count: under hydrostatic pressure the ring on a pin and a roller buckles at 3 EI/R^3 twice
+# (scenes/ring-buckling.toml; ring/closed_form.hpp), the chain at n = 40 within its O(1/n^2).
+BUCKLING_CASES = [("multibody", {"multibody.n": 40}, {"multibody.n": "40"}),
+                  ("lumped", {"lumped.n": 40}, {"lumped.n": "40"})]
+
+
+@pytest.mark.parametrize("solver,values,texts", BUCKLING_CASES, ids=[c[0] for c in BUCKLING_CASES])
+def test_buckling_equals_the_commands_json(solver, values, texts):
+    s = ringvib.Scene.load(scene_path("ring-buckling.toml"), set=values)
+    b = ringvib.buckling(s, solver)
+    j = ringvib_json("buckling", scene_path("ring-buckling.toml"), "--solver", solver, "--json", *sets(texts))
+    assert b["solver"] == j["solver"] == solver
+    assert b["model"] == j["model"]
+    assert b["factors"].tolist() == j["factors"]  # exact: the same doubles
+    assert b["unknowns"] == j["unknowns"]
+    assert b["shapes"].shape == (len(b["factors"]), ringvib.STATIONS, 2)
+    assert np.all(np.isfinite(b["shapes"]))
+    ei_r3 = 2.1e11 * math.pi * 0.12**4 / 64 / 10.0**3
+    # 3 EI/R^3, a double factor; the chain's O(1/n^2) error at n = 40 is well under 1 %.
+    assert abs(b["factors"][0] / ei_r3 - 3.0) < 0.03 and abs(b["factors"][1] / ei_r3 - 3.0) < 0.03
+
+
+def test_buckling_table_equals_the_commands_json():
+    values = {"multibody.n": 40, "lumped.n": 40, "buckling.solvers": ["multibody", "lumped"],
+              "buckling.reference": False}
+    texts = {"multibody.n": "40", "lumped.n": "40", "buckling.solvers": '["multibody", "lumped"]',
+             "buckling.reference": "false"}
+    rows = ringvib.buckling_table(ringvib.Scene.load(scene_path("ring-buckling.toml"), set=values))
+    j = ringvib_json("buckling", scene_path("ring-buckling.toml"), "--format", "json", *sets(texts))
+    assert rows == j["rows"]
