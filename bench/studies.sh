@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 build=${1:-build}
 studies=(
   FemStress.HundredThousandUnknownsTwentyThreeModes           # 102 400 unknowns (suite: 25 600)
+  FemStress.NearThePrecisionLimitTheFreeRingsRigidModesAndFrequenciesHold  # 24 modes (suite: 12)
   MultibodyEnergyMomentumStress.HundredThousandStepsKeepTheBalance  # 10^5 steps (suite: 10^4)
   MultibodyDynamicsStress.NewmarkFullSceneReachesSecondOrder  # the whole 5 s (suite: 1 s)
 )

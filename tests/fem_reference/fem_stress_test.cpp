@@ -69,10 +69,14 @@ ring::FemOptions near_the_precision_limit() {
 TEST(FemStress, NearThePrecisionLimitTheFreeRingsRigidModesAndFrequenciesHold) {
   const ring::FemOptions fine = near_the_precision_limit();
   const auto free_spec = ringtest::free_ring();
-  const auto f = fem::compute_modes(free_spec, fine, 24);
+  // The low end is what precision loses first: the pairs k = 2..7 (the suite; k = 2..13, 24
+  // modes, in the study, bench/studies.sh). Checked at the suite's size: the refinement cut
+  // to one correction (ring_eigen.cpp) fails this test and the pinned ring's.
+  const int k_max = ringtest::study_size(7, 13);
+  const auto f = fem::compute_modes(free_spec, fine, 2 * (k_max - 1));
   EXPECT_EQ(f.rigid_modes, 3);
   double worst = 0.0;
-  for (int k = 2; k <= 13; ++k) {
+  for (int k = 2; k <= k_max; ++k) {
     const double exact = ring::closed_form::free_ring_extensible(free_spec, k)[0];
     for (int j = 0; j < 2; ++j) worst = worse(worst, ringtest::rel(f.omega[2 * (k - 2) + j], exact));
   }
