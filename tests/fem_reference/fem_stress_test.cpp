@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fem_reference/modes.hpp"
+#include "modal/modes.hpp"  // worst: a NaN error fails the bound
 #include "ring/closed_form.hpp"
 #include "tests/support/close.hpp"
 #include "support/paper.hpp"
@@ -56,9 +57,6 @@ TEST(FemStress, HundredThousandUnknownsTwentyThreeModes) {
 // It cannot be smaller: the ratio grows like cells^4 and p^6 to p^8, and only this mesh of
 // the highest degree comes near the limit (ring_model.hpp, kPrecisionLimit). The free and
 // the pinned ring are two tests so that they run side by side.
-/// The larger of two errors, NaN if either is: a NaN frequency fails the bound below.
-double worse(double a, double b) { return std::isnan(a) || a > b ? a : b; }
-
 ring::FemOptions near_the_precision_limit() {
   ring::FemOptions fine;
   fine.elements = 3000;
@@ -78,7 +76,7 @@ TEST(FemStress, NearThePrecisionLimitTheFreeRingsRigidModesAndFrequenciesHold) {
   double worst = 0.0;
   for (int k = 2; k <= k_max; ++k) {
     const double exact = ring::closed_form::free_ring_extensible(free_spec, k)[0];
-    for (int j = 0; j < 2; ++j) worst = worse(worst, ringtest::rel(f.omega[2 * (k - 2) + j], exact));
+    for (int j = 0; j < 2; ++j) worst = modal::worst(worst, ringtest::rel(f.omega[2 * (k - 2) + j], exact));
   }
   RecordProperty("free_ring_worst_relative_error", scientific(worst));
   // 1e-7 relative: measured 4.7e-9 here (free) and 4.5e-9 (pinned), against ~1e-12 at 40
@@ -97,7 +95,7 @@ TEST(FemStress, NearThePrecisionLimitThePinnedRingsFrequenciesHold) {
   coarse.degree = 12;
   const auto c = fem::compute_modes(pinned_spec, coarse, 5);
   double worst_pinned = 0.0;
-  for (int i = 0; i < 5; ++i) worst_pinned = worse(worst_pinned, ringtest::rel(p.omega[i], c.omega[i]));
+  for (int i = 0; i < 5; ++i) worst_pinned = modal::worst(worst_pinned, ringtest::rel(p.omega[i], c.omega[i]));
   RecordProperty("pinned_ring_worst_relative_difference", scientific(worst_pinned));
   EXPECT_LT(worst_pinned, 1e-7);  // as above
 }
