@@ -36,10 +36,11 @@
 // max|T_jj| / l (Bottasso, Bauchau & Cardona 2007) so that the conditioning does not grow
 // as h -> 0. (For newmark the multipliers follow from the dependent rows and T gains a
 // rank-c term, the dependent rates' change with q, applied by Woodbury's formula, so its
-// Newton is quadratic too; integrators.hpp.) A factorized matrix kept from the previous
-// step serves the first iteration of a step and is then refreshed; within a step it is
-// kept while each iteration shrinks the correction at least 8-fold (modified Newton) and,
-// for newmark, while the corrections stay below 1e-3 rad.
+// Newton is quadratic too; integrators.hpp.) Both run the one Newton (paths/newton.hpp)
+// with its reuse policy: a factorized matrix kept from the previous step serves the first
+// iteration of a step and is then refreshed; within a step it is kept while each iteration
+// shrinks the correction at least 8-fold (modified Newton) and, for newmark, while the
+// corrections stay below 1e-3 rad.
 // Predictor: constant velocity. Convergence: correction <= tol_q (rad) and, for the
 // index-3 form, |g| <= 1e-12 R. A step whose Newton iteration fails (max_newton
 // iterations, a correction > 0.5 rad, a non-finite value) is retried once with a fresh
@@ -65,6 +66,7 @@
 #include <string>
 
 #include "multibody/linear_model.hpp"
+#include "paths/newton.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/errors.hpp"
 #include "ring/results.hpp"
@@ -78,7 +80,7 @@ using IntegrationFailure = ring::IntegrationFailure;
 
 /// Knobs of the nonlinear solver that a scene does not set (defaults suit the paper).
 struct IntegrationControls {
-  int max_newton = 12;          ///< Newton iterations before a step is rejected
+  int max_newton = paths::kNewtonCap;  ///< Newton iterations before a step is rejected (the one cap)
   double min_dt_factor = 1e-6;  ///< smallest step, as a fraction of the requested dt
   /// Newton converged when the correction is <= tol_q (rad) (and, index 3, |g| <= 1e-12 R)
   double tol_q = 1e-9;

@@ -15,6 +15,7 @@
 #include "multibody/dynamics_sparse.hpp"
 #include "multibody/loading.hpp"
 #include "multibody/natural.hpp"
+#include "paths/newton.hpp"
 #include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 
@@ -26,7 +27,6 @@ using namespace natural;
 /// its round-off (see step()).
 constexpr double kResolved = 1e3;
 constexpr double kEps = 2.220446049250313e-16;
-constexpr int kMaxNewton = 15;
 // Newton's stopping rule: natural::NewtonStop (bounds relative to R = n l / 2 pi: the
 // round-off of positions is ~eps R, so a bound in l could not be met at large n).
 
@@ -167,7 +167,9 @@ Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, do
   }
   const auto turning = [](const Vec6& y, bool hessian) { return turn(y, hessian); };
   Vec &xm = work.xm, &rx = work.rx, &dz = work.z;
-  for (int it = 1; it <= kMaxNewton; ++it) {
+  // Full Newton through the one Newton (paths/newton.hpp) with NewtonStop's rule.
+  paths::NewtonFunctions system;
+  system.linearize_at = [&](bool) {
     kkt.clear();
     xm = 0.5 * (x0 + x1);
     // Inertia: (2/h^2) M (x1 - x0 - h v0), the point masses' included.
@@ -193,19 +195,27 @@ Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, do
     add_constraint_jacobian(c, x1, N, false, kappa, kkt, nullptr, nullptr);  // G(x1) as rows
     constraints(c, x1, work.g);
     dz << -rx, -kappa * work.g;
-    if (!kkt.factor()) return out;
+    return kkt.factor();
+  };
+  system.solve_for = [&](paths::Correction& k) {
     kkt.solve(dz, work.scratch);
-    if (!dz.allFinite()) return out;
+    if (!dz.allFinite()) return false;
+    k.size = dz.head(N).cwiseAbs().maxCoeff();
+    k.move = turns_a_link_by(c, dz.head(N)) / detail::kBasin;
+    return true;
+  };
+  system.apply_correction = [&] {
     x1 += dz.head(N);
     lambda += kappa * dz.tail(c.rows());
-    out.iterations = it;
-    if (turns_a_link_by(c, dz.head(N)) > detail::kBasin) return out;  // left the basin
+  };
+  system.settle_at = [&](bool, const paths::Correction& k) {
     constraints(c, x1, work.g);
-    if (stop.converged(dz.head(N).cwiseAbs().maxCoeff(), work.g.cwiseAbs().maxCoeff())) {
-      out.converged = true;
-      return out;
-    }
-  }
+    return stop.converged(k.size, work.g.cwiseAbs().maxCoeff()) ? paths::Verdict::converged
+                                                                : paths::Verdict::iterate;
+  };
+  const paths::NewtonResult result = paths::newton(system, {});
+  out.converged = result.converged;
+  out.iterations = result.iterations;
   return out;
 }
 

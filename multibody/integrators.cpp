@@ -1,6 +1,9 @@
 // The integrators' steps (integrators.hpp).
 #include "multibody/integrators.hpp"
 
+#include "paths/newton.hpp"
+#include "paths/schemes.hpp"
+
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
@@ -16,32 +19,16 @@ namespace {
 /// per step").
 constexpr double kRefreshPartitioned = 1e-3;
 
-/// Decides, iteration by iteration, whether the kept Newton matrix is still good enough.
-struct RefreshPolicy {
-  bool refresh = false;   ///< factor again at the next iteration
-  bool fresh = false;     ///< the matrix was factored at the current iteration
-  double previous = 0.0;  ///< size of the previous correction
-  /// a correction larger than this (rad) is followed by a fresh matrix
-  double refresh_above = HUGE_VAL;
-  /// After a correction of size `norm` (not yet applied): true to apply it, false to
-  /// discard it and retry with a fresh matrix (only when the matrix was old).
-  bool accept(double norm, double limit) {
-    if (!(norm <= limit)) {
-      if (fresh) return false;
-      refresh = true;
-      return false;
-    }
-    // A matrix kept from an earlier step serves one iteration (a cheap first correction,
-    // 10-1000 times smaller than the predictor's error) and is then refreshed, so that
-    // the step finishes in Newton's quadratic range; one kept within the step is refreshed
-    // when it shrinks the correction by less than 8.
-    if (!fresh && previous == 0.0) refresh = true;
-    if (!fresh && previous > 0.0 && norm > 0.125 * previous) refresh = true;
-    if (norm > refresh_above) refresh = true;
-    previous = norm;
-    return true;
-  }
-};
+/// The one Newton's rule for both steps: the correction's largest angle below tol_q, a kept
+/// Newton matrix reused while it contracts (paths/newton.hpp).
+paths::Rule step_rule(const IntegrationControls& ctl, double refresh_above = HUGE_VAL) {
+  paths::Rule rule;
+  rule.tolerance = ctl.tol_q;
+  rule.cap = ctl.max_newton;
+  rule.reuse = true;
+  rule.refresh_above = refresh_above;
+  return rule;
+}
 
 /// The constraints at the state q, and Gdot v. O(n).
 Vector constraints(const Problem& p, const Vector& q) {
@@ -116,24 +103,12 @@ Kinematic kinematics(const Problem& p, const Vector& q, bool values, bool hessia
   return k;
 }
 
-Coefficients coefficients(const ring::ResponseOptions& r) {
-  Coefficients c;
-  if (r.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
-    // Chung & Hulbert (1993), eq. (25) and (17): second order, unconditionally stable,
-    // high-frequency spectral radius rho_inf.
-    const double rho = r.rho_inf;
-    c.alpha_m = (2.0 * rho - 1.0) / (rho + 1.0);
-    c.alpha_f = rho / (rho + 1.0);
-    c.gamma = 0.5 + c.alpha_f - c.alpha_m;
-    c.beta = 0.25 * (c.gamma + 0.5) * (c.gamma + 0.5);
-  }
-  return c;
-}
+Coefficients coefficients(const ring::ResponseOptions& r) { return paths::Scheme::of(r); }
 
 void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, double h, NewtonBackend& nb,
                                   State& s) {
-  const double c = (1.0 - co.alpha_m) / ((1.0 - co.alpha_f) * co.beta * h * h);
-  const double cv = co.gamma / (co.beta * h);
+  const double c = co.mass_rate(h) / (1.0 - co.alpha_f);
+  const double cv = co.velocity_rate(h);
   Vector r;
   nb.residual(s.q, s.v, Vector::Zero(s.q.size()), p.history.factor(s.t), c, cv, r, true);
   const Kinematic k = kinematics(p, s.q, false, true);
@@ -147,57 +122,57 @@ void starting_pseudo_acceleration(const Problem& p, const Coefficients& co, doub
 
 StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s0, double h,
                         const IntegrationControls& ctl, NewtonBackend& nb, State& s1) {
-  const Chain& ch = p.chain;
   const double t1 = s0.t + h;
   const double f1 = p.history.factor(t1);
-  const double bh2 = co.beta * h * h;
-  const double dqdd_dq = (1.0 - co.alpha_m) / ((1.0 - co.alpha_f) * bh2);
-  const double dv_dq = co.gamma / (co.beta * h);
+  const double dqdd_dq = co.mass_rate(h) / (1.0 - co.alpha_f);
+  const double dv_dq = co.velocity_rate(h);
   // Predictor: constant velocity, previous multipliers. Extrapolating the acceleration
   // as well is worse after a step load, whose initial accelerations are local and huge
   // at large n (at n = 640 it overshoots by radians and forces step halving).
-  Vector a1;
   const Vector q_hat = s0.q + h * s0.v + h * h * (0.5 - co.beta) * s0.a;
   const Vector v_hat = s0.v + h * (1.0 - co.gamma) * s0.a;
   Vector q = s0.q + h * s0.v;
   Vector lambda = s0.lambda;
-  Vector v, qdd;
-  StepOutcome out;
-  Vector r, dqv, dl;
-  RefreshPolicy policy;
-  for (int it = 1; it <= ctl.max_newton; ++it) {
-    out.iterations = it;
-    a1 = (q - q_hat) / bh2;
+  Vector a1, v, qdd, r, dqv, dl;
+  Kinematic k;
+  // Newton on (q, lambda) with the index-3 saddle-point matrix of the backend, through the
+  // one Newton (paths/newton.hpp).
+  paths::NewtonFunctions system;
+  system.kept = [&] { return nb.usable(h); };
+  system.linearize_at = [&](bool fresh) {
+    a1 = (q - q_hat) * co.acceleration_rate(h);
     v = v_hat + h * co.gamma * a1;
     qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
-    policy.fresh = policy.refresh || !nb.usable(h);
-    const Kinematic k = kinematics(p, q, true, policy.fresh);
-    if (it == 1) out.reused = !policy.fresh;
-    nb.residual(q, v, qdd, f1, dqdd_dq, dv_dq, r, policy.fresh);
-    if (policy.fresh) {
+    k = kinematics(p, q, true, fresh);
+    nb.residual(q, v, qdd, f1, dqdd_dq, dv_dq, r, fresh);
+    if (fresh) {
       nb.add_to_tangent_diagonal(k.hess_g.transpose() * lambda);  // the constraint curvature
-      if (!nb.factor(k.G, ch.l(), h)) return out;
-      policy.refresh = false;
+      if (!nb.factor(k.G, p.chain.l(), h)) return false;
     }
     r += k.G.transpose() * lambda;
-    if (!nb.solve(r, k.g, dqv, dl)) return out;
-    const double norm = dqv.cwiseAbs().maxCoeff();
-    // A correction turning a segment by more than 0.5 rad has left the basin.
-    if (!policy.accept(norm, kBasin)) {
-      if (policy.refresh) continue;
-      return out;
-    }
+    return true;
+  };
+  system.solve_for = [&](paths::Correction& c) {
+    if (!nb.solve(r, k.g, dqv, dl)) return false;
+    c.size = dqv.cwiseAbs().maxCoeff();
+    c.move = c.size / kBasin;  // a correction turning a segment by more than 0.5 rad has left the basin
+    return true;
+  };
+  system.apply_correction = [&] {
     q += dqv;
     lambda += dl;
-    // Converged when the correction is below tol_q and the constraints hold to 1e-12 R
-    // (a kept Newton matrix contracts g only linearly, so check it explicitly).
-    if (norm <= ctl.tol_q && constraints(p, q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
-      out.converged = true;
-      break;
-    }
-  }
+  };
+  // Converged when the correction is below tol_q and the constraints hold to 1e-12 R
+  // (a kept Newton matrix contracts g only linearly, so check it explicitly).
+  system.settle_at = [&](bool small, const paths::Correction&) {
+    return small && constraints(p, q).cwiseAbs().maxCoeff() <= 1e-12 * p.chain.circumradius()
+               ? paths::Verdict::converged
+               : paths::Verdict::iterate;
+  };
+  const paths::NewtonResult nr = paths::newton(system, step_rule(ctl));
+  const StepOutcome out{nr.converged, nr.iterations, nr.reused};
   if (!out.converged) return out;
-  a1 = (q - q_hat) / bh2;
+  a1 = (q - q_hat) * co.acceleration_rate(h);
   s1.t = t1;
   s1.q = q;
   s1.v = v_hat + h * co.gamma * a1;
@@ -229,8 +204,7 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     for (size_t i = 0; i < idx.size(); ++i) y[i] = x[idx[i]];
     return y;
   };
-  const double bh2 = co.beta * h * h;
-  const double cm = 1.0 / bh2, cv = co.gamma / (co.beta * h);
+  const double cm = co.acceleration_rate(h), cv = co.velocity_rate(h);
   const Vector q_hat = s0.q + h * s0.v + h * h * (0.5 - co.beta) * s0.qdd;
   const Vector v_hat = s0.v + h * (1.0 - co.gamma) * s0.qdd;
   const Vector z_hat = take(q_hat, ind), zd_hat = take(v_hat, ind);
@@ -294,42 +268,48 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     dl -= Yl * w;
     return dq.allFinite() && dl.allFinite();
   };
-  StepOutcome out;
-  RefreshPolicy policy;
-  policy.refresh_above = kRefreshPartitioned;
-  for (int it = 1; it <= ctl.max_newton; ++it) {
-    out.iterations = it;
+  // Newton on (q, lambda) through the one Newton (paths/newton.hpp), the partitioned
+  // equations' matrix made exact by the rank-c correction above.
+  paths::NewtonFunctions system;
+  bool this_partitioned = false;  // the current iteration solves the partitioned equations
+  system.kept = [&] { return nb.usable(h) && !(partitioned && !have_y); };
+  system.linearize_at = [&](bool fresh) {
+    this_partitioned = partitioned;
     rates();
-    policy.fresh = policy.refresh || !nb.usable(h) || (partitioned && !have_y);
-    if (it == 1) out.reused = !policy.fresh;
-    nb.residual(q, v, qdd, f1, cm, cv, r, policy.fresh);
+    nb.residual(q, v, qdd, f1, cm, cv, r, fresh);
     // Partitioned: the multipliers that make the dependent rows of r + G^T lambda vanish.
     if (partitioned) lambda = -Gy.transpose().partialPivLu().solve(take(r, dep));
-    if (policy.fresh) {
+    if (fresh) {
       nb.add_to_tangent_diagonal(k.hess_g.transpose() * lambda);  // the constraint curvature
-      if (!nb.factor(k.G, ch.l(), h) || !prepare_correction()) return out;
-      policy.refresh = false;
+      if (!nb.factor(k.G, ch.l(), h) || !prepare_correction()) return false;
     }
     r += k.G.transpose() * lambda;
-    if (!nb.solve(r, k.g, dq, dl) || (partitioned && !correct())) return out;
-    const double norm = dq.cwiseAbs().maxCoeff();
-    if (!policy.accept(norm, kBasin)) {  // left the basin
-      if (policy.refresh) continue;
-      return out;
-    }
+    return true;
+  };
+  system.solve_for = [&](paths::Correction& c) {
+    if (!nb.solve(r, k.g, dq, dl) || (partitioned && !correct())) return false;
+    c.size = dq.cwiseAbs().maxCoeff();
+    c.move = c.size / kBasin;
+    return true;
+  };
+  system.apply_correction = [&] {
     q += dq;
     if (!partitioned) {
       lambda += dl;
       partitioned = true;
-      continue;
     }
-    if (norm <= ctl.tol_q && constraints(p, q).cwiseAbs().maxCoeff() <= 1e-12 * ch.circumradius()) {
-      // The dependent angles to round-off, and the rates there.
-      out.converged = solve_dependent(p, dep, k.G, q);
-      if (out.converged) rates();
-      break;
-    }
-  }
+  };
+  system.settle_at = [&](bool small, const paths::Correction&) {
+    if (!this_partitioned) return paths::Verdict::iterate;
+    if (!small || constraints(p, q).cwiseAbs().maxCoeff() > 1e-12 * ch.circumradius())
+      return paths::Verdict::iterate;
+    // The dependent angles to round-off, and the rates there.
+    if (!solve_dependent(p, dep, k.G, q)) return paths::Verdict::failed;
+    rates();
+    return paths::Verdict::converged;
+  };
+  const paths::NewtonResult nr = paths::newton(system, step_rule(ctl, kRefreshPartitioned));
+  const StepOutcome out{nr.converged, nr.iterations, nr.reused};
   if (!out.converged) return out;
   s1.t = t1;
   s1.q = q;

@@ -9,14 +9,14 @@
 #include "multibody/dynamics.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/newton_backend.hpp"
+#include "paths/schemes.hpp"
 #include "ring/analysis.hpp"
 
 namespace multibody::detail {
 
-/// Integrator coefficients in the Arnold-Bruls form; Newmark is alpha_m = alpha_f = 0.
-struct Coefficients {
-  double alpha_m = 0.0, alpha_f = 0.0, beta = 0.25, gamma = 0.5;
-};
+/// Integrator coefficients in the Arnold-Bruls form (paths/schemes.hpp); Newmark is
+/// alpha_m = alpha_f = 0.
+using Coefficients = paths::Scheme;
 
 /// The coefficients of response.integrator (newmark: 0, 0, 1/4, 1/2).
 Coefficients coefficients(const ring::ResponseOptions& r);
