@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 
 #include "lumped_mass/checks.hpp"
@@ -195,36 +194,51 @@ class FrameStepper : public detail::MidpointStepper {
   }
 
  private:
-  bool newton(double hh, double factor, int& iterations) override {
+  // The Newton system of the step (paths/newton.hpp) on (q1_, mu1_), full Newton with the
+  // sparse LU: the basin is frame_move's, converged when the correction moves no node by more
+  // than 1e-11 R and turns no section by more than 1e-11 rad.
+  paths::Rule rule() const override {
+    paths::Rule r;
+    r.tolerance = 1e-11 * radius_;
+    return r;
+  }
+  bool linearize(bool) override {
+    const double hh = step_size(), factor = load_factor();
     const int N = 3 * f_.n, R = static_cast<int>(f_.S.rows());
     const double scale = 2.0 / (hh * hh) * M_.diagonal().maxCoeff();  // balances the support rows
+    const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
+    Springs sp = frame_energy(f_, qm, 0.5);
+    L_.add_hessian(qm, 0.5 * factor, sp.hess);
+    support_triplets(f_, N, scale, sp.hess);
+    res_.resize(N + R);
+    res_.head(N) = (2.0 / (hh * hh)) * (M_ * (q1_ - q_ - hh * v_)) + sp.grad + factor * L_.gradient(qm) +
+                   f_.S.transpose() * (mu1_ * scale);
+    if (damped_) res_.head(N) += C_ * vm;
+    res_.tail(R) = scale * (f_.S * (q1_ - f_.rest));
+    Sparse A(N + R, N + R);
+    A.setFromTriplets(sp.hess.begin(), sp.hess.end());
     Sparse Mt = (2.0 / (hh * hh)) * M_;
     if (damped_) Mt += C_ / hh;
     Mt.conservativeResize(N + R, N + R);
-    for (int it = 0; it < 20; ++it) {
-      ++iterations;
-      const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
-      Springs sp = frame_energy(f_, qm, 0.5);
-      L_.add_hessian(qm, 0.5 * factor, sp.hess);
-      support_triplets(f_, N, scale, sp.hess);
-      Vec res(N + R);
-      res.head(N) = (2.0 / (hh * hh)) * (M_ * (q1_ - q_ - hh * v_)) + sp.grad + factor * L_.gradient(qm) +
-                    f_.S.transpose() * (mu1_ * scale);
-      if (damped_) res.head(N) += C_ * vm;
-      res.tail(R) = scale * (f_.S * (q1_ - f_.rest));
-      Sparse A(N + R, N + R);
-      A.setFromTriplets(sp.hess.begin(), sp.hess.end());
-      A += Mt;
-      LU lu;
-      lu.compute(A);
-      if (lu.info() != Eigen::Success || !res.allFinite()) return false;
-      const Vec d = lu.solve(-res);
-      if (!d.allFinite() || !(frame_move(f_, d.head(N)) < 1.0)) return false;
-      q1_ += d.head(N);
-      mu1_ += d.tail(R);
-      if (correction_size(f_, d.head(N), radius_) <= 1e-11 * radius_) return true;
-    }
-    return false;
+    A += Mt;
+    // Solved at once (full Newton): the LU lives only here, as the memory estimate counts it.
+    LU lu;
+    lu.compute(A);
+    if (lu.info() != Eigen::Success || !res_.allFinite()) return false;
+    d_ = lu.solve(-res_);
+    return true;
+  }
+  bool solve(paths::Correction& c) override {
+    const int N = 3 * f_.n;
+    if (!d_.allFinite()) return false;
+    c.size = correction_size(f_, d_.head(N), radius_);
+    c.move = frame_move(f_, d_.head(N));
+    return true;
+  }
+  void apply() override {
+    const int N = 3 * f_.n;
+    q1_ += d_.head(N);
+    mu1_ += d_.tail(d_.size() - N);
   }
 
   double potential(const Vec& q) const override { return L_.potential(q); }
@@ -243,6 +257,7 @@ class FrameStepper : public detail::MidpointStepper {
   const double radius_;
   const FrameLoads& L_;
   const std::vector<int> rec_;
+  Vec res_, d_;    ///< the residual and the correction
 };
 
 }  // namespace
