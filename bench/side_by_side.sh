@@ -41,3 +41,7 @@ for integrator in newmark generalized-alpha energy-momentum; do
   compare respond "$forced" --solver multibody --set multibody.n=10000 --set response.t_end=10 \
     --set "response.integrator=\"$integrator\""
 done
+compare respond "$forced" --solver lumped --set lumped.n=10000 --set response.t_end=10
+compare respond "$forced" --solver lumped --set lumped.n=2000 --set lumped.variant=\"frame\" --set response.t_end=10
+compare respond "$forced" --solver fem --set fem.elements=200 --set response.t_end=10
+compare static scenes/ring-collapse.toml

@@ -3,10 +3,9 @@
 #pragma once
 
 #include "fem_reference/ring_model.hpp"
+#include "paths/newton.hpp"
 
 namespace fem::detail {
-
-constexpr int kMaxNewton = 25;
 
 /// Up to this many unknowns the Newton matrix is factored dense (LAPACK getrf, O(N^3)):
 /// UMFPACK's fixed cost per factorization (ordering, symbolic analysis, sorted copies of
@@ -43,7 +42,8 @@ class NewtonLu {
 };
 
 /// Newton on grad V(q) - rhs(q) = 0 with the tangent `tangent(q) + extra`; q updated in
-/// place. Returns the iterations, or -1 when it did not converge (q then unusable).
+/// place, through the one Newton (paths/newton.hpp: full Newton, its cap). Returns the
+/// iterations, or -1 when it did not converge (q then unusable).
 /// Converged: the correction is below 1e-12 of the ring radius (quadratic convergence
 /// takes the residual to round-off one iteration later). With `max_move`, an iterate
 /// that moves any value of q by more than that from the start counts as not converged:
@@ -62,26 +62,36 @@ int newton(Vector<double>& q, double radius, Residual&& residual_and_tangent,
   NewtonLu lu;
   Vector<double> r, dq, moved;
   const Vector<double> start = q;
-  for (int it = 1; it <= kMaxNewton; ++it) {
+  paths::NewtonFunctions system;
+  system.linearize_at = [&](bool) {
     SparseMatrix<double>& S = residual_and_tangent(q, r);
-    if (!std::isfinite(r.l2_norm())) return -1;
+    if (!std::isfinite(r.l2_norm())) return false;
     try {
       lu.initialize(S);
     } catch (const std::exception&) {
-      return -1;
+      return false;
     }
+    return true;
+  };
+  system.solve_for = [&](paths::Correction& c) {
     dq = r;
     lu.solve(dq);
-    q.add(-1.0, dq);
-    if (!std::isfinite(dq.l2_norm())) return -1;
+    if (!std::isfinite(dq.l2_norm())) return false;
+    c.size = length(dq);
+    c.move = 0.0;
     if (max_move < std::numeric_limits<double>::infinity()) {
       moved = q;
+      moved.add(-1.0, dq);
       moved -= start;
-      if (length(moved) > max_move) return -1;
+      c.move = length(moved) / max_move;
     }
-    if (length(dq) <= 1e-12 * radius) return it;
-  }
-  return -1;
+    return true;
+  };
+  system.apply_correction = [&] { q.add(-1.0, dq); };
+  paths::Rule rule;
+  rule.tolerance = 1e-12 * radius;
+  const paths::NewtonResult result = paths::newton(system, rule);
+  return result.converged ? result.iterations : -1;
 }
 
 }  // namespace fem::detail

@@ -6,6 +6,7 @@
 #include "fem_reference/beam_potential.hpp"
 #include "fem_reference/checks.hpp"
 #include "fem_reference/newton.hpp"
+#include "paths/schemes.hpp"
 #include "fem_reference/reference.hpp"
 #include "fem_reference/static_path.hpp"
 #include "paths/time_stepping.hpp"
@@ -122,13 +123,8 @@ class BeamStepper : public paths::Stepper {
  public:
   BeamStepper(const BeamModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
       : model_(model), potential_(model, rs.loads), rs_(rs), radius_(spec.radius), N_(model.n_free()), M_(model.mass()),
-        damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), S_(model.sparsity()) {
-    if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
-      am_ = (2.0 * rs.rho_inf - 1.0) / (rs.rho_inf + 1.0);
-      af_ = rs.rho_inf / (rs.rho_inf + 1.0);
-      gamma_ = 0.5 - am_ + af_;
-      beta_ = 0.25 * (1.0 - am_ + af_) * (1.0 - am_ + af_);
-    }
+        damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), scheme_(paths::Scheme::of(rs)), am_(scheme_.alpha_m),
+        af_(scheme_.alpha_f), gamma_(scheme_.gamma), beta_(scheme_.beta), S_(model.sparsity()) {
     for (double a : rs.record) record_vertex_.push_back(model.vertex_of(a));
     for (auto* v : {&q_, &v_, &a_, &q1_, &v1_, &a1_, &Cv_, &tmp_, &internal_, &qa_, &va_, &aa_}) v->reinit(N_);
     Vector<double> F0;  // the load at rest, grad Phi(0)
@@ -150,7 +146,7 @@ class BeamStepper : public paths::Stepper {
     a_ = F0;
     if (rs.integrator == ring::ResponseOptions::Integrator::generalized_alpha) {
       lu.initialize(newton_matrix(q_, rs.dt, rs.history.factor(0.0)));
-      a_ *= (1.0 - am_) / (beta_ * rs.dt * rs.dt) * rs.history.factor(0.0);
+      a_ *= scheme_.mass_rate(rs.dt) * rs.history.factor(0.0);
     } else {
       lu.initialize(M_);
       a_ *= rs.history.factor(0.0);
@@ -181,7 +177,7 @@ class BeamStepper : public paths::Stepper {
       }
       return S_;
     }, std::numeric_limits<double>::infinity(), &model_.lengths());
-    if (it < 0) return {false, false, kMaxNewton, g_mean_};
+    if (it < 0) return {false, false, paths::kNewtonCap, g_mean_};
     kinematics(q1_, h);
     return {true, false, it, g_mean_};
   }
@@ -239,7 +235,7 @@ class BeamStepper : public paths::Stepper {
   void kinematics(const Vector<double>& x, double h) {
     a1_ = x;
     a1_.add(-1.0, q_, -h, v_);
-    a1_ *= 1.0 / (beta_ * h * h);
+    a1_ *= scheme_.acceleration_rate(h);
     a1_.add(-(0.5 / beta_ - 1.0), a_);
     v1_ = v_;
     v1_.add((1.0 - gamma_) * h, a_, gamma_ * h, a1_);
@@ -248,7 +244,7 @@ class BeamStepper : public paths::Stepper {
   /// there (grad V - g grad Phi into internal_): (1 - af) K_t(x) + c_m M + c_c C, K_t the
   /// tangent of V - g Phi (the load stiffness of follower and central pressure included).
   SparseMatrix<double>& newton_matrix(const Vector<double>& x, double h, double g) {
-    const double c_m = (1.0 - am_) / (beta_ * h * h), c_c = (1.0 - af_) * gamma_ / (beta_ * h);
+    const double c_m = scheme_.mass_rate(h), c_c = (1.0 - af_) * scheme_.velocity_rate(h);
     potential_.evaluate(x, g, &internal_, &S_);
     S_ *= (1.0 - af_);
     S_.add(c_m, M_);
@@ -273,7 +269,8 @@ class BeamStepper : public paths::Stepper {
   const unsigned int N_;
   const SparseMatrix<double>& M_;
   const bool damped_;
-  double am_ = 0.0, af_ = 0.0, gamma_ = 0.5, beta_ = 0.25;
+  const paths::Scheme scheme_;  ///< Newmark or generalized-alpha (paths/schemes.hpp)
+  const double am_, af_, gamma_, beta_;  ///< its coefficients, by their short names
   std::vector<unsigned int> record_vertex_;
   SparseMatrix<double> S_;
   Vector<double> q_, v_, a_, q1_, v1_, a1_, Cv_, tmp_, internal_, qa_, va_, aa_;

@@ -2,6 +2,8 @@
 // the limit point, end events.
 #include "paths/continuation.hpp"
 
+#include "paths/newton.hpp"
+
 #include <algorithm>
 #include <functional>
 #include <cmath>
@@ -12,7 +14,6 @@
 namespace paths {
 namespace {
 
-constexpr int kMaxNewton = 25;
 /// The arc length adapts towards this many corrector iterations per step.
 constexpr int kTargetIterations = 5;
 /// A failed arc step halves the length; this many failures in a row end the path.
@@ -106,20 +107,28 @@ class Follower {
   /// `dzds`, also dz/ds at the solution, from the last factorization.
   int newton_at(State& x, Vector* dzds) {
     const Vector start = x.z, w = Vector::Zero(m_);
-    for (int it = 1; it <= kMaxNewton; ++it) {
-      if (!eq_.linearize(x, w, 1.0, r_)) return -1;
+    int iteration = 0;
+    NewtonFunctions system;
+    system.linearize_at = [&](bool) {
+      ++iteration;
+      return eq_.linearize(x, w, 1.0, r_);
+    };
+    system.solve_for = [&](Correction& c) {
       y_.resize(N_ + 1);
       y_.head(N_) = -r_;
       y_(N_) = 0.0;
-      if (!eq_.solve(y_)) return -1;
-      x.z += y_.head(N_);
-      if (eq_.move(x.z - start) > 1.0) return -1;  // left the basin
-      if (eq_.converged(x, y_.head(N_), it)) {
-        if (dzds && !solve_unit(*dzds)) return -1;
-        return it;
-      }
-    }
-    return -1;
+      if (!eq_.solve(y_)) return false;
+      c.move = eq_.move(x.z + y_.head(N_) - start);  // above 1: left the basin
+      return true;
+    };
+    system.apply_correction = [&] { x.z += y_.head(N_); };
+    system.settle_at = [&](bool, const Correction&) {
+      return eq_.converged(x, y_.head(N_), iteration) ? Verdict::converged : Verdict::iterate;
+    };
+    const NewtonResult result = newton(system, Rule{});
+    if (!result.converged) eq_.reject();
+    if (!result.converged || (dzds && !solve_unit(*dzds))) return -1;
+    return result.iterations;
   }
 
   /// The last factorization applied to (0, 1): the tangent of its border.
@@ -162,25 +171,40 @@ class Follower {
     to.z = from.z + len * tangent.t;
     to.s = from.s + len * tangent.rate;
     const Vector predicted = to.z.head(m_);
-    for (iterations = 1; iterations <= kMaxNewton; ++iterations) {
+    int iteration = 0;
+    NewtonFunctions system;
+    system.linearize_at = [&](bool) {
+      ++iteration;
       const Vector d = (to.z.head(m_) - from.z.head(m_)) / len;
       if (!eq_.linearize(to, d, 0.0, r_)) return false;
       y_.resize(N_ + 1);
       y_.head(N_) = -r_;
       y_(N_) = -0.5 * len * (d.squaredNorm() - 1.0);
-      if (!eq_.solve(y_)) return false;
-      to.z += y_.head(N_);
-      to.s += y_(N_);
-      if (!std::isfinite(to.s)) return false;
+      return true;
+    };
+    system.solve_for = [&](Correction& c) {
+      if (!eq_.solve(y_) || !std::isfinite(to.s + y_(N_))) return false;
       // A corrector that moves a whole step away from the predicted point has left it
       // for another part of the path (or of the sphere): the step is too long.
-      if ((to.z.head(m_) - predicted).norm() > len) return false;
-      if (eq_.converged(to, y_.head(N_), iterations) && std::abs(y_(N_)) <= kLoadTolerance) {
-        Vector y;
-        return solve_unit(y) && to_tangent(y, ahead);
-      }
+      c.move = (to.z.head(m_) + y_.head(m_) - predicted).norm() / len;
+      return true;
+    };
+    system.apply_correction = [&] {
+      to.z += y_.head(N_);
+      to.s += y_(N_);
+    };
+    system.settle_at = [&](bool, const Correction&) {
+      return eq_.converged(to, y_.head(N_), iteration) && std::abs(y_(N_)) <= kLoadTolerance ? Verdict::converged
+                                                                                               : Verdict::iterate;
+    };
+    const NewtonResult result = newton(system, Rule{});
+    iterations = result.iterations;
+    if (!result.converged) {
+      eq_.reject();
+      return false;
     }
-    return false;
+    Vector y;
+    return solve_unit(y) && to_tangent(y, ahead);
   }
 
   /// Whether `now` unstable directions at an equilibrium reached from `from` differ from the

@@ -46,8 +46,9 @@
 //   the direction), then arc-length continuation on the branch as above. At most four
 //   switches; a switch that does not land ends the path at the bifurcation.
 //
-// A Newton solve (a load level or an arc step) fails after 25 iterations, on a
-// non-finite value or a failed factorization, or when its iterate leaves the basin of
+// A Newton solve (a load level or an arc step) is the one Newton's (paths/newton.hpp): it
+// fails at its cap, on a non-finite value or a failed factorization, or when its iterate
+// leaves the basin of
 // the point it started from (Equilibrium::move > 1); an arc corrector also fails when it
 // moves farther than the step's length from its predicted point (it left for another
 // part of the path).
@@ -107,6 +108,9 @@ class Equilibrium {
   /// An accepted equilibrium `to`, reached from the accepted `from`: the model records
   /// it and says whether the ring touched itself on the way.
   virtual std::optional<Touch> accept(const State& from, const State& to) = 0;
+  /// A Newton solve from an accepted equilibrium did not converge: a model with internal
+  /// variables (paths/internal.hpp) discards their trial values. Default: nothing to do.
+  virtual void reject() {}
   /// How many independent directions the equilibrium x is unstable in: the negative
   /// eigenvalues of the tangent stiffness dR/du on the constraints' tangent space.
   /// nullopt (the default): the model does not say, and no bifurcation is detected.

@@ -96,6 +96,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
       iterations += o.iterations;
       report_if_due(t / (grid.dt * double(steps)));
       if (!o.converged) {
+        stepper.reject();
         if (o.retry && !retried) {
           retried = true;
           continue;

@@ -67,6 +67,9 @@ class Stepper {
   /// The trial state becomes the accepted state, at time `t` (the driver's time, snapped
   /// to the grid at a grid point). Accumulates the work and the dissipated energy.
   virtual void accept(double t) = 0;
+  /// The trial state of a step that did not converge is thrown away: a model with internal
+  /// variables (paths/internal.hpp) discards their trial values. Default: nothing to do.
+  virtual void reject() {}
   /// True when every value of the accepted state is finite.
   virtual bool finite() const = 0;
   /// The accepted state for the record.
