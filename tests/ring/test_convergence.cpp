@@ -78,6 +78,10 @@ TEST(ConvergenceHelper, TwoPointsGiveTheTwoPointOrder) {
   EXPECT_EQ(o.standard_error, 0.0);
   const auto r = ringtest::OrderNear(ringtest::in_n(std::vector<int>{40, 80}, {1.04e-2, 2.72e-3}), 3.0, 0.2);
   EXPECT_TRUE(contains(r, "two-point order")) << r.message();
+  // The same two points picked from a longer series.
+  const auto three = ringtest::in_n(std::vector<int>{20, 40, 80}, {3.0e-2, 1.04e-2, 2.72e-3});
+  EXPECT_EQ(ringtest::fit_order(ringtest::subset(three, {1, 2})).order, o.order);
+  EXPECT_THROW(ringtest::subset(three, {1}), std::invalid_argument);
 }
 
 // An error that is zero, negative or NaN cannot have an order: the check fails.

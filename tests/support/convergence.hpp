@@ -64,6 +64,20 @@ Samples in_n(const std::vector<N>& n, const std::vector<double>& e) {
   return s;
 }
 
+/// The samples at the given indices, in that order: a two-point order of one refinement
+/// (`subset(s, {1, 2})`) or a fit over part of the samples.
+inline Samples subset(const Samples& s, const std::vector<std::size_t>& indices) {
+  if (indices.size() < 2) throw std::invalid_argument("ringtest::subset: need at least 2 indices");
+  Samples out;
+  out.per_n = s.per_n;
+  for (std::size_t i : indices) {
+    out.h.push_back(s.h.at(i));
+    out.e.push_back(s.e.at(i));
+    out.log_h.push_back(s.log_h.at(i));
+  }
+  return out;
+}
+
 /// A fitted order: the least-squares slope of log e against log h, its standard error
 /// (0 with two points), and the error at the finest h (the smallest h, the largest n).
 struct Order {
