@@ -1,5 +1,5 @@
-// One convergence-order check for all suites (docs/DESIGN "Tests"; the shape of
-// scikit-fem's tests/test_convergence.py): fit the order p of e ~ C h^p by least squares
+// One convergence-order check for all suites (the shape of scikit-fem's
+// tests/test_convergence.py): fit the order p of e ~ C h^p by least squares
 // on log e against log h, compare it with the expected order, and bound the error at the
 // finest h.
 //
@@ -88,7 +88,7 @@ struct Order {
   double finest_error = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// Least-squares fit of log e = a + p log h. O(m) in the m samples. A non-positive or
+/// Least-squares fit of log e = a + p log h, O(m) in the m samples. A non-positive or
 /// non-finite error makes the order NaN (which OrderNear reports as a failure).
 inline Order fit_order(const Samples& s) {
   Order o;
