@@ -59,8 +59,8 @@ TEST_F(PaperTable, DifferencesAndErrorsFollowTheDefinitions) {
 // multibody modes 1-9 within 0.8 %, all 23 within 2.5 % (the chain against the paper's
 // multibody column); lumped chain modes 1-9 within 1.0 % (against its lumped column); docs/paper.md, check 4: the paper's FE column is 40 straight frame
 // elements, which lie 0.1-1 % above the continuum, so the converged reference and the
-// accurate curved FE column lie within 1.2 % of it (the chords' 1 % plus
-// the column's printed rounding).
+// accurate curved FE column lie within 1.2 % of it (the bound set for the
+// FE reference against 40 chords).
 TEST_F(PaperTable, ColumnsAgreeWithThePublishedTable) {
   for (int i = 0; i < 23; ++i) {
     const auto& r = rows()[i];
