@@ -16,18 +16,13 @@
 #include <vector>
 
 #include "compare/cli.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
 using ringtest::ringvib;
 
-const char* kScene = R"(title = "paper ring, calculix"
-[ring]
-radius = 10.0
-E = 2.1e11
-rho = 7.8e3
-section = { shape = "circle", diameter = 0.12 }
-[supports]
+const std::string kScene = "title = \"paper ring, calculix\"\n" + ringtest::paper_ring_toml() + R"([supports]
 pin = 180.0
 [calculix]
 elements = 40
@@ -96,7 +91,7 @@ std::pair<int, double> run_measured(const std::vector<std::string>& args,
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1024.0 * double(ru.ru_maxrss)};  // Linux: KiB
 }
 
-// Issue 46, finding 7: ccx's log was read whole: a ccx writing 200 MB and then failing made
+// Found by a robustness probe: ccx's log was read whole: a ccx writing 200 MB and then failing made
 // ringvib peak at 790 MB to print the last 12 lines. The log is read from its ends; its size
 // must not show in ringvib's peak memory. Oracle: the kernel's peak RSS of the same failing
 // run with a one-line log; 100 MB of log held whole, even once, would add 100 MB, so the

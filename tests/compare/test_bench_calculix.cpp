@@ -1,4 +1,4 @@
-// `ringvib bench` with calculix among response.solvers (issue 28, item 3): CalculiX goes on
+// `ringvib bench` with calculix among response.solvers: CalculiX goes on
 // the nonlinear run-time-against-error figure through the registry like any solver, its
 // elements and dt refined together (dt = response.dt x 40 / elements, the rule under which
 // its peak at C converges, docs/measured.md "calculix"), its time the wall time of writing

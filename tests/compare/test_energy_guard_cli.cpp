@@ -1,4 +1,4 @@
-// Issue 23, "valid input refused with exit 3": the energy check fired when the work is
+// Valid input was refused with exit 3: the energy check fired when the work is
 // zero or at round-off. Each repro, through the binary, for every solver and integrator
 // that offers the forced response, must give exit 0 and a history of finite numbers:
 // a load the roller reacts, a force of 1e-300 N, ring.rho = 1e15, response.dt = 1e-9 s.
@@ -37,7 +37,7 @@ struct Repro {
   std::string name, sets;
 };
 
-/// The repros of the issue on scenes/paper1990-forced.toml (roller at C, the load at C).
+/// The cases that were refused, on scenes/paper1990-forced.toml (roller at C, the load at C).
 const std::vector<Repro> kRepros = {
     {"load the roller reacts", "--set 'response.force=[0.0, -2e4]'"},
     {"force of 1e-300 N", "--set 'response.force=[1e-300, 0.0]'"},

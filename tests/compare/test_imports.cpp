@@ -13,18 +13,14 @@
 
 #include "cli.hpp"
 #include "ring/paper_table.hpp"
+#include "support/paper.hpp"
 
 using ringtest::ringvib;
 using ringtest::source;
 
 namespace {
 
-const char* kRing = R"([ring]
-radius = 10.0
-E = 2.1e11
-rho = 7.8e3
-section = { shape = "circle", diameter = 0.12 }
-[supports]
+const std::string kRing = ringtest::paper_ring_toml() + R"([supports]
 pin = 180.0
 [multibody]
 n = 40
@@ -228,7 +224,7 @@ std::string file_text(const std::string& path) {
   return s.str();
 }
 
-// Issue 46, finding 4: an imported column printed NaN where it has no datum: its modes past
+// Found by a robustness probe: an imported column printed NaN where it has no datum: its modes past
 // the file's last (fewer than modes.count) as "nan*  unlike", its MAC as `ext_mac = nan` in
 // every row of table.csv although no shapes were given (paired by order: no MAC), and its
 // max residual as "nan" in report.md (an imported column reports none). The oracle is the

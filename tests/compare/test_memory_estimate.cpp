@@ -22,6 +22,7 @@
 #include "cli.hpp"
 #include "compare/guard.hpp"
 #include "compare/registry.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
@@ -47,13 +48,7 @@ Measured run_measured(const std::vector<std::string>& args) {
   return m;
 }
 
-const char* kRing = R"(
-[ring]
-radius = 10.0
-E = 2.1e11
-rho = 7.8e3
-section = { shape = "circle", diameter = 0.12 }
-)";
+const std::string kRing = "\n" + ringtest::paper_ring_toml();
 
 /// A scene with only `solver` in it and one analysis: modes, the modes with a spring and the
 /// foundation (modes-terms: the multibody chain's O(n) path in hinge positions), response, statics, the statics

@@ -1,6 +1,6 @@
 // The paper's Table 1 regenerated end to end through the ringvib command, every column
 // checked against an oracle outside the driver: the published table (with the
-// tolerances of the solver issues) and the definitions of difference and error.
+// tolerances each solver was specified with) and the definitions of difference and error.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,11 +55,12 @@ TEST_F(PaperTable, DifferencesAndErrorsFollowTheDefinitions) {
   }
 }
 
-// Oracle: Table 1 (corrected), with the acceptance tolerances of the solver issues:
-// multibody modes 1-9 within 0.8 %, all 23 within 2.5 % (issue 3); lumped chain modes 1-9
-// within 1.0 % (issue 5); docs/paper.md, check 4: the paper's FE column is 40 straight frame
+// Oracle: Table 1 (corrected), with the tolerances each solver was specified with:
+// multibody modes 1-9 within 0.8 %, all 23 within 2.5 % (the chain against the paper's
+// multibody column); lumped chain modes 1-9 within 1.0 % (against its lumped column); docs/paper.md, check 4: the paper's FE column is 40 straight frame
 // elements, which lie 0.1-1 % above the continuum, so the converged reference and the
-// accurate curved FE column lie within 1.2 % of it (issue 4's bound for 40 chords).
+// accurate curved FE column lie within 1.2 % of it (the bound set for the
+// FE reference against 40 chords).
 TEST_F(PaperTable, ColumnsAgreeWithThePublishedTable) {
   for (int i = 0; i < 23; ++i) {
     const auto& r = rows()[i];
@@ -102,7 +103,7 @@ TEST(Gates, PassFailAndJunit) {
   EXPECT_NE(std::system(("grep -q '<failure' " + dir + "/pass.xml").c_str()), 0);
 }
 
-// Oracle: the multibody chain converges at second order in 1/n (issue 3), and Richardson
+// Oracle: the multibody chain converges at second order in 1/n (test_modes.cpp), and Richardson
 // extrapolation with that order raises the observed order (to about 4 here).
 TEST(Converge, ObservedOrders) {
   const std::string dir = ringtest::temp_dir();

@@ -115,7 +115,7 @@ TEST(Robustness, CostGuardRefusesAbsurdRequests) {
   EXPECT_EQ(ringvib("modes " + mb + " --solver multibody --max-memory 1e-6 --force").code, 0);
 }
 
-// Issue 46: what a run needs of its environment and of its discretization is refused
+// What a run needs of its environment and of its discretization is refused
 // before anything is computed, naming the cause (exit 2, nothing on stdout). A CalculiX
 // column with TMPDIR=/nonexistent computed the other columns, then exited 3; 10^4 FE
 // elements of degree 12 were refused after 10 s and 707 MB of assembly (and without the
@@ -178,7 +178,7 @@ static std::string lower(std::string s) {
   return s;
 }
 
-// Issue 46, finding 1: the paper's ring on a pin at 270 and a roller at 90 with a foundation
+// Found by a robustness probe: the paper's ring on a pin at 270 and a roller at 90 with a foundation
 // of 1e300 or 1e200 N/m^2, or E = 1e300 Pa, exited 0 printing "max relative eigen-residual
 // -nan" (its frequencies ~700 times the closed form): the residual and the backward error
 // overflowed to NaN, which the acceptance comparisons let through. Values whose products

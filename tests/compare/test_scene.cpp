@@ -11,17 +11,11 @@
 #include "ring/errors.hpp"
 #include "compare/registry.hpp"
 #include "fem_reference/checks.hpp"
+#include "support/paper.hpp"
 
 namespace {
 
-const std::string kPaper = R"(
-title = "t"
-[ring]
-radius = 10.0
-E = 2.1e11
-rho = 7.8e3
-section = { shape = "circle", diameter = 0.12 }
-[supports]
+const std::string kPaper = "\ntitle = \"t\"\n" + ringtest::paper_ring_toml() + R"([supports]
 pin = 180.0
 [multibody]
 n = 40
@@ -73,7 +67,7 @@ TEST(SceneParse, ShippedScenesLoad) {
   }
 }
 
-// ---- Rejected inputs: one per rule of the foundation issue ----
+// ---- Rejected inputs: one per rule of the scene reader ----
 
 TEST(SceneReject, MissingFileNamesThePath) {
   try {
@@ -196,7 +190,7 @@ TEST(SceneReject, FemDegreeAboveTheFeCap) {
   expect_rejected(kPaper + "[fem]\ndegree = " + std::to_string(cap + 1) + "\n", "fem.degree",
                   "[" + std::to_string(fem::kMinDegree) + ", " + std::to_string(cap) + "]");
 }
-// Issue 46: refusals name the key that causes them, before computing. 20 000 pins off
+// Refusals name the key that causes them, before computing (found by a robustness probe). 20 000 pins off
 // the nodes were blamed on modes.count ("only -39963 elastic modes", after a pairwise
 // check of the pins that took 48 s at 100 000); a clamp off the nodes was reported as
 // "supports.pins"; pinning all but two nodes left "-39 elastic modes" on modes.count.

@@ -117,7 +117,7 @@ TEST(SceneFuzz, RandomOverrides) {
   }
 }
 
-// ---- --vary lists and --resume rows (issue 23): the same contract ----
+// ---- --vary lists and --resume rows: the same contract ----
 
 /// Random --vary arguments: keys (good, bad, overlapping), TOML values of every kind and
 /// broken ones, comments and newlines, then byte mutations.

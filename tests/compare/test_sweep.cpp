@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "support/paper.hpp"
 
 using ringtest::ringvib;
 using ringtest::source;
@@ -147,7 +148,7 @@ TEST(Sweep, ResumeRunsOnlyTheMissingCases) {
   EXPECT_NE(read(out + "/sweep.json").find("\"keys\""), std::string::npos);
 }
 
-// ---- --vary values are TOML (issue 23) ----
+// ---- --vary values are TOML ----
 
 /// `s` single-quoted for the shell that runs ringvib.
 std::string sh(const std::string& s) {
@@ -232,13 +233,7 @@ TEST(SweepVary, AKeyGivenTwiceOrInsideAnotherIsRefusedBeforeAnything) {
 TEST(SweepVary, QuotedStringsReachTheCaseScene) {
   const std::string dir = ringtest::temp_dir();
   const std::string scene = dir + "/lumped.toml";
-  ringtest::write(scene, R"(title = "lumped modes"
-[ring]
-radius = 10.0
-E = 2.1e11
-rho = 7.8e3
-section = { shape = "circle", diameter = 0.12 }
-[supports]
+  ringtest::write(scene, "title = \"lumped modes\"\n" + ringtest::paper_ring_toml() + R"([supports]
 pin = 180.0
 [lumped]
 n = 40
@@ -317,7 +312,7 @@ TEST(SweepVary, ARecordListOf1001AnglesRuns) {
   EXPECT_EQ(column(rows, "status"), std::vector<std::string>(1001, "ok"));
 }
 
-// ---- under mpirun (issue 23): failures of every rank counted, signals ----
+// ---- under mpirun: failures of every rank counted, signals ----
 
 /// The launcher prefix for two ranks (root allowed in CI containers; two ranks on a
 /// machine with fewer cores), or "" when mpirun is not installed.

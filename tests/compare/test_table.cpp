@@ -200,7 +200,7 @@ TEST(Table, NoDifferenceOrErrorAgainstAWeakPartner) {
   EXPECT_NE(r[0].line().find("paired with MAC"), std::string::npos) << r[0].line();
 }
 
-// Issue 46, finding 1: the backward-error acceptance passed a NaN. std::max(0, NaN) is 0 and
+// Found by a robustness probe: the backward-error acceptance passed a NaN. std::max(0, NaN) is 0 and
 // std::max_element keeps a small residual ahead of a later NaN, so a pair that broke down
 // read as a perfect one. Oracle: IEEE comparisons (NaN is no number below a bound).
 TEST(Acceptance, ANanResidualIsNoEigenpairWhereverItStands) {
@@ -215,7 +215,7 @@ TEST(Acceptance, ANanResidualIsNoEigenpairWhereverItStands) {
   }
 }
 
-// Issue 46, finding 1: a result holding a value that is not finite is a numerical failure
+// Found by a robustness probe: a result holding a value that is not finite is a numerical failure
 // (exit 3) naming the value, whatever produced it; a residual the solver does not report
 // (ccx, an imported column) is none, not a non-finite value.
 TEST(Acceptance, ANonFiniteResultIsANumericalFailureNamingTheValue) {

@@ -22,6 +22,7 @@
 #include "fem_reference/timoshenko_model.hpp"
 #include "ring/closed_form.hpp"
 #include "tests/support/close.hpp"
+#include "tests/support/convergence.hpp"
 #include "tests/support/thick.hpp"
 
 namespace {
@@ -96,20 +97,6 @@ double difference(const ring::StaticResult& a, const ring::StaticResult& b) {
   return d / scale;
 }
 
-/// Least-squares slope of log(y) against log(x).
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    mx += std::log(x[i]) / x.size();
-    my += std::log(y[i]) / y.size();
-  }
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
-    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
-  }
-  return sxy / sxx;
-}
 
 // ---- The kernel: exact derivatives, and the linear Timoshenko model at rest -------------
 
@@ -341,9 +328,9 @@ TEST(FemReissnerStatics, ThinRingIsTheEulerElasticaWithinTheShearCorrection) {
     EXPECT_LT(d, 10.0 * depth * depth) << "depth " << depth;
     EXPECT_LT(std::max(tc, ec), 0.1 * d) << "depth " << depth;
   }
-  const double order = slope(ratio, diff);
-  RecordProperty("order", std::to_string(order));
-  EXPECT_NEAR(order, 2.0, 0.1);
+  const auto samples = ringtest::in_h(ratio, diff);  // the order in d/R
+  RecordProperty("order", std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.1));
 }
 
 // Oracle: the Euler-Bernoulli beam again, now on the thick ring (d/R = 0.2) with the shear
@@ -369,7 +356,7 @@ TEST(FemReissnerStatics, ShearStiffLimitIsTheEulerBeam) {
   }
   const double offset = (factor[2] * diff[2] - factor[1] * diff[1]) / (factor[2] - factor[1]);
   RecordProperty("offset", sci(offset));
-  EXPECT_NEAR(slope(factor, diff), -1.0, 0.02);
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_h(factor, diff), -1.0, 0.02));  // a power of kappa
   EXPECT_LT(std::abs(offset), 1e-8);
 }
 
@@ -397,9 +384,9 @@ TEST(FemReissnerStatics, ShearStiffLimitWithEveryTermIsTheEulerBeam) {
     factor.push_back(f);
     record += sci(diff.back()) + " ";
   }
-  const double order = slope(factor, diff);
-  RecordProperty("differences", record + "slope " + std::to_string(order));
-  EXPECT_NEAR(order, -1.0, 0.05);
+  const auto samples = ringtest::in_h(factor, diff);  // a power of kappa: -1
+  RecordProperty("differences", record + "slope " + std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, -1.0, 0.05));
 }
 
 // Oracle: measured convergence orders. The thick ring (d/R = 0.2) pressed at the crown
@@ -419,10 +406,10 @@ TEST(FemReissnerStatics, ThickRingConvergesInElementsAndDegree) {
       h.push_back(1.0 / n);
       err.push_back(difference(fem::solve_static(spec, fem_options(n, p), st), reference));
     }
-    const double order = slope(h, err);
+    const auto samples = ringtest::in_h(h, err);
     RecordProperty("p" + std::to_string(p), sci(err[0]) + " " + sci(err[1]) + " " + sci(err[2]) + " order " +
-                                                 std::to_string(order));
-    EXPECT_NEAR(order, 2.0 * p, 0.5) << "p = " << p;
+                                                 std::to_string(ringtest::fit_order(samples).order));
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0 * p, 0.5)) << "p = " << p;
   }
   std::vector<double> err;
   std::string record;
@@ -453,7 +440,7 @@ TEST(FemReissnerStatics, NoLockingSameOrderAtDepthOverR1em3And1em1) {
       h.push_back(1.0 / n);
       err.push_back(difference(fem::solve_static(spec, fem_options(n, 3), st), reference));
     }
-    orders.push_back(slope(h, err));
+    orders.push_back(ringtest::fit_order(ringtest::in_h(h, err)).order);
     finest.push_back(err.back());
     RecordProperty("depth_" + sci(depth), sci(err[0]) + " " + sci(err[1]) + " " + sci(err[2]) + " order " +
                                               std::to_string(orders.back()));
@@ -521,9 +508,9 @@ TEST(FemReissnerStatics, ContinuationPassesTheLimitPointAsTheEulerBeam) {
     diff.push_back(d);
     EXPECT_LT(d, 10.0 * depth * depth) << "depth " << depth;
   }
-  const double order = slope(ratio, diff);
-  RecordProperty("differences", record + "order " + std::to_string(order));
-  EXPECT_NEAR(order, 2.0, 0.2);
+  const auto samples = ringtest::in_h(ratio, diff);  // the order in d/R
+  RecordProperty("differences", record + "order " + std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.2));
 }
 
 // The converged reference (fem.reference: the degree raised, then cells split, until the
@@ -580,7 +567,7 @@ TEST(FemReissnerResponse, UndampedNewmarkConservesAndGeneralizedAlphaNeverGainsE
     errs.push_back(err / max_work);
     EXPECT_LT(err, 1e-4 * max_work) << "dt " << dt;
   }
-  EXPECT_NEAR(slope(dts, errs), 2.0, 0.5);
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_h(dts, errs), 2.0, 0.5));
   ring::ResponseOptions ga = crown_step(spec, 1e-5, 4e-3);
   ga.integrator = ring::ResponseOptions::Integrator::generalized_alpha;
   ga.rho_inf = 0.8;
@@ -706,9 +693,9 @@ TEST(FemReissnerResponse, ThinRingFollowsTheEulerBeam) {
     diff.push_back(d / peak);
     EXPECT_LT(d / peak, 5.0 * depth * depth) << "depth " << depth;
   }
-  const double order = slope(ratio, diff);
-  RecordProperty("order", std::to_string(order));
-  EXPECT_NEAR(order, 2.0, 0.3);
+  const auto samples = ringtest::in_h(ratio, diff);  // the order in d/R
+  RecordProperty("order", std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.3));
 }
 
 // ---- Linear buckling (buckling.hpp: the pencil from the beam's own tangent) -------------
@@ -754,9 +741,9 @@ TEST_P(FemReissnerBuckling, ThinRingIsTheEulerBeamWithinTheShearCorrection) {
     diff.push_back(d);
     EXPECT_LT(d, 3.0 * depth * depth) << "depth " << depth;
   }
-  const double order = slope(ratio, diff);
-  RecordProperty("differences", record + "order " + std::to_string(order));
-  EXPECT_NEAR(order, 2.0, 0.1);
+  const auto samples = ringtest::in_h(ratio, diff);  // the order in d/R
+  RecordProperty("differences", record + "order " + std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.1));
 }
 
 // Oracle: the inextensible ring's critical pressures with a pin and a roller
@@ -779,9 +766,9 @@ TEST_P(FemReissnerBuckling, ShearStiffLimitIsTheInextensibleClosedForm) {
     factor.push_back(f);
     record += sci(diff.back()) + " ";
   }
-  const double order = slope(factor, diff);
-  RecordProperty("differences", record + "slope " + std::to_string(order));
-  EXPECT_NEAR(order, -1.0, 0.05);
+  const auto samples = ringtest::in_h(factor, diff);  // a power of kappa: -1
+  RecordProperty("differences", record + "slope " + std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, -1.0, 0.05));
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, FemReissnerBuckling,
@@ -835,9 +822,9 @@ TEST(FemReissnerPreload, ThinRingIsTheEulerBeamWithinTheShearCorrection) {
     diff.push_back(d);
     EXPECT_LT(d, 10.0 * depth * depth) << "depth " << depth;
   }
-  const double order = slope(ratio, diff);
-  RecordProperty("differences", record + "order " + std::to_string(order));
-  EXPECT_NEAR(order, 2.0, 0.2);
+  const auto samples = ringtest::in_h(ratio, diff);  // the order in d/R
+  RecordProperty("differences", record + "order " + std::to_string(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.2));
 }
 
 // ---- Input -----------------------------------------------------------------------------

@@ -44,7 +44,7 @@ TEST(FemStress, HundredThousandUnknownsTwentyThreeModes) {
   for (int i = 0; i < 23; ++i) EXPECT_TRUE(ringtest::IsClose(r.omega[i], f.omega[i], bound)) << "mode " << i + 1;
 }
 
-// Issue 23: 10^4 elements of degree 12 failed with "mesh too coarse to represent the
+// 10^4 elements of degree 12 failed with "mesh too coarse to represent the
 // rigid mode". The cause was precision, not the mesh: the shifted operator's spectrum
 // spans eps lambda_max / |sigma| = 3.4e6 there (fem_reference/ring_model.hpp,
 // kPrecisionLimit), the factorization no longer represents its low end, and the pairs

@@ -30,6 +30,7 @@
 #include "fem_reference/modes.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/sampling.hpp"
+#include "support/convergence.hpp"
 
 namespace {
 
@@ -85,21 +86,6 @@ int count_through_flexural(const std::vector<Exact>& spectrum, int k) {
     if (e.k == k && e.branch == 0 && n % 2 == 0) break;  // both waves of the pair
   }
   return n;
-}
-
-/// Least-squares slope of log(error) against log(h).
-double fitted_rate(const std::vector<double>& h, const std::vector<double>& e) {
-  double mh = 0, me = 0;
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    mh += std::log(h[i]) / h.size();
-    me += std::log(e[i]) / h.size();
-  }
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    sxy += (std::log(h[i]) - mh) * (std::log(e[i]) - me);
-    sxx += (std::log(h[i]) - mh) * (std::log(h[i]) - mh);
-  }
-  return sxy / sxx;
 }
 
 /// A number for RecordProperty (std::to_string would print 1e-12 as 0.000000).
@@ -291,9 +277,10 @@ TEST_P(FemTimoshenkoLocking, SameFittedOrderAtDepthOverR1em3And1em1) {
       h.push_back(2 * M_PI / n);
       e.push_back(std::abs(r.omega[0] - exact) / exact);
     }
-    rate[d] = fitted_rate(h, e);
+    const auto samples = ringtest::in_h(h, e);
+    rate[d] = ringtest::fit_order(samples).order;
     finest[d] = e.back();
-    EXPECT_NEAR(rate[d], 2.0 * p, 0.2) << "depth/R = " << depths[d] << ": observed order " << rate[d] << " for p = " << p;
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0 * p, 0.2)) << "depth/R = " << depths[d] << ", p = " << p;
   }
   EXPECT_NEAR(rate[0], rate[1], 0.1) << "orders " << rate[0] << " (depth/R = 1e-3) and " << rate[1] << " (0.1), p = " << p;
   EXPECT_LT(finest[0], 2.0 * finest[1]) << "finest errors " << finest[0] << " (1e-3) and " << finest[1] << " (0.1)";
@@ -396,10 +383,9 @@ TEST(FemTimoshenkoClamped, OrderTwoPWithEveryTerm) {
       h.push_back(2 * M_PI / n);
       e.push_back(worst);
     }
-    const double rate = fitted_rate(h, e);
-    EXPECT_NEAR(rate, 2.0 * p, 0.3) << "depth/R = " << depth << ": observed order " << rate << " (errors " << e[0]
-                                    << ", " << e[1] << ", " << e[2] << ", " << e[3] << ")";
-    EXPECT_LT(e.back(), 1e-5);
+    const auto samples = ringtest::in_h(h, e);
+    const double rate = ringtest::fit_order(samples).order;
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0 * p, 0.3, 1e-5)) << "depth/R = " << depth;
     RecordProperty(depth < 0.01 ? "rate_thin" : "rate_thick", sci(rate));
     RecordProperty(depth < 0.01 ? "finest_thin" : "finest_thick", sci(e.back()));
   }

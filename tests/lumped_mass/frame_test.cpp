@@ -36,6 +36,7 @@
 #include "ring/analysis.hpp"
 #include "ring/closed_form.hpp"
 #include "ring/errors.hpp"
+#include "tests/support/convergence.hpp"
 #include "tests/support/thick.hpp"
 
 namespace {
@@ -158,8 +159,6 @@ Vec linear_statics(const ring::RingSpec& spec, const LumpedOptions& o, const Vec
   return A.partialPivLu().solve(rhs).head(N);
 }
 
-double slope(double x0, double y0, double x1, double y1) { return std::log(y1 / y0) / std::log(x1 / x0); }
-
 // (3) Small loads: the statics tend to the linear frame's K u = f. A point load F at 90 deg and
 // a radial one at 270 deg on the pin-and-roller ring with every term; the nonlinear part of
 // the response is O(F^2), so |u - u_lin| / |u_lin| = c F: order 1 in F, fitted over F0, F0/4
@@ -189,9 +188,9 @@ TEST(LumpedFrame, SmallLoadStaticsTendToTheLinearFrame) {
     rel.push_back(diff / size);
     std::printf("frame small load: F = %.4e N, max |u| = %.3e m, |u - u_lin| / |u_lin| = %.3e\n", F, size, diff / size);
   }
-  const double p = slope(load[0], rel[0], load[1], rel[1]);
-  std::printf("frame small load: order in F %.4f\n", p);
-  EXPECT_NEAR(p, 1.0, 0.05);
+  const auto samples = ringtest::in_h(load, rel);  // two points: the order in F
+  std::printf("frame small load: order in F %.4f\n", ringtest::fit_order(samples).order);
+  EXPECT_TRUE(ringtest::OrderNear(samples, 1.0, 0.05));
   EXPECT_LT(rel[0], 1e-2);
 }
 
@@ -251,9 +250,9 @@ TEST(LumpedFrame, UndampedEnergyBalanceIsSecondOrderInDt) {
     EXPECT_LE(constraint, 1e-15 * spec.radius);
   }
   EXPECT_LT(err[0], 1e-5);
-  const double p = slope(dt, err[0], dt / 2.0, err[1]);
-  std::printf("frame response: energy error order in dt %.3f\n", p);
-  EXPECT_NEAR(p, 2.0, 0.2);
+  const auto samples = ringtest::in_h({dt, dt / 2.0}, err);  // two points: the order in dt
+  std::printf("frame response: energy error order in dt %.3f\n", ringtest::fit_order(samples).order);
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.2));
 }
 
 // (6) Past the critical pressure the statics end at a bifurcation (the driver's test on the
@@ -334,13 +333,15 @@ TEST(LumpedFrame, BucklesUnderFollowerPressureAtTheShearReducedCriticalPressure)
   ring::BucklingOptions b;
   b.loads.pressure = {1.0, ring::Pressure::Kind::follower};
   b.count = 1;
+  const std::vector<int> ns{40, 80, 160};
   std::vector<double> err;
-  for (int n : {40, 80, 160}) {
+  for (int n : ns) {
     err.push_back(std::abs(lumped::compute_buckling(spec, lumptest::options(n, kTimoshenko), b).factors.at(0) / exact - 1.0));
     std::printf("frame buckling n = %d: relative error %.3e\n", n, err.back());
   }
   EXPECT_LT(err[2], 1e-3);
-  for (int i = 0; i + 1 < 3; ++i) EXPECT_NEAR(std::log2(err[i] / err[i + 1]), 2.0, 0.15);
+  for (int i = 0; i + 1 < 3; ++i)  // each refinement's two-point order
+    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(std::vector<int>{ns[i], ns[i + 1]}, {err[i], err[i + 1]}), 2.0, 0.15));
 }
 
 // Frequencies under a vanishing load are the linear frame's (model.cpp, an independent

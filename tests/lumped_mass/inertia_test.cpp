@@ -26,6 +26,7 @@
 
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
+#include "support/convergence.hpp"
 #include "support/paper.hpp"
 
 namespace {
@@ -114,19 +115,14 @@ TEST(LumpedInertia, PulseResponseConvergesAtOrderTwoInTheLinkLength) {
   for (int n : ns) h.push_back(lumped::respond(s, chain(n), r));
   std::vector<double> e;
   for (std::size_t i = 0; i + 1 < h.size(); ++i) e.push_back(difference(h[i], h[i + 1]));
-  // Least-squares slope of log e against log n over the three differences.
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    const double x = std::log(double(ns[i])), y = std::log(e[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  const double k = double(e.size()), order = -(k * sxy - sx * sy) / (k * sxx - sx * sx);
+  // Fitted over the three differences, each at its coarser n.
+  const auto samples = ringtest::in_n(std::vector<int>(ns.begin(), ns.begin() + 3), e);
+  const double order = ringtest::fit_order(samples).order;
   std::printf("[lumped inertia] pulse, J = %g kg m^2: differences n/2n (n = 40, 80, 160) %s, fitted order %.3f\n",
               kJ, list(e).c_str(), order);
   RecordProperty("differences", list(e));
   RecordProperty("order", std::to_string(order));
-  EXPECT_NEAR(order, 2.0, 0.25) << list(e);
-  EXPECT_LT(e.back(), 1e-2);
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.25, 1e-2));
 }
 
 // Small amplitude: the free vibration after the pulse (t >= 0.2 s to 4 s, dt = 2e-3 s, n = 40)
@@ -196,12 +192,13 @@ TEST(LumpedInertia, EnergyBalanceAtTheEndOfAFreeVibration) {
   EXPECT_LT(small, 1e-6);
   std::vector<double> dts = {16e-3, 8e-3, 4e-3}, err;
   for (double dt : dts) err.push_back(balance(5e3, dt));
-  const double order = std::log(err[0] / err[2]) / std::log(dts[0] / dts[2]);
+  // The order in dt from the first and the last step (two points).
+  const auto samples = ringtest::in_h({dts[0], dts[2]}, {err[0], err[2]});
+  const double order = ringtest::fit_order(samples).order;
   std::printf("[lumped inertia] energy balance at the end, F = 5e3 N: %s of the work, order %.3f in dt\n",
               list(err).c_str(), order);
   RecordProperty("large_amplitude_balance", list(err));
-  EXPECT_NEAR(order, 2.0, 0.3) << list(err);
-  EXPECT_LT(err.back(), 1e-6);
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.3, 1e-6));
 }
 
 // J = 0: no hinge rotation (the unknowns are the 2n positions and the constraint rows, 2n + n

@@ -41,6 +41,7 @@
 #include "multibody/statics.hpp"
 #include "ring/errors.hpp"
 #include "support/close.hpp"
+#include "support/convergence.hpp"
 #include "support/elastica.hpp"
 #include "support/paper.hpp"
 
@@ -55,17 +56,6 @@ ring::LumpedOptions chain(int n) {
   ring::LumpedOptions o;
   o.n = n;
   return o;
-}
-
-/// Least-squares slope of log(error) against log(n), negated: the convergence order.
-double fitted_order(const std::vector<double>& n, const std::vector<double>& e) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(n[i]), y = std::log(e[i]);
-    sx += x; sy += y; sxx += x * x; sxy += x * y;
-  }
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
 std::string sci(double x) {
@@ -173,10 +163,9 @@ TEST(LumpedLoads, PressureLoadStiffnessMatchesTheFourierSeries) {
     std::vector<double> ns = {40, 80, 160}, err;
     for (double n : ns)
       err.push_back(ringtest::rel(lumped::solve_static(s, chain(int(n)), squeeze(P, p, kind)).displacements[0].ux, exact));
-    const double order = fitted_order(ns, err);
-    RecordProperty("order_" + ring::to_string(kind), std::to_string(order));
-    EXPECT_NEAR(order, 2.0, 0.15) << ring::to_string(kind) << ": errors " << list(err);
-    EXPECT_LT(err.back(), 2e-3) << ring::to_string(kind);
+    const auto samples = ringtest::in_n(ns, err);  // the order in h = 2 pi R / n
+    RecordProperty("order_" + ring::to_string(kind), std::to_string(ringtest::fit_order(samples).order));
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.15, 2e-3)) << ring::to_string(kind);
   }
   // The three kinds differ by far more than the finest error: the test tells them apart.
   EXPECT_GT(ringtest::rel(squeezed(s, P, p, Kind::dead), squeezed(s, P, p, Kind::central)), 0.02);
@@ -193,8 +182,7 @@ TEST(LumpedLoads, FoundationMatchesTheFourierSeries) {
   std::vector<double> ns = {40, 80, 160}, err;
   for (double n : ns)
     err.push_back(ringtest::rel(lumped::solve_static(s, chain(int(n)), squeeze(P, 0.0, Kind::dead)).displacements[0].ux, exact));
-  EXPECT_NEAR(fitted_order(ns, err), 2.0, 0.15) << list(err);
-  EXPECT_LT(err.back(), 2e-3);
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, err), 2.0, 0.15, 2e-3));
 }
 
 // Several point loads: two opposite forces P at 90 and 270 deg pinch the ring pinned at 180 and
@@ -218,8 +206,8 @@ TEST(LumpedLoads, SeveralPointLoadsConvergeToTheElastica) {
     e_along.push_back(ringtest::rel(along, exact.along));
     e_across.push_back(ringtest::rel(across, exact.across));
   }
-  EXPECT_NEAR(fitted_order(ns, e_along), 2.0, 0.1) << list(e_along);
-  EXPECT_NEAR(fitted_order(ns, e_across), 2.0, 0.1) << list(e_across);
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, e_along), 2.0, 0.1)) << "along";
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, e_across), 2.0, 0.1)) << "across";
 }
 
 // The terms in large displacements: a further pin, the clamp, an elastic support (kx, ky, kr)
@@ -340,13 +328,12 @@ TEST(LumpedLoads, HungRingConvergesToTheFourierSeries) {
         e_side_y.push_back(ringtest::rel(r.displacements[1].uy, side[1]));
       }
     }
-    const double order = fitted_order(ns, e_bottom);
-    RecordProperty(m0 > 0 ? "order_with_mass" : "order_ring_weight", std::to_string(order));
-    EXPECT_NEAR(order, 2.0, 0.1) << "m0 = " << m0 << ": " << list(e_bottom);
-    EXPECT_LT(e_bottom.back(), 1e-3);
+    const auto samples = ringtest::in_n(ns, e_bottom);
+    RecordProperty(m0 > 0 ? "order_with_mass" : "order_ring_weight", std::to_string(ringtest::fit_order(samples).order));
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.1, 1e-3)) << "m0 = " << m0;
     if (m0 == 0.0) {
-      EXPECT_NEAR(fitted_order(ns, e_side_x), 2.0, 0.1) << list(e_side_x);
-      EXPECT_NEAR(fitted_order(ns, e_side_y), 2.0, 0.1) << list(e_side_y);
+      EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, e_side_x), 2.0, 0.1)) << "side, x";
+      EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, e_side_y), 2.0, 0.1)) << "side, y";
     }
   }
 }
@@ -445,10 +432,11 @@ TEST(LumpedLoads, ResponseCountsTheWorkOfPressureAndGravity) {
       EXPECT_LT(error, 1e-4 * work) << ring::to_string(kind) << " dt = " << dt;
       err.push_back(error / work);
     }
-    const double order = std::log(err[0] / err[2]) / std::log(dts[0] / dts[2]);
-    RecordProperty("energy_order_" + ring::to_string(kind), std::to_string(order));
+    // The order in dt from the first and the last step (two points, as measured).
+    const auto samples = ringtest::in_h({dts[0], dts[2]}, {err[0], err[2]});
+    RecordProperty("energy_order_" + ring::to_string(kind), std::to_string(ringtest::fit_order(samples).order));
     RecordProperty("energy_error_" + ring::to_string(kind), list(err));
-    EXPECT_NEAR(order, 2.0, 0.5) << list(err);
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.5)) << list(err);
   }
 }
 

@@ -26,7 +26,7 @@ TEST(LumpedPaper, ChainReproducesLumpedMassColumnModes1To9) {
     const double w = r.omega[row.mode - 1], lm = *row.lm_corrected;
     std::printf("[lumped chain n=40] mode %2d  %10.4f  paper LM %8.4g  diff %+6.2f %%\n", row.mode, w, lm,
                 (w - lm) / lm * 100);
-    // 1.0 %: the acceptance bound for modes 1-9 (docs/paper.md, item 5, found 0.95 %);
+    // 1.0 %: the chain's specified agreement with the paper for modes 1-9 (docs/paper.md, item 5, found 0.95 %);
     // above mode 9 the printed values fall increasingly below this model (up to 3.9 %),
     // cause unknown, so they are printed, not asserted.
     if (row.mode <= 9) {
@@ -46,7 +46,7 @@ TEST(LumpedPaper, FrameConsistentReproducesSap5ColumnAll23Modes) {
     const double w = r.omega[row.mode - 1], fe = *row.fe_corrected;
     std::printf("[lumped frame-consistent n=40] mode %2d  %10.4f  paper SAP5 %8.4g  diff %+7.3f %%\n", row.mode,
                 w, fe, (w - fe) / fe * 100);
-    // 0.05 %: the bound; the table prints 4 significant digits (rounding alone
+    // 0.05 %: the table's printed precision: it prints 4 significant digits (rounding alone
     // is up to 0.05 % for values like 2.486), docs/paper.md, item 4, found 0.03 %.
     EXPECT_TRUE(ringtest::IsClose(w, fe, 5e-4)) << "mode " << row.mode;
   }

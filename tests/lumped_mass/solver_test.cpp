@@ -80,7 +80,7 @@ class LumpedSolver : public ::testing::TestWithParam<Case> {};
 // Normwise backward error of each pair, eta = ||P (K x - lambda M x)|| /
 // ((||K||_1 + lambda ||M||_1) ||x||) (Higham & Tisseur's backward error for the pencil,
 // restricted to the admissible space by the orthogonal projector P onto null([C; S])),
-// and ||X^T M X - I||_max. Both below 1e-10 (the bound): the dense and sparse
+// and ||X^T M X - I||_max. Both below 1e-10 (the solvers' specified accuracy): the dense and sparse
 // paths are backward stable, so eta is a few eps; orthonormality is limited by the
 // eigenvectors' rounding relative to the gaps (1e-12 measured for the free ring's
 // exact double eigenvalues, whose basis Lanczos orthogonalizes explicitly).

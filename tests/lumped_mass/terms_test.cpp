@@ -26,6 +26,7 @@
 #include "ring/closed_form.hpp"
 #include "common.hpp"
 #include "tests/support/close.hpp"
+#include "tests/support/convergence.hpp"
 
 namespace {
 
@@ -37,19 +38,6 @@ using ring::LumpedOptions;
 std::string name(LumpedOptions::Variant v) {
   return v == kChain ? "chain" : v == kFrame ? "frame" : "frame_consistent";
 }
-
-/// Least-squares slope of log(y) against log(x).
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = static_cast<double>(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double a = std::log(x[i]), b = std::log(y[i]);
-    sx += a; sy += b; sxx += a * a; sxy += a * b;
-  }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
-
-std::vector<double> as_double(const std::vector<int>& v) { return {v.begin(), v.end()}; }
 
 /// The paper's ring on a foundation: k_r = 20, k_t = 5 in units EI/R^4, so that the
 /// inextensional omega_k rise with k from k = 0 (the rotation, k_t alone) on and the
@@ -105,14 +93,14 @@ TEST_P(LumpedFoundation, FreeRingOnFoundationConverges) {
       for (double e : err[k]) EXPECT_LT(e, 1e-10);
       continue;
     }
-    const double p = -slope(as_double(ns), err[k]);
+    const auto samples = ringtest::in_n(ns, err[k]);  // the order in h = 2 pi R / n
+    const double p = ringtest::fit_order(samples).order;
     std::printf("[lumped %s foundation] k = %d  rel. errors n=80..640: %.3e %.3e %.3e %.3e  fitted order %.3f\n",
                 name(c.variant).c_str(), k, err[k][0], err[k][1], err[k][2], err[k][3], p);
     // 0.1: as the free ring's convergence test (convergence_test.cpp): the fit sees the
     // O(h^4) remainder at the coarsest n; 0.2 for k >= 6, where it is larger (k l / R = 0.63
     // at n = 80 for k = 8; measured up to 2.15, frame-consistent).
-    EXPECT_NEAR(p, 2.0, k <= 5 ? 0.1 : 0.2) << "k = " << k;
-    EXPECT_LT(err[k].back(), c.ceiling) << "k = " << k;
+    EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, k <= 5 ? 0.1 : 0.2, c.ceiling)) << "k = " << k;
   }
 }
 
@@ -180,11 +168,13 @@ TEST_P(LumpedPointMass, PairSplitsByFirstOrderShift) {
                   name(v).c_str(), k, f, radial, shift[1], tangential, shift[0], rem_radial.back() / (f * f),
                   rem_tangential.back() / (f * f));
     }
-    const double pr = slope(fractions, rem_radial), pt = slope(fractions, rem_tangential);
+    // The remainders as powers of m0 (the "h" of the helper: order 2 in m0).
+    const auto radial = ringtest::in_h(fractions, rem_radial), tangential = ringtest::in_h(fractions, rem_tangential);
+    const double pr = ringtest::fit_order(radial).order, pt = ringtest::fit_order(tangential).order;
     std::printf("[lumped %s mass] k = %d remainder order in m0: radial %.3f, tangential %.3f\n", name(v).c_str(), k,
                 pr, pt);
-    EXPECT_NEAR(pr, 2.0, 0.15) << "k = " << k;
-    EXPECT_NEAR(pt, 2.0, 0.15) << "k = " << k;
+    EXPECT_TRUE(ringtest::OrderNear(radial, 2.0, 0.15)) << "radial, k = " << k;
+    EXPECT_TRUE(ringtest::OrderNear(tangential, 2.0, 0.15)) << "tangential, k = " << k;
   }
 }
 
@@ -228,11 +218,12 @@ TEST_P(LumpedStiffSpring, ConvergesToPinAndClamp) {
       for (int i = 0; i < count; ++i) e = std::max(e, ringtest::rel(r.omega[i], target.omega[i]));
       err.push_back(e);
     }
-    const double p = slope(ratio, err);
+    const auto samples = ringtest::in_h(ratio, err);  // a power of the stiffness: -1
+    const double p = ringtest::fit_order(samples).order;
     std::printf("[lumped %s spring -> %s] max rel. diff (modes 1-%d) at k = 1e4, 1e5, 1e6: %.3e %.3e %.3e, "
                 "slope %.3f\n",
                 name(v).c_str(), what, count, err[0], err[1], err[2], p);
-    EXPECT_NEAR(p, -1.0, 0.05) << what;
+    EXPECT_TRUE(ringtest::OrderNear(samples, -1.0, 0.05)) << what;
     // The penalty's constant, err * k: measured 53-55 (pin, kx = ky in EI/R^3) and 1.95-1.96
     // (clamp, kr in EI/R) for the three variants; about twice that at k = 1e6.
     EXPECT_LT(err.back(), pin ? 1e-4 : 4e-6) << what;
@@ -398,13 +389,13 @@ TEST_P(LumpedClamped, ConvergesToContinuumClampedRing) {
     for (int i = 0; i < count; ++i) err[i].push_back(ringtest::rel(r.omega[i], exact[i]));
   }
   for (int i = 0; i < count; ++i) {
-    const double p = -slope(as_double(ns), err[i]);
+    const auto samples = ringtest::in_n(ns, err[i]);  // the order in h = 2 pi R / n
+    const double p = ringtest::fit_order(samples).order;
     std::printf("[lumped %s clamped] mode %d omega %.6f rad/s: rel. errors n=40..320 %.3e %.3e %.3e %.3e, "
                 "fitted order %.3f\n",
                 name(v).c_str(), i + 1, exact[i], err[i][0], err[i][1], err[i][2], err[i][3], p);
     // 0.15: the fit over n = 40..320 sees the next term (measured 1.97-2.08 for order 2).
-    EXPECT_NEAR(p, c.order[i], 0.15) << "mode " << i + 1;
-    EXPECT_LT(err[i].back(), c.ceiling) << "mode " << i + 1;
+    EXPECT_TRUE(ringtest::OrderNear(samples, c.order[i], 0.15, c.ceiling)) << "mode " << i + 1;
   }
 }
 

@@ -1,5 +1,5 @@
-// Shared by the multibody suites: the section-5 load, the energy balance of a history, a fitted
-// slope and a number format for RecordProperty.
+// Shared by the multibody suites: the section-5 load, the energy balance of a history and a
+// number format for RecordProperty (fitted orders: tests/support/convergence.hpp).
 #pragma once
 
 #include <algorithm>
@@ -30,20 +30,6 @@ inline ring::MultibodyOptions dense_chain(int n) {
   o.n = n;
   o.method = ring::MultibodyOptions::Method::dense;
   return o;
-}
-
-/// Least-squares slope of log y against log x (a fitted convergence order).
-inline double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = static_cast<double>(x.size());
-  for (size_t i = 0; i < x.size(); ++i) {
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
 /// Options of an n-segment chain on the path `method`, every other option at its default.
@@ -80,7 +66,7 @@ inline ring::MultibodyOptions segments(int n) {
   return o;
 }
 
-/// The reconstructed section-5 load (issue 7): a 20 kN step at C (0 deg) toward the pin,
+/// The paper's section-5 load as this project reconstructs it: a 20 kN step at C (0 deg) toward the pin,
 /// dt = 0.01 s, recorded points 0, 90, 180, 270 deg.
 inline ring::ResponseOptions forced_scene(ring::ResponseOptions::Integrator integrator, double t_end = 5.0) {
   ring::ResponseOptions r;

@@ -1,6 +1,6 @@
 // The analytic tangent of the nonlinear chain (multibody/dynamics_model.hpp) against
 // central differences of multibody::Chain's own functions, at a random deformed,
-// moving state. Oracle: the Chain (issue 3) and the definition of the derivative.
+// moving state. Oracle: the Chain (validated on its own by the modes tests) and the definition of the derivative.
 #include <gtest/gtest.h>
 
 #include <random>

@@ -1,4 +1,4 @@
-// The O(n) path of the forced response (multibody/dynamics_sparse.hpp, issue 8 point 2).
+// The O(n) path of the forced response (multibody/dynamics_sparse.hpp).
 // Oracles: the dense path's own pieces (the O(n^2) tangent of dynamics_model.hpp, a
 // dense LU of the assembled saddle-point matrix, the O(n^2) contact loop) and the
 // dense path's whole time histories on the paper's 20 kN scene.
@@ -211,7 +211,7 @@ TEST_P(SparseVsDense, PaperSceneHistoriesAgree) {
   RecordProperty("max_constraint_residual_m", sci(d.max_g));
   EXPECT_LE(d.u, 1e-8);
   EXPECT_LE(d.energy, 1e-8);
-  EXPECT_LT(d.max_g, 1e-10);  // the issue's bound, every step
+  EXPECT_LT(d.max_g, 1e-10);  // the specified constraint tolerance (m), every step
   EXPECT_EQ(dense.snapshot_t, sparse.snapshot_t);
   ASSERT_EQ(dense.snapshot_x.size(), sparse.snapshot_x.size());
   // Energy balance error agrees to the same level relative to the work.
@@ -238,7 +238,7 @@ TEST(MultibodySparseDynamics, DampedSceneAgrees) {
     const Diff d = compare(sparse, dense);
     EXPECT_LE(d.u, 1e-8);
     EXPECT_LE(d.energy, 1e-8);
-    EXPECT_LT(d.max_g, 1e-10);  // the issue's bound, every step
+    EXPECT_LT(d.max_g, 1e-10);  // the specified constraint tolerance (m), every step
   }
 }
 
@@ -287,8 +287,8 @@ TEST(MultibodySparseDynamics, ShapeDependentPressureStaysDense) {
   }
 }
 
-// Self-contact is reported the same way on both paths (the issue-7 crushing load of
-// 150 kN, test_dynamics_stress.cpp), at n = 40 (O(n^2) contact loop) and n = 160 (grid):
+// Self-contact is reported the same way on both paths (the crushing load of
+// 150 kN on the paper's scene, test_dynamics_stress.cpp), at n = 40 (O(n^2) contact loop) and n = 160 (grid):
 // same reason, same step. With Newmark: under this load generalized-alpha gains more
 // than 1 % of the work before the ring closes, which is now a failure of its own
 // (energy_growth, tested in test_dynamics_sparse_stress.cpp).

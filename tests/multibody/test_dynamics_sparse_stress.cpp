@@ -1,4 +1,4 @@
-// Stress tests of the O(n) forced-response path (issue 8 point 2; label `stress`, each
+// Stress tests of the O(n) forced-response path (label `stress`, each
 // well under 60 s in Release): n = 10^4 with the constraints at round-off every step,
 // and sparse against dense at n = 1280, beyond the validation suite's n = 160.
 #include <gtest/gtest.h>
@@ -32,9 +32,9 @@ ring::MultibodyOptions opts(int n, Method m) {
   return o;
 }
 
-// n = 10^4 (the issue's size): 20 steps of the 20 kN scene (the start, the hardest part:
+// n = 10^4 (the largest size the path is specified for): 20 steps of the 20 kN scene (the start, the hardest part:
 // the step load's local response needs step halving) on both integrators. Oracles:
-// constraint residual < 1e-10 m at every step (the issue's bound), finite energies, and
+// constraint residual < 1e-10 m at every step (the specified constraint tolerance), finite energies, and
 // the energy balance: T + V never exceeds the work of the load by more than 1 % of it
 // (newmark: trapezoidal rule, measured 0; generalized-alpha only dissipates since its
 // pseudo-acceleration starts from the Newton matrix, measured 0: T + V - W < 0 after

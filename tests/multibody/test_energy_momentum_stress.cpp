@@ -1,4 +1,4 @@
-// The energy-momentum integrator at the ends of the ranges: 10^5 steps, the
+// The energy-momentum integrator at the ends of its specified ranges: 10^5 steps, the
 // largest and smallest dt, n = 10^4. Oracle: the exact energy balance of the undamped
 // chain (T + V = W) and the quadratic link constraints, which the scheme must keep to
 // the Newton tolerance and round-off, however long and however coarse the run.
@@ -35,7 +35,7 @@ TEST(MultibodyEnergyMomentumStress, HundredThousandStepsKeepTheBalance) {
   EXPECT_LE(b.iterations, 6.0);  // measured 4.0, as in the short runs at this dt
 }
 
-// n = 10^4 at the smallest and the largest dt of the range (a few steps each:
+// n = 10^4 at the smallest and the largest dt of the specified range, 0.001 and 0.05 s (a few steps each:
 // the cost is 0.04-0.06 s per step there). Measured balance 1.5e-13 (dt = 0.001) and
 // 2.4e-13 (dt = 0.05) of the work; Newton 3.0 and 5.0 iterations per step.
 TEST(MultibodyEnergyMomentumStress, TenThousandSegmentsAtBothEndsOfTheStepRange) {

@@ -63,7 +63,7 @@ TEST(MultibodyStress, RobustStaysAtDiscretizationLevelUpToN2000) {
       const Outcome r = run(n, rot, Dep::robust);
       std::printf("%6d %12.3e %12.3e %12.3e %6d %9.4f\n", n, r.numerical, r.discrete1, r.discreteK, r.rigid, r.seconds);
       EXPECT_EQ(r.rigid, 1) << "n = " << n;
-      // issue 3: every requested frequency accurate to 1e-8 relative (solver error), so
+      // Every requested frequency accurate to 1e-8 relative (the specified solver error), so
       // the error against the continuum is the discretization error alone.
       EXPECT_LT(r.numerical, 1e-8) << "n = " << n;
       if (n >= 32) {
@@ -132,7 +132,7 @@ TEST(MultibodyStress, SparsePathUpToN20000) {
       for (int i = 0; i < 23; ++i) worst = std::max(worst, ringtest::rel(r.omega[i], ref[i]));
       std::printf("%6d %8s %12.3e %12.3e %6d %9.4f\n", n, pinned ? "pin" : "free", worst, r.max_residual.value(),
                   r.rigid_modes, r.seconds);
-      EXPECT_LT(worst, 1e-8) << "n = " << n;  // issue 3's accuracy requirement, kept beyond 2000
+      EXPECT_LT(worst, 1e-8) << "n = " << n;  // the specified solver accuracy, kept beyond 2000
       EXPECT_EQ(r.rigid_modes, pinned ? 1 : 3);
     }
   }

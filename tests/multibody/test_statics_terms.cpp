@@ -16,6 +16,7 @@
 #include "multibody/statics.hpp"
 #include "ring/closed_form.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/support/convergence.hpp"
 
 namespace {
 
@@ -136,11 +137,6 @@ INSTANTIATE_TEST_SUITE_P(N, MultibodyStaticsTerms, ::testing::Values(40, 120, 20
 
 namespace {
 
-/// Least-squares order of err against n (the negated log-log slope).
-double fitted_order(const std::vector<int>& n, const std::vector<double>& err) {
-  return -mbtest::loglog_slope({n.begin(), n.end()}, err);
-}
-
 const std::vector<int> kLarge{1000, 2000, 4000, 10000};
 
 // At large n only the O(n) path runs ("auto" takes it from n = 1000 for every term): the
@@ -166,10 +162,8 @@ TEST(MultibodyStaticsTermsLargeN, HangingRingMeetsTheSelfWeightSeriesAtOrderTwo)
     across.push_back(std::abs(r.displacements[1].ux - r.displacements[0].ux - exact.across) / exact.across);
   }
   RecordProperty("sag_error_n10000", mbtest::sci(sag.back()));
-  EXPECT_NEAR(fitted_order(kLarge, sag), 2.0, 0.1) << sag[0] << " " << sag[1] << " " << sag[2] << " " << sag[3];
-  EXPECT_NEAR(fitted_order(kLarge, across), 2.0, 0.1) << across[0] << " " << across[1] << " " << across[2] << " "
-                                                      << across[3];
-  EXPECT_LT(sag.back(), 4e-7);  // 31 / n^2 = 3.1e-7
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(kLarge, sag), 2.0, 0.1, 4e-7)) << "sag";  // ceiling: 31 / n^2 = 3.1e-7
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(kLarge, across), 2.0, 0.1)) << "across";
 }
 
 // Two opposite forces along a diameter of a ring under half its critical pressure of each
@@ -194,9 +188,8 @@ TEST(MultibodyStaticsTermsLargeN, SqueezeUnderPressureMeetsTheSeriesAtOrderTwo) 
       const ring::StaticResult r = multibody::solve_static(spec, chain_options(n, Method::automatic), st);
       err.push_back(std::abs(r.displacements[1].ux - r.displacements[0].ux - exact) / exact);
     }
-    EXPECT_NEAR(fitted_order(kLarge, err), 2.0, 0.1)
-        << ring::to_string(kind) << ": " << err[0] << " " << err[1] << " " << err[2] << " " << err[3];
-    EXPECT_LT(err.back(), 5e-7) << ring::to_string(kind);  // 42 / n^2
+    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(kLarge, err), 2.0, 0.1, 5e-7))  // ceiling: 42 / n^2
+        << ring::to_string(kind);
   }
 }
 
@@ -225,8 +218,7 @@ TEST(MultibodyStaticsTermsLargeN, FreeRingOnAFoundationMeetsTheFourierSeriesAtOr
     }
     err.push_back(std::abs((4 * u[0] - u[1]) / 2 - exact) / exact);
   }
-  EXPECT_NEAR(fitted_order(kLarge, err), 2.0, 0.05) << err[0] << " " << err[1] << " " << err[2] << " " << err[3];
-  EXPECT_LT(err.back(), 1.2e-7);  // 11.5 / n^2
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(kLarge, err), 2.0, 0.05, 1.2e-7));  // ceiling: 11.5 / n^2
 }
 
 // The ring on a foundation with translational springs, pinned (with a roller at the load)

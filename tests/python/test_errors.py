@@ -127,7 +127,7 @@ def test_response_failure_raises_numerical_error_with_the_time_reached(capfd):
     assert capfd.readouterr() == ("", "")
 
 
-# ---- Ctrl-C (issue 46) ----
+# ---- Ctrl-C ----
 # SIGINT to a process inside a solve raises KeyboardInterrupt there, after cleaning up:
 # a solve checks for a pending signal at least every 0.1 s of work (docs/python.md).
 # Before, a respond ignored it for the whole run (58 s measured) and a hung ccx ran until

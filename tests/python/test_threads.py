@@ -46,7 +46,7 @@ def test_threads_sharing_one_scene():
         assert np.array_equal(r, results[0])
 
 
-# Issue 46: two threads asking for FE modes when the plug-in cannot be loaded hung forever
+# Found by a robustness probe: two threads asking for FE modes when the plug-in cannot be loaded hung forever
 # (one raised InputError at once). The oracle is the contract: every call raises InputError
 # naming the FE solver, none waits on another. Run in a child process whose
 # RINGVIB_FEM_MODULE names a file that does not exist, so that a deadlock fails the test by

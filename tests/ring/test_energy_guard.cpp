@@ -77,7 +77,7 @@ TEST(EnergyGuard, TheLargestWorkSoFarIsTheScaleSoALaterSmallWorkDoesNotTightenIt
 
 TEST(EnergyGuard, ARunAtRoundOffPassesAndTheBoundIsNeverZero) {
   const ring::RingSpec s = paper();
-  // The repros of issue 23: no work at all (a load the roller reacts; 1e-300 N), and the
+  // The cases that were refused as valid input: no work at all (a load the roller reacts; 1e-300 N), and the
   // measured rounding energies of the chains (T + V ~ 4e-19 J after 200 steps, n = 40).
   for (double F : {2e4, 1e-300, 0.0}) {
     EnergyGuard g = after_steps(s, 40, F, 0.01, 200);

@@ -81,6 +81,28 @@ inline std::string source_text(const std::string& relative) {
   s << f.rdbuf();
   return s.str();
 }
+
+/// The paper's ring as scene text: the [ring] table of scenes/paper1990.toml, comments and
+/// trailing blanks dropped ("[ring]\nradius = 10.0\nE = 2.1e11\nrho = 7.8e3\nsection =
+/// { shape = \"circle\", diameter = 0.12 }\n"), for the scenes a test writes around it.
+/// Empty if the file has no [ring] table (every caller's scene is then refused loudly).
+inline std::string paper_ring_toml() {
+  std::istringstream in(source_text("scenes/paper1990.toml"));
+  std::string line, out;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    const auto hash = line.find('#');  // no '#' in the table's strings
+    if (hash != std::string::npos) line.erase(hash);
+    line.erase(line.find_last_not_of(" \t") + 1);
+    if (line.empty()) continue;
+    if (line[0] == '[') {
+      if (inside) break;
+      inside = line == "[ring]";
+    }
+    if (inside) out += line + "\n";
+  }
+  return out;
+}
 #endif
 
 }  // namespace ringtest
