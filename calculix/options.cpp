@@ -29,8 +29,8 @@ ring::CalculixOptions read_options(const ring::OptionValues& v) {
   o.elements = static_cast<int>(v.integer("elements"));
   const std::string& e = v.choice("element");
   o.element = e == "B31"   ? ring::CalculixOptions::Element::b31
-            : e == "B32" ? ring::CalculixOptions::Element::b32
-                         : ring::CalculixOptions::Element::b32r;
+              : e == "B32" ? ring::CalculixOptions::Element::b32
+                           : ring::CalculixOptions::Element::b32r;
   o.section = v.choice("section") == "as-given" ? ring::CalculixOptions::Section::as_given
                                                 : ring::CalculixOptions::Section::equivalent_rectangle;
   o.timeout = v.number("timeout");

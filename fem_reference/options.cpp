@@ -6,7 +6,8 @@ namespace fem {
 
 const ring::OptionSchema& option_schema() {
   static const ring::OptionSchema schema = [] {
-    ring::OptionSchema s("fem", "The curved-beam finite elements on deal.II (`fem_reference/`), and the converged reference.");
+    ring::OptionSchema s("fem",
+                         "The curved-beam finite elements on deal.II (`fem_reference/`), and the converged reference.");
     s.declare_integer("elements", 40, 4, 10000000,
                       "elements around the ring; with `fem.degree`, at most what double precision resolves (about "
                       "3600 elements at degree 12, 7800 at 8; more is refused, naming the limit: "
@@ -35,8 +36,8 @@ ring::FemOptions read_options(const ring::OptionValues& v) {
   ring::FemOptions o;
   o.elements = static_cast<int>(v.integer("elements"));
   o.degree = static_cast<int>(v.integer("degree"));
-  o.geometry = v.choice("geometry") == "polygon" ? ring::FemOptions::Geometry::polygon
-                                                 : ring::FemOptions::Geometry::curved;
+  o.geometry =
+      v.choice("geometry") == "polygon" ? ring::FemOptions::Geometry::polygon : ring::FemOptions::Geometry::curved;
   o.extensible = v.boolean("extensible");
   o.rotary_inertia = v.boolean("rotary_inertia");
   o.reference = v.boolean("reference");

@@ -20,9 +20,9 @@ ring::LumpedOptions read_options(const ring::OptionValues& v) {
   o.n = static_cast<int>(v.integer("n"));
   const std::string& variant = v.choice("variant");
   o.variant = variant == "frame"              ? ring::LumpedOptions::Variant::frame
-            : variant == "frame-consistent" ? ring::LumpedOptions::Variant::frame_consistent
-            : variant == "timoshenko-frame" ? ring::LumpedOptions::Variant::timoshenko_frame
-                                            : ring::LumpedOptions::Variant::chain;
+              : variant == "frame-consistent" ? ring::LumpedOptions::Variant::frame_consistent
+              : variant == "timoshenko-frame" ? ring::LumpedOptions::Variant::timoshenko_frame
+                                              : ring::LumpedOptions::Variant::chain;
   return o;
 }
 

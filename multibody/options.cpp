@@ -29,8 +29,8 @@ ring::MultibodyOptions read_options(const ring::OptionValues& v) {
                                                  : ring::MultibodyOptions::Dependent::robust;
   const std::string& m = v.choice("method");
   o.method = m == "dense"    ? ring::MultibodyOptions::Method::dense
-           : m == "sparse" ? ring::MultibodyOptions::Method::sparse
-                           : ring::MultibodyOptions::Method::automatic;
+             : m == "sparse" ? ring::MultibodyOptions::Method::sparse
+                             : ring::MultibodyOptions::Method::automatic;
   o.theory = v.theory("theory");
   return o;
 }

@@ -47,10 +47,14 @@ std::string default_text(const OptionEntry& e) {
   return std::visit(
       [](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, long long>) return std::to_string(v);
-        else if constexpr (std::is_same_v<T, double>) return number_text(v);
-        else if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
-        else return "`\"" + v + "\"`";
+        if constexpr (std::is_same_v<T, long long>)
+          return std::to_string(v);
+        else if constexpr (std::is_same_v<T, double>)
+          return number_text(v);
+        else if constexpr (std::is_same_v<T, bool>)
+          return v ? "true" : "false";
+        else
+          return "`\"" + v + "\"`";
       },
       *e.value);
 }
@@ -65,8 +69,10 @@ std::string valid_text(const OptionEntry& e) {
                                 : "[" + std::to_string(e.int_min) + ", " + std::to_string(e.int_max) + "]";
       break;
     case OptionEntry::Type::number:
-      if (e.max == HUGE_VAL) v = (e.min_open ? "> " : ">= ") + number_text(e.min);
-      else v = std::string(e.min_open ? "(" : "[") + number_text(e.min) + ", " + number_text(e.max) + "]";
+      if (e.max == HUGE_VAL)
+        v = (e.min_open ? "> " : ">= ") + number_text(e.min);
+      else
+        v = std::string(e.min_open ? "(" : "[") + number_text(e.min) + ", " + number_text(e.max) + "]";
       break;
     case OptionEntry::Type::boolean: v = "`true`, `false`"; break;
     case OptionEntry::Type::choice:
@@ -188,8 +194,7 @@ std::string markdown(const OptionSchema& schema) {
   o += "| key | unit | default | valid | meaning |\n|---|---|---|---|---|\n";
   for (const auto& e : schema.entries())
     o += "| `" + schema.section() + "." + e.key + "` |" + (e.unit.empty() ? " " : " " + e.unit + " ") + "| " +
-         cell(default_text(e)) + " | " +
-         cell(valid_text(e)) + " | " + cell(e.help) + " |\n";
+         cell(default_text(e)) + " | " + cell(valid_text(e)) + " | " + cell(e.help) + " |\n";
   return o;
 }
 

@@ -37,15 +37,15 @@ struct OptionEntry {
   /// reader checks that, naming the key).
   enum class Type { integer, number, boolean, choice, theory };
 
-  std::string key;                 ///< within the section ("n"; the reference shows "multibody.n")
+  std::string key;  ///< within the section ("n"; the reference shows "multibody.n")
   Type type = Type::number;
-  std::string unit;                ///< SI unit for the reference ("s", "m"), "" for none
-  std::optional<OptionValue> value;  ///< the default (none only for a theory)
-  long long int_min = 0, int_max = 0;  ///< an integer's valid range, inclusive
+  std::string unit;                        ///< SI unit for the reference ("s", "m"), "" for none
+  std::optional<OptionValue> value;        ///< the default (none only for a theory)
+  long long int_min = 0, int_max = 0;      ///< an integer's valid range, inclusive
   double min = -HUGE_VAL, max = HUGE_VAL;  ///< a number's valid range; max inclusive
-  bool min_open = false;           ///< a number must be > min (not >= min)
-  std::vector<std::string> choices;  ///< a choice's (or theory's) valid strings
-  std::string help;                ///< the reference's "meaning" column (Markdown)
+  bool min_open = false;                   ///< a number must be > min (not >= min)
+  std::vector<std::string> choices;        ///< a choice's (or theory's) valid strings
+  std::string help;                        ///< the reference's "meaning" column (Markdown)
   /// The default as the reference prints it when it is no value ("`ring.theory`"); "": the
   /// value itself.
   std::string default_doc;
@@ -62,7 +62,8 @@ class OptionSchema {
 
   /// Each declare_* adds a key (a second declaration of a key is a std::logic_error) and
   /// returns its entry, for the unit or notes: s.declare_number(...).unit = "s".
-  OptionEntry& declare_integer(const std::string& key, long long def, long long lo, long long hi, const std::string& help);
+  OptionEntry& declare_integer(const std::string& key, long long def, long long lo, long long hi,
+                               const std::string& help);
   OptionEntry& declare_number(const std::string& key, double def, double lo, double hi, const std::string& help,
                               bool lo_open = false);
   OptionEntry& declare_boolean(const std::string& key, bool def, const std::string& help);

@@ -56,7 +56,8 @@ cmp::SolverEntry toy_entry() {
     r.rigid_modes = 3;
     r.max_residual.reset();  // a closed form has no eigen-residual
     const double scale = toy_values(s).number("scale");
-    for (int i = 0; i < count; ++i) r.omega.push_back(scale * ring::closed_form::free_ring_inextensional(s.ring, 2 + i / 2));
+    for (int i = 0; i < count; ++i)
+      r.omega.push_back(scale * ring::closed_form::free_ring_inextensional(s.ring, 2 + i / 2));
     return r;
   };
   return e;
@@ -82,7 +83,8 @@ class ToySolver : public ::testing::Test {
     std::ostringstream err;
     testing::internal::CaptureStdout();
     Result r;
-    r.code = cmp::run_command(a.scene, [&] { return cmp::cmd_modes(a, "toy", std::nullopt, false, ""); }, err);
+    r.code = cmp::run_command(
+        a.scene, [&] { return cmp::cmd_modes(a, "toy", std::nullopt, false, ""); }, err);
     r.out = testing::internal::GetCapturedStdout();
     r.err = err.str();
     return r;
@@ -91,8 +93,10 @@ class ToySolver : public ::testing::Test {
   static std::string scene(const std::string& toy_section) {
     const std::string dir = ringtest::temp_dir();
     const std::string path = dir + "/toy.toml";
-    ringtest::write(path, "title = \"toy\"\n[ring]\nradius = 10.0\nE = 2.1e11\nrho = 7.8e3\nsection = { diameter = 0.12 }\n"
-                          "[modes]\ncount = 4\nsolvers = [\"toy\"]\n" + toy_section);
+    ringtest::write(path,
+                    "title = \"toy\"\n[ring]\nradius = 10.0\nE = 2.1e11\nrho = 7.8e3\nsection = { diameter = 0.12 }\n"
+                    "[modes]\ncount = 4\nsolvers = [\"toy\"]\n" +
+                        toy_section);
     return path;
   }
 };
