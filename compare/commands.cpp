@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -351,6 +352,29 @@ int cmd_export_deck(const CommonArgs& a, const std::string& solver, const std::s
   files.publish();
   std::cout << "wrote " << out_dir << "/ring.inp (run it with: cd " << out_dir << " && ccx ring)\n";
   return 0;
+}
+
+int cmd_keys() {
+  std::cout << keys_markdown();
+  return 0;
+}
+
+int run_command(const std::string& scene, const std::function<int()>& command, std::ostream& err) {
+  try {
+    return command();
+  } catch (const ring::InputError& e) {
+    err << "ringvib: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {  // a solver's "can never work" check
+    err << "ringvib: error: " << scene << ": " << e.what() << "\n";
+    return 2;
+  } catch (const ring::NumericalError& e) {
+    err << "ringvib: numerical failure: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    err << "ringvib: failure: " << e.what() << "\n";
+    return 3;
+  }
 }
 
 }  // namespace cmp

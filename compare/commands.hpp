@@ -3,7 +3,9 @@
 // numerical failure ring::NumericalError (3), caught in main().
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -36,5 +38,15 @@ int cmd_bench(const CommonArgs& a, const std::string& out_dir);
 /// Writes the input deck of an external solver (calculix: DIR/ring.inp, the deck its
 /// column runs for modes.count modes) without running it.
 int cmd_export_deck(const CommonArgs& a, const std::string& solver, const std::string& out_dir);
+/// Prints the scene reference of every solver's section in Markdown (keys_markdown: the
+/// keys, units, defaults, valid values and meanings their option schemas declare), the text
+/// docs/scenes.md holds between its markers.
+int cmd_keys();
+
+/// Runs one command as `ringvib` does: its exit code, or the documented code of what it
+/// throws with the message on `err` ("ringvib: error: ..."): ring::InputError and a
+/// solver's std::invalid_argument 2 (the latter prefixed with `scene`), ring::NumericalError
+/// and any other failure 3. main() and in-process callers (tests) share it.
+int run_command(const std::string& scene, const std::function<int()>& command, std::ostream& err);
 
 }  // namespace cmp

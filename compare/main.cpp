@@ -123,6 +123,8 @@ int main(int argc, char** argv) {
   export_deck->add_option("--solver", solver, "calculix")->required()->check(CLI::IsMember({"calculix"}));
   export_deck->add_option("--out", out, "folder for the deck (ring.inp)")->required();
 
+  auto* keys = app.add_subcommand("keys", "the scene reference of the solver sections, from their option schemas (Markdown)");
+
   // An unknown subcommand is named, with the known ones (CLI11 alone says only that a
   // subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {
@@ -146,7 +148,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;  // --help/--version exit 0; usage errors exit 2
   }
 
-  try {
+  return cmp::run_command(a.scene, [&]() -> int {
     if (*run) return cmp::cmd_run(a, out, junit, paper);
     if (*table) return cmp::cmd_table(a, paper, format);
     if (*modes) return cmp::cmd_modes(a, solver, count, json, vtu);
@@ -157,18 +159,7 @@ int main(int argc, char** argv) {
     if (*bench) return cmp::cmd_bench(a, out);
     if (*sweep) return cmp::cmd_sweep(a, sw, argc, argv);
     if (*export_deck) return cmp::cmd_export_deck(a, solver, out);
-  } catch (const ring::InputError& e) {
-    std::cerr << "ringvib: error: " << e.what() << "\n";
+    if (*keys) return cmp::cmd_keys();
     return 2;
-  } catch (const std::invalid_argument& e) {  // a solver's "can never work" check
-    std::cerr << "ringvib: error: " << a.scene << ": " << e.what() << "\n";
-    return 2;
-  } catch (const ring::NumericalError& e) {
-    std::cerr << "ringvib: numerical failure: " << e.what() << "\n";
-    return 3;
-  } catch (const std::exception& e) {
-    std::cerr << "ringvib: failure: " << e.what() << "\n";
-    return 3;
-  }
-  return 2;
+  }, std::cerr);
 }

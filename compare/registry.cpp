@@ -7,14 +7,17 @@
 #include <stdexcept>
 
 #include "calculix/modes.hpp"
+#include "calculix/options.hpp"
 #include "calculix/response.hpp"
 #include "calculix/statics.hpp"
 #include "compare/fem_module.hpp"
 #include "compare/files.hpp"
 #include "fem_reference/buckling.hpp"
 #include "fem_reference/checks.hpp"
+#include "fem_reference/options.hpp"
 #include "lumped_mass/buckling.hpp"
 #include "lumped_mass/checks.hpp"
+#include "lumped_mass/options.hpp"
 #include "multibody/backend.hpp"
 #include "multibody/buckling.hpp"
 #include "multibody/checks.hpp"
@@ -23,6 +26,7 @@
 #include "lumped_mass/preload.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/modes.hpp"
+#include "multibody/options.hpp"
 #include "multibody/statics.hpp"
 #include "ring/errors.hpp"
 
@@ -80,6 +84,8 @@ SolverEntry multibody_entry() {
   e.label = "multibody";
   e.size_key = "multibody.n";
   e.size_name = "n";
+  e.options = multibody::option_schema();
+  e.store = [](ring::Scene& s, const ring::OptionValues& v) { s.multibody = multibody::read_options(v); };
   e.size = [](const ring::Scene& s) { return s.multibody.n; };
   e.set_size = [](ring::Scene& s, int n) { s.multibody.n = n; };
   e.theory = [](const ring::Scene& s) { return s.multibody.theory.value_or(s.ring.theory); };
@@ -178,6 +184,8 @@ SolverEntry lumped_entry() {
   e.label = "lumped mass";
   e.size_key = "lumped.n";
   e.size_name = "n";
+  e.options = lumped::option_schema();
+  e.store = [](ring::Scene& s, const ring::OptionValues& v) { s.lumped = lumped::read_options(v); };
   e.size = [](const ring::Scene& s) { return s.lumped.n; };
   e.set_size = [](ring::Scene& s, int n) { s.lumped.n = n; };
   // The variant is the model (lumped_mass/checks.hpp check_theory): no lumped.theory.
@@ -282,7 +290,8 @@ SolverEntry fem_entry() {
   e.label = "FE";
   e.size_key = "fem.elements";
   e.size_name = "elements";
-  e.integer_ranges["degree"] = {fem::kMinDegree, fem::kMaxDegree};
+  e.options = fem::option_schema();  // fem_options: no deal.II, the plug-in stays unloaded
+  e.store = [](ring::Scene& s, const ring::OptionValues& v) { s.fem = fem::read_options(v); };
   e.size = [](const ring::Scene& s) { return s.fem.elements; };
   e.set_size = [](ring::Scene& s, int n) { s.fem.elements = n; };
   e.theory = [](const ring::Scene& s) { return s.fem.theory.value_or(s.ring.theory); };
@@ -392,6 +401,8 @@ SolverEntry calculix_entry() {
   e.label = "CalculiX";
   e.size_key = "calculix.elements";
   e.size_name = "elements";
+  e.options = calculix::option_schema();
+  e.store = [](ring::Scene& s, const ring::OptionValues& v) { s.calculix = calculix::read_options(v); };
   e.size = [](const ring::Scene& s) { return s.calculix.elements; };
   e.set_size = [](ring::Scene& s, int n) { s.calculix.elements = n; };
   // The beam nodes' in-plane degrees of freedom (ux, uy, rotation) bound the in-plane modes.
@@ -523,20 +534,61 @@ void apply_model_theory(SolverEntry& e) {
   e.write_vtu = on_model(e, e.write_vtu);
 }
 
-std::vector<SolverEntry> make_registry() {
-  std::vector<SolverEntry> v = {multibody_entry(), lumped_entry(), fem_entry(), calculix_entry()};
-  for (auto& e : v) {
-    apply_model_theory(e);
-    if (!e.bench_sweep) {
-      const SolverEntry copy = e;
-      e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
-    }
-    e.statics = finite(named_and_timed(e.name, e.statics));
-    e.response = finite(named_and_timed(e.name, e.response));
-    e.buckling = finite(named_and_timed(e.name, e.buckling));
-    e.modes = finite(e.modes);
+/// An entry as the registry holds it: every analysis on the model scene, results finite,
+/// named and timed, and a bench sweep by doubling where the solver gives none.
+SolverEntry wrapped(SolverEntry e) {
+  apply_model_theory(e);
+  if (!e.bench_sweep) {
+    const SolverEntry copy = e;
+    e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
   }
-  return v;
+  e.statics = finite(named_and_timed(e.name, e.statics));
+  e.response = finite(named_and_timed(e.name, e.response));
+  e.buckling = finite(named_and_timed(e.name, e.buckling));
+  e.modes = finite(e.modes);
+  return e;
+}
+
+/// What the scene reader needs of the entries.
+ring::SceneSchema make_schema(const std::vector<SolverEntry>& entries) {
+  ring::SceneSchema s;
+  for (const auto& e : entries) {
+    ring::SolverSchema m;
+    m.name = e.name;
+    m.size_key = e.size_key;
+    m.size = e.size;
+    m.elastic_modes = e.elastic_modes;
+    m.statics = bool(e.statics);
+    m.response = bool(e.response);
+    m.buckling = bool(e.buckling);
+    m.options = e.options;
+    m.store = e.store;
+    s.solvers.push_back(std::move(m));
+  }
+  s.default_solver = entries.front().name;  // the paper's method
+  s.reference_solver = "fem";
+  return s;
+}
+
+/// The registry and the reader's schema of it, built together on first use (thread-safe),
+/// changed only by add_solver and remove_solver.
+struct Registry {
+  std::vector<SolverEntry> entries;
+  std::size_t built_in = 0;
+  ring::SceneSchema schema;
+};
+
+Registry& the_registry() {
+  static Registry r = [] {
+    Registry x;
+    // The one list of the built-in solvers: adding one is its folder and an entry here.
+    for (SolverEntry e : {multibody_entry(), lumped_entry(), fem_entry(), calculix_entry()})
+      x.entries.push_back(wrapped(std::move(e)));
+    x.built_in = x.entries.size();
+    x.schema = make_schema(x.entries);
+    return x;
+  }();
+  return r;
 }
 
 /// A number as a message shows it (270, 1e+300, nan).
@@ -631,9 +683,28 @@ void require_finite(const ring::TimeHistory& r) {
   }
 }
 
-const std::vector<SolverEntry>& registry() {
-  static const std::vector<SolverEntry> r = make_registry();
-  return r;
+const std::vector<SolverEntry>& registry() { return the_registry().entries; }
+
+void add_solver(SolverEntry entry) {
+  Registry& r = the_registry();
+  if (entry.name.empty() || find_solver(entry.name))
+    throw std::invalid_argument("add_solver: the solver name \"" + entry.name + "\" is empty or taken");
+  if (entry.options.section() != entry.name)
+    throw std::invalid_argument("add_solver: the option schema of \"" + entry.name + "\" is for the section [" +
+                                entry.options.section() + "]");
+  r.entries.push_back(wrapped(std::move(entry)));
+  r.schema = make_schema(r.entries);
+}
+
+void remove_solver(const std::string& name) {
+  Registry& r = the_registry();
+  for (std::size_t i = r.built_in; i < r.entries.size(); ++i)
+    if (r.entries[i].name == name) {
+      r.entries.erase(r.entries.begin() + static_cast<std::ptrdiff_t>(i));
+      r.schema = make_schema(r.entries);
+      return;
+    }
+  throw std::invalid_argument("remove_solver: \"" + name + "\" is not a solver that add_solver added");
 }
 
 std::vector<std::string> solver_names() {
@@ -655,18 +726,12 @@ const SolverEntry& solver(const std::string& name) {
   throw ring::InputError("", "solver", "unknown solver \"" + name + "\"; expected one of " + known);
 }
 
-const ring::SceneSchema& scene_schema() {
-  static const ring::SceneSchema schema = [] {
-    ring::SceneSchema s;
-    for (const auto& e : registry())
-      s.solvers.push_back(
-          {e.name, e.size_key, e.size, e.elastic_modes, bool(e.statics), bool(e.response), bool(e.buckling),
-           e.integer_ranges});
-    s.default_solver = registry().front().name;  // the paper's method
-    s.reference_solver = "fem";
-    return s;
-  }();
-  return schema;
+const ring::SceneSchema& scene_schema() { return the_registry().schema; }
+
+std::string keys_markdown() {
+  std::string o;
+  for (const auto& e : registry()) o += (o.empty() ? "" : "\n") + ring::markdown(e.options);
+  return o;
 }
 
 ring::Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {

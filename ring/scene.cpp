@@ -408,40 +408,78 @@ NonlinearRequest read_request(const Reader& r, const toml::table& t, const std::
   return q;
 }
 
-/// The solver's own range of an integer option of its section (SolverSchema::integer_ranges).
-std::pair<long long, long long> solver_range(const SceneSchema& schema, const std::string& solver,
-                                             const std::string& key) {
-  if (const SolverSchema* s = schema.find(solver)) {
-    const auto it = s->integer_ranges.find(key);
-    if (it != s->integer_ranges.end()) return it->second;
-  }
-  throw std::logic_error("scene reader: the solver schema gives no range for " + solver + "." + key);
-}
-
-/// `section`.theory, or nothing when the key is absent (a solver's model theory then
-/// follows ring.theory).
-std::optional<Theory> read_theory(const Reader& r, const toml::table& t, const std::string& section) {
-  if (!t.contains("theory")) return std::nullopt;
-  return r.choice(t, section, "theory", "euler-bernoulli", {"euler-bernoulli", "timoshenko"}) == "timoshenko"
+/// `section`.`key` as a beam theory, or nothing when the key is absent (a solver's model
+/// theory then follows ring.theory).
+std::optional<Theory> read_theory(const Reader& r, const toml::table& t, const std::string& section,
+                                  const std::string& key = "theory") {
+  if (!t.contains(key)) return std::nullopt;
+  return r.choice(t, section, key, "euler-bernoulli", {"euler-bernoulli", "timoshenko"}) == "timoshenko"
              ? Theory::timoshenko : Theory::euler_bernoulli;
 }
 
-/// A solver's model theory (`section`.theory) of "timoshenko" needs the shear stiffness
+/// A solver's model theory (`section`.`key`) of "timoshenko" needs the shear stiffness
 /// kappa G A that ring.theory = "timoshenko" needs: a shear coefficient for a section
 /// without a shape.
-void check_model_theory(const Reader& r, const toml::table& t, const std::string& section, const RingSpec& ring) {
-  if (!t.contains("theory")) return;
-  if (read_theory(r, t, section) == Theory::timoshenko && !(ring.kappa() > 0.0))
-    r.fail(section + ".theory", t.get("theory"),
+void check_model_theory(const Reader& r, const toml::table& t, const std::string& section, const std::string& key,
+                        const RingSpec& ring) {
+  if (!t.contains(key)) return;
+  if (read_theory(r, t, section, key) == Theory::timoshenko && !(ring.kappa() > 0.0))
+    r.fail(section + "." + key, t.get(key),
            "\"timoshenko\" needs the ring's shear coefficient, which is missing: a section given by {area, inertia} "
            "has no shape, so give ring.shear_coefficient (or use \"euler-bernoulli\")");
+}
+
+/// One solver's section checked against its option schema: unknown keys (with the nearest
+/// known one), then its theory keys against the ring, then every key in the schema's order,
+/// each with its type and range (SolverSchema::integer_ranges replacing a declared range).
+/// An absent section, or key, takes the schema's defaults. Every key a solver takes is
+/// declared in its folder (multibody/options.cpp, ...): this function names none.
+OptionValues read_solver_section(const Reader& r, const toml::table& root, const SolverSchema& solver,
+                                 const RingSpec& ring) {
+  const OptionSchema& schema = solver.options;
+  const toml::table* t = r.table(root, "", solver.name);
+  if (!t) return defaults(schema);
+  const std::string& sec = solver.name;
+  r.known_keys(*t, sec, schema.keys());
+  for (const OptionEntry& e : schema.entries())
+    if (e.type == OptionEntry::Type::theory) check_model_theory(r, *t, sec, e.key, ring);
+  OptionValues v;
+  for (const OptionEntry& e : schema.entries()) {
+    switch (e.type) {
+      case OptionEntry::Type::integer: {
+        std::pair<long long, long long> range{e.int_min, e.int_max};
+        if (const auto it = solver.integer_ranges.find(e.key); it != solver.integer_ranges.end()) range = it->second;
+        v.set(e.key, r.integer(*t, sec, e.key, std::get<long long>(*e.value), range.first, range.second));
+        break;
+      }
+      case OptionEntry::Type::number:
+        v.set(e.key, r.number(*t, sec, e.key, std::get<double>(*e.value), e.min, e.max, e.min_open));
+        break;
+      case OptionEntry::Type::boolean: v.set(e.key, r.boolean(*t, sec, e.key, std::get<bool>(*e.value))); break;
+      case OptionEntry::Type::choice:
+        v.set(e.key, r.choice(*t, sec, e.key, std::get<std::string>(*e.value), e.choices));
+        break;
+      case OptionEntry::Type::theory:
+        if (t->contains(e.key)) v.set(e.key, to_string(*read_theory(r, *t, sec, e.key)));
+        break;
+    }
+  }
+  return v;
 }
 
 Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
   s.reference_solver = schema.reference_solver;
-  r.known_keys(root, "", {"title", "ring", "supports", "masses", "foundation", "multibody", "fem", "lumped",
-                          "calculix", "modes", "table", "gates", "response", "static", "buckling"});
+  std::vector<std::string> sections = {"title", "ring", "supports", "masses", "foundation"};
+  const std::vector<std::string> analyses = {"modes", "table", "gates", "response", "static", "buckling"};
+  for (const auto& m : schema.solvers) {
+    if (std::find(sections.begin(), sections.end(), m.name) != sections.end() ||
+        std::find(analyses.begin(), analyses.end(), m.name) != analyses.end())
+      throw std::logic_error("scene schema: the solver \"" + m.name + "\" takes the name of a scene section");
+    sections.push_back(m.name);  // its option section
+  }
+  sections.insert(sections.end(), analyses.begin(), analyses.end());
+  r.known_keys(root, "", sections);
   if (const toml::node* n = root.get("title")) {
     auto t = n->value_exact<std::string>();
     if (!t) r.fail("title", n, "expected a string");
@@ -486,62 +524,12 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   read_supports(r, root, s.ring);
   read_attachments(r, root, s.ring);
 
-  // Solver sections: each optional, defaults as in the scene reference (docs/scenes.md).
-  const toml::table* mt = r.table(root, "", "multibody");
-  if (mt) {
-    r.known_keys(*mt, "multibody", {"n", "rotary_inertia", "dependent", "method", "theory"});
-    check_model_theory(r, *mt, "multibody", s.ring);
-    s.multibody.theory = read_theory(r, *mt, "multibody");
-    s.multibody.n = static_cast<int>(r.integer(*mt, "multibody", "n", 40, 4, 100000000));
-    s.multibody.rotary_inertia = r.boolean(*mt, "multibody", "rotary_inertia", true);
-    s.multibody.dependent = r.choice(*mt, "multibody", "dependent", "robust", {"robust", "paper"}) == "paper"
-                                ? MultibodyOptions::Dependent::paper : MultibodyOptions::Dependent::robust;
-    const std::string m = r.choice(*mt, "multibody", "method", "auto", {"auto", "dense", "sparse"});
-    s.multibody.method = m == "dense" ? MultibodyOptions::Method::dense
-                       : m == "sparse" ? MultibodyOptions::Method::sparse : MultibodyOptions::Method::automatic;
-  }
-  const toml::table* ft = r.table(root, "", "fem");
-  if (ft) {
-    r.known_keys(*ft, "fem", {"elements", "degree", "geometry", "extensible", "rotary_inertia", "reference",
-                              "tolerance", "response_tolerance", "theory"});
-    check_model_theory(r, *ft, "fem", s.ring);
-    s.fem.theory = read_theory(r, *ft, "fem");
-    s.fem.elements = static_cast<int>(r.integer(*ft, "fem", "elements", 40, 4, 10000000));
-    const auto [degree_lo, degree_hi] = solver_range(schema, "fem", "degree");
-    s.fem.degree = static_cast<int>(r.integer(*ft, "fem", "degree", 3, degree_lo, degree_hi));
-    s.fem.geometry = r.choice(*ft, "fem", "geometry", "curved", {"curved", "polygon"}) == "polygon"
-                         ? FemOptions::Geometry::polygon : FemOptions::Geometry::curved;
-    s.fem.extensible = r.boolean(*ft, "fem", "extensible", true);
-    s.fem.rotary_inertia = r.boolean(*ft, "fem", "rotary_inertia", false);
-    s.fem.reference = r.boolean(*ft, "fem", "reference", false);
-    s.fem.tolerance = r.number(*ft, "fem", "tolerance", 1e-9, 1e-14, 1e-2);
-    s.fem.response_tolerance = r.number(*ft, "fem", "response_tolerance", 1e-3, 1e-8, 1e-1);
-  }
-  const toml::table* lt = r.table(root, "", "lumped");
-  if (lt) {
-    r.known_keys(*lt, "lumped", {"n", "variant"});
-    s.lumped.n = static_cast<int>(r.integer(*lt, "lumped", "n", 40, 4, 100000000));
-    const std::string v =
-        r.choice(*lt, "lumped", "variant", "chain", {"chain", "frame", "frame-consistent", "timoshenko-frame"});
-    s.lumped.variant = v == "frame" ? LumpedOptions::Variant::frame
-                     : v == "frame-consistent" ? LumpedOptions::Variant::frame_consistent
-                     : v == "timoshenko-frame" ? LumpedOptions::Variant::timoshenko_frame
-                                               : LumpedOptions::Variant::chain;
-  }
-
-  if (const toml::table* ct = r.table(root, "", "calculix")) {
-    r.known_keys(*ct, "calculix", {"elements", "element", "section", "timeout", "threads"});
-    s.calculix.elements = static_cast<int>(r.integer(*ct, "calculix", "elements", 160, 4, 1000000));
-    const std::string e = r.choice(*ct, "calculix", "element", "B32R", {"B31", "B32R", "B32"});
-    s.calculix.element = e == "B31"   ? CalculixOptions::Element::b31
-                       : e == "B32" ? CalculixOptions::Element::b32
-                                    : CalculixOptions::Element::b32r;
-    s.calculix.section = r.choice(*ct, "calculix", "section", "equivalent-rectangle",
-                                  {"equivalent-rectangle", "as-given"}) == "as-given"
-                             ? CalculixOptions::Section::as_given
-                             : CalculixOptions::Section::equivalent_rectangle;
-    s.calculix.timeout = r.number(*ct, "calculix", "timeout", 600.0, 0.0, 1e6, true);
-    s.calculix.threads = static_cast<int>(r.integer(*ct, "calculix", "threads", 1, 1, 1024));
+  // Solver sections: each optional, read against its solver's option schema (SolverSchema::
+  // options; the scene reference, docs/scenes.md, is printed from the same schemas), then
+  // handed to the solver's option struct (SolverSchema::store).
+  for (const auto& m : schema.solvers) {
+    OptionValues& v = s.options[m.name] = read_solver_section(r, root, m, s.ring);
+    if (m.store) m.store(s, v);
   }
 
   // [modes]: solvers default to those whose section the scene has (multibody if none).

@@ -12,6 +12,7 @@
 
 #include "ring/analysis.hpp"
 #include "ring/input_file.hpp"
+#include "ring/options_schema.hpp"
 #include "ring/spec.hpp"
 
 namespace ring {
@@ -76,10 +77,19 @@ struct SolverSchema {
   bool statics = false;               ///< offers nonlinear statics
   bool response = false;              ///< offers the forced nonlinear response
   bool buckling = false;              ///< offers linear buckling
-  /// Integer options of its section whose valid range is the solver's own, by key (fem:
-  /// "degree", fem_reference/checks.hpp): the reader refuses a value outside
-  /// [first, second], naming the key, before any solver runs.
+  /// Integer options of its section whose valid range replaces the one `options` declares,
+  /// by key: the reader refuses a value outside [first, second], naming the key. The
+  /// registry's solvers declare their ranges in `options` and leave this empty.
   std::map<std::string, std::pair<long long, long long>> integer_ranges;
+  /// Its section's keys (ring/options_schema.hpp, from the solver's folder). The reader
+  /// checks the section against them (unknown keys with the nearest known one, types,
+  /// ranges, choices; a theory key's "timoshenko" against the ring's shear coefficient) and
+  /// keeps every value, given or defaulted, in Scene::options[name].
+  OptionSchema options;
+  /// Fills the solver's option struct of the scene from those values (the registry's: the
+  /// solver's read_options); called before the cross-checks, which ask `size` and
+  /// `elastic_modes`. Empty: the values stay in Scene::options alone.
+  std::function<void(Scene&, const OptionValues&)> store;
 };
 
 /// All the solvers a scene may name.
@@ -100,6 +110,10 @@ struct Scene {
   FemOptions fem;
   LumpedOptions lumped;
   CalculixOptions calculix;
+  /// Each solver section as the reader read it against the solver's schema, by solver
+  /// name: every key, given or defaulted (SolverSchema::options). The option structs above
+  /// are filled from these by SolverSchema::store; a solver without a struct here reads them.
+  std::map<std::string, OptionValues> options;
   ModesRequest modes;
   TableRequest table;
   std::vector<Gate> gates;

@@ -1,0 +1,17 @@
+// The [fem] section of a scene: its keys, defaults, ranges and help (the schema the scene
+// reader checks and `ringvib keys` prints), and the options it fills. No deal.II here: the
+// driver reads and documents [fem] without loading the plug-in (library fem_options).
+#pragma once
+
+#include "ring/options_schema.hpp"
+#include "ring/spec.hpp"
+
+namespace fem {
+
+/// The keys of [fem], declared once; fem.degree's range is checks.hpp's kMinDegree..kMaxDegree.
+const ring::OptionSchema& option_schema();
+
+/// The FE options from the values the reader read against option_schema(). O(1).
+ring::FemOptions read_options(const ring::OptionValues& values);
+
+}  // namespace fem
