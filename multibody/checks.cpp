@@ -113,7 +113,10 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
           "\" yet (its load stiffness is not diagonal in the angles): set multibody.method = \"dense\" or "
           "\"auto\", or response.integrator = \"energy-momentum\"");
   }
-  if (!spec.supports.pin) throw std::invalid_argument("multibody::respond: the ring needs a pin (supports.pin)");
+  if (!spec.supports.pin && spec.rigid_modes() > 0)
+    throw std::invalid_argument(
+        "multibody::respond: the ring needs a pin (supports.pin), or springs or a foundation that hold every rigid "
+        "motion");
   if (!(response.dt > 0.0) || !std::isfinite(response.dt))
     throw std::invalid_argument("multibody::respond: dt must be > 0");
   if (!(response.t_end >= response.dt) || !std::isfinite(response.t_end))

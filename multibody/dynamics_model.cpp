@@ -17,12 +17,13 @@ Inertia inertia_constants(const Chain& chain, const Attachments* terms) {
   in.C0 = mass_matrix(chain, terms, Vector::Zero(chain.dofs()));
   in.diag = in.C0.diagonal();
   in.C0.diagonal().setZero();
+  in.angles = chain.n();
   return in;
 }
 
 void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Vector& qdd,
                    double cm, double cv, Vector& r, Matrix* T) {
-  const Eigen::Index n = q.size();
+  const Eigen::Index n = in.angles;
   const Eigen::ArrayXd c = q.array().cos(), s = q.array().sin();
   r = in.diag.cwiseProduct(qdd);
   Vector tdiag = cm * in.diag;
@@ -42,7 +43,28 @@ void inertia_terms(const Inertia& in, const Vector& q, const Vector& v, const Ve
       }
     }
   }
-  if (T) T->diagonal().head(n) += tdiag;
+  if (q.size() > n) {
+    // The free chain's translation (Inertia): r_j += b_j (-s_j aX + c_j aY) on the angles,
+    // r_X += sum_j -b_j (s_j qdd_j + c_j v_j^2), r_Y += sum_j b_j (c_j qdd_j - s_j v_j^2)
+    // (the velocity products of the angle rows cancel in Lagrange's equations).
+    const Eigen::Index X = n, Y = n + 1;
+    const double aX = qdd[X], aY = qdd[Y];
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double b = in.C0(Y, j), aj = qdd[j], wj = v[j] * v[j];
+      r[j] += b * (-s[j] * aX + c[j] * aY);
+      r[X] -= b * (s[j] * aj + c[j] * wj);
+      r[Y] += b * (c[j] * aj - s[j] * wj);
+      if (T) {
+        Matrix& t = *T;
+        t(j, X) += -b * s[j] * cm;
+        t(j, Y) += b * c[j] * cm;
+        tdiag[j] += b * (-c[j] * aX - s[j] * aY);
+        t(X, j) += -b * s[j] * cm - b * c[j] * aj + b * s[j] * wj - 2.0 * b * c[j] * v[j] * cv;
+        t(Y, j) += b * c[j] * cm - b * s[j] * aj - b * c[j] * wj - 2.0 * b * s[j] * v[j] * cv;
+      }
+    }
+  }
+  if (T) T->diagonal().head(tdiag.size()) += tdiag;
 }
 
 Kinematic evaluate(const Chain& chain, const Vector& q, bool values, bool hessian) {

@@ -37,9 +37,14 @@ struct DeadLoad {
 /// cosine is 1): M_jk = C0_jk cos(phi_j - phi_k) for j != k and M_jj = diag_j, the
 /// structure of chain.hpp, which `terms`' point masses share (Attachments::add_mass; both
 /// checked in the unit tests). O(n^2).
+/// A free chain (no pin) has two more coordinates after its n angles, the first hinge's
+/// translation (X, Y): M_XX = M_YY = the whole mass, M_XY = 0, and with an angle j
+/// M_Xj = -b_j sin(phi_j), M_Yj = b_j cos(phi_j), b_j = C0_Yj (the cosine structure above
+/// does not hold for them).
 struct Inertia {
   Matrix C0;    ///< m l^2 (L^T L)_jk (+ the point masses' l^2 sum_{k > max(j,k)} m_k) off the diagonal, zero on it
   Vector diag;  ///< M_jj, constant
+  Eigen::Index angles = 0;  ///< the chain's angles; the coordinates after them are the free chain's translation
 };
 Inertia inertia_constants(const Chain& chain, const Attachments* terms = nullptr);
 /// The mass matrix M(q) of the chain's coordinates: the chain's and `terms`' point masses'

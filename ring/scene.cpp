@@ -568,13 +568,19 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
 
   if (const toml::table* t = r.table(root, "", "gates")) read_gates(r, *t, s, schema);
 
-  // [response], [static]: need a pin (a free ring under a dead load has no equilibrium).
+  // [response], [static]: need a pin, or terms that hold every rigid motion (a free ring
+  // under a dead load has no equilibrium and drifts away under a dynamic one).
   if (const toml::table* t = r.table(root, "", "response")) {
     const std::string sec = "response";
     r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "history", "period",
                            "dt", "t_end", "integrator",
                            "rho_inf", "record", "rayleigh_mass", "rayleigh_stiffness", "hinge_damping"});
-    if (!s.ring.supports.pin) r.fail("supports.pin", &root, "a forced response needs a pin (the ring is free)");
+    // A free ring held by springs or a foundation responds about its rest position; one
+    // that nothing holds drifts away under the load.
+    if (!s.ring.supports.pin && s.ring.rigid_modes() > 0)
+      r.fail("supports.pin", &root,
+             "a forced response needs a pin, or springs or a foundation that hold every rigid motion: the ring is "
+             "free (" + std::to_string(s.ring.rigid_modes()) + " rigid modes)");
     ResponseOptions o;
     o.loads = read_loads(r, *t, sec);
     o.history = read_history(r, *t, sec);
