@@ -129,8 +129,8 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
   // Predictor: constant velocity, previous multipliers. Extrapolating the acceleration
   // as well is worse after a step load, whose initial accelerations are local and huge
   // at large n (at n = 640 it overshoots by radians and forces step halving).
-  const Vector q_hat = s0.q + h * s0.v + h * h * (0.5 - co.beta) * s0.a;
-  const Vector v_hat = s0.v + h * (1.0 - co.gamma) * s0.a;
+  const Vector q_hat = co.predicted_position(s0.q, s0.v, s0.a, h);
+  const Vector v_hat = co.predicted_velocity(s0.v, s0.a, h);
   Vector q = s0.q + h * s0.v;
   Vector lambda = s0.lambda;
   Vector a1, v, qdd, r, dqv, dl;
@@ -140,9 +140,9 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
   paths::NewtonFunctions system;
   system.kept = [&] { return nb.usable(h); };
   system.linearize_at = [&](bool fresh) {
-    a1 = (q - q_hat) * co.acceleration_rate(h);
-    v = v_hat + h * co.gamma * a1;
-    qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
+    a1 = co.acceleration(q, q_hat, h);
+    v = co.velocity(v_hat, a1, h);
+    qdd = co.true_acceleration(a1, s0.a, s0.qdd);
     k = kinematics(p, q, true, fresh);
     nb.residual(q, v, qdd, f1, dqdd_dq, dv_dq, r, fresh);
     if (fresh) {
@@ -172,11 +172,11 @@ StepOutcome step_index3(const Problem& p, const Coefficients& co, const State& s
   const paths::NewtonResult nr = paths::newton(system, step_rule(ctl));
   const StepOutcome out{nr.converged, nr.iterations, nr.reused};
   if (!out.converged) return out;
-  a1 = (q - q_hat) * co.acceleration_rate(h);
+  a1 = co.acceleration(q, q_hat, h);
   s1.t = t1;
   s1.q = q;
-  s1.v = v_hat + h * co.gamma * a1;
-  s1.qdd = ((1.0 - co.alpha_m) * a1 + co.alpha_m * s0.a - co.alpha_f * s0.qdd) / (1.0 - co.alpha_f);
+  s1.v = co.velocity(v_hat, a1, h);
+  s1.qdd = co.true_acceleration(a1, s0.a, s0.qdd);
   s1.a = a1;
   s1.lambda = lambda;
   return out;
@@ -205,8 +205,8 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     return y;
   };
   const double cm = co.acceleration_rate(h), cv = co.velocity_rate(h);
-  const Vector q_hat = s0.q + h * s0.v + h * h * (0.5 - co.beta) * s0.qdd;
-  const Vector v_hat = s0.v + h * (1.0 - co.gamma) * s0.qdd;
+  const Vector q_hat = co.predicted_position(s0.q, s0.v, s0.qdd, h);
+  const Vector v_hat = co.predicted_velocity(s0.v, s0.qdd, h);
   const Vector z_hat = take(q_hat, ind), zd_hat = take(v_hat, ind);
   const double t1 = s0.t + h;
   const double f1 = p.history.factor(t1);
@@ -228,12 +228,12 @@ StepOutcome step_partitioned(const Problem& p, const Coefficients& co, const Sta
     for (int i = 0; i < nz; ++i) Gz.col(i) = k.G.col(ind[i]);
     gy.compute(Gy);
     if (!partitioned) {
-      qdd = (q - q_hat) * cm;
-      v = v_hat + h * co.gamma * qdd;
+      qdd = co.acceleration(q, q_hat, h);
+      v = co.velocity(v_hat, qdd, h);
       return;
     }
-    const Vector zdd = (take(q, ind) - z_hat) * cm;
-    const Vector zd = zd_hat + h * co.gamma * zdd;
+    const Vector zdd = co.acceleration(Vector(take(q, ind)), z_hat, h);
+    const Vector zd = co.velocity(zd_hat, zdd, h);
     for (int i = 0; i < nz; ++i) v[ind[i]] = zd[i];
     const Vector vy = -gy.solve(Gz * zd);
     for (int i = 0; i < c; ++i) v[dep[i]] = vy[i];

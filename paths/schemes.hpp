@@ -42,6 +42,35 @@ struct Scheme {
   double velocity_rate(double h) const { return gamma / (beta * h); }
   /// d a_{1-am} / d q_1 = (1 - am) / (beta h^2): the mass's coefficient in the Newton matrix.
   double mass_rate(double h) const { return (1.0 - alpha_m) * acceleration_rate(h); }
+
+  // Newmark's relations on vectors V with arithmetic expressions (Eigen's): the step's
+  // prediction from the accepted (q, v, a), and the end state from its position q_1.
+  /// q_hat = q + h v + h^2 (1/2 - beta) a: q_1 = q_hat + beta h^2 a_1.
+  template <class V>
+  V predicted_position(const V& q, const V& v, const V& a, double h) const {
+    return q + h * v + h * h * (0.5 - beta) * a;
+  }
+  /// v_hat = v + h (1 - gamma) a: v_1 = v_hat + gamma h a_1.
+  template <class V>
+  V predicted_velocity(const V& v, const V& a, double h) const {
+    return v + h * (1.0 - gamma) * a;
+  }
+  /// a_1 = (q_1 - q_hat) / (beta h^2).
+  template <class V>
+  V acceleration(const V& q1, const V& q_hat, double h) const {
+    return (q1 - q_hat) * acceleration_rate(h);
+  }
+  /// v_1 = v_hat + gamma h a_1.
+  template <class V>
+  V velocity(const V& v_hat, const V& a1, double h) const {
+    return v_hat + h * gamma * a1;
+  }
+  /// The true acceleration of generalized-alpha's pseudo-acceleration sequence (Arnold &
+  /// Bruls 2007): qdd_1 = ((1 - am) a_1 + am a_0 - af qdd_0) / (1 - af); Newmark: a_1.
+  template <class V>
+  V true_acceleration(const V& a1, const V& a0, const V& qdd0) const {
+    return ((1.0 - alpha_m) * a1 + alpha_m * a0 - alpha_f * qdd0) / (1.0 - alpha_f);
+  }
 };
 
 }  // namespace paths
