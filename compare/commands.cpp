@@ -287,6 +287,11 @@ int cmd_buckling(const CommonArgs& a, bool json, const std::string& solver, cons
   return 0;
 }
 
+ConvergenceStudy run_converge(const ring::Scene& s, std::ostream* progress) {
+  require_modes(s, "converge");
+  return converge(s, compute_references(s, progress), progress);
+}
+
 int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
   require_modes(s, "converge");
@@ -294,8 +299,7 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   Outputs files;
   if (!out_dir.empty()) files.folder(out_dir, "--out", kConvergeNames);
   files.open();
-  std::ostream* progress = p.stream();
-  const ConvergenceStudy c = converge(s, compute_references(s, progress), progress);
+  const ConvergenceStudy c = run_converge(s, p.stream());
   std::cout << convergence_text(c);
   if (!out_dir.empty()) {
     write_convergence(files.stage(), c);

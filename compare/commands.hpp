@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/converge.hpp"
 #include "ring/scene.hpp"
 
 namespace cmp {
@@ -34,6 +35,10 @@ int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const 
 /// (or a reference), the buckling table in `format`.
 int cmd_buckling(const CommonArgs& a, bool json, const std::string& solver, const std::string& format);
 int cmd_converge(const CommonArgs& a, const std::string& out_dir);
+/// The study `ringvib converge` prints (and the Python module's converge returns): every
+/// solver of the scene refined against its own converged limit. Throws ring::InputError
+/// when the scene asks for no modes.
+ConvergenceStudy run_converge(const ring::Scene& s, std::ostream* progress);
 int cmd_bench(const CommonArgs& a, const std::string& out_dir);
 /// Writes the input deck of an external solver (calculix: DIR/ring.inp, the deck its
 /// column runs for modes.count modes) without running it.

@@ -3,6 +3,7 @@
 // the same scene and overrides (the same checks, the same solver calls), so that each value
 // equals the command's JSON (tests/python). The GIL is released while a solver runs; FE
 // solves take turns (compare/fem_module.cpp), the other solvers run in parallel.
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "compare/buckling.hpp"
+#include "compare/commands.hpp"
 #include "compare/files.hpp"
 #include "compare/nonlinear.hpp"
 #include "compare/registry.hpp"
@@ -472,6 +474,42 @@ PYBIND11_MODULE(ringvib, m) {
       "The comparison of buckling.solvers (and the reference), paired by MAC: the rows of\n"
       "`ringvib buckling SCENE --format json` (mode, <solver> load factor, <solver>_diff_pct,\n"
       "reference, <solver>_error_pct in %; None where not defined).");
+
+  m.def(
+      "converge",
+      [](const Scene& s, double max_memory_gib, bool force) {
+        const cmp::ConvergenceStudy c = released([&] {
+          return input_checked(s.scene, [&] {
+            cmp::check_runnable(s.scene, max_memory_gib, force);
+            return cmp::run_converge(s.scene, nullptr);
+          });
+        });
+        py::list series;
+        for (const cmp::ConvergenceSeries& x : c.series) {
+          py::dict d;
+          d["name"] = x.name;
+          d["parameter"] = x.parameter;
+          d["size"] = py::array_t<double>(x.size.size(), x.size.data());
+          d["max_error_pct"] = py::array_t<double>(x.max_error.size(), x.max_error.data());
+          d["mean_error_pct"] = py::array_t<double>(x.mean_error.size(), x.mean_error.data());
+          d["seconds"] = py::array_t<double>(x.seconds.size(), x.seconds.data());
+          d["fitted_order"] = x.order;
+          series.append(d);
+        }
+        py::dict out;
+        out["modes"] = c.modes;
+        out["reference_estimate"] = c.reference_estimate;
+        out["series"] = series;
+        return out;
+      },
+      py::arg("scene"), py::kw_only(), py::arg("max_memory_gib") = 8.0, py::arg("force") = false,
+      (std::string("The convergence study of `ringvib converge SCENE` (its convergence.csv with --out):\n"
+                   "a dict with modes, reference_estimate (the references' largest remaining relative\n"
+                   "error) and series, a list of dicts with name, parameter ('n' or 'elements'), size,\n"
+                   "max_error_pct, mean_error_pct, seconds (ndarrays, one value per refinement) and\n"
+                   "fitted_order. ") +
+       kBudgetDoc)
+          .c_str());
 
   auto nonlinear_table = [](bool response) {
     return [response](const Scene& s, double max_memory_gib, bool force) {

@@ -257,3 +257,32 @@ def test_buckling_table_equals_the_commands_json():
     rows = ringvib.buckling_table(ringvib.Scene.load(scene_path("ring-buckling.toml"), set=values))
     j = ringvib_json("buckling", scene_path("ring-buckling.toml"), "--format", "json", *sets(texts))
     assert rows == j["rows"]
+
+
+def test_converge_equals_the_commands_csv():
+    """The module's study is the command's convergence.csv (12 significant digits there:
+    compare/converge.cpp), series by series; the seconds are wall time (only their count)."""
+    values, texts = {"modes.count": 4}, {"modes.count": "4"}
+    c = ringvib.converge(ringvib.Scene.load(scene_path("paper1990.toml"), set=values))
+    with tempfile.TemporaryDirectory() as d:
+        out = pathlib.Path(d) / "conv"
+        run = command("converge", scene_path("paper1990.toml"), "-q", "--out", out, *sets(texts))
+        assert run.returncode == 0, run.stderr
+        lines = (out / "convergence.csv").read_text().splitlines()
+    assert lines[0] == "series,parameter,size,max_error_pct,mean_error_pct,seconds,fitted_order"
+    rows = [line.rsplit(",", 6) for line in lines[1:]]
+    assert c["modes"] == 4
+    assert len(rows) == sum(len(s["size"]) for s in c["series"])
+    g = lambda x: f"{x:.12g}"
+    i = 0
+    for s in c["series"]:
+        assert len(s["size"]) == len(s["max_error_pct"]) == len(s["mean_error_pct"]) == len(s["seconds"])
+        for k in range(len(s["size"])):
+            name, parameter, size, max_e, mean_e, _seconds, order = rows[i]
+            assert name == f'"{s["name"]}"' and parameter == s["parameter"]
+            assert [size, max_e, mean_e, order] == [g(s["size"][k]), g(s["max_error_pct"][k]),
+                                                   g(s["mean_error_pct"][k]), g(s["fitted_order"])]
+            i += 1
+    # The chains' second order and the cubic FE's fourth (docs/measured.md, "Convergence").
+    orders = {s["name"]: s["fitted_order"] for s in c["series"]}
+    assert abs(orders["multibody"] - 2.0) < 0.1 and abs(orders["fem (p = 3)"] - 4.0) < 0.1
