@@ -303,6 +303,7 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   BeamEquilibrium beam(spec, setup, st, out);
   paths::Continuation options = continuation;
   options.steps = st.steps;
+  options.history = st.history;
   if (st.path) {
     options.branch_switch = true;
     options.branch_side = st.branch_side;

@@ -97,10 +97,11 @@ class FrameLoads {
   std::optional<ChainLoads> loads_;
 };
 
-/// The frame's equilibrium path from rest to the full load (the continuation driver on
+/// The frame's equilibrium path from rest to the full load (or through statics.history) (the continuation driver on
 /// FrameStatics: frame_nonlinear.cpp), z = (q, mu scaled); throws ring::NumericalError
 /// "`who`: ..." when it does not reach the full load.
-paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, int steps, const std::string& who);
+paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, const ring::StaticOptions& statics,
+                        const std::string& who);
 
 /// The frame's statics and response, the entry points of nonlinear.hpp for this variant
 /// (the caller has run check_static / check_response).

@@ -129,12 +129,15 @@ std::vector<int> record_nodes(const Frame& f, const std::vector<double>& record,
 
 }  // namespace
 
-paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, int steps, const std::string& who) {
+paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, const ring::StaticOptions& statics,
+                        const std::string& who) {
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
   FrameStatics eq(f, loads, radius);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
   rest.z.head(N) = f.rest;
-  const paths::Continuation policy{steps};
+  paths::Continuation policy;
+  policy.steps = statics.steps;
+  policy.history = statics.history;
   paths::Trace path = paths::follow(eq, rest, policy);
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError(who + ": " + paths::failure_message(path, policy));
@@ -148,7 +151,7 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
   const FrameLoads loads(f, spec, statics.loads, "static");
   const auto rec = record_nodes(f, statics.record, "static.record");
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
-  const paths::Trace path = frame_path(f, loads, spec.radius, statics.steps, "lumped statics (" + ring::to_string(options.variant) + ")");
+  const paths::Trace path = frame_path(f, loads, spec.radius, statics, "lumped statics (" + ring::to_string(options.variant) + ")");
   const Vec q = path.state.z.head(N), mu = path.state.z.tail(R) * f.scale;
   StaticDetail detail;
   ring::StaticResult& out = detail.result;

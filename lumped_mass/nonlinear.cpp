@@ -270,7 +270,9 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   rest.z.head(N) = c.rest;
   // static.path: the path through bifurcations (branch switching) to the touch, which is a
   // result; every other early end still fails.
-  paths::Continuation policy{statics.steps};
+  paths::Continuation policy;
+  policy.steps = statics.steps;
+  policy.history = statics.history;
   if (record) {
     policy.branch_switch = true;
     policy.branch_side = statics.branch_side;

@@ -51,7 +51,7 @@ ring::ModalResult frame_modes_under_load(const ring::RingSpec& spec, const ring:
   const FrameLoads loads(f, spec, statics.loads, "static");
   const int N = 3 * f.n;
   const std::string who = "lumped modes under load (" + ring::to_string(options.variant) + ")";
-  const Vec q = frame_path(f, loads, spec.radius, statics.steps, who).state.z.head(N);
+  const Vec q = frame_path(f, loads, spec.radius, statics, who).state.z.head(N);
   Springs sp = frame_energy(f, q, 1.0);
   loads.add_hessian(q, 1.0, sp.hess);
   Sparse T(N, N);

@@ -189,7 +189,9 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
       statics.loads.points.empty() ? std::nullopt : std::optional<double>(statics.loads.points.front().angle);
   const Chain ch(spec, options, loaded);
   AngleStatics eq(ch, spec, statics.loads, spec.section.depth());
-  const paths::Continuation policy{statics.steps};
+  paths::Continuation policy;
+  policy.steps = statics.steps;
+  policy.history = statics.history;
   const paths::Trace path = paths::follow(eq, {eq.rest(), 0.0}, policy);
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError("multibody modes under load: " + paths::failure_message(path, policy));
@@ -267,7 +269,9 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
     eq = natural::static_equilibrium(ch, spec, statics.loads, depth);
   else
     eq = std::make_unique<AngleStatics>(ch, spec, statics.loads, depth);
-  paths::Continuation policy{statics.steps};
+  paths::Continuation policy;
+  policy.steps = statics.steps;
+  policy.history = statics.history;
   if (statics.path) {
     policy.branch_switch = true;
     policy.branch_side = statics.branch_side;

@@ -487,9 +487,84 @@ class Follower {
   Trace out_;
 };
 
+/// One leg of a load history, from load factor a to b, as an equilibrium of its own with the
+/// leg's factor t = (s - a) / (b - a) running from 0 to 1, so that the driver above follows
+/// it unchanged. Its bordered Jacobian is the model's with the load column scaled by b - a:
+/// B' = B diag(1, ..., 1, b - a) when the model is asked for the corner ws / (b - a), so a
+/// solve is the model's with its last value divided by b - a.
+class Leg final : public Equilibrium {
+ public:
+  Leg(Equilibrium& eq, double a, double b) : eq_(eq), a_(a), d_(b - a) {}
+  State model(const State& x) const { return {x.z, a_ + d_ * x.s}; }
+  State leg(const State& x) const { return {x.z, (x.s - a_) / d_}; }
+  double load(double t) const { return a_ + d_ * t; }
+
+  Eigen::Index size() const override { return eq_.size(); }
+  Eigen::Index arc_size() const override { return eq_.arc_size(); }
+  bool linearize(const State& x, const Vector& w, double ws, Vector& r) override {
+    return eq_.linearize(model(x), w, ws / d_, r);
+  }
+  bool solve(Vector& y) override {
+    if (!eq_.solve(y)) return false;
+    y[y.size() - 1] /= d_;
+    return true;
+  }
+  double move(const Vector& dz) const override { return eq_.move(dz); }
+  bool converged(const State& x, const Vector& dz, int iteration) override {
+    return eq_.converged(model(x), dz, iteration);
+  }
+  std::optional<Touch> accept(const State& from, const State& to) override { return eq_.accept(model(from), model(to)); }
+  void reject() override { eq_.reject(); }
+  std::optional<int> unstable_directions(const State& x) override { return eq_.unstable_directions(model(x)); }
+  std::optional<double> clearance(const State& x) override { return eq_.clearance(model(x)); }
+  std::optional<Vector> critical_direction(const State& x) override { return eq_.critical_direction(model(x)); }
+
+ private:
+  Equilibrium& eq_;
+  const double a_, d_;
+};
+
+/// The legs of options.history one after the other, each a path of its own from where the
+/// last ended; the trace's load factors are the model's, its counts the legs' sums.
+Trace follow_history(Equilibrium& eq, const State& rest, const Continuation& options) {
+  Continuation leg_options = options;
+  leg_options.history.clear();
+  Trace all;
+  all.state = rest;
+  double a = rest.s;
+  for (const double b : options.history) {
+    if (b == a) continue;
+    Leg leg(eq, a, b);
+    Trace t = Follower(leg, leg_options).run(leg.leg(all.state));
+    all.end = t.end;
+    all.state = leg.model(t.state);
+    all.steps += t.steps;
+    all.arc_steps += t.arc_steps;
+    all.iterations += t.iterations;
+    all.continuation = all.continuation || t.continuation;
+    if (std::isnan(all.limit) && !std::isnan(t.limit)) all.limit = leg.load(t.limit);
+    all.stepping_stopped = leg.load(t.stepping_stopped);
+    all.end_load = leg.load(t.end_load);
+    all.contact = t.contact;
+    all.bifurcation_low = leg.load(t.bifurcation_low);
+    all.bifurcation_high = leg.load(t.bifurcation_high);
+    all.unstable_before = t.unstable_before;
+    all.unstable_after = t.unstable_after;
+    for (const double p : t.branch_points) all.branch_points.push_back(leg.load(p));
+    if (t.end != Trace::End::reached) return all;
+    a = b;
+  }
+  all.end = Trace::End::reached;
+  all.end_load = a;
+  return all;
+}
+
 }  // namespace
 
-Trace follow(Equilibrium& eq, const State& rest, const Continuation& options) { return Follower(eq, options).run(rest); }
+Trace follow(Equilibrium& eq, const State& rest, const Continuation& options) {
+  if (!options.history.empty()) return follow_history(eq, rest, options);
+  return Follower(eq, options).run(rest);
+}
 
 std::string failure_message(const Trace& t, const Continuation& options) {
   const bool limit = !std::isnan(t.limit);

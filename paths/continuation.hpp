@@ -146,6 +146,11 @@ struct Continuation {
   /// direction's largest displacement unknown is positive, -1 the other (a pitchfork has
   /// two; the eigenvector's own sign is arbitrary, so it is fixed by that rule).
   int branch_side = 1;
+  /// A load history: the load factors visited in turn from rest's, each leg a path of its
+  /// own (`steps` increments from one factor to the next, the same events ending it).
+  /// Empty: one leg from rest to 1. The legs run the driver on s' = (s - a) / (b - a)
+  /// (continuation.cpp, Leg), so unloading and reversed loading are paths like loading.
+  std::vector<double> history;
 };
 
 /// How a path ended and where.
@@ -169,7 +174,8 @@ struct Trace {
 };
 
 /// Follows the path of `eq` from `rest` (an equilibrium at s = 0) to the full load
-/// (s = 1) or to an end event; never throws for a path that ends early (see Trace::end).
+/// (s = 1), or through options.history to its last factor, or to an end event; never
+/// throws for a path that ends early (see Trace::end).
 Trace follow(Equilibrium& eq, const State& rest, const Continuation& options);
 
 /// Why a path that did not reach the full load ended, in one sentence without the

@@ -53,6 +53,9 @@ struct StaticOptions {
   /// (+1 "positive": where the direction's largest unknown is positive; -1 "negative").
   /// The two sides of a symmetric pitchfork are mirror images with one load path.
   int branch_side = 1;
+  /// static.history: the load factors visited in turn from rest, `steps` increments per
+  /// leg (loading, unloading, reversed loading, cycles). Empty: one leg from 0 to 1.
+  std::vector<double> history;
 };
 
 /// Linear buckling about the undeformed ring ([buckling]): the load factors lambda and

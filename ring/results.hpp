@@ -91,6 +91,11 @@ struct PathPoint {
   /// The deformed ring: every node's position (every ceil(nodes / kPathShapeNodes)-th node
   /// of a finer model), ring-centred frame, m; for the figure of the ring as it flattens.
   std::vector<double> node_x, node_y;
+  /// ring.plastic: the plastic work done so far (the integral of M d(kappa_p) over the ring), J,
+  /// and the largest |plastic curvature| kappa_p anywhere on the ring, 1/m (a chain's hinge:
+  /// its plastic rotation over the segment length). 0 for an elastic ring.
+  double dissipated = 0.0;
+  double plastic_curvature = 0.0;
 };
 
 /// The most nodes a PathPoint keeps of its deformed ring: a figure's resolution, and the
@@ -119,6 +124,9 @@ struct StaticResult {
   std::vector<double> branch_points;
   std::string end = "full load";  ///< "full load" or "contact: <where>"
   double end_load = 1.0;          ///< load factor where the path ended
+  /// ring.plastic, at the end: as PathPoint's (J, 1/m).
+  double dissipated = 0.0;
+  double plastic_curvature = 0.0;
 };
 
 /// Time history of a forced response; one entry per accepted step (t = 0 first).

@@ -30,6 +30,36 @@ double circular_distance(double a, double b) {
 
 
 
+/// ring.plastic: { moment = Mp } (the resultant law) or { stress = sigma_y } (the fibre law,
+/// on a section with a shape), hardening in [0, 1), rule kinematic or isotropic.
+std::optional<Plastic> read_plastic(const Reader& r, const toml::table& ring_t, const Section& section) {
+  const toml::table* t = r.table(ring_t, "ring", "plastic");
+  if (!t) return std::nullopt;
+  const std::string sec = "ring.plastic";
+  r.known_keys(*t, sec, {"moment", "stress", "hardening", "rule"});
+  Plastic p;
+  if (t->contains("moment") == t->contains("stress"))
+    r.fail(sec, t, "give one of 'moment' (N m: the resultant law, moment against curvature) or 'stress' (Pa: the "
+                   "fibre law, stress against strain over the section's shape)");
+  if (t->contains("moment")) {
+    p.law = Plastic::Law::resultant;
+    p.moment = r.number(*t, sec, "moment", 0.0, 0.0, HUGE_VAL, true);
+  } else {
+    p.law = Plastic::Law::fibre;
+    p.stress = r.number(*t, sec, "stress", 0.0, 0.0, HUGE_VAL, true);
+    if (section.shape == Section::Shape::general)
+      r.fail(sec + ".stress", t->get("stress"),
+             "the fibre law integrates over the section's shape, and a section given by {area, inertia} has none "
+             "(give ring.section a circle or a rectangle, or use the resultant law 'moment')");
+  }
+  p.hardening = r.number(*t, sec, "hardening", 0.0, 0.0, 1.0);
+  if (!(p.hardening < 1.0))
+    r.fail(sec + ".hardening", t->get("hardening"), "expected a number in [0, 1): the tangent past yield over EI");
+  p.rule = r.choice(*t, sec, "rule", "kinematic", {"kinematic", "isotropic"}) == "kinematic" ? Plastic::Rule::kinematic
+                                                                                            : Plastic::Rule::isotropic;
+  return p;
+}
+
 Section read_section(const Reader& r, const toml::table& ring_t) {
   Section s;
   const toml::table* t = r.table(ring_t, "ring", "section");
@@ -489,12 +519,13 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   // [ring]
   const toml::table* rt = r.table(root, "", "ring");
   if (!rt) r.fail("ring", &root, "missing: the [ring] section (radius, E, rho, section)");
-  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient"});
+  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient", "plastic"});
   s.ring.radius = r.number(*rt, "ring", "radius", 10.0, 0.0, HUGE_VAL, true);
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
   s.ring.section = read_section(r, *rt);
   s.ring.theory = read_theory(r, *rt, "ring").value_or(Theory::euler_bernoulli);
+  s.ring.plastic = read_plastic(r, *rt, s.ring.section);
   s.ring.nu = r.number(*rt, "ring", "nu", 0.3, -1.0, 0.5);
   if (s.ring.nu <= -1.0 || s.ring.nu >= 0.5)
     r.fail("ring.nu", rt->get("nu"), "Poisson's ratio must lie in (-1, 0.5), got " + fmt_num(s.ring.nu));
@@ -608,7 +639,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   }
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
-    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path", "branch"});
+    r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path", "branch",
+                           "history"});
     StaticOptions o;
     o.loads = read_loads(r, *t, sec);
     // A dead load has an equilibrium only when nothing is left to move rigidly (gravity may
@@ -622,6 +654,14 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
                        std::to_string(rigid) + " rigid modes)");
     o.steps = static_cast<int>(r.integer(*t, sec, "steps", 20, 1, 1000000));
     o.record = read_record(r, *t, sec);
+    o.history = r.numbers(*t, sec, "history", {});
+    if (t->contains("history")) {
+      if (o.history.empty()) r.fail("static.history", t->get("history"), "expected at least one load factor");
+      if (o.history.size() > 10000) r.fail("static.history", t->get("history"), "expected at most 10000 load factors");
+      for (double f : o.history)
+        if (std::abs(f) > 1e6)
+          r.fail("static.history", t->get("history"), "load factors must lie in [-1e6, 1e6], got " + fmt_num(f));
+    }
     o.path = r.boolean(*t, sec, "path", false);
     o.branch_side = r.choice(*t, sec, "branch", "positive", {"positive", "negative"}) == "positive" ? 1 : -1;
     if (t->contains("branch") && !o.path)
@@ -669,6 +709,27 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   if (s.modes.preload_static && !s.statics)
     r.fail("modes.preload", root.at_path("modes.preload").node(),
            "\"static\" takes the equilibrium of [static], and the scene has no [static] section");
+
+  // The elastic–plastic law enters the nonlinear statics; the analyses about the undeformed
+  // ring (buckling, the preloaded modes' elastic tangent) would ignore it silently.
+  if (s.ring.plastic) {
+    const toml::node* at = root.at_path("ring.plastic").node();
+    if (s.ring.plastic->law == Plastic::Law::fibre)
+      r.fail("ring.plastic.stress", at,
+             "the fibre law is not in this version yet; use the resultant law ring.plastic.moment (N m)");
+    if (s.response)
+      r.fail("ring.plastic", at,
+             "the forced response takes no plastic law yet, only the nonlinear statics ([static]) do: remove [response] "
+             "or ring.plastic");
+    if (s.buckling)
+      r.fail("ring.plastic", at,
+             "linear buckling is about the undeformed, elastic ring and would ignore the plastic law: follow the "
+             "equilibrium path with [static] path = true instead");
+    if (s.modes.preload_static)
+      r.fail("ring.plastic", at,
+             "modes.preload = \"static\" takes the elastic tangent at the loaded equilibrium, which a plastic ring "
+             "does not have yet: remove modes.preload");
+  }
 
   for (const auto& g : s.gates) {
     const std::string key = "gates." + g.solver;

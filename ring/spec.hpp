@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "ring/plastic.hpp"
+
 namespace ring {
 
 /// Cross-section of the ring. The ring bends in its own plane, so `inertia` is the
@@ -154,6 +156,8 @@ struct RingSpec {
   Supports supports;
   std::vector<PointMass> masses;
   Foundation foundation;
+  /// ring.plastic: the elastic–plastic bending law (ring/plastic.hpp); none: elastic.
+  std::optional<Plastic> plastic;
   /// Degrees: where the models of a free ring (no pin) put their node 0, so that every model
   /// of every solver has the same nodes. The scene reader sets it to the first point load of
   /// the scene (static, then response, then buckling; 0 without one). A pinned

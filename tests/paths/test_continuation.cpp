@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "paths/continuation.hpp"
+#include "ring/plastic.hpp"
 
 namespace {
 
@@ -300,6 +301,71 @@ TEST(Continuation, ALoadThatTakesHoldOfANeutralRestIsNoBifurcation) {
   EXPECT_DOUBLE_EQ(t.state.s, 1.0);
   EXPECT_EQ(t.state.z(0), 0.0);
   EXPECT_FALSE(t.continuation);
+}
+
+/// An elastic–plastic spring (ring/plastic.hpp, kinematic hardening) under the force s F:
+/// its state committed at every accepted equilibrium, as a solver's hinges are.
+class PlasticSpring : public paths::Equilibrium {
+ public:
+  PlasticSpring(double F) : F_(F) {}
+  ring::BilinearLaw law{100.0, 1.0, 0.1, ring::Plastic::Rule::kinematic};
+  ring::PlasticState state;
+  std::vector<paths::State> accepted;
+
+  Eigen::Index size() const override { return 1; }
+  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const ring::BilinearLaw::Point p = law.at(state, x.z(0));
+    r.resize(1);
+    r << p.force - x.s * F_;
+    B_ << p.tangent, -F_, w(0), ws;
+    lu_.compute(B_);
+    return std::abs(lu_.determinant()) > 1e-300;
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y);
+    return y.allFinite();
+  }
+  double move(const paths::Vector& dz) const override { return std::abs(dz(0)) / 0.5; }
+  bool converged(const paths::State&, const paths::Vector& dz, int) override { return std::abs(dz(0)) <= 1e-13; }
+  std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
+    state = law.commit(state, to.z(0));
+    accepted.push_back(to);
+    return std::nullopt;
+  }
+
+ private:
+  double F_;
+  Eigen::Matrix2d B_;
+  Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
+};
+
+// A load history through a plastic spring: loading past yield (force 2, yield 1), unloading
+// to zero, reversed loading and reloading. Closed forms of the bilinear law (k = 100, h = 0.1,
+// H = h k / (1 - h)): at force f > Y the strain is Y/k + (f - Y)/(h k); unloading is elastic,
+// so the residual strain is the plastic strain (1 - h)(f - Y)/(h k); kinematic hardening
+// makes the reversed load -2 yield at f - 2Y = 0 (the Bauschinger effect), so at -2 the
+// strain is the mirror image of +2's.
+TEST(Continuation, ALoadHistoryVisitsEachFactorInTurnThroughAPlasticSpring) {
+  PlasticSpring spring(2.0);
+  paths::Continuation o;
+  o.steps = 8;
+  o.history = {1.0, 0.0, -1.0, 1.0};
+  const paths::Trace t = paths::follow(spring, {paths::Vector::Zero(1), 0.0}, o);
+  ASSERT_EQ(t.end, paths::Trace::End::reached) << paths::failure_message(t, o);
+  EXPECT_DOUBLE_EQ(t.state.s, 1.0);
+  const double k = 100.0, h = 0.1, Y = 1.0, f = 2.0;
+  const double peak = Y / k + (f - Y) / (h * k), residual = (1.0 - h) * (f - Y) / (h * k);
+  // Four legs 0 -> 1 -> 0 -> -1 -> 1 of `steps` = 8 increments each: 32 steps.
+  ASSERT_EQ(spring.accepted.size(), 32u);
+  const auto at = [&](std::size_t i) { return spring.accepted[i - 1]; };
+  EXPECT_DOUBLE_EQ(at(8).s, 1.0);
+  EXPECT_NEAR(at(8).z(0), peak, 1e-12);
+  EXPECT_DOUBLE_EQ(at(16).s, 0.0);
+  EXPECT_NEAR(at(16).z(0), residual, 1e-12);
+  EXPECT_DOUBLE_EQ(at(24).s, -1.0);
+  EXPECT_NEAR(at(24).z(0), -peak, 1e-12);
+  EXPECT_NEAR(t.state.z(0), peak, 1e-12);
+  EXPECT_EQ(t.steps, 32);
 }
 
 }  // namespace
