@@ -1,0 +1,39 @@
+// The thin ring pinched by two opposite point loads P, elastic–perfectly plastic with the
+// resultant law (plastic moment Mp, ring.plastic.moment, hardening 0), at small
+// displacement: classical limit analysis with the unit-load theorem (Hodge, "Plastic
+// Analysis of Structures", 1959, ch. 3; the elastic part is Roark's ring case 1).
+//
+// A quarter from the load (theta = 0) to the line of the other diameter (theta = pi/2)
+// carries M(theta) = M0 - (P R / 2) sin(theta); symmetry keeps both ends from rotating.
+//  - Elastic: int M dtheta = 0 over the quarter gives M0 = P R / pi, largest at the loads,
+//    so the first hinges form under the loads at P_y = pi Mp / R. The closing of the two
+//    load points is delta = (pi/4 - 2/pi) P R^3 / EI.
+//  - With hinges under the loads M0 = Mp, and the unit-load theorem with the released
+//    quarter's virtual moment m = -(R/2) sin(theta) (zero at the hinge, so the hinge's
+//    rotation does no virtual work) gives delta = (2 R^2 / EI)(pi P R / 8 - Mp), until
+//    M(pi/2) = Mp - P R / 2 reaches -Mp: the four-hinge mechanism at P_c = 4 Mp / R.
+//  - Unloading from P* is elastic: the residual closing is delta(P*) - (pi/4 - 2/pi) P* R^3 / EI
+//    and the residual moment under the loads Mp - P* R / pi.
+// Geometrically exact models deviate from these by O(delta / R): keep Mp R / EI small.
+#pragma once
+
+#include <cmath>
+
+namespace ringtest {
+
+struct PinchedPlasticRing {
+  double R, EI, Mp;
+  double first_yield() const { return M_PI * Mp / R; }  ///< P_y, N
+  double collapse() const { return 4.0 * Mp / R; }      ///< P_c, N
+  double elastic_closing(double P) const { return (M_PI / 4.0 - 2.0 / M_PI) * P * R * R * R / EI; }
+  /// The closing of the load points under P in [0, P_c], m.
+  double closing(double P) const {
+    return P <= first_yield() ? elastic_closing(P) : 2.0 * R * R / EI * (M_PI * P * R / 8.0 - Mp);
+  }
+  /// The closing left after loading to P* (<= P_c) and unloading, m.
+  double residual_closing(double P) const { return closing(P) - elastic_closing(P); }
+  /// The moment left under the loads after loading to P* (in [P_y, P_c]) and unloading, N m.
+  double residual_moment(double P) const { return Mp - P * R / M_PI; }
+};
+
+}  // namespace ringtest
