@@ -137,7 +137,7 @@ Cells cells(const NonlinearTable& t) {
   if (t.has_reference()) head.push_back("reference");
   out.push_back(head);
   for (const auto& r : t.rows) {
-    std::vector<std::string> row = {number_or_na(r.angle, false), r.quantity};
+    std::vector<std::string> row = {r.whole_ring() ? "ring" : number_or_na(r.angle, false), r.quantity};
     for (std::size_t c = 0; c < r.value.size(); ++c) {
       row.push_back(number_or_na(r.value[c], false));
       if (c > 0) row.push_back(number_or_na(r.diff_pct[c], true));
@@ -152,7 +152,7 @@ Cells cells(const NonlinearTable& t) {
 std::string units_note(const NonlinearTable& t) {
   return t.analysis == "response"
              ? "peak_u: largest |u| over the history (m); t_peak: when it occurs (s)"
-             : "ux, uy: displacement (m, ring-centred frame); u: its magnitude";
+             : "ux, uy: displacement (m, ring-centred frame); u: its magnitude; dissipated: plastic work (J)";
 }
 
 }  // namespace
@@ -215,6 +215,15 @@ NonlinearTable static_table(const std::string& title, const std::vector<ring::St
     }
     for (auto& r : rows) t.rows.push_back(r);
   }
+  // A plastic ring: the plastic work done along the whole history, J (after unloading, the
+  // displacements above are the residual ones).
+  const auto dissipates = [](const ring::StaticResult& r) { return r.dissipated > 0.0; };
+  if (std::any_of(results.begin(), results.end(), dissipates) || (reference && dissipates(*reference))) {
+    NonlinearRow row{NonlinearRow::kWholeRing, "dissipated", {}, {}, std::nullopt, {}};
+    for (const auto& r : results) row.value.push_back(r.dissipated);
+    if (reference) row.reference = reference->dissipated;
+    t.rows.push_back(row);
+  }
   fill_relative(t);
   return t;
 }
@@ -259,7 +268,8 @@ std::string format_csv(const NonlinearTable& t) {
     return o.str();
   };
   for (const auto& r : t.rows) {
-    s << r.angle << "," << r.quantity;
+    if (r.whole_ring()) s << "ring," << r.quantity;
+    else s << r.angle << "," << r.quantity;
     for (std::size_t c = 0; c < r.value.size(); ++c) {
       s << "," << num(r.value[c]);
       if (c > 0) s << "," << num(r.diff_pct[c]);
@@ -280,7 +290,8 @@ std::string format_json(const NonlinearTable& t) {
   auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   for (const auto& r : t.rows) {
     nlohmann::json row;
-    row["point"] = r.angle;
+    if (r.whole_ring()) row["point"] = "ring";
+    else row["point"] = r.angle;
     row["quantity"] = r.quantity;
     for (std::size_t c = 0; c < r.value.size(); ++c) {
       row[t.solvers[c]] = num(r.value[c]);

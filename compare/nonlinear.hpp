@@ -30,7 +30,9 @@ NonlinearRun run_nonlinear(const ring::Scene& scene, const std::string& only = "
 
 /// One compared quantity at one recorded point.
 struct NonlinearRow {
-  double angle = 0.0;                ///< degrees
+  static constexpr double kWholeRing = -1000.0;  ///< `angle` of a quantity of the whole ring
+  double angle = 0.0;                ///< degrees, or kWholeRing ("ring" in the tables)
+  bool whole_ring() const { return angle == kWholeRing; }
   std::string quantity;              ///< "peak_u", "t_peak" (response); "ux", "uy", "u" (statics)
   std::vector<double> value;         ///< per solver, table order
   std::vector<double> diff_pct;      ///< per solver; NaN for the base and where the other is ~0
@@ -47,7 +49,8 @@ struct NonlinearTable {
 };
 
 /// Response: per recorded point, the peak of |u| = sqrt(ux^2 + uy^2) over the history
-/// and the time it occurs. Statics: ux, uy and |u| per recorded point. A relative
+/// and the time it occurs. Statics: ux, uy and |u| per recorded point, and for a plastic
+/// ring the dissipated energy (point "ring"). A relative
 /// difference or error is left out (NaN) where the value it is taken against is below
 /// 1e-9 of the largest value of that quantity (a pinned point, a symmetry plane).
 NonlinearTable response_table(const std::string& title, const std::vector<ring::TimeHistory>& histories,

@@ -202,6 +202,11 @@ void write_report(const std::string& dir, const RunReport& r) {
       plot_static_paths(dir, all);
       files.push_back("static_path.png");
       md << "\n![equilibrium paths](static_path.png)\n\n";
+      if (!s.statics->history.empty()) {
+        plot_static_history(dir, all);
+        files.push_back("static_history.png");
+        md << "![the load history](static_history.png)\n\n";
+      }
       plot_path_shapes(dir, all.front());
       files.push_back("static_path_shapes.png");
       md << "![the ring along its path](static_path_shapes.png)\n\n";

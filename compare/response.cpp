@@ -50,7 +50,21 @@ std::string static_json(const ring::StaticResult& r) {
     j["end_load"] = r.end_load;
     j["branch_points"] = r.branch_points;
     j["path_points"] = r.path.size();
+    // Every accepted equilibrium: the load factor, the recorded points' displacements and,
+    // for a plastic ring, the plastic work done so far and the largest plastic curvature.
+    j["path"] = nlohmann::json::array();
+    for (const auto& p : r.path) {
+      nlohmann::json d = nlohmann::json::array();
+      for (const auto& x : p.displacements) d.push_back({{"angle", x.angle}, {"ux", x.ux}, {"uy", x.uy}});
+      j["path"].push_back({{"load_factor", p.load_factor},
+                           {"displacements", d},
+                           {"ovalisation", p.ovalisation},
+                           {"dissipated", p.dissipated},
+                           {"plastic_curvature", p.plastic_curvature}});
+    }
   }
+  j["dissipated"] = r.dissipated;
+  j["plastic_curvature"] = r.plastic_curvature;
   return j.dump(2) + "\n";
 }
 
@@ -84,11 +98,11 @@ std::string static_path_csv(const ring::StaticResult& r) {
   s << "load_factor,ovalisation";
   if (!r.path.empty())
     for (const auto& d : r.path.front().displacements) s << ",ux_" << deg_label(d.angle) << ",uy_" << deg_label(d.angle);
-  s << "\n";
+  s << ",dissipated,plastic_curvature\n";
   for (const auto& p : r.path) {
     s << p.load_factor << "," << p.ovalisation;
     for (const auto& d : p.displacements) s << "," << d.ux << "," << d.uy;
-    s << "\n";
+    s << "," << p.dissipated << "," << p.plastic_curvature << "\n";
   }
   return s.str();
 }
@@ -106,6 +120,30 @@ void plot_static_paths(const std::string& dir, const std::vector<ring::StaticRes
   }
   plot_series(dir, "static_path", "Equilibrium paths: load factor against ovalisation", "(largest - smallest diameter) / R",
               "load factor", series);
+}
+
+void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results) {
+  if (results.empty() || results.front().path.empty() || results.front().path.front().displacements.empty()) return;
+  // The component of the first recorded point that moves most along the first path.
+  double range[2] = {0.0, 0.0};
+  for (const auto& p : results.front().path) {
+    range[0] = std::max(range[0], std::abs(p.displacements.front().ux));
+    range[1] = std::max(range[1], std::abs(p.displacements.front().uy));
+  }
+  const bool y = range[1] >= range[0];
+  const double angle = results.front().path.front().displacements.front().angle;
+  std::vector<Series> series;
+  for (const auto& r : results) {
+    Series x{r.solver, {}, {}};
+    for (const auto& p : r.path) {
+      if (p.displacements.empty()) continue;
+      x.x.push_back(y ? p.displacements.front().uy : p.displacements.front().ux);
+      x.y.push_back(p.load_factor);
+    }
+    if (!x.x.empty()) series.push_back(x);
+  }
+  plot_series(dir, "static_history", "Load history: load factor against displacement",
+              std::string(y ? "uy" : "ux") + " at " + deg_label(angle) + " deg, m", "load factor", series);
 }
 
 void plot_path_shapes(const std::string& dir, const ring::StaticResult& r) {

@@ -14,15 +14,22 @@ namespace cmp {
 /// energy_error, constraint_residual, newton_iterations (docs/commands.md, "What each command does").
 std::string history_csv(const ring::TimeHistory& h);
 /// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations", "solver",
-/// "unknowns", "seconds"}.
+/// "unknowns", "seconds", "dissipated", "plastic_curvature"}; with a path also "end",
+/// "end_load", "branch_points", "path_points" and "path": [{"load_factor", "displacements",
+/// "ovalisation", "dissipated", "plastic_curvature"}].
 std::string static_json(const ring::StaticResult& r);
 std::string static_text(const ring::StaticResult& r);
 /// static.path: one line per solver with a path: its equilibria, branch points and end.
 std::string path_summary(const std::vector<ring::StaticResult>& results);
-/// static.path: the path as CSV (load_factor, ovalisation, ux_A, uy_A for each recorded point).
+/// static.path: the path as CSV (load_factor, ovalisation, ux_A, uy_A for each recorded point,
+/// dissipated, plastic_curvature).
 std::string static_path_csv(const ring::StaticResult& r);
 /// static.path: load factor against ovalisation, every solver's path overlaid (static_path.png).
 void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results);
+/// static.history: load factor against the displacement of the first recorded point (its
+/// component with the larger range), every solver's path overlaid (static_history.png): the
+/// loops of cyclic loading of a plastic ring.
+void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results);
 /// static_path_shapes.png: the deformed ring of `r`'s path at five equilibria, nearest to 0,
 /// 1/4, ..., 1 of its largest ovalisation (rest to the touch), true to scale.
 void plot_path_shapes(const std::string& dir, const ring::StaticResult& r);

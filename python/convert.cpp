@@ -166,6 +166,44 @@ Static to_python(const ring::StaticResult& r) {
   o.displacements =
       structured(angle.size(), {{{"angle", &angle}, {"ux", &ux}, {"uy", &uy}}, {}, {"angle", "ux", "uy"}});
   o.nodes = pairs(r.node_x, r.node_y);
+  o.path = py::none();
+  if (!r.path.empty()) {
+    // The columns of static_path_<solver>.csv, in its order.
+    const std::size_t n = r.path.size(), points = r.path.front().displacements.size();
+    std::vector<double> load(n), oval(n), dissipated(n), plastic(n);
+    std::vector<std::vector<double>> ux(points, std::vector<double>(n)), uy = ux;
+    for (std::size_t k = 0; k < n; ++k) {
+      const ring::PathPoint& p = r.path[k];
+      load[k] = p.load_factor;
+      oval[k] = p.ovalisation;
+      dissipated[k] = p.dissipated;
+      plastic[k] = p.plastic_curvature;
+      for (std::size_t i = 0; i < points && i < p.displacements.size(); ++i) {
+        ux[i][k] = p.displacements[i].ux;
+        uy[i][k] = p.displacements[i].uy;
+      }
+    }
+    Columns c;
+    c.order = {"load_factor", "ovalisation"};
+    c.real = {{"load_factor", &load}, {"ovalisation", &oval}};
+    for (std::size_t i = 0; i < points; ++i) {
+      const std::string d = degrees(r.path.front().displacements[i].angle);
+      c.order.push_back("ux_" + d);
+      c.real.push_back({"ux_" + d, &ux[i]});
+      c.order.push_back("uy_" + d);
+      c.real.push_back({"uy_" + d, &uy[i]});
+    }
+    c.order.push_back("dissipated");
+    c.real.push_back({"dissipated", &dissipated});
+    c.order.push_back("plastic_curvature");
+    c.real.push_back({"plastic_curvature", &plastic});
+    o.path = structured(n, c);
+  }
+  o.branch_points = vector(r.branch_points);
+  o.end = r.end;
+  o.end_load = r.end_load;
+  o.dissipated = r.dissipated;
+  o.plastic_curvature = r.plastic_curvature;
   o.unknowns = r.unknowns;
   o.steps = r.steps;
   o.newton_iterations = r.newton_iterations;

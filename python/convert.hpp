@@ -40,6 +40,10 @@ Modes to_python(const ring::ModalResult& m);
 struct Static {
   std::string solver;
   py::object displacements, nodes;
+  py::object path;  ///< structured ndarray, one row per accepted equilibrium (None without a path)
+  py::object branch_points;
+  std::string end;
+  double end_load = 1.0, dissipated = 0.0, plastic_curvature = 0.0;
   long long unknowns = 0;
   int steps = 0, newton_iterations = 0;
   double seconds = 0.0;

@@ -273,6 +273,16 @@ PYBIND11_MODULE(ringvib, m) {
                     "The recorded points: structured ndarray with fields angle (deg), ux, uy (m, ring-centred\n"
                     "frame).")
       .def_readonly("nodes", &Static::nodes, "The deformed ring at every node: ndarray (nodes, 2) of x, y (m).")
+      .def_readonly("path", &Static::path,
+                    "static.path or static.history: every accepted equilibrium from rest, a structured ndarray\n"
+                    "with the columns of static_path_<solver>.csv: load_factor, ovalisation, ux_<deg>, uy_<deg>\n"
+                    "per recorded point (m), dissipated (J), plastic_curvature (1/m). None without a path.")
+      .def_readonly("branch_points", &Static::branch_points, "Load factors where the path switched onto a branch.")
+      .def_readonly("end", &Static::end, "How the path ended: 'full load' or 'contact: <where>'.")
+      .def_readonly("end_load", &Static::end_load, "The load factor where the path ended.")
+      .def_readonly("dissipated", &Static::dissipated, "ring.plastic: the plastic work done, J (0 if elastic).")
+      .def_readonly("plastic_curvature", &Static::plastic_curvature,
+                    "ring.plastic: the largest plastic curvature left in the ring, 1/m.")
       .def_readonly("unknowns", &Static::unknowns, "Size of the nonlinear system.")
       .def_readonly("steps", &Static::steps, "Load steps (or arc-length steps) taken.")
       .def_readonly("newton_iterations", &Static::newton_iterations)

@@ -662,7 +662,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
         if (std::abs(f) > 1e6)
           r.fail("static.history", t->get("history"), "load factors must lie in [-1e6, 1e6], got " + fmt_num(f));
     }
-    o.path = r.boolean(*t, sec, "path", false);
+    // A history is a path by nature: its equilibria are the result (static_path_<solver>.csv).
+    o.path = r.boolean(*t, sec, "path", !o.history.empty());
     o.branch_side = r.choice(*t, sec, "branch", "positive", {"positive", "negative"}) == "positive" ? 1 : -1;
     if (t->contains("branch") && !o.path)
       r.fail("static.branch", t->get("branch"),

@@ -368,6 +368,54 @@ TEST(SceneReject, PoissonOutOfRange) {
 TEST(SceneReject, ForceWithThreeComponents) {
   expect_rejected(kRollered + "[static]\nat = 0.0\nforce = [-1.0, 0.0, 2.0]\n", "static.force", "2 numbers");
 }
+// ring.plastic and static.history (docs/scenes.md): hostile values exit 2 naming the key
+// before anything is computed.
+const std::string kPlasticStatic = replace(kRollered, "rho = 7.8e3", "rho = 7.8e3\nplastic = { moment = 7.2e4 }") +
+                                   "[static]\nat = 0.0\nforce = [-2e4, 0.0]\nhistory = [1.0, 0.0]\n";
+TEST(ScenePlastic, ReadsTheResultantLawAndTheHistory) {
+  const ring::Scene s = cmp::parse_scene(kPlasticStatic, "p.toml", {"ring.plastic.hardening=0.05"});
+  ASSERT_TRUE(s.ring.plastic.has_value());
+  EXPECT_EQ(s.ring.plastic->law, ring::Plastic::Law::resultant);
+  EXPECT_DOUBLE_EQ(s.ring.plastic->moment, 7.2e4);
+  EXPECT_DOUBLE_EQ(s.ring.plastic->hardening, 0.05);
+  EXPECT_EQ(s.ring.plastic->rule, ring::Plastic::Rule::kinematic);
+  ASSERT_TRUE(s.statics.has_value());
+  EXPECT_EQ(s.statics->history, (std::vector<double>{1.0, 0.0}));
+  EXPECT_TRUE(s.statics->path);  // a history records its path
+}
+TEST(ScenePlastic, HostileValuesAreRefusedByKey) {
+  const auto with = [](const std::string& plastic) {
+    return replace(kPlasticStatic, "plastic = { moment = 7.2e4 }", "plastic = " + plastic);
+  };
+  expect_rejected(with("{ moment = 0.0 }"), "ring.plastic.moment", "> 0");
+  expect_rejected(with("{ moment = -5.0 }"), "ring.plastic.moment", "> 0");
+  expect_rejected(with("{ moment = nan }"), "ring.plastic.moment");
+  expect_rejected(with("{ moment = 1.0, hardening = 1.0 }"), "ring.plastic.hardening", "[0, 1)");
+  expect_rejected(with("{ moment = 1.0, hardening = -0.1 }"), "ring.plastic.hardening");
+  expect_rejected(with("{ moment = 1.0, rule = \"mixed\" }"), "ring.plastic.rule", "kinematic");
+  expect_rejected(with("{ moment = 1.0, stress = 2.5e8 }"), "ring.plastic", "one of 'moment'");
+  expect_rejected(with("{ hardening = 0.1 }"), "ring.plastic", "one of 'moment'");
+  expect_rejected(with("{ moment = 1.0, yield = 2.0 }"), "ring.plastic", "yield");
+  expect_rejected(with("7.2e4"), "ring.plastic", "table");
+  // The fibre law needs a section with a shape.
+  expect_rejected(replace(with("{ stress = 2.5e8 }"), "section = { shape = \"circle\", diameter = 0.12 }",
+                          "section = { area = 0.01, inertia = 1e-5 }"),
+                  "ring.plastic.stress", "no");
+}
+TEST(ScenePlastic, AHistoryThatIsNotAListOfFiniteNumbersIsRefused) {
+  const auto with = [](const std::string& history) {
+    return replace(kPlasticStatic, "history = [1.0, 0.0]", "history = " + history);
+  };
+  expect_rejected(with("[]"), "static.history", "at least one");
+  expect_rejected(with("1.0"), "static.history", "array of numbers");
+  expect_rejected(with("[1.0, \"back\"]"), "static.history", "numbers");
+  expect_rejected(with("[1.0, inf]"), "static.history", "finite");
+  expect_rejected(with("[1.0, 1e7]"), "static.history", "[-1e6, 1e6]");
+}
+TEST(ScenePlastic, AnalysesThatWouldIgnoreThePlasticLawAreRefused) {
+  expect_rejected(kPlasticStatic + "[buckling]\ncount = 2\n", "ring.plastic", "buckling");
+  expect_rejected(replace(kPlasticStatic, "[modes]", "[modes]\npreload = \"static\""), "ring.plastic", "preload");
+}
 TEST(SceneReject, StaticsWithoutRoller) {
   expect_rejected(kPaper + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\n", "supports.roller", "turn about the pin");
 }
