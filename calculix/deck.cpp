@@ -70,6 +70,14 @@ void check_refusals(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
                                "the calculix deck cannot write a point mass's rotary inertia: ccx 2.20 has *MASS "
                                "elements (translation only) and no *ROTARY INERTIA; give inertia = 0 or leave "
                                "calculix out of modes and responses (statics does not need it)");
+  // The resultant law (moment against curvature) has no place on ccx's expanded beam, whose
+  // material is a 3-D continuum: only a stress–strain law (*PLASTIC) could be written. Only
+  // the statics take the law (a static deck ignores inertia); the modes at rest are elastic.
+  if (inertia == Inertia::ignored && spec.plastic && spec.plastic->law == ring::Plastic::Law::resultant)
+    throw ring::InputError("", "ring.plastic.moment",
+                           "the calculix deck cannot write the resultant plastic law: ccx expands the beam into "
+                           "bricks whose material takes a stress-strain law (*PLASTIC), not a moment against "
+                           "curvature; leave calculix out of a plastic scene");
   if (o.section == ring::CalculixOptions::Section::as_given && spec.section.shape == ring::Section::Shape::general)
     throw ring::InputError("", "calculix.section",
                            "\"as-given\" needs a circle or a rectangle; a section given by {area, inertia} has no "
