@@ -148,6 +148,28 @@ def test_static_equals_the_commands_json(solver, values, texts):
     assert r.nodes.ndim == 2 and r.nodes.shape[1] == 2 and np.isfinite(r.nodes).all()
 
 
+def test_static_path_equals_the_commands_json():
+    # A load history (there and back) records the path: every equilibrium the command's JSON
+    # lists, with the same load factors, displacements and plastic work.
+    values = {"static.history": [1.0, 0.0], "static.steps": 4, "multibody.n": 40}
+    texts = {"static.history": "[1.0, 0.0]", "static.steps": "4", "multibody.n": "40"}
+    s = ringvib.Scene.load(scene_path("pinched-ring-plastic.toml"), set=values)
+    r = ringvib.static(s, "multibody")
+    j = ringvib_json("static", scene_path("pinched-ring-plastic.toml"), "--solver", "multibody", "--json",
+                     *sets(texts))
+    assert r.end == j["end"] and r.end_load == j["end_load"]
+    assert r.dissipated == j["dissipated"]
+    assert len(r.path) == j["path_points"] == len(j["path"])
+    assert r.path.dtype.names[:2] == ("load_factor", "ovalisation")
+    assert r.path.dtype.names[-2:] == ("dissipated", "plastic_curvature")
+    for row, p in zip(r.path, j["path"]):
+        assert row["load_factor"] == p["load_factor"]
+        assert row["dissipated"] == p["dissipated"]
+        for d in p["displacements"]:
+            name = f'{d["angle"]:g}'
+            assert row["ux_" + name] == d["ux"] and row["uy_" + name] == d["uy"]
+
+
 def test_static_table_equals_the_commands_json():
     values = {"static.solvers": ["multibody", "lumped"]}
     texts = {"static.solvers": '["multibody", "lumped"]'}
