@@ -1,5 +1,8 @@
 #include "calculix/options.hpp"
 
+#include <algorithm>
+#include "calculix/deck.hpp"
+
 namespace calculix {
 
 const ring::OptionSchema& option_schema() {
@@ -36,6 +39,12 @@ ring::CalculixOptions read_options(const ring::OptionValues& v) {
   o.timeout = v.number("timeout");
   o.threads = static_cast<int>(v.integer("threads"));
   return o;
+}
+
+// ccx runs in its own process: ringvib holds the deck and the .dat text, a few KB per
+// node and mode; ccx's own memory (about 100 MB at 640 B32R elements) is not ringvib's.
+double memory_estimate(const ring::Scene& s, int count) {
+  return calculix::node_count(s.calculix) * (2000.0 + 200.0 * std::max(count, 1));
 }
 
 }  // namespace calculix

@@ -102,54 +102,7 @@ SolverEntry multibody_entry() {
   e.converge_steps = 5;
   e.richardson = true;
   e.paper = [](const ring::PaperRow& r) { return r.mb_corrected; };
-  // Working memory beyond the process (compare/guard.cpp adds that), fitted to the peak
-  // RSS measured at n = 200 ... 10^6 (docs/commands.md, "Cost guard"; tests/compare/test_memory_estimate.cpp
-  // holds it within [1, 1.5] of the measured peak). Measured: dense modes 49 n^2 bytes
-  // (LAPACK's n x n pencil and workspace); O(n) modes n (320 + 11 count) (slopes between
-  // n = 10^4 and 10^5 for count = 5, 23, 50, 100: 374, 582, 879, 1412 bytes per segment;
-  // 596 MB at 10^6, count = 23: the band factors and the ~2 count touched columns of the
-  // Lanczos basis, which the shapes then overwrite); nonlinear: dense
-  // response 42-47 n^2, dense statics 21 n^2 (50-56 n^2 since each accepted step counts the
-  // tangent's unstable directions: T, the kernel basis Z, Z^T T Z and the eigensolver's
-  // workspace; n = 800, 400), O(n) response 1.54-1.64 KB (newmark, the
-  // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 1.15 KB per
-  // segment (n = 4 10^4, 10^5: the continuation driver's states, tangent and bordered
-  // solve, and since it takes every term, its terms and loads by hinge; 1.00-1.02 KB before). Used: those with 3-20 % to spare.
-  e.memory = [](const ring::Scene& s, int count) {
-    const double n = s.multibody.n;
-    auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, s.ring, a) == multibody::Backend::banded; };
-    // Modes under load (dense): the statics' path, then T, Z, the reduced pencil and the
-    // eigensolver's work; measured 92 and 81 n^2 at n = 400, 800.
-    if (count > 0 && s.modes.preload_static) return 100.0 * n * n;
-    // The Timoshenko chain's dense matrices are (2n)^2: its shear angles double the unknowns.
-    const double N = s.ring.theory == ring::Theory::timoshenko ? 2.0 * n : n;
-    // The O(n) modes with the terms (hinge positions, multibody/position_modes.hpp): the
-    // Lanczos basis of 2n rows, the band's factors, the vectors in both coordinates; slopes
-    // between n = 2 10^4 and 5 10^4 (pinned, a spring and the foundation) for count = 5, 23,
-    // 50: 1579, 2165, 3476 bytes per segment, n (1370 + 42 count). Used: n (1500 + 45 count).
-    if (count > 0)
-      return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
-                 ? (s.ring.paper_terms_only() ? n * (380.0 + 13.0 * count) : n * (1500.0 + 45.0 * count))
-                 : (s.ring.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
-    double bytes = 0.0;
-    // Nonlinear Timoshenko chain (dense only, multibody/sections.hpp): the response's state and
-    // Newton matrices are (phi, gamma), so its n^2 terms count N^2; the statics condense gamma
-    // (n unknowns) and build K_c once (68 n^2). Measured (test_memory_estimate.cpp): response
-    // 33.6 and 105 MB at n = 400, 800 (estimate / peak 1.25, 1.31), statics 18.8 and 43.2 MB
-    // (1.11, 1.24).
-    const bool shear = s.ring.theory == ring::Theory::timoshenko;
-    if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * N * N);
-    if (s.statics) {
-      // The O(n) statics with terms or loads beyond the paper's (Attachments, Loading, their
-      // hinge blocks): 1.50 KB per segment measured (n = 4 10^4, 10^5: foundation, springs,
-      // central pressure, gravity), 1.15 KB without.
-      const bool terms = !s.ring.paper_terms_only() || !s.statics->loads.points_only();
-      bytes = std::max(bytes, multibody::backend(s.multibody, s.ring, *s.statics) == multibody::Backend::banded
-                                  ? (terms ? 1750.0 : 1300.0) * n
-                                  : (shear ? 68.0 : 60.0) * n * n);
-    }
-    return bytes;
-  };
+  e.memory = multibody::memory_estimate;
   e.check_modes = [](const ring::Scene& s) {
     if (s.modes.preload_static) multibody::check_preloaded_modes(s.ring, s.multibody, *s.statics);
     else multibody::check_modes(s.ring, s.multibody);
@@ -228,35 +181,7 @@ SolverEntry lumped_entry() {
   e.curve = [](const ring::Scene& s) { return "lumped (" + ring::to_string(s.lumped.variant) + ")"; };
   e.converge_steps = 5;
   e.paper = [](const ring::PaperRow& r) { return r.lm_corrected; };
-  // Working memory per node, fitted to the peak RSS measured at n = 10^3 ... 6 10^5: the
-  // sparse LU's peak, or (from ~20 modes up) the factors plus the Lanczos basis,
-  // 40 bytes per node and mode. Modes, with count 23: chain 4.1-4.4 KB, frame 5.8-5.9 KB,
-  // frame-consistent 7.8-8.3 KB per node (linear up to n = 6 10^5, 4.6 GB); the nonlinear
-  // chain 4.5 KB (statics) to 5.0 KB (response; 5.3-5.5 KB at n = 10^4, 3 10^4 since it
-  // carries the hinge rotations' state, q = (x, chi), and their mass beside the translational
-  // one: 172.5 MB measured at 3 10^4, where 5.2 KB had been 165.4); the corotational frames'
-  // statics 5.4 and 4.6 KB at n = 10^4, 3 10^4 (the process included). Used: those with 3-5 %
-  // to spare.
-  e.memory = [](const ring::Scene& s, int count) {
-    const double n = s.lumped.n;
-    const bool frame = s.lumped.variant != ring::LumpedOptions::Variant::chain;
-    if (count == 0) return (frame ? 5600.0 : 5700.0) * n;
-    // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
-    // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
-    if (s.modes.preload_static) return (frame ? 600.0 : 100.0) * n * n;
-    auto per_node = [count](double factor_peak, double with_basis) {
-      return std::max(factor_peak, with_basis + 40.0 * count);
-    };
-    switch (s.lumped.variant) {
-      case ring::LumpedOptions::Variant::chain: return n * per_node(4370.0, 3990.0);
-      case ring::LumpedOptions::Variant::frame: return n * per_node(6110.0, 4250.0);
-      case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(8560.0, 7600.0);
-      // Measured 7.7, 7.5, 7.5 KB per node at n = 10^4, 3 10^4, 10^5 (count 23): the factors'
-      // peak; the mixed system has 7n rows (4 strains per element) but a diagonal mass.
-      case ring::LumpedOptions::Variant::timoshenko_frame: return n * per_node(7900.0, 7000.0);
-    }
-    return 0.0;
-  };
+  e.memory = lumped::memory_estimate;
   e.check_modes = [](const ring::Scene& s) {
     if (s.modes.preload_static) lumped::check_preloaded_modes(s.ring, s.lumped, *s.statics);
     else lumped::check_modes(s.ring, s.lumped);
@@ -318,25 +243,7 @@ SolverEntry fem_entry() {
   };
   e.converge_steps = 4;
   e.paper = [](const ring::PaperRow& r) { return r.fe_corrected; };
-  // Working memory per unknown (2 p N of them), fitted to the peak RSS measured at
-  // N p = 2400 ... 96 000 unknowns, p = 3 ... 12 (the deal.II plug-in itself is the
-  // guard's): modes, UMFPACK's factors and the eigen-solve, 4.05 KB (p = 3), 5.65 KB
-  // (6), 9.57 KB (12) with 23 modes, + 85 bytes per mode above ~23 (ARPACK's basis and
-  // the refinement's long double vectors outgrow the factorization's peak); nonlinear,
-  // Newton's tangent and factors, 3.5-4.5 KB (p = 3) and 6.6-7.6 KB (p = 8); 5.2 KB at p = 3
-  // (24 000 unknowns) since each accepted step counts the tangent's unstable directions
-  // (its banded block LDL^T). Used: a fit
-  // in p with ~4 % to spare. The reference raises p to fem::kMaxDegree (checks.hpp).
-  e.memory = [](const ring::Scene& s, int count) {
-    const double p = s.fem.reference || s.needs_reference() ? fem::kMaxDegree : s.fem.degree;
-    const double unknowns = (s.ring.theory == ring::Theory::timoshenko ? 3.0 : 2.0) * p * s.fem.elements;
-    if (count == 0) return unknowns * (3400.0 + 650.0 * p);
-    // Modes under load: the statics, then the dense pencil (three N x N matrices and the
-    // eigen-solve's work, fem_reference/preload.hpp), ~100 N^2.
-    if (s.modes.preload_static) return unknowns * (3400.0 + 650.0 * p) + 100.0 * unknowns * unknowns;
-    const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
-    return unknowns * (factor_peak + 85.0 * std::max(0, count - 23));
-  };
+  e.memory = fem::memory_estimate;
   // The deal.II plug-in and its libraries: peak RSS of the smallest FE run 162.7 MiB, the
   // process without it 7.8-8.8 MiB (compare/guard.cpp).
   e.code_bytes = 160.0 * (1 << 20);
@@ -422,11 +329,7 @@ SolverEntry calculix_entry() {
     return v;
   };
   e.converge_steps = 4;
-  // ccx runs in its own process: ringvib holds the deck and the .dat text, a few KB per
-  // node and mode; ccx's own memory (about 100 MB at 640 B32R elements) is not ringvib's.
-  e.memory = [](const ring::Scene& s, int count) {
-    return calculix::node_count(s.calculix) * (2000.0 + 200.0 * std::max(count, 1));
-  };
+  e.memory = calculix::memory_estimate;
   e.check_modes = [](const ring::Scene& s) {
     refuse_preload(s);
     with_scene_file(s, [&] {

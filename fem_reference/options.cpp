@@ -1,5 +1,7 @@
 #include "fem_reference/options.hpp"
 
+#include <algorithm>
+
 #include "fem_reference/checks.hpp"
 
 namespace fem {
@@ -45,6 +47,26 @@ ring::FemOptions read_options(const ring::OptionValues& v) {
   o.response_tolerance = v.number("response_tolerance");
   o.theory = v.theory("theory");
   return o;
+}
+
+// Working memory per unknown (2 p N of them), fitted to the peak RSS measured at
+// N p = 2400 ... 96 000 unknowns, p = 3 ... 12 (the deal.II plug-in itself is the
+// guard's): modes, UMFPACK's factors and the eigen-solve, 4.05 KB (p = 3), 5.65 KB
+// (6), 9.57 KB (12) with 23 modes, + 85 bytes per mode above ~23 (ARPACK's basis and
+// the refinement's long double vectors outgrow the factorization's peak); nonlinear,
+// Newton's tangent and factors, 3.5-4.5 KB (p = 3) and 6.6-7.6 KB (p = 8); 5.2 KB at p = 3
+// (24 000 unknowns) since each accepted step counts the tangent's unstable directions
+// (its banded block LDL^T). Used: a fit
+// in p with ~4 % to spare. The reference raises p to fem::kMaxDegree (checks.hpp).
+double memory_estimate(const ring::Scene& s, int count) {
+  const double p = s.fem.reference || s.needs_reference() ? fem::kMaxDegree : s.fem.degree;
+  const double unknowns = (s.ring.theory == ring::Theory::timoshenko ? 3.0 : 2.0) * p * s.fem.elements;
+  if (count == 0) return unknowns * (3400.0 + 650.0 * p);
+  // Modes under load: the statics, then the dense pencil (three N x N matrices and the
+  // eigen-solve's work, fem_reference/preload.hpp), ~100 N^2.
+  if (s.modes.preload_static) return unknowns * (3400.0 + 650.0 * p) + 100.0 * unknowns * unknowns;
+  const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
+  return unknowns * (factor_peak + 85.0 * std::max(0, count - 23));
 }
 
 }  // namespace fem

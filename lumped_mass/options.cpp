@@ -1,5 +1,7 @@
 #include "lumped_mass/options.hpp"
 
+#include <algorithm>
+
 namespace lumped {
 
 const ring::OptionSchema& option_schema() {
@@ -24,6 +26,36 @@ ring::LumpedOptions read_options(const ring::OptionValues& v) {
               : variant == "timoshenko-frame" ? ring::LumpedOptions::Variant::timoshenko_frame
                                               : ring::LumpedOptions::Variant::chain;
   return o;
+}
+
+// Working memory per node, fitted to the peak RSS measured at n = 10^3 ... 6 10^5: the
+// sparse LU's peak, or (from ~20 modes up) the factors plus the Lanczos basis,
+// 40 bytes per node and mode. Modes, with count 23: chain 4.1-4.4 KB, frame 5.8-5.9 KB,
+// frame-consistent 7.8-8.3 KB per node (linear up to n = 6 10^5, 4.6 GB); the nonlinear
+// chain 4.5 KB (statics) to 5.0 KB (response; 5.3-5.5 KB at n = 10^4, 3 10^4 since it
+// carries the hinge rotations' state, q = (x, chi), and their mass beside the translational
+// one: 172.5 MB measured at 3 10^4, where 5.2 KB had been 165.4); the corotational frames'
+// statics 5.4 and 4.6 KB at n = 10^4, 3 10^4 (the process included). Used: those with 3-5 %
+// to spare.
+double memory_estimate(const ring::Scene& s, int count) {
+  const double n = s.lumped.n;
+  const bool frame = s.lumped.variant != ring::LumpedOptions::Variant::chain;
+  if (count == 0) return (frame ? 5600.0 : 5700.0) * n;
+  // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
+  // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
+  if (s.modes.preload_static) return (frame ? 600.0 : 100.0) * n * n;
+  auto per_node = [count](double factor_peak, double with_basis) {
+    return std::max(factor_peak, with_basis + 40.0 * count);
+  };
+  switch (s.lumped.variant) {
+    case ring::LumpedOptions::Variant::chain: return n * per_node(4370.0, 3990.0);
+    case ring::LumpedOptions::Variant::frame: return n * per_node(6110.0, 4250.0);
+    case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(8560.0, 7600.0);
+    // Measured 7.7, 7.5, 7.5 KB per node at n = 10^4, 3 10^4, 10^5 (count 23): the factors'
+    // peak; the mixed system has 7n rows (4 strains per element) but a diagonal mass.
+    case ring::LumpedOptions::Variant::timoshenko_frame: return n * per_node(7900.0, 7000.0);
+  }
+  return 0.0;
 }
 
 }  // namespace lumped
