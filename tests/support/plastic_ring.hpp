@@ -12,6 +12,9 @@
 //    quarter's virtual moment m = -(R/2) sin(theta) (zero at the hinge, so the hinge's
 //    rotation does no virtual work) gives delta = (2 R^2 / EI)(pi P R / 8 - Mp), until
 //    M(pi/2) = Mp - P R / 2 reaches -Mp: the four-hinge mechanism at P_c = 4 Mp / R.
+//  - The hinges' rotation: each quarter's end sections stay parallel, so half a hinge's
+//    rotation balances the quarter's bending, phi / 2 + (R / EI) int M dtheta = 0, giving
+//    phi = (R / EI)(P R - pi Mp); the plastic work of the two hinges is 2 Mp phi.
 //  - Unloading from P* is elastic: the residual closing is delta(P*) - (pi/4 - 2/pi) P* R^3 / EI
 //    and the residual moment under the loads Mp - P* R / pi.
 // Geometrically exact models deviate from these by O(delta / R): keep Mp R / EI small.
@@ -30,6 +33,10 @@ struct PinchedPlasticRing {
   double closing(double P) const {
     return P <= first_yield() ? elastic_closing(P) : 2.0 * R * R / EI * (M_PI * P * R / 8.0 - Mp);
   }
+  /// The rotation of each hinge under the loads at P in [P_y, P_c], rad.
+  double hinge_rotation(double P) const { return P <= first_yield() ? 0.0 : R / EI * (P * R - M_PI * Mp); }
+  /// The plastic work done when loaded to P in [0, P_c] (unloading adds none), J.
+  double dissipated(double P) const { return 2.0 * Mp * hinge_rotation(P); }
   /// The closing left after loading to P* (<= P_c) and unloading, m.
   double residual_closing(double P) const { return closing(P) - elastic_closing(P); }
   /// The moment left under the loads after loading to P* (in [P_y, P_c]) and unloading, N m.
