@@ -6,7 +6,7 @@
 #  - a tiny FE scene through the installed command (`modes ... --solver fem`);
 #  - with PYTHON: the installed module (PYTHONPATH = the prefix's site-packages only) imports
 #    from the prefix, computes the same FE frequencies as the command, and the plug-in it
-#    mapped is the prefix's (/proc/self/maps).
+#    mapped is the prefix's (/proc/self/maps); its type stubs ringvib.pyi lie beside it.
 # Environments are emptied (env -i): no RINGVIB_FEM_MODULE, no LD_LIBRARY_PATH.
 set -euo pipefail
 cmake=$1 build=$2 bindir=$3 plugindir=$4 datadir=$5 python=${6:-} pythondir=${7:-}
@@ -36,6 +36,7 @@ run ringvib "${args[@]}" --json > "$tmp/modes.json" || fail "installed ringvib $
 echo "ringvib ${args[*]}: $(wc -c < "$tmp/modes.json") bytes of JSON"
 
 if [ -n "$python" ]; then
+  [ -f "$P/$pythondir/ringvib.pyi" ] || fail "no type stubs at $P/$pythondir/ringvib.pyi"
   run PYTHONPATH="$P/$pythondir" PYTHONDONTWRITEBYTECODE=1 "$python" - "$P" "$build" "$scene" "$tmp/modes.json" <<'PY'
 import json, sys
 prefix, build, scene, command_json = sys.argv[1:]
