@@ -309,25 +309,38 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir) {
   return 0;
 }
 
+namespace {
+/// What bench can time, checked before anything runs (the nonlinear reference and the
+/// recorded loaded point included).
+void check_bench(const ring::Scene& s) {
+  if (!modal(s) && !s.response && !s.statics && !s.buckling)
+    throw ring::InputError(s.file, "modes",
+                           "`bench` times modes, a [response], a [static] or a [buckling], and the scene has none");
+  if (s.response || s.statics || s.buckling) check_bench_nonlinear(s);
+}
+}  // namespace
+
+BenchRun run_bench(const ring::Scene& s, std::ostream* progress) {
+  check_bench(s);
+  // The modal sweep for the solvers whose modes the scene lists, the nonlinear sweeps for
+  // its [response] and [static].
+  BenchRun r;
+  if (modal(s)) r.modal = bench(s, compute_references(s, progress), progress);
+  r.nonlinear = bench_nonlinear(s, progress);
+  return r;
+}
+
 int cmd_bench(const CommonArgs& a, const std::string& out_dir) {
   const ring::Scene s = load(a);
-  if (!modal(s) && !s.response && !s.statics && !s.buckling)
-    throw ring::InputError(a.scene, "modes",
-                           "`bench` times modes, a [response], a [static] or a [buckling], and the scene has none");
+  check_bench(s);
   const Progress p(a.quiet);
-  if (s.response || s.statics || s.buckling) check_bench_nonlinear(s);
   Outputs files;
   if (!out_dir.empty()) files.folder(out_dir, "--out", kBenchNames);
   files.open();
-  std::ostream* progress = p.stream();
-  // The modal sweep for the solvers whose modes the scene lists, the nonlinear sweeps for
-  // its [response] and [static].
-  std::optional<BenchStudy> modal_study;
-  if (modal(s)) {
-    modal_study = bench(s, compute_references(s, progress), progress);
-    std::cout << bench_text(*modal_study);
-  }
-  const std::vector<NonlinearBench> nonlinear = bench_nonlinear(s, progress);
+  const BenchRun run = run_bench(s, p.stream());
+  const std::optional<BenchStudy>& modal_study = run.modal;
+  const std::vector<NonlinearBench>& nonlinear = run.nonlinear;
+  if (modal_study) std::cout << bench_text(*modal_study);
   for (const NonlinearBench& b : nonlinear) std::cout << (modal_study ? "\n" : "") << bench_nonlinear_text(b);
   if (!out_dir.empty()) {
     if (modal_study) write_bench(files.stage(), *modal_study);

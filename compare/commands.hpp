@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "compare/bench.hpp"
+#include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
 #include "ring/scene.hpp"
 
@@ -40,6 +42,14 @@ int cmd_converge(const CommonArgs& a, const std::string& out_dir);
 /// when the scene asks for no modes.
 ConvergenceStudy run_converge(const ring::Scene& s, std::ostream* progress);
 int cmd_bench(const CommonArgs& a, const std::string& out_dir);
+/// The studies `ringvib bench` prints (and the Python module's bench returns): the modal
+/// sweep when the scene asks for modes, one sweep per nonlinear analysis. Throws
+/// ring::InputError when the scene asks for nothing bench can time.
+struct BenchRun {
+  std::optional<BenchStudy> modal;
+  std::vector<NonlinearBench> nonlinear;
+};
+BenchRun run_bench(const ring::Scene& s, std::ostream* progress);
 /// Writes the input deck of an external solver (calculix: DIR/ring.inp, the deck its
 /// column runs for modes.count modes) without running it.
 int cmd_export_deck(const CommonArgs& a, const std::string& solver, const std::string& out_dir);

@@ -152,6 +152,74 @@ auto released(F&& f) -> decltype(f()) {
   return out;
 }
 
+/// A progress stream for a Python callable: each line the study writes (ended by a newline
+/// or a carriage return, as the command's progress redraws) is passed to `callback(line)`
+/// with the GIL taken, from the solving thread. An exception the callback raises is kept,
+/// later lines are dropped, and the call raises it when the study ends.
+class CallbackProgress : public std::streambuf {
+ public:
+  explicit CallbackProgress(py::object callback) : callback_(std::move(callback)) {}
+  ~CallbackProgress() override {
+    py::gil_scoped_acquire gil;
+    callback_ = py::object();
+  }
+  /// With the GIL: raises what the callback raised, if anything.
+  void raise_if_failed() {
+    if (!failed_) return;
+    py::error_already_set e = std::move(*failed_);
+    failed_.reset();
+    throw e;
+  }
+
+ protected:
+  int overflow(int c) override {
+    if (c == EOF) return 0;
+    if (c == '\n' || c == '\r') flush_line();
+    else line_ += static_cast<char>(c);
+    return c;
+  }
+
+ private:
+  void flush_line() {
+    if (line_.empty()) return;
+    py::gil_scoped_acquire gil;
+    if (!failed_) try {
+        callback_(line_);
+      } catch (py::error_already_set& e) {
+        failed_.emplace(std::move(e));
+      }
+    line_.clear();
+  }
+  py::object callback_;
+  std::string line_;
+  std::optional<py::error_already_set> failed_;
+};
+
+/// A bench study's points as a dict of arrays (one entry per point).
+py::dict bench_points(const cmp::BenchStudy& b) {
+  std::vector<double> seconds, max_error, mean_error;
+  std::vector<long long> size, unknowns, repeats;
+  py::list curve;
+  for (const cmp::BenchPoint& p : b.points) {
+    curve.append(p.curve);
+    size.push_back(p.size);
+    unknowns.push_back(p.unknowns);
+    repeats.push_back(p.repeats);
+    seconds.push_back(p.seconds);
+    max_error.push_back(p.max_error);
+    mean_error.push_back(p.mean_error);
+  }
+  py::dict d;
+  d["curve"] = curve;
+  d["size"] = py::array_t<long long>(size.size(), size.data());
+  d["unknowns"] = py::array_t<long long>(unknowns.size(), unknowns.data());
+  d["seconds"] = py::array_t<double>(seconds.size(), seconds.data());
+  d["repeats"] = py::array_t<long long>(repeats.size(), repeats.data());
+  d["max_error_pct"] = py::array_t<double>(max_error.size(), max_error.data());
+  d["mean_error_pct"] = py::array_t<double>(mean_error.size(), mean_error.data());
+  return d;
+}
+
 const char* const kBudgetDoc =
     "max_memory_gib: the cost guard's budget (GiB; the command's --max-memory), force: skip the\n"
     "guard (--force).";
@@ -518,6 +586,57 @@ PYBIND11_MODULE(ringvib, m) {
                    "error) and series, a list of dicts with name, parameter ('n' or 'elements'), size,\n"
                    "max_error_pct, mean_error_pct, seconds (ndarrays, one value per refinement) and\n"
                    "fitted_order. ") +
+       kBudgetDoc)
+          .c_str());
+
+  m.def(
+      "bench",
+      [](const Scene& s, py::object progress, double max_memory_gib, bool force) {
+        std::optional<CallbackProgress> buffer;
+        std::optional<std::ostream> stream;
+        if (!progress.is_none()) {
+          buffer.emplace(progress);
+          stream.emplace(&*buffer);
+        }
+        const cmp::BenchRun r = released([&] {
+          return input_checked(s.scene, [&] {
+            cmp::check_runnable(s.scene, max_memory_gib, force);
+            return cmp::run_bench(s.scene, stream ? &*stream : nullptr);
+          });
+        });
+        if (buffer) buffer->raise_if_failed();
+        py::dict out;
+        out["modal"] = py::none();
+        if (r.modal) {
+          py::dict d;
+          d["modes"] = r.modal->modes;
+          d["reference_seconds"] = r.modal->reference_seconds;
+          d["points"] = bench_points(*r.modal);
+          out["modal"] = d;
+        }
+        py::list nonlinear;
+        for (const cmp::NonlinearBench& b : r.nonlinear) {
+          py::dict d;
+          d["analysis"] = b.analysis;
+          d["loaded_point"] = b.loaded_point;
+          d["reference_value"] = b.reference_value;
+          d["reference_seconds"] = b.reference_seconds;
+          d["points"] = bench_points(b.study);
+          nonlinear.append(d);
+        }
+        out["nonlinear"] = nonlinear;
+        return out;
+      },
+      py::arg("scene"), py::kw_only(), py::arg("progress") = py::none(), py::arg("max_memory_gib") = 8.0,
+      py::arg("force") = false,
+      (std::string("Run time against error, as `ringvib bench SCENE` (its bench*.csv with --out): a dict\n"
+                   "with 'modal' (None, or a dict of modes, reference_seconds and points) and 'nonlinear' (a\n"
+                   "list of dicts, one per analysis: analysis, loaded_point (deg), reference_value (m),\n"
+                   "reference_seconds and points). points: a dict of curve (list of names), size, unknowns,\n"
+                   "seconds (median solver time), repeats, max_error_pct, mean_error_pct (ndarrays, one value\n"
+                   "per point). progress: a callable given each progress line (str), from the solving thread\n"
+                   "with the GIL held; an exception it raises is raised when the study ends. Times are this\n"
+                   "machine's, under its load: read them as ratios within one study. ") +
        kBudgetDoc)
           .c_str());
 

@@ -170,6 +170,32 @@ def test_static_path_equals_the_commands_json():
             assert row["ux_" + name] == d["ux"] and row["uy_" + name] == d["uy"]
 
 
+def test_bench_equals_the_commands_csv(tmp_path):
+    # The same sweep as the command's: the same solvers, sizes and errors (times differ run to
+    # run); the progress callback receives the study's lines as str.
+    values = {"static.solvers": ["multibody"]}
+    texts = {"static.solvers": '["multibody"]'}
+    lines = []
+    b = ringvib.bench(ringvib.Scene.load(scene_path("paper1990-static-compare.toml"), set=values),
+                      progress=lines.append)
+    run = command("bench", scene_path("paper1990-static-compare.toml"), "-q", "--out", str(tmp_path / "out"),
+                  *sets(texts))
+    assert run.returncode == 0, run.stderr
+    header, rows = csv_table((tmp_path / "out" / "bench_static.csv").read_text())
+    assert b["modal"] is None and len(b["nonlinear"]) == 1
+    static = b["nonlinear"][0]
+    assert static["analysis"] == "static"
+    points = static["points"]
+    assert points["curve"] == [r[header.index("solver")] for r in rows]
+    assert points["size"].tolist() == [int(r[header.index("size")]) for r in rows]
+    assert points["max_error_pct"].tolist() == pytest.approx([float(r[header.index("error_pct")]) for r in rows],
+                                                              rel=1e-10)
+    assert static["reference_value"] == pytest.approx(float(rows[0][header.index("reference_m")]), rel=1e-10)
+    assert (points["seconds"] > 0).all()
+    assert lines and all(isinstance(line, str) and line for line in lines)
+    assert lines[0] == "ringvib: computing the converged static reference"
+
+
 def test_static_table_equals_the_commands_json():
     values = {"static.solvers": ["multibody", "lumped"]}
     texts = {"static.solvers": '["multibody", "lumped"]'}
