@@ -16,7 +16,9 @@
 #include <memory>
 #include <vector>
 
+#include "multibody/buckling.hpp"
 #include "multibody/chain.hpp"
+#include "multibody/dynamics.hpp"
 #include "multibody/natural.hpp"
 #include "multibody/static_equilibria.hpp"
 #include "multibody/statics.hpp"
@@ -302,6 +304,28 @@ TEST(PlasticStatics, TimoshenkoChainRefusesThePlasticLawNamingTheKey) {
   } catch (const ring::InputError& e) {
     EXPECT_EQ(e.key(), "ring.plastic");
   }
+}
+
+// What the chain cannot take yet refuses by key before it computes (the scene reader refuses
+// these too; the library's own checks hold for a caller that builds the spec itself).
+TEST(PlasticStatics, ResponseBucklingAndModesUnderLoadRefuseThePlasticLaw) {
+  const ring::RingSpec spec = ring_with(plastic_moment());
+  const ring::MultibodyOptions o = mbtest::chain_options(16, Method::dense);
+  auto key_of = [](auto&& run) -> std::string {
+    try {
+      run();
+    } catch (const ring::InputError& e) {
+      return e.key();
+    }
+    return "no refusal";
+  };
+  ring::ResponseOptions response;
+  response.loads = pinch(kPeak, {}).loads;
+  EXPECT_EQ(key_of([&] { multibody::respond(spec, o, response); }), "ring.plastic");
+  ring::BucklingOptions buckling;
+  buckling.loads = pinch(kPeak, {}).loads;
+  EXPECT_EQ(key_of([&] { multibody::compute_buckling(spec, o, buckling); }), "ring.plastic");
+  EXPECT_EQ(key_of([&] { multibody::compute_modes_under_load(spec, o, pinch(kPeak, {1.0}), 2); }), "ring.plastic");
 }
 
 }  // namespace
