@@ -7,11 +7,16 @@
 
 #include "modal/buckling.hpp"
 #include "multibody/statics.hpp"
+#include "ring/errors.hpp"
 
 namespace multibody {
 
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling) {
+  if (spec.plastic)
+    throw ring::InputError("", "ring.plastic",
+                           "multibody linear buckling is about the undeformed, elastic ring and would ignore the "
+                           "plastic law: follow the nonlinear statics ([static]) instead, or remove ring.plastic");
   if (options.method == ring::MultibodyOptions::Method::sparse)
     throw std::invalid_argument("multibody.method = \"sparse\": linear buckling is computed on the dense path (segment "
                                 "angles) only; use \"dense\" or \"auto\"");

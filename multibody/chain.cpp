@@ -1,5 +1,7 @@
 #include "multibody/chain.hpp"
 
+#include "multibody/bending.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -29,7 +31,7 @@ Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
   l_ = 2.0 * kPi * spec.radius / n_;
   m_ = spec.rhoA() * l_;
   jr_ = options.rotary_inertia ? m_ * l_ * l_ / 12.0 : 0.0;
-  k_ = spec.EI() / l_;
+  k_ = hinge_stiffness(spec, l_);
   rp_ = l_ / (2.0 * std::sin(kPi / n_));
 
   anchor_deg_ = ring::wrap_degrees(spec.anchor());

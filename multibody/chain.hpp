@@ -14,7 +14,8 @@
 // Segment i (i = 0..n-1) runs from hinge i to hinge i+1 (hinge n = hinge 0), so the
 // chain is traversed counter-clockwise. Segment mass m = rho A l at its midpoint,
 // rotary inertia Jr = m l^2 / 12 about it (0 when MultibodyOptions::rotary_inertia is
-// false). A rotational spring K = EI / l sits at every hinge (n springs): the spring at
+// false). A rotational spring K = EI / l sits at every hinge (n springs; its law, elastic
+// or ring.plastic's, is bending.hpp's, and K its rest stiffness): the spring at
 // hinge k joins segments k-1 and k (hinge 0 joins segments n-1 and 0).
 //
 // ## Coordinates q (ordering)
@@ -72,7 +73,7 @@ class Chain {
   double l() const { return l_; }                ///< segment length, m
   double m() const { return m_; }                ///< segment mass rho A l, kg
   double Jr() const { return jr_; }              ///< segment rotary inertia, kg m^2 (0 if off)
-  double K() const { return k_; }                ///< hinge spring EI / l, N m / rad
+  double K() const { return k_; }                ///< hinge spring at rest, EI / l, N m / rad (bending.hpp)
   double circumradius() const { return rp_; }    ///< Rp = l / (2 sin(pi/n)), m
   bool free() const { return free_; }            ///< no pin: two translation coordinates
   int dofs() const { return free_ ? n_ + 2 : n_; }

@@ -6,6 +6,7 @@
 
 #include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
+#include "ring/errors.hpp"
 
 namespace multibody {
 using detail::has_point_inertia;
@@ -57,6 +58,14 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                                   "eigenvectors): set multibody.method = \"dense\"");
   }
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
+  // The plastic law acts on the hinge springs' moment (bending.hpp); the Timoshenko chain
+  // condenses its springs with the shear into one constant K_c (sections.hpp), which has no
+  // hinge moment to return-map.
+  if (spec.plastic && spec.theory == ring::Theory::timoshenko)
+    throw ring::InputError("", "ring.plastic",
+                           "the multibody Timoshenko chain (multibody.theory or ring.theory = \"timoshenko\") takes no plastic law yet: its "
+                           "hinge springs are condensed with the shear into one constant stiffness; use multibody.theory = "
+                           "\"euler-bernoulli\" or remove ring.plastic");
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
   // that, so refuse rather than guess.
@@ -73,6 +82,10 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
                            const ring::StaticOptions& statics) {
   check_modes(spec, options);
   check_static(spec, options, statics);
+  if (spec.plastic)
+    throw ring::InputError("", "ring.plastic",
+                           "the multibody modes under load take the elastic tangent at the loaded equilibrium, which "
+                           "a plastic ring does not have: remove modes.preload or ring.plastic");
   if (spec.theory == ring::Theory::timoshenko && spec.supports.free())
     throw std::invalid_argument("multibody modes.preload = \"static\": the Timoshenko chain's modes under load need "
                                 "a pinned ring (supports.pin)");
@@ -83,6 +96,10 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
+  if (spec.plastic)
+    throw ring::InputError("", "ring.plastic",
+                           "the multibody forced response takes no plastic law yet (its integrators assemble the "
+                           "elastic hinge springs): only the nonlinear statics do; remove [response] or ring.plastic");
   // The shear angles live on the dense angle path only (sections.hpp); "auto" keeps it dense.
   if (spec.theory == ring::Theory::timoshenko) {
     if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)

@@ -104,6 +104,12 @@ Vec6 local(const Natural& c, const Vec& x, int k) {
   return y;
 }
 
+Vec turning_changes(const Natural& c, const Vec& x) {
+  Vec e(c.n);
+  for (int k = 0; k < c.n; ++k) e[k] = turn_angle(local(c, x, k)) - c.theta0;
+  return e;
+}
+
 double spring_energy(const Natural& c, const Vec& x) {
   double V = 0.0;
   for (int k = 0; k < c.n; ++k) {
@@ -217,6 +223,13 @@ void add_mass(const Natural& c, double scale, BandedKkt& kkt) {
 
 namespace {
 
+/// Adds a moment M(theta) with tangent dM/dtheta on an angle t at hinge `at`: its force
+/// M grad theta and Jacobian (dM/dtheta) grad theta grad theta^T + M Hess theta.
+void add_angle_moment(const Natural& c, int at, double moment, double tangent, const Turn& t, Vec& force,
+                      BandedKkt& kkt) {
+  add_spring(c, at, moment * t.d, tangent * t.d * t.d.transpose() + moment * t.dd, force, kkt);
+}
+
 /// Adds the energy k (t.theta - t0)^2 / 2 of an angle t at hinge `at` (its force and
 /// Jacobian) to `force` and the KKT matrix.
 void add_angle_spring(const Natural& c, int at, double k, const Turn& t, double t0, Vec& force, BandedKkt& kkt) {
@@ -227,10 +240,16 @@ void add_angle_spring(const Natural& c, int at, double k, const Turn& t, double 
 }  // namespace
 
 void add_stiffness(const Chain& chain, const Natural& c, const detail::Attachments& terms, const Vec& x, Vec& force,
-                   BandedKkt& kkt) {
+                   BandedKkt& kkt, const HingeBending* bending) {
   for (int k = 0; k < c.n; ++k) {
     const Vec6 y = local(c, x, k);
-    add_angle_spring(c, k, c.K, turn(y), c.theta0, force, kkt);
+    const Turn t = turn(y);
+    if (bending) {
+      const HingeBending::Point b = bending->at(k, t.theta - c.theta0);
+      add_angle_moment(c, k, b.force, b.tangent, t, force, kkt);
+    } else {
+      add_angle_spring(c, k, c.K, t, c.theta0, force, kkt);
+    }
     // kr and the clamp on the mean rotation of the hinge's links (attachments.hpp).
     if (const double kr = terms.rotation_stiffness(k); kr > 0.0)
       add_angle_spring(c, k, kr, mean_rotation(y, rest_link(chain, k - 1), rest_link(chain, k)), 0.0, force, kkt);

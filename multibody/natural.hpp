@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "multibody/bending.hpp"
 #include "multibody/bordered_band.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/statics.hpp"
@@ -73,6 +74,9 @@ Eigen::Vector2d rest_link(const Chain& chain, int k);
 double turn_angle(const Vec6& y);
 /// The six coordinates of hinge k and its neighbours.
 Vec6 local(const Natural& c, const Vec& x, int k);
+/// The change of every hinge's turning angle from rest, theta_k - 2 pi / n (rad): the
+/// hinges' strains (bending.hpp). O(n).
+Vec turning_changes(const Natural& c, const Vec& x);
 double spring_energy(const Natural& c, const Vec& x);
 /// M v for the constant bar mass matrix. O(n).
 Vec mass_times(const Natural& c, const Vec& v);
@@ -155,8 +159,10 @@ void add_hinge_spring(const detail::Attachments& terms, int k, const Vec& x, dou
 /// and the clamp on the mean rotation of a hinge's links, the foundation and the
 /// translational springs on the hinges' displacements (attachments.hpp, by hinge). Adds its
 /// gradient at x to `force` (2n) and its Hessian to `kkt`. O(n).
+/// The hinge springs follow `bending` (bending.hpp: its trial law from the committed states)
+/// when given, else the rest stiffness c.K (the linear modes' tangent at rest).
 void add_stiffness(const Chain& chain, const Natural& c, const detail::Attachments& terms, const Vec& x, Vec& force,
-                   BandedKkt& kkt);
+                   BandedKkt& kkt, const HingeBending* bending = nullptr);
 
 /// The largest change of a link's direction that the position correction dx makes,
 /// |dx_{k+1} - dx_k| / l (rad, to first order): compared with detail::kBasin, as the

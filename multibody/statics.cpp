@@ -20,12 +20,13 @@
 #include "multibody/dynamics_sparse.hpp"
 #include "multibody/linear_model.hpp"
 #include "multibody/sections.hpp"
+#include "multibody/static_equilibria.hpp"
 
 namespace multibody {
 namespace detail {
 
-StaticEquilibrium::StaticEquilibrium(const Chain& chain, double depth)
-    : chain_(chain), depth_(depth), gap_(contact_gap(chain, depth)) {}
+StaticEquilibrium::StaticEquilibrium(const Chain& chain, const ring::RingSpec& spec, double depth)
+    : chain_(chain), depth_(depth), gap_(contact_gap(chain, depth)), bending_(spec, chain) {}
 
 ring::PathPoint StaticEquilibrium::path_point(double s, const Eigen::Matrix2Xd& p) const {
   ring::PathPoint pt;
@@ -42,6 +43,8 @@ ring::PathPoint StaticEquilibrium::path_point(double s, const Eigen::Matrix2Xd& 
     least = std::min(least, d);
   }
   pt.ovalisation = (most - least) / chain_.circumradius();
+  pt.dissipated = dissipated();
+  pt.plastic_curvature = plastic_curvature();
   for (int k = 0; k < n; k += ring::path_shape_stride(n)) {
     pt.node_x.push_back(p(0, k));
     pt.node_y.push_back(p(1, k));
@@ -56,6 +59,8 @@ std::optional<double> StaticEquilibrium::clearance(const paths::State& x) {
 std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State& from, const paths::State& to) {
   const Eigen::Matrix2Xd p = hinges(to.z);
   if (recording_ && path_.empty()) path_.push_back(path_point(from.s, hinges(from.z)));
+  // The step converged: its trial plastic states become the committed ones (ring/plastic.hpp).
+  bending_.commit(hinge_strains(to.z));
   if (recording_) path_.push_back(path_point(to.s, p));
   const ClosestPair cp = closest_contact(p, chain_.l(), gap_, depth_);
   if (cp.distance >= depth_) return std::nullopt;
@@ -68,8 +73,9 @@ std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State& from, 
 namespace detail {
 
 DenseTangent::DenseTangent(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads,
-                           const std::string& section)
+                           const std::string& section, const HingeBending* bending)
     : chain_(chain),
+      bending_(bending),
       loads_(chain, spec, loads, section),
       terms_(chain, spec),
       shear_(spec.theory == ring::Theory::timoshenko),
@@ -80,7 +86,9 @@ DenseTangent::DenseTangent(const Chain& chain, const ring::RingSpec& spec, const
 Chain::ConstraintKinematics DenseTangent::constraints(const Vector& q) const { return terms_.constraints(q); }
 
 Vector DenseTangent::internal_forces(const Vector& q) const {
-  Vector forces = shear_ ? Vector(K_ * (q - chain_.q0())) : chain_.spring_forces(q);
+  Vector forces = shear_     ? Vector(K_ * (q - chain_.q0()))
+                  : bending_ ? bending_->forces_on_angles(chain_, q)
+                             : chain_.spring_forces(q);
   terms_.add_stiffness(q, forces, nullptr, !shear_);  // Timoshenko: the rotations' terms are in K_c
   return forces;
 }
@@ -92,7 +100,10 @@ void DenseTangent::add_terms(const Vector& q, Eigen::Ref<Matrix> T) const {
 
 void DenseTangent::add_tangent(const Vector& q, const Vector& lambda, double s, const Chain::ConstraintKinematics& ck,
                                Eigen::Ref<Matrix> T) const {
-  T += K_;
+  if (bending_ && !shear_)
+    bending_->add_tangent_on_angles(chain_, q, T);
+  else
+    T += K_;
   add_terms(q, T);
   loads_.add_stiffness(q, s, T);
   T.diagonal() += ck.hess.transpose() * lambda;
@@ -108,8 +119,8 @@ namespace {
 class AngleStatics : public detail::StaticEquilibrium {
  public:
   AngleStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
-      : StaticEquilibrium(chain, depth),
-        tangent_(chain, spec, loads, "static"),
+      : StaticEquilibrium(chain, spec, depth),
+        tangent_(chain, spec, loads, "static", &bending_),
         n_(tangent_.dofs()),
         c_(tangent_.rows()),
         sc_(chain.K() / chain.l()) {}
@@ -160,6 +171,9 @@ class AngleStatics : public detail::StaticEquilibrium {
     return d;
   }
   Eigen::Matrix2Xd hinges(const paths::Vector& z) const override { return chain_.hinge_positions(z.head(n_)); }
+  Eigen::VectorXd hinge_strains(const paths::Vector& z) const override {
+    return chain_.hinge_rotations(z.head(n_));
+  }
   paths::Vector rest() const override {
     paths::Vector z = paths::Vector::Zero(n_ + c_);
     z.head(n_) = chain_.q0();
@@ -180,6 +194,11 @@ class AngleStatics : public detail::StaticEquilibrium {
 };
 
 }  // namespace
+
+std::unique_ptr<detail::StaticEquilibrium> detail::angle_equilibrium(const Chain& chain, const ring::RingSpec& spec,
+                                                                     const ring::Loads& loads, double depth) {
+  return std::make_unique<AngleStatics>(chain, spec, loads, depth);
+}
 
 ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                            const ring::StaticOptions& statics, int count) {
@@ -268,7 +287,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   if (backend(options, spec, statics) == Backend::banded)
     eq = natural::static_equilibrium(ch, spec, statics.loads, depth);
   else
-    eq = std::make_unique<AngleStatics>(ch, spec, statics.loads, depth);
+    eq = detail::angle_equilibrium(ch, spec, statics.loads, depth);
   paths::Continuation policy;
   policy.steps = statics.steps;
   policy.history = statics.history;
@@ -300,6 +319,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
     const Eigen::Vector2d u = hp.col(k) - ch.hinge_rest(k);
     res.displacements.push_back({a, u.x(), u.y()});
   }
+  res.dissipated = eq->dissipated();
+  res.plastic_curvature = eq->plastic_curvature();
   res.node_x.assign(hp.row(0).begin(), hp.row(0).end());
   res.node_y.assign(hp.row(1).begin(), hp.row(1).end());
   return res;

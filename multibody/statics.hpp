@@ -28,6 +28,7 @@
 
 #include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
+#include "multibody/bending.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/loading.hpp"
 #include "paths/continuation.hpp"
@@ -53,7 +54,10 @@ namespace detail {
 class DenseTangent {
  public:
   /// `section` names the keys of the loads in messages ("static", "buckling").
-  DenseTangent(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section);
+  /// `bending` (bending.hpp), when given, is the hinge springs' law (read at each call, so
+  /// its commits show); else the springs are the rest stiffness K (linear buckling).
+  DenseTangent(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section,
+               const HingeBending* bending = nullptr);
   Eigen::Index dofs() const { return n_; }
   Eigen::Index rows() const { return c_; }
   const Loading& loads() const { return loads_; }
@@ -69,6 +73,7 @@ class DenseTangent {
 
  private:
   const Chain& chain_;
+  const HingeBending* bending_;  ///< the hinge springs' law, or nullptr: K_
   const Loading loads_;      ///< point loads, pressure, gravity
   const Attachments terms_;  ///< foundation, springs, clamp, further pins
   const bool shear_;         ///< the Timoshenko chain: K_ is K_c, with the terms on the rotations
@@ -77,15 +82,25 @@ class DenseTangent {
 };
 
 /// The chain's static equilibrium in one backend's unknowns, for the continuation driver;
-/// the self-contact check (the end of the path) is common to both.
+/// the self-contact check (the end of the path) and the hinges' bending law (bending.hpp:
+/// elastic, or ring.plastic's, committed at every accepted equilibrium) are common to both.
 class StaticEquilibrium : public paths::Equilibrium {
  public:
-  StaticEquilibrium(const Chain& chain, double depth);
+  StaticEquilibrium(const Chain& chain, const ring::RingSpec& spec, double depth);
   /// Every hinge's position for the unknowns z (ring-centred frame, m).
   virtual Eigen::Matrix2Xd hinges(const paths::Vector& z) const = 0;
   /// The unknowns of the undeformed ring, unloaded.
   virtual paths::Vector rest() const = 0;
+  /// The change of every hinge's turning angle from rest for the unknowns z (n, rad): the
+  /// strains of bending.hpp.
+  virtual Eigen::VectorXd hinge_strains(const paths::Vector& z) const = 0;
+  /// Commits the hinges' plastic states at `to` (bending.hpp), records it, checks contact.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override;
+  /// ring.plastic: the plastic work of the accepted path so far (J), and the largest plastic
+  /// rotation over the segment length (1/m). 0 for the elastic law.
+  double dissipated() const { return bending_.dissipated(); }
+  double plastic_curvature() const { return bending_.largest_plastic_rotation() / chain_.l(); }
+  const HingeBending& bending() const { return bending_; }
   /// Distance between the closest non-neighbouring segments minus the section depth. O(n).
   std::optional<double> clearance(const paths::State& x) override;
   /// Records every accepted equilibrium (ring::PathPoint) at these hinges from now on.
@@ -102,6 +117,7 @@ class StaticEquilibrium : public paths::Equilibrium {
   const Chain& chain_;
   const double depth_;
   const int gap_;
+  HingeBending bending_;  ///< the hinges' law and committed states (changes in accept only)
 
  private:
   std::vector<int> record_;

@@ -24,7 +24,7 @@ namespace {
 class PositionStatics : public detail::StaticEquilibrium {
  public:
   PositionStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
-      : StaticEquilibrium(chain, depth),
+      : StaticEquilibrium(chain, spec, depth),
         terms_(chain, spec),
         loads_(chain, spec, loads, "static"),
         c_(make_natural(chain, terms_.pinned_hinges())),
@@ -40,7 +40,7 @@ class PositionStatics : public detail::StaticEquilibrium {
     const Vec x = s.z.head(N_), lambda = s.z.tail(c_.rows());
     kkt_.clear();
     Vec rx = Vec::Zero(N_);
-    add_stiffness(chain_, c_, terms_, x, rx, kkt_);
+    add_stiffness(chain_, c_, terms_, x, rx, kkt_, &bending_);  // the hinges' trial law
     // The loads (loading.hpp) at p_0 .. p_n = p_0: the hinge gradient is dR/ds, kept in b_
     // until the factorization solves for J^-1 dR/ds in place.
     Eigen::Matrix2Xd p(2, c_.n + 1);
@@ -88,6 +88,7 @@ class PositionStatics : public detail::StaticEquilibrium {
   Eigen::Matrix2Xd hinges(const paths::Vector& z) const override {
     return Eigen::Map<const Eigen::Matrix2Xd>(z.data(), 2, c_.n);
   }
+  Eigen::VectorXd hinge_strains(const paths::Vector& z) const override { return turning_changes(c_, z.head(N_)); }
   paths::Vector rest() const override {
     paths::Vector z = paths::Vector::Zero(S_);
     z.head(N_) = natural::rest(chain_);

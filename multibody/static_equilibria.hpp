@@ -1,0 +1,20 @@
+// The two formulations of the chain's static equilibrium that multibody::solve_static chooses
+// between (backend()), as objects for the continuation driver: for a caller that follows a
+// path itself and reads the hinges' committed law between steps (bending.hpp), e.g. to check
+// the energy balance of a plastic path.
+#pragma once
+
+#include <memory>
+
+#include "multibody/chain.hpp"
+#include "multibody/natural.hpp"
+#include "multibody/statics.hpp"
+
+namespace multibody::detail {
+
+/// The dense path: segment angles and multipliers (statics.cpp, AngleStatics), O(n^3) per
+/// Newton iteration. The O(n) path in hinge positions is natural::static_equilibrium.
+std::unique_ptr<StaticEquilibrium> angle_equilibrium(const Chain& chain, const ring::RingSpec& spec,
+                                                     const ring::Loads& loads, double depth);
+
+}  // namespace multibody::detail
