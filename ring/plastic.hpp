@@ -79,7 +79,9 @@ class BilinearLaw {
 
   /// The state after a step converged at strain e.
   PlasticState commit(const PlasticState& s, double e) const {
-    const double plastic = e - at(s, e).force / k_;
+    const Point p = at(s, e);
+    if (!p.yielding) return s;  // elastic: the state stays (e - k (e - e_p) / k would drift by round-off)
+    const double plastic = e - p.force / k_;
     return {plastic, s.accumulated + std::abs(plastic - s.plastic)};
   }
 
