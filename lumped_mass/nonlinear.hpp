@@ -97,9 +97,14 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 /// supports' reactions (the multipliers of their rows) and the forces of the elastic supports
 /// and the foundation, summed, N (x, y). At equilibrium it balances the loads' resultant
 /// (the weight under gravity alone).
+/// `work`: the loads' work along the path (the trapezoidal rule over the accepted steps:
+/// exact for a path linear in the load factor, O(steps^-2) otherwise), J; `stored`: the elastic
+/// energy at the end (the bending law's and the terms'; the frames' axial and shear too), J.
+/// The energy identity: work = stored + result.dissipated.
 struct StaticDetail {
   ring::StaticResult result;
   std::array<double, 2> ground_force{0.0, 0.0};
+  double work = 0.0, stored = 0.0;
 };
 /// How the statics count an equilibrium's unstable directions for the continuation
 /// driver's bifurcation test (stability.hpp): automatic (dense up to n = 200, an O(n)
@@ -123,6 +128,10 @@ struct StaticState {
   Eigen::VectorXd x;               ///< hinge positions (2n, chain.hpp's order), m
   Eigen::VectorXd lambda;          ///< multipliers (links, then supports), N: tangent()'s lambda
   std::vector<ring::PathPoint> path;  ///< the recorded path (only with `record`), rest first
+  double dissipated = 0.0;         ///< ring.plastic: the plastic work along the path, J
+  double plastic_curvature = 0.0;  ///< the largest |plastic hinge rotation| / l at the end, 1/m
+  double work = 0.0;               ///< the loads' work along the path (StaticDetail), J
+  double stored = 0.0;             ///< the elastic energy at the end (StaticDetail), J
 };
 
 /// Follows the chain's static equilibrium under `loads` (chain.hpp, loads.hpp) from rest to
