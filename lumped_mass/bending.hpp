@@ -59,6 +59,8 @@ class Bending {
   double stored(const std::vector<double>& e) const;
 
   bool plastic() const { return plastic_; }
+  /// The committed plastic rotation e_p of point i, rad.
+  double plastic(int i) const { return state_[static_cast<std::size_t>(i)].plastic; }
   double stiffness() const { return law_.stiffness(); }
   /// The plastic work of every committed step so far, J.
   double dissipated() const { return dissipated_; }

@@ -110,11 +110,18 @@ Springs springs(const Chain& c, const Vec& q, double hess_scale) {
     }
   for (int j = 0; j < c.n; ++j) {
     const Turn t = turn(c, q, j, hess_scale != 0.0);
-    const ring::BilinearLaw::Point m = c.bending.at(j, t.theta - c.theta0);
+    const double e = t.theta - c.theta0;
+    const ring::BilinearLaw::Point m = c.bending.at(j, e);
     s.energy += m.potential;
     for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += m.force * t.grad[i];
     if (hess_scale != 0.0) {
-      const Eigen::Matrix<double, 6, 6> H = m.tangent * t.grad * t.grad.transpose() + m.force * t.hess;
+      // tangent grad grad^T + M Hess theta; inside the band M = k (e - e_p), written as the
+      // elastic spring always was, k (grad grad^T + (e - e_p) Hess theta), so that an elastic
+      // chain's tangent is bit for bit the same (the frontal count of unstable directions near a
+      // bifurcation is sensitive to its rounding: bifurcation_test.cpp).
+      const Eigen::Matrix<double, 6, 6> H =
+          m.yielding ? Eigen::Matrix<double, 6, 6>(m.tangent * t.grad * t.grad.transpose() + m.force * t.hess)
+                     : Eigen::Matrix<double, 6, 6>(m.tangent * (t.grad * t.grad.transpose() + (e - c.bending.plastic(j)) * t.hess));
       for (int i = 0; i < 6; ++i)
         for (int p = 0; p < 6; ++p) s.hess.emplace_back(dof(c, j, i), dof(c, j, p), hess_scale * H(i, p));
     }

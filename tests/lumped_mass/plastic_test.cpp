@@ -30,15 +30,14 @@
 // and the closing is -delta(P*). The same argument back to +P* gives the +P* state again:
 // the second visit's closing equals the first's (the loop closes), and each hinge has flowed
 // theta_p -> -theta_p -> theta_p, dissipating 4 Mp theta_p: the dissipation at the second visit
-// is D1 + 2 hinges x 4 Mp theta_p = 5 D1. Both hold for the discrete models too (the argument
-// uses only equilibrium, compatibility and symmetry) at small displacement; the geometrically
-// exact models break the odd symmetry by O(delta / R).
+// is D1 + 2 hinges x 4 Mp theta_p = 5 D1. Both hold for the discrete chain too (the argument
+// uses only equilibrium, compatibility and symmetry, and only the load hinges yield) at small
+// displacement; the geometrically exact chain breaks the odd symmetry by O(delta / R).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,7 +83,8 @@ struct Pinch {
   lumped::StaticDetail detail;
 };
 
-/// The pinch P = `load` Mp / R inward at 90 and 270 deg, through `history`.
+/// The pinch P = `load` x the reference Mp / R (kMp EI / R^2, whatever `mp`) inward at 90 and
+/// 270 deg, through `history`.
 Pinch pinch(Variant v, int n, std::optional<double> mp, double load, std::vector<double> history, int steps = 20,
           bool path = false) {
   const ring::RingSpec spec = plastic_ring(mp);
@@ -117,7 +117,7 @@ const char* name(Variant v) {
 // expected (issue 47's oracle list); the fit's tolerance 0.25 is the geometric deviation
 // O(delta / R) = 1e-4 (the closed forms are small-displacement) against the finest errors
 // ~1e-3 (a 10 % bias of the finest point moves a 4-point slope by up to ~0.15); the ceilings
-// are twice the finest errors the fit extrapolates (measured 1.1e-3, 8.6e-4, 7.7e-4 at n = 128).
+// are twice the finest errors measured (1.1e-3, 8.6e-4, 7.7e-4 at n = 128).
 TEST(PinchedPlasticChain, PeakAndResidualConvergeToLimitAnalysis) {
   const ringtest::PinchedPlasticRing o = oracle();
   const double Ps = 3.5 * o.Mp / o.R;
