@@ -19,7 +19,8 @@
 // - the frames refuse ring.plastic by key (lumped_mass/checks.cpp says why); their work and
 //   stored energy, elastic, balance to the trapezoidal rule's O(ds^2) (fitted);
 // - a fully reversed cycle [1, 0, -1, 0, 1] (below, "the cycle"): what the theory predicts;
-// - hardening 0.1: both rules the same on loading, apart on reversal as each predicts.
+// - hardening 0.1: both rules the same on loading, apart on reversal as each predicts;
+// - past collapse the limit point at the chain's four-hinge mechanism load (derived below).
 //
 // The cycle, perfectly plastic (h = 0: kinematic and isotropic hardening are the same law, the
 // band neither moves nor grows). At +P* the hinges sit at M = +Mp; the other moments follow
@@ -296,6 +297,38 @@ TEST(PinchedPlasticChain, HardeningRulesAgreeOnLoadingAndDifferOnReversal) {
   EXPECT_GT(kin_rev.detail.result.dissipated, iso_rev.detail.result.dissipated);
   EXPECT_LT(kin_rev.closing, iso_rev.closing);
   EXPECT_NEAR(kin_rev.closing, -kin.closing, 1e-3 * kin.closing);
+}
+
+// Past collapse (P = 5 Mp / R > P_c = 4 Mp / R) the path turns at a limit point, and the statics
+// without static.path end there (ring::NumericalError "past a limit point at load factor s").
+// The chain's own mechanism (hinges at the loads and at 0 and 180 deg) collapses where the
+// quarter's moment falls from +Mp at the load to -Mp at the next support hinge over the lever
+// of the polygon's circumradius rho = R (pi/n) / sin(pi/n): P_c,n = 4 Mp / rho
+// = P_c sin(pi/n) / (pi/n). The limit point is there up to the geometric softening of the
+// mechanism once formed, O(delta_c / R) with delta_c = (pi/2 - 1) 2 Mp R^2 / EI: 1.1e-4; so
+// within 2e-4 of P_c,n (measured 4.4e-5 at n = 16, 32, 64), and the error against P_c falls at
+// order 2 (fitted; the tolerance 0.2 for the same O(delta_c / R) bias).
+TEST(PinchedPlasticChain, CollapseAtTheFourHingeMechanism) {
+  const ringtest::PinchedPlasticRing o = oracle();
+  const std::vector<int> ns{16, 32, 64};
+  std::vector<double> errors;
+  for (int n : ns) {
+    double limit = NAN;
+    try {
+      pinch(kChain, n, kMp, 5.0, {1.0});
+      ADD_FAILURE() << "n = " << n << ": the path passed the collapse load";
+    } catch (const ring::NumericalError& e) {
+      const std::string m = e.what(), key = "past a limit point at load factor ";
+      const auto at = m.find(key);
+      ASSERT_NE(at, std::string::npos) << m;
+      limit = std::stod(m.substr(at + key.size()));
+    }
+    const double P = limit * 5.0 * o.Mp / o.R, discrete = o.collapse() * std::sin(M_PI / n) / (M_PI / n);
+    std::printf("[ plastic ] chain n = %d: limit load %.9e N, P_c %.9e, P_c,n %.9e\n", n, P, o.collapse(), discrete);
+    EXPECT_NEAR(P, discrete, 2e-4 * o.collapse()) << "n = " << n;
+    errors.push_back(std::abs(P / o.collapse() - 1.0));
+  }
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.2));
 }
 
 // The frames' statics, elastic: the work of the loads equals the stored energy up to the
