@@ -36,6 +36,18 @@
 // within the step (ChainStatics::clearance), and a bifurcation is passed by branch switching
 // up to n = 200 (the dense least stable direction).
 //
+// ## ring.plastic in the statics (bending.hpp)
+// The hinge springs' law is ring.plastic's resultant law on the hinge rotation (stiffness EI/l,
+// yield Mp, the scene's hardening and rule), its potential in V from the committed states.
+// The statics' equilibrium holds its own copy of the chain whose states accept() commits at
+// every accepted equilibrium (static.history's legs included); every linearization, tangent
+// and stability count between two is the return map from the last committed states. The
+// result carries the plastic work and the largest plastic curvature (StaticResult, PathPoint),
+// StaticDetail the loads' work and the stored energy. Known limit: the driver calls accept()
+// before its bifurcation test, so a path that ends at (or, with static.path, switches at) a
+// bifurcation has committed the states of the bracket's upper end. Only the chain takes the
+// law (checks.hpp); the frames evaluate the same Bending, elastic.
+//
 // ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
 //   M (v_{n+1} - v_n) / h = -f(t_{n+1/2}) grad P(x_m) - grad V(q_m) - C v_m - G(x_m)^T lambda,
 //   (q_{n+1} - q_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   q_m = (q_n + q_{n+1}) / 2,
