@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "lumped_mass/checks.hpp"
@@ -61,12 +62,20 @@ double correction_size(const Frame& f, const Vec& dq, double radius) {
 /// factor_bordered (chain.hpp, shared with the chain's statics). The arc length is measured
 /// on all of q (positions in m, rotations in rad). A bifurcation ends the path (dense count,
 /// up to n = 133); no branch switching; the self-contact check is the chain's on the chords.
-/// ring.plastic: the elements' bending law (bending.hpp) lives in this equilibrium's own copy
-/// of the frame, whose states accept() commits (as the chain's statics do).
+/// ring.plastic: the elements' bending law (bending.hpp) would live in this equilibrium's own
+/// copy of the frame, whose states accept() commits (as the chain's statics do; the frames
+/// refuse the law for now, checks.cpp); an elastic frame is not copied.
 class FrameStatics : public paths::Equilibrium {
  public:
   FrameStatics(const Frame& f, const FrameLoads& loads, double radius)
-      : f_(f), L_(loads), N_(3 * f.n), S_(3 * f.n + static_cast<int>(f.S.rows())), radius_(radius) {}
+      : own_(f.bending.plastic() ? std::optional<Frame>(f) : std::nullopt),
+        f_(own_ ? *own_ : f),
+        L_(loads),
+        N_(3 * f.n),
+        S_(3 * f.n + static_cast<int>(f.S.rows())),
+        radius_(radius) {}
+  FrameStatics(const FrameStatics&) = delete;  // f_ may refer to own_
+  FrameStatics& operator=(const FrameStatics&) = delete;
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -112,7 +121,7 @@ class FrameStatics : public paths::Equilibrium {
   /// trapezoidal rule, as the chain's statics), then the self-contact check.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
     work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
-    f_.bending.commit(bending_strains(f_, to.z.head(N_)));
+    if (own_) own_->bending.commit(bending_strains(f_, to.z.head(N_)));
     const Contact k = closest_nonadjacent(f_.geometry, f_.positions(to.z.head(N_)));
     if (k.distance >= f_.geometry.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(f_.geometry, k) + "; the frame model does not include contact"};
@@ -130,7 +139,8 @@ class FrameStatics : public paths::Equilibrium {
   }
 
  private:
-  Frame f_;  ///< a copy: its bending states are this path's
+  std::optional<Frame> own_;  ///< ring.plastic: a copy, whose bending states are this path's
+  const Frame& f_;            ///< own_, or the caller's elastic frame
   const FrameLoads& L_;
   const int N_, S_;
   const double radius_;

@@ -128,11 +128,21 @@ namespace {
 ///
 /// ring.plastic: the hinge springs' law (bending.hpp) lives in this equilibrium's own copy of
 /// the chain, whose states accept() commits; every linearization and stability count between
-/// two accepted equilibria is the return map from the last committed states.
+/// two accepted equilibria is the return map from the last committed states. An elastic
+/// chain is not copied (its law has no state): the statics' memory is what it was.
 class ChainStatics : public paths::Equilibrium {
  public:
   ChainStatics(const Chain& c, const ChainLoads& loads, double scale, double radius, InertiaRoute route)
-      : c_(c), L_(loads), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius), route_(route) {}
+      : own_(c.bending.plastic() ? std::optional<Chain>(c) : std::nullopt),
+        c_(own_ ? *own_ : c),
+        L_(loads),
+        N_(2 * c.n),
+        S_(2 * c.n + c.rows()),
+        scale_(scale),
+        radius_(radius),
+        route_(route) {}
+  ChainStatics(const ChainStatics&) = delete;  // c_ may refer to own_
+  ChainStatics& operator=(const ChainStatics&) = delete;
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -190,7 +200,7 @@ class ChainStatics : public paths::Equilibrium {
     // The work of the loads s P: the trapezoidal rule over the step, -(s_a + s_b) / 2 (P(x_b) -
     // P(x_a)), exact for a path linear in s; O(ds^2) otherwise (the energy identity's quadrature).
     work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
-    c_.bending.commit(bending_strains(c_, to.z.head(N_)));
+    if (own_) own_->bending.commit(bending_strains(c_, to.z.head(N_)));
     if (recording_) path_.push_back(path_point(to.s, to.z.head(N_)));
     const Contact k = closest_nonadjacent(c_, to.z.head(N_));
     if (k.distance >= c_.depth) return std::nullopt;
@@ -231,7 +241,8 @@ class ChainStatics : public paths::Equilibrium {
   }
 
  private:
-  Chain c_;  ///< a copy: its bending states are this path's
+  std::optional<Chain> own_;  ///< ring.plastic: a copy, whose bending states are this path's
+  const Chain& c_;            ///< own_, or the caller's elastic chain
   const ChainLoads& L_;
   const int N_, S_;
   const double scale_, radius_;
