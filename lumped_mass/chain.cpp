@@ -35,6 +35,7 @@ Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
     c.rest[2 * j + 1] = c.rho * std::sin(angles[j] * kPi / 180.0);
   }
   c.terms.emplace(spec, 2, c.anchor_deg, c.l, c.rest);
+  c.bending = Bending(spec, c.n, c.l, c.k);
   return c;
 }
 
@@ -109,16 +110,29 @@ Springs springs(const Chain& c, const Vec& q, double hess_scale) {
     }
   for (int j = 0; j < c.n; ++j) {
     const Turn t = turn(c, q, j, hess_scale != 0.0);
-    const double d = t.theta - c.theta0;
-    s.energy += 0.5 * c.k * d * d;
-    for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += c.k * d * t.grad[i];
+    const double e = t.theta - c.theta0;
+    const ring::BilinearLaw::Point m = c.bending.at(j, e);
+    s.energy += m.potential;
+    for (int i = 0; i < 6; ++i) s.grad[dof(c, j, i)] += m.force * t.grad[i];
     if (hess_scale != 0.0) {
-      const Eigen::Matrix<double, 6, 6> H = c.k * (t.grad * t.grad.transpose() + d * t.hess);
+      // tangent grad grad^T + M Hess theta; inside the band M = k (e - e_p), written as the
+      // elastic spring always was, k (grad grad^T + (e - e_p) Hess theta), so that an elastic
+      // chain's tangent is bit for bit the same (the frontal count of unstable directions near a
+      // bifurcation is sensitive to its rounding: bifurcation_test.cpp).
+      const Eigen::Matrix<double, 6, 6> H =
+          m.yielding ? Eigen::Matrix<double, 6, 6>(m.tangent * t.grad * t.grad.transpose() + m.force * t.hess)
+                     : Eigen::Matrix<double, 6, 6>(m.tangent * (t.grad * t.grad.transpose() + (e - c.bending.plastic(j)) * t.hess));
       for (int i = 0; i < 6; ++i)
         for (int p = 0; p < 6; ++p) s.hess.emplace_back(dof(c, j, i), dof(c, j, p), hess_scale * H(i, p));
     }
   }
   return s;
+}
+
+std::vector<double> bending_strains(const Chain& c, const Vec& x) {
+  std::vector<double> e(static_cast<std::size_t>(c.n));
+  for (int j = 0; j < c.n; ++j) e[static_cast<std::size_t>(j)] = turn(c, x, j, false).theta - c.theta0;
+  return e;
 }
 
 Vec relaxed_rotations(const Chain& c, const Vec& x) {

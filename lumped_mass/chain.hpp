@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "lumped_mass/bending.hpp"
 #include "lumped_mass/loads.hpp"
 #include "lumped_mass/terms.hpp"
 #include "ring/spec.hpp"
@@ -32,6 +33,9 @@ struct Chain {
   /// S (x - rest) = 0, linear in x.
   Eigen::SparseMatrix<double> S;
   std::optional<Terms> terms;  ///< springs, the clamp, the foundation, point masses (terms.hpp)
+  /// The hinge springs' law on the turning angle minus its rest value (bending.hpp): k e, or
+  /// ring.plastic's from the committed states (the statics commit their own copy's).
+  Bending bending;
   /// Constraint rows: the n links, then the supports.
   int rows() const { return n + static_cast<int>(S.rows()); }
 
@@ -66,7 +70,8 @@ struct Springs {
   Eigen::VectorXd grad;
   Triplets hess;
 };
-/// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs and the
+/// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs (their
+/// law c.bending's: V counts its incremental potential from the committed states) and the
 /// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation). q: the 2n hinge
 /// positions x (statics, buckling: the kr of a hinge with a point inertia condensed on its
 /// chord rotation), or x followed by the rotation chi of every Terms::hinge_rotations() entry
@@ -98,6 +103,9 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const E
 /// stiffness). Every analysis of the chain takes its tangent from here.
 Springs tangent(const Chain& c, const ChainLoads& loads, const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                 double s, double scale);
+
+/// The hinge rotations e_j = theta_j - 2 pi / n at the positions x (c.bending's strains), rad.
+std::vector<double> bending_strains(const Chain& c, const Eigen::VectorXd& x);
 
 /// Constraint values: links (|d|^2 - l^2) / (2 l), then the supports (m).
 Eigen::VectorXd constraints(const Chain& c, const Eigen::VectorXd& x);

@@ -1,6 +1,7 @@
 #include "lumped_mass/checks.hpp"
 
 #include "lumped_mass/preload.hpp"
+#include "ring/errors.hpp"
 
 #include <array>
 #include <cmath>
@@ -33,6 +34,40 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
     if (!std::isfinite(v)) throw std::invalid_argument("lumped: " + section + "." + key + " must be finite");
 }
 
+/// ring.plastic in the lumped models (bending.hpp): the resultant law, in the nonlinear statics
+/// only (their accepted equilibria commit the states; the response, buckling and the modes under
+/// load have no plastic state yet). `what`: the analysis, "statics" taking it. ring::InputError
+/// naming ring.plastic otherwise, and for values the law cannot take (the scene reader's rules,
+/// again for callers of the library).
+///
+/// The frames refuse it: their bending lives in the elements, and the one bending measure an
+/// element has that the law can take alone is its mean curvature (th_{j+1} - th_j) / l
+/// (bending.hpp). A plastic hinge under a load, which sits on a node, then forms in both
+/// elements beside the node: two hinges where the ring has one, and the ring pinched at two
+/// points has four, a mechanism at first yield with hardening 0 (the statics end there at a
+/// "bifurcation": measured on the pinched ring at n = 64). A hinge at the node needs the
+/// node's rotation split in two across it, which the frames do not have yet.
+void check_plastic(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
+  if (!spec.plastic) return;
+  const ring::Plastic& p = *spec.plastic;
+  auto refuse = [](const std::string& why) { throw ring::InputError("", "ring.plastic", "lumped: " + why); };
+  if (what != "statics")
+    refuse("the lumped " + what + " has no elastic–plastic state (only the nonlinear statics commit one, at "
+           "every accepted equilibrium); remove ring.plastic or run [static]");
+  if (o.variant != ring::LumpedOptions::Variant::chain)
+    refuse("lumped.variant = \"" + ring::to_string(o.variant) + "\" cannot take it yet: a frame's bending is in its "
+           "elements, so a plastic hinge at a loaded node would form in the two elements beside it (two hinges where "
+           "the ring has one: a mechanism at first yield without hardening); use lumped.variant = \"chain\" (its "
+           "hinges take ring.plastic)");
+  if (p.law != ring::Plastic::Law::resultant)
+    refuse("the fibre law (ring.plastic.stress) needs a section's shape through the depth, which the lumped "
+           "chain's hinges and the frames' resultant bending do not have; give ring.plastic.moment (the resultant law)");
+  if (!(p.moment > 0.0) || !std::isfinite(p.moment))
+    refuse("ring.plastic.moment (= " + std::to_string(p.moment) + " N m) must be finite and > 0");
+  if (!(p.hardening >= 0.0 && p.hardening < 1.0))
+    refuse("ring.plastic.hardening (= " + std::to_string(p.hardening) + ") must be in [0, 1)");
+}
+
 /// What every nonlinear analysis of the chain (and its linear buckling) needs; `what` is
 /// "statics", "response" or "buckling".
 void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
@@ -49,6 +84,7 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
     need(o.variant != Variant::frame,
          "lumped.variant = \"frame\" lumps no rotary inertia (its rotations are massless), so it has no response "
          "here; use \"frame-consistent\", \"timoshenko-frame\" or \"chain\"");
+  check_plastic(spec, o, what);
   need(o.n >= 4, "lumped.n (=" + std::to_string(o.n) + ") must be >= 4");
   need(spec.radius > 0 && spec.E > 0 && spec.rho > 0 && spec.A() > 0 && spec.I() > 0,
        "radius, E, rho, area and inertia must be > 0");
@@ -118,6 +154,7 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics) {
+  check_plastic(spec, options, "modes under load (modes.preload)");
   if (options.variant == ring::LumpedOptions::Variant::frame)
     throw std::invalid_argument("lumped: modes.preload = \"static\": lumped.variant = \"frame\" lumps no rotary "
                                 "inertia (its rotations are massless); use \"frame-consistent\", "

@@ -21,6 +21,9 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
 /// anchor + 360 k / n.
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
+/// ring.plastic (the resultant law, bending.hpp) is taken by the chain's nonlinear statics;
+/// the frames (checks.cpp says why), the fibre law, and ring.plastic in any other analysis are
+/// ring::InputError naming ring.plastic (exit 2).
 /// Nonlinear statics: every variant (static.path: the chain only), n >= 4, a positive section and
 /// material, every point of the spec (pins, clamp, springs, masses) and every point load on a
 /// node (none at the pin), a pin (or springs / a foundation that hold every rigid motion),

@@ -23,6 +23,9 @@ Frame make_frame(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   f.n = o.n;
   f.l = 2.0 * kPi * spec.radius / f.n;
   f.k = natural_stiffness(spec, f.l, o.variant);
+  const Eigen::Matrix2d& Kb = f.k.bending;
+  f.bending = Bending(spec, f.n, f.l, 0.5 * (Kb(0, 0) - Kb(0, 1)));
+  f.linear_mode = 0.5 * (Kb(0, 0) + Kb(0, 1));
   // The linear model checks every point of the spec and gives the support rows and the mass
   // (translations, section rotations, point masses): one code for the linear and the
   // nonlinear frame.
@@ -67,14 +70,33 @@ FrameElement frame_element(const Frame& f, const Vec& q, int j, bool with_hessia
   gt2 = -ga;
   gt2[5] += 1.0;
   const double EA = f.k.axial;
+  // The bending block in its two modes (bending.hpp): the constant curvature
+  // b = t2 - t1 = th_b - th_a (linear in q) under the bending law, the linear mode
+  // v = t1 + t2 elastic; the end moments are d/dt of their energies. Inside the law's band
+  // that is the element's own 1/2 te^T Kb te with te = t less the plastic rotation split
+  // between the ends (te = t with none), written as the elastic element always was, so that
+  // an elastic frame is bit for bit the same; past the band, the two modes apart.
+  const ring::BilinearLaw::Point bend = f.bending.at(j, q[3 * b + 2] - q[3 * a + 2]);
   const Eigen::Matrix2d& Kb = f.k.bending;
-  const Eigen::Vector2d mom = Kb * t;
+  const double half_plastic = 0.5 * f.bending.plastic(j);
+  const Eigen::Vector2d te(t[0] + half_plastic, t[1] - half_plastic);
+  const double v = t[0] + t[1], kv = f.linear_mode;
+  const Eigen::Vector2d mom = bend.yielding ? Eigen::Vector2d(kv * v - bend.force, kv * v + bend.force)
+                                            : Eigen::Vector2d(Kb * te);
   FrameElement out;
-  out.energy = 0.5 * EA * u * u + 0.5 * t.dot(mom);
+  out.energy = 0.5 * EA * u * u + (bend.yielding ? bend.potential + 0.5 * kv * v * v : 0.5 * te.dot(mom));
   out.grad = EA * u * gu + mom[0] * gt1 + mom[1] * gt2;
   if (with_hessian) {
-    out.hess = EA * gu * gu.transpose() + Kb(0, 0) * gt1 * gt1.transpose() +
-               Kb(0, 1) * (gt1 * gt2.transpose() + gt2 * gt1.transpose()) + Kb(1, 1) * gt2 * gt2.transpose();
+    if (bend.yielding) {
+      V6 gb = V6::Zero();
+      gb[2] = -1.0;
+      gb[5] = 1.0;
+      const V6 gv = gt1 + gt2;
+      out.hess = EA * gu * gu.transpose() + bend.tangent * gb * gb.transpose() + kv * gv * gv.transpose();
+    } else {
+      out.hess = EA * gu * gu.transpose() + Kb(0, 0) * gt1 * gt1.transpose() +
+                 Kb(0, 1) * (gt1 * gt2.transpose() + gt2 * gt1.transpose()) + Kb(1, 1) * gt2 * gt2.transpose();
+    }
     // The curvature terms: EA u Hess L - (m1 + m2) Hess alpha, both on d = x_b - x_a.
     const Eigen::Matrix2d H = EA * u * (Eigen::Matrix2d::Identity() - e * e.transpose()) / L -
                               (mom[0] + mom[1]) * angle_hessian(d);
@@ -84,6 +106,12 @@ FrameElement frame_element(const Frame& f, const Vec& q, int j, bool with_hessia
     out.hess.block<2, 2>(3, 0) -= H;
   }
   return out;
+}
+
+std::vector<double> bending_strains(const Frame& f, const Vec& q) {
+  std::vector<double> e(static_cast<std::size_t>(f.n));
+  for (int j = 0; j < f.n; ++j) e[static_cast<std::size_t>(j)] = q[3 * ((j + 1) % f.n) + 2] - q[3 * j + 2];
+  return e;
 }
 
 Springs frame_energy(const Frame& f, const Vec& q, double hess_scale) {

@@ -19,7 +19,9 @@
 // and Hessian by the chain rule, exact (terms.hpp angle_gradient, angle_hessian). At rest
 // e = t = 0, so the Hessian there is the linear timoshenko-frame's element stiffness: the
 // nonlinear frame is the linear one in small displacements (tests/lumped_mass/frame_test.cpp
-// checks both to round-off). The rest section rotations are zero: th counts from rest, the
+// checks both to round-off). The bending part is evaluated as bending.hpp splits it: the
+// constant-curvature mode th_{j+1} - th_j (linear in q) under the bending law, elastic or
+// ring.plastic's, and the linear mode t1 + t2 elastic; elastic, the sum is 1/2 t^T Kb t. The rest section rotations are zero: th counts from rest, the
 // linear model's convention, so no initial curvature enters the element.
 //
 // The spec's terms (terms.hpp, dofs_per_node = 3: springs kx, ky on the translations, kr and
@@ -58,6 +60,11 @@ struct Frame {
   int n = 0;
   double l = 0.0;               ///< rest chord length = 2 pi R / n, m
   NaturalStiffness k;           ///< EA/l and the bending block (model.hpp)
+  /// The bending block split (bending.hpp): the constant-curvature mode u = th_{j+1} - th_j
+  /// under the law `bending` (stiffness (Kb00 - Kb01) / 2 = EI / l), the linear mode
+  /// v = t1 + t2 elastic with `linear_mode` = (Kb00 + Kb01) / 2, N m/rad.
+  Bending bending;
+  double linear_mode = 0.0;
   Eigen::VectorXd rest;         ///< 3n: rest positions on the n-gon and zero rotations
   Eigen::VectorXd rest_xy;      ///< 2n: the rest positions alone
   Eigen::SparseMatrix<double> S;  ///< support rows on q (model.cpp), S (q - rest) = 0
@@ -81,7 +88,10 @@ struct FrameElement {
 };
 FrameElement frame_element(const Frame& f, const Eigen::VectorXd& q, int j, bool with_hessian);
 
-/// V (elements and terms), grad V and, scaled by hess_scale (if not zero), Hess V on q.
+/// The elements' bending strains u_j = th_{j+1} - th_j at q (f.bending's rotations), rad.
+std::vector<double> bending_strains(const Frame& f, const Eigen::VectorXd& q);
+
+/// V (elements and terms; the bending law's incremental potential from its committed states), grad V and, scaled by hess_scale (if not zero), Hess V on q.
 Springs frame_energy(const Frame& f, const Eigen::VectorXd& q, double hess_scale);
 
 /// The loads (loads.hpp) as functions of q: the chain's potential of the node positions.
@@ -97,11 +107,19 @@ class FrameLoads {
   std::optional<ChainLoads> loads_;
 };
 
+/// What the frame's path accumulated (StaticDetail's and ring::StaticResult's meanings): the
+/// plastic work and the largest |plastic curvature| at the end (J, 1/m), the loads' work along
+/// the path and the elastic energy at the end (J).
+struct FramePathEnergy {
+  double dissipated = 0.0, plastic_curvature = 0.0, work = 0.0, stored = 0.0;
+};
+
 /// The frame's equilibrium path from rest to the full load (or through statics.history) (the continuation driver on
 /// FrameStatics: frame_nonlinear.cpp), z = (q, mu scaled); throws ring::NumericalError
-/// "`who`: ..." when it does not reach the full load.
+/// "`who`: ..." when it does not reach the full load. `energy` (if not null) gets the path's
+/// energies.
 paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, const ring::StaticOptions& statics,
-                        const std::string& who);
+                        const std::string& who, FramePathEnergy* energy = nullptr);
 
 /// The frame's statics and response, the entry points of nonlinear.hpp for this variant
 /// (the caller has run check_static / check_response).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "lumped_mass/checks.hpp"
@@ -61,10 +62,20 @@ double correction_size(const Frame& f, const Vec& dq, double radius) {
 /// factor_bordered (chain.hpp, shared with the chain's statics). The arc length is measured
 /// on all of q (positions in m, rotations in rad). A bifurcation ends the path (dense count,
 /// up to n = 133); no branch switching; the self-contact check is the chain's on the chords.
+/// ring.plastic: the elements' bending law (bending.hpp) would live in this equilibrium's own
+/// copy of the frame, whose states accept() commits (as the chain's statics do; the frames
+/// refuse the law for now, checks.cpp); an elastic frame is not copied.
 class FrameStatics : public paths::Equilibrium {
  public:
   FrameStatics(const Frame& f, const FrameLoads& loads, double radius)
-      : f_(f), L_(loads), N_(3 * f.n), S_(3 * f.n + static_cast<int>(f.S.rows())), radius_(radius) {}
+      : own_(f.bending.plastic() ? std::optional<Frame>(f) : std::nullopt),
+        f_(own_ ? *own_ : f),
+        L_(loads),
+        N_(3 * f.n),
+        S_(3 * f.n + static_cast<int>(f.S.rows())),
+        radius_(radius) {}
+  FrameStatics(const FrameStatics&) = delete;  // f_ may refer to own_
+  FrameStatics& operator=(const FrameStatics&) = delete;
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -106,18 +117,35 @@ class FrameStatics : public paths::Equilibrium {
     T.setFromTriplets(sp.hess.begin(), sp.hess.end());
     return modal::unstable_directions(Eigen::MatrixXd(T), Eigen::MatrixXd(f_.S));
   }
-  std::optional<paths::Touch> accept(const paths::State&, const paths::State& to) override {
+  /// Commits the elements' bending states at `to` and adds the step's work of the loads (the
+  /// trapezoidal rule, as the chain's statics), then the self-contact check.
+  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
+    work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
+    if (own_) own_->bending.commit(bending_strains(f_, to.z.head(N_)));
     const Contact k = closest_nonadjacent(f_.geometry, f_.positions(to.z.head(N_)));
     if (k.distance >= f_.geometry.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(f_.geometry, k) + "; the frame model does not include contact"};
   }
 
+  /// The path's energies so far, the elastic energy at q.
+  FramePathEnergy energy(const Vec& q) const {
+    FramePathEnergy e;
+    e.dissipated = f_.bending.dissipated();
+    e.plastic_curvature = f_.bending.plastic_curvature();
+    e.work = work_;
+    // The incremental potential at the committed states' own strains is the stored energy.
+    e.stored = frame_energy(f_, q, 0.0).energy;
+    return e;
+  }
+
  private:
-  const Frame& f_;
+  std::optional<Frame> own_;  ///< ring.plastic: a copy, whose bending states are this path's
+  const Frame& f_;            ///< own_, or the caller's elastic frame
   const FrameLoads& L_;
   const int N_, S_;
   const double radius_;
   double last_step_ = INFINITY;
+  double work_ = 0.0;  ///< the loads' work along the accepted path, J
   LU lu_;
 };
 
@@ -130,7 +158,7 @@ std::vector<int> record_nodes(const Frame& f, const std::vector<double>& record,
 }  // namespace
 
 paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, const ring::StaticOptions& statics,
-                        const std::string& who) {
+                        const std::string& who, FramePathEnergy* energy) {
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
   FrameStatics eq(f, loads, radius);
   paths::State rest{paths::Vector::Zero(N + R), 0.0};
@@ -141,6 +169,7 @@ paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, 
   paths::Trace path = paths::follow(eq, rest, policy);
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError(who + ": " + paths::failure_message(path, policy));
+  if (energy) *energy = eq.energy(path.state.z.head(N));
   return path;
 }
 
@@ -151,10 +180,16 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
   const FrameLoads loads(f, spec, statics.loads, "static");
   const auto rec = record_nodes(f, statics.record, "static.record");
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
-  const paths::Trace path = frame_path(f, loads, spec.radius, statics, "lumped statics (" + ring::to_string(options.variant) + ")");
+  FramePathEnergy energy;
+  const paths::Trace path =
+      frame_path(f, loads, spec.radius, statics, "lumped statics (" + ring::to_string(options.variant) + ")", &energy);
   const Vec q = path.state.z.head(N), mu = path.state.z.tail(R) * f.scale;
   StaticDetail detail;
   ring::StaticResult& out = detail.result;
+  out.dissipated = energy.dissipated;
+  out.plastic_curvature = energy.plastic_curvature;
+  detail.work = energy.work;
+  detail.stored = energy.stored;
   out.steps = path.steps;
   out.newton_iterations = path.iterations;
   for (std::size_t p = 0; p < rec.size(); ++p) {

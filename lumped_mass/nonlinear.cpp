@@ -125,10 +125,24 @@ namespace {
 /// pivoting); the bordered KKT matrix [A + s Hess P, grad P; w^T ws] by one sparse LU (its
 /// pattern: the band, the closing corners, the border's row and column; the border column
 /// is full once a pressure or gravity acts).
+///
+/// ring.plastic: the hinge springs' law (bending.hpp) lives in this equilibrium's own copy of
+/// the chain, whose states accept() commits; every linearization and stability count between
+/// two accepted equilibria is the return map from the last committed states. An elastic
+/// chain is not copied (its law has no state): the statics' memory is what it was.
 class ChainStatics : public paths::Equilibrium {
  public:
   ChainStatics(const Chain& c, const ChainLoads& loads, double scale, double radius, InertiaRoute route)
-      : c_(c), L_(loads), N_(2 * c.n), S_(2 * c.n + c.rows()), scale_(scale), radius_(radius), route_(route) {}
+      : own_(c.bending.plastic() ? std::optional<Chain>(c) : std::nullopt),
+        c_(own_ ? *own_ : c),
+        L_(loads),
+        N_(2 * c.n),
+        S_(2 * c.n + c.rows()),
+        scale_(scale),
+        radius_(radius),
+        route_(route) {}
+  ChainStatics(const ChainStatics&) = delete;  // c_ may refer to own_
+  ChainStatics& operator=(const ChainStatics&) = delete;
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -179,14 +193,23 @@ class ChainStatics : public paths::Equilibrium {
     return (step <= 1e-12 * radius_ || stalled) &&
            constraints(c_, s.z.head(N_)).head(c_.n).cwiseAbs().maxCoeff() <= 1e-10 * radius_;
   }
-  /// Records `to` (and, first, `from`: rest) when recording, then the self-contact check.
+  /// Commits the hinges' bending states at `to` and adds the step's work of the loads, then
+  /// records `to` (and, first, `from`: rest) when recording, then the self-contact check.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
     if (recording_ && path_.empty()) path_.push_back(path_point(from.s, from.z.head(N_)));
+    // The work of the loads s P: the trapezoidal rule over the step, -(s_a + s_b) / 2 (P(x_b) -
+    // P(x_a)), exact for a path linear in s; O(ds^2) otherwise (the energy identity's quadrature).
+    work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
+    if (own_) own_->bending.commit(bending_strains(c_, to.z.head(N_)));
     if (recording_) path_.push_back(path_point(to.s, to.z.head(N_)));
     const Contact k = closest_nonadjacent(c_, to.z.head(N_));
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
   }
+  /// The bending law with the committed states (bending.hpp).
+  const Bending& bending() const { return c_.bending; }
+  /// The work of the loads along the accepted path so far, J.
+  double work() const { return work_; }
   /// The closest approach of links at least the contact gap apart (accept's check) minus
   /// the section depth, for the driver to locate the touch within a step: O(n) (the grid).
   /// Infinite while no such pair has its midpoints in neighbouring cells (l + depth).
@@ -218,11 +241,13 @@ class ChainStatics : public paths::Equilibrium {
   }
 
  private:
-  const Chain& c_;
+  std::optional<Chain> own_;  ///< ring.plastic: a copy, whose bending states are this path's
+  const Chain& c_;            ///< own_, or the caller's elastic chain
   const ChainLoads& L_;
   const int N_, S_;
   const double scale_, radius_;
   const InertiaRoute route_;
+  double work_ = 0.0;  ///< the loads' work along the accepted path, J
   double last_step_ = INFINITY;  ///< the Newton correction before (converged's memory)
   Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu_;
   std::vector<int> record_;  ///< the hinges a path point reports
@@ -247,6 +272,8 @@ class ChainStatics : public paths::Equilibrium {
       least = std::min(least, d);
     }
     pt.ovalisation = (most - least) / c_.rho;
+    pt.dissipated = c_.bending.dissipated();
+    pt.plastic_curvature = c_.bending.plastic_curvature();
     for (int k = 0; k < c_.n; k += ring::path_shape_stride(c_.n)) {
       const Vec2 p = c_.at(x, k);
       pt.node_x.push_back(p.x());
@@ -286,6 +313,10 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   st.x = st.trace.state.z.head(N);
   st.lambda = st.trace.state.z.tail(R) * scale;
   if (record) st.path = eq.path();
+  st.dissipated = eq.bending().dissipated();
+  st.plastic_curvature = eq.bending().plastic_curvature();
+  st.work = eq.work();
+  st.stored = eq.bending().stored(bending_strains(c, st.x)) + c.terms->energy(st.x - c.rest);
   return st;
 }
 
@@ -316,6 +347,10 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   }
   out.steps = path.steps;
   out.newton_iterations = path.iterations;
+  out.dissipated = st.dissipated;
+  out.plastic_curvature = st.plastic_curvature;
+  detail.work = st.work;
+  detail.stored = st.stored;
   for (std::size_t p = 0; p < rec.size(); ++p) {
     const Vec2 u = c.at(x, rec[p]) - c.at(c.rest, rec[p]);
     out.displacements.push_back({statics.record[p], u.x(), u.y()});

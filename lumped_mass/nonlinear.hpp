@@ -36,6 +36,18 @@
 // within the step (ChainStatics::clearance), and a bifurcation is passed by branch switching
 // up to n = 200 (the dense least stable direction).
 //
+// ## ring.plastic in the statics (bending.hpp)
+// The hinge springs' law is ring.plastic's resultant law on the hinge rotation (stiffness EI/l,
+// yield Mp, the scene's hardening and rule), its potential in V from the committed states.
+// The statics' equilibrium holds its own copy of the chain whose states accept() commits at
+// every accepted equilibrium (static.history's legs included); every linearization, tangent
+// and stability count between two is the return map from the last committed states. The
+// result carries the plastic work and the largest plastic curvature (StaticResult, PathPoint),
+// StaticDetail the loads' work and the stored energy. Known limit: the driver calls accept()
+// before its bifurcation test, so a path that ends at (or, with static.path, switches at) a
+// bifurcation has committed the states of the bracket's upper end. Only the chain takes the
+// law (checks.hpp); the frames evaluate the same Bending, elastic.
+//
 // ## Dynamics: the implicit midpoint rule with constraint forces at the midpoint
 //   M (v_{n+1} - v_n) / h = -f(t_{n+1/2}) grad P(x_m) - grad V(q_m) - C v_m - G(x_m)^T lambda,
 //   (q_{n+1} - q_n) / h = (v_n + v_{n+1}) / 2,   c(x_{n+1}) = 0,   q_m = (q_n + q_{n+1}) / 2,
@@ -97,9 +109,14 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 /// supports' reactions (the multipliers of their rows) and the forces of the elastic supports
 /// and the foundation, summed, N (x, y). At equilibrium it balances the loads' resultant
 /// (the weight under gravity alone).
+/// `work`: the loads' work along the path (the trapezoidal rule over the accepted steps:
+/// exact for a path linear in the load factor, O(steps^-2) otherwise), J; `stored`: the elastic
+/// energy at the end (the bending law's and the terms'; the frames' axial and shear too), J.
+/// The energy identity: work = stored + result.dissipated.
 struct StaticDetail {
   ring::StaticResult result;
   std::array<double, 2> ground_force{0.0, 0.0};
+  double work = 0.0, stored = 0.0;
 };
 /// How the statics count an equilibrium's unstable directions for the continuation
 /// driver's bifurcation test (stability.hpp): automatic (dense up to n = 200, an O(n)
@@ -123,6 +140,10 @@ struct StaticState {
   Eigen::VectorXd x;               ///< hinge positions (2n, chain.hpp's order), m
   Eigen::VectorXd lambda;          ///< multipliers (links, then supports), N: tangent()'s lambda
   std::vector<ring::PathPoint> path;  ///< the recorded path (only with `record`), rest first
+  double dissipated = 0.0;         ///< ring.plastic: the plastic work along the path, J
+  double plastic_curvature = 0.0;  ///< the largest |plastic hinge rotation| / l at the end, 1/m
+  double work = 0.0;               ///< the loads' work along the path (StaticDetail), J
+  double stored = 0.0;             ///< the elastic energy at the end (StaticDetail), J
 };
 
 /// Follows the chain's static equilibrium under `loads` (chain.hpp, loads.hpp) from rest to
