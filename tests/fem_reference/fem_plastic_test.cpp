@@ -73,14 +73,6 @@ const fem::StaticPath::Point& peak(const fem::StaticPath& p) {
   throw std::runtime_error("the path has no point at load factor 1");
 }
 
-/// The loads' work along the path, the trapezoidal rule of s dPhi over its accepted points.
-double work_of_loads(const std::vector<fem::StaticPath::Point>& points, std::size_t last) {
-  double w = 0.0;
-  for (std::size_t i = 1; i <= last; ++i)
-    w += 0.5 * (points[i].load_factor + points[i - 1].load_factor) * (points[i].load - points[i - 1].load);
-  return w;
-}
-
 /// The elastic–perfectly plastic ring's work, stored energy and plastic work at P in
 /// [P_y, P_c] (small displacement; tests/support/plastic_ring.hpp's closed forms):
 /// W = int P ddelta, the closing piecewise linear in P; the stored energy of
@@ -197,36 +189,51 @@ TEST(FemPlastic, ResidualClosingMeetsTheClosedFormAtTheFittedOrder) {
   }
 }
 
-/// The energy identity at every accepted equilibrium of the loading and the unloading:
-/// the loads' work (the trapezoidal rule of s dPhi over the accepted points) = the stored
-/// energy V + the plastic work D. Both sides come from the same equilibria, the plastic
-/// work from the committed return maps: the identity holds to the quadrature of the work,
-/// exact on every step where the yielding set does not change (the load-displacement
-/// relation is linear there, to O(delta / R)), not on a step where a point starts to yield.
-/// So the identity holds to the quadrature of the work, not to the Newton tolerance:
-/// measured largest |W - V - D| over the path / largest W: 2.7e-4 (20 steps per leg),
-/// 5.7e-5 (80), falling with the step; bounds 5e-4 and 1e-4.
+/// The energy identity, step by step along the loading and the unloading: the loads' work
+/// over a step (the trapezoidal rule of s dPhi between its accepted ends) = the change of the
+/// stored energy V + the step's plastic work D. Both sides come from the same equilibria, D
+/// from the committed return maps. On a step where the yielding set does not change the
+/// load-displacement relation is smooth, linear to O(delta / R), and the rule's error is
+/// O(ds^3) per step (the geometric nonlinearity's). The one step where the hinges first yield (at
+/// s_y = P_y / P* = pi / 3.5) has a kink the rule cannot integrate; its error is the rule's on
+/// the closed form's bilinear closing, -(P* / 2)(s_y - s_0)(s_1 - s_y)(a_2 - a_1) with a_1, a_2
+/// the closing per unit load factor before and after yield.
+/// Measured (32 cells): every other step at most 4.8e-11 J (20 steps per leg) and 7.5e-13 J
+/// (80): the ratio 64 of the O(ds^3), against a step's work of ~1e-4 J; the onset step
+/// -9.563e-7 J and -2.020e-7 J against the closed form's -9.530e-7 and -2.022e-7. So apart from
+/// the quadrature of the work the identity holds to the Newton tolerance.
 TEST(FemPlastic, LoadsWorkIsStoredEnergyPlusPlasticWork) {
   const ring::RingSpec spec = pinched_ring();
   const double Mp = spec.plastic->moment, R = spec.radius, P = 3.5 * Mp / R;
-  for (const auto& [steps, ceiling] : {std::pair<int, double>{20, 5e-4}, {80, 1e-4}}) {
+  const ringtest::PinchedPlasticRing o = oracle(spec, Mp);
+  const double sy = o.first_yield() / P;
+  const double a1 = o.elastic_closing(P), a2 = 2.0 * R * R / o.EI * M_PI * P * R / 8.0;  // m per unit s
+  // Bounds on the steps without onset: four times the measured O(ds^3).
+  for (const auto& [steps, bound] : {std::pair<int, double>{20, 2e-10}, {80, 3e-12}}) {
     const fem::StaticPath path = fem::trace_static(spec, fem_options(32), pinch(P, {1.0, 0.0}, steps));
     ASSERT_TRUE(path.reached) << path.failure;
-    double worst = 0.0, scale = 0.0;
+    double other = 0.0, onset = 0.0, onset_expected = 0.0;
     for (std::size_t i = 1; i < path.points.size(); ++i) {
-      const auto& x = path.points[i];
-      const double w = work_of_loads(path.points, i);
-      worst = std::max(worst, std::abs(w - (x.stored + x.dissipated)));
-      scale = std::max(scale, std::abs(w));
+      const auto &x0 = path.points[i - 1], &x1 = path.points[i];
+      const double w = 0.5 * (x0.load_factor + x1.load_factor) * (x1.load - x0.load);
+      const double mismatch = w - (x1.stored - x0.stored) - (x1.dissipated - x0.dissipated);
+      const double s0 = x0.load_factor, s1 = x1.load_factor;
+      if (s0 < sy && sy <= s1) {
+        onset = mismatch;
+        onset_expected = -0.5 * P * (sy - s0) * (s1 - sy) * (a2 - a1);
+      } else {
+        other = std::max(other, std::abs(mismatch));
+      }
     }
-    const auto& end = path.points.back();
-    std::printf("steps %d: %zu points; at the end W = %.12e J, V = %.12e J, D = %.12e J (result %.12e J); "
-                "largest |W - V - D| %.3e J (%.3e of the largest W)\n",
-                steps, path.points.size(), work_of_loads(path.points, path.points.size() - 1), end.stored,
-                end.dissipated, path.result.dissipated, worst, worst / scale);
-    EXPECT_LT(worst / scale, ceiling) << steps << " steps";
-    EXPECT_EQ(path.result.dissipated, end.dissipated);
-    EXPECT_GT(end.dissipated, 0.0);
+    std::printf("steps %d: %zu points, plastic work %.12e J; largest |W - dV - dD| of a step without onset %.3e J; "
+                "onset step %.4e J (closed form %.4e J)\n",
+                steps, path.points.size(), path.result.dissipated, other, onset, onset_expected);
+    EXPECT_LT(other, bound) << steps << " steps";
+    // The closed form's kink against the FE's: the FE's slopes and yield load within O(delta / R)
+    // and its discretization (1e-4 at 32 cells); 1 %.
+    EXPECT_TRUE(ringtest::IsClose(onset, onset_expected, 1e-2)) << steps << " steps";
+    EXPECT_EQ(path.result.dissipated, path.points.back().dissipated);
+    EXPECT_GT(path.result.dissipated, 0.0);
   }
 }
 
