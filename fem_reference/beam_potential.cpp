@@ -100,15 +100,22 @@ BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
     if (k.kr > 0) rotations_.emplace_back(v, k.kr);
   }
   distributed_ = spec.foundation.any() || loads.pressure.any() || loads.has_gravity();
+  if (spec.plastic) law_ = bending_law(*spec.plastic, spec.EI());
 }
 
 BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, Vector<double>* residual,
-                                             SparseMatrix<double>* tangent, Vector<double>* load) const {
+                                             SparseMatrix<double>* tangent, Vector<double>* load,
+                                             const std::vector<ring::PlasticState>* committed) const {
   const BeamModel& m = model_;
   const ring::RingSpec& spec = m.spec_;
   const double R = spec.radius;
   Value out;
-  out.stored = m.beam_energy(q, residual, tangent);  // residual reinit, tangent zeroed
+  if (law_ && committed) {
+    const Plasticity plastic{*law_, *committed};
+    out.stored = m.beam_energy(q, residual, tangent, &plastic);  // residual reinit, tangent zeroed
+  } else {
+    out.stored = m.beam_energy(q, residual, tangent);
+  }
   if (load) load->reinit(m.n_free());
   // Point loads and the point masses' weight: fixed forces, Phi = F . q.
   out.load += constant_load_ * q;

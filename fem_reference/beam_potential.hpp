@@ -3,6 +3,9 @@
 // model that the statics (static_path.cpp) and the response (nonlinear.cpp) assemble.
 #pragma once
 
+#include <optional>
+#include <vector>
+
 #include "fem_reference/ring_model.hpp"
 
 namespace fem::detail {
@@ -19,6 +22,9 @@ namespace fem::detail {
 ///    pressure (follower: -p (A - A0), A the enclosed area; dead: -p int w ds0; central:
 ///    -p int (|x| - R) ds0) and the beam's weight rho A int g . U ds0.
 /// Pins, roller and clamp are the model's constraints (exact at any displacement).
+/// ring.plastic: the beam's bending is the plastic law's incremental potential from the
+/// committed states that the caller passes in (plastic_points.hpp); V is then the
+/// incremental potential, the elastic energy at the committed equilibrium itself.
 /// The object holds only constants of the model and the loads; evaluate() is reentrant.
 class BeamPotential {
  public:
@@ -32,9 +38,13 @@ class BeamPotential {
   /// V and Phi at q; with non-null pointers also the residual grad V - s grad Phi (reinit),
   /// the tangent hess V - s hess Phi (on model.sparsity() or a pattern that contains it;
   /// the whole matrix is zeroed first) and the load grad Phi (reinit).
+  /// `committed`: with ring.plastic, the committed state of every bending point of the model
+  /// (BeamModel::bending_points' order); null, or without ring.plastic: elastic.
   /// O(cells (p+2) (2p+3)^2), the beam's assembly (Reissner: O(cells (p+1) (3p+3)^2)).
   Value evaluate(const Vector<double>& q, double s, Vector<double>* residual, SparseMatrix<double>* tangent,
-                 Vector<double>* load = nullptr) const;
+                 Vector<double>* load = nullptr, const std::vector<ring::PlasticState>* committed = nullptr) const;
+  /// The law of ring.plastic at the beam's bending points; nullopt without ring.plastic.
+  const std::optional<ring::BilinearLaw>& plastic_law() const { return law_; }
 
  private:
   const BeamModel& model_;
@@ -52,6 +62,7 @@ class BeamPotential {
   /// A rotational spring kr at a vertex.
   std::vector<std::pair<unsigned int, double>> rotations_;
   bool distributed_ = false;  ///< foundation, pressure or gravity: the cell loop runs
+  std::optional<ring::BilinearLaw> law_;  ///< ring.plastic's law at the bending points
 };
 
 }  // namespace fem::detail

@@ -8,11 +8,20 @@
 #include <string>
 #include <vector>
 
+#include "ring/errors.hpp"
+
 namespace fem {
 namespace {
 
 void need(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("fem: " + what);
+}
+
+/// ring.plastic enters the FE beam's nonlinear statics only (nonlinear.hpp, "Plasticity"):
+/// an analysis that would ignore it, or a law the beam does not integrate, is refused by
+/// the key (the scene reader refuses the same; this guards the library's callers).
+void refuse_plastic(const ring::RingSpec& spec, const std::string& analysis_and_why) {
+  if (spec.plastic) throw ring::InputError("", "ring.plastic", "fem: " + analysis_and_why);
 }
 
 void check_linear(const ring::RingSpec& spec, const ring::FemOptions& o);
@@ -161,6 +170,15 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   check_nonlinear(spec, o, st.loads, st.record, "static");
+  if (spec.plastic && spec.plastic->law != ring::Plastic::Law::resultant)
+    throw ring::InputError("", "ring.plastic.stress",
+                           "fem: the FE beam integrates the resultant law only (ring.plastic.moment, N m), not the "
+                           "fibre law over the section");
+  if (spec.plastic && spec.theory == ring::Theory::timoshenko)
+    throw ring::InputError("", "ring.plastic",
+                           "fem: the Reissner (Timoshenko) beam takes no plastic law yet: its bending points "
+                           "over-determine the curvature in a cell, so no plastic hinge could form (use "
+                           "ring.theory = \"euler-bernoulli\")");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
   need(ring::static_rigid_modes(spec, st.loads) == 0,
@@ -177,6 +195,8 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
+  refuse_plastic(spec, "linear buckling is about the undeformed, elastic ring and would ignore the plastic law "
+                       "(follow the equilibrium path with static.path = true instead)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
   need(b.count >= 1, "buckling.count (=" + std::to_string(b.count) + ") must be >= 1");
   need(!b.loads.points_only() || !b.loads.points.empty(),
@@ -188,6 +208,8 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  refuse_plastic(spec, "the modes under load take the elastic tangent at the loaded equilibrium, which the plastic "
+                       "statics do not provide yet (remove modes.preload)");
   // static.path shapes the path's report, not the equilibrium at the full load.
   ring::StaticOptions at_full_load = st;
   at_full_load.path = false;
@@ -203,6 +225,8 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  refuse_plastic(spec, "the nonlinear response takes no plastic law yet (its time stepping commits no plastic "
+                       "state); only the statics do");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under a "

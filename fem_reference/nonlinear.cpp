@@ -54,6 +54,8 @@ StaticSolve static_at(const ring::RingSpec& spec, const ring::FemOptions& o, Set
     b.node_x[i] = extrapolate(a.node_x[i], b.node_x[i]);
     b.node_y[i] = extrapolate(a.node_y[i], b.node_y[i]);
   }
+  b.dissipated = extrapolate(a.dissipated, b.dissipated);
+  b.plastic_curvature = extrapolate(a.plastic_curvature, b.plastic_curvature);
   return b;
 }
 
@@ -75,6 +77,8 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   for (std::size_t i = 0; i < st.record.size(); ++i) r.displacements.push_back({st.record[i], sol.record[i][0], sol.record[i][1]});
   r.node_x = std::move(sol.node_x);
   r.node_y = std::move(sol.node_y);
+  r.dissipated = sol.dissipated;
+  r.plastic_curvature = sol.plastic_curvature;
   if (st.path) {
     const bool touched = sol.trace.end == paths::Trace::End::contact;
     r.path = std::move(sol.points);

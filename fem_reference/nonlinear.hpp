@@ -162,6 +162,27 @@
 // parts of the centreline lets the driver bisect the touch, every accepted equilibrium is a
 // ring::PathPoint, and a touch ends the path as a result (end = "contact: ...", end_load).
 //
+// ## Plasticity (ring.plastic, the resultant law; statics only)
+// Euler-Bernoulli beam only (the Reissner beam refuses it; plastic_points.hpp says why).
+// At every bending point, the p + 1 Gauss-Lobatto points of a cell, ends included (the
+// membrane stays on the p + 2 Gauss points; plastic_points.hpp says why), the energy
+// density EI/2 kappa^2 becomes the incremental potential of ring::BilinearLaw(EI, Mp, h,
+// rule) from the point's committed state, kappa the exact curvature change above: the
+// internal force is M dkappa, the tangent dM/dkappa dkappa dkappa^T + M d2kappa (C1 and
+// piecewise smooth in q: Newton converges in a few iterations past each change of the
+// yielding set). The interior penalty takes the law's moment at the two cells' end points
+// ({M} [[phi]]) and is itself a hinge of stiffness P = sigma EI / h that yields at Mp: a
+// point load's plastic hinge is a jump of the rotation at its vertex (plastic_points.hpp).
+// The continuation evaluates every trial from the committed states, the statics commit
+// them at every accepted equilibrium (BeamEquilibrium::accept) and add the step's plastic
+// work, sum weight law.dissipated: the result's dissipated; its plastic_curvature is the
+// largest |kappa_p| of a bending point (a hinge: its plastic rotation over the cell
+// length). The response, linear buckling and the modes under load take no plastic law
+// (check_response, check_buckling, check_preloaded_modes refuse ring.plastic), nor does
+// the fibre law (ring.plastic.stress) get in yet.
+// Measured (tests/fem_reference/fem_plastic_test.cpp): see docs/measured.md, "fem_reference:
+// the pinched plastic ring".
+//
 // ## Dynamics
 // M a + C v + grad V(q) = g(t) grad Phi(q) from rest, C = a M + b K0 (Rayleigh, K0 the
 // linear model's stiffness at rest, its terms included). Newmark average acceleration (the
@@ -235,6 +256,13 @@ struct StaticPath {
     /// of the path's point (the first point load's; without one, the first record point's,
     /// else vertex 0), ring-centred frame, m
     std::array<double, 2> displacement{0, 0};
+    /// ring.plastic (0 without): at the equilibrium, the stored (elastic) energy V of the
+    /// beam, its springs and foundation, the loads' potential Phi at load factor 1 (so that
+    /// the work of the loads along the path is the integral of s dPhi), and the plastic
+    /// work done from rest to here, J.
+    double stored = 0.0;
+    double load = 0.0;
+    double dissipated = 0.0;
   };
   std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)
   /// The first maximum of the load factor along the path (a limit point), located to

@@ -34,8 +34,14 @@ Density membrane_shear(const std::array<double, 3>& g, double EA, double kGA) {
 
 }  // namespace
 
-double TimoshenkoModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
-                                    SparseMatrix<double>* tangent) const {
+std::vector<BendingPoint> TimoshenkoModel::bending_points(const Vector<double>&, const Plasticity&) const {
+  throw std::logic_error("fem: the Reissner beam takes no plastic law (check_static refuses ring.plastic with it)");
+}
+
+double TimoshenkoModel::beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
+                                    const Plasticity* plastic) const {
+  if (plastic)
+    throw std::logic_error("fem: the Reissner beam takes no plastic law (check_static refuses ring.plastic with it)");
   const Vector<double> full = expand(q);
   const double EA = setup_.EA, kGA = spec_.kGA(), EI = spec_.EI();
   const unsigned int dpc = fe_.n_dofs_per_cell();

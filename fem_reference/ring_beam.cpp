@@ -1,14 +1,17 @@
 // The geometrically exact beam on RingModel's mesh: strain energy, internal force and
 // consistent tangent (nonlinear.hpp has the formulation), its rotational springs, and the
 // vertex helpers of either beam (BeamModel) that the nonlinear drivers use.
+#include <optional>
+
 #include "fem_reference/beam_scalar.hpp"
 #include "fem_reference/ring_model.hpp"
 
 namespace fem::detail {
 namespace {
 
-/// Energy per reference length at a point: EA/2 (|a| - 1)^2 + EI/2 (phi'/R)^2.
-Scalar point_energy(const Vec4& g, double EA, double EI, double R) {
+/// Energy per reference length at a point: EA/2 (|a| - 1)^2 + EI/2 (phi'/R)^2; without
+/// `bending` (ring.plastic: the bending has points of its own) the first term only.
+Scalar point_energy(const Vec4& g, double EA, double EI, double R, bool bending = true) {
   Scalar w;
   const double lambda = std::hypot(g[0], g[1]);
   w.value = 0.5 * EA * (lambda - 1.0) * (lambda - 1.0);
@@ -17,12 +20,29 @@ Scalar point_energy(const Vec4& g, double EA, double EI, double R) {
     for (int j = 0; j < 2; ++j)
       w.dd[i][j] = EA * (g[i] * g[j] / (lambda * lambda * lambda) + (i == j) * (1.0 - 1.0 / lambda));
   }
+  if (!bending) return w;
   const Scalar k = rotation_rate(g);
   const double c = EI / (R * R);
   w.value += 0.5 * c * k.value * k.value;
   for (int i = 0; i < 4; ++i) {
     w.d[i] += c * k.value * k.d[i];
     for (int j = 0; j < 4; ++j) w.dd[i][j] += c * (k.d[i] * k.d[j] + k.value * k.dd[i][j]);
+  }
+  return w;
+}
+
+/// ring.plastic: the bending density at a bending point, the law's incremental potential
+/// W(kappa) from the committed state `from`, kappa = phi'/R: gradient M dkappa, Hessian
+/// dM/dkappa dkappa dkappa^T + M d2kappa.
+Scalar plastic_bending(const Vec4& g, double R, const ring::BilinearLaw& law, const ring::PlasticState& from) {
+  const Scalar k = rotation_rate(g);
+  const ring::BilinearLaw::Point p = law.at(from, k.value / R);
+  const double m = p.force / R, t = p.tangent / (R * R);
+  Scalar w;
+  w.value = p.potential;
+  for (int i = 0; i < 4; ++i) {
+    w.d[i] = m * k.d[i];
+    for (int j = 0; j < 4; ++j) w.dd[i][j] = t * k.d[i] * k.d[j] + m * k.dd[i][j];
   }
   return w;
 }
@@ -36,8 +56,42 @@ std::array<double, 4> RingModel::strain_row(unsigned int i, unsigned int qp) con
   return {v, v1, v1, v2};
 }
 
-double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
-                              SparseMatrix<double>* tangent) const {
+std::size_t RingModel::bending_point_count() const { return setup_.cells() * (bend_rows_.size() + 1); }
+
+std::vector<BendingPoint> RingModel::bending_points(const Vector<double>& q, const Plasticity& plastic) const {
+  const Vector<double> full = expand(q);
+  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells(), per_cell = bend_rows_.size();
+  const double R = spec_.radius;
+  std::vector<types::global_dof_index> dofs(dpc);
+  std::vector<Vec4> g(n * per_cell, Vec4{1.0, 0.0, 0.0, 0.0});  // (a, b) at every bending point
+  std::vector<BendingPoint> out;
+  out.reserve(bending_point_count());
+  for (unsigned int cell = 0; cell < n; ++cell) {
+    cells_[cell]->get_dof_indices(dofs);
+    for (unsigned int j = 0; j < per_cell; ++j) {
+      Vec4& at = g[cell * per_cell + j];
+      for (unsigned int i = 0; i < dpc; ++i) {
+        const Vec4 b = strain_row(i, bend_rows_[j]);
+        for (int a = 0; a < 4; ++a) at[a] += full[dofs[i]] * b[a];
+      }
+      out.push_back({rotation_rate(at).value / R, bend_ds_[j], 1.0, std::nullopt});
+    }
+  }
+  // The vertex hinges (beam_energy): e = J + {M} / P, {M} from the ends' committed states.
+  const double P = penalty_;
+  const ring::BilinearLaw hinge = bending_law(*spec_.plastic, P);
+  for (unsigned int v = 0; v < n; ++v) {
+    const unsigned int l = ((v + n - 1) % n) * per_cell + per_cell - 1, r = v * per_cell;
+    const double J = std::remainder(tangent_angle(g[r]).value - tangent_angle(g[l]).value, 2.0 * kPi);
+    const double M = 0.5 * (plastic.law.at(plastic.committed[l], out[l].curvature).force +
+                            plastic.law.at(plastic.committed[r], out[r].curvature).force);
+    out.push_back({J + M / P, 1.0, 1.0 / (R * h_), hinge});
+  }
+  return out;
+}
+
+double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
+                              const Plasticity* plastic) const {
   if (setup_.geometry != Geometry::curved)
     throw std::invalid_argument("fem: the geometrically exact beam needs fem.geometry = \"curved\"");
   const Vector<double> full = expand(q);
@@ -45,6 +99,13 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
   if (gradient) gradient->reinit(n_free_);
   if (tangent) *tangent = 0.0;
+  const unsigned int per_cell = bend_rows_.size();  // bending points per cell (plastic_points.hpp)
+  const unsigned int hinge_base = n * per_cell;      // then the vertex hinges
+  if (plastic && plastic->committed.size() != bending_point_count())
+    throw std::logic_error("fem: " + std::to_string(plastic->committed.size()) + " plastic states for " +
+                           std::to_string(bending_point_count()) + " bending points");
+  // The vertices' hinge law (used with `plastic` only): the interior penalty's stiffness, Mp.
+  const ring::BilinearLaw hinge = bending_law(plastic ? *spec_.plastic : ring::Plastic{}, penalty_);
 
   auto strain = [&](const std::vector<double>& x, unsigned int qp, std::vector<Vec4>& b) {
     Vec4 g{1.0, 0.0, 0.0, 0.0};
@@ -69,20 +130,25 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
     for (unsigned int i = 0; i < dpc; ++i) x[i] = full[dofs[i]];
     std::fill(f.begin(), f.end(), 0.0);
     k_cell = 0;
-    for (unsigned int qp = 0; qp < nq_; ++qp) {
-      const Scalar w = point_energy(strain(x, qp, b), EA, EI, R);
-      energy += ds_[qp] * w.value;
+    // A density w at a point of weight ds whose rows are b: its energy, force and tangent.
+    auto add_point = [&](const Scalar& w, double ds) {
+      energy += ds * w.value;
       for (unsigned int i = 0; i < dpc; ++i) {
         Vec4 Hb{};
         for (int a = 0; a < 4; ++a) {
-          f[i] += ds_[qp] * w.d[a] * b[i][a];
+          f[i] += ds * w.d[a] * b[i][a];
           for (int c = 0; c < 4; ++c) Hb[a] += w.dd[a][c] * b[i][c];
         }
         if (tangent)
           for (unsigned int j = 0; j < dpc; ++j)
-            k_cell(j, i) += ds_[qp] * (b[j][0] * Hb[0] + b[j][1] * Hb[1] + b[j][2] * Hb[2] + b[j][3] * Hb[3]);
+            k_cell(j, i) += ds * (b[j][0] * Hb[0] + b[j][1] * Hb[1] + b[j][2] * Hb[2] + b[j][3] * Hb[3]);
       }
-    }
+    };
+    for (unsigned int qp = 0; qp < nq_; ++qp) add_point(point_energy(strain(x, qp, b), EA, EI, R, !plastic), ds_[qp]);
+    if (plastic)
+      for (unsigned int j = 0; j < per_cell; ++j)
+        add_point(plastic_bending(strain(x, bend_rows_[j], b), R, plastic->law, plastic->committed[cell * per_cell + j]),
+                  bend_ds_[j]);
     if (gradient) scatter(dofs, {f.begin(), f.begin() + dpc});
     if (tangent) add_local(k_cell, dofs, *tangent);
   }
@@ -103,28 +169,62 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
     const Scalar pl = tangent_angle(gl), pr = tangent_angle(gr);
     const Scalar kl = rotation_rate(gl), kr = rotation_rate(gr);
     const double J = std::remainder(pr.value - pl.value, 2.0 * kPi);
+    // {M} = (M_L + M_R) / 2 and its derivative mL dk_L + mR dk_R (k = phi', kappa = k / R):
+    // elastic M = EI kappa; ring.plastic: the law at the two cells' end bending points
+    // (plastic_points.hpp), whose tangent jumps are not in the Hessian (they meet J = 0).
     const double m = EI / (2.0 * R);
-    const double M = m * (kl.value + kr.value), P = penalty_;
-    energy += M * J + 0.5 * P * J * J;
+    double M = m * (kl.value + kr.value), mL = m, mR = m;
+    if (plastic) {
+      const ring::BilinearLaw::Point l = plastic->law.at(plastic->committed[left * per_cell + per_cell - 1], kl.value / R);
+      const ring::BilinearLaw::Point r = plastic->law.at(plastic->committed[v * per_cell], kr.value / R);
+      M = 0.5 * (l.force + r.force);
+      mL = 0.5 * l.tangent / R;
+      mR = 0.5 * r.tangent / R;
+    }
+    const double P = penalty_;
     // Derivatives in the 8 local strain variables (left g | right g), then to the DoFs.
     std::array<double, 8> dJ{}, dM{};
     std::array<std::array<double, 8>, 8> H{};
     for (int a = 0; a < 4; ++a) {
       dJ[a] = -pl.d[a];
       dJ[4 + a] = pr.d[a];
-      dM[a] = m * kl.d[a];
-      dM[4 + a] = m * kr.d[a];
+      dM[a] = mL * kl.d[a];
+      dM[4 + a] = mR * kr.d[a];
     }
-    const double s = M + P * J;
-    for (int a = 0; a < 8; ++a)
-      for (int c = 0; c < 8; ++c) H[a][c] = dM[a] * dJ[c] + dJ[a] * dM[c] + P * dJ[a] * dJ[c];
-    for (int a = 0; a < 4; ++a)
-      for (int c = 0; c < 4; ++c) {
-        H[a][c] += J * m * kl.dd[a][c] - s * pl.dd[a][c];
-        H[4 + a][4 + c] += J * m * kr.dd[a][c] + s * pr.dd[a][c];
-      }
     std::array<double, 8> dE{};
-    for (int a = 0; a < 8; ++a) dE[a] = J * dM[a] + s * dJ[a];
+    if (plastic) {
+      // E_v = {M} J + P/2 J^2 = P/2 e^2 - {M}^2 / (2 P) with e = J + {M} / P, and P e =
+      // {M} + P J the moment the vertex passes on: the vertex is a hinge of stiffness P whose
+      // moment the law caps (plastic_points.hpp), E_v = W_P(e) - {M}^2 / (2 P), W_P the
+      // incremental potential of the law with stiffness P from the hinge's committed state.
+      // With F = W_P'(e), T = W_P''(e) and g = dJ + dM / P: dE_v = F g - {M} / P dM,
+      // d2E_v = T g g^T - dM dM^T / P + F d2J + (F - {M}) / P d2M (elastic: F = {M} + P J).
+      const ring::BilinearLaw::Point h = hinge.at(plastic->committed[hinge_base + v], J + M / P);
+      energy += h.potential - 0.5 * M * M / P;
+      std::array<double, 8> g{};
+      for (int a = 0; a < 8; ++a) g[a] = dJ[a] + dM[a] / P;
+      for (int a = 0; a < 8; ++a) {
+        dE[a] = h.force * g[a] - M / P * dM[a];
+        for (int c = 0; c < 8; ++c) H[a][c] = h.tangent * g[a] * g[c] - dM[a] * dM[c] / P;
+      }
+      const double j = (h.force - M) / P;  // J when elastic
+      for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 4; ++c) {
+          H[a][c] += j * mL * kl.dd[a][c] - h.force * pl.dd[a][c];
+          H[4 + a][4 + c] += j * mR * kr.dd[a][c] + h.force * pr.dd[a][c];
+        }
+    } else {
+      energy += M * J + 0.5 * P * J * J;
+      const double s = M + P * J;
+      for (int a = 0; a < 8; ++a)
+        for (int c = 0; c < 8; ++c) H[a][c] = dM[a] * dJ[c] + dJ[a] * dM[c] + P * dJ[a] * dJ[c];
+      for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 4; ++c) {
+          H[a][c] += J * mL * kl.dd[a][c] - s * pl.dd[a][c];
+          H[4 + a][4 + c] += J * mR * kr.dd[a][c] + s * pr.dd[a][c];
+        }
+      for (int a = 0; a < 8; ++a) dE[a] = J * dM[a] + s * dJ[a];
+    }
     auto local_b = [&](unsigned int i) -> const Vec4& { return i < dpc ? b[i] : br[i - dpc]; };
     for (unsigned int i = 0; i < 2 * dpc; ++i) {
       const Vec4& bi = local_b(i);

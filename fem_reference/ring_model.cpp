@@ -124,6 +124,13 @@ void RingModel::make_grid() {
   std::vector<double> weights = gauss.get_weights();
   weights.push_back(0.0);
   weights.push_back(0.0);
+  // ring.plastic's bending points (plastic_points.hpp): the (p + 1)-point Gauss-Lobatto
+  // rule, whose ends are the two above; its interior points follow them in the table.
+  const QGaussLobatto<1> lobatto(setup_.degree + 1);
+  for (unsigned int j = 1; j + 1 < lobatto.size(); ++j) {
+    points.push_back(lobatto.point(j));
+    weights.push_back(lobatto.weight(j));
+  }
   const Quadrature<1> table_points(points, weights);
   FEValues<1> fev(fe_, table_points, update_values | update_gradients | update_hessians | update_JxW_values);
   fev.reinit(cells_[0]);
@@ -138,6 +145,13 @@ void RingModel::make_grid() {
     }
   }
   for (unsigned int i = 0; i < dpc; ++i) component_.push_back(fe_.system_to_component_index(i).first);
+  // The bending points' rows (left end, interior in order, right end) and ds0 weights: the
+  // Lobatto weight times the cell's length (the Gauss weights of ds_ sum to that length).
+  const double cell_length = std::accumulate(ds_.begin(), ds_.begin() + nq_, 0.0);
+  for (unsigned int j = 0; j < lobatto.size(); ++j) {
+    bend_rows_.push_back(j == 0 ? nq_ : j + 1 == lobatto.size() ? nq_ + 1 : nq_ + 1 + j);
+    bend_ds_.push_back(lobatto.weight(j) * cell_length);
+  }
   // The geometrically exact beam's distributed terms use the same Gauss rule (curved
   // geometry: the rows of x = u t0 + (R + w) n0 and a = dx/ds0, nonlinear.hpp).
   if (setup_.geometry == Geometry::curved)

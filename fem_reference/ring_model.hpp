@@ -51,6 +51,7 @@
 
 #include "fem_reference/checks.hpp"
 #include "fem_reference/modes.hpp"
+#include "fem_reference/plastic_points.hpp"
 
 namespace fem::detail {
 
@@ -239,7 +240,21 @@ class BeamModel : public LinearModel {
   /// Strain energy of the beam at the reduced displacement q; adds its gradient (the
   /// internal force) and its Hessian (the consistent tangent, on sparsity()) when not null
   /// (gradient reinit, tangent zeroed first).
-  virtual double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const = 0;
+  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const {
+    return beam_energy(q, gradient, tangent, nullptr);
+  }
+  /// The same with the bending of ring.plastic (plastic_points.hpp): each bending point's
+  /// energy density is the law's incremental potential from its committed state (the value
+  /// returned is then the beam's incremental potential; equal to its elastic energy when
+  /// q is the committed equilibrium). `plastic` null: elastic, bit for bit the 3-argument form.
+  virtual double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
+                             const Plasticity* plastic) const = 0;
+  /// The strain (curvature, or a vertex hinge's rotation) and weight of every bending point
+  /// at q, in the model's order (plastic_points.hpp), as beam_energy evaluates them from the
+  /// committed states: what the statics commit. O(cells (p+2) (2p+3)).
+  virtual std::vector<BendingPoint> bending_points(const Vector<double>& q, const Plasticity& plastic) const = 0;
+  /// How many bending points (and plastic states) the model has.
+  virtual std::size_t bending_point_count() const = 0;
   // mass() (constant: the polar basis at fixed theta does not move) and stiffness() (the
   // tangent of beam_energy at q = 0) are LinearModel's.
   unsigned int cells() const { return setup_.cells(); }
@@ -318,7 +333,11 @@ class RingModel : public BeamModel {
 
   // The geometrically exact beam on the same mesh, fields and constraints (ring_beam.cpp;
   // curved geometry only, formulation in nonlinear.hpp). O(cells (p+2) (2p+3)^2).
-  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const override;
+  using BeamModel::beam_energy;
+  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
+                     const Plasticity* plastic) const override;
+  std::vector<BendingPoint> bending_points(const Vector<double>& q, const Plasticity& plastic) const override;
+  std::size_t bending_point_count() const override;
 
  private:
   std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const override { return end_dofs(k, 0.0); }
@@ -368,6 +387,11 @@ class RingModel : public BeamModel {
   /// index [q * dpc + i]. ds_[q]: quadrature weight times ds/dtheta.
   unsigned int nq_ = 0;
   std::vector<double> v0_, v1_, v2_, ds_;
+  /// ring.plastic's bending points of a cell (plastic_points.hpp: the p + 1 Gauss-Lobatto
+  /// points, ends included): their index in the table above (nq_ the left end, nq_ + 1
+  /// the right end, the interior ones after them) and their weight times ds0/dxi (m).
+  std::vector<unsigned int> bend_rows_;
+  std::vector<double> bend_ds_;
   std::vector<unsigned int> component_;
   double penalty_ = 0.0;  ///< sigma EI / h of the interior penalty
 };

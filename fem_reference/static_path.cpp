@@ -53,6 +53,9 @@ double path_point(const ring::StaticOptions& st) {
 /// row and column)
 /// and factorized as a whole by UMFPACK (regular at a limit point, where K alone is
 /// singular); self-contact checked along the chord between accepted equilibria.
+/// ring.plastic: it holds the committed plastic state of every bending point of the beam
+/// (plastic_points.hpp); every trial (linearize, tangent) is evaluated from them, and
+/// accept() commits them at the accepted equilibrium, adding the step's plastic work.
 class BeamEquilibrium : public paths::Equilibrium {
  public:
   BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st, StaticSolve& out);
@@ -106,6 +109,8 @@ class BeamEquilibrium : public paths::Equilibrium {
   /// vertices k and k + cells / 2; with an odd count of cells the nearest to opposite, as
   /// the chains do) / R.
   ring::PathPoint point_at(double s, const Vector<double>& q) const;
+  /// The committed plastic states for BeamPotential::evaluate; null without ring.plastic.
+  const std::vector<ring::PlasticState>* committed() const { return law_ ? &plastic_ : nullptr; }
   Vector<double> full(const paths::Vector& z) const {
     Vector<double> q(N_);
     for (unsigned int i = 0; i < N_; ++i) q[i] = z(i);
@@ -119,6 +124,10 @@ class BeamEquilibrium : public paths::Equilibrium {
   const unsigned int N_;
   const unsigned int loaded_;
   const BeamPotential potential_;
+  const std::optional<ring::BilinearLaw>& law_;  ///< ring.plastic's, or nullopt
+  std::vector<ring::PlasticState> plastic_;      ///< committed, per bending point
+  double dissipated_ = 0.0;                      ///< plastic work from rest, J
+  double plastic_curvature_ = 0.0;               ///< largest |kappa_p| now, 1/m
   Vector<double> F_;  ///< grad Phi at the last linearization: the load, dR/ds = -F
   const double radius_, depth_;  ///< depth: the self-contact distance
   unsigned int per_cell_ = 2;    ///< centreline points per cell (spacing <= depth / 2)
@@ -143,6 +152,7 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
       N_(model_.n_free()),
       loaded_(model_.vertex_of(path_point(st))),
       potential_(model_, st.loads),
+      law_(potential_.plastic_law()),
       radius_(spec.radius),
       depth_(spec.section.depth()),
       q_(N_),
@@ -164,12 +174,13 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
   B_.reinit(pattern_);
   out_.unknowns = N_;
   out_.path.push_back({0.0, {0.0, 0.0}});
+  if (law_) plastic_.assign(model_.bending_point_count(), ring::PlasticState{});
   last_centreline_ = model_.centreline(model_.expand(q_), per_cell_);
 }
 
 bool BeamEquilibrium::linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) {
   for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
-  potential_.evaluate(q_, x.s, &r_, &B_, &F_);  // K in the top-left block, border zeroed
+  potential_.evaluate(q_, x.s, &r_, &B_, &F_, committed());  // K in the top-left block, border zeroed
   for (unsigned int i = 0; i < N_; ++i) {
     B_.set(i, N_, -F_[i]);
     B_.set(N_, i, w(i));
@@ -196,8 +207,27 @@ bool BeamEquilibrium::solve(paths::Vector& y) {
 
 std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const paths::State& to) {
   const Vector<double> q = full(to.z);
-  out_.path.push_back({to.s, model_.vertex_displacement(q, loaded_)});
-  if (recording_) out_.points.push_back(point_at(to.s, q));
+  StaticPath::Point at_path{to.s, model_.vertex_displacement(q, loaded_)};
+  if (law_) {
+    // Commit before anything else: a touch ends the path at this equilibrium too.
+    for (unsigned int i = 0; i < N_; ++i) q_[i] = to.z(i);
+    const std::vector<BendingPoint> bp = model_.bending_points(q_, Plasticity{*law_, plastic_});
+    const Committed step = commit(*law_, bp, plastic_);
+    dissipated_ += step.dissipated;
+    plastic_curvature_ = step.largest_plastic;
+    out_.dissipated = dissipated_;
+    out_.plastic_curvature = plastic_curvature_;
+    const BeamPotential::Value v = potential_.evaluate(q_, 0.0, nullptr, nullptr, nullptr, &plastic_);
+    at_path.stored = v.stored;
+    at_path.load = v.load;
+    at_path.dissipated = dissipated_;
+  }
+  out_.path.push_back(at_path);
+  if (recording_) {
+    out_.points.push_back(point_at(to.s, q));
+    out_.points.back().dissipated = dissipated_;
+    out_.points.back().plastic_curvature = plastic_curvature_;
+  }
   std::vector<Point2> next = model_.centreline(q, per_cell_);
   // The deformed centreline moves between the two equilibria; checking only the ends
   // could miss a part passing through another, so the chord between them is checked at
@@ -231,7 +261,7 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
 Eigen::SparseMatrix<double> BeamEquilibrium::tangent(const paths::State& x) {
   for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
   SparseMatrix<double> T(pattern_);
-  potential_.evaluate(q_, x.s, nullptr, &T);
+  potential_.evaluate(q_, x.s, nullptr, &T, nullptr, committed());
   std::vector<Eigen::Triplet<double>> t;
   for (auto e = T.begin(); e != T.end(); ++e)
     if (e->row() < N_ && e->column() < N_ && e->value() != 0.0) t.emplace_back(e->row(), e->column(), e->value());

@@ -22,6 +22,10 @@ struct StaticSolve {
   /// st.path: every accepted equilibrium from rest as ring::PathPoint (the displacements
   /// at st.record, the ovalisation between opposite vertices), the touching one last.
   std::vector<ring::PathPoint> points;
+  /// ring.plastic, at the path's end: the plastic work done (J) and the largest |plastic
+  /// curvature| (1/m) of the beam's bending points (plastic_points.hpp); 0 without.
+  double dissipated = 0.0;
+  double plastic_curvature = 0.0;
 };
 
 /// Traces the path of `st` with the discretization `setup` (no throw on a failed path:

@@ -32,7 +32,13 @@ class TimoshenkoModel : public BeamModel {
   /// The Reissner beam's strain energy, its exact gradient and Hessian (reissner_beam.cpp):
   /// membrane and shear with the p-point rule, bending with p + 1 points, as the linear
   /// model's stiffness, which is its tangent at rest. O(cells (p+1) (3p+3)^2).
-  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent) const override;
+  using BeamModel::beam_energy;
+  double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
+                     const Plasticity* plastic) const override;
+  std::vector<BendingPoint> bending_points(const Vector<double>& q, const Plasticity& plastic) const override;
+  /// ring.plastic is not offered on the Reissner beam (check_static): these throw
+  /// std::logic_error, and beam_energy does with a non-null `plastic`.
+  std::size_t bending_point_count() const override { return 0; }
 
  private:
   std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const override {
