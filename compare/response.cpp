@@ -74,7 +74,7 @@ std::string static_text(const ring::StaticResult& r) {
   if (!r.path.empty()) {
     const std::string line = path_summary({r});
     s << "path: " << line.substr(line.find(": ") + 2)
-      << (r.end == "full load" ? "at the full load:\n" : "at the touch:\n");
+      << (r.end == "full load" ? "at the full load:\n" : r.end == "end of the history" ? "at its end:\n" : "at the touch:\n");
   }
   s << "   angle deg        ux m        uy m\n";
   for (const auto& d : r.displacements) s << fmt::format("  {:10.4g}  {:10.4e}  {:10.4e}\n", d.angle, d.ux, d.uy);

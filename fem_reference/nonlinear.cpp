@@ -83,8 +83,8 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
     const bool touched = sol.trace.end == paths::Trace::End::contact;
     r.path = std::move(sol.points);
     r.branch_points = sol.trace.branch_points;
-    r.end = touched ? "contact: " + sol.trace.contact : "full load";
-    r.end_load = touched ? sol.trace.end_load : 1.0;
+    r.end = touched ? "contact: " + sol.trace.contact : st.history.empty() ? "full load" : "end of the history";
+    r.end_load = sol.trace.end_load;  // the touch, or the full load (a history: its last factor)
   }
   return r;
 }

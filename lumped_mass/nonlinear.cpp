@@ -263,7 +263,7 @@ class ChainStatics : public paths::Equilibrium {
     pt.load_factor = s;
     for (int k : record_) {
       const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
-      pt.displacements.push_back({c_.anchor_deg + 360.0 * k / c_.n, u.x(), u.y()});
+      pt.displacements.push_back({ring::wrap_degrees(c_.anchor_deg + 360.0 * k / c_.n), u.x(), u.y()});
     }
     double most = 0.0, least = INFINITY;
     for (int k = 0; k < (c_.n + 1) / 2; ++k) {
@@ -342,8 +342,8 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   if (statics.path) {
     out.path = st.path;
     out.branch_points = path.branch_points;
-    out.end = touched ? "contact: " + path.contact : "full load";
-    out.end_load = touched ? path.end_load : 1.0;
+    out.end = touched ? "contact: " + path.contact : statics.history.empty() ? "full load" : "end of the history";
+    out.end_load = path.end_load;  // the touch, or the full load (a history: its last factor)
   }
   out.steps = path.steps;
   out.newton_iterations = path.iterations;

@@ -306,8 +306,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   if (statics.path) {
     res.path = eq->path();
     res.branch_points = path.branch_points;
-    res.end = touched ? "contact: " + path.contact : "full load";
-    res.end_load = touched ? path.end_load : 1.0;
+    res.end = touched ? "contact: " + path.contact : statics.history.empty() ? "full load" : "end of the history";
+    res.end_load = path.end_load;  // the touch, or the full load (a history: its last factor)
   }
   res.solver = "multibody";
   res.unknowns = eq->size();  // angles and multipliers, or positions and multipliers

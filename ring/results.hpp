@@ -122,7 +122,7 @@ struct StaticResult {
   /// touched itself (a result: the equilibrium above is the last one before the touch).
   std::vector<PathPoint> path;
   std::vector<double> branch_points;
-  std::string end = "full load";  ///< "full load" or "contact: <where>"
+  std::string end = "full load";  ///< "full load", "end of the history" or "contact: <where>"
   double end_load = 1.0;          ///< load factor where the path ended
   /// ring.plastic, at the end: as PathPoint's (J, 1/m).
   double dissipated = 0.0;
