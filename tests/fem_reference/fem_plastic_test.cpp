@@ -30,6 +30,7 @@
 #include "support/convergence.hpp"
 #include "support/paper.hpp"
 #include "support/plastic_ring.hpp"
+#include "support/refusal.hpp"
 
 namespace {
 
@@ -281,27 +282,19 @@ TEST(FemPlastic, HugePlasticMomentGivesTheElasticResults) {
 TEST(FemPlastic, AnalysesWithoutThePlasticLawRefuseIt) {
   const ring::RingSpec spec = pinched_ring();
   const ring::FemOptions o = fem_options(32);
-  auto key_of = [](auto&& check) -> std::string {
-    try {
-      check();
-    } catch (const ring::InputError& e) {
-      return e.key();
-    }
-    return "";
-  };
   ring::ResponseOptions rs;
   rs.dt = 0.01;
   rs.t_end = 0.1;
-  EXPECT_EQ(key_of([&] { fem::check_response(spec, o, rs); }), "ring.plastic");
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_response(spec, o, rs); }), "ring.plastic");
   ring::BucklingOptions b;
   b.loads = pinch(1.0).loads;
-  EXPECT_EQ(key_of([&] { fem::check_buckling(spec, o, b); }), "ring.plastic");
-  EXPECT_EQ(key_of([&] { fem::check_preloaded_modes(spec, o, pinch(1.0, {})); }), "ring.plastic");
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_buckling(spec, o, b); }), "ring.plastic");
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_preloaded_modes(spec, o, pinch(1.0, {})); }), "ring.plastic");
   ring::RingSpec fibre = spec;
   fibre.plastic->law = ring::Plastic::Law::fibre;
   fibre.plastic->stress = 2.5e8;
-  EXPECT_EQ(key_of([&] { fem::check_static(fibre, o, pinch(1.0)); }), "ring.plastic.stress");
-  EXPECT_EQ(key_of([&] { fem::check_static(spec, o, pinch(1.0)); }), "");
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(fibre, o, pinch(1.0)); }), "ring.plastic.stress");
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(spec, o, pinch(1.0)); }), "");
 }
 
 /// The Reissner (Timoshenko) beam takes no plastic law yet (plastic_points.hpp): refused by key.

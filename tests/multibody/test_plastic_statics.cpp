@@ -28,6 +28,7 @@
 #include "tests/support/convergence.hpp"
 #include "tests/support/plastic_ring.hpp"
 #include "tests/multibody/common.hpp"
+#include "support/refusal.hpp"
 
 namespace {
 
@@ -311,21 +312,13 @@ TEST(PlasticStatics, TimoshenkoChainRefusesThePlasticLawNamingTheKey) {
 TEST(PlasticStatics, ResponseBucklingAndModesUnderLoadRefuseThePlasticLaw) {
   const ring::RingSpec spec = ring_with(plastic_moment());
   const ring::MultibodyOptions o = mbtest::chain_options(16, Method::dense);
-  auto key_of = [](auto&& run) -> std::string {
-    try {
-      run();
-    } catch (const ring::InputError& e) {
-      return e.key();
-    }
-    return "no refusal";
-  };
   ring::ResponseOptions response;
   response.loads = pinch(kPeak, {}).loads;
-  EXPECT_EQ(key_of([&] { multibody::respond(spec, o, response); }), "ring.plastic");
+  EXPECT_EQ(ringtest::refused_key([&] { multibody::respond(spec, o, response); }), "ring.plastic");
   ring::BucklingOptions buckling;
   buckling.loads = pinch(kPeak, {}).loads;
-  EXPECT_EQ(key_of([&] { multibody::compute_buckling(spec, o, buckling); }), "ring.plastic");
-  EXPECT_EQ(key_of([&] { multibody::compute_modes_under_load(spec, o, pinch(kPeak, {1.0}), 2); }), "ring.plastic");
+  EXPECT_EQ(ringtest::refused_key([&] { multibody::compute_buckling(spec, o, buckling); }), "ring.plastic");
+  EXPECT_EQ(ringtest::refused_key([&] { multibody::compute_modes_under_load(spec, o, pinch(kPeak, {1.0}), 2); }), "ring.plastic");
 }
 
 }  // namespace
