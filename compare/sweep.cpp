@@ -191,6 +191,18 @@ std::vector<double> check_sweep_cost(const std::string& text, const CommonArgs& 
   return rows;
 }
 
+/// Runs run(k) for k = 0 .. count - 1 on `jobs` threads, each taking the next k as it
+/// finishes one (the cases of a sweep differ in cost by orders of magnitude).
+void on_threads(std::size_t count, int jobs, const std::function<void(std::size_t)>& run) {
+  std::atomic<std::size_t> next{0};
+  std::vector<std::thread> pool;
+  for (int w = 0; w < std::min<int>(jobs, static_cast<int>(count)); ++w)
+    pool.emplace_back([&] {
+      for (std::size_t k; (k = next++) < count;) run(k);
+    });
+  for (auto& t : pool) t.join();
+}
+
 }  // namespace
 
 std::map<std::vector<std::string>, std::vector<SweepRow>> done_cases(
@@ -484,6 +496,38 @@ std::string sweep_json(const std::vector<std::string>& keys, const std::vector<S
   return j.dump(2) + "\n";
 }
 
+SweepTable run_sweep(const std::string& text, const CommonArgs& a, const std::vector<std::string>& vary, bool zip,
+                     int jobs, const std::function<void(int, int, int)>& on_case) {
+  SweepTable out;
+  const double max_cases = a.force ? std::numeric_limits<int>::max() : a.max_memory_gib * double(1ull << 30) / 1e3;
+  const auto cases = sweep_cases(vary, zip, out.keys, max_cases);
+  std::vector<std::vector<std::string>> overrides;
+  for (const auto& c : cases) {
+    std::vector<std::string> o;
+    for (std::size_t k = 0; k < out.keys.size(); ++k) o.push_back(out.keys[k] + "=" + c[k]);
+    overrides.push_back(std::move(o));
+  }
+  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  check_sweep_cost(text, a, overrides, out.keys, jobs);
+  std::vector<std::vector<SweepRow>> results(cases.size());
+  std::atomic<int> finished{0}, failed{0};
+  std::mutex report;
+  on_threads(cases.size(), jobs, [&](std::size_t i) {
+    results[i] = run_case(text, a, static_cast<int>(i), overrides[i], cases[i]);
+    if (results[i].size() == 1 && results[i][0].status != "ok") ++failed;
+    const int f = ++finished;
+    if (on_case) {
+      const std::lock_guard<std::mutex> one(report);
+      on_case(f, static_cast<int>(cases.size()), failed.load());
+    }
+  });
+  for (auto& r : results)
+    for (auto& x : r) out.rows.push_back(std::move(x));
+  if (!cases.empty() && failed.load() == static_cast<int>(cases.size()))
+    throw ring::NumericalError("every case of the sweep failed (the first: " + out.rows.front().message + ")");
+  return out;
+}
+
 int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   const int ranks = mpi::launched_size();
@@ -545,13 +589,7 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
     for (std::size_t k = 0; k < todo.size(); ++k)
       for (const auto& j : nlohmann::json::parse(texts[k])) results[todo[k]].push_back(row_from_json(j));
   } else {
-    std::atomic<std::size_t> next{0};
-    std::vector<std::thread> pool;
-    for (int w = 0; w < std::min<int>(jobs, static_cast<int>(todo.size())); ++w)
-      pool.emplace_back([&] {
-        for (std::size_t k; (k = next++) < todo.size();) results[todo[k]] = run(todo[k]);
-      });
-    for (auto& t : pool) t.join();
+    on_threads(todo.size(), jobs, [&](std::size_t k) { results[todo[k]] = run(todo[k]); });
   }
   line.finish();
 

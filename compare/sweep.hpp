@@ -77,6 +77,19 @@ std::vector<SweepRow> run_case(const std::string& text, const CommonArgs& a, int
 std::string sweep_csv(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
 std::string sweep_json(const std::vector<std::string>& keys, const std::vector<SweepRow>& rows);
 
+/// A sweep's table: the varied keys and every case's rows, in case order.
+struct SweepTable {
+  std::vector<std::string> keys;
+  std::vector<SweepRow> rows;
+};
+/// The cases of `vary` (as --vary) on the scene `text` with a.set, checked before any runs
+/// (the cases, the cost guard, every case's scene) and run on `jobs` threads (0: all cores),
+/// as `ringvib sweep` runs them without MPI or --resume; `on_case(finished, total, failed)`
+/// after each case, one call at a time. Throws ring::InputError before anything runs, and
+/// ring::NumericalError when every case failed. The Python module's sweep.
+SweepTable run_sweep(const std::string& text, const CommonArgs& a, const std::vector<std::string>& vary, bool zip,
+                     int jobs, const std::function<void(int, int, int)>& on_case);
+
 /// The subcommand. Exit 0 when the sweep completes (failed cases are rows); 2 for bad
 /// input, found before any case runs (every case is checked); 3 when every case failed,
 /// and then nothing is published.

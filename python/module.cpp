@@ -21,6 +21,7 @@
 #include "compare/nonlinear.hpp"
 #include "compare/registry.hpp"
 #include "compare/runner.hpp"
+#include "compare/sweep.hpp"
 #include "compare/table.hpp"
 #include "python/convert.hpp"
 #include "ring/errors.hpp"
@@ -637,6 +638,45 @@ PYBIND11_MODULE(ringvib, m) {
                    "per point). progress: a callable given each progress line (str), from the solving thread\n"
                    "with the GIL held; an exception it raises is raised when the study ends. Times are this\n"
                    "machine's, under its load: read them as ratios within one study. ") +
+       kBudgetDoc)
+          .c_str());
+
+  m.def(
+      "sweep",
+      [](const Scene& s, py::dict vary, bool zip, int jobs, py::object progress, double max_memory_gib, bool force) {
+        // Each list as the --vary text of the command: the overrides' TOML for the list.
+        std::vector<std::string> lists;
+        for (const auto& [k, v] : vary) lists.push_back(override_text(k.cast<std::string>(), v));
+        cmp::CommonArgs a;
+        a.scene = s.name;
+        a.set = s.overrides;
+        a.max_memory_gib = max_memory_gib;
+        a.force = force;
+        std::optional<py::error_already_set> failed;
+        const std::function<void(int, int, int)> on_case = [&](int done, int total, int failures) {
+          if (progress.is_none()) return;
+          py::gil_scoped_acquire gil;
+          if (!failed) try {
+              progress(done, total, failures);
+            } catch (py::error_already_set& e) {
+              failed.emplace(std::move(e));
+            }
+        };
+        const cmp::SweepTable t = released([&] { return cmp::run_sweep(s.text, a, lists, zip, jobs, on_case); });
+        if (failed) throw *failed;
+        return json_rows(cmp::sweep_json(t.keys, t.rows));
+      },
+      py::arg("scene"), py::arg("vary"), py::kw_only(), py::arg("zip") = false, py::arg("jobs") = 0,
+      py::arg("progress") = py::none(), py::arg("max_memory_gib") = 8.0, py::arg("force") = false,
+      (std::string("The scene over many values, as `ringvib sweep SCENE --vary KEY=[...]` (its sweep.json's\n"
+                   "rows): vary maps each key to its list of values ({'multibody.n': [20, 40, 80]}); every\n"
+                   "combination, or with zip=True the lists in lockstep. Cases run on `jobs` threads (0: all\n"
+                   "cores) with the GIL released; a case that fails is a row with its status and message.\n"
+                   "A list of dicts: case, the varied keys' values (TOML text), solver, analysis, quantity,\n"
+                   "value (rad/s or m), error_pct (None without a reference), unknowns, seconds, status,\n"
+                   "message. progress: a callable progress(done, total, failed) after each case, with the GIL\n"
+                   "held; an exception it raises is raised when the sweep ends. Raises NumericalError when\n"
+                   "every case failed. ") +
        kBudgetDoc)
           .c_str());
 

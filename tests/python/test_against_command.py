@@ -196,6 +196,25 @@ def test_bench_equals_the_commands_csv(tmp_path):
     assert lines[0] == "ringvib: computing the converged static reference"
 
 
+def test_sweep_equals_the_commands_json(tmp_path):
+    # The command's sweep.json rows, but for the seconds (which differ run to run); the progress
+    # callable sees every case finish once.
+    vary = {"multibody.n": [20, 40, 80], "static.force": [[-1e4, 0.0], [-3e4, 0.0]]}
+    calls = []
+    rows = ringvib.sweep(ringvib.Scene.load(scene_path("paper1990-static.toml")), vary, jobs=2,
+                         progress=lambda done, total, failed: calls.append((done, total, failed)))
+    run = command("sweep", scene_path("paper1990-static.toml"), "--vary", "multibody.n=[20, 40, 80]",
+                  "--vary", "static.force=[[-1e4, 0.0], [-3e4, 0.0]]", "--out", str(tmp_path / "out"))
+    assert run.returncode == 0, run.stderr
+    expected = json.loads((tmp_path / "out" / "sweep.json").read_text())["rows"]
+    strip = lambda r: {k: v for k, v in r.items() if k != "seconds"}
+    assert [strip(r) for r in rows] == [strip(r) for r in expected]
+    assert sorted(calls) == [(i, 6, 0) for i in range(1, 7)]
+    with pytest.raises(ringvib.InputError) as e:
+        ringvib.sweep(ringvib.Scene.load(scene_path("paper1990-static.toml")), {"multibody.n": [40, 3]})
+    assert "multibody.n" in str(e.value)
+
+
 def test_static_table_equals_the_commands_json():
     values = {"static.solvers": ["multibody", "lumped"]}
     texts = {"static.solvers": '["multibody", "lumped"]'}
