@@ -43,8 +43,8 @@ ring::CalculixOptions read_options(const ring::OptionValues& v) {
 
 // ccx runs in its own process: ringvib holds the deck and the .dat text, a few KB per
 // node and mode; ccx's own memory (about 100 MB at 640 B32R elements) is not ringvib's.
-double memory_estimate(const ring::Scene& s, int count) {
-  return calculix::node_count(s.calculix) * (2000.0 + 200.0 * std::max(count, 1));
+double memory_estimate(const ring::CalculixOptions& o, const ring::MemoryQuery& q) {
+  return calculix::node_count(o) * (2000.0 + 200.0 * std::max(q.count, 1));
 }
 
 }  // namespace calculix

@@ -43,6 +43,17 @@ auto as_input_error(const ring::Scene& s, const std::string& name, F&& f) -> dec
   }
 }
 
+/// What a solver's memory estimate reads of the scene (ring/memory_query.hpp).
+ring::MemoryQuery memory_query(const ring::Scene& s, int count) {
+  ring::MemoryQuery q;
+  q.count = count;
+  q.preload = s.modes.preload_static;
+  q.response = s.response.has_value();
+  q.statics = s.statics ? &*s.statics : nullptr;
+  q.reference = s.needs_reference();
+  return q;
+}
+
 /// True when the nonlinear request lists the solver.
 bool runs(const ring::NonlinearRequest& q, const std::string& name) {
   return std::find(q.solvers.begin(), q.solvers.end(), name) != q.solvers.end();
@@ -102,7 +113,7 @@ SolverEntry multibody_entry() {
   e.converge_steps = 5;
   e.richardson = true;
   e.paper = [](const ring::PaperRow& r) { return r.mb_corrected; };
-  e.memory = multibody::memory_estimate;
+  e.memory = [](const ring::Scene& s, int count) { return multibody::memory_estimate(s.ring, s.multibody, memory_query(s, count)); };
   e.check_modes = [](const ring::Scene& s) {
     if (s.modes.preload_static) multibody::check_preloaded_modes(s.ring, s.multibody, *s.statics);
     else multibody::check_modes(s.ring, s.multibody);
@@ -181,7 +192,7 @@ SolverEntry lumped_entry() {
   e.curve = [](const ring::Scene& s) { return "lumped (" + ring::to_string(s.lumped.variant) + ")"; };
   e.converge_steps = 5;
   e.paper = [](const ring::PaperRow& r) { return r.lm_corrected; };
-  e.memory = lumped::memory_estimate;
+  e.memory = [](const ring::Scene& s, int count) { return lumped::memory_estimate(s.lumped, memory_query(s, count)); };
   e.check_modes = [](const ring::Scene& s) {
     if (s.modes.preload_static) lumped::check_preloaded_modes(s.ring, s.lumped, *s.statics);
     else lumped::check_modes(s.ring, s.lumped);
@@ -243,7 +254,7 @@ SolverEntry fem_entry() {
   };
   e.converge_steps = 4;
   e.paper = [](const ring::PaperRow& r) { return r.fe_corrected; };
-  e.memory = fem::memory_estimate;
+  e.memory = [](const ring::Scene& s, int count) { return fem::memory_estimate(s.ring, s.fem, memory_query(s, count)); };
   // The deal.II plug-in and its libraries: peak RSS of the smallest FE run 162.7 MiB, the
   // process without it 7.8-8.8 MiB (compare/guard.cpp).
   e.code_bytes = 160.0 * (1 << 20);
@@ -329,7 +340,7 @@ SolverEntry calculix_entry() {
     return v;
   };
   e.converge_steps = 4;
-  e.memory = calculix::memory_estimate;
+  e.memory = [](const ring::Scene& s, int count) { return calculix::memory_estimate(s.calculix, memory_query(s, count)); };
   e.check_modes = [](const ring::Scene& s) {
     refuse_preload(s);
     with_scene_file(s, [&] {

@@ -58,13 +58,14 @@ ring::FemOptions read_options(const ring::OptionValues& v) {
 // (24 000 unknowns) since each accepted step counts the tangent's unstable directions
 // (its banded block LDL^T). Used: a fit
 // in p with ~4 % to spare. The reference raises p to fem::kMaxDegree (checks.hpp).
-double memory_estimate(const ring::Scene& s, int count) {
-  const double p = s.fem.reference || s.needs_reference() ? fem::kMaxDegree : s.fem.degree;
-  const double unknowns = (s.ring.theory == ring::Theory::timoshenko ? 3.0 : 2.0) * p * s.fem.elements;
+double memory_estimate(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::MemoryQuery& q) {
+  const int count = q.count;
+  const double p = o.reference || q.reference ? fem::kMaxDegree : o.degree;
+  const double unknowns = (spec.theory == ring::Theory::timoshenko ? 3.0 : 2.0) * p * o.elements;
   if (count == 0) return unknowns * (3400.0 + 650.0 * p);
   // Modes under load: the statics, then the dense pencil (three N x N matrices and the
   // eigen-solve's work, fem_reference/preload.hpp), ~100 N^2.
-  if (s.modes.preload_static) return unknowns * (3400.0 + 650.0 * p) + 100.0 * unknowns * unknowns;
+  if (q.preload) return unknowns * (3400.0 + 650.0 * p) + 100.0 * unknowns * unknowns;
   const double factor_peak = 2800.0 + 430.0 * p + 14.0 * p * p;
   return unknowns * (factor_peak + 85.0 * std::max(0, count - 23));
 }

@@ -37,17 +37,18 @@ ring::LumpedOptions read_options(const ring::OptionValues& v) {
 // one: 172.5 MB measured at 3 10^4, where 5.2 KB had been 165.4); the corotational frames'
 // statics 5.4 and 4.6 KB at n = 10^4, 3 10^4 (the process included). Used: those with 3-5 %
 // to spare.
-double memory_estimate(const ring::Scene& s, int count) {
-  const double n = s.lumped.n;
-  const bool frame = s.lumped.variant != ring::LumpedOptions::Variant::chain;
+double memory_estimate(const ring::LumpedOptions& o, const ring::MemoryQuery& q) {
+  const int count = q.count;
+  const double n = o.n;
+  const bool frame = o.variant != ring::LumpedOptions::Variant::chain;
   if (count == 0) return (frame ? 5600.0 : 5700.0) * n;
   // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
   // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
-  if (s.modes.preload_static) return (frame ? 600.0 : 100.0) * n * n;
+  if (q.preload) return (frame ? 600.0 : 100.0) * n * n;
   auto per_node = [count](double factor_peak, double with_basis) {
     return std::max(factor_peak, with_basis + 40.0 * count);
   };
-  switch (s.lumped.variant) {
+  switch (o.variant) {
     case ring::LumpedOptions::Variant::chain: return n * per_node(4370.0, 3990.0);
     case ring::LumpedOptions::Variant::frame: return n * per_node(6110.0, 4250.0);
     case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(8560.0, 7600.0);

@@ -50,36 +50,37 @@ ring::MultibodyOptions read_options(const ring::OptionValues& v) {
 // largest; 2.07-2.09 KB before the bordered band) and O(n) statics 1.15 KB per
 // segment (n = 4 10^4, 10^5: the continuation driver's states, tangent and bordered
 // solve, and since it takes every term, its terms and loads by hinge; 1.00-1.02 KB before). Used: those with 3-20 % to spare.
-double memory_estimate(const ring::Scene& s, int count) {
-  const double n = s.multibody.n;
-  auto banded = [&](multibody::Analysis a) { return multibody::backend(s.multibody, s.ring, a) == multibody::Backend::banded; };
+double memory_estimate(const ring::RingSpec& spec, const ring::MultibodyOptions& o, const ring::MemoryQuery& q) {
+  const double n = o.n;
+  const int count = q.count;
+  auto banded = [&](multibody::Analysis a) { return multibody::backend(o, spec, a) == multibody::Backend::banded; };
   // Modes under load (dense): the statics' path, then T, Z, the reduced pencil and the
   // eigensolver's work; measured 92 and 81 n^2 at n = 400, 800.
-  if (count > 0 && s.modes.preload_static) return 100.0 * n * n;
+  if (count > 0 && q.preload) return 100.0 * n * n;
   // The Timoshenko chain's dense matrices are (2n)^2: its shear angles double the unknowns.
-  const double N = s.ring.theory == ring::Theory::timoshenko ? 2.0 * n : n;
+  const double N = spec.theory == ring::Theory::timoshenko ? 2.0 * n : n;
   // The O(n) modes with the terms (hinge positions, multibody/position_modes.hpp): the
   // Lanczos basis of 2n rows, the band's factors, the vectors in both coordinates; slopes
   // between n = 2 10^4 and 5 10^4 (pinned, a spring and the foundation) for count = 5, 23,
   // 50: 1579, 2165, 3476 bytes per segment, n (1370 + 42 count). Used: n (1500 + 45 count).
   if (count > 0)
-    return multibody::backend(s.multibody, s.ring, count) == multibody::Backend::banded
-               ? (s.ring.paper_terms_only() ? n * (380.0 + 13.0 * count) : n * (1500.0 + 45.0 * count))
-               : (s.ring.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
+    return multibody::backend(o, spec, count) == multibody::Backend::banded
+               ? (spec.paper_terms_only() ? n * (380.0 + 13.0 * count) : n * (1500.0 + 45.0 * count))
+               : (spec.paper_terms_only() ? 52.0 : 74.0) * N * N;  // terms: +21.5 n^2 measured at n = 1500
   double bytes = 0.0;
   // Nonlinear Timoshenko chain (dense only, multibody/sections.hpp): the response's state and
   // Newton matrices are (phi, gamma), so its n^2 terms count N^2; the statics condense gamma
   // (n unknowns) and build K_c once (68 n^2). Measured (test_memory_estimate.cpp): response
   // 33.6 and 105 MB at n = 400, 800 (estimate / peak 1.25, 1.31), statics 18.8 and 43.2 MB
   // (1.11, 1.24).
-  const bool shear = s.ring.theory == ring::Theory::timoshenko;
-  if (s.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * N * N);
-  if (s.statics) {
+  const bool shear = spec.theory == ring::Theory::timoshenko;
+  if (q.response) bytes = std::max(bytes, banded(multibody::Analysis::response) ? 1850.0 * n : 50.0 * N * N);
+  if (q.statics) {
     // The O(n) statics with terms or loads beyond the paper's (Attachments, Loading, their
     // hinge blocks): 1.50 KB per segment measured (n = 4 10^4, 10^5: foundation, springs,
     // central pressure, gravity), 1.15 KB without.
-    const bool terms = !s.ring.paper_terms_only() || !s.statics->loads.points_only();
-    bytes = std::max(bytes, multibody::backend(s.multibody, s.ring, *s.statics) == multibody::Backend::banded
+    const bool terms = !spec.paper_terms_only() || !q.statics->loads.points_only();
+    bytes = std::max(bytes, multibody::backend(o, spec, *q.statics) == multibody::Backend::banded
                                 ? (terms ? 1750.0 : 1300.0) * n
                                 : (shear ? 68.0 : 60.0) * n * n);
   }

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ring/options_schema.hpp"
-#include "ring/scene.hpp"
+#include "ring/memory_query.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
@@ -16,10 +16,10 @@ const ring::OptionSchema& option_schema();
 /// present, defaults filled). O(1).
 ring::MultibodyOptions read_options(const ring::OptionValues& values);
 
-/// The working memory of the analyses `s` asks of this solver, bytes (beyond the process,
-/// which the cost guard adds: compare/guard.cpp); `count` the modes asked (0: the nonlinear
-/// analyses). Fitted to the peak RSS measured (the comment above the definition);
-/// tests/compare/test_memory_estimate.cpp holds it within [1, 1.5] of the measured peak.
-double memory_estimate(const ring::Scene& s, int count);
+/// The working memory of the analyses `q` asks of this solver, bytes (beyond the process,
+/// which the cost guard adds: compare/guard.cpp). Fitted to the peak RSS measured (the
+/// comment above the definition); tests/compare/test_memory_estimate.cpp holds it within
+/// [1, 1.5] of the measured peak.
+double memory_estimate(const ring::RingSpec& spec, const ring::MultibodyOptions& o, const ring::MemoryQuery& q);
 
 }  // namespace multibody

@@ -46,16 +46,7 @@ ringtest::PinchedPlasticRing oracle(const ring::RingSpec& s, double Mp) {
   return {s.radius, s.EI(), Mp};
 }
 
-/// Loads P toward the centre at 90 and 270 deg, both recorded; history [1, 0] unless
-/// `history` says otherwise.
-ring::StaticOptions pinch(double P, std::vector<double> history = {1.0, 0.0}, int steps = 20) {
-  ring::StaticOptions st;
-  st.loads.points = {{90.0, {0.0, -P}}, {270.0, {0.0, P}}};
-  st.record = {90.0, 270.0};
-  st.history = std::move(history);
-  st.steps = steps;
-  return st;
-}
+using ringtest::pinch;
 
 ring::FemOptions fem_options(int elements, int degree = 3) {
   ring::FemOptions o;

@@ -58,13 +58,7 @@ ringtest::PinchedPlasticRing oracle() {
 
 /// The pinch P = factor Mp / R at 90 and 270, the path along `history`.
 ring::StaticOptions pinch(double factor, std::vector<double> history, int steps = 20) {
-  const double P = factor * plastic_moment() / ringtest::free_ring().radius;
-  ring::StaticOptions st;
-  st.loads.points = {{90.0, {0.0, -P}}, {270.0, {0.0, P}}};
-  st.record = {90.0, 270.0};
-  st.history = std::move(history);
-  st.steps = steps;
-  return st;
+  return ringtest::pinch(factor * plastic_moment() / ringtest::free_ring().radius, std::move(history), steps);
 }
 
 /// The same limit analysis as plastic_ring.hpp, one step further: with hinges under the loads

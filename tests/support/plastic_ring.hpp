@@ -21,6 +21,10 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
+#include <vector>
+
+#include "ring/analysis.hpp"
 
 namespace ringtest {
 
@@ -42,5 +46,16 @@ struct PinchedPlasticRing {
   /// The moment left under the loads after loading to P* (in [P_y, P_c]) and unloading, N m.
   double residual_moment(double P) const { return Mp - P * R / M_PI; }
 };
+
+/// The statics of the pinch: P (N) toward the centre at 90 and 270 deg, both recorded, along
+/// `history` (default: loaded and unloaded) in `steps` increments per leg.
+inline ring::StaticOptions pinch(double P, std::vector<double> history = {1.0, 0.0}, int steps = 20) {
+  ring::StaticOptions st;
+  st.loads.points = {{90.0, {0.0, -P}}, {270.0, {0.0, P}}};
+  st.record = {90.0, 270.0};
+  st.history = std::move(history);
+  st.steps = steps;
+  return st;
+}
 
 }  // namespace ringtest
