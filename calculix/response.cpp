@@ -39,6 +39,10 @@ std::vector<int> iterations(const std::string& sta) {
 
 void check_response(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::ResponseOptions& rs) {
   check_response_deck(rs);
+  if (spec.plastic)
+    throw ring::InputError("", "ring.plastic",
+                           "the calculix response deck writes an elastic material: the plastic law enters "
+                           "calculix's statics only; leave calculix out of a plastic response");
   response_deck(spec, options, rs);  // the load and the recorded points on nodes; O(elements + steps)
   require_ccx();
 }

@@ -711,17 +711,11 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     r.fail("modes.preload", root.at_path("modes.preload").node(),
            "\"static\" takes the equilibrium of [static], and the scene has no [static] section");
 
-  // The elastic–plastic law enters the nonlinear statics; the analyses about the undeformed
-  // ring (buckling, the preloaded modes' elastic tangent) would ignore it silently.
+  // The elastic–plastic law enters the nonlinear statics and the forced response, each
+  // solver refusing by key what it cannot integrate (its checks); the analyses about the
+  // undeformed ring (buckling, the preloaded modes' elastic tangent) would ignore it silently.
   if (s.ring.plastic) {
     const toml::node* at = root.at_path("ring.plastic").node();
-    if (s.ring.plastic->law == Plastic::Law::fibre)
-      r.fail("ring.plastic.stress", at,
-             "the fibre law is not in this version yet; use the resultant law ring.plastic.moment (N m)");
-    if (s.response)
-      r.fail("ring.plastic", at,
-             "the forced response takes no plastic law yet, only the nonlinear statics ([static]) do: remove [response] "
-             "or ring.plastic");
     if (s.buckling)
       r.fail("ring.plastic", at,
              "linear buckling is about the undeformed, elastic ring and would ignore the plastic law: follow the "
