@@ -139,6 +139,10 @@ struct TimeHistory {
   std::vector<std::vector<double>> ux;   ///< [point][step], m
   std::vector<std::vector<double>> uy;   ///< [point][step], m
   std::vector<double> kinetic, strain, work, energy_error, constraint_residual;
+  /// ring.plastic: the plastic work done up to each step (J; empty for an elastic ring).
+  /// `strain` is then the elastic energy stored, and energy_error measures
+  /// kinetic + strain + dissipated - work.
+  std::vector<double> dissipated;
   std::vector<int> newton_iterations;
   /// Deformed node positions at selected instants (for the paper's Figure 5).
   std::vector<double> snapshot_t;
