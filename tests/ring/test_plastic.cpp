@@ -13,6 +13,8 @@
 #include "ring/plastic.hpp"
 #include "ring/section_law.hpp"
 #include "ring/spec.hpp"
+#include "support/fibre_ring.hpp"
+#include "support/plastic_ring.hpp"
 
 namespace {
 
@@ -191,3 +193,45 @@ TEST(SectionLaw, TheFibreLawsPotentialIsTheIntegralOfItsMomentAndAHingeScalesIt)
 }
 
 }  // namespace
+
+// The fibre ring's oracle (tests/support/fibre_ring.hpp) checked from outside itself: its
+// moment against Lubliner's closed forms above, its elastic closing against Roark's, and its
+// compatibility and unit-load integrals, given the resultant law with a little hardening,
+// against the limit analysis of the resultant law (tests/support/plastic_ring.hpp).
+TEST(FibrePinchedRingOracle, MatchesTheClosedFormsItIsBuiltFrom) {
+  for (const auto shape : {ring::Section::Shape::rectangle, ring::Section::Shape::circle}) {
+    ring::RingSpec s = fibre_ring(shape);
+    s.radius = 1.0;
+    const ringtest::FibrePinchedRing ring(s);
+    const double ymax = shape == ring::Section::Shape::rectangle ? s.section.height / 2 : s.section.diameter / 2;
+    const double ky = s.plastic->stress / (s.E * ymax);
+    EXPECT_NEAR(ring.closed_form_moment(0.3 * ky), s.EI() * 0.3 * ky, 1e-12 * s.EI() * ky);
+    for (double f : {1.5, 3.0, 20.0})  // (the closed forms above hold past first yield)
+      EXPECT_NEAR(ring.closed_form_moment(f * ky), closed_form_moment(s, f * ky), 1e-12 * closed_form_moment(s, f * ky));
+    EXPECT_NEAR(ring.EI(), s.EI(), 1e-12 * s.EI());
+    const double P = 0.8 * ring.first_yield();
+    const double roark = (M_PI / 4 - 2 / M_PI) * P / s.EI();
+    EXPECT_NEAR(ring.closing(P), roark, 1e-10 * roark);
+    EXPECT_NEAR(ring.moment_under_load(P), P / M_PI, 1e-10 * P);
+    // Past first yield the closing grows faster than the elastic one and stays finite.
+    EXPECT_GT(ring.closing(0.9 * ring.collapse()), (M_PI / 4 - 2 / M_PI) * 0.9 * ring.collapse() / s.EI());
+  }
+  // The resultant law (EI kappa to Mp, then the tangent hr EI) through the oracle's general
+  // path tends to the four-hinge closed form as hr -> 0: the spread plastic zone at the load
+  // has the width Delta / q (Delta = M0 - Mp ~ sqrt(hr)), so the difference falls as sqrt(hr).
+  ring::RingSpec s = fibre_ring(ring::Section::Shape::rectangle);
+  s.radius = 1.0;
+  const double Mp = 1.0e5, EI = s.EI();
+  const ringtest::PinchedPlasticRing hinge{1.0, EI, Mp};
+  std::vector<double> gaps;
+  for (double hr : {1e-6, 1e-8}) {
+    const ringtest::FibrePinchedRing ring(
+        s, [&](double k) { return std::copysign(std::abs(k) * EI <= Mp ? std::abs(k) * EI : Mp + hr * (std::abs(k) * EI - Mp), k); },
+        {Mp});
+    const double P = 0.5 * (hinge.first_yield() + hinge.collapse());
+    gaps.push_back(std::abs(ring.closing(P) - hinge.closing(P)) / hinge.closing(P));
+  }
+  std::printf("resultant law through the fibre oracle: relative gap %.3g (hr 1e-6), %.3g (hr 1e-8)\n", gaps[0], gaps[1]);
+  EXPECT_LT(gaps[1], 1e-3);
+  EXPECT_LT(gaps[1], gaps[0] / 5.0);  // sqrt(100) = 10-fold expected
+}
