@@ -362,8 +362,9 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("solver", &Response::solver)
       .def_readonly("history", &Response::history,
                     "One row per accepted step (t = 0 first): structured ndarray with the CSV's columns t (s),\n"
-                    "ux_<deg>, uy_<deg> per recorded point (m, ring-centred frame), kinetic, strain, work,\n"
-                    "energy_error (J), constraint_residual, newton_iterations (int).")
+                    "ux_<deg>, uy_<deg> per recorded point (m, ring-centred frame), kinetic, strain, (a plastic\n"
+                    "ring: dissipated, the plastic work), work, energy_error (J), constraint_residual,\n"
+                    "newton_iterations (int).")
       .def_readonly("record_angles", &Response::record_angles, "The recorded points, degrees: ndarray (points,).")
       .def_readonly("t", &Response::t, "Time, s: ndarray (steps,).")
       .def_readonly("ux", &Response::ux, "Displacement x, m: ndarray (points, steps).")
