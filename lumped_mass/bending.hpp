@@ -89,11 +89,11 @@ class Bending {
 
  private:
   const ring::PlasticState* state(int i) const { return &state_[static_cast<std::size_t>(i * states_)]; }
-  ring::BilinearLaw law_;                     ///< elastic or resultant, on the rotation
-  std::optional<ring::SectionLaw> section_;   ///< the fibre law, on the curvature e / l
+  ring::BilinearLaw law_;                    ///< elastic or resultant, on the rotation
+  std::optional<ring::SectionLaw> section_;  ///< the fibre law, on the curvature e / l
   int states_ = 1;
-  std::vector<ring::PlasticState> state_;     ///< states_ per point, point-major
-  std::vector<double> committed_;             ///< the fibre law: the rotations of the last commit
+  std::vector<ring::PlasticState> state_;  ///< states_ per point, point-major
+  std::vector<double> committed_;          ///< the fibre law: the rotations of the last commit
   double length_ = 0.0;
   bool plastic_ = false;
   double dissipated_ = 0.0;

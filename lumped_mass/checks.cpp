@@ -51,30 +51,42 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 void check_plastic(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
   if (!spec.plastic) return;
   const ring::Plastic& p = *spec.plastic;
-  auto refuse = [](const std::string& key, const std::string& why) { throw ring::InputError("", key, "lumped: " + why); };
+  auto refuse = [](const std::string& key, const std::string& why) {
+    throw ring::InputError("", key, "lumped: " + why);
+  };
   if (what != "statics" && what != "response")
-    refuse("ring.plastic", "the lumped " + what + " has no elastic–plastic state (only the nonlinear statics and the "
-           "chain's response commit one, at every accepted equilibrium or step); remove ring.plastic or run [static] "
-           "or [response]");
+    refuse(
+        "ring.plastic",
+        "the lumped " + what +
+            " has no elastic–plastic state (only the nonlinear statics and the "
+            "chain's response commit one, at every accepted equilibrium or step); remove ring.plastic or run [static] "
+            "or [response]");
   if (o.variant != ring::LumpedOptions::Variant::chain)
-    refuse("ring.plastic", "lumped.variant = \"" + ring::to_string(o.variant) + "\" cannot take it yet: a frame's "
-           "bending is in its elements, so a plastic hinge at a loaded node would form in the two elements beside it "
-           "(two hinges where the ring has one: a mechanism at first yield without hardening); use lumped.variant = "
-           "\"chain\" (its hinges take ring.plastic)");
+    refuse(
+        "ring.plastic",
+        "lumped.variant = \"" + ring::to_string(o.variant) +
+            "\" cannot take it yet: a frame's "
+            "bending is in its elements, so a plastic hinge at a loaded node would form in the two elements beside it "
+            "(two hinges where the ring has one: a mechanism at first yield without hardening); use lumped.variant = "
+            "\"chain\" (its hinges take ring.plastic)");
   if (p.law == ring::Plastic::Law::resultant) {
     if (!(p.moment > 0.0) || !std::isfinite(p.moment))
-      refuse("ring.plastic.moment", "ring.plastic.moment (= " + std::to_string(p.moment) + " N m) must be finite and > 0");
+      refuse("ring.plastic.moment",
+             "ring.plastic.moment (= " + std::to_string(p.moment) + " N m) must be finite and > 0");
   } else {
     if (!(p.stress > 0.0) || !std::isfinite(p.stress))
-      refuse("ring.plastic.stress", "ring.plastic.stress (= " + std::to_string(p.stress) + " Pa) must be finite and > 0");
+      refuse("ring.plastic.stress",
+             "ring.plastic.stress (= " + std::to_string(p.stress) + " Pa) must be finite and > 0");
     // The hinge's fibres (ring/section_law.hpp) sit through the section's depth.
     if (spec.section.shape == ring::Section::Shape::general)
-      refuse("ring.plastic.stress", "the fibre law needs the section's shape to put its fibres through the depth, and "
+      refuse("ring.plastic.stress",
+             "the fibre law needs the section's shape to put its fibres through the depth, and "
              "a section given by {area, inertia} has none; give ring.section as a circle or a rectangle, or use the "
              "resultant law (ring.plastic.moment)");
   }
   if (!(p.hardening >= 0.0 && p.hardening < 1.0))
-    refuse("ring.plastic.hardening", "ring.plastic.hardening (= " + std::to_string(p.hardening) + ") must be in [0, 1)");
+    refuse("ring.plastic.hardening",
+           "ring.plastic.hardening (= " + std::to_string(p.hardening) + ") must be in [0, 1)");
 }
 
 /// What every nonlinear analysis of the chain (and its linear buckling) needs; `what` is

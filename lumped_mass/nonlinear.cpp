@@ -383,7 +383,7 @@ Vec2 angle_discrete_gradient(const Vec2& v0, const Vec2& v1) {
   const Vec2 vm = 0.5 * (v0 + v1);
   const double c = v0.x() * v1.y() - v0.y() * v1.x(), d = v0.dot(v1);
   const double scale = d > 0.0 && std::abs(c) < 1e-4 * d ? (1.0 - (c / d) * (c / d) / 3.0) * vm.squaredNorm() / d
-                                                        : std::atan2(c, d) * vm.squaredNorm() / c;
+                                                         : std::atan2(c, d) * vm.squaredNorm() / c;
   return scale * angle_gradient(vm);
 }
 
@@ -645,15 +645,24 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const Sparse Mq = mass_matrix(c, HingeRotations::unknowns);
   // Rayleigh damping C = a M + b K0, M the mass on q, K0 the Hessian of the springs and terms
   // at rest (no link forces there), the hinge rotations' split springs included.
-  ChainStepper stepper(c, r, spec.radius, loads, Mq, detail::rayleigh_damping(r, Mq, [&] { return springs(c, rest, 1.0).hess; }), rec,
-                       rest);
+  ChainStepper stepper(c, r, spec.radius, loads, Mq,
+                       detail::rayleigh_damping(r, Mq, [&] { return springs(c, rest, 1.0).hess; }), rec, rest);
   if (!c.bending.plastic()) {
     ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, c.n, r, "lumped response", Q + R);
     h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return h;
   }
   PlasticSteps plastic(stepper);
-  ring::TimeHistory h = detail::integrate_midpoint(plastic, spec, c.n, r, "lumped response", Q + R);
+  ring::TimeHistory h;
+  try {
+    h = detail::integrate_midpoint(plastic, spec, c.n, r, "lumped response", Q + R);
+  } catch (const ring::IntegrationFailure& e) {
+    // The partial history gains its plastic work too (one value per recorded step).
+    ring::TimeHistory partial = e.partial();
+    partial.dissipated = plastic.recorded();
+    partial.dissipated.resize(partial.t.size());
+    throw ring::IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
+  }
   h.dissipated = plastic.recorded();
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;

@@ -137,9 +137,10 @@ TEST(FibrePinchedChain, ClosingConvergesAtOrderTwo) {
       for (int n : ns) {
         const Pinch r = pinch(spec, n, P);
         e.push_back(std::abs(r.closing / want - 1.0));
-        std::printf("[ fibre ] %s P = %.2f P_c, n = %3d: closing %.9e (oracle %.9e, closed form %.9e), dissipated "
-                    "%.4e J\n",
-                    name(shape), load, n, r.closing, want, closed, r.detail.result.dissipated);
+        std::printf(
+            "[ fibre ] %s P = %.2f P_c, n = %3d: closing %.9e (oracle %.9e, closed form %.9e), dissipated "
+            "%.4e J\n",
+            name(shape), load, n, r.closing, want, closed, r.detail.result.dissipated);
       }
       const ringtest::Samples s = ringtest::in_n(ns, e);
       const ringtest::Order f = ringtest::fit_order(s);
@@ -170,9 +171,10 @@ TEST(FibrePinchedChain, WorkIsStoredPlusDissipated) {
       const lumped::StaticDetail &a = peak.detail, &b = back.detail;
       const double loading = a.work - a.stored - a.result.dissipated;
       const double unloading = (b.work - a.work) - (b.stored - a.stored) - (b.result.dissipated - a.result.dissipated);
-      std::printf("[ fibre ] %s energy, steps %2d: W %.9e, U %.9e, D %.9e: loading defect %.3e, unloading defect %.3e "
-                  "of %.3e\n",
-                  name(shape), k, a.work, a.stored, a.result.dissipated, loading, unloading, b.work - a.work);
+      std::printf(
+          "[ fibre ] %s energy, steps %2d: W %.9e, U %.9e, D %.9e: loading defect %.3e, unloading defect %.3e "
+          "of %.3e\n",
+          name(shape), k, a.work, a.stored, a.result.dissipated, loading, unloading, b.work - a.work);
       EXPECT_GT(a.result.dissipated, 0.0);
       EXPECT_LE(std::abs(unloading), 1e-6 * std::abs(b.work - a.work)) << name(shape) << " steps " << k;
       defect.push_back(std::abs(loading) / a.work);

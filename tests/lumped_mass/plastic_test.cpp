@@ -375,7 +375,8 @@ TEST(PlasticRefusals, NameTheKey) {
     refused([&] { lumped::solve_static(spec, lumptest::options(16, v), st); }, name(v), "ring.plastic");
   ring::BucklingOptions b;
   b.loads.points = st.loads.points;
-  refused([&] { lumped::compute_buckling(spec, lumptest::options(16, kChain), b); }, "plastic buckling", "ring.plastic");
+  refused([&] { lumped::compute_buckling(spec, lumptest::options(16, kChain), b); }, "plastic buckling",
+          "ring.plastic");
   spec.plastic->law = ring::Plastic::Law::fibre;
   spec.plastic->stress = 2.5e8;
   const double A = spec.A(), I = spec.I();
