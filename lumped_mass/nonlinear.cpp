@@ -593,11 +593,11 @@ class ChainStepper : public detail::MidpointStepper {
 };
 
 /// ring.plastic: the chain's steps (ChainStepper) with the hinges' states committed at every
-/// accepted step (after the midpoint rule's accept, which the driver calls) and the plastic
-/// work in the balance (paths::Sample::dissipated, so the history's energy_error is kinetic +
-/// stored + dissipated - work) and in ring::TimeHistory::dissipated, one value per recorded
-/// step (recorded()). A rejected attempt (paths::Stepper::reject) has nothing to discard: the
-/// Newton evaluates the law from the committed states only.
+/// accepted step (after the midpoint rule's accept, which the driver calls) and their plastic
+/// work reported as paths::Sample::plastic (the driver records it as the history's
+/// `dissipated` and counts it in energy_error and the energy guard). A rejected attempt
+/// (paths::Stepper::reject) has nothing to discard: the Newton evaluates the law from the
+/// committed states only.
 class PlasticSteps : public paths::Stepper {
  public:
   explicit PlasticSteps(ChainStepper& s) : s_(s) {}
@@ -610,18 +610,14 @@ class PlasticSteps : public paths::Stepper {
   bool finite() const override { return s_.finite(); }
   paths::Sample sample() const override {
     paths::Sample out = s_.sample();
-    out.dissipated += s_.plastic_work();
-    recorded_.push_back(s_.plastic_work());
+    out.plastic = s_.plastic_work();
     return out;
   }
   void shape(std::vector<double>& x, std::vector<double>& y) const override { s_.shape(x, y); }
   std::optional<std::string> contact() const override { return s_.contact(); }
-  /// The plastic work at every sample() so far (the driver samples each recorded step once).
-  const std::vector<double>& recorded() const { return recorded_; }
 
  private:
   ChainStepper& s_;
-  mutable std::vector<double> recorded_;  ///< sample() is the driver's record: const, and the log's writer
 };
 
 }  // namespace
@@ -653,17 +649,7 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
     return h;
   }
   PlasticSteps plastic(stepper);
-  ring::TimeHistory h;
-  try {
-    h = detail::integrate_midpoint(plastic, spec, c.n, r, "lumped response", Q + R);
-  } catch (const ring::IntegrationFailure& e) {
-    // The partial history gains its plastic work too (one value per recorded step).
-    ring::TimeHistory partial = e.partial();
-    partial.dissipated = plastic.recorded();
-    partial.dissipated.resize(partial.t.size());
-    throw ring::IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
-  }
-  h.dissipated = plastic.recorded();
+  ring::TimeHistory h = detail::integrate_midpoint(plastic, spec, c.n, r, "lumped response", Q + R);
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;
 }
