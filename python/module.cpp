@@ -327,6 +327,11 @@ PYBIND11_MODULE(ringvib, m) {
                     "modes, in the norm residual_norm names (docs/commands.md, `modes --json`); None where the solver\n"
                     "reports none (calculix).")
       .def_readonly("residual_norm", &Modes::residual_norm)
+      .def_readonly("pairs", &Modes::pairs,
+                    "The pairs of modes the scene's terms split (masses, springs, supports): a list of dicts\n"
+                    "{wave, modes (lower, upper; 1-based), omega (rad/s), split (rad/s), relative_split (of the\n"
+                    "pair's mean), orientation_deg (the lower mode's radial antinode, in [0, 180/wave))}, as\n"
+                    "`modes --json`'s \"pairs\"; empty for a perfect ring.")
       .def_readonly("error_estimate", &Modes::error_estimate,
                     "Estimated remaining relative error of a converged reference (0: not estimated).")
       .def_property_readonly(
