@@ -15,8 +15,9 @@ namespace {
 class DenseBackend final : public NewtonBackend {
  public:
   DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
-               const Attachments* terms, const Sections* sections, const HingeInertias* hinges)
-      : NewtonBackend(chain, load, damping, loading, terms, sections, hinges),
+               const Attachments* terms, const Sections* sections, const HingeInertias* hinges,
+               const HingeBending* bending)
+      : NewtonBackend(chain, load, damping, loading, terms, sections, hinges, bending),
         inertia_(inertia_constants(chain, terms)),
         K_(chain.stiffness_matrix()),
         n_(chain.dofs()),
@@ -84,7 +85,10 @@ class DenseBackend final : public NewtonBackend {
     std::optional<Eigen::Ref<Matrix>> tc;
     if (tangent) {
       T_.setZero(N_, N_);
-      if (!sections_) T_.topLeftCorner(n_, n_) = K_;
+      if (bending_)  // the hinges' tangents at the iterate, from their committed states
+        bending_->add_tangent_on_angles(chain_, qc, T_.topLeftCorner(n_, n_));
+      else if (!sections_)
+        T_.topLeftCorner(n_, n_) = K_;
       tc.emplace(T_.topLeftCorner(n_, n_));
     }
     Vector rc;
@@ -155,7 +159,7 @@ class DenseBackend final : public NewtonBackend {
     Vector e = Vector::Zero(N_);
     const Vector qc = q.head(n_);
     if (sections_) sections_->add_forces(q, e);
-    else e.head(n_) = chain_.spring_forces(qc);
+    else e.head(n_) = bending_ ? bending_->forces_on_angles(chain_, qc) : chain_.spring_forces(qc);
     if (hinges_) hinges_->add_forces(q, e);
     if (terms && terms_) {
       Vector et = Vector::Zero(n_);
@@ -270,12 +274,12 @@ Vector NewtonBackend::load_forces_at(const Vector& q, double f, Eigen::Ref<Matri
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading,
                                                    const Attachments* terms, const Sections* sections,
-                                                   const HingeInertias* hinges) {
-  if (structured && ((loading && loading->shape_dependent()) || terms || sections || hinges))
+                                                   const HingeInertias* hinges, const HingeBending* bending) {
+  if (structured && ((loading && loading->shape_dependent()) || terms || sections || hinges || bending))
     throw std::invalid_argument(
-        "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and constant loads only");
+        "multibody: the O(n) response takes the paper's elastic Euler-Bernoulli ring and constant loads only");
   if (structured) return std::make_unique<StructuredBackend>(chain, load, damping, loading);
-  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges);
+  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges, bending);
 }
 
 }  // namespace multibody::detail
