@@ -90,7 +90,8 @@ class PlasticResponse : public ::testing::TestWithParam<Integrator> {};
 // is at most twice the static P R / pi) never yields: the elastic response of today's chain.
 // The hinge moments differ only in their spelling (bending.hpp: EI (e / l) against the
 // chain's K e, one rounding), so the histories differ by that rounding carried through the
-// steps' Newton solves. Bound: 1e-12 of the peak closing (measured below 1e-13).
+// steps' Newton solves. Bound: 1e-12 of the peak closing (measured: 0, bit for bit) and of the
+// work for the stored energy (measured 4e-16).
 TEST_P(PlasticResponse, HugePlasticMomentIsTheElasticResponse) {
   const double P = 2.0 * plastic_moment() / elastic_ring().radius;
   const ring::ResponseOptions r = pinch(P, GetParam(), 1.0 / 40.0, 2.0);
@@ -135,17 +136,19 @@ TEST_P(PlasticResponse, BelowFirstYieldNothingIsDissipated) {
 // 0.64 P_y; dynamically the hinges under the loads yield: the step's overshoot doubles the
 // moment). Every record's energy_error = kinetic + stored + dissipated - work is the
 // integrator's own error (the plastic work and the stored energy are exact for the
-// converged strains: ring/plastic.hpp; the trapezoid of the scheme misses the kinks of the
-// law inside a step and the geometric nonlinearity), second order in dt: fitted on dt =
-// T/40, T/80, T/160 (T the ovalling period) with the convergence helper, expected 2 +- 0.3
-// (the kinks' share converges irregularly: a kink falls anywhere inside its step). The
-// plastic work is a visible share of the work (> 1 %), and the identity's largest error at
-// the finest dt is below 1e-3 of the work (the ceiling).
+// converged strains: ring/plastic.hpp; the scheme's trapezoid misses the law's kinks inside a
+// step and the geometric nonlinearity): second order in dt, fitted on dt = T/20 .. T/320 (T
+// the ovalling period) with the convergence helper. Expected 2 +- 0.5: the kinks' share is
+// irregular (a kink falls anywhere inside its step: its error goes as s (1 - s) dt^2 over the
+// fraction s), so the local orders scatter between 1.7 and 2.9 (fitted 2.30 +- 0.11, newmark,
+// and 2.31 +- 0.25, generalized-alpha). The plastic work is a visible share of the work
+// (> 1 %; measured 16 .. 29 %), and the identity's largest error at T/320 is below 5e-5 of the
+// work (measured 1.5e-5 and 1.1e-5).
 TEST_P(PlasticResponse, EnergyIdentityHoldsToTheIntegratorsOrder) {
   const ringtest::PinchedPlasticRing ring = oracle();
   const ring::MultibodyOptions o = mbtest::chain_options(16, Method::dense);
   std::vector<double> dts, errors;
-  for (double steps : {40.0, 80.0, 160.0}) {
+  for (double steps : {20.0, 40.0, 80.0, 160.0, 320.0}) {
     const ring::ResponseOptions r = pinch(2.0 * ring.Mp / ring.R, GetParam(), 1.0 / steps, 2.0);
     const ring::TimeHistory th = multibody::respond(plastic_ring(ring.Mp), o, r);
     ASSERT_EQ(th.dissipated.size(), th.t.size());
@@ -169,30 +172,31 @@ TEST_P(PlasticResponse, EnergyIdentityHoldsToTheIntegratorsOrder) {
   }
   const ringtest::Order fit = ringtest::fit_order(ringtest::in_h(dts, errors));
   std::cout << name(GetParam()) << ": energy error order " << fit.order << " +- " << fit.standard_error << "\n";
-  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_h(dts, errors), 2.0, 0.3, 1e-3));
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_h(dts, errors), 2.0, 0.5, 5e-5));
 }
 
 // (c) Quasi-static: the pinch P* = 3.5 Mp / R (between P_y = pi Mp / R and P_c = 4 Mp / R)
-// ramped over 10 ovalling periods and held for 20, mass-proportional damping a = 2 w_2
-// (critical on the ovalling mode; a linear system critically damped or more never
-// overshoots a ramp-and-hold, so no hinge unloads: the plastic path is the monotone one of
-// the statics). The closing at the end against
-//  - the chain's own plastic statics at P* (supplement): what is left is the damped lag of
-//    the ramp, a v / w_p^2 (v the closing rate on the plastic branch, w_p ~ w_2 / 2.3 its
-//    frequency: the closing's compliance grows 5.3-fold past yield), relaxing at the slow
-//    overdamped rate w_p (z - sqrt(z^2 - 1)), z = a / (2 w_p) = 2.3, for 20 periods: about
-//    1e-5 relative, bound 1e-4;
+// ramped over 10 ovalling periods and held for 50, Rayleigh damping a = 2 w_2 (critical on
+// the ovalling mode: a linear system critically damped or more never overshoots a
+// ramp-and-hold, so no hinge unloads and the plastic path is the statics' monotone one) and
+// b = 0.1 / w_2 (the higher modes, which the kinks of the law excite and newmark does not
+// damp: without it they kept yielding the hinges, 2e-4 more closing at n = 64). The closing
+// and the plastic work at the end against
+//  - the chain's own plastic statics at P* (supplement): what is left is the ramp's damped
+//    lag relaxing, measured 1.4e-4 after a hold of 20 periods and 1.5e-9 after 50 (e^{-0.38}
+//    per period): bound 1e-6;
 //  - the closed form of plastic_ring.hpp (the oracle): the chain's O(1/n^2) at n = 16, 32,
 //    64, order 2 +- 0.2 and the ceiling of the statics' suite at n = 64 (4.13e-3 and 40 %
-//    more: test_plastic_statics.cpp), the lag above and O(delta / R) ~ 1e-4 well below it.
+//    more: test_plastic_statics.cpp); the lag above and O(delta / R) ~ 1e-4 lie well below.
 TEST_P(PlasticResponse, SlowRampToAPlasticLoadIsTheStaticClosing) {
   const ringtest::PinchedPlasticRing ring = oracle();
   const double P = 3.5 * ring.Mp / ring.R;
   ring::LoadHistory ramp;
   ramp.kind = ring::LoadHistory::Kind::ramp;
   ramp.period = 10.0 * ovalling_period();
-  ring::ResponseOptions r = pinch(P, GetParam(), 1.0 / 20.0, 30.0, ramp);
+  ring::ResponseOptions r = pinch(P, GetParam(), 1.0 / 20.0, 60.0, ramp);
   r.rayleigh_mass = 2.0 * 2.0 * M_PI / ovalling_period();
+  r.rayleigh_stiffness = 0.1 / (2.0 * M_PI / ovalling_period());
   const std::vector<int> ns = {16, 32, 64};
   std::vector<double> errors;
   for (int n : ns) {
@@ -206,8 +210,8 @@ TEST_P(PlasticResponse, SlowRampToAPlasticLoadIsTheStaticClosing) {
               << " m, the chain's statics " << statics << " m (rel. " << ringtest::rel(dynamic, statics)
               << "), closed form " << ring.closing(P) << " m (rel. " << errors.back() << "); plastic work "
               << th.dissipated.back() << " J, statics " << st.dissipated << " J\n";
-    EXPECT_TRUE(ringtest::IsClose(dynamic, statics, 1e-4)) << "n = " << n;
-    EXPECT_TRUE(ringtest::IsClose(th.dissipated.back(), st.dissipated, 1e-4)) << "n = " << n;
+    EXPECT_TRUE(ringtest::IsClose(dynamic, statics, 1e-6)) << "n = " << n;
+    EXPECT_TRUE(ringtest::IsClose(th.dissipated.back(), st.dissipated, 1e-6)) << "n = " << n;
   }
   const ringtest::Order fit = ringtest::fit_order(ringtest::in_n(ns, errors));
   std::cout << name(GetParam()) << ": closing order " << fit.order << " +- " << fit.standard_error << "\n";
