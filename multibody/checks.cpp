@@ -99,19 +99,11 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
   // ring.plastic: newmark and generalized-alpha on the dense angle path assemble the hinges'
-  // law (bending.hpp, newton_backend.hpp) and commit it at accepted steps. What cannot take
-  // it refuses by key, saying why and what to use.
+  // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
+  // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted
+  // steps. What cannot take it refuses by key, saying why and what to use.
   if (spec.plastic) {
     check_section_law(spec);
-    using Integrator = ring::ResponseOptions::Integrator;
-    if (response.integrator == Integrator::energy_momentum)
-      throw ring::InputError(
-          "", "ring.plastic",
-          "multibody response.integrator = \"energy-momentum\" takes no plastic law: its discrete gradient "
-          "(hinge positions) is written for the elastic springs' energy K e^2 / 2; with a plastic law it would be the "
-          "discrete gradient of the incremental potential from the committed states (conserving kinetic + stored + "
-          "dissipated - work per step), which it does not assemble yet; use response.integrator = \"newmark\" or "
-          "\"generalized-alpha\"");
     if (spec.theory == ring::Theory::timoshenko)
       throw ring::InputError("", "ring.plastic",
                              "the multibody Timoshenko chain (ring.theory = \"timoshenko\") takes no plastic law: "
@@ -122,11 +114,13 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
                              "the multibody response with point inertias (masses[].inertia > 0) takes no plastic law: "
                              "their hinges' springs are split into constant halves on the hinge's own rotation "
                              "(attachments.hpp, HingeInertias); set the inertias to 0 or remove ring.plastic");
-    if (backend(options, spec, response.loads, Analysis::response) == Backend::banded)
+    if (response.integrator != ring::ResponseOptions::Integrator::energy_momentum &&
+        backend(options, spec, response.loads, Analysis::response) == Backend::banded)
       throw ring::InputError("", "ring.plastic",
                              "multibody method = \"sparse\" (the O(n) response) takes no plastic law: its structured "
                              "tangent holds one constant hinge stiffness (dynamics_sparse.hpp), not a tangent per "
-                             "hinge; set multibody.method = \"dense\" or \"auto\" (which keeps it dense)");
+                             "hinge; set multibody.method = \"dense\" or \"auto\" (which keeps it dense), or "
+                             "response.integrator = \"energy-momentum\" (O(n) in hinge positions)");
   }
   // The shear angles live on the dense angle path only (sections.hpp); "auto" keeps it dense.
   if (spec.theory == ring::Theory::timoshenko) {
@@ -134,7 +128,8 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
       throw std::invalid_argument(
           "multibody response.integrator = \"energy-momentum\" (hinge positions) has no Timoshenko chain (ring.theory "
           "= \"timoshenko\"): use \"newmark\" or \"generalized-alpha\"");
-    if (backend(options, spec, response.loads, Analysis::response) == Backend::banded)
+    if (response.integrator != ring::ResponseOptions::Integrator::energy_momentum &&
+        backend(options, spec, response.loads, Analysis::response) == Backend::banded)
       throw std::invalid_argument(
           "multibody method = \"sparse\" (the O(n) response) has no Timoshenko chain (ring.theory = \"timoshenko\"): "
           "set multibody.method = \"dense\" or \"auto\"");
