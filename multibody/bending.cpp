@@ -31,14 +31,19 @@ HingeBending::HingeBending(const ring::RingSpec& spec, const Chain& chain)
 }
 
 HingeBending::Point HingeBending::at(int k, double e) const {
-  if (section_) return law().at(states(k), e);
-  // The resultant law's arithmetic inside its band (ring/section_law.hpp, HingeLaw on
-  // BilinearLaw(EI, ...) at kappa = e / l from a virgin state): K e to round-off.
-  const double kappa = e / l_;
+  if (section_) {
+    Point p = law().at(states(k), e);
+    // The resultant law inside its band is the elastic spring about the plastic rotation:
+    // HingeLaw's EI (e / l - kappa_p) spelt as the elastic chain's K (e - l kappa_p) (the same
+    // value to one rounding), so that a plastic moment never reached gives the elastic chain's
+    // arithmetic bit for bit (its O(n) statics at n = 10^4 sit at their round-off floor).
+    if (m_ == 1 && !p.yielding) p.force = K_ * (e - l_ * states(k)->plastic);
+    return p;
+  }
   Point p;
-  p.force = EI_ * kappa;
-  p.tangent = EI_ / l_;
-  p.potential = 0.5 * EI_ * kappa * kappa * l_;
+  p.force = K_ * e;
+  p.tangent = K_;
+  p.potential = 0.5 * K_ * e * e;
   return p;
 }
 

@@ -1,14 +1,15 @@
 // The hinge's bending law, written once for every kernel of the chain: the spring at hinge k
 // (chain.hpp) resists the change e of its turning angle from rest (rad) with
-//  - elastic: the moment K e, K = EI / l (N m / rad), the potential K e^2 / 2 (spelt as the
-//    resultant law inside its band, EI (e / l), so that a huge Mp is this law bit for bit);
+//  - elastic: the moment K e, K = EI / l (N m / rad), the potential K e^2 / 2;
 //  - `ring.plastic`, either law: ring::HingeLaw(section, l) (ring/section_law.hpp) on one
 //    ring::SectionLaw for the spec: the section's law at the uniform curvature e / l of the
 //    segment the hinge stands for, from the hinge's committed ring::PlasticStates
 //    (resultant, `moment = Mp`: one state, the plastic curvature; fibre, `stress =
 //    sigma_y`: SectionLaw::kFibres states, one per fibre of the section's shape): moment,
 //    tangent and the incremental potential whose derivative is the moment, evaluated at a
-//    trial e from the committed states.
+//    trial e from the committed states. Inside its band the resultant law's moment is spelt
+//    K (e - l kappa_p), the elastic spring's arithmetic (HingeLaw's value to one rounding), so
+//    that a plastic moment never reached is the elastic chain bit for bit.
 // The linear O(n) kernels (the Riccati sweep, the position modes, the shifted solve) read
 // only the rest stiffness K() (their law is K e); the nonlinear statics and the angle
 // integrators' response assemble at(k, e) and commit the converged strains.
