@@ -247,6 +247,60 @@ TEST(PlasticEnergyMomentum, ConservesKineticStoredDissipatedMinusWorkToTheNewton
   }
 }
 
+// The fibre law (ring.plastic.stress, 64 fibres per hinge) in the response: the identity to
+// the Newton tolerance with energy-momentum; newmark on the same pinch dissipates within 1 %
+// of energy-momentum's plastic work at dt = T/160 (two second-order schemes; measured 4e-4
+// apart); and newmark's steps that a Newton cap of 2 iterations rejects and halves
+// (controls.max_newton) leave no state behind: a leak of a rejected attempt's trial states
+// would add plastic work that no hinge did, where the sub-stepped run must dissipate what the
+// run without the cap does within twice the integrator's own error there (Richardson from
+// T/80; measured below).
+TEST(PlasticEnergyMomentum, FibreLawHoldsTheIdentityAndRejectedStepsLeaveNoState) {
+  ring::RingSpec spec = elastic_ring();
+  const double c = 0.5 * spec.section.diameter;
+  ring::Plastic p;
+  p.law = ring::Plastic::Law::fibre;
+  p.stress = kMpScale * spec.EI() / spec.radius * c / spec.section.inertia();  // My = 1e-4 EI / R
+  spec.plastic = p;
+  const double P = 2.0 * kMpScale * spec.EI() / (spec.radius * spec.radius);  // 0.64 P_y statically
+  {
+    const ring::TimeHistory th = multibody::respond(spec, mbtest::chain_options(16, Method::automatic),
+                                                    pinch(P, Integrator::energy_momentum, 1.0 / 40.0, 2.0));
+    double worst = 0.0;
+    for (double e : th.energy_error) worst = std::max(worst, std::abs(e));
+    const double bound = P * 1e-12 * spec.radius * static_cast<double>(th.t.size());  // as above
+    std::cout << "energy-momentum, fibre law: plastic work " << th.dissipated.back() << " J of the work "
+              << th.work.back() << " J, largest |energy error| " << worst << " J\n";
+    EXPECT_GT(th.dissipated.back(), 1e-2 * th.work.back());
+    EXPECT_LE(worst, bound);
+  }
+  const ring::TimeHistory em = multibody::respond(spec, mbtest::chain_options(16, Method::automatic),
+                                                  pinch(P, Integrator::energy_momentum, 1.0 / 160.0, 2.0));
+  const ring::TimeHistory nm = multibody::respond(spec, mbtest::chain_options(16, Method::dense),
+                                                  pinch(P, Integrator::newmark, 1.0 / 160.0, 2.0));
+  std::cout << "fibre law at T/160: plastic work energy-momentum " << em.dissipated.back() << " J, newmark "
+            << nm.dissipated.back() << " J\n";
+  EXPECT_TRUE(ringtest::IsClose(nm.dissipated.back(), em.dissipated.back(), 1e-2));
+  multibody::IntegrationControls capped;
+  capped.max_newton = 2;
+  auto newmark = [&](double per_period, const multibody::IntegrationControls& controls) {
+    return multibody::respond(spec, mbtest::chain_options(16, Method::dense),
+                              pinch(P, Integrator::newmark, 1.0 / per_period, 2.0), controls);
+  };
+  const ring::TimeHistory cut = newmark(40.0, capped), same = newmark(40.0, {}), finer = newmark(80.0, {});
+  long iterations = 0;
+  for (int i : cut.newton_iterations) iterations += i;
+  const long steps = static_cast<long>(cut.t.size()) - 1;
+  // The integrator's own error at T/40, by Richardson from T/80 (second order): 4/3 of their
+  // difference; the sub-stepped run may differ from the T/40 one by at most that twice.
+  const double richardson = 4.0 / 3.0 * std::abs(same.dissipated.back() - finer.dissipated.back());
+  std::cout << "newmark, fibre law, Newton cap 2 at T/40: " << iterations << " Newton iterations over " << steps
+            << " steps, plastic work " << cut.dissipated.back() << " J (uncapped " << same.dissipated.back()
+            << " J, T/80 " << finer.dissipated.back() << " J: the integrator's error ~" << richardson << " J)\n";
+  EXPECT_GT(iterations, 2 * steps);  // attempts were rejected (a converged attempt takes <= 2)
+  EXPECT_LE(std::abs(cut.dissipated.back() - same.dissipated.back()), 2.0 * richardson);
+}
+
 // The elastic energy-momentum response is unchanged by a plastic moment that is never reached.
 TEST(PlasticEnergyMomentum, HugePlasticMomentIsTheElasticResponse) {
   const double P = 2.0 * plastic_moment() / elastic_ring().radius;
