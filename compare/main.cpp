@@ -117,6 +117,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--out", sw.out, "folder for sweep.csv, sweep.json, sweep.md and sweep.png (default: CSV on stdout)");
   sweep->add_flag("--resume", sw.resume, "skip the cases already in --out DIR/sweep.csv with status ok");
   sweep->add_option("-j,--jobs", sw.jobs, "threads (default: all cores)")->check(CLI::Range(1, 1024));
+  sweep->add_option("--ranks", sw.ranks,
+                    "run on N MPI ranks, starting mpirun -np N itself: an interrupt then exits 128 + signal")
+      ->check(CLI::Range(2, 1 << 20));
 
   auto* export_deck = app.add_subcommand("export-deck", "write an external solver's input deck without running it");
   add_common(export_deck, a);
