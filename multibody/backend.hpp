@@ -90,9 +90,8 @@ inline std::string banded_statics_lacks(const ring::RingSpec& spec) {
 /// The backend of a nonlinear analysis under `loads`: "auto" also stays dense for what the
 /// O(n) path of `analysis` does not assemble: for the statics, banded_statics_lacks; for the
 /// response, shape-dependent loads (follower and central pressure; point loads, gravity and
-/// dead pressure it takes: constant hinge forces, loading.hpp), ring.plastic (its structured
-/// tangent has one constant hinge stiffness) and the terms beyond the paper's ring
-/// (attachments.hpp). O(1).
+/// dead pressure it takes: constant hinge forces, loading.hpp) and the terms beyond the
+/// paper's ring (attachments.hpp). O(1).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, const ring::Loads& loads,
                        Analysis analysis) {
   if (analysis == Analysis::statics) {
@@ -100,8 +99,7 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
       return Backend::dense;
     return backend(options, analysis);
   }
-  if (options.method == ring::MultibodyOptions::Method::automatic && (loads.shape_dependent() || spec.plastic))
-    return Backend::dense;
+  if (options.method == ring::MultibodyOptions::Method::automatic && loads.shape_dependent()) return Backend::dense;
   return backend(options, spec, analysis);
 }
 

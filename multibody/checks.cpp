@@ -98,7 +98,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  // ring.plastic: newmark and generalized-alpha on the dense angle path assemble the hinges'
+  // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
   // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
   // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted
   // steps. What cannot take it refuses by key, saying why and what to use.
@@ -114,13 +114,6 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
                              "the multibody response with point inertias (masses[].inertia > 0) takes no plastic law: "
                              "their hinges' springs are split into constant halves on the hinge's own rotation "
                              "(attachments.hpp, HingeInertias); set the inertias to 0 or remove ring.plastic");
-    if (response.integrator != ring::ResponseOptions::Integrator::energy_momentum &&
-        backend(options, spec, response.loads, Analysis::response) == Backend::banded)
-      throw ring::InputError("", "ring.plastic",
-                             "multibody method = \"sparse\" (the O(n) response) takes no plastic law: its structured "
-                             "tangent holds one constant hinge stiffness (dynamics_sparse.hpp), not a tangent per "
-                             "hinge; set multibody.method = \"dense\" or \"auto\" (which keeps it dense), or "
-                             "response.integrator = \"energy-momentum\" (O(n) in hinge positions)");
   }
   // The shear angles live on the dense angle path only (sections.hpp); "auto" keeps it dense.
   if (spec.theory == ring::Theory::timoshenko) {

@@ -23,9 +23,8 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics);
 /// Forced response: ring.plastic (either law; the fibre law on a section with a shape) on the
-/// Euler–Bernoulli chain without point inertias, with "newmark" or "generalized-alpha" on the
-/// dense path or "energy-momentum" (else ring::InputError, key ring.plastic, saying why and
-/// what to use), a
+/// Euler–Bernoulli chain without point inertias, every integrator and backend (else
+/// ring::InputError, key ring.plastic, saying why and what to use), a
 /// pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
 /// none with the energy-momentum integrator; the integrator "newmark", "generalized-alpha"
 /// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here); the

@@ -180,8 +180,9 @@ class DenseBackend final : public NewtonBackend {
 /// point loads, gravity, dead pressure), whose stiffness is diagonal in the angles.
 class StructuredBackend final : public NewtonBackend {
  public:
-  StructuredBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading)
-      : NewtonBackend(chain, load, damping, loading) {}
+  StructuredBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
+                    const HingeBending* bending)
+      : NewtonBackend(chain, load, damping, loading, nullptr, nullptr, nullptr, bending) {}
 
   Vector damping_times(const Vector& v) const override {
     Vector y = damping_.mass * chain_.mass_times(chain_.q0(), v);
@@ -194,7 +195,7 @@ class StructuredBackend final : public NewtonBackend {
   bool initial_acceleration(const Vector& q, const Vector& v, double f, Vector& qdd, Vector& lambda) const override {
     Vector phi;
     forces(q, phi, nullptr);
-    const Vector b = f * phi - chain_.quadratic_velocity(q, v) - damping_times(v) - chain_.spring_forces(q);
+    const Vector b = f * phi - chain_.quadratic_velocity(q, v) - damping_times(v) - springs(q);
     SparseSaddle lu;
     return lu.factor(mass_structured(chain_, q), chain_.constraint_jacobian(q), 1.0) &&
            lu.solve(b, -chain_.constraint_jdot_qdot(q, v), qdd, lambda, 2);
@@ -207,7 +208,13 @@ class StructuredBackend final : public NewtonBackend {
     if (tangent) {
       T_ = StructuredMatrix{};
       T_.diag = Vector::Zero(q.size());
-      T_.cyclic = chain_.K();
+      if (bending_) {  // the hinges' tangents at the iterate, from their committed states
+        const Vector r = chain_.hinge_rotations(q);
+        T_.hinge.resize(r.size());
+        for (Eigen::Index k = 0; k < r.size(); ++k) T_.hinge[k] = bending_->tangent(static_cast<int>(k), r[k]);
+      } else {
+        T_.cyclic = chain_.K();
+      }
     }
     inertia_terms_structured(chain_, q, v, qdd, cm, cv, r, tangent ? &T_ : nullptr);
     if (tangent && damping_.any()) {
@@ -219,12 +226,17 @@ class StructuredBackend final : public NewtonBackend {
         T_.terms.push_back(std::move(M0.terms[0]));
       }
     }
-    r += chain_.spring_forces(q) - f * phi;
+    r += springs(q) - f * phi;
     if (damping_.any()) r += damping_times(v);
     if (tangent) T_.diag -= f * dphi;
   }
 
   void add_to_tangent_diagonal(const Vector& d) override { T_.diag += d; }
+
+  /// The hinge springs' forces on the angles: the elastic K theta, or the hinges' law. O(n).
+  Vector springs(const Vector& q) const {
+    return bending_ ? bending_->forces_on_angles(chain_, q) : chain_.spring_forces(q);
+  }
 
   /// The loads' generalized forces phi at q and, if `dphi`, their derivative's diagonal (the
   /// whole of it: load_forces.hpp's point load and constant hinge forces). O(n).
@@ -275,10 +287,10 @@ std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const Dea
                                                    bool structured, const Loading* loading,
                                                    const Attachments* terms, const Sections* sections,
                                                    const HingeInertias* hinges, const HingeBending* bending) {
-  if (structured && ((loading && loading->shape_dependent()) || terms || sections || hinges || bending))
+  if (structured && ((loading && loading->shape_dependent()) || terms || sections || hinges))
     throw std::invalid_argument(
-        "multibody: the O(n) response takes the paper's elastic Euler-Bernoulli ring and constant loads only");
-  if (structured) return std::make_unique<StructuredBackend>(chain, load, damping, loading);
+        "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and constant loads only");
+  if (structured) return std::make_unique<StructuredBackend>(chain, load, damping, loading, bending);
   return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges, bending);
 }
 

@@ -18,10 +18,11 @@
 // the dampers follow the split hinge springs. Point masses add to the chain's inertia
 // constants (their mass has its structure); further pins add constraint rows.
 //
-// ring.plastic (dense only, Euler–Bernoulli chain without point inertias: checks.cpp): the
-// hinge springs follow the hinges' law (bending.hpp) at every iterate, from the states
+// ring.plastic (both backends, Euler–Bernoulli chain without point inertias: checks.cpp):
+// the hinge springs follow the hinges' law (bending.hpp) at every iterate, from the states
 // committed at the last accepted step: their moments in the residual, their tangents in T in
-// place of the constant K. The caller commits the states when it accepts a step.
+// place of the constant K (the structured T: StructuredMatrix::hinge, per hinge). The caller
+// commits the states when it accepts a step.
 //
 // The Newton matrix is the scaled saddle-point system
 //   [T G^T; G 0] [dq; dl] = [-r; -g],
@@ -106,9 +107,9 @@ class NewtonBackend {
 /// The dense or the structured backend for this chain, load and damping; `loading` (loads
 /// beyond one point load: on the structured one without a shape-dependent part), `terms`
 /// (foundation, springs, clamp, point masses, further pins), `sections` (the Timoshenko
-/// chain: the unknowns become (phi, gamma)), `hinges` (point inertias: the unknowns
-/// become (phi, [gamma,] chi)) and `bending` (ring.plastic: the hinges' law, read at every
-/// residual) on the dense one only.
+/// chain: the unknowns become (phi, gamma)) and `hinges` (point inertias: the unknowns
+/// become (phi, [gamma,] chi)) on the dense one only; `bending` (ring.plastic: the hinges'
+/// law, read at every residual) on both.
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading = nullptr,
                                                    const Attachments* terms = nullptr,
