@@ -34,10 +34,16 @@ HingeBending::Point HingeBending::at(int k, double e) const {
   if (section_) {
     Point p = law().at(states(k), e);
     // The resultant law inside its band is the elastic spring about the plastic rotation:
-    // HingeLaw's EI (e / l - kappa_p) spelt as the elastic chain's K (e - l kappa_p) (the same
-    // value to one rounding), so that a plastic moment never reached gives the elastic chain's
-    // arithmetic bit for bit (its O(n) statics at n = 10^4 sit at their round-off floor).
-    if (m_ == 1 && !p.yielding) p.force = K_ * (e - l_ * states(k)->plastic);
+    // HingeLaw's EI (e / l - kappa_p) and its potential spelt as the elastic chain's
+    // K (e - l kappa_p) and K (e - l kappa_p)^2 / 2 (the same values to one rounding), so that a
+    // plastic moment never reached gives the elastic chain's arithmetic bit for bit (its O(n)
+    // statics at n = 10^4 sit at their round-off floor), and the potential is exactly zero at
+    // the committed plastic rotation.
+    if (m_ == 1 && !p.yielding) {
+      const double y = e - l_ * states(k)->plastic;
+      p.force = K_ * y;
+      p.potential = 0.5 * K_ * y * y;
+    }
     return p;
   }
   Point p;

@@ -7,9 +7,10 @@
 //    (resultant, `moment = Mp`: one state, the plastic curvature; fibre, `stress =
 //    sigma_y`: SectionLaw::kFibres states, one per fibre of the section's shape): moment,
 //    tangent and the incremental potential whose derivative is the moment, evaluated at a
-//    trial e from the committed states. Inside its band the resultant law's moment is spelt
-//    K (e - l kappa_p), the elastic spring's arithmetic (HingeLaw's value to one rounding), so
-//    that a plastic moment never reached is the elastic chain bit for bit.
+//    trial e from the committed states. Inside its band the resultant law's moment and
+//    potential are spelt K (e - l kappa_p) and K (e - l kappa_p)^2 / 2, the elastic spring's
+//    arithmetic (HingeLaw's values to one rounding), so that a plastic moment never reached
+//    is the elastic chain bit for bit.
 // The linear O(n) kernels (the Riccati sweep, the position modes, the shifted solve) read
 // only the rest stiffness K() (their law is K e); the nonlinear statics and the angle
 // integrators' response assemble at(k, e) and commit the converged strains.
