@@ -88,10 +88,11 @@ class PlasticResponse : public ::testing::TestWithParam<Integrator> {};
 
 // (a) Mp = 1e12 times the largest elastic moment (below P R: the step load's dynamic moment
 // is at most twice the static P R / pi) never yields: the elastic response of today's chain.
-// The hinge moments differ only in their spelling (bending.hpp: EI (e / l) against the
-// chain's K e, one rounding), so the histories differ by that rounding carried through the
-// steps' Newton solves. Bound: 1e-12 of the peak closing (measured: 0, bit for bit) and of the
-// work for the stored energy (measured 4e-16).
+// Inside its band the law is spelt as the elastic spring (bending.hpp: K (e - l kappa_p)), so
+// the histories may differ only by what the plastic path's other arithmetic (the law's
+// evaluation, the stored energy's spelling) carries through the steps' Newton solves.
+// Bound: 1e-12 of the peak closing (measured: 0, bit for bit) and of the work for the
+// stored energy (measured 4e-16).
 TEST_P(PlasticResponse, HugePlasticMomentIsTheElasticResponse) {
   const double P = 2.0 * plastic_moment() / elastic_ring().radius;
   const ring::ResponseOptions r = pinch(P, GetParam(), 1.0 / 40.0, 2.0);
