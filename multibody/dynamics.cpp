@@ -37,8 +37,8 @@ using detail::StepOutcome;
 /// every Newton iterate of a step evaluates the law from the states committed at the last
 /// accepted step (HingeBending changes only in commit), accept() commits them at the step's
 /// hinge rotations and adds the step's plastic work, and a rejected or halved attempt leaves
-/// nothing behind. The record's strain is then the elastic energy stored, its dissipated the
-/// damping's and the plastic work, and plastic_log() the plastic work at every record.
+/// nothing behind. The record's strain is then the elastic energy stored, its plastic the
+/// plastic work (paths::Sample::plastic: the driver records it and counts it in the balance).
 class ChainStepper : public paths::Stepper {
  public:
   ChainStepper(const Chain& chain, const Problem& p, const Coefficients& co, const IntegrationControls& controls,
@@ -110,10 +110,7 @@ class ChainStepper : public paths::Stepper {
     if (p_.hinges) out.strain += p_.hinges->energy(s_.q);
     out.work = work_;
     out.dissipated = dissipated_;
-    if (bending_) {
-      out.dissipated += bending_->dissipated();
-      plastic_log_.push_back(bending_->dissipated());
-    }
+    if (bending_) out.plastic = bending_->dissipated();
     // Values only: the kinematics (G, its Hessian) are the step's business, not the sample's.
     out.constraint_residual = detail::constraint_values(chain_, p_.terms, q).cwiseAbs().maxCoeff();
     return out;
@@ -124,9 +121,6 @@ class ChainStepper : public paths::Stepper {
     x.assign(hp.row(0).begin(), hp.row(0).end());
     y.assign(hp.row(1).begin(), hp.row(1).end());
   }
-
-  /// The plastic work at every record so far (sample() is called once per record), J.
-  const std::vector<double>& plastic_log() const { return plastic_log_; }
 
   std::optional<std::string> contact() const override {
     const auto cp = detail::closest_contact(chain_.hinge_positions(coordinates(s_.q)), chain_.l(), gap_, depth_);
@@ -154,8 +148,6 @@ class ChainStepper : public paths::Stepper {
   Eigen::Vector2d x_load_;
   double potential_ = 0.0;  ///< the loads' potential at the state (Problem::loading)
   HingeBending* bending_;   ///< ring.plastic's hinges, or null (elastic: the chain's springs)
-  /// Written by sample(), which the driver calls once per record: the history's plastic work.
-  mutable std::vector<double> plastic_log_;
 };
 
 }  // namespace
@@ -232,17 +224,7 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   ring::EnergyGuard guard(spec, chain.n(), ring::load_scale(spec, response.loads));
   paths::Grid grid = detail::response_grid(response, controls, guard, "multibody::respond");
   grid.energy_hint = " (try response.integrator = \"energy-momentum\" or \"newmark\")";
-  ring::TimeHistory th;
-  try {
-    th = paths::integrate(stepper, grid, response.record);
-  } catch (const IntegrationFailure& e) {
-    if (!bending) throw;
-    ring::TimeHistory partial = e.partial();  // the plastic work up to the failure as well
-    partial.dissipated = stepper.plastic_log();
-    partial.dissipated.resize(partial.t.size());
-    throw IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
-  }
-  if (bending) th.dissipated = stepper.plastic_log();
+  ring::TimeHistory th = paths::integrate(stepper, grid, response.record);
   th.unknowns = N + p.constraint_count();  // angles (shear angles, hinge rotations) and multipliers of the Newton system
   return th;
 }

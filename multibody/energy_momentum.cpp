@@ -289,8 +289,7 @@ class EnergyMomentumStepper : public paths::Stepper {
     if (bending_) {  // the elastic energy stored in the committed states, and their plastic work
       const Vec e = turning_changes(c_, x_);
       for (int k = 0; k < c_.n; ++k) out.strain += bending_->stored(k, e[k]);
-      out.dissipated = bending_->dissipated();
-      plastic_log_.push_back(out.dissipated);
+      out.plastic = bending_->dissipated();
     } else {
       out.strain = spring_energy(c_, x_);
     }
@@ -318,13 +317,6 @@ class EnergyMomentumStepper : public paths::Stepper {
   const Terms& terms_;
   const ring::ResponseOptions& response_;
   HingeBending* bending_;  ///< ring.plastic's hinges, or null
-  /// Written by sample(), which the driver calls once per record: the history's plastic work.
-  mutable std::vector<double> plastic_log_;
-
- public:
-  const std::vector<double>& plastic_log() const { return plastic_log_; }
-
- private:
   const int gap_;
   const double depth_;
   std::vector<int> rec_;
@@ -352,19 +344,8 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   // The scheme conserves the balance to round-off; a gain is a failure as for the other
   // integrators (the one rule: ring/energy_guard.hpp).
   ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, response.loads));
-  ring::TimeHistory th;
-  try {
-    th = paths::integrate(
-        stepper, detail::response_grid(response, controls, guard, "multibody::respond (energy-momentum)"),
-        response.record);
-  } catch (const IntegrationFailure& e) {
-    if (!bending) throw;
-    ring::TimeHistory partial = e.partial();  // the plastic work up to the failure as well
-    partial.dissipated = stepper.plastic_log();
-    partial.dissipated.resize(partial.t.size());
-    throw IntegrationFailure(e.reason(), e.t_reached(), std::move(partial), e.what());
-  }
-  if (bending) th.dissipated = stepper.plastic_log();
+  ring::TimeHistory th = paths::integrate(
+      stepper, detail::response_grid(response, controls, guard, "multibody::respond (energy-momentum)"), response.record);
   th.solver = "multibody";
   th.unknowns = c.size();
   th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
