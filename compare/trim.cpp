@@ -45,12 +45,11 @@ struct Probe {
 
 }  // namespace
 
-int cmd_trim(const CommonArgs& a, const TrimArgs& t) {
-  const std::string text = ring::read_scene_text(a.scene);
-  const ring::Scene s = parse_scene(text, a.scene, a.set);
-  check_runnable(s, a.max_memory_gib, a.force);
+TrimResult run_trim(const std::string& text, const std::string& name, const std::vector<std::string>& overrides,
+                    const TrimArgs& t) {
+  const ring::Scene s = parse_scene(text, name, overrides);
   const std::string solver = !t.solver.empty() ? t.solver : s.modes.solvers.empty() ? "" : s.modes.solvers.front();
-  if (solver.empty()) throw ring::InputError(a.scene, "--solver", "the scene lists no modal solver: name one");
+  if (solver.empty()) throw ring::InputError(name, "--solver", "the scene lists no modal solver: name one");
   const SolverEntry& entry = cmp::solver(solver);
   if (t.at.empty() || t.at.size() > 2)
     throw ring::InputError("", "--at", "one or two angles (degrees): a pair's split has two components");
@@ -65,9 +64,9 @@ int cmd_trim(const CommonArgs& a, const TrimArgs& t) {
   // The trial masses must sit on every model's nodes: checked by the scene reader on a
   // scene that holds them, before anything is computed.
   auto scene_with = [&](const std::vector<double>& extra) {
-    std::vector<std::string> o = a.set;
+    std::vector<std::string> o = overrides;
     o.push_back(masses_override(s, t.at, extra));
-    return parse_scene(text, a.scene, o);
+    return parse_scene(text, name, o);
   };
   try {
     const ring::Scene probe = scene_with(std::vector<double>(t.at.size(), 1e-3 * ring_mass));
@@ -82,10 +81,8 @@ int cmd_trim(const CommonArgs& a, const TrimArgs& t) {
     for (const auto& p : split_pairs(m))
       if (wave == 0 ? (p.lower == t.mode || p.upper == t.mode) : p.wave == wave)
         return {p, std::polar(p.relative(), 2.0 * p.wave * p.orientation * M_PI / 180.0)};
-    // No split pair of that wave number left: split below kSplit.
-    SplitPair none;
-    none.wave = wave;
-    return {none, 0.0};
+    // No split pair of that wave number left: split below kSplit (wave 0, z = 0).
+    return {SplitPair{}, 0.0};
   };
   const std::vector<double> zero(t.at.size(), 0.0);
   const Probe before = measure(zero, 0);
@@ -111,11 +108,11 @@ int cmd_trim(const CommonArgs& a, const TrimArgs& t) {
   std::vector<double> m = zero;
   Probe now = before;
   int steps = 0;
-  while (now.pair.relative() > t.tolerance) {
+  while (std::abs(now.z) > t.tolerance) {
     if (++steps > kMaxSteps)
       throw ring::NumericalError(fmt::format("trim: the split of pair k = {} is still {:.3g} after {} steps (tolerance "
                                              "{:g})",
-                                             k, now.pair.relative(), kMaxSteps, t.tolerance));
+                                             k, std::abs(now.z), kMaxSteps, t.tolerance));
     // J dm = -z: two real equations; one angle: least squares along its direction.
     std::vector<double> dm(t.at.size());
     if (t.at.size() == 1) {
@@ -135,48 +132,65 @@ int cmd_trim(const CommonArgs& a, const TrimArgs& t) {
             k, m[j], t.at[j], std::fmod(t.at[j] + 90.0 / k, 360.0)));
     }
     const Probe next = measure(m, k);
-    if (t.at.size() == 1 && next.pair.relative() >= now.pair.relative())
+    if (t.at.size() == 1 && std::abs(next.z) >= std::abs(now.z))
       throw ring::NumericalError(fmt::format("trim: one mass at {:g} degrees cannot bring the split of pair k = {} below "
                                              "{:.3g} (it lies off the mass's direction); give two angles",
-                                             t.at[0], k, now.pair.relative()));
+                                             t.at[0], k, std::abs(now.z)));
     now = next;
   }
 
+  TrimResult r;
+  r.solver = solver;
+  r.mode = t.mode;
+  r.wave = k;
+  r.steps = steps;
+  r.at = t.at;
+  r.masses = m;
+  r.before = before.pair;
+  r.after = now.pair;
+  std::ostringstream scene;
+  scene.precision(17);
+  scene << text << (text.empty() || text.back() == '\n' ? "" : "\n")
+        << fmt::format("\n# Trimmed by ringvib trim (pair k = {} of {}: relative split {:.3g} -> {:.3g}).\n", k, solver,
+                       before.pair.relative(), std::abs(now.z));
+  for (std::size_t j = 0; j < m.size(); ++j)
+    if (m[j] != 0.0) scene << "[[masses]]\nat = " << t.at[j] << "\nmass = " << m[j] << "\n";
+  r.trimmed_scene = scene.str();
+  // The trimmed text must read back as the trimmed scene (an inline `masses = [...]` would not).
+  parse_scene(r.trimmed_scene, name, overrides);
+  return r;
+}
+
+int cmd_trim(const CommonArgs& a, const TrimArgs& t) {
+  const std::string text = ring::read_scene_text(a.scene);
+  check_runnable(parse_scene(text, a.scene, a.set), a.max_memory_gib, a.force);
+  Outputs files;
+  if (!t.out.empty()) files.file(t.out, "--out", a.scene);  // checked before computing
+  const TrimResult r = run_trim(text, a.scene, a.set, t);
   if (!t.out.empty()) {
-    Outputs files;
-    files.file(t.out, "--out", a.scene);
     files.open();
-    std::ostringstream scene;
-    scene << text << (text.empty() || text.back() == '\n' ? "" : "\n")
-          << fmt::format("\n# Trimmed by ringvib trim (pair k = {} of {}: relative split {:.3g} -> {:.3g}).\n", k, solver,
-                         before.pair.relative(), now.pair.relative());
-    scene.precision(17);
-    for (std::size_t j = 0; j < m.size(); ++j)
-      if (m[j] != 0.0) scene << "[[masses]]\nat = " << t.at[j] << "\nmass = " << m[j] << "\n";
-    // The trimmed text must read back as the trimmed scene (an inline `masses = [...]` would not).
-    parse_scene(scene.str(), t.out, a.set);
-    files.stage_file(t.out, scene.str());
+    files.stage_file(t.out, r.trimmed_scene);
     files.publish();
   }
   if (t.json) {
     nlohmann::json j;
-    j["mode"] = t.mode;
-    j["wave"] = k;
-    j["solver"] = solver;
+    j["mode"] = r.mode;
+    j["wave"] = r.wave;
+    j["solver"] = r.solver;
     j["masses"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < m.size(); ++i) j["masses"].push_back({{"at", t.at[i]}, {"mass", m[i]}});
-    j["split_before"] = before.pair.relative();
-    j["split_after"] = now.pair.relative();
-    j["orientation_before"] = before.pair.orientation;
-    j["steps"] = steps;
+    for (std::size_t i = 0; i < r.masses.size(); ++i) j["masses"].push_back({{"at", r.at[i]}, {"mass", r.masses[i]}});
+    j["split_before"] = r.before.relative();
+    j["split_after"] = r.after.wave ? r.after.relative() : 0.0;
+    j["orientation_before"] = r.before.orientation;
+    j["steps"] = r.steps;
     std::cout << j.dump(2) << "\n";
   } else {
-    std::cout << fmt::format("{}: pair k = {} (modes {}, {}): relative split {:.4g} at {:.2f} deg\n", solver, k,
-                             before.pair.lower, before.pair.upper, before.pair.relative(), before.pair.orientation);
-    for (std::size_t i = 0; i < m.size(); ++i)
-      std::cout << fmt::format("  trim mass {:+.6g} kg at {:g} deg\n", m[i], t.at[i]);
-    std::cout << fmt::format("relative split after: {:.3g} ({} steps; tolerance {:g})\n", now.pair.relative(), steps,
-                             t.tolerance);
+    std::cout << fmt::format("{}: pair k = {} (modes {}, {}): relative split {:.4g} at {:.2f} deg\n", r.solver, r.wave,
+                             r.before.lower, r.before.upper, r.before.relative(), r.before.orientation);
+    for (std::size_t i = 0; i < r.masses.size(); ++i)
+      std::cout << fmt::format("  trim mass {:+.6g} kg at {:g} deg\n", r.masses[i], r.at[i]);
+    std::cout << fmt::format("relative split after: {:.3g} ({} steps; tolerance {:g})\n",
+                             r.after.wave ? r.after.relative() : 0.0, r.steps, t.tolerance);
   }
   return 0;
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "compare/commands.hpp"
+#include "compare/pairs.hpp"
 
 namespace cmp {
 
@@ -29,6 +30,21 @@ struct TrimArgs {
   std::string out;              ///< the trimmed scene (TOML), or "" for none
 };
 
+/// What a trim found.
+struct TrimResult {
+  std::string solver;
+  int mode = 0, wave = 0, steps = 0;
+  std::vector<double> at, masses;  ///< degrees, kg
+  SplitPair before, after;         ///< the pair untrimmed and trimmed (after.wave = 0: no split left)
+  std::string trimmed_scene;       ///< the scene's text with the masses appended as [[masses]]
+};
+
+/// The trim of the scene `text` (named `name`, with `overrides`): ring::InputError for what
+/// cannot be trimmed (checked before computing), ring::NumericalError when the trim fails.
+TrimResult run_trim(const std::string& text, const std::string& name, const std::vector<std::string>& overrides,
+                    const TrimArgs& t);
+
+/// The command: run_trim on the scene file, printed (text or --json), --out written.
 int cmd_trim(const CommonArgs& a, const TrimArgs& t);
 
 }  // namespace cmp

@@ -356,3 +356,17 @@ def test_converge_equals_the_commands_csv():
     # The chains' second order and the cubic FE's fourth (docs/measured.md, "Convergence").
     orders = {s["name"]: s["fitted_order"] for s in c["series"]}
     assert abs(orders["multibody"] - 2.0) < 0.1 and abs(orders["fem (p = 3)"] - 4.0) < 0.1
+
+
+def test_trim_equals_the_commands_json():
+    """ringvib.trim is `ringvib trim --json`; its trimmed scene has the pair's split removed."""
+    s = ringvib.Scene.load(scene_path("imperfect-ring.toml"), set={"multibody.n": 60})
+    t = ringvib.trim(s, 1, [60.0, 90.0], solver="multibody")
+    j = ringvib_json("trim", scene_path("imperfect-ring.toml"), "--mode", 1, "--at", "60,90", "--solver", "multibody",
+                     "--json", *sets({"multibody.n": "60"}))
+    for key in ("mode", "wave", "solver", "masses", "split_before", "split_after", "orientation_before", "steps"):
+        assert t[key] == j[key], key
+    after = ringvib.modes(t["scene"], "multibody")
+    assert all(p["wave"] != 2 or p["relative_split"] < 1e-6 for p in after.pairs)
+    with pytest.raises(ringvib.InputError, match="--at"):
+        ringvib.trim(s, 1, [75.0, 30.0], solver="multibody")  # 45 degrees apart: alike on k = 2
