@@ -30,6 +30,7 @@
 #include "tests/support/fibre_ring.hpp"
 #include "tests/support/plastic_ring.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/multibody/path_recorder.hpp"
 
 namespace {
 
@@ -200,29 +201,6 @@ TEST_P(FibreStatics, CollapsePlateauApproachesFourMpOverR) {
   EXPECT_THROW(multibody::solve_static(spec, o, ringtest::pinch(1.05 * Pc, {1.0}, 40)), ring::NumericalError);
 }
 
-/// Follows eq through the driver and keeps every accepted equilibrium.
-class Recorder : public paths::Equilibrium {
- public:
-  explicit Recorder(multibody::detail::StaticEquilibrium& eq) : eq_(eq) {}
-  Eigen::Index size() const override { return eq_.size(); }
-  Eigen::Index arc_size() const override { return eq_.arc_size(); }
-  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
-    return eq_.linearize(x, w, ws, r);
-  }
-  bool solve(paths::Vector& y) override { return eq_.solve(y); }
-  double move(const paths::Vector& dz) const override { return eq_.move(dz); }
-  bool converged(const paths::State& x, const paths::Vector& dz, int i) override { return eq_.converged(x, dz, i); }
-  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
-    if (states.empty()) states.push_back(from);
-    states.push_back(to);
-    return eq_.accept(from, to);
-  }
-  void reject() override { eq_.reject(); }
-  std::vector<paths::State> states;
-
- private:
-  multibody::detail::StaticEquilibrium& eq_;
-};
 
 // The energy balance with the fibre law: the loads' work (trapezoidal in the load steps) is
 // the elastic energy stored in the fibres (bending.hpp, stored: sum l sigma^2 a / 2E) plus
@@ -243,7 +221,7 @@ TEST_P(FibreStatics, WorkIsStoredPlusDissipatedToTheTrapezoidsOrder) {
       std::unique_ptr<multibody::detail::StaticEquilibrium> eq =
           m == Method::dense ? multibody::detail::angle_equilibrium(chain, spec, st.loads, spec.section.depth())
                              : multibody::natural::static_equilibrium(chain, spec, st.loads, spec.section.depth());
-      Recorder rec(*eq);
+      ringtest::Recorder rec(*eq);
       paths::Continuation policy;
       policy.steps = st.steps;
       policy.history = st.history;
