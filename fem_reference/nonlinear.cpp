@@ -123,12 +123,22 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
 /// midpoint), the loads' work g_mean (Phi(q_1) - Phi(q_0)) per step (exact for a load
 /// factor constant over the step: every load has a potential), the damping's dissipation
 /// by the trapezoidal rule on v^T C v.
+/// ring.plastic: the plastic states of the bending points (and vertex hinges) are internal
+/// variables (paths/internal.hpp): every Newton iterate evaluates the law at the generalized
+/// midpoint from the committed states (a return map, so a rejected attempt leaves nothing
+/// behind and reject() has nothing to discard), and accept() commits them at the step's end
+/// q_1, adding the step's plastic work; V is then the elastic energy stored.
 class BeamStepper : public paths::Stepper {
  public:
   BeamStepper(const BeamModel& model, const ring::RingSpec& spec, const ring::ResponseOptions& rs)
       : model_(model), potential_(model, rs.loads), rs_(rs), radius_(spec.radius), N_(model.n_free()), M_(model.mass()),
         damped_(rs.rayleigh_mass > 0 || rs.rayleigh_stiffness > 0), scheme_(paths::Scheme::of(rs)), am_(scheme_.alpha_m),
-        af_(scheme_.alpha_f), gamma_(scheme_.gamma), beta_(scheme_.beta), S_(model.sparsity()) {
+        af_(scheme_.alpha_f), gamma_(scheme_.gamma), beta_(scheme_.beta), law_(potential_.plastic_law()),
+        S_(model.sparsity()) {
+    if (law_) {
+      plastic_.assign(potential_.plastic_states(), ring::PlasticState{});
+      plastic_log_.push_back(0.0);
+    }
     for (double a : rs.record) record_vertex_.push_back(model.vertex_of(a));
     for (auto* v : {&q_, &v_, &a_, &q1_, &v1_, &a1_, &Cv_, &tmp_, &internal_, &qa_, &va_, &aa_}) v->reinit(N_);
     Vector<double> F0;  // the load at rest, grad Phi(0)
@@ -187,7 +197,13 @@ class BeamStepper : public paths::Stepper {
   }
 
   void accept(double) override {
-    const BeamPotential::Value next = potential_.evaluate(q1_, 0.0, nullptr, nullptr);
+    if (law_) {
+      // Commit first: V below is then the elastic energy stored at the new state.
+      const Committed step = commit(*law_, model_.bending_points(q1_, Plasticity{*law_, plastic_}), plastic_);
+      plastic_work_ += step.dissipated;
+      plastic_log_.push_back(plastic_work_);
+    }
+    const BeamPotential::Value next = potential_.evaluate(q1_, 0.0, nullptr, nullptr, nullptr, committed());
     work_ += g_mean_ * (next.load - energy_.load);
     energy_ = next;
     if (damped_) {
@@ -201,6 +217,9 @@ class BeamStepper : public paths::Stepper {
     v_ = v1_;
     a_ = a1_;
   }
+
+  /// ring.plastic: the plastic work at rest and after every accepted step (J; empty without).
+  const std::vector<double>& plastic_work() const { return plastic_log_; }
 
   bool finite() const override { return std::isfinite(q_.l2_norm()) && std::isfinite(v_.l2_norm()); }
 
@@ -217,7 +236,7 @@ class BeamStepper : public paths::Stepper {
     out.kinetic = 0.5 * (v_ * Mv);
     out.strain = energy_.stored;
     out.work = work_;
-    out.dissipated = dissipated_;
+    out.dissipated = dissipated_ + plastic_work_;  // damping and plastic work: the balance counts both
     return out;
   }
 
@@ -249,7 +268,7 @@ class BeamStepper : public paths::Stepper {
   /// tangent of V - g Phi (the load stiffness of follower and central pressure included).
   SparseMatrix<double>& newton_matrix(const Vector<double>& x, double h, double g) {
     const double c_m = scheme_.mass_rate(h), c_c = (1.0 - af_) * scheme_.velocity_rate(h);
-    potential_.evaluate(x, g, &internal_, &S_);
+    potential_.evaluate(x, g, &internal_, &S_, nullptr, committed());
     S_ *= (1.0 - af_);
     S_.add(c_m, M_);
     if (rs_.rayleigh_mass > 0) S_.add(c_c * rs_.rayleigh_mass, M_);
@@ -266,6 +285,9 @@ class BeamStepper : public paths::Stepper {
     }
   }
 
+  /// The committed plastic states for BeamPotential::evaluate; null without ring.plastic.
+  const std::vector<ring::PlasticState>* committed() const { return law_ ? &plastic_ : nullptr; }
+
   const BeamModel& model_;
   const BeamPotential potential_;
   const ring::ResponseOptions& rs_;
@@ -275,6 +297,10 @@ class BeamStepper : public paths::Stepper {
   const bool damped_;
   const paths::Scheme scheme_;  ///< Newmark or generalized-alpha (paths/schemes.hpp)
   const double am_, af_, gamma_, beta_;  ///< its coefficients, by their short names
+  const std::optional<PlasticLaw>& law_;  ///< ring.plastic's, or nullopt
+  std::vector<ring::PlasticState> plastic_;  ///< committed, per bending point (plastic_points.hpp)
+  double plastic_work_ = 0.0;                ///< J, from rest
+  std::vector<double> plastic_log_;          ///< plastic_work_ at rest and after every accepted step
   std::vector<unsigned int> record_vertex_;
   SparseMatrix<double> S_;
   Vector<double> q_, v_, a_, q1_, v1_, a1_, Cv_, tmp_, internal_, qa_, va_, aa_;
@@ -299,7 +325,18 @@ ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, c
   grid.guard = &guard;
   grid.who = "fem response";
   grid.progress = rs.progress;
-  ring::TimeHistory h = paths::integrate(stepper, grid, rs.record);
+  // The beam takes no sub-steps (min_dt_factor 1): every accepted step is a grid step, so
+  // the plastic work after the k-th accepted step is the k-th record's.
+  auto with_plastic = [&](ring::TimeHistory h) {
+    if (spec.plastic) h.dissipated.assign(stepper.plastic_work().begin(), stepper.plastic_work().begin() + h.t.size());
+    return h;
+  };
+  ring::TimeHistory h;
+  try {
+    h = with_plastic(paths::integrate(stepper, grid, rs.record));
+  } catch (const ring::IntegrationFailure& e) {
+    throw ring::IntegrationFailure(e.reason(), e.t_reached(), with_plastic(e.partial()), e.what());
+  }
   h.solver = "fem";
   h.unknowns = model.n_free();
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

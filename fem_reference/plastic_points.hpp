@@ -50,28 +50,52 @@
 #include <vector>
 
 #include "ring/plastic.hpp"
+#include "ring/section_law.hpp"
 
 namespace fem::detail {
 
 /// A bending point at a displacement: its curvature change and its weight.
 struct BendingPoint {
-  double curvature = 0.0;   ///< kappa, 1/m (a vertex hinge: its rotation, rad)
+  double curvature = 0.0;   ///< kappa, 1/m (a vertex hinge: its strain e, rad)
   double weight = 0.0;      ///< ds0 of the point's quadrature, m (a vertex hinge: 1)
   double per_length = 1.0;  ///< its plastic strain times this is a curvature, 1/m (a hinge: 1 / cell length)
-  /// The point's own law where it is not the bending law (a vertex hinge: stiffness P).
+  /// A vertex hinge's own law (stiffness P, one state); nullopt: a bending point, the
+  /// section's law on section.states() states.
   std::optional<ring::BilinearLaw> law;
 };
 
-/// The law and the committed state of every bending point (the model's order, above).
-struct Plasticity {
-  ring::BilinearLaw law;
-  const std::vector<ring::PlasticState>& committed;
+/// ring.plastic as the beam integrates it: the section's law at the bending points
+/// (ring::SectionLaw: resultant or fibre) and whether the vertices are hinges too (the
+/// resultant law's; above).
+struct PlasticLaw {
+  ring::Plastic plastic;
+  ring::SectionLaw section;
+  bool vertex_hinges = true;
+  /// The plastic states of a model with `points` bending points and `vertices` vertices:
+  /// section.states() per bending point, then one per vertex hinge.
+  std::size_t states(std::size_t points, std::size_t vertices) const {
+    return points * static_cast<std::size_t>(section.states()) + (vertex_hinges ? vertices : 0);
+  }
+  /// The vertex hinge's law: stiffness P (the interior penalty's), yield the section's
+  /// fully plastic moment (Mp of the resultant law).
+  ring::BilinearLaw hinge(double P) const {
+    return ring::BilinearLaw(P, section.plastic_moment(), plastic.hardening, plastic.rule);
+  }
 };
 
-/// The law of ring.plastic (resultant) at a beam's bending point: stiffness EI, yield Mp.
-inline ring::BilinearLaw bending_law(const ring::Plastic& p, double EI) {
-  return ring::BilinearLaw(EI, p.moment, p.hardening, p.rule);
+/// The beam's law of ring.plastic (spec.plastic set): hinges at the vertices with the
+/// resultant law only (above).
+inline PlasticLaw plastic_law(const ring::RingSpec& spec, const ring::Plastic& p) {
+  return PlasticLaw{p, ring::SectionLaw(spec), p.law == ring::Plastic::Law::resultant};
 }
+
+/// The law and the committed states of every bending point (the model's order, above).
+struct Plasticity {
+  const PlasticLaw& law;
+  const std::vector<ring::PlasticState>& committed;
+  /// The first committed state of bending point i (section.states() of them).
+  const ring::PlasticState* point(std::size_t i) const { return &committed[i * law.section.states()]; }
+};
 
 /// What committing a step did: the plastic work of the step over the ring (J) and the
 /// largest |plastic curvature| after it (1/m; a vertex hinge's plastic rotation over the cell length).
@@ -80,18 +104,32 @@ struct Committed {
   double largest_plastic = 0.0;
 };
 
-/// Commits every point at its converged curvature: the state moves, the step's plastic
-/// work sum weight * law.dissipated is returned. O(points).
-inline Committed commit(const ring::BilinearLaw& law, const std::vector<BendingPoint>& at,
+/// Commits every point at its converged strain (`at`: bending points, then vertex hinges,
+/// as BeamModel::bending_points gives them): the states move, the step's plastic work
+/// sum weight * dissipated is returned. O(states).
+inline Committed commit(const PlasticLaw& law, const std::vector<BendingPoint>& at,
                         std::vector<ring::PlasticState>& states) {
   Committed c;
-  for (std::size_t i = 0; i < at.size(); ++i) {
-    const ring::BilinearLaw& of = at[i].law ? *at[i].law : law;
-    if (of.at(states[i], at[i].curvature).yielding) {  // else the state stays, bit for bit
-      c.dissipated += at[i].weight * of.dissipated(states[i], at[i].curvature);
-      states[i] = of.commit(states[i], at[i].curvature);
+  std::size_t k = 0;  // the point's first state
+  for (const BendingPoint& b : at) {
+    if (b.law) {
+      if (b.law->at(states[k], b.curvature).yielding) {  // else the state stays, bit for bit
+        c.dissipated += b.weight * b.law->dissipated(states[k], b.curvature);
+        states[k] = b.law->commit(states[k], b.curvature);
+      }
+      c.largest_plastic = std::max(c.largest_plastic, std::abs(states[k].plastic) * b.per_length);
+      ++k;
+      continue;
     }
-    c.largest_plastic = std::max(c.largest_plastic, std::abs(states[i].plastic) * at[i].per_length);
+    ring::PlasticState* s = &states[k];
+    if (law.section.at(s, b.curvature).yielding) {
+      c.dissipated += b.weight * law.section.dissipated(s, b.curvature);
+      law.section.commit(s, b.curvature);
+    }
+    // kappa - M / EI: the resultant law's e_p exactly; the fibre law's curvature left when
+    // the point is unloaded elastically.
+    c.largest_plastic = std::max(c.largest_plastic, std::abs(law.section.plastic_curvature(s, b.curvature)));
+    k += static_cast<std::size_t>(law.section.states());
   }
   return c;
 }
