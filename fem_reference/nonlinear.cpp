@@ -12,11 +12,16 @@
 #include "paths/time_stepping.hpp"
 #include "ring/energy_guard.hpp"
 
+#include <utility>
+
 namespace fem::detail {
 namespace {
 
 /// Inextensible limit: EA = beta EI / R^2 (statics extrapolate from beta and 2 beta).
 constexpr double kResponseBeta = 1e7;
+
+/// ring.plastic's response: the smallest sub-step, dt / this (respond_once).
+constexpr int kPlasticSubsteps = 64;
 
 Setup make_setup(const ring::RingSpec& spec, const ring::FemOptions& o, double beta) {
   Setup s;
@@ -137,7 +142,7 @@ class BeamStepper : public paths::Stepper {
         S_(model.sparsity()) {
     if (law_) {
       plastic_.assign(potential_.plastic_states(), ring::PlasticState{});
-      plastic_log_.push_back(0.0);
+      plastic_log_.push_back({0.0, 0.0});
     }
     for (double a : rs.record) record_vertex_.push_back(model.vertex_of(a));
     for (auto* v : {&q_, &v_, &a_, &q1_, &v1_, &a1_, &Cv_, &tmp_, &internal_, &qa_, &va_, &aa_}) v->reinit(N_);
@@ -196,12 +201,12 @@ class BeamStepper : public paths::Stepper {
     return {true, false, it, g_mean_};
   }
 
-  void accept(double) override {
+  void accept(double t) override {
     if (law_) {
       // Commit first: V below is then the elastic energy stored at the new state.
       const Committed step = commit(*law_, model_.bending_points(q1_, Plasticity{*law_, plastic_}), plastic_);
       plastic_work_ += step.dissipated;
-      plastic_log_.push_back(plastic_work_);
+      plastic_log_.push_back({t, plastic_work_});
     }
     const BeamPotential::Value next = potential_.evaluate(q1_, 0.0, nullptr, nullptr, nullptr, committed());
     work_ += g_mean_ * (next.load - energy_.load);
@@ -218,8 +223,9 @@ class BeamStepper : public paths::Stepper {
     a_ = a1_;
   }
 
-  /// ring.plastic: the plastic work at rest and after every accepted step (J; empty without).
-  const std::vector<double>& plastic_work() const { return plastic_log_; }
+  /// ring.plastic: (t, the plastic work from rest, J) at rest and after every accepted step
+  /// (empty without).
+  const std::vector<std::pair<double, double>>& plastic_work() const { return plastic_log_; }
 
   bool finite() const override { return std::isfinite(q_.l2_norm()) && std::isfinite(v_.l2_norm()); }
 
@@ -300,7 +306,7 @@ class BeamStepper : public paths::Stepper {
   const std::optional<PlasticLaw>& law_;  ///< ring.plastic's, or nullopt
   std::vector<ring::PlasticState> plastic_;  ///< committed, per bending point (plastic_points.hpp)
   double plastic_work_ = 0.0;                ///< J, from rest
-  std::vector<double> plastic_log_;          ///< plastic_work_ at rest and after every accepted step
+  std::vector<std::pair<double, double>> plastic_log_;  ///< (t, plastic_work_) at rest and every accepted step
   std::vector<unsigned int> record_vertex_;
   SparseMatrix<double> S_;
   Vector<double> q_, v_, a_, q1_, v1_, a1_, Cv_, tmp_, internal_, qa_, va_, aa_;
@@ -308,8 +314,11 @@ class BeamStepper : public paths::Stepper {
   BeamPotential::Value energy_;  ///< V and Phi of the accepted state (0 at rest)
 };
 
-/// One time integration with one discretization. The beam takes no sub-steps: a step
+/// One time integration with one discretization. The elastic beam takes no sub-steps: a step
 /// whose Newton fails ends the run (step_too_small), and the reference refines dt itself.
+/// ring.plastic: the driver halves a failed step down to dt / 64 (kPlasticSubsteps): Newton
+/// on the piecewise quadratic potential can cycle between the two sides of a yield edge,
+/// where a smaller increment converges.
 ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, const ring::ResponseOptions& rs) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::unique_ptr<BeamModel> built = make_beam(spec, setup);
@@ -320,15 +329,21 @@ ring::TimeHistory respond_once(const ring::RingSpec& spec, const Setup& setup, c
   paths::Grid grid;
   grid.dt = rs.dt;
   grid.t_end = rs.t_end;
-  grid.min_dt_factor = 1.0;
+  grid.min_dt_factor = spec.plastic ? 1.0 / kPlasticSubsteps : 1.0;
   grid.check_contact = false;
   grid.guard = &guard;
   grid.who = "fem response";
   grid.progress = rs.progress;
-  // The beam takes no sub-steps (min_dt_factor 1): every accepted step is a grid step, so
-  // the plastic work after the k-th accepted step is the k-th record's.
+  // The plastic work at each record: the last accepted step's at the record's time (the
+  // driver ends sub-steps exactly on the grid, so the times are equal).
   auto with_plastic = [&](ring::TimeHistory h) {
-    if (spec.plastic) h.dissipated.assign(stepper.plastic_work().begin(), stepper.plastic_work().begin() + h.t.size());
+    if (!spec.plastic) return h;
+    const auto& log = stepper.plastic_work();
+    std::size_t j = 0;
+    for (double t : h.t) {
+      while (j + 1 < log.size() && log[j + 1].first <= t) ++j;
+      h.dissipated.push_back(log[j].second);
+    }
     return h;
   };
   ring::TimeHistory h;

@@ -78,7 +78,6 @@ std::vector<BendingPoint> RingModel::bending_points(const Vector<double>& q, con
     }
   }
   // The vertex hinges (beam_energy): e = J + {M} / P, {M} from the ends' committed states.
-  if (!plastic.law.vertex_hinges) return out;
   const double P = penalty_;
   const ring::BilinearLaw hinge = plastic.law.hinge(P);
   const ring::SectionLaw& section = plastic.law.section;
@@ -107,10 +106,9 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
                            std::to_string(plastic->law.states(bending_point_count(), n)) + " of the bending points");
   // The vertex hinges' states follow the bending points' (plastic_points.hpp).
   const std::size_t hinge_base = plastic ? plastic->law.states(bending_point_count(), 0) : 0;
-  const bool hinges = plastic && plastic->law.vertex_hinges;
-  // The vertices' hinge law (used with hinges only): the interior penalty's stiffness, Mp.
+  // The vertices' hinge law (used with `plastic` only): the interior penalty's stiffness, Mp.
   const std::optional<ring::BilinearLaw> hinge =
-      hinges ? std::optional<ring::BilinearLaw>(plastic->law.hinge(penalty_)) : std::nullopt;
+      plastic ? std::optional<ring::BilinearLaw>(plastic->law.hinge(penalty_)) : std::nullopt;
 
   auto strain = [&](const std::vector<double>& x, unsigned int qp, std::vector<Vec4>& b) {
     Vec4 g{1.0, 0.0, 0.0, 0.0};
@@ -198,7 +196,7 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
       dM[4 + a] = mR * kr.d[a];
     }
     std::array<double, 8> dE{};
-    if (hinges) {
+    if (plastic) {
       // E_v = {M} J + P/2 J^2 = P/2 e^2 - {M}^2 / (2 P) with e = J + {M} / P, and P e =
       // {M} + P J the moment the vertex passes on: the vertex is a hinge of stiffness P whose
       // moment the law caps (plastic_points.hpp), E_v = W_P(e) - {M}^2 / (2 P), W_P the

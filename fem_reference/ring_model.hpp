@@ -250,7 +250,7 @@ class BeamModel : public LinearModel {
   virtual double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
                              const Plasticity* plastic) const = 0;
   /// The strain (curvature, or a vertex hinge's strain) and weight of every bending point,
-  /// then of every vertex hinge (plastic.law.vertex_hinges), at q, in the model's order
+  /// then of every vertex hinge, at q, in the model's order
   /// (plastic_points.hpp), as beam_energy evaluates them from the committed states: what
   /// the statics and the response commit. O(cells (p+2) (2p+3) + states).
   virtual std::vector<BendingPoint> bending_points(const Vector<double>& q, const Plasticity& plastic) const = 0;

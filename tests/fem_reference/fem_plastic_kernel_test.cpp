@@ -2,7 +2,7 @@
 // differences of its own incremental potential: the internal force is the potential's
 // gradient and the tangent the force's derivative, at a state where some bending points and
 // vertex hinges yield and others do not, from committed states with plastic strain; for the
-// resultant law (with vertex hinges) and the fibre law (without).
+// resultant law and the fibre law.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,7 +53,6 @@ TEST(FemPlasticKernel, InternalForceAndTangentAreThePotentialsDerivatives) {
     Vector<double> q(N);
     for (unsigned int i = 0; i < N; ++i) q[i] = 0.2 * u(rng);
     const fem::detail::PlasticLaw law = fem::detail::plastic_law(spec, *spec.plastic);
-    EXPECT_EQ(law.vertex_hinges, !fibre);
     const std::size_t points = model.bending_point_count(), per_point = law.section.states();
     std::vector<ring::PlasticState> committed(law.states(points, model.cells()));
     for (std::size_t i = 0; i < committed.size(); ++i) {
@@ -64,7 +63,7 @@ TEST(FemPlasticKernel, InternalForceAndTangentAreThePotentialsDerivatives) {
     const fem::detail::Plasticity plastic{law, committed};
     int yielding = 0;
     const std::vector<fem::detail::BendingPoint> at = model.bending_points(q, plastic);
-    EXPECT_EQ(at.size(), points + (fibre ? 0 : model.cells()));
+    EXPECT_EQ(at.size(), points + model.cells());
     for (std::size_t i = 0; i < points; ++i) yielding += law.section.at(plastic.point(i), at[i].curvature).yielding;
     Vector<double> f, fp, fm;
     SparseMatrix<double> K(model.sparsity());

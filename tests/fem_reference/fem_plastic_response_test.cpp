@@ -20,6 +20,7 @@
 #include "fem_reference/nonlinear.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
+#include "support/fibre_ring.hpp"
 #include "support/paper.hpp"
 #include "support/plastic_ring.hpp"
 #include "support/refusal.hpp"
@@ -73,19 +74,23 @@ double largest_imbalance(const ring::TimeHistory& h) {
 }
 
 /// Mp = 1e30 N m never yields: the plastic response is the elastic one. Not to round-off: the
-/// plastic beam integrates its bending on the Lobatto bending points (plastic_points.hpp), the
-/// elastic one on p + 2 Gauss points; their difference is the statics' (fem_plastic_test:
-/// 6.4e-9 relative at 32 cells). Measured here (the step load, 0.5 s past the first peak):
-/// 1.1e-8 of the largest closing; bound 1e-7 as the statics'. The records' energies likewise.
+/// plastic beam integrates its bending on the p + 1 Lobatto bending points (plastic_points.hpp,
+/// exact to degree 2p - 1), the elastic one on p + 2 Gauss points (exact for the curvature's
+/// square, degree 2p); their difference is the statics' (fem_plastic_test: 6.4e-9 relative at
+/// 32 cells) on the modes the load moves, and grows with the mode number. A step load moves
+/// every mode: measured 6.8e-7 of the largest closing (16 cells, 1.2 s). So the load here
+/// rises smoothly (a ramp of 2 periods of the lowest mode, held), which leaves the high modes
+/// at rest, on 32 cells as the statics': measured 9.5e-9 of the largest closing and 1.2e-8 of
+/// the largest work; bound 1e-7 as the statics'.
 TEST(FemPlasticResponse, HugePlasticMomentGivesTheElasticResponse) {
   ring::RingSpec spec = pinched_ring();
   ring::RingSpec elastic = spec;
   elastic.plastic.reset();
   spec.plastic->moment = 1e30;
   const double P = 3.5e-4 * spec.EI() / (spec.radius * spec.radius);
-  const ring::ResponseOptions rs = pinch_response(P, {}, 0.02, 1.2, 0.8);
-  const ring::TimeHistory a = fem::respond(spec, fem_options(16), rs);
-  const ring::TimeHistory b = fem::respond(elastic, fem_options(16), rs);
+  const ring::ResponseOptions rs = pinch_response(P, ramp(3.0), 0.02, 6.0, 0.8);
+  const ring::TimeHistory a = fem::respond(spec, fem_options(32), rs);
+  const ring::TimeHistory b = fem::respond(elastic, fem_options(32), rs);
   ASSERT_EQ(a.t.size(), b.t.size());
   ASSERT_EQ(a.dissipated.size(), a.t.size());
   EXPECT_TRUE(b.dissipated.empty());
@@ -103,8 +108,11 @@ TEST(FemPlasticResponse, HugePlasticMomentGivesTheElasticResponse) {
   EXPECT_LT(energy_diff, 1e-7 * energy_scale);
 }
 
-/// Below first yield (a step load 0.45 P_y: the dynamic peak is below 2 x 0.45 = 0.9 P_y)
-/// nothing yields: the plastic work stays exactly zero at every step.
+/// Below first yield nothing yields: the plastic work stays exactly zero at every step. The load
+/// rises to 0.9 P_y over 10 s (6.7 periods of the lowest mode; a ramp's dynamic overshoot is at
+/// most |sin(w T / 2)| / (w T / 2) = 5 % of it), so no point passes P_y. (A step load 0.45 P_y
+/// yielded the points under the loads: the step moves every mode, and the local moment's
+/// dynamic peak is more than twice its static value.)
 TEST(FemPlasticResponse, NoPlasticWorkWhileElastic) {
   for (const bool fibre : {false, true}) {
     ring::RingSpec spec = pinched_ring();
@@ -114,30 +122,37 @@ TEST(FemPlasticResponse, NoPlasticWorkWhileElastic) {
       spec.plastic->stress = spec.plastic->moment * 0.5 * spec.section.diameter / spec.I();
     }
     const double Py = M_PI * 1e-4 * spec.EI() / (spec.radius * spec.radius);
-    const ring::TimeHistory h = fem::respond(spec, fem_options(16), pinch_response(0.45 * Py, {}, 0.02, 3.0));
+    const ring::TimeHistory h = fem::respond(spec, fem_options(16), pinch_response(0.9 * Py, ramp(10.0), 0.05, 15.0));
     ASSERT_EQ(h.dissipated.size(), h.t.size());
     double peak = 0.0;
     for (std::size_t k = 0; k < h.t.size(); ++k) {
       EXPECT_EQ(h.dissipated[k], 0.0) << (fibre ? "fibre" : "resultant") << " at t = " << h.t[k];
       peak = std::max(peak, closing(h, k));
     }
-    // The step load's dynamic peak is about twice the static closing (the oracle's elastic one).
+    // The peak closing: the static one (the oracle's elastic closing) within the ramp's 5 %
+    // overshoot and the geometric O(delta / R).
     const ringtest::PinchedPlasticRing o{spec.radius, spec.EI(), 1e-4 * spec.EI() / spec.radius};
-    std::printf("%s: peak closing %.4e m, twice the static %.4e m\n", fibre ? "fibre" : "resultant", peak,
-                2.0 * o.elastic_closing(0.45 * Py));
-    EXPECT_GT(peak, o.elastic_closing(0.45 * Py));
-    EXPECT_LT(peak, o.elastic_closing(Py));
+    std::printf("%s: peak closing %.4e m, static %.4e m\n", fibre ? "fibre" : "resultant", peak,
+                o.elastic_closing(0.9 * Py));
+    EXPECT_TRUE(ringtest::IsClose(peak, o.elastic_closing(0.9 * Py), 0.05));
   }
 }
 
 /// The energy identity on a plastic pinch: a step load 0.9 P_c, whose dynamic peak drives the
-/// ring far past first yield (the hinges under the loads, then at the roller's diameter),
-/// generalized-alpha with rho_inf = 1. That scheme is the midpoint rule in q (am = af = 1/2):
-/// it conserves the energy of a linear (quadratic) model exactly; its error here comes from
-/// what is not quadratic within a step, the yield kinks of the law (a bending point that
-/// yields within a step: O(dt^2) per event, the events O(1/dt) apart in steps, so O(dt^2) in
-/// all) and the geometric nonlinearity (O(dt^2) too). So the oracle is the order 2 of the
-/// largest |T + V + D - W| in dt, fitted over dt, dt/2, dt/4, with its ceiling.
+/// ring far past first yield (most of the work is dissipated), generalized-alpha with
+/// rho_inf = 1, undamped. That scheme is the midpoint rule in q (am = af = 1/2): it conserves
+/// the energy of a linear (quadratic) model exactly, so its imbalance here comes from what is
+/// not quadratic within a step. The geometric nonlinearity's is O(dt^2). The law's: the
+/// incremental potential from the committed state is piecewise quadratic, and the midpoint
+/// force integrates it exactly in a step that stays on one side of a yield edge; a step in
+/// which a bending point (a fibre) crosses its edge errs by O(k de^2) = O(dt^2). Summed over
+/// the run that is O(dt^2) if the crossings are a fixed count, but O(dt) if they are a fixed
+/// fraction of the steps (the step load rings every mode, and points near their edges cross
+/// it back and forth). So the bound: the largest |T + V + D - W| falls in dt at an order in
+/// [1, 2] (fitted over dt = 0.04 ... 0.005, expected 1.5 +- 0.5), and at the finest dt stays
+/// below 1e-4 of the work. Measured: resultant 3.2e-6, 1.7e-6, 1.0e-6, 2.9e-7 J (work
+/// 2.35e-2 J), order 1.10 +- 0.18; fibre 8.3e-6, 4.4e-6, 1.2e-6, 4.6e-7 J (work 2.55e-2 J),
+/// order 1.44 +- 0.13.
 TEST(FemPlasticResponse, EnergyIdentityHoldsToTheSchemesOrder) {
   for (const bool fibre : {false, true}) {
     ring::RingSpec spec = pinched_ring();
@@ -148,7 +163,8 @@ TEST(FemPlasticResponse, EnergyIdentityHoldsToTheSchemesOrder) {
       spec.plastic->stress = Mp / (std::pow(spec.section.diameter, 3) / 6.0);
     }
     const double P = 0.9 * 4.0 * Mp / R;
-    std::vector<double> dts = {0.04, 0.02, 0.01}, errors;
+    const std::vector<double> dts = {0.04, 0.02, 0.01, 0.005};
+    std::vector<double> errors;
     double work = 0.0, dissipated = 0.0;
     for (double dt : dts) {
       const ring::TimeHistory h = fem::respond(spec, fem_options(16), pinch_response(P, {}, dt, 3.0));
@@ -167,9 +183,7 @@ TEST(FemPlasticResponse, EnergyIdentityHoldsToTheSchemesOrder) {
     const ringtest::Order fit = ringtest::fit_order(ringtest::in_h(dts, errors));
     std::printf("%s: energy imbalance order %.3f +- %.3f in dt\n", fibre ? "fibre" : "resultant", fit.order,
                 fit.standard_error);
-    // Order 2 within 0.5 (the kinks' events make the error irregular in dt); ceiling: 1e-3 of the
-    // work at the finest dt.
-    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_h(dts, errors), 2.0, 0.5, 1e-3 * work))
+    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_h(dts, errors), 1.5, 0.5, 1e-4 * work))
         << (fibre ? "fibre" : "resultant");
   }
 }
@@ -183,7 +197,7 @@ TEST(FemPlasticResponse, EnergyIdentityHoldsToTheSchemesOrder) {
 /// closed form at 128 cells), the discretization at 16 cells (fem_plastic_test: 3.5e-4), and
 /// the ramp's dynamics (the quasi-static lag 2 zeta / omega dP/dt over the ramp, gone once
 /// the load is held; an overshoot above the statics' would add plastic rotation: none with
-/// this damping). Bound 2e-3; measured below.
+/// this damping). Bound 2e-3; measured 2.1e-4 (closing) and 2.8e-4 (plastic work).
 TEST(FemPlasticResponse, SlowRampReachesTheClosedFormClosing) {
   const ring::RingSpec spec = pinched_ring();
   const double Mp = spec.plastic->moment, R = spec.radius, P = 3.5 * Mp / R;
@@ -201,6 +215,28 @@ TEST(FemPlasticResponse, SlowRampReachesTheClosedFormClosing) {
   // Nothing yields before P_y: the plastic work is zero up to the ramp's t = 30 s P_y / P.
   for (std::size_t j = 0; j < h.t.size() && h.t[j] < 30.0 * o.first_yield() / P * 0.99; ++j)
     EXPECT_EQ(h.dissipated[j], 0.0) << "t = " << h.t[j];
+}
+
+/// The same slow ramp with the fibre law (Mp = sigma_y Z = 1e-4 EI / R) to 1.3 P_y = 0.6 P_c
+/// (P_y = pi My / R), against ringtest::FibrePinchedRing's closing (tests/support/fibre_ring.hpp)
+/// within: the geometric O(delta / R) (~1e-4), the statics' discretization at 32 cells
+/// (fem_plastic_test, FemFibre: 2.3e-4 at this load) and the fibres' quadrature against the
+/// closed-form circle (6e-6 here); bound 2e-3 as the resultant ring's. Measured 2.5e-4.
+TEST(FemPlasticResponse, SlowRampReachesTheFibreOraclesClosing) {
+  ring::RingSpec spec = pinched_ring();
+  spec.plastic->law = ring::Plastic::Law::fibre;
+  spec.plastic->stress = spec.plastic->moment / (std::pow(spec.section.diameter, 3) / 6.0);
+  spec.plastic->moment = 0.0;
+  const ringtest::FibrePinchedRing o(spec);
+  const double P = 1.3 * o.first_yield();
+  ring::ResponseOptions rs = pinch_response(P, ramp(30.0), 0.05, 60.0, 0.8);
+  rs.rayleigh_mass = 4.2;
+  const ring::TimeHistory h = fem::respond(spec, fem_options(32), rs);
+  const std::size_t k = h.t.size() - 1;
+  std::printf("fibre ramp: closing %.6e m against the oracle %.6e m (%.3e); plastic work %.3e J\n", closing(h, k),
+              o.closing(P), ringtest::rel(closing(h, k), o.closing(P)), h.dissipated[k]);
+  EXPECT_TRUE(ringtest::IsClose(closing(h, k), o.closing(P), 2e-3));
+  EXPECT_GT(h.dissipated[k], 0.0);
 }
 
 /// The Reissner beam still refuses the plastic response by the key ring.plastic; the

@@ -342,7 +342,8 @@ std::pair<double, double> fibre_closing(const ring::RingSpec& spec, int n, doubl
 
 /// Below first yield P_y = pi My / R (My = sigma_y I / c) nothing yields and the closing is
 /// the elastic beam's (the bending points' rule against the elastic beam's Gauss points, as
-/// the resultant law's: bound 1e-7); just above it, the outer fibres under the loads flow.
+/// the resultant law's: bound 1e-7); just above it, the outer fibres under the loads flow
+/// (measured at 1.05 P_y: plastic work 5.6e-8 J, the closing 7.6e-5 from the oracle's).
 TEST(FemFibre, NoPlasticWorkBelowFirstYieldAndSomeAbove) {
   const ring::RingSpec spec = fibre_pinched_ring();
   ring::RingSpec elastic = spec;
@@ -367,15 +368,28 @@ TEST(FemFibre, NoPlasticWorkBelowFirstYieldAndSomeAbove) {
 /// oracle on the FE's own section law, converging in elements at the fitted order; against the
 /// closed-form circle, within that plus the 64 fibres' quadrature (the two oracles' difference,
 /// measured here, below 1e-3: tests/ring/test_plastic.cpp bounds the moment's error by 1e-3).
-/// The fibre law has no concentrated hinge (its moment-curvature is smooth past first yield),
-/// so the bending points carry it without vertex hinges (plastic_points.hpp says how that was
-/// decided); measured: see the printout and plastic_points.hpp.
+/// The expected orders:
+///  - 0.60 and 0.74 P_c: 2. The 64 fibres' law M(kappa) has a kink (a step of its tangent)
+///    where each fibre yields, so the curvature along the ring has slope kinks inside the
+///    cells, each costing the cell's polynomial O(h^2); their count is fixed. Measured
+///    (n = 16 ... 64): 1.7e-3 ... 5.7e-5, order 2.45 +- 0.13; 1.7e-2 ... 6.9e-4, 2.27 +- 0.23.
+///  - 0.9 P_c: 1/2. Near collapse the curvature under the loads peaks like
+///    (d + |s|)^(-1/2) (the solid circle's kappa ~ (Mp - M)^(-1/2), M linear in s), whose
+///    integral over the first cell a polynomial misses by O(h^(1/2)) until h falls below d;
+///    the vertex hinge (plastic_points.hpp) carries most of it. Measured: 1.9e-3, 1.4e-3,
+///    1.2e-3, 1.1e-3, 9.7e-4, order 0.44 +- 0.06 (without the vertex hinges: 18 % at n = 32).
+/// Tolerances: 0.5 on the orders 2 (the standard errors, two to four times), 0.2 on the 1/2
+/// (three standard errors); ceilings twice the finest errors measured.
 TEST(FemFibre, ClosingConvergesInElementsToTheOracle) {
   const ring::RingSpec spec = fibre_pinched_ring(1e-6);
   const ringtest::FibrePinchedRing closed(spec);
   const ringtest::FibrePinchedRing oracle = section_oracle(spec);
-  const std::vector<int> ns = {8, 12, 16, 24, 32};
-  for (const double load : {1.3, 1.6, 0.9 * closed.collapse() / closed.first_yield()}) {
+  const std::vector<int> ns = {16, 24, 32, 48, 64};
+  const double near_collapse = 0.9 * closed.collapse() / closed.first_yield();
+  for (const auto& [load, order, tolerance, ceiling] :
+       {std::tuple<double, double, double, double>{1.3, 2.0, 0.5, 1.2e-4},
+        {1.6, 2.0, 0.5, 1.4e-3},
+        {near_collapse, 0.5, 0.2, 2e-3}}) {
     const double P = load * closed.first_yield();
     const double exact = oracle.closing(P), form = closed.closing(P);
     std::vector<double> errors;
@@ -388,31 +402,36 @@ TEST(FemFibre, ClosingConvergesInElementsToTheOracle) {
     std::printf("fibre, P = %.3f P_c: fitted order %.3f +- %.3f, finest %.3e; section oracle against the closed form "
                 "%.3e\n",
                 P / closed.collapse(), fit.order, fit.standard_error, fit.finest_error, ringtest::rel(exact, form));
-    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.5, 1e-3)) << "P = " << load << " P_y";
+    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), order, tolerance, ceiling)) << "P = " << load << " P_y";
     EXPECT_LT(ringtest::rel(exact, form), 1e-3);
   }
 }
 
-/// The geometric deviation at Mp = 1e-4 EI / R: the FE at 64 cells against the oracle on its
-/// own section law, at 0.9 P_c, within 4 delta / R (the resultant ring's bound, fem_plastic_test
-/// above: the geometrically exact, extensible beam's O(delta / R)).
+/// The geometric deviation at Mp = 1e-4 EI / R: at small displacement the closing is
+/// proportional to Mp at a load proportional to Mp (the oracle's closing / Mp is a function of
+/// P R / Mp alone), so the FE at Mp = 1e-4 EI / R against 100 times the FE at 1e-6 EI / R, on
+/// the same mesh (64 cells, so the same discretization), at 0.9 P_c, measures the geometrically
+/// exact, extensible beam's deviation: within 4 delta / R (the resultant ring's bound above).
+/// Measured 1.57e-4 (delta / R = 8.7e-5).
 TEST(FemFibre, GeometricDeviationIsOfOrderDeltaOverR) {
-  const ring::RingSpec spec = fibre_pinched_ring();
-  const ringtest::FibrePinchedRing closed(spec);
-  const double P = 0.9 * closed.collapse();
-  const double exact = section_oracle(spec).closing(P), fe = fibre_closing(spec, 64, P).first;
-  const double bound = 4.0 * exact / spec.radius;
-  std::printf("fibre, Mp = 1e-4 EI / R, 0.9 P_c: FE %.6e m, oracle %.6e m, relative %.3e (bound %.3e)\n", fe, exact,
-              ringtest::rel(fe, exact), bound);
-  EXPECT_TRUE(ringtest::IsClose(fe, exact, bound));
+  const ring::RingSpec spec = fibre_pinched_ring(), small = fibre_pinched_ring(1e-6);
+  const double P = 0.9 * ringtest::FibrePinchedRing(spec).collapse();
+  const double Ps = 0.9 * ringtest::FibrePinchedRing(small).collapse();
+  const double fe = fibre_closing(spec, 64, P).first, scaled = 100.0 * fibre_closing(small, 64, Ps).first;
+  const double bound = 4.0 * fe / spec.radius;
+  std::printf("fibre, 0.9 P_c, 64 cells: closing %.6e m at Mp = 1e-4 EI / R, 100 x %.6e m at 1e-6: relative %.3e "
+              "(bound %.3e)\n",
+              fe, scaled / 100.0, ringtest::rel(fe, scaled), bound);
+  EXPECT_TRUE(ringtest::IsClose(fe, scaled, bound));
 }
 
 /// The plateau: as P approaches P_c = 4 Mp / R (Mp = sigma_y Z), the fibre ring's closing
 /// grows without bound at small displacement (the moment under the loads and at the roller's
 /// diameter tends to Mp, whose curvature is unbounded). The FE's secant load per closing,
-/// between 0.9 and 0.98 P_c, falls below a tenth of the elastic ring's (the oracle's: measured
-/// ratio printed), and the closing at 0.98 P_c meets the oracle within the discretization
-/// (measured) and the geometric deviation.
+/// between 0.9 and 0.98 P_c, falls below a tenth of the elastic ring's (measured 0.070), and
+/// the closing at 0.98 P_c (1.8 times 0.9 P_c's) meets the oracle within 2e-3: the geometric
+/// 4 delta / R (6e-4) and the discretization near collapse (~1e-3 at 64 cells, above).
+/// Measured 4.0e-4.
 TEST(FemFibre, PlateauApproachesTheCollapseLoad) {
   const ring::RingSpec spec = fibre_pinched_ring();
   const ringtest::FibrePinchedRing closed(spec);
@@ -425,7 +444,7 @@ TEST(FemFibre, PlateauApproachesTheCollapseLoad) {
               "elastic\n",
               d90, d98, oracle.closing(0.98 * Pc), secant / elastic_stiffness);
   EXPECT_LT(secant, 0.1 * elastic_stiffness);
-  EXPECT_TRUE(ringtest::IsClose(d98, oracle.closing(0.98 * Pc), 1e-2));
+  EXPECT_TRUE(ringtest::IsClose(d98, oracle.closing(0.98 * Pc), 2e-3));
 }
 
 /// The Reissner (Timoshenko) beam takes no plastic law yet (plastic_points.hpp): refused by key.
