@@ -44,6 +44,9 @@ constexpr int kChildren = 64;  ///< helper processes at once (a sweep's threads 
 volatile sig_atomic_t g_children[kChildren] = {};
 
 const int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+/// Set when a run's files are all published and nothing is staged since: a signal then
+/// finds the run finished, says so, and lets it end with its own exit code.
+volatile sig_atomic_t g_finished = 0;
 
 class SignalBlock {
  public:
@@ -72,6 +75,7 @@ bool signal_pending() {
 void add_cleanup(Kind kind, const std::string& path) {
   if (path.size() >= PATH_MAX) return;  // cannot happen: paths are checked up front
   SignalBlock block;
+  g_finished = 0;  // something is staged again
   for (auto& e : g_cleanup)
     if (e.kind == Kind::none) {
       std::memcpy(e.path, path.c_str(), path.size() + 1);
@@ -123,6 +127,13 @@ void remove_flat(const char* dir, int depth = 0) {
 }
 
 void on_signal(int sig) {
+  if (g_finished) {
+    // The results stand, whole: the run has only its exit left (its code may still be a
+    // gate's 1), which a death by the signal would hide.
+    static const char kNote[] = "ringvib: interrupted after the results were published; they stand, whole\n";
+    [[maybe_unused]] const auto written = write(2, kNote, sizeof kNote - 1);
+    return;
+  }
   if (g_child > 0) kill(g_child, SIGKILL);  // the running gnuplot
   for (const auto& c : g_children)          // helpers such as ccx, before their folders go
     if (c > 0) {
@@ -485,6 +496,7 @@ bool Outputs::transaction() {
   for (const auto& p : old) std::remove(p.c_str());
   published_ = true;
   discard();
+  g_finished = 1;  // still under the block: a signal from now on finds the run finished
   return false;
 }
 

@@ -26,12 +26,16 @@ std::string history_csv(const ring::TimeHistory& h) {
   s.precision(12);
   s << "t";
   for (double a : h.record_angles) s << ",ux_" << deg_label(a) << ",uy_" << deg_label(a);
-  s << ",kinetic,strain,work,energy_error,constraint_residual,newton_iterations\n";
+  // A plastic ring's plastic work (J) after the energies; `strain` is then the elastic part.
+  const bool plastic = !h.dissipated.empty();
+  s << ",kinetic,strain," << (plastic ? "dissipated," : "") << "work,energy_error,constraint_residual,newton_iterations\n";
   for (std::size_t k = 0; k < h.t.size(); ++k) {
     s << h.t[k];
     for (std::size_t p = 0; p < h.record_angles.size(); ++p) s << "," << h.ux[p][k] << "," << h.uy[p][k];
-    s << "," << h.kinetic[k] << "," << h.strain[k] << "," << h.work[k] << "," << h.energy_error[k] << ","
-      << h.constraint_residual[k] << "," << h.newton_iterations[k] << "\n";
+    s << "," << h.kinetic[k] << "," << h.strain[k] << ",";
+    if (plastic) s << h.dissipated[k] << ",";
+    s << h.work[k] << "," << h.energy_error[k] << "," << h.constraint_residual[k] << "," << h.newton_iterations[k]
+      << "\n";
   }
   return s.str();
 }

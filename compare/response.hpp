@@ -10,7 +10,7 @@
 
 namespace cmp {
 
-/// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, work,
+/// CSV with header t, ux_<deg>, uy_<deg> per recorded point, kinetic, strain, (a plastic ring: dissipated,) work,
 /// energy_error, constraint_residual, newton_iterations (docs/commands.md, "What each command does").
 std::string history_csv(const ring::TimeHistory& h);
 /// {"displacements": [{"angle", "ux", "uy"}...], "steps", "newton_iterations", "solver",

@@ -560,6 +560,14 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
   Outputs files;
   if (!args.out.empty()) files.folder(args.out, "--out", {"sweep"});
   if (args.resume && args.out.empty()) throw ring::InputError("", "--resume", "needs --out DIR (the sweep to resume)");
+  if (args.ranks > 0) {
+    // Checked, so launched: the ranks run this command without --ranks.
+    if (ranks > 1) throw ring::InputError("", "--ranks", "starts mpirun, and this sweep already runs under one");
+    if (!mpi::built())
+      throw ring::InputError("", "--ranks", "this ringvib was built without MPI; run the sweep on this machine's cores "
+                                            "without --ranks");
+    return mpi::launch(args.ranks, argc, argv);
+  }
   if (root) files.open();  // locks DIR before --resume reads it
   std::map<std::vector<std::string>, std::vector<SweepRow>> done;
   if (args.resume)

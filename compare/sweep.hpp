@@ -25,6 +25,7 @@ struct SweepArgs {
   std::string out;                ///< folder for sweep.csv, sweep.json, sweep.md, sweep.png
   bool resume = false;            ///< skip the cases already in out/sweep.csv with status ok
   int jobs = 0;                   ///< threads (0: all cores; under MPI: per rank, default 1)
+  int ranks = 0;                  ///< > 0: start mpirun -np ranks itself (mpi::launch)
 };
 
 /// One row of the sweep's table. `values` are the varied keys' values as TOML text

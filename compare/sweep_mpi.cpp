@@ -1,14 +1,25 @@
 #include "compare/sweep_mpi.hpp"
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <mutex>
+#include <sstream>
+#include <string>
 #include <thread>
+#include <vector>
+
+#include "ring/errors.hpp"
 
 #ifdef RINGVIB_WITH_MPI
 #include <mpi.h>
@@ -27,6 +38,114 @@ int env_int(std::initializer_list<const char*> names, int fallback) {
 
 int launched_size() { return env_int({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "SLURM_NTASKS"}, 1); }
 int launched_rank() { return env_int({"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID"}, 0); }
+
+// ---- the launcher of `sweep --ranks N` ----
+
+namespace {
+
+/// The executable `name` on PATH, or "".
+std::string on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "");
+  for (std::string d; std::getline(dirs, d, ':');) {
+    const std::string f = (d.empty() ? "." : d) + "/" + name;
+    if (access(f.c_str(), X_OK) == 0) return f;
+  }
+  return "";
+}
+
+/// The processes whose parent is `parent` (from /proc): mpirun's ranks.
+std::vector<pid_t> children_of(pid_t parent) {
+  std::vector<pid_t> v;
+  if (DIR* d = opendir("/proc")) {
+    while (const dirent* e = readdir(d)) {
+      const pid_t pid = static_cast<pid_t>(std::atoi(e->d_name));
+      if (pid <= 0) continue;
+      std::ifstream f("/proc/" + std::string(e->d_name) + "/stat");
+      std::string stat((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+      const auto close = stat.rfind(')');  // "pid (comm) state ppid ..."
+      if (close == std::string::npos) continue;
+      std::istringstream rest(stat.substr(close + 1));
+      std::string state;
+      long ppid = 0;
+      if (rest >> state >> ppid && ppid == parent) v.push_back(pid);
+    }
+    closedir(d);
+  }
+  return v;
+}
+
+}  // namespace
+
+int launch(int ranks, int argc, char** argv) {
+  const std::string mpirun = on_path("mpirun");
+  if (mpirun.empty())
+    throw ring::InputError("", "--ranks", "starts mpirun, and no mpirun is on PATH (install Open MPI, or run the sweep "
+                                          "on this machine's cores without --ranks)");
+  char self[4096];
+  const ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (len <= 0) throw std::runtime_error("--ranks: cannot find this program's path");
+  self[len] = '\0';
+  std::vector<std::string> args{mpirun, "-np", std::to_string(ranks), self};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--ranks") {
+      ++i;  // and its value
+      continue;
+    }
+    if (a.rfind("--ranks=", 0) == 0) continue;
+    args.push_back(a);
+  }
+  std::vector<char*> cargs;
+  for (auto& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+
+  // The signals stay blocked in the launcher and are taken by sigtimedwait, SIGCHLD with
+  // them (mpirun's end), so that none falls between a check and a wait.
+  sigset_t wait_for, old;
+  sigemptyset(&wait_for);
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGCHLD}) sigaddset(&wait_for, s);
+  sigprocmask(SIG_BLOCK, &wait_for, &old);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error(std::string("--ranks: cannot start mpirun: ") + std::strerror(errno));
+  if (pid == 0) {
+    // A process group of its own (a terminal's Ctrl-C reaches the launcher alone) and no
+    // terminal input (mpirun would forward it to rank 0, and a background read stops it).
+    setpgid(0, 0);
+    const int null = open("/dev/null", O_RDONLY);
+    if (null >= 0) dup2(null, 0);
+    struct sigaction dfl {};
+    dfl.sa_handler = SIG_DFL;
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaction(s, &dfl, nullptr);
+    sigprocmask(SIG_SETMASK, &old, nullptr);
+    execv(cargs[0], cargs.data());
+    static const char kFail[] = "ringvib: --ranks: cannot run mpirun\n";
+    [[maybe_unused]] const auto w = write(2, kFail, sizeof kFail - 1);
+    _exit(127);
+  }
+  setpgid(pid, pid);  // also here: whichever runs first
+  int status = 0, caught = 0;
+  for (;;) {
+    if (waitpid(pid, &status, WNOHANG) == pid) break;
+    siginfo_t info;
+    const timespec tick{0, 200'000'000};  // a bound only: SIGCHLD wakes the wait at mpirun's end
+    const int sig = sigtimedwait(&wait_for, &info, &tick);
+    if (sig == SIGINT || sig == SIGTERM || sig == SIGHUP) {
+      caught = sig;
+      // To the ranks (mpirun's children), each of which dies of it (rank 0 after removing
+      // what it staged), so that mpirun reports 128 + signal; to mpirun itself only while
+      // it has started no rank yet.
+      const std::vector<pid_t> children = children_of(pid);
+      if (children.empty()) kill(pid, sig);
+      for (const pid_t c : children) kill(c, sig);
+    }
+  }
+  // The signals stay blocked: the launcher only returns its code now, and a late signal
+  // must not turn a finished sweep's 0 into a death.
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  // A sweep that published before the signal ended with 0: it finished.
+  return caught && code != 0 ? 128 + caught : code;
+}
 
 #ifdef RINGVIB_WITH_MPI
 

@@ -30,4 +30,12 @@ bool built();
 bool distribute(int argc, char** argv, int n, const std::function<std::string(int)>& run,
                 std::vector<std::string>& results);
 
+/// `ringvib sweep --ranks N ...`: runs `mpirun -np N <this program> <argv without --ranks>`
+/// and returns the exit code a serial run would have: mpirun's own, but 128 + signal when
+/// SIGINT, SIGTERM or SIGHUP reached this launcher and the sweep did not finish. Such a
+/// signal is passed to the ranks, not to mpirun (which runs in a process group of its own,
+/// with no terminal input): Open MPI's mpirun, signalled itself, exits 1 whatever the
+/// ranks did (sweep_mpi.cpp). ring::InputError (exit 2) when no mpirun is on PATH.
+int launch(int ranks, int argc, char** argv);
+
 }  // namespace cmp::mpi

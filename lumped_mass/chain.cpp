@@ -91,7 +91,7 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const V
   return f;
 }
 
-Springs springs(const Chain& c, const Vec& q, double hess_scale) {
+Springs springs(const Chain& c, const Vec& q, double hess_scale, bool hinges) {
   const int N = 2 * c.n;
   const auto& hr = c.terms->hinge_rotations();
   const bool own = q.size() > N;
@@ -108,7 +108,7 @@ Springs springs(const Chain& c, const Vec& q, double hess_scale) {
       for (const Terms::Split& sp : c.terms->split(u, i, q[chi], chi, hess_scale != 0.0))
         add_spring(sp.r, sp.k, &s.energy, &s.grad, hess_scale, &s.hess);
     }
-  for (int j = 0; j < c.n; ++j) {
+  for (int j = 0; hinges && j < c.n; ++j) {
     const Turn t = turn(c, q, j, hess_scale != 0.0);
     const double e = t.theta - c.theta0;
     const ring::BilinearLaw::Point m = c.bending.at(j, e);
@@ -119,8 +119,10 @@ Springs springs(const Chain& c, const Vec& q, double hess_scale) {
       // elastic spring always was, k (grad grad^T + (e - e_p) Hess theta), so that an elastic
       // chain's tangent is bit for bit the same (the frontal count of unstable directions near a
       // bifurcation is sensitive to its rounding: bifurcation_test.cpp).
+      // The fibre law has no single plastic rotation: its moment and tangent, always.
       const Eigen::Matrix<double, 6, 6> H =
-          m.yielding ? Eigen::Matrix<double, 6, 6>(m.tangent * t.grad * t.grad.transpose() + m.force * t.hess)
+          m.yielding || c.bending.fibre()
+              ? Eigen::Matrix<double, 6, 6>(m.tangent * t.grad * t.grad.transpose() + m.force * t.hess)
                      : Eigen::Matrix<double, 6, 6>(m.tangent * (t.grad * t.grad.transpose() + (e - c.bending.plastic(j)) * t.hess));
       for (int i = 0; i < 6; ++i)
         for (int p = 0; p < 6; ++p) s.hess.emplace_back(dof(c, j, i), dof(c, j, p), hess_scale * H(i, p));
@@ -154,8 +156,9 @@ Vec relaxed_rotations(const Chain& c, const Vec& x) {
   return chi;
 }
 
-Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& q, const Vec& lambda, double s, double scale) {
-  Springs t = springs(c, q, scale);
+Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& q, const Vec& lambda, double s, double scale,
+                bool hinges) {
+  Springs t = springs(c, q, scale, hinges);
   constraint_hessian(c, lambda, scale, t.hess);
   loads.add_hessian(q.head(2 * c.n), scale * s, t.hess);
   return t;

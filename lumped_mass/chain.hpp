@@ -77,8 +77,9 @@ struct Springs {
 /// chord rotation), or x followed by the rotation chi of every Terms::hinge_rotations() entry
 /// in that order (the response's and the modes under load's unknowns: that kr is then the
 /// hinge's split springs on chi, Terms::split), with grad and Hess of q's size. Else
-/// std::logic_error.
-Springs springs(const Chain& c, const Eigen::VectorXd& q, double hess_scale);
+/// std::logic_error. `hinges` false leaves the hinge springs out (the response's plastic step
+/// adds them as a discrete gradient itself: nonlinear.cpp, ChainStepper).
+Springs springs(const Chain& c, const Eigen::VectorXd& q, double hess_scale, bool hinges = true);
 /// The rotations chi of Terms::hinge_rotations() (in its order) at which their split springs
 /// are in equilibrium with the positions x (2n values): their minimum over chi, the state the
 /// condensed kr of the statics stands for, chi = 4K m_h / (4K + kr). O(hinges).
@@ -102,7 +103,7 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const E
 /// triplets of the 2n x 2n block (springs and terms, then the links, then the load
 /// stiffness). Every analysis of the chain takes its tangent from here.
 Springs tangent(const Chain& c, const ChainLoads& loads, const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
-                double s, double scale);
+                double s, double scale, bool hinges = true);
 
 /// The hinge rotations e_j = theta_j - 2 pi / n at the positions x (c.bending's strains), rad.
 std::vector<double> bending_strains(const Chain& c, const Eigen::VectorXd& x);

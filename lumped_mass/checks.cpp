@@ -34,11 +34,12 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
     if (!std::isfinite(v)) throw std::invalid_argument("lumped: " + section + "." + key + " must be finite");
 }
 
-/// ring.plastic in the lumped models (bending.hpp): the resultant law, in the nonlinear statics
-/// only (their accepted equilibria commit the states; the response, buckling and the modes under
-/// load have no plastic state yet). `what`: the analysis, "statics" taking it. ring::InputError
-/// naming ring.plastic otherwise, and for values the law cannot take (the scene reader's rules,
-/// again for callers of the library).
+/// ring.plastic in the lumped models (bending.hpp): the resultant and the fibre law, in the
+/// chain's nonlinear statics (their accepted equilibria commit the states) and its response
+/// (its accepted steps commit them); buckling and the modes under load have no plastic state.
+/// `what`: the analysis ("statics", "response" take it). ring::InputError naming the key
+/// otherwise, and for values the law cannot take (the scene reader's rules, again for callers
+/// of the library).
 ///
 /// The frames refuse it: their bending lives in the elements, and the one bending measure an
 /// element has that the law can take alone is its mean curvature (th_{j+1} - th_j) / l
@@ -50,22 +51,42 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 void check_plastic(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
   if (!spec.plastic) return;
   const ring::Plastic& p = *spec.plastic;
-  auto refuse = [](const std::string& why) { throw ring::InputError("", "ring.plastic", "lumped: " + why); };
-  if (what != "statics")
-    refuse("the lumped " + what + " has no elastic–plastic state (only the nonlinear statics commit one, at "
-           "every accepted equilibrium); remove ring.plastic or run [static]");
+  auto refuse = [](const std::string& key, const std::string& why) {
+    throw ring::InputError("", key, "lumped: " + why);
+  };
+  if (what != "statics" && what != "response")
+    refuse(
+        "ring.plastic",
+        "the lumped " + what +
+            " has no elastic–plastic state (only the nonlinear statics and the "
+            "chain's response commit one, at every accepted equilibrium or step); remove ring.plastic or run [static] "
+            "or [response]");
   if (o.variant != ring::LumpedOptions::Variant::chain)
-    refuse("lumped.variant = \"" + ring::to_string(o.variant) + "\" cannot take it yet: a frame's bending is in its "
-           "elements, so a plastic hinge at a loaded node would form in the two elements beside it (two hinges where "
-           "the ring has one: a mechanism at first yield without hardening); use lumped.variant = \"chain\" (its "
-           "hinges take ring.plastic)");
-  if (p.law != ring::Plastic::Law::resultant)
-    refuse("the fibre law (ring.plastic.stress) needs a section's shape through the depth, which the lumped "
-           "chain's hinges and the frames' resultant bending do not have; give ring.plastic.moment (the resultant law)");
-  if (!(p.moment > 0.0) || !std::isfinite(p.moment))
-    refuse("ring.plastic.moment (= " + std::to_string(p.moment) + " N m) must be finite and > 0");
+    refuse(
+        "ring.plastic",
+        "lumped.variant = \"" + ring::to_string(o.variant) +
+            "\" cannot take it yet: a frame's "
+            "bending is in its elements, so a plastic hinge at a loaded node would form in the two elements beside it "
+            "(two hinges where the ring has one: a mechanism at first yield without hardening); use lumped.variant = "
+            "\"chain\" (its hinges take ring.plastic)");
+  if (p.law == ring::Plastic::Law::resultant) {
+    if (!(p.moment > 0.0) || !std::isfinite(p.moment))
+      refuse("ring.plastic.moment",
+             "ring.plastic.moment (= " + std::to_string(p.moment) + " N m) must be finite and > 0");
+  } else {
+    if (!(p.stress > 0.0) || !std::isfinite(p.stress))
+      refuse("ring.plastic.stress",
+             "ring.plastic.stress (= " + std::to_string(p.stress) + " Pa) must be finite and > 0");
+    // The hinge's fibres (ring/section_law.hpp) sit through the section's depth.
+    if (spec.section.shape == ring::Section::Shape::general)
+      refuse("ring.plastic.stress",
+             "the fibre law needs the section's shape to put its fibres through the depth, and "
+             "a section given by {area, inertia} has none; give ring.section as a circle or a rectangle, or use the "
+             "resultant law (ring.plastic.moment)");
+  }
   if (!(p.hardening >= 0.0 && p.hardening < 1.0))
-    refuse("ring.plastic.hardening (= " + std::to_string(p.hardening) + ") must be in [0, 1)");
+    refuse("ring.plastic.hardening",
+           "ring.plastic.hardening (= " + std::to_string(p.hardening) + ") must be in [0, 1)");
 }
 
 /// What every nonlinear analysis of the chain (and its linear buckling) needs; `what` is

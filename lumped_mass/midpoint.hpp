@@ -36,7 +36,7 @@ Eigen::SparseMatrix<double> rayleigh_damping(const ring::ResponseOptions& r, con
 /// the midpoint rule's O(h^2) balance error, either sign; a gain beyond its bound is a failed
 /// integration), as `who` in messages; the history names the solver and its unknowns (its
 /// seconds are the caller's).
-ring::TimeHistory integrate_midpoint(MidpointStepper& stepper, const ring::RingSpec& spec, int nodes,
+ring::TimeHistory integrate_midpoint(paths::Stepper& stepper, const ring::RingSpec& spec, int nodes,
                                      const ring::ResponseOptions& r, const std::string& who, int unknowns);
 
 }  // namespace lumped::detail

@@ -373,6 +373,20 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 
 namespace {
 
+/// The discrete gradient of a link's direction angle between its vectors v0 and v1: the
+/// midpoint gradient angle_gradient(v_m) (terms.hpp) scaled so that its product with v1 - v0
+/// is the angle turned, atan2(v0 x v1, v0 . v1), exactly. The midpoint gradient's own product
+/// is v0 x v1 / |v_m|^2 (= 2 tan(phi / 2) for equal lengths), so the scale is
+/// atan2(c, d) |v_m|^2 / c (c = v0 x v1, d = v0 . v1), by its series atan(t) / t = 1 - t^2 / 3
+/// (error below t^4 / 5 < 2e-17) for |t| = |c / d| < 1e-4 (d > 0). O(1).
+Vec2 angle_discrete_gradient(const Vec2& v0, const Vec2& v1) {
+  const Vec2 vm = 0.5 * (v0 + v1);
+  const double c = v0.x() * v1.y() - v0.y() * v1.x(), d = v0.dot(v1);
+  const double scale = d > 0.0 && std::abs(c) < 1e-4 * d ? (1.0 - (c / d) * (c / d) / 3.0) * vm.squaredNorm() / d
+                                                         : std::atan2(c, d) * vm.squaredNorm() / c;
+  return scale * angle_gradient(vm);
+}
+
 /// The chain's midpoint step (midpoint.hpp): a Newton solve on the constrained midpoint
 /// equations, the loads' force, the damping and the springs at the step's midpoint. The
 /// unknowns q = (x, chi): the hinge positions, then the rotation chi of every hinge with a point
@@ -380,12 +394,48 @@ namespace {
 /// whose springs are the hinge's split springs (chain.hpp, springs(); the kr of such a hinge
 /// acts on chi, not condensed). The mass on q is constant (the midpoint masses, the point
 /// masses, J on chi). The hinge dampers act on the rate of each turning angle.
+///
+/// ring.plastic: the hinges' states are internal variables. Every Newton iterate evaluates the
+/// law from the states committed at the last accepted step (bending.hpp: the return map), and
+/// commit() commits them at an accepted step only (PlasticSteps calls it after the driver's
+/// accept); a rejected or halved attempt leaves nothing behind. The hinge moment of the step is
+/// then not the law at the midpoint but a discrete gradient (Gonzalez 1996), in two layers:
+///  - on the rotation: M_d = (Psi(e_1) - Psi(e_0)) / (e_1 - e_0), Psi the law's incremental
+///    potential from the committed state (ring/plastic.hpp, Point::potential), e_0 the
+///    committed rotation (the step's start) and e_1 the trial one; and
+///  - on the positions: the turning angle's discrete gradient D theta (the two links'
+///    angle_discrete_gradient), whose product with q_1 - q_0 is theta(q_1) - theta(q_0) exactly.
+/// The hinge then does the work M_d D theta . (q_1 - q_0) = Psi(e_1) - Psi(e_0) over the step,
+/// exactly. What that means with dissipation: Psi is not a stored energy but the step's
+/// incremental potential, and Psi(e_1) - Psi(e_0) is the stored energy's change plus the
+/// plastic work that the commit at e_1 counts (the return map is backward Euler: exact for the
+/// piecewise linear law); so the discrete gradient spends exactly on the hinges what they store
+/// and dissipate, and kinetic + stored + dissipated - work is exact to the Newton tolerance
+/// (with the midpoint rule's exact kinetic energy, the links' quadratic constraints, linear
+/// support rows and dead point loads; a foundation, a follower pressure and the hinge dampers
+/// keep the midpoint rule's O(h^2)). Elastic, the discrete gradient is not the midpoint
+/// rule's k e(q_m) grad theta(q_m): the elastic chain keeps that (its responses stay what they
+/// were), so Mp -> infinity differs from it by the two second-order rules' O(h^2), not by
+/// round-off. Newton's matrix for the hinge is dM_d/de_1 D theta grad theta(q_1)^T +
+/// M_d Hess theta(q_m) / 2 (the scale of D theta's own derivative, O(phi) for a link turning
+/// by phi in the step, left out: Newton stays fast for the small turns of a step).
 class ChainStepper : public detail::MidpointStepper {
  public:
   ChainStepper(const Chain& c, const ring::ResponseOptions& r, double radius, const ChainLoads& loads, Sparse M,
                Sparse C, std::vector<int> rec, Vec rest)
-      : MidpointStepper(r, std::move(M), std::move(C), std::move(rest), c.rows()), c_(c), radius_(radius), L_(loads),
-        rec_(std::move(rec)), ch_(r.hinge_damping), rhs_(q_.size() + c.rows()), d_(q_.size() + c.rows()) {}
+      : MidpointStepper(r, std::move(M), std::move(C), std::move(rest), c.rows()),
+        own_(c.bending.plastic() ? std::optional<Chain>(c) : std::nullopt), c_(own_ ? *own_ : c), radius_(radius),
+        L_(loads), rec_(std::move(rec)), ch_(r.hinge_damping), rhs_(q_.size() + c.rows()), d_(q_.size() + c.rows()) {}
+  ChainStepper(const ChainStepper&) = delete;  // c_ may refer to own_
+  ChainStepper& operator=(const ChainStepper&) = delete;
+
+  /// ring.plastic: commits the hinges' states at the accepted state (after the driver's
+  /// accept, which made the step's end the state). O(n states).
+  void commit() {
+    if (own_) own_->bending.commit(bending_strains(c_, q_.head(2 * c_.n)));
+  }
+  /// The plastic work of the committed steps, J.
+  double plastic_work() const { return c_.bending.dissipated(); }
 
   void shape(std::vector<double>& x, std::vector<double>& y) const override {
     paths::interleaved_shape(q_, c_.n, x, y);
@@ -414,7 +464,9 @@ class ChainStepper : public detail::MidpointStepper {
     scale_ = 2.0 / (hh * hh) * c_.m;  // balances the constraint rows
     const Vec qm = 0.5 * (q_ + q1_), vm = (q1_ - q_) / hh;
     const Vec xm = qm.head(N), x1 = q1_.head(N);
-    const Springs sp = tangent(c_, L_, qm, mu1_ * scale_, factor, 0.5);
+    const bool plastic = c_.bending.plastic();
+    Springs sp = tangent(c_, L_, qm, mu1_ * scale_, factor, 0.5, !plastic);
+    if (plastic) add_discrete_hinges(sp);
     Triplets trip = sp.hess;
     jacobian(c_, xm, Q, scale_, true, trip);
     jacobian(c_, x1, Q, scale_, false, trip);
@@ -451,6 +503,39 @@ class ChainStepper : public detail::MidpointStepper {
     if (lu.info() != Eigen::Success || !rhs_.allFinite()) return false;
     d_ = lu.solve(rhs_);
     return true;
+  }
+  /// ring.plastic: the hinges' discrete gradient of the step from q_ to q1_ (class comment)
+  /// added to sp's gradient, and its derivative on q1_ to sp's triplets. O(n states).
+  void add_discrete_hinges(Springs& sp) const {
+    const Vec qm = 0.5 * (q_ + q1_);
+    for (int j = 0; j < c_.n; ++j) {
+      const Turn t0 = turn(c_, q_, j, false), t1 = turn(c_, q1_, j, false), tm = turn(c_, qm, j, true);
+      const double e0 = t0.theta - c_.theta0, e1 = t1.theta - c_.theta0, de = e1 - e0;
+      const ring::BilinearLaw::Point p1 = c_.bending.at(j, e1);
+      double M = 0.0, dM = 0.0;
+      // Below a relative 1e-8 the difference quotient would lose ~eps / 1e-8 of M to the
+      // potentials' cancellation; there the law at the mean rotation (its error against the
+      // quotient is the law's curvature times de^2, below eps of Psi).
+      if (std::abs(de) > 1e-8 * (std::abs(e0) + std::abs(e1))) {
+        M = (p1.potential - c_.bending.at(j, e0).potential) / de;
+        dM = (p1.force - M) / de;
+      } else {
+        const ring::BilinearLaw::Point pm = c_.bending.at(j, 0.5 * (e0 + e1));
+        M = pm.force;
+        dM = 0.5 * pm.tangent;
+      }
+      const Vec2 a0 = c_.at(q_, j) - c_.at(q_, j - 1), a1 = c_.at(q1_, j) - c_.at(q1_, j - 1);
+      const Vec2 b0 = c_.at(q_, j + 1) - c_.at(q_, j), b1 = c_.at(q1_, j + 1) - c_.at(q1_, j);
+      const Vec2 ga = angle_discrete_gradient(a0, a1), gb = angle_discrete_gradient(b0, b1);
+      Eigen::Matrix<double, 6, 1> D;
+      D << ga, -ga - gb, gb;  // as turn()'s gradient: theta = angle(b) - angle(a)
+      for (int i = 0; i < 6; ++i) {
+        sp.grad[dof(c_, j, i)] += M * D[i];
+        for (int p = 0; p < 6; ++p)
+          sp.hess.emplace_back(dof(c_, j, i), dof(c_, j, p), dM * D[i] * t1.grad[p] + 0.5 * M * tm.hess(i, p));
+      }
+      sp.energy += p1.potential;
+    }
   }
   bool solve(paths::Correction& k) override {
     const int N = 2 * c_.n, Q = static_cast<int>(q_.size());
@@ -494,7 +579,8 @@ class ChainStepper : public detail::MidpointStepper {
     return d;
   }
 
-  const Chain& c_;
+  std::optional<Chain> own_;  ///< ring.plastic: a copy, whose hinge states are this response's
+  const Chain& c_;            ///< own_, or the caller's elastic chain
   const double radius_;
   const ChainLoads& L_;
   const std::vector<int> rec_;
@@ -504,6 +590,34 @@ class ChainStepper : public detail::MidpointStepper {
   /// among the step's matrices they left glibc's heap 8 MB higher at n = 10^4 (measured by
   /// ru_maxrss; the live memory was the same).
   Vec rhs_, d_;
+};
+
+/// ring.plastic: the chain's steps (ChainStepper) with the hinges' states committed at every
+/// accepted step (after the midpoint rule's accept, which the driver calls) and their plastic
+/// work reported as paths::Sample::plastic (the driver records it as the history's
+/// `dissipated` and counts it in energy_error and the energy guard). A rejected attempt
+/// (paths::Stepper::reject) has nothing to discard: the Newton evaluates the law from the
+/// committed states only.
+class PlasticSteps : public paths::Stepper {
+ public:
+  explicit PlasticSteps(ChainStepper& s) : s_(s) {}
+  paths::StepOutcome try_step(double t, double h) override { return s_.try_step(t, h); }
+  void accept(double t) override {
+    s_.accept(t);
+    s_.commit();
+  }
+  void reject() override { s_.reject(); }
+  bool finite() const override { return s_.finite(); }
+  paths::Sample sample() const override {
+    paths::Sample out = s_.sample();
+    out.plastic = s_.plastic_work();
+    return out;
+  }
+  void shape(std::vector<double>& x, std::vector<double>& y) const override { s_.shape(x, y); }
+  std::optional<std::string> contact() const override { return s_.contact(); }
+
+ private:
+  ChainStepper& s_;
 };
 
 }  // namespace
@@ -527,16 +641,22 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   const Sparse Mq = mass_matrix(c, HingeRotations::unknowns);
   // Rayleigh damping C = a M + b K0, M the mass on q, K0 the Hessian of the springs and terms
   // at rest (no link forces there), the hinge rotations' split springs included.
-  ChainStepper stepper(c, r, spec.radius, loads, Mq, detail::rayleigh_damping(r, Mq, [&] { return springs(c, rest, 1.0).hess; }), rec,
-                       rest);
-  ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, c.n, r, "lumped response", Q + R);
+  ChainStepper stepper(c, r, spec.radius, loads, Mq,
+                       detail::rayleigh_damping(r, Mq, [&] { return springs(c, rest, 1.0).hess; }), rec, rest);
+  if (!c.bending.plastic()) {
+    ring::TimeHistory h = detail::integrate_midpoint(stepper, spec, c.n, r, "lumped response", Q + R);
+    h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return h;
+  }
+  PlasticSteps plastic(stepper);
+  ring::TimeHistory h = detail::integrate_midpoint(plastic, spec, c.n, r, "lumped response", Q + R);
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return h;
 }
 
 namespace detail {
 
-ring::TimeHistory integrate_midpoint(MidpointStepper& stepper, const ring::RingSpec& spec, int nodes,
+ring::TimeHistory integrate_midpoint(paths::Stepper& stepper, const ring::RingSpec& spec, int nodes,
                                      const ring::ResponseOptions& r, const std::string& who, int unknowns) {
   ring::EnergyGuard guard(spec, nodes, ring::load_scale(spec, r.loads));
   paths::Grid grid;

@@ -46,7 +46,8 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
     th.kinetic.push_back(s.kinetic);
     th.strain.push_back(s.strain);
     th.work.push_back(s.work);
-    th.energy_error.push_back(s.kinetic + s.strain + s.dissipated - s.work);
+    th.energy_error.push_back(s.kinetic + s.strain + s.dissipated + s.plastic.value_or(0.0) - s.work);
+    if (s.plastic) th.dissipated.push_back(*s.plastic);
     th.constraint_residual.push_back(s.constraint_residual);
     th.newton_iterations.push_back(iterations);
     if (std::find(snaps.begin(), snaps.end(), k) != snaps.end()) {
@@ -130,7 +131,7 @@ ring::TimeHistory integrate(Stepper& stepper, const Grid& grid, const std::vecto
     t = t_target;
     const Sample s = record(t, iterations, k);
     if (grid.guard) {
-      const auto v = grid.guard->check(s.kinetic, s.strain, s.work);
+      const auto v = grid.guard->check(s.kinetic, s.strain + s.plastic.value_or(0.0), s.work);
       if (v.gained) fail(Reason::energy_growth, ring::describe(v, t) + grid.energy_hint);
     }
     if (grid.progress && (k % stride == 0 || k == steps)) report(double(k) / double(steps));

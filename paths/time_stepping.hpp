@@ -54,6 +54,10 @@ struct Sample {
   double strain = 0.0;             ///< J: the elastic energy of the model's springs or beam
   double work = 0.0;               ///< J: work of the external loads since t = 0
   double dissipated = 0.0;         ///< J: energy removed by damping since t = 0
+  /// J: the plastic work since t = 0 (ring.plastic; `strain` is then the elastic energy
+  /// stored); empty for an elastic model. Recorded as TimeHistory::dissipated, counted in
+  /// energy_error, and held by the energy guard as energy the model took in.
+  std::optional<double> plastic;
   double constraint_residual = 0.0;///< largest constraint violation, m (0 where there is none)
 };
 

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "compare/pairs.hpp"
 #include "ring/errors.hpp"
 #include "ring/scene.hpp"
 
@@ -151,6 +152,16 @@ Modes to_python(const ring::ModalResult& m) {
   o.max_residual = m.max_residual;
   o.residual_norm = m.residual_norm;
   o.error_estimate = m.error_estimate;
+  for (const auto& p : cmp::split_pairs(m)) {
+    py::dict d;
+    d["wave"] = p.wave;
+    d["modes"] = py::make_tuple(p.lower, p.upper);
+    d["omega"] = py::make_tuple(p.omega_lower, p.omega_upper);
+    d["split"] = p.split();
+    d["relative_split"] = p.relative();
+    d["orientation_deg"] = p.orientation;
+    o.pairs.append(d);
+  }
   return o;
 }
 
@@ -224,9 +235,13 @@ Response to_python(const ring::TimeHistory& h) {
     c.order.push_back("uy_" + d);
     c.real.push_back({"uy_" + d, &h.uy[p]});
   }
-  for (const auto& [name, col] :
-       {std::pair{"kinetic", &h.kinetic}, std::pair{"strain", &h.strain}, std::pair{"work", &h.work},
-        std::pair{"energy_error", &h.energy_error}, std::pair{"constraint_residual", &h.constraint_residual}}) {
+  // The CSV's energy columns (compare/response.cpp), a plastic ring's plastic work among them.
+  std::vector<std::pair<const char*, const std::vector<double>*>> energies{{"kinetic", &h.kinetic}, {"strain", &h.strain}};
+  if (!h.dissipated.empty()) energies.emplace_back("dissipated", &h.dissipated);
+  for (const auto& e : std::vector<std::pair<const char*, const std::vector<double>*>>{
+           {"work", &h.work}, {"energy_error", &h.energy_error}, {"constraint_residual", &h.constraint_residual}})
+    energies.push_back(e);
+  for (const auto& [name, col] : energies) {
     c.order.push_back(name);
     c.real.push_back({name, col});
   }

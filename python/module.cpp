@@ -327,6 +327,11 @@ PYBIND11_MODULE(ringvib, m) {
                     "modes, in the norm residual_norm names (docs/commands.md, `modes --json`); None where the solver\n"
                     "reports none (calculix).")
       .def_readonly("residual_norm", &Modes::residual_norm)
+      .def_readonly("pairs", &Modes::pairs,
+                    "The pairs of modes the scene's terms split (masses, springs, supports): a list of dicts\n"
+                    "{wave, modes (lower, upper; 1-based), omega (rad/s), split (rad/s), relative_split (of the\n"
+                    "pair's mean), orientation_deg (the lower mode's radial antinode, in [0, 180/wave))}, as\n"
+                    "`modes --json`'s \"pairs\"; empty for a perfect ring.")
       .def_readonly("error_estimate", &Modes::error_estimate,
                     "Estimated remaining relative error of a converged reference (0: not estimated).")
       .def_property_readonly(
@@ -362,8 +367,9 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("solver", &Response::solver)
       .def_readonly("history", &Response::history,
                     "One row per accepted step (t = 0 first): structured ndarray with the CSV's columns t (s),\n"
-                    "ux_<deg>, uy_<deg> per recorded point (m, ring-centred frame), kinetic, strain, work,\n"
-                    "energy_error (J), constraint_residual, newton_iterations (int).")
+                    "ux_<deg>, uy_<deg> per recorded point (m, ring-centred frame), kinetic, strain, (a plastic\n"
+                    "ring: dissipated, the plastic work), work, energy_error (J), constraint_residual,\n"
+                    "newton_iterations (int).")
       .def_readonly("record_angles", &Response::record_angles, "The recorded points, degrees: ndarray (points,).")
       .def_readonly("t", &Response::t, "Time, s: ndarray (steps,).")
       .def_readonly("ux", &Response::ux, "Displacement x, m: ndarray (points, steps).")

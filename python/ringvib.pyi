@@ -1,7 +1,7 @@
 # Type stubs of the ringvib module (python/module.cpp), for editors and type checkers.
 # tests/python/test_stubs.py holds them to the module: every public name and attribute here
 # exists there and the other way round. Units are in each docstring (help(ringvib.modes)).
-from typing import Any, Callable, Mapping, Optional
+from typing import Any, Callable, Dict, List, Mapping, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -66,6 +66,8 @@ class Modes:
     def max_residual(self) -> Optional[float]: ...
     @property
     def residual_norm(self) -> str: ...
+    @property
+    def pairs(self) -> List[Dict[str, Any]]: ...
 
 class Static:
     """One solver's nonlinear static equilibrium (`ringvib static --json`)."""

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "compare/files.hpp"
 #include "support/paper.hpp"
 
 using ringtest::exists;
@@ -257,6 +258,37 @@ TEST(Files, AnInterruptedRunPublishesNothing) {
     }
   }
   EXPECT_GE(interrupted, 5) << "the signal should mostly arrive during the run";
+}
+
+// A signal that arrives after the results were published (the run has only its exit left)
+// ends the run with its own code, the results in place, and a line that says so; the same
+// signal just before publishing ends it by the signal with nothing published (above).
+TEST(Files, ASignalAfterPublishingLeavesTheResultsAndTheExitCode) {
+  const std::string out = ringtest::temp_dir() + "/published";
+  int pipe_fd[2];
+  ASSERT_EQ(pipe(pipe_fd), 0);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(pipe_fd[1], STDERR_FILENO);
+    cmp::install_signal_cleanup();
+    cmp::Outputs files;
+    files.folder(out, "--out", {"report"});
+    files.open();
+    std::ofstream(files.stage() + "/report.md") << "done\n";
+    files.publish();
+    raise(SIGTERM);
+    _exit(7);  // the command's own code (a gate's, say)
+  }
+  close(pipe_fd[1]);
+  std::string err;
+  char buf[256];
+  for (ssize_t n; (n = ::read(pipe_fd[0], buf, sizeof buf)) > 0;) err.append(buf, static_cast<std::size_t>(n));
+  close(pipe_fd[0]);
+  const int status = ringtest::wait_bounded(pid, 60.0);
+  ASSERT_TRUE(WIFEXITED(status)) << "died of signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 7);
+  EXPECT_EQ(read(out + "/report.md"), "done\n");
+  EXPECT_NE(err.find("interrupted after the results were published"), std::string::npos) << err;
 }
 
 // Found only after computing: a solver's refusal came after other solvers had run (and in

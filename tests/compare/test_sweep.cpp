@@ -423,4 +423,49 @@ TEST(SweepMpi, ASignalPublishesNothingAndEndsWith128PlusSignalWhenItReachesTheRa
   }
 }
 
+// `sweep --ranks 2` starts mpirun itself, so that a signal to ringvib (Ctrl-C in its
+// terminal, kill) ends the sweep with 128 + signal like a serial run; a signal to mpirun
+// itself ends Open MPI's mpirun with 1 whatever the ranks do (the test above).
+TEST(SweepMpi, TheRanksLauncherEndsWith128PlusSignalAndPublishesNothing) {
+  if (mpirun_prefix().empty()) GTEST_SKIP() << "mpirun is not installed";
+  const auto probe = ringvib("sweep " + source("scenes/paper1990-static.toml") + " --vary 'multibody.n=[40]' --ranks 2",
+                             "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1");
+  if (probe.err.find("built without MPI") != std::string::npos) GTEST_SKIP() << "ringvib is built without MPI";
+  ASSERT_EQ(probe.code, 0) << probe.err;
+  EXPECT_NE(probe.err.find("on 2 MPI ranks"), std::string::npos) << probe.err;
+  const std::string base = ringtest::temp_dir();
+  std::string list;
+  for (int i = 0; i < 200; ++i) list += (i ? ", " : "") + std::to_string(400 + 4 * i);
+  int run = 0;
+  for (const int sig : {SIGINT, SIGTERM}) {
+    const std::string out = base + "/run" + std::to_string(run++);
+    const pid_t pid = ringtest::spawn({ringtest::ringvib_path(), "sweep", source("scenes/paper1990-static.toml"), "--vary",
+                                       "multibody.n=[" + list + "]", "--out", out, "-q", "--ranks", "2"},
+                                      {{"OMPI_ALLOW_RUN_AS_ROOT", "1"},
+                                       {"OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1"},
+                                       {"OMPI_MCA_rmaps_base_oversubscribe", "1"}});
+    // The ranks are mpirun's children, mpirun the launcher's child.
+    bool running = false;
+    const auto start = std::chrono::steady_clock::now();
+    while (!running && std::chrono::steady_clock::now() - start < std::chrono::seconds(120)) {
+      for (const pid_t mpirun : children_of(pid)) running |= cases_running(mpirun);
+      int st = 0;
+      if (!running && waitpid(pid, &st, WNOHANG) == pid) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_TRUE(running) << "the sweep never started its cases";
+    kill(pid, sig);
+    const int status = ringtest::wait_bounded(pid, 60.0);
+    ASSERT_NE(status, -1) << "the launcher did not end within 60 s of the signal (killed)";
+    ASSERT_TRUE(WIFEXITED(status)) << status;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << "signal " << sig << " to the launcher";
+    EXPECT_FALSE(exists(out)) << "signal " << sig << ": the folder the run made is left";
+  }
+  // Without mpirun on PATH, --ranks is refused up front, naming the option.
+  const auto none = ringvib("sweep " + source("scenes/paper1990-static.toml") + " --vary 'multibody.n=[40]' --ranks 2",
+                            "PATH=/nonexistent");
+  EXPECT_EQ(none.code, 2) << none.err;
+  EXPECT_NE(none.err.find("--ranks"), std::string::npos) << none.err;
+}
+
 }  // namespace

@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "lumped_mass/buckling.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "ring/analysis.hpp"
 #include "ring/errors.hpp"
@@ -347,29 +348,43 @@ TEST(FrameEnergy, WorkIsStoredToTheRulesOrder) {
 }
 
 // What the lumped models refuse with ring.plastic, by key (ring::InputError, exit 2): the
-// response, the frames' statics, the fibre law.
+// frames' statics and response, the chain's buckling (no plastic state there), the fibre law
+// on a section given by {area, inertia} (no shape for the fibres). The chain's response and
+// its fibre law are taken (plastic_response_test.cpp, fibre_test.cpp).
 TEST(PlasticRefusals, NameTheKey) {
   ring::RingSpec spec = plastic_ring(kMp);
-  auto refused = [](const std::function<void()>& run, const std::string& what) {
+  auto refused = [](const std::function<void()>& run, const std::string& what, const std::string& key) {
     try {
       run();
       ADD_FAILURE() << what << " was not refused";
     } catch (const ring::InputError& e) {
-      EXPECT_EQ(e.key(), "ring.plastic") << e.what();
+      EXPECT_EQ(e.key(), key) << e.what();
     }
   };
   ring::ResponseOptions r;
   r.loads.points = {{90.0, {0.0, -1.0}}};
+  r.integrator = ring::ResponseOptions::Integrator::midpoint;
   r.dt = 1e-3;
   r.t_end = 1e-2;
-  refused([&] { lumped::respond(spec, lumptest::options(16, kChain), r); }, "a plastic response");
+  for (Variant v : {lumptest::kConsistent, kTimoshenko})
+    refused([&] { lumped::respond(spec, lumptest::options(16, v), r); }, std::string("a plastic response, ") + name(v),
+            "ring.plastic");
   ring::StaticOptions st;
   st.loads.points = {{90.0, {0.0, -1.0}}, {270.0, {0.0, 1.0}}};
   for (Variant v : {lumptest::kFrame, lumptest::kConsistent, kTimoshenko})
-    refused([&] { lumped::solve_static(spec, lumptest::options(16, v), st); }, name(v));
+    refused([&] { lumped::solve_static(spec, lumptest::options(16, v), st); }, name(v), "ring.plastic");
+  ring::BucklingOptions b;
+  b.loads.points = st.loads.points;
+  refused([&] { lumped::compute_buckling(spec, lumptest::options(16, kChain), b); }, "plastic buckling",
+          "ring.plastic");
   spec.plastic->law = ring::Plastic::Law::fibre;
   spec.plastic->stress = 2.5e8;
-  refused([&] { lumped::solve_static(spec, lumptest::options(16, kChain), st); }, "the fibre law");
+  const double A = spec.A(), I = spec.I();
+  spec.section.shape = ring::Section::Shape::general;
+  spec.section.area_ = A;
+  spec.section.inertia_ = I;
+  refused([&] { lumped::solve_static(spec, lumptest::options(16, kChain), st); }, "the fibre law without a shape",
+          "ring.plastic.stress");
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ MODES_CASES = [
     ("paper1990.toml", "fem", 10, {"fem.elements": 20, "fem.degree": 4}, {"fem.elements": "20", "fem.degree": "4"}),
     ("free-ring.toml", "multibody", None, {"ring.section": {"shape": "circle", "diameter": 0.1}, "ring.E": 2.0e11},
      {"ring.section": '{ shape = "circle", diameter = 0.1 }', "ring.E": "2e11"}),
+    ("imperfect-ring.toml", "fem", None, {"fem.elements": 60}, {"fem.elements": "60"}),  # its split pairs
 ]
 
 
@@ -43,6 +44,8 @@ def modes_matches_json(m, j):
     assert m.residual_norm == j["residual_norm"]
     assert m.error_estimate == j.get("error_estimate", 0.0)
     assert math.isfinite(m.seconds) and m.seconds >= 0 and "seconds" in j
+    pairs = [{**p, "modes": list(p["modes"]), "omega": list(p["omega"])} for p in m.pairs]
+    assert pairs == j.get("pairs", [])  # the split pairs, exact
 
 
 @pytest.mark.parametrize("scene,solver,count,values,texts", MODES_CASES,
