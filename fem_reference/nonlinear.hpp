@@ -190,8 +190,10 @@
 // nothing behind (every evaluation starts from the committed states). The record's
 // `dissipated` is the plastic work from rest, `strain` V at the committed states (the elastic
 // energy stored) and energy_error = T + V + D - W with D the damping's dissipation plus the
-// plastic work. Linear buckling and the modes under load take no plastic law
-// (check_buckling, check_preloaded_modes refuse ring.plastic).
+// plastic work. A plastic run halves a step whose Newton fails, down to dt / 64 (the elastic
+// beam takes no sub-steps; nonlinear.cpp, respond_once, says what was measured). Linear
+// buckling and the modes under load take no plastic law (check_buckling,
+// check_preloaded_modes refuse ring.plastic).
 // Measured (tests/fem_reference/fem_plastic_test.cpp, fem_plastic_response_test.cpp): see
 // docs/measured.md, "fem_reference: the pinched plastic ring", and the tests' comments.
 //
