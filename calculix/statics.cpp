@@ -35,10 +35,6 @@ int newton_iterations(const std::string& sta) {
 }  // namespace
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
-  if (spec.plastic && spec.plastic->law == ring::Plastic::Law::fibre)
-    throw ring::InputError("", "ring.plastic.stress",
-                           "the calculix static deck does not write the fibre law's *PLASTIC material yet; leave "
-                           "calculix out of a plastic scene");
   const Deck d = static_deck(spec, options, st, "check");  // the loads on nodes, what ccx cannot load; O(elements)
   for (double a : st.record)
     if (node_of(d, a) < 0)
