@@ -67,6 +67,13 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
     r.node_x.push_back(spec.radius * std::cos(t) + dat.ux[k]);
     r.node_y.push_back(spec.radius * std::sin(t) + dat.uy[k]);
   }
+  if (spec.plastic) {
+    // ccx prints no plastic work by itself (its ENER is the whole internal energy, elastic and
+    // plastic alike) and has no plastic curvature (its bricks have plastic strains at the
+    // integration points): not read, as the response's energies.
+    r.dissipated = std::nan("");
+    r.plastic_curvature = std::nan("");
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
