@@ -2,22 +2,21 @@
 // von Mises plasticity (*PLASTIC) on the bricks of the expanded beam, against the pinched
 // ring with the fibre law at small displacement (tests/support/fibre_ring.hpp).
 //
-// The expansion is not the fibre model. ccx integrates the section at its bricks' Gauss
-// points, one brick through the depth: B32R (C3D20R) and B31 (C3D8I) 2 points at +-c/sqrt(3),
-// B32 (C3D20) 3 points at 0 and +-c sqrt(3/5) (weights 5/9 each for the outer ones, 8/9 for
-// the centre). Elastic bending integrates exactly (the stress is linear in the depth), but
-// under perfect plasticity the section law becomes bilinear: elastic until the outer Gauss
-// points yield, then flat at
-//   B32R, B31:  M* = 2 (b c) sigma_y c / sqrt(3)         = (2 / sqrt(3)) Mp = 1.1547 Mp,
-//   B32:        M* = 2 (5/9) (b c) sigma_y c sqrt(3/5)   = (10/9) sqrt(3/5) Mp = 0.8607 Mp
-// (rectangle b x 2c, Mp = sigma_y b c^2; the fibre law rises from My = 2/3 Mp to Mp
-// gradually). So the pinched ring collapses at 1.155 P_c (B32R, B31) or 0.861 P_c (B32),
-// not P_c = 4 Mp / R. The oracle here is therefore the pinched ring with the expansion's
-// own Gauss-point section law (FibrePinchedRing with that law); the remaining difference,
-// shear in the yield criterion (von Mises sqrt(sigma^2 + 3 tau^2)), the 3-D stress state and
-// the beam discretization, is measured and bounded. The difference between the Gauss-point
-// law and the true fibre law is the expansion's integration error, measured here and printed
-// (calculix/README.md, "Plasticity").
+// The expansion is not the fibre model. ccx integrates the section at its bricks' points,
+// one brick through the depth (positions over the half-depth c, weights over c):
+//   B31  -> C3D8I, 2 x 2 x 2 Gauss: +-1/sqrt(3) (1, 1);
+//   B32R -> C3D20RB (ccx's gauss3d13, 2 x 5 x 5 = 50 points): 0, +-1/sqrt(3), +-sqrt(6/7)
+//           (28/45, 27/55, 98/495);
+//   B32  -> C3D20, 3 x 3 x 3 Gauss: 0, +-sqrt(3/5) (8/9, 5/9).
+// Elastic bending integrates exactly (the stress is linear in the depth), but under perfect
+// plasticity each law is piecewise linear, elastic until the outer points yield and flat once
+// all off-axis points have, at sum w |y| sigma_y b c = (Mp = sigma_y b c^2 times)
+//   B31: 2/sqrt(3) = 1.155,   B32R: 0.933,   B32: (10/9) sqrt(3/5) = 0.861,
+// where the fibre law rises gradually from My = 2/3 Mp to Mp. FibrePinchedRing with these
+// laws (GaussLaw below) is the oracle of a column that followed its own section law; what is
+// left over is the 3-D stress state (the plastic flow constrained in one brick, shear in the
+// von Mises criterion) and the beam discretization, measured below and bounded. B32 locks
+// (elastic closing 1.9 % short at 80 elements) and is not held here.
 //
 // The ring: R = 10 m, E = 210 GPa, rectangle 0.1 x 0.12 m (as given), pinned at 0 deg, a
 // roller at 180 deg, pinched at 90 and 270 deg; sigma_y so that Mp R / EI = 1e-4, so that
@@ -123,7 +122,7 @@ struct Measure {
   int elements;
 };
 
-TEST(CalculixPlastic, PrintOracles) {
+TEST(CalculixPlastic, DISABLED_PrintOracles) {
   const ring::RingSpec spec = plastic_ring();
   const ringtest::FibrePinchedRing fibre(spec);
   for (Element e : {Element::b32r, Element::b31, Element::b32}) {
@@ -136,7 +135,7 @@ TEST(CalculixPlastic, PrintOracles) {
   }
 }
 
-TEST(CalculixPlastic, MeasureCollapse) {
+TEST(CalculixPlastic, DISABLED_MeasureCollapse) {
   REQUIRE_CCX();
   const ring::RingSpec spec = plastic_ring();
   const ringtest::FibrePinchedRing fibre(spec);
@@ -152,7 +151,7 @@ TEST(CalculixPlastic, MeasureCollapse) {
   }
 }
 
-TEST(CalculixPlastic, MeasureExpansionAgainstFibreModel) {
+TEST(CalculixPlastic, DISABLED_MeasureExpansionAgainstFibreModel) {
   REQUIRE_CCX();
   const ring::RingSpec spec = plastic_ring();
   const ringtest::FibrePinchedRing fibre(spec);
@@ -176,6 +175,69 @@ TEST(CalculixPlastic, MeasureExpansionAgainstFibreModel) {
                   ring::to_string(m.element).c_str(), m.elements, f, d, df, d / df - 1, dg, d / dg - 1, dg / df - 1);
       std::fflush(stdout);
     }
+  }
+}
+
+// Below first yield (0.45 Pc = 0.86 P_y) the column is elastic: the default B32R at 80
+// elements against the oracle's elastic closing (pi/4 - 2/pi) P R^3 / EI. Measured: +1.4e-4
+// (80 elements), +1.9e-4 (160; -5.7e-4 at 40): the converged bricks' shear and thick-curved-beam
+// terms, of order (h/R)^2 = 1.4e-4, as in the elastic statics. Bound: 5e-4.
+TEST(CalculixPlastic, ElasticBelowFirstYield) {
+  REQUIRE_CCX();
+  const ring::RingSpec spec = plastic_ring();
+  const ringtest::FibrePinchedRing fibre(spec);
+  const double P = 0.45 * fibre.collapse();
+  ASSERT_LT(P, fibre.first_yield());
+  const double d = pinch(spec, Element::b32r, 80, P);
+  std::printf("[ calculix ] B32R 80 at 0.45 Pc: closing %.6e, oracle %.6e (%+.3e)\n", d, fibre.closing(P),
+              d / fibre.closing(P) - 1);
+  EXPECT_NEAR(d / fibre.closing(P), 1.0, 5e-4);
+}
+
+// B31 expands into C3D8I bricks, 2 x 2 x 2 Gauss points: through the depth the section is
+// two points at +-c/sqrt(3) (weight c each), whose moment is elastic to (2/sqrt(3)) Mp and flat
+// there (h = 0), instead of the fibre law's rise from 2/3 Mp to Mp. The column follows that
+// two-point law: measured at 160 elements within 1.06e-3 of the pinched ring with it at 0.6,
+// 0.75, 0.9 Pc, which is B31's elastic discretization error at 160 elements (1.07e-3 at
+// 0.45 Pc; 5.3e-3 at 80: order 2). Bound 2e-3. Against the fibre law the difference is the
+// two-point law's (the oracle's quadrature of both laws: -0.24 %, -6.1 %, -36.7 %): the
+// column is held to the fibre oracle within that difference plus the 2e-3.
+TEST(CalculixPlastic, B31FollowsItsTwoPointSectionLaw) {
+  REQUIRE_CCX();
+  const ring::RingSpec spec = plastic_ring();
+  const ringtest::FibrePinchedRing fibre(spec);
+  const GaussLaw law(spec, Element::b31);
+  const ringtest::FibrePinchedRing points(spec, law, law.kinks());
+  for (double f : {0.6, 0.75, 0.9}) {
+    const double P = f * fibre.collapse();
+    const double d = pinch(spec, Element::b31, 160, P), dp = points.closing(P), df = fibre.closing(P);
+    std::printf("[ calculix ] B31 160 at %.2f Pc: closing %.6e, two-point law %.6e (%+.3e), fibre %.6e (%+.3e)\n", f,
+                d, dp, d / dp - 1, df, d / df - 1);
+    EXPECT_NEAR(d / dp, 1.0, 2e-3) << f << " Pc";
+    EXPECT_LE(std::abs(d / df - 1.0), std::abs(dp / df - 1.0) + 2e-3) << f << " Pc";
+  }
+}
+
+// B32R (the default) expands into C3D20RB bricks with 2 x 5 x 5 points: through the depth
+// 0, +-c/sqrt(3), +-c sqrt(6/7) (weights 28/45, 27/55, 98/495 of c; ccx's gauss3d13), elastic
+// to 1.08 My, fully plastic at 0.933 Mp. In one brick through the depth the plastic flow is
+// constrained (the section cannot contract where it yields: a quadratic displacement across
+// it), so the yielded points carry transverse stresses of the hoop stress's sign and a hoop
+// stress above sigma_y (measured at 0.75 Pc next to the load: 1.096 sigma_y at the outer
+// points). Measured at 80 elements against the fibre oracle: -7.7e-5 (0.6 Pc), -3.13e-2
+// (0.75), +4.15e-2 (0.9), while the five-point law alone gives +4e-4, +2.6e-2, +22.8e-2: the
+// constraint stiffens what the law softens. (160 elements: -3.2e-4, -2.9e-2, +10.7e-2: near its
+// collapse the column still moves with the elements.) Bounds: 1e-3 at 0.6 Pc (just past first
+// yield, P_y = 0.52 Pc), 5e-2 at 0.75 and 0.9 Pc.
+TEST(CalculixPlastic, B32RAgainstTheFibreLaw) {
+  REQUIRE_CCX();
+  const ring::RingSpec spec = plastic_ring();
+  const ringtest::FibrePinchedRing fibre(spec);
+  for (const auto& [f, bound] : {std::pair{0.6, 1e-3}, std::pair{0.75, 5e-2}, std::pair{0.9, 5e-2}}) {
+    const double P = f * fibre.collapse();
+    const double d = pinch(spec, Element::b32r, 80, P), df = fibre.closing(P);
+    std::printf("[ calculix ] B32R 80 at %.2f Pc: closing %.6e, fibre %.6e (%+.3e)\n", f, d, df, d / df - 1);
+    EXPECT_NEAR(d / df, 1.0, bound) << f << " Pc";
   }
 }
 
