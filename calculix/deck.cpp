@@ -141,7 +141,7 @@ std::string plastic_block(const ring::RingSpec& spec) {
                                  ")")
     << ",\n** " << (kinematic ? "kinematic" : "isotropic")
     << " rule; rows: yield stress (Pa), equivalent plastic strain. The bricks integrate it at\n"
-    << "** their Gauss points (B32R, B31: 2 through the depth; B32: 3), not over the section's fibres.\n"
+    << "** their points through the depth (B32R: 5, B31: 2, B32: 3), not over the section's fibres.\n"
     << (kinematic ? "*PLASTIC, HARDENING=KINEMATIC\n" : "*PLASTIC\n") << number(p.stress) << ", 0.0\n";
   if (p.hardening > 0.0) s << number(p.stress + H * reach) << ", " << number(reach) << "\n";
   return s.str();
@@ -158,8 +158,14 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
   check_points(spec, o);
   using Element = ring::CalculixOptions::Element;
   Deck d;
-  const bool width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
-                           (dynamic && !spec.masses.empty()) || loads_on_nodes;
+  const bool fibre = !dynamic && spec.plastic && spec.plastic->law == ring::Plastic::Law::fibre;
+  const bool wants_width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
+                                 (dynamic && !spec.masses.empty()) || loads_on_nodes;
+  // ccx 2.20 stops a beam section whose material is orthotropic with *PLASTIC ("*ERROR
+  // reading *BEAM SECTION: nonexistent material": it renames such a material for its
+  // anisotropic plasticity; a *SOLID SECTION takes it): the fibre law keeps the isotropic
+  // material, and the section's bending across its width with it (calculix/README.md).
+  const bool width_rigid = wants_width_rigid && !fibre;
   const int nodes = node_count(o);
   d.anchor = spec.anchor();
   d.node_angles = ring::node_angles(spec, nodes);
@@ -222,9 +228,12 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
       << number(spec.E / 2.0) << ", " << number(spec.E / 2.0) << "\n"
       << number(spec.E / 2.0) << "\n";
   } else {
+    if (wants_width_rigid)
+      s << "** Isotropic although springs or loads hang on the section's corners: ccx 2.20 refuses a beam\n"
+        << "** section of an orthotropic material with *PLASTIC (the section may bend across its width).\n";
     s << "*ELASTIC\n" << number(spec.E) << ", 0.0\n";
   }
-  if (!dynamic && spec.plastic && spec.plastic->law == ring::Plastic::Law::fibre) s << plastic_block(spec);
+  if (fibre) s << plastic_block(spec);
   s << "*DENSITY\n" << number(spec.rho) << "\n";
 
   s << "** Section: the 1-direction is normal to the ring's plane (0, 0, 1), so the 2-direction is\n"

@@ -246,6 +246,13 @@ TEST(CalculixDeck, FibreLawIsAPlasticTableAfterTheElasticMaterial) {
   t = rows(deck, "*PLASTIC");
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0][0], 2.5e8);
+  // With a spring the elastic deck's material is orthotropic (the section rigid across its
+  // width); ccx 2.20 refuses that with *PLASTIC on a beam section, so the plastic deck keeps
+  // the isotropic material.
+  r.supports.springs = {{45.0, 1e3, 1e3, 0.0}};
+  deck = calculix::static_deck(r, {}, st).text;
+  EXPECT_EQ(deck.find("ENGINEERING CONSTANTS"), std::string::npos);
+  EXPECT_LT(deck.find("*ELASTIC\n"), deck.find("*PLASTIC\n"));
   // The modes at rest are elastic: no *PLASTIC in a frequency deck.
   EXPECT_EQ(calculix::frequency_deck(r, {}, calculix::FrequencyStep{12}).text.find("*PLASTIC"), std::string::npos);
 }
