@@ -135,22 +135,6 @@ TEST(CalculixPlastic, DISABLED_PrintOracles) {
   }
 }
 
-TEST(CalculixPlastic, DISABLED_MeasureCollapse) {
-  REQUIRE_CCX();
-  const ring::RingSpec spec = plastic_ring();
-  const ringtest::FibrePinchedRing fibre(spec);
-  for (const Measure m : {Measure{Element::b32r, 80}, Measure{Element::b32r, 160}, Measure{Element::b31, 160},
-                          Measure{Element::b32, 80}}) {
-    try {
-      const double d = pinch(spec, m.element, m.elements, 1.3 * fibre.collapse(), 130);
-      std::printf("%s %d: carried 1.3 Pc, closing %.4e\n", ring::to_string(m.element).c_str(), m.elements, d);
-    } catch (const std::exception& ex) {
-      std::printf("%s %d: %s\n", ring::to_string(m.element).c_str(), m.elements, ex.what());
-    }
-    std::fflush(stdout);
-  }
-}
-
 TEST(CalculixPlastic, DISABLED_MeasureExpansionAgainstFibreModel) {
   REQUIRE_CCX();
   const ring::RingSpec spec = plastic_ring();
