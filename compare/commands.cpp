@@ -1,3 +1,4 @@
+#include "compare/pairs.hpp"
 #include "compare/commands.hpp"
 
 #include <fmt/format.h>
@@ -75,6 +76,7 @@ std::string modes_text(const ring::ModalResult& m) {
     s << fmt::format("  {:4d}  {:>12}  {:>8}\n", i + 1, sig4(m.omega[i]), sig4(m.omega[i] / (2 * M_PI)));
   s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {} ({})\n", m.unknowns,
                    m.seconds, residual_cell(m), m.residual_norm);
+  s << split_pairs_text({{m.solver, split_pairs(m)}}, false);
   return s.str();
 }
 

@@ -13,6 +13,7 @@
 #include "compare/files.hpp"
 #include "compare/registry.hpp"
 #include "compare/sweep.hpp"
+#include "compare/trim.hpp"
 #include "ring/errors.hpp"
 
 namespace {
@@ -121,6 +122,18 @@ int main(int argc, char** argv) {
                     "run on N MPI ranks, starting mpirun -np N itself: an interrupt then exits 128 + signal")
       ->check(CLI::Range(2, 1 << 20));
 
+  auto* trim = app.add_subcommand("trim", "point masses at given angles that cancel the split of a pair of modes");
+  add_common(trim, a);
+  cmp::TrimArgs tr;
+  trim->add_option("--mode", tr.mode, "a mode of the pair to trim (1-based, the untrimmed scene's order)")->required();
+  trim->add_option("--at", tr.at, "one or two angles (degrees, nodes of the model): where masses go")
+      ->required()
+      ->delimiter(',');
+  trim->add_option("--solver", tr.solver, "the model that measures the split (default: the scene's first modal solver)");
+  trim->add_option("--tolerance", tr.tolerance, "relative split to reach (default 1e-6)");
+  trim->add_flag("--json", tr.json, "print {mode, wave, solver, masses: [{at, mass}], split_before, split_after, ...}");
+  trim->add_option("--out", tr.out, "write the trimmed scene (the scene with the trim masses) to this file");
+
   auto* export_deck = app.add_subcommand("export-deck", "write an external solver's input deck without running it");
   add_common(export_deck, a);
   export_deck->add_option("--solver", solver, "calculix")->required()->check(CLI::IsMember({"calculix"}));
@@ -161,6 +174,7 @@ int main(int argc, char** argv) {
     if (*converge) return cmp::cmd_converge(a, out);
     if (*bench) return cmp::cmd_bench(a, out);
     if (*sweep) return cmp::cmd_sweep(a, sw, argc, argv);
+    if (*trim) return cmp::cmd_trim(a, tr);
     if (*export_deck) return cmp::cmd_export_deck(a, solver, out);
     if (*keys) return cmp::cmd_keys();
     return 2;

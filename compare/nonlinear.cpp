@@ -150,8 +150,10 @@ Cells cells(const NonlinearTable& t) {
 }
 
 std::string units_note(const NonlinearTable& t) {
+  const bool plastic = std::any_of(t.rows.begin(), t.rows.end(), [](const NonlinearRow& r) { return r.whole_ring(); });
   return t.analysis == "response"
-             ? "peak_u: largest |u| over the history (m); t_peak: when it occurs (s)"
+             ? std::string("peak_u: largest |u| over the history (m); t_peak: when it occurs (s)") +
+                   (plastic ? "; u_end: |u| at the end (m); dissipated: plastic work (J)" : "")
              : "ux, uy: displacement (m, ring-centred frame); u: its magnitude; dissipated: plastic work (J)";
 }
 
@@ -181,6 +183,26 @@ NonlinearTable response_table(const std::string& title, const std::vector<ring::
     }
     t.rows.push_back(u);
     t.rows.push_back(tp);
+  }
+  // A plastic ring: where each point ends (the residual displacement once the load is gone)
+  // and the plastic work done over the history, J.
+  const auto plastic = [](const ring::TimeHistory& h) { return !h.dissipated.empty(); };
+  if (std::any_of(histories.begin(), histories.end(), plastic) || (reference && plastic(*reference))) {
+    const auto end_u = [](const ring::TimeHistory& h, double angle) {
+      const int i = point_index(h.record_angles, angle);
+      return i < 0 || h.t.empty() ? NAN : std::hypot(h.ux[i].back(), h.uy[i].back());
+    };
+    for (const double angle : histories.front().record_angles) {
+      NonlinearRow e{angle, "u_end", {}, {}, std::nullopt, {}};
+      for (const auto& h : histories) e.value.push_back(end_u(h, angle));
+      if (reference) e.reference = end_u(*reference, angle);
+      t.rows.push_back(e);
+    }
+    const auto work = [&](const ring::TimeHistory& h) { return plastic(h) ? h.dissipated.back() : NAN; };
+    NonlinearRow d{NonlinearRow::kWholeRing, "dissipated", {}, {}, std::nullopt, {}};
+    for (const auto& h : histories) d.value.push_back(work(h));
+    if (reference) d.reference = work(*reference);
+    t.rows.push_back(d);
   }
   fill_relative(t);
   return t;

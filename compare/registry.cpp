@@ -192,7 +192,7 @@ SolverEntry lumped_entry() {
   e.curve = [](const ring::Scene& s) { return "lumped (" + ring::to_string(s.lumped.variant) + ")"; };
   e.converge_steps = 5;
   e.paper = [](const ring::PaperRow& r) { return r.lm_corrected; };
-  e.memory = [](const ring::Scene& s, int count) { return lumped::memory_estimate(s.lumped, memory_query(s, count)); };
+  e.memory = [](const ring::Scene& s, int count) { return lumped::memory_estimate(s.ring, s.lumped, memory_query(s, count)); };
   e.check_modes = [](const ring::Scene& s) {
     if (s.modes.preload_static) lumped::check_preloaded_modes(s.ring, s.lumped, *s.statics);
     else lumped::check_modes(s.ring, s.lumped);

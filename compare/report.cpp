@@ -9,6 +9,7 @@
 
 #include "compare/files.hpp"
 #include "compare/output.hpp"
+#include "compare/pairs.hpp"
 #include "compare/plot.hpp"
 #include "compare/response.hpp"
 
@@ -32,6 +33,8 @@ nlohmann::json modes_json_value(const ring::ModalResult& m, bool with_shapes) {
   j["max_residual"] = m.max_residual ? nlohmann::json(*m.max_residual) : nlohmann::json();  // null: none reported
   j["residual_norm"] = m.residual_norm;
   if (m.error_estimate > 0) j["error_estimate"] = m.error_estimate;
+  // The pairs the scene's terms split (their frequencies, split and orientation).
+  if (const auto pairs = split_pairs(m); !pairs.empty()) j["pairs"] = split_pairs_json(pairs);
   if (with_shapes) {
     nlohmann::json shapes = nlohmann::json::array();
     for (const auto& s : m.shapes) shapes.push_back({{"radial", s.radial}, {"tangential", s.tangential}});

@@ -246,7 +246,9 @@ Table build_table(const std::string& title, const std::vector<ring::ModalResult>
   for (const auto& r : results) {
     t.columns.push_back(pair_column(base, r, rows));
     t.columns.back().theory = theory(r);
+    t.splits.push_back({r.solver, split_pairs(r)});
   }
+  if (reference) t.splits.push_back({"reference", split_pairs(*reference)});
   if (reference) {
     t.reference = pair_column(base, *reference, rows);
     t.reference->theory = theory(*reference);
@@ -278,13 +280,13 @@ std::vector<ring::PaperRow> paper_table() { return ring::parse_paper_table(ringv
 std::string format_text(const Table& t) {
   std::ostringstream s;
   if (!t.title.empty()) s << t.title << "\n\n";
-  s << text_grid(cells(t, true)) << "\n" << footnotes(t);
+  s << text_grid(cells(t, true)) << "\n" << footnotes(t) << split_pairs_text(t.splits, false);
   return s.str();
 }
 
 std::string format_markdown(const Table& t) {
   std::ostringstream s;
-  s << markdown_grid(cells(t, true)) << "\n" << footnotes(t);
+  s << markdown_grid(cells(t, true)) << "\n" << footnotes(t) << split_pairs_text(t.splits, true);
   return s.str();
 }
 
@@ -358,6 +360,8 @@ std::string format_json(const Table& t) {
   j["title"] = t.title;
   j["base"] = t.columns.front().solver;
   j["rows"] = rows;
+  for (const auto& sp : t.splits)
+    if (!sp.pairs.empty()) j["pairs"][sp.solver] = split_pairs_json(sp.pairs);
   return j.dump(2) + "\n";
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/pairs.hpp"
 #include "ring/paper_table.hpp"
 #include "ring/results.hpp"
 #include "ring/scene.hpp"
@@ -40,6 +41,9 @@ struct Table {
   std::vector<Column> columns;              ///< base first
   std::optional<Column> reference;          ///< paired with the base like any column
   std::vector<ring::PaperRow> paper;        ///< with --paper: Table 1 as published
+  /// Each column's (and the reference's) pairs split by the scene's terms (compare/pairs.hpp),
+  /// listed after the table where any has one.
+  std::vector<SolverSplits> splits;
 };
 
 /// Below this MAC a pairing compares unlike shapes: marked "?" in the table, with no

@@ -100,7 +100,7 @@ BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
     if (k.kr > 0) rotations_.emplace_back(v, k.kr);
   }
   distributed_ = spec.foundation.any() || loads.pressure.any() || loads.has_gravity();
-  if (spec.plastic) law_ = bending_law(*spec.plastic, spec.EI());
+  if (spec.plastic) law_.emplace(::fem::detail::plastic_law(spec, *spec.plastic));
 }
 
 BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, Vector<double>* residual,

@@ -43,8 +43,13 @@ class BeamPotential {
   /// O(cells (p+2) (2p+3)^2), the beam's assembly (Reissner: O(cells (p+1) (3p+3)^2)).
   Value evaluate(const Vector<double>& q, double s, Vector<double>* residual, SparseMatrix<double>* tangent,
                  Vector<double>* load = nullptr, const std::vector<ring::PlasticState>* committed = nullptr) const;
-  /// The law of ring.plastic at the beam's bending points; nullopt without ring.plastic.
-  const std::optional<ring::BilinearLaw>& plastic_law() const { return law_; }
+  /// The law of ring.plastic at the beam's bending points (and vertex hinges); nullopt
+  /// without ring.plastic.
+  const std::optional<PlasticLaw>& plastic_law() const { return law_; }
+  /// The count of plastic states of the model (0 without ring.plastic).
+  std::size_t plastic_states() const {
+    return law_ ? law_->states(model_.bending_point_count(), model_.cells()) : 0;
+  }
 
  private:
   const BeamModel& model_;
@@ -62,7 +67,7 @@ class BeamPotential {
   /// A rotational spring kr at a vertex.
   std::vector<std::pair<unsigned int, double>> rotations_;
   bool distributed_ = false;  ///< foundation, pressure or gravity: the cell loop runs
-  std::optional<ring::BilinearLaw> law_;  ///< ring.plastic's law at the bending points
+  std::optional<PlasticLaw> law_;  ///< ring.plastic's law at the bending points
 };
 
 }  // namespace fem::detail

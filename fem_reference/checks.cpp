@@ -17,14 +17,30 @@ void need(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("fem: " + what);
 }
 
-/// ring.plastic enters the FE beam's nonlinear statics only (nonlinear.hpp, "Plasticity"):
-/// an analysis that would ignore it, or a law the beam does not integrate, is refused by
-/// the key (the scene reader refuses the same; this guards the library's callers).
+/// ring.plastic enters the FE beam's nonlinear statics and response (nonlinear.hpp,
+/// "Plasticity"): an analysis that would ignore it is refused by the key (this guards the
+/// library's callers as well as the driver).
 void refuse_plastic(const ring::RingSpec& spec, const std::string& analysis_and_why) {
   if (spec.plastic) throw ring::InputError("", "ring.plastic", "fem: " + analysis_and_why);
 }
 
 void check_linear(const ring::RingSpec& spec, const ring::FemOptions& o);
+
+/// The plastic law on the Euler-Bernoulli beam (statics and response): the fibre law needs
+/// the section's shape; the Reissner beam takes no law yet (plastic_points.hpp says why).
+void check_plastic(const ring::RingSpec& spec, const std::string& analysis) {
+  if (!spec.plastic) return;
+  if (spec.plastic->law == ring::Plastic::Law::fibre && spec.section.shape == ring::Section::Shape::general)
+    throw ring::InputError("", "ring.plastic.stress",
+                           "fem: the fibre law integrates the stress over the section's shape, and a section given "
+                           "by {area, inertia} has none (give ring.section a circle or a rectangle, or use the "
+                           "resultant law ring.plastic.moment)");
+  if (spec.theory == ring::Theory::timoshenko)
+    throw ring::InputError("", "ring.plastic",
+                           "fem: the Reissner (Timoshenko) beam takes no plastic law yet in its " + analysis +
+                               ": its bending points over-determine the curvature in a cell, so no plastic hinge "
+                               "could form (use ring.theory = \"euler-bernoulli\")");
+}
 
 /// What the geometrically exact beam needs of every nonlinear analysis: the terms of the
 /// linear modes (check_modes), the curved geometry, and loads that it can place: every
@@ -170,15 +186,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   check_nonlinear(spec, o, st.loads, st.record, "static");
-  if (spec.plastic && spec.plastic->law != ring::Plastic::Law::resultant)
-    throw ring::InputError("", "ring.plastic.stress",
-                           "fem: the FE beam integrates the resultant law only (ring.plastic.moment, N m), not the "
-                           "fibre law over the section");
-  if (spec.plastic && spec.theory == ring::Theory::timoshenko)
-    throw ring::InputError("", "ring.plastic",
-                           "fem: the Reissner (Timoshenko) beam takes no plastic law yet: its bending points "
-                           "over-determine the curvature in a cell, so no plastic hinge could form (use "
-                           "ring.theory = \"euler-bernoulli\")");
+  check_plastic(spec, "statics");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
   need(ring::static_rigid_modes(spec, st.loads) == 0,
@@ -225,9 +233,8 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  refuse_plastic(spec, "the nonlinear response takes no plastic law yet (its time stepping commits no plastic "
-                       "state); only the statics do");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
+  check_plastic(spec, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under a "
        "load drifts away");

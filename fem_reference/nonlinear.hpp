@@ -162,26 +162,40 @@
 // parts of the centreline lets the driver bisect the touch, every accepted equilibrium is a
 // ring::PathPoint, and a touch ends the path as a result (end = "contact: ...", end_load).
 //
-// ## Plasticity (ring.plastic, the resultant law; statics only)
-// Euler-Bernoulli beam only (the Reissner beam refuses it; plastic_points.hpp says why).
-// At every bending point, the p + 1 Gauss-Lobatto points of a cell, ends included (the
-// membrane stays on the p + 2 Gauss points; plastic_points.hpp says why), the energy
-// density EI/2 kappa^2 becomes the incremental potential of ring::BilinearLaw(EI, Mp, h,
-// rule) from the point's committed state, kappa the exact curvature change above: the
-// internal force is M dkappa, the tangent dM/dkappa dkappa dkappa^T + M d2kappa (C1 and
-// piecewise smooth in q: Newton converges in a few iterations past each change of the
-// yielding set). The interior penalty takes the law's moment at the two cells' end points
-// ({M} [[phi]]) and is itself a hinge of stiffness P = sigma EI / h that yields at Mp: a
-// point load's plastic hinge is a jump of the rotation at its vertex (plastic_points.hpp).
-// The continuation evaluates every trial from the committed states, the statics commit
-// them at every accepted equilibrium (BeamEquilibrium::accept) and add the step's plastic
-// work, sum weight law.dissipated: the result's dissipated; its plastic_curvature is the
-// largest |kappa_p| of a bending point (a hinge: its plastic rotation over the cell
-// length). The response, linear buckling and the modes under load take no plastic law
-// (check_response, check_buckling, check_preloaded_modes refuse ring.plastic), nor does
-// the fibre law (ring.plastic.stress) get in yet.
-// Measured (tests/fem_reference/fem_plastic_test.cpp): see docs/measured.md, "fem_reference:
-// the pinched plastic ring".
+// ## Plasticity (ring.plastic: the resultant and the fibre law; statics and response)
+// Euler-Bernoulli beam only (the Reissner beam refuses it by the key ring.plastic;
+// plastic_points.hpp says why); the fibre law needs the section's shape (a section given by
+// {area, inertia} is refused by ring.plastic.stress). At every bending point, the p + 1
+// Gauss-Lobatto points of a cell, ends included (the membrane stays on the p + 2 Gauss points;
+// plastic_points.hpp says why), the energy density EI/2 kappa^2 becomes the incremental
+// potential of the section law (ring::SectionLaw: the resultant law's one state, or the fibre
+// law's 64 fibres through the depth, each with its state) from the point's committed states,
+// kappa the exact curvature change above: the internal force is M dkappa, the tangent
+// dM/dkappa dkappa dkappa^T + M d2kappa (C1 and piecewise smooth in q: Newton converges in a
+// few iterations past each change of the yielding set). The membrane strain stays elastic
+// (the fibres see the bending strain y kappa only: SectionLaw has no axial strain). The
+// interior penalty takes the law's moment at the two cells' end points ({M} [[phi]]) and is
+// itself a hinge of stiffness P = sigma EI / h that yields at the section's fully plastic
+// moment (Mp; the fibre law's sigma_y Z): a point load's plastic hinge is a jump of the
+// rotation at its vertex, and the fibre law's curvature peak under a load near collapse is
+// carried there too (plastic_points.hpp, measured).
+// Statics: the continuation evaluates every trial from the committed states, the statics
+// commit them at every accepted equilibrium (BeamEquilibrium::accept) and add the step's
+// plastic work, sum weight law.dissipated: the result's dissipated; its plastic_curvature is
+// the largest |kappa - M / EI| of a bending point (a hinge: its plastic rotation over the cell
+// length).
+// Response: the states are internal variables of the time step (BeamStepper): Newton
+// evaluates the law at the generalized midpoint from the committed states, and accept()
+// commits them at the step's end q_1 with the step's plastic work; a rejected attempt leaves
+// nothing behind (every evaluation starts from the committed states). The record's
+// `dissipated` is the plastic work from rest, `strain` V at the committed states (the elastic
+// energy stored) and energy_error = T + V + D - W with D the damping's dissipation plus the
+// plastic work. A plastic run halves a step whose Newton fails, down to dt / 64 (the elastic
+// beam takes no sub-steps; nonlinear.cpp, respond_once, says what was measured). Linear
+// buckling and the modes under load take no plastic law (check_buckling,
+// check_preloaded_modes refuse ring.plastic).
+// Measured (tests/fem_reference/fem_plastic_test.cpp, fem_plastic_response_test.cpp): see
+// docs/measured.md, "fem_reference: the pinched plastic ring", and the tests' comments.
 //
 // ## Dynamics
 // M a + C v + grad V(q) = g(t) grad Phi(q) from rest, C = a M + b K0 (Rayleigh, K0 the

@@ -31,12 +31,12 @@ Scalar point_energy(const Vec4& g, double EA, double EI, double R, bool bending 
   return w;
 }
 
-/// ring.plastic: the bending density at a bending point, the law's incremental potential
-/// W(kappa) from the committed state `from`, kappa = phi'/R: gradient M dkappa, Hessian
-/// dM/dkappa dkappa dkappa^T + M d2kappa.
-Scalar plastic_bending(const Vec4& g, double R, const ring::BilinearLaw& law, const ring::PlasticState& from) {
+/// ring.plastic: the bending density at a bending point, the section law's incremental
+/// potential W(kappa) from the committed states `from` (section.states() of them),
+/// kappa = phi'/R: gradient M dkappa, Hessian dM/dkappa dkappa dkappa^T + M d2kappa.
+Scalar plastic_bending(const Vec4& g, double R, const ring::SectionLaw& section, const ring::PlasticState* from) {
   const Scalar k = rotation_rate(g);
-  const ring::BilinearLaw::Point p = law.at(from, k.value / R);
+  const ring::BilinearLaw::Point p = section.at(from, k.value / R);
   const double m = p.force / R, t = p.tangent / (R * R);
   Scalar w;
   w.value = p.potential;
@@ -56,7 +56,7 @@ std::array<double, 4> RingModel::strain_row(unsigned int i, unsigned int qp) con
   return {v, v1, v1, v2};
 }
 
-std::size_t RingModel::bending_point_count() const { return setup_.cells() * (bend_rows_.size() + 1); }
+std::size_t RingModel::bending_point_count() const { return setup_.cells() * bend_rows_.size(); }
 
 std::vector<BendingPoint> RingModel::bending_points(const Vector<double>& q, const Plasticity& plastic) const {
   const Vector<double> full = expand(q);
@@ -65,7 +65,7 @@ std::vector<BendingPoint> RingModel::bending_points(const Vector<double>& q, con
   std::vector<types::global_dof_index> dofs(dpc);
   std::vector<Vec4> g(n * per_cell, Vec4{1.0, 0.0, 0.0, 0.0});  // (a, b) at every bending point
   std::vector<BendingPoint> out;
-  out.reserve(bending_point_count());
+  out.reserve(bending_point_count() + n);
   for (unsigned int cell = 0; cell < n; ++cell) {
     cells_[cell]->get_dof_indices(dofs);
     for (unsigned int j = 0; j < per_cell; ++j) {
@@ -79,12 +79,13 @@ std::vector<BendingPoint> RingModel::bending_points(const Vector<double>& q, con
   }
   // The vertex hinges (beam_energy): e = J + {M} / P, {M} from the ends' committed states.
   const double P = penalty_;
-  const ring::BilinearLaw hinge = bending_law(*spec_.plastic, P);
+  const ring::BilinearLaw hinge = plastic.law.hinge(P);
+  const ring::SectionLaw& section = plastic.law.section;
   for (unsigned int v = 0; v < n; ++v) {
     const unsigned int l = ((v + n - 1) % n) * per_cell + per_cell - 1, r = v * per_cell;
     const double J = std::remainder(tangent_angle(g[r]).value - tangent_angle(g[l]).value, 2.0 * kPi);
-    const double M = 0.5 * (plastic.law.at(plastic.committed[l], out[l].curvature).force +
-                            plastic.law.at(plastic.committed[r], out[r].curvature).force);
+    const double M = 0.5 * (section.at(plastic.point(l), out[l].curvature).force +
+                            section.at(plastic.point(r), out[r].curvature).force);
     out.push_back({J + M / P, 1.0, 1.0 / (R * h_), hinge});
   }
   return out;
@@ -100,12 +101,14 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
   if (gradient) gradient->reinit(n_free_);
   if (tangent) *tangent = 0.0;
   const unsigned int per_cell = bend_rows_.size();  // bending points per cell (plastic_points.hpp)
-  const unsigned int hinge_base = n * per_cell;      // then the vertex hinges
-  if (plastic && plastic->committed.size() != bending_point_count())
+  if (plastic && plastic->committed.size() != plastic->law.states(bending_point_count(), n))
     throw std::logic_error("fem: " + std::to_string(plastic->committed.size()) + " plastic states for " +
-                           std::to_string(bending_point_count()) + " bending points");
+                           std::to_string(plastic->law.states(bending_point_count(), n)) + " of the bending points");
+  // The vertex hinges' states follow the bending points' (plastic_points.hpp).
+  const std::size_t hinge_base = plastic ? plastic->law.states(bending_point_count(), 0) : 0;
   // The vertices' hinge law (used with `plastic` only): the interior penalty's stiffness, Mp.
-  const ring::BilinearLaw hinge = bending_law(plastic ? *spec_.plastic : ring::Plastic{}, penalty_);
+  const std::optional<ring::BilinearLaw> hinge =
+      plastic ? std::optional<ring::BilinearLaw>(plastic->law.hinge(penalty_)) : std::nullopt;
 
   auto strain = [&](const std::vector<double>& x, unsigned int qp, std::vector<Vec4>& b) {
     Vec4 g{1.0, 0.0, 0.0, 0.0};
@@ -147,7 +150,7 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
     for (unsigned int qp = 0; qp < nq_; ++qp) add_point(point_energy(strain(x, qp, b), EA, EI, R, !plastic), ds_[qp]);
     if (plastic)
       for (unsigned int j = 0; j < per_cell; ++j)
-        add_point(plastic_bending(strain(x, bend_rows_[j], b), R, plastic->law, plastic->committed[cell * per_cell + j]),
+        add_point(plastic_bending(strain(x, bend_rows_[j], b), R, plastic->law.section, plastic->point(cell * per_cell + j)),
                   bend_ds_[j]);
     if (gradient) scatter(dofs, {f.begin(), f.begin() + dpc});
     if (tangent) add_local(k_cell, dofs, *tangent);
@@ -175,8 +178,9 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
     const double m = EI / (2.0 * R);
     double M = m * (kl.value + kr.value), mL = m, mR = m;
     if (plastic) {
-      const ring::BilinearLaw::Point l = plastic->law.at(plastic->committed[left * per_cell + per_cell - 1], kl.value / R);
-      const ring::BilinearLaw::Point r = plastic->law.at(plastic->committed[v * per_cell], kr.value / R);
+      const ring::SectionLaw& section = plastic->law.section;
+      const ring::BilinearLaw::Point l = section.at(plastic->point(left * per_cell + per_cell - 1), kl.value / R);
+      const ring::BilinearLaw::Point r = section.at(plastic->point(v * per_cell), kr.value / R);
       M = 0.5 * (l.force + r.force);
       mL = 0.5 * l.tangent / R;
       mR = 0.5 * r.tangent / R;
@@ -199,7 +203,7 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
       // incremental potential of the law with stiffness P from the hinge's committed state.
       // With F = W_P'(e), T = W_P''(e) and g = dJ + dM / P: dE_v = F g - {M} / P dM,
       // d2E_v = T g g^T - dM dM^T / P + F d2J + (F - {M}) / P d2M (elastic: F = {M} + P J).
-      const ring::BilinearLaw::Point h = hinge.at(plastic->committed[hinge_base + v], J + M / P);
+      const ring::BilinearLaw::Point h = hinge->at(plastic->committed[hinge_base + v], J + M / P);
       energy += h.potential - 0.5 * M * M / P;
       std::array<double, 8> g{};
       for (int a = 0; a < 8; ++a) g[a] = dJ[a] + dM[a] / P;

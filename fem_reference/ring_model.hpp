@@ -249,11 +249,13 @@ class BeamModel : public LinearModel {
   /// q is the committed equilibrium). `plastic` null: elastic, bit for bit the 3-argument form.
   virtual double beam_energy(const Vector<double>& q, Vector<double>* gradient, SparseMatrix<double>* tangent,
                              const Plasticity* plastic) const = 0;
-  /// The strain (curvature, or a vertex hinge's rotation) and weight of every bending point
-  /// at q, in the model's order (plastic_points.hpp), as beam_energy evaluates them from the
-  /// committed states: what the statics commit. O(cells (p+2) (2p+3)).
+  /// The strain (curvature, or a vertex hinge's strain) and weight of every bending point,
+  /// then of every vertex hinge, at q, in the model's order
+  /// (plastic_points.hpp), as beam_energy evaluates them from the committed states: what
+  /// the statics and the response commit. O(cells (p+2) (2p+3) + states).
   virtual std::vector<BendingPoint> bending_points(const Vector<double>& q, const Plasticity& plastic) const = 0;
-  /// How many bending points (and plastic states) the model has.
+  /// How many bending points the model has (vertex hinges not counted; its plastic states:
+  /// PlasticLaw::states(bending_point_count(), cells())).
   virtual std::size_t bending_point_count() const = 0;
   // mass() (constant: the polar basis at fixed theta does not move) and stiffness() (the
   // tangent of beam_energy at q = 0) are LinearModel's.

@@ -124,7 +124,7 @@ class BeamEquilibrium : public paths::Equilibrium {
   const unsigned int N_;
   const unsigned int loaded_;
   const BeamPotential potential_;
-  const std::optional<ring::BilinearLaw>& law_;  ///< ring.plastic's, or nullopt
+  const std::optional<PlasticLaw>& law_;  ///< ring.plastic's, or nullopt
   std::vector<ring::PlasticState> plastic_;      ///< committed, per bending point
   double dissipated_ = 0.0;                      ///< plastic work from rest, J
   double plastic_curvature_ = 0.0;               ///< largest |kappa_p| now, 1/m
@@ -174,7 +174,7 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
   B_.reinit(pattern_);
   out_.unknowns = N_;
   out_.path.push_back({0.0, {0.0, 0.0}});
-  if (law_) plastic_.assign(model_.bending_point_count(), ring::PlasticState{});
+  if (law_) plastic_.assign(potential_.plastic_states(), ring::PlasticState{});
   last_centreline_ = model_.centreline(model_.expand(q_), per_cell_);
 }
 

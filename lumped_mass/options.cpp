@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "ring/section_law.hpp"
+
 namespace lumped {
 
 const ring::OptionSchema& option_schema() {
@@ -37,11 +39,19 @@ ring::LumpedOptions read_options(const ring::OptionValues& v) {
 // one: 172.5 MB measured at 3 10^4, where 5.2 KB had been 165.4); the corotational frames'
 // statics 5.4 and 4.6 KB at n = 10^4, 3 10^4 (the process included). Used: those with 3-5 %
 // to spare.
-double memory_estimate(const ring::LumpedOptions& o, const ring::MemoryQuery& q) {
+double memory_estimate(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::MemoryQuery& q) {
   const int count = q.count;
   const double n = o.n;
   const bool frame = o.variant != ring::LumpedOptions::Variant::chain;
-  if (count == 0) return (frame ? 5600.0 : 5700.0) * n;
+  // ring.plastic: the hinges' committed states (bending.hpp), 16 bytes each, one per hinge
+  // (resultant law) or per fibre (SectionLaw::kFibres), and the response's copy of the chain
+  // that holds them (counted, not measured).
+  const double plastic =
+      spec.plastic && (q.response || q.statics)
+          ? n * (16.0 * (spec.plastic->law == ring::Plastic::Law::fibre ? ring::SectionLaw::kFibres : 1) +
+                 (q.response ? 5700.0 : 0.0))
+          : 0.0;
+  if (count == 0) return (frame ? 5600.0 : 5700.0) * n + plastic;
   // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
   // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
   if (q.preload) return (frame ? 600.0 : 100.0) * n * n;

@@ -18,6 +18,6 @@ ring::LumpedOptions read_options(const ring::OptionValues& values);
 /// which the cost guard adds: compare/guard.cpp). Fitted to the peak RSS measured (the
 /// comment above the definition); tests/compare/test_memory_estimate.cpp holds it within
 /// [1, 1.5] of the measured peak.
-double memory_estimate(const ring::LumpedOptions& o, const ring::MemoryQuery& q);
+double memory_estimate(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::MemoryQuery& q);
 
 }  // namespace lumped

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "multibody/chain.hpp"
 #include "ring/errors.hpp"
@@ -12,18 +11,41 @@ namespace multibody {
 
 double hinge_stiffness(const ring::RingSpec& spec, double l) { return spec.EI() / l; }
 
-HingeBending::HingeBending(const ring::RingSpec& spec, const Chain& chain) : n_(chain.n()), K_(chain.K()) {
+void check_section_law(const ring::RingSpec& spec) {
+  if (spec.plastic && spec.plastic->law == ring::Plastic::Law::fibre &&
+      spec.section.shape == ring::Section::Shape::general)
+    throw ring::InputError("", "ring.plastic.stress",
+                           "the fibre law integrates over the section's shape, and a section given by {area, inertia} "
+                           "has none (give ring.section a circle or a rectangle, or use the resultant law "
+                           "ring.plastic.moment)");
+}
+
+HingeBending::HingeBending(const ring::RingSpec& spec, const Chain& chain)
+    : n_(chain.n()), K_(chain.K()), EI_(spec.EI()), l_(chain.l()) {
   if (!spec.plastic) return;
-  if (spec.plastic->law != ring::Plastic::Law::resultant)
-    throw ring::InputError("", "ring.plastic",
-                           "the multibody chain's hinges take the resultant law (ring.plastic.moment) only: a "
-                           "hinge has no section fibres for the fibre law");
-  law_.emplace(K_, spec.plastic->moment, spec.plastic->hardening, spec.plastic->rule);
-  states_.assign(static_cast<std::size_t>(n_), ring::PlasticState{});
+  check_section_law(spec);
+  section_.emplace(spec);
+  m_ = static_cast<std::size_t>(section_->states());
+  states_.assign(static_cast<std::size_t>(n_) * m_, ring::PlasticState{});
+  strains_.assign(static_cast<std::size_t>(n_), 0.0);
 }
 
 HingeBending::Point HingeBending::at(int k, double e) const {
-  if (law_) return law_->at(states_[k], e);
+  if (section_) {
+    Point p = law().at(states(k), e);
+    // The resultant law inside its band is the elastic spring about the plastic rotation:
+    // HingeLaw's EI (e / l - kappa_p) and its potential spelt as the elastic chain's
+    // K (e - l kappa_p) and K (e - l kappa_p)^2 / 2 (the same values to one rounding), so that a
+    // plastic moment never reached gives the elastic chain's arithmetic bit for bit (its O(n)
+    // statics at n = 10^4 sit at their round-off floor), and the potential is exactly zero at
+    // the committed plastic rotation.
+    if (m_ == 1 && !p.yielding) {
+      const double y = e - l_ * states(k)->plastic;
+      p.force = K_ * y;
+      p.potential = 0.5 * K_ * y * y;
+    }
+    return p;
+  }
   Point p;
   p.force = K_ * e;
   p.tangent = K_;
@@ -32,16 +54,34 @@ HingeBending::Point HingeBending::at(int k, double e) const {
 }
 
 void HingeBending::commit(const Eigen::Ref<const Eigen::VectorXd>& strains) {
-  if (!law_) return;
+  if (!section_) return;
+  const ring::HingeLaw h = law();
   for (int k = 0; k < n_; ++k) {
-    dissipated_ += law_->dissipated(states_[k], strains[k]);
-    states_[k] = law_->commit(states_[k], strains[k]);
+    ring::PlasticState* s = &states_[static_cast<std::size_t>(k) * m_];
+    dissipated_ += h.dissipated(s, strains[k]);
+    h.commit(s, strains[k]);
+    strains_[k] = strains[k];
   }
 }
 
+double HingeBending::dissipated_by(const Eigen::Ref<const Eigen::VectorXd>& strains) const {
+  if (!section_) return 0.0;
+  const ring::HingeLaw h = law();
+  double d = 0.0;
+  for (int k = 0; k < n_; ++k) d += h.dissipated(states(k), strains[k]);
+  return d;
+}
+
 double HingeBending::stored(int k, double e) const {
-  if (law_) return law_->stored(states_[k], e);
-  return 0.5 * K_ * e * e;
+  if (section_) return law().stored(states(k), e);
+  return at(k, e).potential;
+}
+
+double HingeBending::stored_on_angles(const Chain& chain, const Eigen::VectorXd& q) const {
+  const Eigen::VectorXd r = chain.hinge_rotations(q);
+  double V = 0.0;
+  for (int k = 0; k < n_; ++k) V += stored(k, r[k]);
+  return V;
 }
 
 Eigen::VectorXd HingeBending::forces_on_angles(const Chain& chain, const Eigen::VectorXd& q) const {
@@ -65,9 +105,18 @@ void HingeBending::add_tangent_on_angles(const Chain& chain, const Eigen::Vector
   }
 }
 
-double HingeBending::largest_plastic_rotation() const {
+double HingeBending::largest_plastic_curvature() const {
+  if (!section_) return 0.0;
   double most = 0.0;
-  for (const ring::PlasticState& s : states_) most = std::max(most, std::abs(s.plastic));
+  for (int k = 0; k < n_; ++k) {
+    const ring::PlasticState* s = states(k);
+    if (m_ == 1) {  // the resultant law's state is the plastic curvature
+      most = std::max(most, std::abs(s->plastic));
+      continue;
+    }
+    const bool yielded = std::any_of(s, s + m_, [](const ring::PlasticState& f) { return f.plastic != 0.0; });
+    if (yielded) most = std::max(most, std::abs(law().plastic_curvature(s, strains_[k])));
+  }
   return most;
 }
 

@@ -1,15 +1,24 @@
 // The hinge's bending law, written once for every kernel of the chain: the spring at hinge k
 // (chain.hpp) resists the change e of its turning angle from rest (rad) with
 //  - elastic: the moment K e, K = EI / l (N m / rad), the potential K e^2 / 2;
-//  - `ring.plastic` (the resultant law): ring::BilinearLaw(K, Mp, h, rule) from the hinge's
-//    committed ring::PlasticState (ring/plastic.hpp): moment, tangent and the incremental
-//    potential whose derivative is the moment, evaluated at a trial e from the committed state.
-// The linear O(n) kernels (the Riccati sweep, the position modes, the shifted solve) and the
-// elastic energy of the dynamics read only the rest stiffness K() (their law is K e); the
-// nonlinear statics assemble at(k, e) and commit the converged strains.
+//  - `ring.plastic`, either law: ring::HingeLaw(section, l) (ring/section_law.hpp) on one
+//    ring::SectionLaw for the spec: the section's law at the uniform curvature e / l of the
+//    segment the hinge stands for, from the hinge's committed ring::PlasticStates
+//    (resultant, `moment = Mp`: one state, the plastic curvature; fibre, `stress =
+//    sigma_y`: SectionLaw::kFibres states, one per fibre of the section's shape): moment,
+//    tangent and the incremental potential whose derivative is the moment, evaluated at a
+//    trial e from the committed states. Inside its band the resultant law's moment and
+//    potential are spelt K (e - l kappa_p) and K (e - l kappa_p)^2 / 2, the elastic spring's
+//    arithmetic (HingeLaw's values to one rounding), so that a plastic moment never reached
+//    is the elastic chain bit for bit.
+// The linear O(n) kernels (the Riccati sweep, the position modes, the shifted solve) read
+// only the rest stiffness K() (their law is K e); the nonlinear statics and the angle
+// integrators' response assemble at(k, e) and commit the converged strains.
 //
-// A HingeBending holds the path-dependent state of the n hinges (O(n) memory); it changes only
-// in commit(), so that a trial evaluation needs no undo.
+// A HingeBending holds the path-dependent states of the n hinges: O(n states()) memory
+// (states() = 1 or SectionLaw::kFibres), O(n states()) per evaluation of every hinge; they
+// change only in commit(), so that a trial evaluation needs no undo, and a step or load
+// level that is thrown away leaves nothing behind (paths/internal.hpp).
 #pragma once
 
 #include <optional>
@@ -18,6 +27,7 @@
 #include <Eigen/Core>
 
 #include "ring/plastic.hpp"
+#include "ring/section_law.hpp"
 #include "ring/spec.hpp"
 
 namespace multibody {
@@ -28,10 +38,17 @@ class Chain;
 /// midpoint to the next over the length l (m). The one place it is spelt.
 double hinge_stiffness(const ring::RingSpec& spec, double l);
 
+/// Refuses (ring::InputError, key ring.plastic.stress) the fibre law of spec.plastic on a
+/// section given by {area, inertia}, which has no shape to put fibres in; nothing otherwise.
+/// The scene reader refuses it too; this holds for a library caller's spec. O(1).
+void check_section_law(const ring::RingSpec& spec);
+
 class HingeBending {
  public:
-  /// The law of the n hinges of `chain` under `spec` (elastic without spec.plastic; the
-  /// resultant law with it: the fibre law is refused by the scene reader). O(n).
+  /// The law of the n hinges of `chain` under `spec`: elastic without spec.plastic, either
+  /// law of ring.plastic with it. Throws ring::InputError (key ring.plastic.stress) for the
+  /// fibre law on a section given by {area, inertia}: it has no shape to put fibres in.
+  /// O(n states()).
   HingeBending(const ring::RingSpec& spec, const Chain& chain);
 
   /// The moment (N m), tangent dM/de (N m / rad) and incremental potential (J, zero at the
@@ -43,35 +60,53 @@ class HingeBending {
   double potential(int k, double e) const { return at(k, e).potential; }
 
   /// Commits the converged changes e (one per hinge, rad): the plastic states move and the
-  /// plastic work of the step is added to dissipated(). Nothing for the elastic law. O(n).
+  /// plastic work of the step is added to dissipated(). Nothing for the elastic law. O(n states()).
   void commit(const Eigen::Ref<const Eigen::VectorXd>& strains);
+  /// The plastic work that commit(strains) would add, J (0 for the elastic law). O(n states()).
+  double dissipated_by(const Eigen::Ref<const Eigen::VectorXd>& strains) const;
 
   /// The hinges' forces on the segment angles q of `chain` (dofs() entries, zero on a free
   /// ring's base): dV/dq_k = M_k - M_{k+1}, M_k at the hinge rotation r_k = theta_k -
-  /// theta_{k-1} (Chain::hinge_rotations). O(n).
+  /// theta_{k-1} (Chain::hinge_rotations). O(n states()).
   Eigen::VectorXd forces_on_angles(const Chain& chain, const Eigen::VectorXd& q) const;
   /// Adds their Jacobian, sum_k tangent_k grad r_k grad r_k^T (the cyclic (2, -1, -1) times K
-  /// while elastic), to T (dofs() x dofs()). O(n) entries.
+  /// while elastic), to T (dofs() x dofs()). O(n states()) work, O(n) entries.
   void add_tangent_on_angles(const Chain& chain, const Eigen::VectorXd& q, Eigen::Ref<Eigen::MatrixXd> T) const;
+  /// The hinges' elastic energy stored at the segment angles q from the committed states,
+  /// sum_k stored(k, r_k), J. O(n states()).
+  double stored_on_angles(const Chain& chain, const Eigen::VectorXd& q) const;
 
   int hinges() const { return n_; }
   /// The rest stiffness K = EI / l, N m / rad (hinge_stiffness).
   double K() const { return K_; }
-  bool plastic() const { return law_.has_value(); }
-  /// The elastic energy stored at e in hinge k's committed state, K (e - e_p)^2 / 2, J.
+  bool plastic() const { return section_.has_value(); }
+  /// PlasticStates per hinge: 0 (elastic), 1 (resultant), SectionLaw::kFibres (fibre).
+  int states() const { return section_ ? section_->states() : 0; }
+  /// The elastic energy stored at e in hinge k's committed state, J: M^2 / (2K) for the
+  /// resultant law, the fibres' sum of l sigma^2 a / (2E) for the fibre law, K e^2 / 2 elastic.
   double stored(int k, double e) const;
   /// The plastic work of every committed step, J.
   double dissipated() const { return dissipated_; }
-  /// The largest |committed plastic rotation| over the hinges, rad.
-  double largest_plastic_rotation() const;
-  /// The committed state of hinge k.
-  const ring::PlasticState& state(int k) const { return states_[k]; }
+  /// The largest |plastic curvature| over the hinges at their committed strains, 1/m: the
+  /// curvature left when the section is unloaded elastically, kappa - M / EI (the resultant
+  /// law's committed state itself; exactly 0 where no state has yielded).
+  double largest_plastic_curvature() const;
+  /// The same times the segment length: the hinge's plastic rotation, rad.
+  double largest_plastic_rotation() const { return largest_plastic_curvature() * l_; }
+  /// Hinge k's committed state i (i < states(); the resultant law's one: the plastic
+  /// curvature, 1/m, and its accumulated |change|).
+  const ring::PlasticState& state(int k, int i = 0) const { return states_[static_cast<std::size_t>(k) * m_ + i]; }
 
  private:
+  ring::HingeLaw law() const { return ring::HingeLaw(*section_, l_); }
+  const ring::PlasticState* states(int k) const { return &states_[static_cast<std::size_t>(k) * m_]; }
+
   int n_;
-  double K_;
-  std::optional<ring::BilinearLaw> law_;
-  std::vector<ring::PlasticState> states_;  ///< empty for the elastic law
+  double K_, EI_, l_;
+  std::optional<ring::SectionLaw> section_;  ///< ring.plastic's law; empty: elastic
+  std::size_t m_ = 0;                         ///< states per hinge
+  std::vector<ring::PlasticState> states_;   ///< n m committed states, hinge by hinge
+  std::vector<double> strains_;              ///< the committed strains (rad), for the plastic curvature
   double dissipated_ = 0.0;
 };
 

@@ -6,6 +6,7 @@
 
 #include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
+#include "multibody/bending.hpp"
 #include "ring/errors.hpp"
 
 namespace multibody {
@@ -58,6 +59,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                                   "eigenvectors): set multibody.method = \"dense\"");
   }
   if (statics.steps < 1) throw std::invalid_argument("multibody::solve_static: steps must be >= 1");
+  check_section_law(spec);  // the fibre law needs the section's shape (bending.hpp)
   // The plastic law acts on the hinge springs' moment (bending.hpp); the Timoshenko chain
   // condenses its springs with the shear into one constant K_c (sections.hpp), which has no
   // hinge moment to return-map.
@@ -96,17 +98,31 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  if (spec.plastic)
-    throw ring::InputError("", "ring.plastic",
-                           "the multibody forced response takes no plastic law yet (its integrators assemble the "
-                           "elastic hinge springs): only the nonlinear statics do; remove [response] or ring.plastic");
+  // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
+  // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
+  // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted
+  // steps. What cannot take it refuses by key, saying why and what to use.
+  if (spec.plastic) {
+    check_section_law(spec);
+    if (spec.theory == ring::Theory::timoshenko)
+      throw ring::InputError("", "ring.plastic",
+                             "the multibody Timoshenko chain (ring.theory = \"timoshenko\") takes no plastic law: "
+                             "its hinge springs act on the sections' rotations with constant coefficients "
+                             "(sections.hpp); use ring.theory = \"euler-bernoulli\" or remove ring.plastic");
+    if (has_point_inertia(spec))
+      throw ring::InputError("", "ring.plastic",
+                             "the multibody response with point inertias (masses[].inertia > 0) takes no plastic law: "
+                             "their hinges' springs are split into constant halves on the hinge's own rotation "
+                             "(attachments.hpp, HingeInertias); set the inertias to 0 or remove ring.plastic");
+  }
   // The shear angles live on the dense angle path only (sections.hpp); "auto" keeps it dense.
   if (spec.theory == ring::Theory::timoshenko) {
     if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
       throw std::invalid_argument(
           "multibody response.integrator = \"energy-momentum\" (hinge positions) has no Timoshenko chain (ring.theory "
           "= \"timoshenko\"): use \"newmark\" or \"generalized-alpha\"");
-    if (backend(options, spec, response.loads, Analysis::response) == Backend::banded)
+    if (response.integrator != ring::ResponseOptions::Integrator::energy_momentum &&
+        backend(options, spec, response.loads, Analysis::response) == Backend::banded)
       throw std::invalid_argument(
           "multibody method = \"sparse\" (the O(n) response) has no Timoshenko chain (ring.theory = \"timoshenko\"): "
           "set multibody.method = \"dense\" or \"auto\"");

@@ -14,14 +14,18 @@ namespace multibody {
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options);
 /// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1;
 /// the Timoshenko chain on the dense path only, and without ring.plastic (ring::InputError:
-/// its hinge springs are condensed with the shear, sections.hpp).
+/// its hinge springs are condensed with the shear, sections.hpp); the fibre law only on a
+/// section with a shape (ring::InputError, key ring.plastic.stress).
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
 /// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"), a
 /// pinned Timoshenko chain, no ring.plastic (ring::InputError: an elastic tangent).
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics);
-/// Forced response: no ring.plastic (ring::InputError: the integrators' springs are elastic), a pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
+/// Forced response: ring.plastic (either law; the fibre law on a section with a shape) on the
+/// Euler–Bernoulli chain without point inertias, every integrator and backend (else
+/// ring::InputError, key ring.plastic, saying why and what to use), a
+/// pin, 0 < dt <= t_end (finite), rho_inf in [0, 1], damping >= 0 and
 /// none with the energy-momentum integrator; the integrator "newmark", "generalized-alpha"
 /// or "energy-momentum" ("midpoint" is the lumped chain's scheme, refused here); the
 /// Timoshenko chain on the dense path with "newmark" or "generalized-alpha" only, without

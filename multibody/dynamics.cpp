@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "multibody/backend.hpp"
+#include "multibody/bending.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
@@ -31,14 +32,20 @@ using detail::StepOutcome;
 
 /// The chain's newmark and generalized-alpha steps for the time-stepping driver
 /// (paths/time_stepping.hpp): the dense or O(n) Newton backend, the dead load's work
-/// (trapezoidal in time; exact for a constant force) and the damping's dissipation.
+/// (trapezoidal in time; exact for a constant force), the damping's dissipation and, with
+/// ring.plastic, the hinges' plastic states as internal variables (paths/internal.hpp):
+/// every Newton iterate of a step evaluates the law from the states committed at the last
+/// accepted step (HingeBending changes only in commit), accept() commits them at the step's
+/// hinge rotations and adds the step's plastic work, and a rejected or halved attempt leaves
+/// nothing behind. The record's strain is then the elastic energy stored, its plastic the
+/// plastic work (paths::Sample::plastic: the driver records it and counts it in the balance).
 class ChainStepper : public paths::Stepper {
  public:
   ChainStepper(const Chain& chain, const Problem& p, const Coefficients& co, const IntegrationControls& controls,
                detail::NewtonBackend& nb, bool partitioned, bool damped, const std::vector<double>& record,
-               double depth, State start)
+               double depth, State start, HingeBending* bending)
       : chain_(chain), p_(p), co_(co), controls_(controls), nb_(nb), partitioned_(partitioned), damped_(damped),
-        gap_(detail::contact_gap(chain, depth)), depth_(depth), s_(std::move(start)) {
+        gap_(detail::contact_gap(chain, depth)), depth_(depth), s_(std::move(start)), bending_(bending) {
     for (double a : record) rec_.push_back(chain.hinge_at(a));
     x_load_ = chain.hinge_position(coordinates(s_.q), p.load.hinge);
     if (p.loading) potential_ = p.loading->potential(coordinates(s_.q));
@@ -69,9 +76,15 @@ class ChainStepper : public paths::Stepper {
       const Vector vm = s_.v + s1_.v;
       dissipated_ += 0.25 * h_ * vm.dot(nb_.damping_times(vm));
     }
+    // The step is accepted: its hinges' trial states become the committed ones.
+    if (bending_) bending_->commit(chain_.hinge_rotations(coordinates(s1_.q)));
     s_ = std::move(s1_);
     s_.t = t;  // no round-off drift of the sub-steps
   }
+
+  /// Nothing to discard: the trial states are evaluated from the committed ones at every
+  /// iterate and never stored (bending.hpp).
+  void reject() override {}
 
   bool finite() const override { return s_.q.allFinite() && s_.v.allFinite(); }
 
@@ -90,11 +103,14 @@ class ChainStepper : public paths::Stepper {
       out.kinetic += p_.sections->kinetic_energy(s_.v);
       out.strain = p_.sections->energy(s_.q) + (p_.terms ? p_.terms->energy(q, false) : 0.0);
     } else {
-      out.strain = chain_.spring_energy(q) + (p_.terms ? p_.terms->energy(q) : 0.0);
+      // ring.plastic: the elastic energy stored in the committed states (bending.hpp).
+      out.strain = (bending_ ? bending_->stored_on_angles(chain_, q) : chain_.spring_energy(q)) +
+                   (p_.terms ? p_.terms->energy(q) : 0.0);
     }
     if (p_.hinges) out.strain += p_.hinges->energy(s_.q);
     out.work = work_;
     out.dissipated = dissipated_;
+    if (bending_) out.plastic = bending_->dissipated();
     // Values only: the kinematics (G, its Hessian) are the step's business, not the sample's.
     out.constraint_residual = detail::constraint_values(chain_, p_.terms, q).cwiseAbs().maxCoeff();
     return out;
@@ -131,6 +147,7 @@ class ChainStepper : public paths::Stepper {
   double h_ = 0.0, work_ = 0.0, dissipated_ = 0.0;
   Eigen::Vector2d x_load_;
   double potential_ = 0.0;  ///< the loads' potential at the state (Problem::loading)
+  HingeBending* bending_;   ///< ring.plastic's hinges, or null (elastic: the chain's springs)
 };
 
 }  // namespace
@@ -178,8 +195,10 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
                                 (response.rayleigh_stiffness + response.hinge_damping / chain.K()) * chain.K()};
   const bool damped = damping.any();
   const bool banded = backend(options, spec, response.loads, Analysis::response) == Backend::banded;
-  const std::unique_ptr<detail::NewtonBackend> newton =
-      detail::make_newton_backend(chain, p.load, damping, banded, p.loading, p.terms, p.sections, p.hinges);
+  std::optional<HingeBending> bending;  // ring.plastic: the hinges' law and committed states
+  if (spec.plastic) bending.emplace(spec, chain);
+  const std::unique_ptr<detail::NewtonBackend> newton = detail::make_newton_backend(
+      chain, p.load, damping, banded, p.loading, p.terms, p.sections, p.hinges, bending ? &*bending : nullptr);
   detail::NewtonBackend& nb = *newton;
   const Coefficients co = detail::coefficients(response);
   const bool partitioned = response.integrator == ring::ResponseOptions::Integrator::newmark;
@@ -198,7 +217,7 @@ ring::TimeHistory respond_chain(const ring::RingSpec& spec, const ring::Multibod
   if (partitioned) s.qdd = s.a;
 
   ChainStepper stepper(chain, p, co, controls, nb, partitioned, damped, response.record, spec.section.depth(),
-                       std::move(s));
+                       std::move(s), bending ? &*bending : nullptr);
   // A run that gains energy has failed, whatever the integrator: its history is not a
   // result (generalized-alpha did on fine chains under a point step load when it started
   // from a_0 = qdd_0; see starting_pseudo_acceleration). The rule: energy_guard.hpp.

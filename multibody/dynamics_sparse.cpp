@@ -34,6 +34,9 @@ Vector StructuredMatrix::times(const Vector& x) const {
   if (cyclic != 0.0)
     for (Eigen::Index k = 0; k < n; ++k)
       y[k] += cyclic * (2.0 * x[k] - x[(k + n - 1) % n] - x[(k + 1) % n]);
+  if (hinge.size())
+    for (Eigen::Index k = 0; k < n; ++k)
+      y[k] += hinge_at(k) * (x[k] - x[(k + n - 1) % n]) - hinge_at(k + 1) * (x[(k + 1) % n] - x[k]);
   for (const LowRankTerm& t : terms) {
     Eigen::Matrix2Xd w(2, n);
     for (Eigen::Index j = 0; j < n; ++j) w.col(j) = t.right.col(j) * x[j];
@@ -46,6 +49,8 @@ Vector StructuredMatrix::times(const Vector& x) const {
 Vector StructuredMatrix::diagonal() const {
   const Eigen::Index n = size();
   Vector d = diag.array() + 2.0 * cyclic;
+  if (hinge.size())
+    for (Eigen::Index j = 0; j < n; ++j) d[j] += hinge_at(j) + hinge_at(j + 1);
   for (const LowRankTerm& t : terms)
     for (Eigen::Index j = 0; j < n; ++j) d[j] += t.coef * A_diag(n, j) * t.left.col(j).dot(t.right.col(j));
   return d;
@@ -132,9 +137,9 @@ void saddle_entries(const StructuredMatrix& T, const Matrix& G, double sc, Put p
   auto sv = [&](Eigen::Index j, int t, int a) { return dq(j) + 1 + 2 * t + a; };
   for (Eigen::Index j = 0; j < n; ++j) {
     const Eigen::Index row = dq(j);
-    put(row, row, T.diag[j] + 2.0 * T.cyclic);
-    if (j > 0) put(row, dq(j - 1), -T.cyclic);
-    if (j + 1 < n) put(row, dq(j + 1), -T.cyclic);
+    put(row, row, T.diag[j] + 2.0 * T.cyclic + T.hinge_at(j) + T.hinge_at(j + 1));
+    if (j > 0) put(row, dq(j - 1), -T.cyclic - T.hinge_at(j));
+    if (j + 1 < n) put(row, dq(j + 1), -T.cyclic - T.hinge_at(j + 1));
     for (int t = 0; t < nt; ++t) {
       const LowRankTerm& term = T.terms[t];
       for (int a = 0; a < 2; ++a) {
@@ -158,8 +163,8 @@ void saddle_entries(const StructuredMatrix& T, const Matrix& G, double sc, Put p
       }
     }
   }
-  put(dq(0), core, -T.cyclic);
-  put(dq(n - 1), core + 1, -T.cyclic);
+  put(dq(0), core, -T.cyclic - T.hinge_at(0));  // hinge 0 joins q_0 and q_{n-1}
+  put(dq(n - 1), core + 1, -T.cyclic - T.hinge_at(0));
   put(core, dq(n - 1), -1.0);
   put(core + 1, dq(0), -1.0);
   put(core, core, 1.0);

@@ -36,11 +36,19 @@ struct LowRankTerm {
   Eigen::Matrix2Xd left, right;
 };
 
-/// T = diag(d) + cyclic * (2,-1,-1 cyclic) + sum of terms; n x n, never formed. O(n) memory.
+/// T = diag(d) + cyclic * (2,-1,-1 cyclic) + sum_k hinge_k grad r_k grad r_k^T + sum of
+/// terms, r_k = q_k - q_{k-1} (cyclic) the hinge rotations: the hinges' own tangents (a plastic
+/// law's, bending.hpp; empty: none); n x n, never formed. O(n) memory.
 struct StructuredMatrix {
   Vector diag;
   double cyclic = 0.0;
+  Vector hinge;  ///< per-hinge tangent stiffness on r_k (n entries) or empty
   std::vector<LowRankTerm> terms;
+  /// hinge_k, 0 when there are none (k cyclic).
+  double hinge_at(Eigen::Index k) const {
+    const Eigen::Index n = diag.size();
+    return hinge.size() ? hinge[(k % n + n) % n] : 0.0;
+  }
   Eigen::Index size() const { return diag.size(); }
   /// T x. O(n).
   Vector times(const Vector& x) const;

@@ -4,12 +4,14 @@
 #include "multibody/checks.hpp"
 
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "multibody/attachments.hpp"
+#include "multibody/bending.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
@@ -116,30 +118,46 @@ struct Work {
   Vec V0, R0, xm, w, rx, g, z, scratch;
 };
 
-/// Adds the discrete gradient of an angle spring k (a - a0)^2 / 2 at hinge `at` between its
-/// coordinates y0 and y1 (file comment: the midpoint gradient plus the correction along dy
-/// where that is resolved above round-off) and its exact Jacobian in y1 to rx and the KKT
-/// matrix. `angle(y, hessian)` evaluates a as a Turn; V0 is the energy at y0.
-template <class Angle>
-void add_discrete_spring(const Natural& c, int at, double k, double a0, const Vec6& y0, const Vec6& y1, double V0,
-                         const Angle& angle, Vec& rx, BandedKkt& kkt) {
+/// An angle spring's law at the change d = a - a0 of its angle: energy, moment, tangent
+/// (HingeBending::Point's potential, force, tangent). The elastic spring k d^2 / 2.
+struct Elastic {
+  double k;
+  HingeBending::Point operator()(double d) const {
+    HingeBending::Point p;
+    p.potential = 0.5 * k * d * d;
+    p.force = k * d;
+    p.tangent = k;
+    return p;
+  }
+};
+
+/// Adds the discrete gradient of an angle spring at hinge `at` between its coordinates y0
+/// and y1 (file comment: the midpoint gradient plus the correction along dy where that is
+/// resolved above round-off) and its exact Jacobian in y1 to rx and the KKT matrix.
+/// `angle(y, hessian)` evaluates a as a Turn; `law(a - a0)` the spring's energy, moment and
+/// tangent (Elastic, or a plastic hinge's incremental potential from its committed states:
+/// HingeBending::at, which is C1 and piecewise quadratic); V0 is the energy at y0.
+template <class Angle, class Law>
+void add_discrete_spring(const Natural& c, int at, const Law& law, double a0, const Vec6& y0, const Vec6& y1,
+                         double V0, const Angle& angle, Vec& rx, BandedKkt& kkt) {
   const Vec6 dy = y1 - y0;
   const Turn tm = angle(0.5 * (y0 + y1), true);
-  const double dm = tm.theta - a0;
-  const Vec6 gm = k * dm * tm.d;
-  const Mat6 Hm = k * (tm.d * tm.d.transpose() + dm * tm.dd);
+  const HingeBending::Point pm = law(tm.theta - a0);
+  const Vec6 gm = pm.force * tm.d;
+  const Mat6 Hm = pm.tangent * tm.d * tm.d.transpose() + pm.force * tm.dd;
   Vec6 g = gm;
   Mat6 J = 0.5 * Hm;
   const double ss = dy.squaredNorm();
   const Turn t1 = angle(y1, false);
-  const double V1 = 0.5 * k * (t1.theta - a0) * (t1.theta - a0);
+  const HingeBending::Point p1 = law(t1.theta - a0);
+  const double V1 = p1.potential;
   const double e = V1 - V0 - gm.dot(dy);
   // The correction only where e is resolved above its round-off; elsewhere it would
   // be noise (and its Jacobian noise / |dy|^2), and leaving it out costs an energy
   // error below kResolved eps V per spring and step.
   if (ss > 0 && std::abs(e) > kResolved * kEps * (std::abs(V0) + std::abs(V1) + std::abs(gm.dot(dy)))) {
     g += e / ss * dy;
-    const Vec6 de = k * (t1.theta - a0) * t1.d - 0.5 * Hm * dy - gm;
+    const Vec6 de = p1.force * t1.d - 0.5 * Hm * dy - gm;
     J += dy * de.transpose() / ss + e / ss * (Mat6::Identity() - 2.0 * dy * dy.transpose() / ss);
   }
   add_spring(c, at, g, J, rx, kkt);
@@ -147,8 +165,8 @@ void add_discrete_spring(const Natural& c, int at, double k, double a0, const Ve
 
 /// One step of the scheme from (x0, v0) over h with load factor f at the midpoint;
 /// x1 and lambda are the starting guess and the result.
-Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, double h, double f, Vec& x1,
-          Vec& lambda, BandedKkt& kkt, Work& work) {
+Step step(const Natural& c, const Terms& terms, const HingeBending* bending, const Vec& x0, const Vec& v0, double h,
+          double f, Vec& x1, Vec& lambda, BandedKkt& kkt, Work& work) {
   const int N = 2 * c.n;
   const double cm = 2.0 / (h * h);
   const double s = 0.25 * c.m, r = c.Jr / (c.l * c.l);
@@ -157,9 +175,12 @@ Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, do
   NewtonStop stop(c.radius());
   // The angle springs' energies at x0 (constant over the iterations).
   Vec &V0 = work.V0, &R0 = work.R0;
+  // ring.plastic: each hinge's incremental potential from its committed states (bending.hpp),
+  // whose discrete gradient makes the hinge's work over the step the change of the stored
+  // energy plus the step's plastic work (ring/plastic.hpp).
   for (int k = 0; k < c.n; ++k) {
     const double d0 = turn_angle(local(c, x0, k)) - c.theta0;
-    V0[k] = 0.5 * c.K * d0 * d0;
+    V0[k] = bending ? bending->potential(k, d0) : 0.5 * c.K * d0 * d0;
   }
   for (int k : terms.rotations()) {
     const double a = terms.rotation(k, local(c, x0, k), false).theta;
@@ -182,11 +203,16 @@ Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, do
     // Constraint forces at the midpoint: d/dx1 of G(xm)^T lambda = 1/2 sum lambda_i Hess c_i.
     add_constraint_curvature(c, lambda, 0.5, kkt);
     // Springs: each one's discrete gradient and its exact Jacobian in y1.
-    for (int k = 0; k < c.n; ++k)
-      add_discrete_spring(c, k, c.K, c.theta0, local(c, x0, k), local(c, x1, k), V0[k], turning, rx, kkt);
+    for (int k = 0; k < c.n; ++k) {
+      if (bending)
+        add_discrete_spring(c, k, [&](double d) { return bending->at(k, d); }, c.theta0, local(c, x0, k),
+                            local(c, x1, k), V0[k], turning, rx, kkt);
+      else
+        add_discrete_spring(c, k, Elastic{c.K}, c.theta0, local(c, x0, k), local(c, x1, k), V0[k], turning, rx, kkt);
+    }
     for (int k : terms.rotations())
       add_discrete_spring(
-          c, k, terms.attached().rotation_stiffness(k), 0.0, local(c, x0, k), local(c, x1, k), R0[k],
+          c, k, Elastic{terms.attached().rotation_stiffness(k)}, 0.0, local(c, x0, k), local(c, x1, k), R0[k],
           [&](const Vec6& y, bool hessian) { return terms.rotation(k, y, hessian); }, rx, kkt);
     terms.add_springs(xm, rx, kkt);
     // Constraint rows and multiplier columns scaled by the inertia's diagonal so that the
@@ -224,8 +250,8 @@ Step step(const Natural& c, const Terms& terms, const Vec& x0, const Vec& v0, do
 class EnergyMomentumStepper : public paths::Stepper {
  public:
   EnergyMomentumStepper(const Chain& chain, const Natural& c, const Terms& terms,
-                        const ring::ResponseOptions& response, double depth)
-      : chain_(chain), c_(c), terms_(terms), response_(response), gap_(detail::contact_gap(chain, depth)),
+                        const ring::ResponseOptions& response, double depth, HingeBending* bending)
+      : chain_(chain), c_(c), terms_(terms), response_(response), bending_(bending), gap_(detail::contact_gap(chain, depth)),
         depth_(depth), x_(rest(chain)), v_(Vec::Zero(2 * c.n)), lambda_(Vec::Zero(c.rows())), kkt_(c),
         buffers_(c) {
     for (double a : response.record) rec_.push_back(chain.hinge_at(a));
@@ -236,12 +262,13 @@ class EnergyMomentumStepper : public paths::Stepper {
     x1_ = x_ + h * v_;
     l1_ = lambda_;
     f_ = response_.history.factor(t + 0.5 * h);
-    const Step st = step(c_, terms_, x_, v_, h, f_, x1_, l1_, kkt_, buffers_);
+    const Step st = step(c_, terms_, bending_, x_, v_, h, f_, x1_, l1_, kkt_, buffers_);
     return {st.converged, false, st.iterations, f_};
   }
 
   void accept(double) override {
     work_ += terms_.work(x_, x1_, f_);
+    if (bending_) bending_->commit(turning_changes(c_, x1_));  // the step's states become the committed ones
     v_ = 2.0 / h_ * (x1_ - x_) - v_;
     x_.swap(x1_);
     lambda_.swap(l1_);
@@ -259,7 +286,14 @@ class EnergyMomentumStepper : public paths::Stepper {
     Vec mv = mass_times(c_, v_);
     add_point_masses(c_, terms_.attached(), 1.0, v_, &mv, nullptr);
     out.kinetic = 0.5 * v_.dot(mv);
-    out.strain = spring_energy(c_, x_) + terms_.energy(c_, x_);
+    if (bending_) {  // the elastic energy stored in the committed states, and their plastic work
+      const Vec e = turning_changes(c_, x_);
+      for (int k = 0; k < c_.n; ++k) out.strain += bending_->stored(k, e[k]);
+      out.plastic = bending_->dissipated();
+    } else {
+      out.strain = spring_energy(c_, x_);
+    }
+    out.strain += terms_.energy(c_, x_);
     out.work = work_;
     out.constraint_residual = constraints(c_, x_).head(c_.n).cwiseAbs().maxCoeff();
     return out;
@@ -282,6 +316,7 @@ class EnergyMomentumStepper : public paths::Stepper {
   const Natural& c_;
   const Terms& terms_;
   const ring::ResponseOptions& response_;
+  HingeBending* bending_;  ///< ring.plastic's hinges, or null
   const int gap_;
   const double depth_;
   std::vector<int> rec_;
@@ -303,13 +338,14 @@ ring::TimeHistory respond_energy_momentum(const ring::RingSpec& spec, const ring
   const Terms terms(chain, spec, response.loads);
   const Natural c = make_natural(chain, terms.attached().pinned_hinges());
 
-  EnergyMomentumStepper stepper(chain, c, terms, response, spec.section.depth());
+  std::optional<HingeBending> bending;  // ring.plastic: the hinges' law and committed states
+  if (spec.plastic) bending.emplace(spec, chain);
+  EnergyMomentumStepper stepper(chain, c, terms, response, spec.section.depth(), bending ? &*bending : nullptr);
   // The scheme conserves the balance to round-off; a gain is a failure as for the other
   // integrators (the one rule: ring/energy_guard.hpp).
   ring::EnergyGuard guard(spec, c.n, ring::load_scale(spec, response.loads));
   ring::TimeHistory th = paths::integrate(
-      stepper, detail::response_grid(response, controls, guard, "multibody::respond (energy-momentum)"),
-      response.record);
+      stepper, detail::response_grid(response, controls, guard, "multibody::respond (energy-momentum)"), response.record);
   th.solver = "multibody";
   th.unknowns = c.size();
   th.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -37,6 +37,16 @@
 // included): quadratic convergence. Damping is not offered (the scheme's point is the
 // undamped balance; use newmark).
 //
+// ## ring.plastic: the discrete gradient of the incremental potential
+// A plastic hinge's spring energy is its incremental potential from the states committed at
+// the start of the step (bending.hpp, ring/plastic.hpp): psi(e) = int M de along the return
+// map, C1 and piecewise quadratic, whose gradient is the moment. Its discrete gradient makes
+// the hinge's work over the step psi(e_{n+1}) - psi(e_n) = (stored energy after the step's
+// commit) - (stored before) + (the step's plastic work), so kinetic + stored + dissipated - W
+// is conserved to the Newton tolerance: what the discrete gradient means with dissipation is
+// that the plastic work of each step is the part of the hinge's work that the committed
+// state does not store. The states are committed at accepted steps only.
+//
 // Cost: per Newton iteration O(n) assembly and one banded LU with a border
 // (natural::BandedKkt) of the (3n + supports) KKT matrix: O(n).
 #pragma once

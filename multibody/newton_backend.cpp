@@ -15,8 +15,9 @@ namespace {
 class DenseBackend final : public NewtonBackend {
  public:
   DenseBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
-               const Attachments* terms, const Sections* sections, const HingeInertias* hinges)
-      : NewtonBackend(chain, load, damping, loading, terms, sections, hinges),
+               const Attachments* terms, const Sections* sections, const HingeInertias* hinges,
+               const HingeBending* bending)
+      : NewtonBackend(chain, load, damping, loading, terms, sections, hinges, bending),
         inertia_(inertia_constants(chain, terms)),
         K_(chain.stiffness_matrix()),
         n_(chain.dofs()),
@@ -84,7 +85,10 @@ class DenseBackend final : public NewtonBackend {
     std::optional<Eigen::Ref<Matrix>> tc;
     if (tangent) {
       T_.setZero(N_, N_);
-      if (!sections_) T_.topLeftCorner(n_, n_) = K_;
+      if (bending_)  // the hinges' tangents at the iterate, from their committed states
+        bending_->add_tangent_on_angles(chain_, qc, T_.topLeftCorner(n_, n_));
+      else if (!sections_)
+        T_.topLeftCorner(n_, n_) = K_;
       tc.emplace(T_.topLeftCorner(n_, n_));
     }
     Vector rc;
@@ -155,7 +159,7 @@ class DenseBackend final : public NewtonBackend {
     Vector e = Vector::Zero(N_);
     const Vector qc = q.head(n_);
     if (sections_) sections_->add_forces(q, e);
-    else e.head(n_) = chain_.spring_forces(qc);
+    else e.head(n_) = bending_ ? bending_->forces_on_angles(chain_, qc) : chain_.spring_forces(qc);
     if (hinges_) hinges_->add_forces(q, e);
     if (terms && terms_) {
       Vector et = Vector::Zero(n_);
@@ -176,8 +180,9 @@ class DenseBackend final : public NewtonBackend {
 /// point loads, gravity, dead pressure), whose stiffness is diagonal in the angles.
 class StructuredBackend final : public NewtonBackend {
  public:
-  StructuredBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading)
-      : NewtonBackend(chain, load, damping, loading) {}
+  StructuredBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading,
+                    const HingeBending* bending)
+      : NewtonBackend(chain, load, damping, loading, nullptr, nullptr, nullptr, bending) {}
 
   Vector damping_times(const Vector& v) const override {
     Vector y = damping_.mass * chain_.mass_times(chain_.q0(), v);
@@ -190,7 +195,7 @@ class StructuredBackend final : public NewtonBackend {
   bool initial_acceleration(const Vector& q, const Vector& v, double f, Vector& qdd, Vector& lambda) const override {
     Vector phi;
     forces(q, phi, nullptr);
-    const Vector b = f * phi - chain_.quadratic_velocity(q, v) - damping_times(v) - chain_.spring_forces(q);
+    const Vector b = f * phi - chain_.quadratic_velocity(q, v) - damping_times(v) - springs(q);
     SparseSaddle lu;
     return lu.factor(mass_structured(chain_, q), chain_.constraint_jacobian(q), 1.0) &&
            lu.solve(b, -chain_.constraint_jdot_qdot(q, v), qdd, lambda, 2);
@@ -203,7 +208,13 @@ class StructuredBackend final : public NewtonBackend {
     if (tangent) {
       T_ = StructuredMatrix{};
       T_.diag = Vector::Zero(q.size());
-      T_.cyclic = chain_.K();
+      if (bending_) {  // the hinges' tangents at the iterate, from their committed states
+        const Vector r = chain_.hinge_rotations(q);
+        T_.hinge.resize(r.size());
+        for (Eigen::Index k = 0; k < r.size(); ++k) T_.hinge[k] = bending_->tangent(static_cast<int>(k), r[k]);
+      } else {
+        T_.cyclic = chain_.K();
+      }
     }
     inertia_terms_structured(chain_, q, v, qdd, cm, cv, r, tangent ? &T_ : nullptr);
     if (tangent && damping_.any()) {
@@ -215,12 +226,17 @@ class StructuredBackend final : public NewtonBackend {
         T_.terms.push_back(std::move(M0.terms[0]));
       }
     }
-    r += chain_.spring_forces(q) - f * phi;
+    r += springs(q) - f * phi;
     if (damping_.any()) r += damping_times(v);
     if (tangent) T_.diag -= f * dphi;
   }
 
   void add_to_tangent_diagonal(const Vector& d) override { T_.diag += d; }
+
+  /// The hinge springs' forces on the angles: the elastic K theta, or the hinges' law. O(n).
+  Vector springs(const Vector& q) const {
+    return bending_ ? bending_->forces_on_angles(chain_, q) : chain_.spring_forces(q);
+  }
 
   /// The loads' generalized forces phi at q and, if `dphi`, their derivative's diagonal (the
   /// whole of it: load_forces.hpp's point load and constant hinge forces). O(n).
@@ -270,12 +286,12 @@ Vector NewtonBackend::load_forces_at(const Vector& q, double f, Eigen::Ref<Matri
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading,
                                                    const Attachments* terms, const Sections* sections,
-                                                   const HingeInertias* hinges) {
+                                                   const HingeInertias* hinges, const HingeBending* bending) {
   if (structured && ((loading && loading->shape_dependent()) || terms || sections || hinges))
     throw std::invalid_argument(
         "multibody: the O(n) response takes the paper's Euler-Bernoulli ring and constant loads only");
-  if (structured) return std::make_unique<StructuredBackend>(chain, load, damping, loading);
-  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges);
+  if (structured) return std::make_unique<StructuredBackend>(chain, load, damping, loading, bending);
+  return std::make_unique<DenseBackend>(chain, load, damping, loading, terms, sections, hinges, bending);
 }
 
 }  // namespace multibody::detail

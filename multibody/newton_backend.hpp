@@ -18,6 +18,12 @@
 // the dampers follow the split hinge springs. Point masses add to the chain's inertia
 // constants (their mass has its structure); further pins add constraint rows.
 //
+// ring.plastic (both backends, Euler–Bernoulli chain without point inertias: checks.cpp):
+// the hinge springs follow the hinges' law (bending.hpp) at every iterate, from the states
+// committed at the last accepted step: their moments in the residual, their tangents in T in
+// place of the constant K (the structured T: StructuredMatrix::hinge, per hinge). The caller
+// commits the states when it accepts a step.
+//
 // The Newton matrix is the scaled saddle-point system
 //   [T G^T; G 0] [dq; dl] = [-r; -g],
 // rows of g and columns of lambda multiplied by s = max|T_jj| / l so that both blocks
@@ -27,6 +33,7 @@
 
 #include <memory>
 
+#include "multibody/bending.hpp"
 #include "multibody/chain.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/attachments.hpp"
@@ -78,9 +85,9 @@ class NewtonBackend {
  protected:
   NewtonBackend(const Chain& chain, const DeadLoad& load, const Damping& damping, const Loading* loading = nullptr,
                 const Attachments* terms = nullptr, const Sections* sections = nullptr,
-                const HingeInertias* hinges = nullptr)
+                const HingeInertias* hinges = nullptr, const HingeBending* bending = nullptr)
       : chain_(chain), load_(load), damping_(damping), loading_(loading), terms_(terms), sections_(sections),
-        hinges_(hinges) {}
+        hinges_(hinges), bending_(bending) {}
   /// The loads' generalized forces at q (the dead point load, or `loading`'s), and, if
   /// `tangent` is not null, f times their stiffness added to it.
   Vector load_forces_at(const Vector& q, double f, Eigen::Ref<Matrix>* tangent) const;
@@ -91,6 +98,7 @@ class NewtonBackend {
   const Attachments* terms_;
   const Sections* sections_;
   const HingeInertias* hinges_;
+  const HingeBending* bending_;  ///< ring.plastic's hinges (their committed states), or null: K
   bool valid_ = false;
   double h_ = 0.0;
   double sc_ = 1.0;  ///< the constraint rows' scale of the last factorization
@@ -100,11 +108,13 @@ class NewtonBackend {
 /// beyond one point load: on the structured one without a shape-dependent part), `terms`
 /// (foundation, springs, clamp, point masses, further pins), `sections` (the Timoshenko
 /// chain: the unknowns become (phi, gamma)) and `hinges` (point inertias: the unknowns
-/// become (phi, [gamma,] chi)) on the dense one only.
+/// become (phi, [gamma,] chi)) on the dense one only; `bending` (ring.plastic: the hinges'
+/// law, read at every residual) on both.
 std::unique_ptr<NewtonBackend> make_newton_backend(const Chain& chain, const DeadLoad& load, const Damping& damping,
                                                    bool structured, const Loading* loading = nullptr,
                                                    const Attachments* terms = nullptr,
                                                    const Sections* sections = nullptr,
-                                                   const HingeInertias* hinges = nullptr);
+                                                   const HingeInertias* hinges = nullptr,
+                                                   const HingeBending* bending = nullptr);
 
 }  // namespace multibody::detail

@@ -1,5 +1,7 @@
 #include "multibody/options.hpp"
 
+#include "ring/section_law.hpp"
+
 #include "multibody/backend.hpp"
 
 namespace multibody {
@@ -84,6 +86,11 @@ double memory_estimate(const ring::RingSpec& spec, const ring::MultibodyOptions&
                                 ? (terms ? 1750.0 : 1300.0) * n
                                 : (shear ? 68.0 : 60.0) * n * n);
   }
+  // ring.plastic: the hinges' committed states (bending.hpp), 16 bytes each, one per hinge
+  // (resultant) or SectionLaw::kFibres (fibre), and the committed strains; counted, not
+  // measured (1 KB per segment for the fibre law: the O(n) statics' own size again).
+  if (spec.plastic && (q.response || q.statics))
+    bytes += n * (8.0 + 16.0 * (spec.plastic->law == ring::Plastic::Law::fibre ? ring::SectionLaw::kFibres : 1));
   return bytes;
 }
 

@@ -97,9 +97,10 @@ class StaticEquilibrium : public paths::Equilibrium {
   /// Commits the hinges' plastic states at `to` (bending.hpp), records it, checks contact.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override;
   /// ring.plastic: the plastic work of the accepted path so far (J), and the largest plastic
-  /// rotation over the segment length (1/m). 0 for the elastic law.
+  /// curvature (the hinge's plastic rotation over the segment length, 1/m). 0 for the
+  /// elastic law.
   double dissipated() const { return bending_.dissipated(); }
-  double plastic_curvature() const { return bending_.largest_plastic_rotation() / chain_.l(); }
+  double plastic_curvature() const { return bending_.largest_plastic_curvature(); }
   const HingeBending& bending() const { return bending_; }
   /// Distance between the closest non-neighbouring segments minus the section depth. O(n).
   std::optional<double> clearance(const paths::State& x) override;

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "compare/pairs.hpp"
 #include "ring/errors.hpp"
 #include "ring/scene.hpp"
 
@@ -151,6 +152,16 @@ Modes to_python(const ring::ModalResult& m) {
   o.max_residual = m.max_residual;
   o.residual_norm = m.residual_norm;
   o.error_estimate = m.error_estimate;
+  for (const auto& p : cmp::split_pairs(m)) {
+    py::dict d;
+    d["wave"] = p.wave;
+    d["modes"] = py::make_tuple(p.lower, p.upper);
+    d["omega"] = py::make_tuple(p.omega_lower, p.omega_upper);
+    d["split"] = p.split();
+    d["relative_split"] = p.relative();
+    d["orientation_deg"] = p.orientation;
+    o.pairs.append(d);
+  }
   return o;
 }
 

@@ -33,6 +33,7 @@ struct Modes {
   double seconds = 0.0, error_estimate = 0.0;
   std::optional<double> max_residual;  ///< None where the solver reports none (ccx, imports)
   std::string residual_norm;
+  py::list pairs;  ///< the split pairs (compare/pairs.hpp): dicts as modes --json's "pairs"
 };
 Modes to_python(const ring::ModalResult& m);
 

@@ -23,6 +23,7 @@
 #include "compare/runner.hpp"
 #include "compare/sweep.hpp"
 #include "compare/table.hpp"
+#include "compare/trim.hpp"
 #include "python/convert.hpp"
 #include "ring/errors.hpp"
 #include "ring/scene.hpp"
@@ -327,6 +328,11 @@ PYBIND11_MODULE(ringvib, m) {
                     "modes, in the norm residual_norm names (docs/commands.md, `modes --json`); None where the solver\n"
                     "reports none (calculix).")
       .def_readonly("residual_norm", &Modes::residual_norm)
+      .def_readonly("pairs", &Modes::pairs,
+                    "The pairs of modes the scene's terms split (masses, springs, supports): a list of dicts\n"
+                    "{wave, modes (lower, upper; 1-based), omega (rad/s), split (rad/s), relative_split (of the\n"
+                    "pair's mean), orientation_deg (the lower mode's radial antinode, in [0, 180/wave))}, as\n"
+                    "`modes --json`'s \"pairs\"; empty for a perfect ring.")
       .def_readonly("error_estimate", &Modes::error_estimate,
                     "Estimated remaining relative error of a converged reference (0: not estimated).")
       .def_property_readonly(
@@ -554,6 +560,52 @@ PYBIND11_MODULE(ringvib, m) {
       "The comparison of buckling.solvers (and the reference), paired by MAC: the rows of\n"
       "`ringvib buckling SCENE --format json` (mode, <solver> load factor, <solver>_diff_pct,\n"
       "reference, <solver>_error_pct in %; None where not defined).");
+
+  m.def(
+      "trim",
+      [](const Scene& s, int mode, std::vector<double> at, const std::string& solver, double tolerance,
+         double max_memory_gib, bool force) {
+        cmp::TrimArgs t;
+        t.mode = mode;
+        t.at = std::move(at);
+        t.solver = solver;
+        t.tolerance = tolerance;
+        const cmp::TrimResult r = released([&] {
+          return input_checked(s.scene, [&] {
+            cmp::check_runnable(s.scene, max_memory_gib, force);
+            return cmp::run_trim(s.text, s.name, s.overrides, t);
+          });
+        });
+        py::dict out;
+        out["mode"] = r.mode;
+        out["wave"] = r.wave;
+        out["solver"] = r.solver;
+        py::list masses;
+        for (std::size_t i = 0; i < r.masses.size(); ++i) {
+          py::dict d;
+          d["at"] = r.at[i];
+          d["mass"] = r.masses[i];
+          masses.append(d);
+        }
+        out["masses"] = masses;
+        out["split_before"] = r.before.relative();
+        out["split_after"] = r.after.wave ? r.after.relative() : 0.0;
+        out["orientation_before"] = r.before.orientation;
+        out["steps"] = r.steps;
+        out["scene"] = Scene::parse(r.trimmed_scene, s.name, s.overrides);
+        return out;
+      },
+      py::arg("scene"), py::arg("mode"), py::arg("at"), py::kw_only(), py::arg("solver") = "",
+      py::arg("tolerance") = 1e-6, py::arg("max_memory_gib") = 8.0, py::arg("force") = false,
+      (std::string("`ringvib trim SCENE --mode N --at A,B`: the point masses at the angles `at` (one or two,\n"
+                   "degrees, nodes of every model) that cancel the split of the pair holding mode `mode`\n"
+                   "(1-based), measured by `solver` (default: the scene's first modal solver) down to the\n"
+                   "relative `tolerance`. A dict with mode, wave, solver, masses ([{at, mass (kg)}]),\n"
+                   "split_before, split_after (relative to the pair's mean frequency), orientation_before\n"
+                   "(deg), steps and scene (the trimmed Scene). InputError for angles that cannot trim the\n"
+                   "pair; NumericalError when a mass would have to be negative or the split stays. ") +
+       kBudgetDoc)
+          .c_str());
 
   m.def(
       "converge",

@@ -1,7 +1,7 @@
 # Type stubs of the ringvib module (python/module.cpp), for editors and type checkers.
 # tests/python/test_stubs.py holds them to the module: every public name and attribute here
 # exists there and the other way round. Units are in each docstring (help(ringvib.modes)).
-from typing import Any, Callable, Mapping, Optional
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -66,6 +66,8 @@ class Modes:
     def max_residual(self) -> Optional[float]: ...
     @property
     def residual_norm(self) -> str: ...
+    @property
+    def pairs(self) -> List[Dict[str, Any]]: ...
 
 class Static:
     """One solver's nonlinear static equilibrium (`ringvib static --json`)."""
@@ -126,6 +128,8 @@ def table(scene: Scene, *, paper: bool = False, max_memory_gib: float = 8.0, for
 def static(scene: Scene, solver: str = "", *, max_memory_gib: float = 8.0, force: bool = False) -> Static: ...
 def respond(scene: Scene, solver: str = "", *, max_memory_gib: float = 8.0, force: bool = False) -> Response: ...
 def buckling(scene: Scene, solver: str = "", *, max_memory_gib: float = 8.0, force: bool = False) -> dict[str, Any]: ...
+def trim(scene: Scene, mode: int, at: Sequence[float], *, solver: str = "", tolerance: float = 1e-6,
+         max_memory_gib: float = 8.0, force: bool = False) -> dict[str, Any]: ...
 def converge(scene: Scene, *, max_memory_gib: float = 8.0, force: bool = False) -> dict[str, Any]: ...
 def sweep(scene: Scene, vary: Mapping[str, list[Any]], *, zip: bool = False, jobs: int = 0,
           progress: Optional[Callable[[int, int, int], None]] = None, max_memory_gib: float = 8.0,

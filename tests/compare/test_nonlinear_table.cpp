@@ -76,6 +76,26 @@ TEST(NonlinearTable, DifferencesAndErrorsFollowTheirDefinitions) {
   EXPECT_TRUE(j["rows"][2]["multibody_error_pct"].is_null());  // the pin
 }
 
+// A plastic response: where each point ends (|u| at the last step, the residual once the
+// load is gone) and the plastic work at the end; an elastic history beside it has no work
+// (an empty cell). Oracle: 1 - cos(w t) at t = 2 s, w = 2, times a; the works by hand.
+TEST(NonlinearTable, APlasticResponseAddsTheEndDisplacementAndThePlasticWork) {
+  auto mb = step_response("multibody", 1.0, 2.0), lm = step_response("lumped", 1.1, 2.0);
+  mb.dissipated.assign(mb.t.size(), 0.0);
+  mb.dissipated.back() = 3.0;
+  const auto elastic = step_response("fem", 1.0, 2.0);
+  const auto t = cmp::response_table("t", {mb, lm, elastic}, nullptr);
+  EXPECT_NEAR(row(t, 0.0, "u_end").value[0], 1.0 * (1.0 - std::cos(4.0)), 1e-12);
+  EXPECT_NEAR(row(t, 0.0, "u_end").value[1], 1.1 * (1.0 - std::cos(4.0)), 1e-12);
+  const auto& d = row(t, cmp::NonlinearRow::kWholeRing, "dissipated");
+  EXPECT_EQ(d.value[0], 3.0);
+  EXPECT_TRUE(std::isnan(d.value[1]) && std::isnan(d.value[2]));
+  EXPECT_NE(cmp::format_text(t).find("dissipated: plastic work (J)"), std::string::npos);
+  // An elastic comparison has neither row.
+  const auto plain = cmp::response_table("t", {step_response("multibody", 1.0, 2.0)}, nullptr);
+  for (const auto& r : plain.rows) EXPECT_TRUE(r.quantity == "peak_u" || r.quantity == "t_peak") << r.quantity;
+}
+
 // Oracle: |u| = hypot(ux, uy) = 5 for (3, 4); errors by hand.
 TEST(NonlinearTable, StaticsCompareComponentsAndMagnitude) {
   const auto ref = equilibrium("reference", -3.0, 4.0);

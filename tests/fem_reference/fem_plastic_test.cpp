@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -26,8 +27,10 @@
 #include "fem_reference/checks.hpp"
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
+#include "ring/section_law.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
+#include "support/fibre_ring.hpp"
 #include "support/paper.hpp"
 #include "support/plastic_ring.hpp"
 #include "support/refusal.hpp"
@@ -273,19 +276,175 @@ TEST(FemPlastic, HugePlasticMomentGivesTheElasticResults) {
 TEST(FemPlastic, AnalysesWithoutThePlasticLawRefuseIt) {
   const ring::RingSpec spec = pinched_ring();
   const ring::FemOptions o = fem_options(32);
-  ring::ResponseOptions rs;
-  rs.dt = 0.01;
-  rs.t_end = 0.1;
-  EXPECT_EQ(ringtest::refused_key([&] { fem::check_response(spec, o, rs); }), "ring.plastic");
   ring::BucklingOptions b;
   b.loads = pinch(1.0).loads;
   EXPECT_EQ(ringtest::refused_key([&] { fem::check_buckling(spec, o, b); }), "ring.plastic");
   EXPECT_EQ(ringtest::refused_key([&] { fem::check_preloaded_modes(spec, o, pinch(1.0, {})); }), "ring.plastic");
+  // The fibre law needs the section's shape: {area, inertia} has none.
   ring::RingSpec fibre = spec;
   fibre.plastic->law = ring::Plastic::Law::fibre;
   fibre.plastic->stress = 2.5e8;
-  EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(fibre, o, pinch(1.0)); }), "ring.plastic.stress");
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(fibre, o, pinch(1.0)); }), "");
+  ring::RingSpec shapeless = fibre;
+  shapeless.section.shape = ring::Section::Shape::general;
+  shapeless.section.area_ = spec.A();
+  shapeless.section.inertia_ = spec.I();
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(shapeless, o, pinch(1.0)); }), "ring.plastic.stress");
   EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(spec, o, pinch(1.0)); }), "");
+}
+
+// ---- The fibre law (ring.plastic.stress) against ringtest::FibrePinchedRing ----
+
+/// The paper's ring pinched as above with the fibre law: sigma_y such that the fully plastic
+/// moment sigma_y Z (Z = d^3 / 6, the solid circle) is Mp_over_EI_R EI / R, hardening 0. So
+/// P_c = 4 Mp / R as the resultant ring's and the first yield My = Mp 3 pi / 16 is lower.
+ring::RingSpec fibre_pinched_ring(double Mp_over_EI_R = 1e-4) {
+  ring::RingSpec s = pinched_ring(Mp_over_EI_R);
+  s.plastic->law = ring::Plastic::Law::fibre;
+  s.plastic->stress = s.plastic->moment / (std::pow(s.section.diameter, 3) / 6.0);
+  s.plastic->moment = 0.0;
+  return s;
+}
+
+/// The oracle on the FE's own section law (ring::SectionLaw's 64 fibres, monotonic from the
+/// virgin state, as the pinch loads every point; fibre_ring.hpp), so that the structure's
+/// discretization is measured apart from the section's. Its kinks: the moments where a
+/// fibre's yield is reached, found where the tangent steps (h = 0: it steps at every |y|).
+ringtest::FibrePinchedRing section_oracle(const ring::RingSpec& spec) {
+  auto law = std::make_shared<ring::SectionLaw>(spec);
+  auto states = std::make_shared<std::vector<ring::PlasticState>>(law->states());
+  auto moment = [law, states](double kappa) { return law->at(states->data(), kappa).force; };
+  auto tangent = [law, states](double kappa) { return law->at(states->data(), kappa).tangent; };
+  const ringtest::FibrePinchedRing closed(spec);
+  const double ky = closed.first_yield_moment() / closed.EI();
+  std::vector<double> kinks;
+  // The outermost fibre yields first, the innermost last (at ~64 / 1.5 ky for 64 fibres);
+  // 4000 geometric steps to 1e4 ky separate every pair of neighbouring fibres.
+  double k0 = 0.5 * ky;
+  for (int i = 1; i <= 4000; ++i) {
+    const double k1 = 0.5 * ky * std::pow(2e4, i / 4000.0);
+    if (tangent(k1) != tangent(k0)) {
+      double lo = k0, hi = k1;
+      for (int it = 0; it < 100; ++it) ((tangent(0.5 * (lo + hi)) == tangent(k0)) ? lo : hi) = 0.5 * (lo + hi);
+      kinks.push_back(moment(hi));
+    }
+    k0 = k1;
+  }
+  return ringtest::FibrePinchedRing(spec, moment, kinks);
+}
+
+/// The closing of one mesh at the full load P (one leg), m, and its plastic work, J.
+std::pair<double, double> fibre_closing(const ring::RingSpec& spec, int n, double P) {
+  const fem::StaticPath path = fem::trace_static(spec, fem_options(n), pinch(P, {1.0}));
+  if (!path.reached) throw std::runtime_error("n = " + std::to_string(n) + ": " + path.failure);
+  return {closing(path.result), path.result.dissipated};
+}
+
+/// Below first yield P_y = pi My / R (My = sigma_y I / c) nothing yields and the closing is
+/// the elastic beam's (the bending points' rule against the elastic beam's Gauss points, as
+/// the resultant law's: bound 1e-7); just above it, the outer fibres under the loads flow
+/// (measured at 1.05 P_y: plastic work 5.6e-8 J, the closing 7.6e-5 from the oracle's).
+TEST(FemFibre, NoPlasticWorkBelowFirstYieldAndSomeAbove) {
+  const ring::RingSpec spec = fibre_pinched_ring();
+  ring::RingSpec elastic = spec;
+  elastic.plastic.reset();
+  const ringtest::FibrePinchedRing o(spec);
+  const double below = 0.95 * o.first_yield(), above = 1.05 * o.first_yield();
+  const fem::StaticPath path = fem::trace_static(spec, fem_options(32), pinch(below, {1.0}));
+  const fem::StaticPath e = fem::trace_static(elastic, fem_options(32), pinch(below, {1.0}));
+  ASSERT_TRUE(path.reached && e.reached);
+  EXPECT_EQ(path.result.dissipated, 0.0);
+  EXPECT_EQ(path.result.plastic_curvature, 0.0);
+  for (const auto& x : path.points) EXPECT_EQ(x.dissipated, 0.0);
+  EXPECT_TRUE(ringtest::IsClose(closing(path.result), closing(e.result), 1e-7));
+  const auto [delta, dissipated] = fibre_closing(spec, 32, above);
+  std::printf("fibre: 1.05 P_y: closing %.6e m (oracle %.6e m), plastic work %.3e J\n", delta, o.closing(above),
+              dissipated);
+  EXPECT_GT(dissipated, 0.0);
+}
+
+/// The closing at loads between P_y and 0.9 P_c, Mp = 1e-6 EI / R (so that the geometric
+/// deviation O(delta / R) ~ 1e-6 stays below the discretization errors fitted): against the
+/// oracle on the FE's own section law, converging in elements at the fitted order; against the
+/// closed-form circle, within that plus the 64 fibres' quadrature (the two oracles' difference,
+/// measured here, below 1e-3: tests/ring/test_plastic.cpp bounds the moment's error by 1e-3).
+/// The expected orders:
+///  - 0.60 and 0.74 P_c: 2. The 64 fibres' law M(kappa) has a kink (a step of its tangent)
+///    where each fibre yields, so the curvature along the ring has slope kinks inside the
+///    cells, each costing the cell's polynomial O(h^2); their count is fixed. Measured
+///    (n = 16 ... 64): 1.7e-3 ... 5.7e-5, order 2.45 +- 0.13; 1.7e-2 ... 6.9e-4, 2.27 +- 0.23.
+///  - 0.9 P_c: 1/2. Near collapse the curvature under the loads peaks like
+///    (d + |s|)^(-1/2) (the solid circle's kappa ~ (Mp - M)^(-1/2), M linear in s), whose
+///    integral over the first cell a polynomial misses by O(h^(1/2)) until h falls below d;
+///    the vertex hinge (plastic_points.hpp) carries most of it. Measured: 1.9e-3, 1.4e-3,
+///    1.2e-3, 1.1e-3, 9.7e-4, order 0.44 +- 0.06 (without the vertex hinges: 18 % at n = 32).
+/// Tolerances: 0.5 on the orders 2 (the standard errors, two to four times), 0.2 on the 1/2
+/// (three standard errors); ceilings twice the finest errors measured.
+TEST(FemFibre, ClosingConvergesInElementsToTheOracle) {
+  const ring::RingSpec spec = fibre_pinched_ring(1e-6);
+  const ringtest::FibrePinchedRing closed(spec);
+  const ringtest::FibrePinchedRing oracle = section_oracle(spec);
+  const std::vector<int> ns = {16, 24, 32, 48, 64};
+  const double near_collapse = 0.9 * closed.collapse() / closed.first_yield();
+  for (const auto& [load, order, tolerance, ceiling] :
+       {std::tuple<double, double, double, double>{1.3, 2.0, 0.5, 1.2e-4},
+        {1.6, 2.0, 0.5, 1.4e-3},
+        {near_collapse, 0.5, 0.2, 2e-3}}) {
+    const double P = load * closed.first_yield();
+    const double exact = oracle.closing(P), form = closed.closing(P);
+    std::vector<double> errors;
+    for (int n : ns) {
+      errors.push_back(ringtest::rel(fibre_closing(spec, n, P).first, exact));
+      std::printf("fibre, P = %.3f P_y (%.3f P_c), n = %3d: closing error %.3e\n", load,
+                  P / closed.collapse(), n, errors.back());
+    }
+    const ringtest::Order fit = ringtest::fit_order(ringtest::in_n(ns, errors));
+    std::printf("fibre, P = %.3f P_c: fitted order %.3f +- %.3f, finest %.3e; section oracle against the closed form "
+                "%.3e\n",
+                P / closed.collapse(), fit.order, fit.standard_error, fit.finest_error, ringtest::rel(exact, form));
+    EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), order, tolerance, ceiling)) << "P = " << load << " P_y";
+    EXPECT_LT(ringtest::rel(exact, form), 1e-3);
+  }
+}
+
+/// The geometric deviation at Mp = 1e-4 EI / R: at small displacement the closing is
+/// proportional to Mp at a load proportional to Mp (the oracle's closing / Mp is a function of
+/// P R / Mp alone), so the FE at Mp = 1e-4 EI / R against 100 times the FE at 1e-6 EI / R, on
+/// the same mesh (64 cells, so the same discretization), at 0.9 P_c, measures the geometrically
+/// exact, extensible beam's deviation: within 4 delta / R (the resultant ring's bound above).
+/// Measured 1.57e-4 (delta / R = 8.7e-5).
+TEST(FemFibre, GeometricDeviationIsOfOrderDeltaOverR) {
+  const ring::RingSpec spec = fibre_pinched_ring(), small = fibre_pinched_ring(1e-6);
+  const double P = 0.9 * ringtest::FibrePinchedRing(spec).collapse();
+  const double Ps = 0.9 * ringtest::FibrePinchedRing(small).collapse();
+  const double fe = fibre_closing(spec, 64, P).first, scaled = 100.0 * fibre_closing(small, 64, Ps).first;
+  const double bound = 4.0 * fe / spec.radius;
+  std::printf("fibre, 0.9 P_c, 64 cells: closing %.6e m at Mp = 1e-4 EI / R, 100 x %.6e m at 1e-6: relative %.3e "
+              "(bound %.3e)\n",
+              fe, scaled / 100.0, ringtest::rel(fe, scaled), bound);
+  EXPECT_TRUE(ringtest::IsClose(fe, scaled, bound));
+}
+
+/// The plateau: as P approaches P_c = 4 Mp / R (Mp = sigma_y Z), the fibre ring's closing
+/// grows without bound at small displacement (the moment under the loads and at the roller's
+/// diameter tends to Mp, whose curvature is unbounded). The FE's secant load per closing,
+/// between 0.9 and 0.98 P_c, falls below a tenth of the elastic ring's (measured 0.070), and
+/// the closing at 0.98 P_c (1.8 times 0.9 P_c's) meets the oracle within 2e-3: the geometric
+/// 4 delta / R (6e-4) and the discretization near collapse (~1e-3 at 64 cells, above).
+/// Measured 4.0e-4.
+TEST(FemFibre, PlateauApproachesTheCollapseLoad) {
+  const ring::RingSpec spec = fibre_pinched_ring();
+  const ringtest::FibrePinchedRing closed(spec);
+  const ringtest::FibrePinchedRing oracle = section_oracle(spec);
+  const double Pc = closed.collapse();
+  const double d90 = fibre_closing(spec, 64, 0.9 * Pc).first, d98 = fibre_closing(spec, 64, 0.98 * Pc).first;
+  const ringtest::PinchedPlasticRing elastic{spec.radius, spec.EI(), 1.0};
+  const double secant = 0.08 * Pc / (d98 - d90), elastic_stiffness = 1.0 / elastic.elastic_closing(1.0);
+  std::printf("fibre plateau: closing %.6e m (0.9 P_c), %.6e m (0.98 P_c; oracle %.6e m); secant stiffness %.3e of the "
+              "elastic\n",
+              d90, d98, oracle.closing(0.98 * Pc), secant / elastic_stiffness);
+  EXPECT_LT(secant, 0.1 * elastic_stiffness);
+  EXPECT_TRUE(ringtest::IsClose(d98, oracle.closing(0.98 * Pc), 2e-3));
 }
 
 /// The Reissner (Timoshenko) beam takes no plastic law yet (plastic_points.hpp): refused by key.

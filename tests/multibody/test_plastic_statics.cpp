@@ -28,6 +28,7 @@
 #include "tests/support/convergence.hpp"
 #include "tests/support/plastic_ring.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/multibody/path_recorder.hpp"
 #include "support/refusal.hpp"
 
 namespace {
@@ -184,29 +185,6 @@ TEST(PlasticStatics, HugePlasticMomentIsTheElasticRing) {
 
 // ---- the energy balance: work of the loads = elastic energy + dissipated ----
 
-/// Follows eq through the driver and keeps every accepted equilibrium.
-class Recorder : public paths::Equilibrium {
- public:
-  explicit Recorder(multibody::detail::StaticEquilibrium& eq) : eq_(eq) {}
-  Eigen::Index size() const override { return eq_.size(); }
-  Eigen::Index arc_size() const override { return eq_.arc_size(); }
-  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
-    return eq_.linearize(x, w, ws, r);
-  }
-  bool solve(paths::Vector& y) override { return eq_.solve(y); }
-  double move(const paths::Vector& dz) const override { return eq_.move(dz); }
-  bool converged(const paths::State& x, const paths::Vector& dz, int i) override { return eq_.converged(x, dz, i); }
-  std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
-    if (states.empty()) states.push_back(from);
-    states.push_back(to);
-    return eq_.accept(from, to);
-  }
-  void reject() override { eq_.reject(); }
-  std::vector<paths::State> states;
-
- private:
-  multibody::detail::StaticEquilibrium& eq_;
-};
 
 struct Balance {
   double work, stored, dissipated;
@@ -222,7 +200,7 @@ Balance balance(Method m, int n, double factor, std::vector<double> history, int
   std::unique_ptr<multibody::detail::StaticEquilibrium> eq =
       m == Method::dense ? multibody::detail::angle_equilibrium(chain, spec, st.loads, spec.section.depth())
                          : multibody::natural::static_equilibrium(chain, spec, st.loads, spec.section.depth());
-  Recorder rec(*eq);
+  ringtest::Recorder rec(*eq);
   paths::Continuation policy;
   policy.steps = st.steps;
   policy.history = st.history;
@@ -302,13 +280,18 @@ TEST(PlasticStatics, TimoshenkoChainRefusesThePlasticLawNamingTheKey) {
 }
 
 // What the chain cannot take yet refuses by key before it computes (the scene reader refuses
-// these too; the library's own checks hold for a caller that builds the spec itself).
+// these too; the library's own checks hold for a caller that builds the spec itself). The
+// response takes the plastic law with every integrator and backend (test_plastic_response.cpp)
+// but on the Timoshenko chain, which refuses it.
 TEST(PlasticStatics, ResponseBucklingAndModesUnderLoadRefuseThePlasticLaw) {
   const ring::RingSpec spec = ring_with(plastic_moment());
   const ring::MultibodyOptions o = mbtest::chain_options(16, Method::dense);
   ring::ResponseOptions response;
   response.loads = pinch(kPeak, {}).loads;
-  EXPECT_EQ(ringtest::refused_key([&] { multibody::respond(spec, o, response); }), "ring.plastic");
+  ring::RingSpec timoshenko = spec;
+  timoshenko.theory = ring::Theory::timoshenko;
+  timoshenko.nu = 0.3;
+  EXPECT_EQ(ringtest::refused_key([&] { multibody::respond(timoshenko, o, response); }), "ring.plastic");
   ring::BucklingOptions buckling;
   buckling.loads = pinch(kPeak, {}).loads;
   EXPECT_EQ(ringtest::refused_key([&] { multibody::compute_buckling(spec, o, buckling); }), "ring.plastic");

@@ -30,6 +30,7 @@ MODES_CASES = [
     ("paper1990.toml", "fem", 10, {"fem.elements": 20, "fem.degree": 4}, {"fem.elements": "20", "fem.degree": "4"}),
     ("free-ring.toml", "multibody", None, {"ring.section": {"shape": "circle", "diameter": 0.1}, "ring.E": 2.0e11},
      {"ring.section": '{ shape = "circle", diameter = 0.1 }', "ring.E": "2e11"}),
+    ("imperfect-ring.toml", "fem", None, {"fem.elements": 60}, {"fem.elements": "60"}),  # its split pairs
 ]
 
 
@@ -43,6 +44,8 @@ def modes_matches_json(m, j):
     assert m.residual_norm == j["residual_norm"]
     assert m.error_estimate == j.get("error_estimate", 0.0)
     assert math.isfinite(m.seconds) and m.seconds >= 0 and "seconds" in j
+    pairs = [{**p, "modes": list(p["modes"]), "omega": list(p["omega"])} for p in m.pairs]
+    assert pairs == j.get("pairs", [])  # the split pairs, exact
 
 
 @pytest.mark.parametrize("scene,solver,count,values,texts", MODES_CASES,
@@ -353,3 +356,17 @@ def test_converge_equals_the_commands_csv():
     # The chains' second order and the cubic FE's fourth (docs/measured.md, "Convergence").
     orders = {s["name"]: s["fitted_order"] for s in c["series"]}
     assert abs(orders["multibody"] - 2.0) < 0.1 and abs(orders["fem (p = 3)"] - 4.0) < 0.1
+
+
+def test_trim_equals_the_commands_json():
+    """ringvib.trim is `ringvib trim --json`; its trimmed scene has the pair's split removed."""
+    s = ringvib.Scene.load(scene_path("imperfect-ring.toml"), set={"multibody.n": 60})
+    t = ringvib.trim(s, 1, [60.0, 90.0], solver="multibody")
+    j = ringvib_json("trim", scene_path("imperfect-ring.toml"), "--mode", 1, "--at", "60,90", "--solver", "multibody",
+                     "--json", *sets({"multibody.n": "60"}))
+    for key in ("mode", "wave", "solver", "masses", "split_before", "split_after", "orientation_before", "steps"):
+        assert t[key] == j[key], key
+    after = ringvib.modes(t["scene"], "multibody")
+    assert all(p["wave"] != 2 or p["relative_split"] < 1e-6 for p in after.pairs)
+    with pytest.raises(ringvib.InputError, match="--at"):
+        ringvib.trim(s, 1, [75.0, 30.0], solver="multibody")  # 45 degrees apart: alike on k = 2
