@@ -125,6 +125,28 @@ std::vector<double> node_shares(const ring::RingSpec& spec, const ring::Calculix
   return w;
 }
 
+/// The fibre law (ring.plastic.stress) as ccx's von Mises plasticity of the bricks: the
+/// bilinear uniaxial law sigma = sigma_y + H eps_p, H = h E / (1 - h), as its table of the
+/// yield stress against the equivalent plastic strain (two rows reaching a plastic strain of
+/// 10, far past any ring's; one row, perfectly plastic, for h = 0). The rule: kinematic
+/// (HARDENING=KINEMATIC, Prager's linear kinematic hardening) or isotropic (ccx's default).
+std::string plastic_block(const ring::RingSpec& spec) {
+  const ring::Plastic& p = *spec.plastic;
+  const bool kinematic = p.rule == ring::Plastic::Rule::kinematic;
+  const double H = p.hardening * spec.E / (1.0 - p.hardening), reach = 10.0;
+  std::ostringstream s;
+  s << "** The fibre law: von Mises plasticity, yield stress sigma_y = " << number(p.stress) << " Pa, "
+    << (p.hardening == 0.0 ? std::string("perfectly plastic")
+                           : "hardening modulus H = h E / (1 - h) = " + number(H) + " Pa (h = " + number(p.hardening) +
+                                 ")")
+    << ",\n** " << (kinematic ? "kinematic" : "isotropic")
+    << " rule; rows: yield stress (Pa), equivalent plastic strain. The bricks integrate it at\n"
+    << "** their points through the depth (B32R: 5, B31: 2, B32: 3), not over the section's fibres.\n"
+    << (kinematic ? "*PLASTIC, HARDENING=KINEMATIC\n" : "*PLASTIC\n") << number(p.stress) << ", 0.0\n";
+  if (p.hardening > 0.0) s << number(p.stress + H * reach) << ", " << number(reach) << "\n";
+  return s.str();
+}
+
 /// Everything but the step: heading, nodes, elements, material, section, supports.
 /// `dynamic`: the step has inertia (frequency, response), so the point masses are written
 /// as MASS elements; a static deck leaves them out (their weight is a load).
@@ -136,8 +158,14 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
   check_points(spec, o);
   using Element = ring::CalculixOptions::Element;
   Deck d;
-  const bool width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
-                           (dynamic && !spec.masses.empty()) || loads_on_nodes;
+  const bool fibre = !dynamic && spec.plastic && spec.plastic->law == ring::Plastic::Law::fibre;
+  const bool wants_width_rigid = !spec.supports.springs.empty() || spec.foundation.any() ||
+                                 (dynamic && !spec.masses.empty()) || loads_on_nodes;
+  // ccx 2.20 stops a beam section whose material is orthotropic with *PLASTIC ("*ERROR
+  // reading *BEAM SECTION: nonexistent material": it renames such a material for its
+  // anisotropic plasticity; a *SOLID SECTION takes it): the fibre law keeps the isotropic
+  // material, and the section's bending across its width with it (calculix/README.md).
+  const bool width_rigid = wants_width_rigid && !fibre;
   const int nodes = node_count(o);
   d.anchor = spec.anchor();
   d.node_angles = ring::node_angles(spec, nodes);
@@ -200,8 +228,12 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
       << number(spec.E / 2.0) << ", " << number(spec.E / 2.0) << "\n"
       << number(spec.E / 2.0) << "\n";
   } else {
+    if (wants_width_rigid)
+      s << "** Isotropic although springs or loads hang on the section's corners: ccx 2.20 refuses a beam\n"
+        << "** section of an orthotropic material with *PLASTIC (the section may bend across its width).\n";
     s << "*ELASTIC\n" << number(spec.E) << ", 0.0\n";
   }
+  if (fibre) s << plastic_block(spec);
   s << "*DENSITY\n" << number(spec.rho) << "\n";
 
   s << "** Section: the 1-direction is normal to the ring's plane (0, 0, 1), so the 2-direction is\n"

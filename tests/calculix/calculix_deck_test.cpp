@@ -201,6 +201,62 @@ TEST(CalculixDeck, StaticStepLoadsTheNodeAtTheLoadsAngle) {
   EXPECT_THROW(calculix::static_deck(r, {}, st), ring::InputError);
 }
 
+// The fibre law in a static deck: *PLASTIC after the *ELASTIC of the material, the bilinear
+// law's table sigma_y + H eps_p (H = h E / (1 - h)) in two rows, or one row when perfectly
+// plastic; HARDENING=KINEMATIC for the kinematic rule, none (ccx's isotropic default) for the
+// isotropic one. The frequency deck stays elastic (the modes at rest).
+TEST(CalculixDeck, FibreLawIsAPlasticTableAfterTheElasticMaterial) {
+  ring::RingSpec r = paper_ring();
+  r.section.shape = ring::Section::Shape::rectangle;
+  r.section.width = 0.1;
+  r.section.height = 0.12;
+  r.supports.pin = 180.0;
+  r.supports.roller = 0.0;
+  ring::Plastic p;
+  p.law = ring::Plastic::Law::fibre;
+  p.stress = 2.5e8;
+  p.hardening = 0.2;
+  r.plastic = p;
+  ring::StaticOptions st;
+  st.loads.points = {{90.0, {0.0, -2e4}}};
+  auto rows = [](const std::string& deck, const std::string& keyword) {
+    std::vector<std::vector<double>> v;
+    const auto at = deck.find(keyword + "\n");
+    if (at == std::string::npos) return v;
+    std::istringstream in(deck.substr(at + keyword.size() + 1));
+    for (std::string line; std::getline(in, line) && line[0] != '*';) {
+      std::vector<double> row;
+      for (const auto& f : fields(line)) row.push_back(std::stod(f));
+      v.push_back(row);
+    }
+    return v;
+  };
+  std::string deck = calculix::static_deck(r, {}, st).text;
+  EXPECT_LT(deck.find("*ELASTIC\n"), deck.find("*PLASTIC, HARDENING=KINEMATIC\n"));
+  auto t = rows(deck, "*PLASTIC, HARDENING=KINEMATIC");
+  ASSERT_EQ(t.size(), 2u);
+  const double H = 0.2 * r.E / 0.8;
+  EXPECT_EQ(t[0][0], 2.5e8);
+  EXPECT_EQ(t[0][1], 0.0);
+  EXPECT_NEAR((t[1][0] - t[0][0]) / (t[1][1] - t[0][1]), H, 1e-12 * H);  // the table's slope: H
+  r.plastic->rule = ring::Plastic::Rule::isotropic;
+  r.plastic->hardening = 0.0;
+  deck = calculix::static_deck(r, {}, st).text;
+  EXPECT_EQ(deck.find("HARDENING="), std::string::npos);
+  t = rows(deck, "*PLASTIC");
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0][0], 2.5e8);
+  // With a spring the elastic deck's material is orthotropic (the section rigid across its
+  // width); ccx 2.20 refuses that with *PLASTIC on a beam section, so the plastic deck keeps
+  // the isotropic material.
+  r.supports.springs = {{45.0, 1e3, 1e3, 0.0}};
+  deck = calculix::static_deck(r, {}, st).text;
+  EXPECT_EQ(deck.find("ENGINEERING CONSTANTS"), std::string::npos);
+  EXPECT_LT(deck.find("*ELASTIC\n"), deck.find("*PLASTIC\n"));
+  // The modes at rest are elastic: no *PLASTIC in a frequency deck.
+  EXPECT_EQ(calculix::frequency_deck(r, {}, calculix::FrequencyStep{12}).text.find("*PLASTIC"), std::string::npos);
+}
+
 TEST(CalculixDeck, ResponseStepIsNewmarkWithTheLoadsHistory) {
   ring::RingSpec r = paper_ring();
   r.supports.pin = 180.0;
