@@ -27,14 +27,6 @@
 
 namespace {
 
-ring::RingSpec pinched_ring(double Mp_over_EI_R = 1e-4) {
-  ring::RingSpec s = ringtest::pinned_ring(0.0);
-  s.supports.roller = 180.0;
-  s.plastic = ring::Plastic{};
-  s.plastic->moment = Mp_over_EI_R * s.EI() / s.radius;
-  return s;
-}
-
 ring::FemOptions fem_options(int elements, int degree = 3) {
   ring::FemOptions o;
   o.elements = elements;
@@ -83,7 +75,7 @@ double largest_imbalance(const ring::TimeHistory& h) {
 /// at rest, on 32 cells as the statics': measured 9.5e-9 of the largest closing and 1.2e-8 of
 /// the largest work; bound 1e-7 as the statics'.
 TEST(FemPlasticResponse, HugePlasticMomentGivesTheElasticResponse) {
-  ring::RingSpec spec = pinched_ring();
+  ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   ring::RingSpec elastic = spec;
   elastic.plastic.reset();
   spec.plastic->moment = 1e30;
@@ -115,7 +107,7 @@ TEST(FemPlasticResponse, HugePlasticMomentGivesTheElasticResponse) {
 /// dynamic peak is more than twice its static value.)
 TEST(FemPlasticResponse, NoPlasticWorkWhileElastic) {
   for (const bool fibre : {false, true}) {
-    ring::RingSpec spec = pinched_ring();
+    ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
     if (fibre) {
       // The fibre law with the same first yield My = sigma_y I / c: the pinch's yield load pi My / R.
       spec.plastic->law = ring::Plastic::Law::fibre;
@@ -156,7 +148,7 @@ TEST(FemPlasticResponse, NoPlasticWorkWhileElastic) {
 /// Newton failed at the full step: nonlinear.cpp, respond_once).
 TEST(FemPlasticResponse, EnergyIdentityHoldsToTheSchemesOrder) {
   for (const bool fibre : {false, true}) {
-    ring::RingSpec spec = pinched_ring();
+    ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
     const double Mp = spec.plastic->moment, R = spec.radius;
     if (fibre) {
       // Fully plastic moment Mp = sigma_y d^3 / 6 (the solid circle's Z): the same collapse load.
@@ -200,7 +192,7 @@ TEST(FemPlasticResponse, EnergyIdentityHoldsToTheSchemesOrder) {
 /// the load is held; an overshoot above the statics' would add plastic rotation: none with
 /// this damping). Bound 2e-3; measured 2.1e-4 (closing) and 2.8e-4 (plastic work).
 TEST(FemPlasticResponse, SlowRampReachesTheClosedFormClosing) {
-  const ring::RingSpec spec = pinched_ring();
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   const double Mp = spec.plastic->moment, R = spec.radius, P = 3.5 * Mp / R;
   const ringtest::PinchedPlasticRing o{R, spec.EI(), Mp};
   ring::ResponseOptions rs = pinch_response(P, ramp(30.0), 0.05, 60.0, 0.8);
@@ -224,7 +216,7 @@ TEST(FemPlasticResponse, SlowRampReachesTheClosedFormClosing) {
 /// (fem_plastic_test, FemFibre: 2.3e-4 at this load) and the fibres' quadrature against the
 /// closed-form circle (6e-6 here); bound 2e-3 as the resultant ring's. Measured 2.5e-4.
 TEST(FemPlasticResponse, SlowRampReachesTheFibreOraclesClosing) {
-  ring::RingSpec spec = pinched_ring();
+  ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   spec.plastic->law = ring::Plastic::Law::fibre;
   spec.plastic->stress = spec.plastic->moment / (std::pow(spec.section.diameter, 3) / 6.0);
   spec.plastic->moment = 0.0;
@@ -244,7 +236,7 @@ TEST(FemPlasticResponse, SlowRampReachesTheFibreOraclesClosing) {
 /// Euler-Bernoulli beam takes it; a fibre law on a section without a shape is refused by
 /// ring.plastic.stress.
 TEST(FemPlasticResponse, RefusalsByKey) {
-  const ring::RingSpec spec = pinched_ring();
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   const ring::ResponseOptions rs = pinch_response(1.0, {}, 0.01, 0.1);
   EXPECT_EQ(ringtest::refused_key([&] { fem::check_response(spec, fem_options(16), rs); }), "");
   ring::RingSpec reissner = spec;

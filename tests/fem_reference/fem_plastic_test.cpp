@@ -37,14 +37,6 @@
 
 namespace {
 
-ring::RingSpec pinched_ring(double Mp_over_EI_R = 1e-4) {
-  ring::RingSpec s = ringtest::pinned_ring(0.0);
-  s.supports.roller = 180.0;
-  s.plastic = ring::Plastic{};
-  s.plastic->moment = Mp_over_EI_R * s.EI() / s.radius;
-  return s;
-}
-
 ringtest::PinchedPlasticRing oracle(const ring::RingSpec& s, double Mp) {
   return {s.radius, s.EI(), Mp};
 }
@@ -110,7 +102,7 @@ Pinched pinched(const ring::RingSpec& spec, int n) {
 /// The tolerance 0.2 on the order: twenty standard errors, and the two-point orders all lie
 /// in 3.9 ... 4.0.
 TEST(FemPlastic, ClosingAndResidualConvergeToTheClosedForms) {
-  const ring::RingSpec spec = pinched_ring();
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   const double Mp = spec.plastic->moment, R = spec.radius, P = 3.5 * Mp / R;
   const ringtest::PinchedPlasticRing o = oracle(spec, Mp);
   const Pinched exact{o.closing(P), o.residual_closing(P), closed_form_energies(o, P).dissipated};
@@ -148,7 +140,7 @@ TEST(FemPlastic, ClosingAndResidualConvergeToTheClosedForms) {
   // That deviation is the geometric one: it halves with Mp (so with delta / R). The
   // residual's (the axial strain cancels in it: unloading is elastic) at 64 cells, where the
   // discretization error is below 1e-6 of it: measured ratio 2.02; 10 % either side.
-  ring::RingSpec half = pinched_ring(0.5e-4);
+  ring::RingSpec half = ringtest::pinched_plastic_ring(0.5e-4);
   const ringtest::PinchedPlasticRing oh = oracle(half, half.plastic->moment);
   const double Ph = 3.5 * half.plastic->moment / R;
   const double ratio = ringtest::rel(pinched(spec, 64).residual, exact.residual) /
@@ -163,7 +155,7 @@ TEST(FemPlastic, ClosingAndResidualConvergeToTheClosedForms) {
 /// 3.0e-5, 4.3e-6, fitted order 4.18 +- 0.08; plastic work 7.6e-3 ... 3.9e-6, 4.18 +- 0.09.
 /// (Its peak closing keeps the extensible ring's axial deviation, ~3e-5: not fitted here.)
 TEST(FemPlastic, ResidualClosingMeetsTheClosedFormAtTheFittedOrder) {
-  const ring::RingSpec spec = pinched_ring(1e-6);
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-6);
   const double Mp = spec.plastic->moment, P = 3.5 * Mp / spec.radius;
   const ringtest::PinchedPlasticRing o = oracle(spec, Mp);
   const std::vector<int> ns = {8, 12, 16, 24, 32, 48};
@@ -198,7 +190,7 @@ TEST(FemPlastic, ResidualClosingMeetsTheClosedFormAtTheFittedOrder) {
 /// -9.563e-7 J and -2.020e-7 J against the closed form's -9.530e-7 and -2.022e-7. So apart from
 /// the quadrature of the work the identity holds to the Newton tolerance.
 TEST(FemPlastic, LoadsWorkIsStoredEnergyPlusPlasticWork) {
-  const ring::RingSpec spec = pinched_ring();
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   const double Mp = spec.plastic->moment, R = spec.radius, P = 3.5 * Mp / R;
   const ringtest::PinchedPlasticRing o = oracle(spec, Mp);
   const double sy = o.first_yield() / P;
@@ -235,7 +227,7 @@ TEST(FemPlastic, LoadsWorkIsStoredEnergyPlusPlasticWork) {
 /// Below first yield (P = 0.9 P_y) nothing yields: no plastic work, no plastic curvature,
 /// and the closing and its return to zero are the elastic solver's (ring.plastic absent).
 TEST(FemPlastic, NoPlasticWorkBelowFirstYield) {
-  const ring::RingSpec spec = pinched_ring();
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   ring::RingSpec elastic = spec;
   elastic.plastic.reset();
   const double P = 0.9 * oracle(spec, spec.plastic->moment).first_yield();
@@ -254,7 +246,7 @@ TEST(FemPlastic, NoPlasticWorkBelowFirstYield) {
 /// Mp = 1e30 EI / R never yields: the plastic solver's path is the elastic one, and after
 /// unloading nothing is left.
 TEST(FemPlastic, HugePlasticMomentGivesTheElasticResults) {
-  ring::RingSpec spec = pinched_ring();
+  ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   ring::RingSpec elastic = spec;
   elastic.plastic.reset();
   const double P = 3.5e-4 * spec.EI() / (spec.radius * spec.radius);  // the main test's load
@@ -274,7 +266,7 @@ TEST(FemPlastic, HugePlasticMomentGivesTheElasticResults) {
 
 /// The analyses that would ignore the law are refused by the key ring.plastic (exit 2).
 TEST(FemPlastic, AnalysesWithoutThePlasticLawRefuseIt) {
-  const ring::RingSpec spec = pinched_ring();
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   const ring::FemOptions o = fem_options(32);
   ring::BucklingOptions b;
   b.loads = pinch(1.0).loads;
@@ -299,7 +291,7 @@ TEST(FemPlastic, AnalysesWithoutThePlasticLawRefuseIt) {
 /// moment sigma_y Z (Z = d^3 / 6, the solid circle) is Mp_over_EI_R EI / R, hardening 0. So
 /// P_c = 4 Mp / R as the resultant ring's and the first yield My = Mp 3 pi / 16 is lower.
 ring::RingSpec fibre_pinched_ring(double Mp_over_EI_R = 1e-4) {
-  ring::RingSpec s = pinched_ring(Mp_over_EI_R);
+  ring::RingSpec s = ringtest::pinched_plastic_ring(Mp_over_EI_R);
   s.plastic->law = ring::Plastic::Law::fibre;
   s.plastic->stress = s.plastic->moment / (std::pow(s.section.diameter, 3) / 6.0);
   s.plastic->moment = 0.0;
@@ -449,7 +441,7 @@ TEST(FemFibre, PlateauApproachesTheCollapseLoad) {
 
 /// The Reissner (Timoshenko) beam takes no plastic law yet (plastic_points.hpp): refused by key.
 TEST(FemPlastic, TimoshenkoBeamRefusesThePlasticLaw) {
-  ring::RingSpec spec = pinched_ring();
+  ring::RingSpec spec = ringtest::pinched_plastic_ring(1e-4);
   spec.theory = ring::Theory::timoshenko;
   try {
     fem::check_static(spec, fem_options(32), pinch(1.0));

@@ -34,21 +34,8 @@ namespace {
 
 constexpr double kMp = 1e-4;  ///< Mp R / EI
 
-/// The ring with Mp = mp EI / R, or elastic.
-ring::RingSpec ring_with(std::optional<double> mp) {
-  ring::RingSpec s = ringtest::free_ring();
-  s.supports.pin = 0.0;
-  s.supports.roller = 180.0;
-  if (mp) {
-    ring::Plastic p;
-    p.moment = *mp * s.EI() / s.radius;
-    s.plastic = p;
-  }
-  return s;
-}
-
 ringtest::PinchedPlasticRing oracle() {
-  const ring::RingSpec s = ring_with(kMp);
+  const ring::RingSpec s = ringtest::pinched_plastic_ring(kMp);
   return {s.radius, s.EI(), s.plastic->moment};
 }
 
@@ -86,7 +73,7 @@ double closing(const ring::TimeHistory& h, std::size_t k) { return h.uy[1][k] - 
 // moments then yield a wider zone of fibres).
 TEST(PlasticChainResponse, EnergyBalanceIsExactToTheNewtonTolerance) {
   for (const bool fibre : {false, true}) {
-    ring::RingSpec spec = ring_with(kMp);
+    ring::RingSpec spec = ringtest::pinched_plastic_ring(kMp);
     const ringtest::PinchedPlasticRing o = oracle();
     if (fibre) {
       spec.plastic->law = ring::Plastic::Law::fibre;
@@ -120,7 +107,7 @@ TEST(PlasticChainResponse, EnergyBalanceIsExactToTheNewtonTolerance) {
 // at most twice the static moments, stays at P_y / 2) gives exactly zero plastic work at every
 // step, and its balance is then the discrete gradient's on a quadratic potential.
 TEST(PlasticChainResponse, NothingDissipatesWhileElastic) {
-  const ring::RingSpec spec = ring_with(kMp);
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(kMp);
   const ringtest::PinchedPlasticRing o = oracle();
   const double T2 = 2.0 * M_PI / omega2(spec);
   const ring::TimeHistory h = lumped::respond(spec, lumptest::options(32, lumptest::kChain),
@@ -139,7 +126,7 @@ TEST(PlasticChainResponse, NothingDissipatesWhileElastic) {
 // relative 1e-10 of the closing, 6e-14 m, printed). On a ring that turns by O(1) in a step the
 // two would differ by the rules' O(dt^2).
 TEST(PlasticChainResponse, AnInfinitePlasticMomentIsTheElasticResponse) {
-  const ring::RingSpec huge = ring_with(1e30), elastic = ring_with(std::nullopt);
+  const ring::RingSpec huge = ringtest::pinched_plastic_ring(1e30), elastic = ringtest::pinched_plastic_ring(std::nullopt);
   const ringtest::PinchedPlasticRing o = oracle();
   const double T2 = 2.0 * M_PI / omega2(elastic), P = 2.0 * o.Mp / o.R;
   const ring::ResponseOptions r = pinch(P, {}, T2 / 100, 2 * T2);
@@ -176,7 +163,7 @@ TEST(PlasticChainResponse, AnInfinitePlasticMomentIsTheElasticResponse) {
 // And the dissipation is exactly zero while the load is below 0.8 P_y (the ramp's overshoot is
 // below 3.2 %, the chain's first yield within 2 % of P_y) and positive at the end.
 TEST(PlasticChainResponse, ASlowRampSettlesOnTheStaticClosing) {
-  ring::RingSpec spec = ring_with(kMp);
+  ring::RingSpec spec = ringtest::pinched_plastic_ring(kMp);
   const ringtest::PinchedPlasticRing o = oracle();
   const double w2 = omega2(spec), T2 = 2.0 * M_PI / w2, Ps = 3.5 * o.Mp / o.R;
   ring::LoadHistory ramp;

@@ -60,24 +60,11 @@ using Variant = ring::LumpedOptions::Variant;
 constexpr Variant kChain = Variant::chain;
 constexpr Variant kTimoshenko = Variant::timoshenko_frame;
 
-/// The paper ring pinned at 0 and on a roller at 180, with Mp = `mp` EI / R (none: elastic).
-ring::RingSpec plastic_ring(std::optional<double> mp) {
-  ring::RingSpec s = ringtest::free_ring();
-  s.supports.pin = 0.0;
-  s.supports.roller = 180.0;
-  if (mp) {
-    ring::Plastic p;
-    p.moment = *mp * s.EI() / s.radius;
-    s.plastic = p;
-  }
-  return s;
-}
-
 /// The paper ring's oracle at Mp = 1e-4 EI / R (the brief's: the geometric deviation
 /// O(delta / R) is then ~1e-4 relative).
 constexpr double kMp = 1e-4;
 ringtest::PinchedPlasticRing oracle() {
-  const ring::RingSpec s = plastic_ring(kMp);
+  const ring::RingSpec s = ringtest::pinched_plastic_ring(kMp);
   return {s.radius, s.EI(), s.plastic->moment};
 }
 
@@ -90,7 +77,7 @@ struct Pinch {
 /// 270 deg, through `history`.
 Pinch pinch(Variant v, int n, std::optional<double> mp, double load, std::vector<double> history, int steps = 20,
           bool path = false) {
-  const ring::RingSpec spec = plastic_ring(mp);
+  const ring::RingSpec spec = ringtest::pinched_plastic_ring(mp);
   const double P = load * kMp * spec.EI() / (spec.radius * spec.radius);
   ring::StaticOptions st;
   st.loads.points = {{90.0, {0.0, -P}}, {270.0, {0.0, P}}};
@@ -268,7 +255,7 @@ TEST(PinchedPlasticChain, AFullyReversedCycleClosesItsLoop) {
 // geometric O(delta / R) of the cycle test (1e-3).
 TEST(PinchedPlasticChain, HardeningRulesAgreeOnLoadingAndDifferOnReversal) {
   auto run = [](ring::Plastic::Rule rule, std::vector<double> history) {
-    ring::RingSpec spec = plastic_ring(kMp);
+    ring::RingSpec spec = ringtest::pinched_plastic_ring(kMp);
     spec.plastic->hardening = 0.1;
     spec.plastic->rule = rule;
     const double P = 3.5 * kMp * spec.EI() / (spec.radius * spec.radius);
@@ -352,7 +339,7 @@ TEST(FrameEnergy, WorkIsStoredToTheRulesOrder) {
 // on a section given by {area, inertia} (no shape for the fibres). The chain's response and
 // its fibre law are taken (plastic_response_test.cpp, fibre_test.cpp).
 TEST(PlasticRefusals, NameTheKey) {
-  ring::RingSpec spec = plastic_ring(kMp);
+  ring::RingSpec spec = ringtest::pinched_plastic_ring(kMp);
   auto refused = [](const std::function<void()>& run, const std::string& what, const std::string& key) {
     try {
       run();

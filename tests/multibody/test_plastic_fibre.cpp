@@ -218,32 +218,14 @@ TEST_P(FibreStatics, WorkIsStoredPlusDissipatedToTheTrapezoidsOrder) {
     for (int steps : {10, 20, 40, 80}) {
       const ring::StaticOptions st = ringtest::pinch(0.9 * ring.collapse(), {1.0, 0.0}, steps);
       const multibody::Chain chain(spec, mbtest::chain_options(32, m), 90.0);
-      std::unique_ptr<multibody::detail::StaticEquilibrium> eq =
-          m == Method::dense ? multibody::detail::angle_equilibrium(chain, spec, st.loads, spec.section.depth())
-                             : multibody::natural::static_equilibrium(chain, spec, st.loads, spec.section.depth());
-      ringtest::Recorder rec(*eq);
-      paths::Continuation policy;
-      policy.steps = st.steps;
-      policy.history = st.history;
-      const paths::Trace t = paths::follow(rec, {eq->rest(), 0.0}, policy);
-      ASSERT_EQ(t.end, paths::Trace::End::reached);
-      const int a = chain.hinge_at(90.0), b = chain.hinge_at(270.0);
-      const Eigen::Vector2d Fa(st.loads.points[0].force[0], st.loads.points[0].force[1]);
-      const Eigen::Vector2d Fb(st.loads.points[1].force[0], st.loads.points[1].force[1]);
-      double work = 0.0, peak = 0.0, stored = 0.0;
-      for (std::size_t i = 1; i < rec.states.size(); ++i) {
-        const Eigen::Matrix2Xd p0 = eq->hinges(rec.states[i - 1].z), p1 = eq->hinges(rec.states[i].z);
-        const double sm = 0.5 * (rec.states[i - 1].s + rec.states[i].s);
-        work += sm * (Fa.dot(p1.col(a) - p0.col(a)) + Fb.dot(p1.col(b) - p0.col(b)));
-        peak = std::max(peak, work);
-      }
-      const Eigen::VectorXd e = eq->hinge_strains(rec.states.back().z);
-      for (int k = 0; k < chain.n(); ++k) stored += eq->bending().stored(k, e[k]);
-      const double defect = std::abs(work - stored - eq->dissipated()) / peak;
+      const ringtest::PinchBalance p = ringtest::pinch_balance(spec, chain, m == Method::dense, st);
+      ASSERT_TRUE(p.reached);
+      const double work = p.work, peak = p.peak_work, stored = p.stored;
+      const double defect = std::abs(work - stored - p.dissipated) / peak;
       std::cout << name(GetParam()) << ", " << name(m) << ", " << steps << " steps a leg: work " << work
-                << " J, stored " << stored << " J, dissipated " << eq->dissipated() << " J, defect " << defect
+                << " J, stored " << stored << " J, dissipated " << p.dissipated << " J, defect " << defect
                 << " of the peak work\n";
-      EXPECT_GT(eq->dissipated(), 0.0);
+      EXPECT_GT(p.dissipated, 0.0);
       ds.push_back(1.0 / steps);
       defects.push_back(defect);
     }

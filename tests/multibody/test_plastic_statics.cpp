@@ -197,27 +197,9 @@ Balance balance(Method m, int n, double factor, std::vector<double> history, int
   const ring::RingSpec spec = ring_with(plastic_moment());
   const ring::StaticOptions st = pinch(factor, std::move(history), steps);
   const multibody::Chain chain(spec, mbtest::chain_options(n, m), 90.0);
-  std::unique_ptr<multibody::detail::StaticEquilibrium> eq =
-      m == Method::dense ? multibody::detail::angle_equilibrium(chain, spec, st.loads, spec.section.depth())
-                         : multibody::natural::static_equilibrium(chain, spec, st.loads, spec.section.depth());
-  ringtest::Recorder rec(*eq);
-  paths::Continuation policy;
-  policy.steps = st.steps;
-  policy.history = st.history;
-  const paths::Trace t = paths::follow(rec, {eq->rest(), 0.0}, policy);
-  EXPECT_EQ(t.end, paths::Trace::End::reached);
-  const int a = chain.hinge_at(90.0), b = chain.hinge_at(270.0);
-  const Eigen::Vector2d Fa(st.loads.points[0].force[0], st.loads.points[0].force[1]);
-  const Eigen::Vector2d Fb(st.loads.points[1].force[0], st.loads.points[1].force[1]);
-  Balance out{0.0, 0.0, eq->dissipated()};
-  for (std::size_t i = 1; i < rec.states.size(); ++i) {
-    const Eigen::Matrix2Xd p0 = eq->hinges(rec.states[i - 1].z), p1 = eq->hinges(rec.states[i].z);
-    const double s = 0.5 * (rec.states[i - 1].s + rec.states[i].s);
-    out.work += s * (Fa.dot(p1.col(a) - p0.col(a)) + Fb.dot(p1.col(b) - p0.col(b)));
-  }
-  const Eigen::VectorXd e = eq->hinge_strains(rec.states.back().z);
-  for (int k = 0; k < chain.n(); ++k) out.stored += eq->bending().stored(k, e[k]);
-  return out;
+  const ringtest::PinchBalance p = ringtest::pinch_balance(spec, chain, m == Method::dense, st);
+  EXPECT_TRUE(p.reached);
+  return {p.work, p.stored, p.dissipated};
 }
 
 // The trapezoidal work is exact for a response linear in s between two equilibria (the

@@ -21,10 +21,12 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "ring/analysis.hpp"
+#include "support/paper.hpp"
 
 namespace ringtest {
 
@@ -46,6 +48,18 @@ struct PinchedPlasticRing {
   /// The moment left under the loads after loading to P* (in [P_y, P_c]) and unloading, N m.
   double residual_moment(double P) const { return Mp - P * R / M_PI; }
 };
+
+/// The paper ring pinned at 0 and on a roller at 180 (the pinch's supports), with the resultant
+/// law's Mp = mp EI / R, perfectly plastic, kinematic (none: elastic).
+inline ring::RingSpec pinched_plastic_ring(std::optional<double> mp) {
+  ring::RingSpec s = pinned_ring(0.0);
+  s.supports.roller = 180.0;
+  if (mp) {
+    s.plastic = ring::Plastic{};
+    s.plastic->moment = *mp * s.EI() / s.radius;
+  }
+  return s;
+}
 
 /// The statics of the pinch: P (N) toward the centre at 90 and 270 deg, both recorded, along
 /// `history` (default: loaded and unloaded) in `steps` increments per leg.
