@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -22,14 +23,21 @@ struct Harmonics {
 
 Harmonics harmonics(const std::vector<double>& w) {
   const int n = ring::kStations, kmax = n / 2;
+  // cos and sin of 2 pi k s / n depend on k s mod n alone: one table of the stations' angles.
+  static const auto table = [] {
+    std::vector<std::pair<double, double>> cs(ring::kStations);
+    for (int j = 0; j < ring::kStations; ++j)
+      cs[j] = {std::cos(2.0 * M_PI * j / ring::kStations), std::sin(2.0 * M_PI * j / ring::kStations)};
+    return cs;
+  }();
   Harmonics h;
   h.a.assign(kmax, 0.0);
   h.b.assign(kmax, 0.0);
   for (int k = 0; k < kmax; ++k)
     for (int s = 0; s < n; ++s) {
-      const double t = 2.0 * M_PI * k * s / n;
-      h.a[k] += w[s] * std::cos(t);
-      h.b[k] += w[s] * std::sin(t);
+      const auto& [c, si] = table[(k * s) % n];
+      h.a[k] += w[s] * c;
+      h.b[k] += w[s] * si;
     }
   for (int k = 1; k < kmax; ++k) {  // cos and sin carry half the energy of the constant
     h.a[k] *= std::sqrt(0.5);
