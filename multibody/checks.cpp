@@ -12,7 +12,44 @@
 namespace multibody {
 using detail::has_point_inertia;
 
+namespace {
+
+/// What the chain takes of an arch (chain.hpp: the open chain, dense angle paths): its ends
+/// pinned, clamped or free, further pins, point loads. The rest is refused by key, naming
+/// ring.arc. `who` names the analysis. O(supports + masses).
+void check_arch(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const std::string& who) {
+  if (!spec.is_arch()) return;
+  auto refuse = [&](const std::string& key, const std::string& why) {
+    throw std::invalid_argument(who + " on an arch (ring.arc) does not take " + key + " yet: " + why);
+  };
+  if (options.method == ring::MultibodyOptions::Method::sparse)
+    refuse("multibody.method = \"sparse\"", "the O(n) paths close the chain; set multibody.method = \"dense\" or \"auto\"");
+  if (options.dependent == ring::MultibodyOptions::Dependent::paper)
+    refuse("multibody.dependent = \"paper\"", "its dependent angles are the closed ring's; use \"robust\"");
+  if (spec.theory == ring::Theory::timoshenko)
+    refuse("ring.theory = \"timoshenko\" (or multibody.theory)", "the shear chain is the closed ring's; use \"euler-bernoulli\"");
+  if (spec.supports.roller) refuse("supports.roller", "pin or clamp its ends (supports.pin, supports.pins, supports.clamp)");
+  if (!spec.supports.springs.empty()) refuse("supports.springs", "pin or clamp its ends");
+  if (!spec.masses.empty()) refuse("masses", "remove the point masses");
+  if (spec.foundation.any()) refuse("foundation", "remove the foundation");
+  if (spec.plastic) refuse("ring.plastic", "remove ring.plastic");
+}
+
+/// The loads of a static analysis on an arch: point loads only (refused by key otherwise).
+void check_arch_loads(const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section) {
+  if (!spec.is_arch()) return;
+  if (loads.pressure.any())
+    throw std::invalid_argument("the multibody statics on an arch (ring.arc) does not take " + section +
+                                ".pressure yet: use point loads");
+  if (loads.has_gravity())
+    throw std::invalid_argument("the multibody statics on an arch (ring.arc) does not take " + section +
+                                ".gravity yet: use point loads");
+}
+
+}  // namespace
+
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
+  check_arch(spec, options, "the multibody linear modes");
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
   // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
   if (sparse)
@@ -48,6 +85,8 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
+  check_arch(spec, options, "the multibody statics");
+  check_arch_loads(spec, statics.loads, "static");
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
   // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
   if (backend(options, spec, statics) == Backend::banded) {
@@ -72,6 +111,10 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   // ring until it hangs along its line of action. The tangent stays regular only away from
   // that, so refuse rather than guess.
   const int rigid = ring::static_rigid_modes(spec, statics.loads);
+  if (spec.is_arch() && rigid > 0)
+    throw std::invalid_argument("multibody::solve_static: the arch (ring.arc) is free to move rigidly (" +
+                                std::to_string(rigid) + " rigid motion(s)): pin or clamp its ends (supports.pin, "
+                                "supports.pins, supports.clamp)");
   if (!spec.supports.pin && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
   if (rigid > 0)

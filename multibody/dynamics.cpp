@@ -123,7 +123,8 @@ class ChainStepper : public paths::Stepper {
   }
 
   std::optional<std::string> contact() const override {
-    const auto cp = detail::closest_contact(chain_.hinge_positions(coordinates(s_.q)), chain_.l(), gap_, depth_);
+    const auto cp = detail::closest_contact(chain_.hinge_positions(coordinates(s_.q)), chain_.l(), gap_, depth_,
+                                            !chain_.arch());
     if (cp.distance >= depth_) return std::nullopt;
     std::ostringstream m;
     m << detail::describe_contact(cp) << " (section depth " << depth_ << " m)";
