@@ -141,6 +141,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
+  ring::refuse_arch(spec, "the multibody response");
   // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
   // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
   // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted
