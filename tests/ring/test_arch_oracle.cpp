@@ -216,6 +216,20 @@ TEST(ArchOracle, DeepArchLimitLoadMatchesDaDeppoSchmidt) {
   EXPECT_LT(archtest::deep_arch_at(d + 0.05, 1024).load, best.load);
 }
 
+// Oracle: deep_arch_under inverts deep_arch_at on the rising branch (the load it is given
+// comes back from the descent it returns, to Newton's tolerance 1e-12) and refuses a load past
+// the limit.
+TEST(ArchOracle, DeepArchUnderALoadInvertsTheDescent) {
+  for (double P : {1.0, 5.0, 8.5}) {
+    const auto p = archtest::deep_arch_under(P, 512);
+    EXPECT_TRUE(IsClose(p.load, P, 1e-12));
+    const auto q = archtest::deep_arch_at(-p.apex_dy, 512);
+    EXPECT_TRUE(IsClose(q.load, P, 1e-12)) << "P = " << P;
+    EXPECT_TRUE(IsClose(q.apex_dx, p.apex_dx, 1e-10)) << "P = " << P;
+  }
+  EXPECT_THROW(archtest::deep_arch_under(9.0, 512), std::invalid_argument);
+}
+
 // Oracle: Timoshenko & Gere sec. 7.5's exact cases. Pinned: the semicircle (alpha = pi/2)
 // carries q R^3/EI = 3, the ring's value. Clamped: at alpha = pi/2, tan(alpha) is infinite and
 // the equation reads cos(k pi/2) = 0, k = 3, q R^3/EI = 8; as alpha -> pi it tends to the ring

@@ -327,6 +327,46 @@ inline DeepArchPoint deep_arch_at(double apex_down, int steps = 2000) {
   return {u(3), s.apex_x, -apex_down};
 }
 
+/// The equilibrium on the rising branch (from the unloaded arch to the limit) under the apex
+/// load `load` (P R^2/EI, 0 <= load < the limit load): continuation in d by 0.02 R until the
+/// load is passed, then Newton on P(d) = load with dP/dd, safeguarded by bisection in that
+/// bracket. Throws std::invalid_argument past the limit. For a solver's load-controlled path.
+inline DeepArchPoint deep_arch_under(double load, int steps = 2000) {
+  if (steps < 4 || steps % 2 != 0) throw std::invalid_argument("archtest::deep_arch_under: steps must be even and >= 4");
+  if (!(load >= 0.0)) throw std::invalid_argument("archtest::deep_arch_under: load must be >= 0");
+  if (load == 0.0) return {};
+  const detail::DeepArch arch{steps};
+  const double dd = 0.02;
+  Eigen::Vector4d u = Eigen::Vector4d::Zero(), prev = u;
+  double d = 0.0;
+  for (int k = 1; k <= 200; ++k) {
+    Eigen::Vector4d v = k > 1 ? Eigen::Vector4d(2.0 * u - prev) : u;
+    detail::DeepArch::Shot s = arch.solve(v, d + dd);
+    if (v(3) >= load) {
+      double a = d, b = d + dd, c = b;
+      Eigen::Vector4d uc = v;
+      for (int it = 0; it < 100; ++it) {
+        const double r = uc(3) - load;
+        if (std::abs(r) <= 1e-13 * load) return {uc(3), s.apex_x, -c};
+        (r < 0 ? a : b) = c;
+        const double g = detail::DeepArch::slope(s);
+        double next = g > 0 ? c - r / g : 0.5 * (a + b);
+        if (!(next > a && next < b)) next = 0.5 * (a + b);
+        c = next;
+        s = arch.solve(uc, c);
+      }
+      throw std::runtime_error("archtest::deep_arch_under: no convergence at load " + std::to_string(load));
+    }
+    if (detail::DeepArch::slope(s) <= 0.0)
+      throw std::invalid_argument("archtest::deep_arch_under: load " + std::to_string(load) + " is above the limit load " +
+                                  std::to_string(v(3)));
+    prev = u;
+    u = v;
+    d += dd;
+  }
+  throw std::invalid_argument("archtest::deep_arch_under: load above the limit");
+}
+
 /// The limit point (maximum load) of the deep arch's equilibrium path from the unloaded arch:
 /// {P R^2/EI, apex dx / R, apex dy / R}. Cost: ~60 continuation steps and ~10 secant steps.
 inline DeepArchPoint deep_arch_limit(int steps = 2000) {
