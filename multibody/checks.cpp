@@ -125,6 +125,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics) {
+  ring::refuse_arch(spec, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
   if (spec.plastic)
@@ -141,7 +142,22 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  ring::refuse_arch(spec, "the multibody response");
+  check_arch(spec, options, "the multibody response");
+  if (spec.is_arch()) {
+    // The dense angle integrators (newmark, generalized-alpha) on the open chain whose far end
+    // is pinned (its rows: the partitioning's dependent angles), under point loads.
+    auto refuse = [&](const std::string& key, const std::string& why) {
+      throw std::invalid_argument("the multibody response on an arch (ring.arc) does not take " + key + " yet: " + why);
+    };
+    if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
+      refuse("response.integrator = \"energy-momentum\"", "its hinge positions close the chain; use \"newmark\" or "
+                                                           "\"generalized-alpha\"");
+    const double to = spec.arc->to;
+    bool to_pinned = false;
+    for (double p : spec.supports.pinned()) to_pinned = to_pinned || std::abs(spec.arc->offset(p) - spec.arc->span()) < 1e-9;
+    if (!to_pinned) refuse("a free `to` end", "pin the end at " + std::to_string(to) + " deg (supports.pins)");
+    if (!response.loads.points_only()) refuse("response.pressure or response.gravity", "use point loads");
+  }
   // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
   // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
   // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted

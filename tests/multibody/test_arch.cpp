@@ -2,26 +2,33 @@
 // segments from `from` to `to`, its ends pinned or clamped.
 //
 // Oracles:
-// - linear modes: the inextensible circular arch's frequencies from its beam equations
-//   (arch_modes_oracle.hpp, no shared code), for a pinned-pinned and a clamped-pinned arch;
-//   the chain converges to them at order 2 in 1/n (fitted by tests/support/convergence.hpp);
+// - linear modes: the inextensible circular arch's frequencies by its exact transfer matrix
+//   (tests/support/arch.hpp, archtest::arch_omegas, no shared code), for pinned-pinned and
+//   clamped-pinned arches; the chain converges to them at order 2 in 1/n (fitted by
+//   tests/support/convergence.hpp);
 // - rigid modes: RingSpec::rigid_modes() (an arch with one pin keeps the rotation about it);
 // - nonlinear statics: DaDeppo & Schmidt's deep arch (1975: 215 degrees, clamped at one end,
-//   pinned at the other, a point load at the apex), limit load P R^2 / EI = 8.97 (their
-//   published value, 3 digits), at order 2 in 1/n (the fitted order of the limit loads'
-//   differences between successive n: h^2 makes them fall by 4 per doubling).
+//   pinned at the other, a point load at the apex), limit load P R^2 / EI = 8.97 published,
+//   8.97308997 by shooting on the inextensible elastica (archtest::deep_arch_limit), at order
+//   2 in 1/n;
+// - response: the chain's own linear modal superposition with the same integrator
+//   (modal_superposition.hpp), the deviation falling with the load.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "multibody/backend.hpp"
+#include "multibody/checks.hpp"
+#include "multibody/dynamics.hpp"
 #include "multibody/modes.hpp"
 #include "multibody/static_equilibria.hpp"
 #include "multibody/statics.hpp"
 #include "ring/spec.hpp"
-#include "tests/multibody/arch_modes_oracle.hpp"
 #include "tests/multibody/common.hpp"
+#include "tests/multibody/modal_superposition.hpp"
+#include "tests/support/arch.hpp"
 #include "tests/support/convergence.hpp"
 #include "tests/support/paper.hpp"
 
@@ -62,9 +69,15 @@ class ArchModes : public ::testing::TestWithParam<ArchCase> {};
 TEST_P(ArchModes, ConvergeAtOrderTwoToTheInextensibleArch) {
   const ArchCase c = GetParam();
   const ring::RingSpec spec = arch(c.from, c.to, c.clamp_from);
-  const double alpha = (c.to - c.from) * kPi / 180.0;
-  const auto end = c.clamp_from ? mbtest::arch::End::clamped : mbtest::arch::End::pinned;
-  const std::vector<double> exact = mbtest::arch::frequencies_squared(alpha, end, mbtest::arch::End::pinned, 3);
+  archtest::Arch a;  // inextensible (EA infinite), no rotary inertia: the chain's limit
+  a.R = spec.radius;
+  a.alpha = (c.to - c.from) * kPi / 180.0;
+  a.EI = spec.EI();
+  a.rhoA = spec.rhoA();
+  a.start = c.clamp_from ? archtest::End::clamped : archtest::End::pinned;
+  a.end = archtest::End::pinned;
+  std::vector<double> exact;
+  for (double w : archtest::arch_omegas(a, 3)) exact.push_back(w * w * spec.rhoA() * std::pow(spec.radius, 4) / spec.EI());
   const std::vector<int> ns{24, 48, 96};
   std::vector<std::vector<double>> errors(3);
   for (int n : ns) {
@@ -73,6 +86,8 @@ TEST_P(ArchModes, ConvergeAtOrderTwoToTheInextensibleArch) {
   }
   for (int k = 0; k < 3; ++k) {
     RecordProperty(std::string(c.name) + "_mode" + std::to_string(k + 1) + "_finest_error", sci(errors[k].back()));
+    RecordProperty(std::string(c.name) + "_mode" + std::to_string(k + 1) + "_order",
+                   sci(ringtest::fit_order(ringtest::in_n(ns, errors[k])).order));
     // Order 2 (chain.hpp: the chain's length is the arch's, the hinge springs EI/l); 0.15: the
     // spread of the chains' fitted orders over three refinements on the ring (test_modes.cpp).
     // Ceiling: the chain's error is O((l/R)^2) with a constant below 1 (the ring's), l/R = 0.037
@@ -126,20 +141,152 @@ double deep_arch_limit(int n) {
 }
 
 TEST(ArchStatics, DeepArchLimitLoadConvergesAtOrderTwoToDaDeppo) {
+  const double exact = archtest::deep_arch_limit().load;  // 8.97308997 (DaDeppo & Schmidt: 8.97)
   const std::vector<int> ns{20, 40, 80, 160};
-  std::vector<double> limit;
-  for (int n : ns) limit.push_back(deep_arch_limit(n));
-  for (std::size_t i = 0; i < ns.size(); ++i)
-    RecordProperty("limit_n" + std::to_string(ns[i]), sci(limit[i]));
-  // Order 2: the differences of successive limits fall like n^-2 (0.15: as the modes').
-  std::vector<double> diffs;
-  for (std::size_t i = 0; i + 1 < limit.size(); ++i) diffs.push_back(std::abs(limit[i + 1] - limit[i]));
-  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(std::vector<int>{20, 40, 80}, diffs), 2.0, 0.15));
-  // Richardson's limit of the two finest against DaDeppo & Schmidt's 8.97 (3 digits: 0.06 %
-  // is their rounding, 5e-3 absolute).
-  const double extrapolated = limit[3] + (limit[3] - limit[2]) / 3.0;
-  RecordProperty("limit_extrapolated", sci(extrapolated));
-  EXPECT_NEAR(extrapolated, 8.97, 5e-3);
+  std::vector<double> errors;
+  for (int n : ns) {
+    const double limit = deep_arch_limit(n);
+    RecordProperty("limit_n" + std::to_string(n), sci(limit));
+    errors.push_back(std::abs(limit - exact) / exact);
+  }
+  RecordProperty("limit_order", sci(ringtest::fit_order(ringtest::in_n(ns, errors)).order));
+  // Order 2 (0.15: as the modes'); the chain's error at n = 160 is O((l/R)^2), l/R = 0.023,
+  // with a constant below 1 (the modes'): 5e-4 bounds it.
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.15, 5e-4));
+}
+
+// The command's path (solve_static with static.path): through the limit point and on, the
+// apex recorded; its largest load factor is the limit the driver located (above, n = 40).
+TEST(ArchStatics, DeepArchPathPassesTheLimitPoint) {
+  const ring::RingSpec spec = deep_arch();
+  ring::StaticOptions st;
+  const double P = 10.0;
+  st.loads.points = {{90.0, {0.0, -P * spec.EI() / (spec.radius * spec.radius)}}};
+  st.steps = 10;
+  st.path = true;
+  st.record = {90.0, 197.5};
+  const ring::StaticResult r = multibody::solve_static(spec, mbtest::dense_chain(40), st);
+  double most = 0.0;
+  for (const ring::PathPoint& p : r.path) most = std::max(most, p.load_factor);
+  RecordProperty("path_points", static_cast<int>(r.path.size()));
+  RecordProperty("path_end", r.end);
+  // The located limit is a point of the path within 1e-6 of a step; the accepted points come
+  // within a step's load change of it: 1 % of the limit bounds that at n = 40.
+  EXPECT_NEAR(most * P, deep_arch_limit(40), 0.01 * deep_arch_limit(40));
+  // The pinned end does not move (its rows), to round-off of the hinge positions.
+  for (const ring::PathPoint& p : r.path) {
+    EXPECT_LT(std::hypot(p.displacements.at(1).ux, p.displacements.at(1).uy), 1e-9 * spec.radius);
+  }
+  // The apex has gone down past the limit.
+  EXPECT_LT(r.path.back().displacements.at(0).uy, 0.0);
+}
+
+/// A step load F (N) down at the apex (90 deg) of an arch, dt = 2.5 ms for 1.5 s (about two
+/// periods of the lowest mode of the 120-degree arches), the apex and 60 deg recorded.
+ring::ResponseOptions apex_step(double F, ring::ResponseOptions::Integrator integrator) {
+  ring::ResponseOptions r;
+  r.loads.points = {{90.0, {0.0, -F}}};
+  r.history.kind = ring::LoadHistory::Kind::step;
+  r.integrator = integrator;
+  r.dt = 0.0025;
+  r.t_end = 1.5;
+  r.record = {90.0, 60.0};
+  return r;
+}
+
+class ArchResponse : public ::testing::TestWithParam<ring::ResponseOptions::Integrator> {};
+
+// The response under a small step load is the chain's linear modal superposition with the same
+// integrator mode by mode (modal_superposition.hpp: the modes of solve_modes, an independent
+// linearization and eigensolver); what is left is the geometric nonlinearity, which falls
+// with the load (a tenth of the load leaves a tenth of it).
+TEST_P(ArchResponse, SmallStepLoadIsTheModalSuperposition) {
+  for (const ring::RingSpec& spec : {arch(30.0, 150.0, false), arch(30.0, 150.0, true)}) {
+    const ring::ResponseOptions r = apex_step(20.0, GetParam()), r10 = apex_step(2.0, GetParam());
+    const ring::TimeHistory th = multibody::respond(spec, mbtest::dense_chain(24), r);
+    const ring::TimeHistory th10 = multibody::respond(spec, mbtest::dense_chain(24), r10);
+    const mbtest::Linear same = mbtest::modal_superposition(spec, 24, r, th.t, true);
+    const mbtest::Linear same10 = mbtest::modal_superposition(spec, 24, r10, th10.t, true);
+    for (int p : {0, 1}) {
+      const double d = mbtest::relative_deviation(th, same, p), d10 = mbtest::relative_deviation(th10, same10, p);
+      const std::string tag = std::string(spec.supports.clamp ? "clamped" : "pinned") + "_" +
+                              std::to_string(static_cast<int>(r.record[p]));
+      RecordProperty("vs_same_" + tag, sci(d));
+      RecordProperty("vs_same_tenth_" + tag, sci(d10));
+      // As the ring's (test_dynamics.cpp): the first correction is quadratic in the
+      // displacement, so its relative size is linear in the load: ratio 10, band 8 .. 12 for
+      // the next-order terms; and small (1e-3 of the peak at 20 N, as the ring's bound).
+      EXPECT_LT(d, 1e-3) << tag;
+      EXPECT_GT(d / d10, 8.0) << tag;
+      EXPECT_LT(d / d10, 12.0) << tag;
+    }
+    // The pinned far end stays put: its rows hold to round-off.
+    for (double g : th.constraint_residual) EXPECT_LT(g, 1e-12 * spec.radius);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, ArchResponse,
+                         ::testing::Values(ring::ResponseOptions::Integrator::newmark,
+                                           ring::ResponseOptions::Integrator::generalized_alpha),
+                         [](const auto& info) {
+                           return info.param == ring::ResponseOptions::Integrator::newmark ? "newmark"
+                                                                                            : "generalized_alpha";
+                         });
+
+/// The message of the std::invalid_argument that `f` throws ("" if none).
+template <class F>
+std::string refusal(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// What the chain does not take on an arch is refused before computing, naming ring.arc and
+// the key (checks.cpp); "auto" is dense for an arch whatever n (backend.hpp).
+TEST(ArchChecks, RefuseByKey) {
+  const ring::RingSpec base = arch(30.0, 150.0, false);
+  ring::MultibodyOptions o = mbtest::dense_chain(24);
+  auto modes_refusal = [&](const ring::RingSpec& s, const ring::MultibodyOptions& opt) {
+    return refusal([&] { multibody::check_modes(s, opt); });
+  };
+  ring::MultibodyOptions sparse = o;
+  sparse.method = ring::MultibodyOptions::Method::sparse;
+  ring::MultibodyOptions paper = o;
+  paper.dependent = ring::MultibodyOptions::Dependent::paper;
+  ring::RingSpec timo = base, roller = base, springs = base, masses = base, foundation = base;
+  timo.theory = ring::Theory::timoshenko;
+  roller.supports.roller = 90.0;
+  springs.supports.springs = {{90.0, 1e3, 0.0, 0.0}};
+  masses.masses = {{90.0, 1.0, 0.0}};
+  foundation.foundation.radial = 100.0;
+  const std::pair<std::string, std::string> cases[] = {
+      {modes_refusal(base, sparse), "multibody.method"},     {modes_refusal(base, paper), "multibody.dependent"},
+      {modes_refusal(timo, o), "ring.theory"},                {modes_refusal(roller, o), "supports.roller"},
+      {modes_refusal(springs, o), "supports.springs"},        {modes_refusal(masses, o), "masses"},
+      {modes_refusal(foundation, o), "foundation"}};
+  for (const auto& [message, key] : cases) {
+    EXPECT_NE(message.find("ring.arc"), std::string::npos) << message;
+    EXPECT_NE(message.find(key), std::string::npos) << message;
+  }
+  ring::StaticOptions st;
+  st.loads.pressure.value = 1e3;
+  st.loads.pressure.kind = ring::Pressure::Kind::dead;
+  const std::string pressure = refusal([&] { multibody::check_static(base, o, st); });
+  EXPECT_NE(pressure.find("static.pressure"), std::string::npos) << pressure;
+  EXPECT_NE(pressure.find("ring.arc"), std::string::npos) << pressure;
+  // An arch held by one pin turns about it under a point load: refused, naming the ends' keys.
+  ring::StaticOptions point;
+  point.loads.points = {{90.0, {0.0, -1e3}}};
+  const std::string rigid = refusal([&] { multibody::check_static(arch(30.0, 150.0, false, false), o, point); });
+  EXPECT_NE(rigid.find("supports.pin"), std::string::npos) << rigid;
+  ring::MultibodyOptions automatic = o;
+  automatic.method = ring::MultibodyOptions::Method::automatic;
+  automatic.n = 2000;
+  EXPECT_EQ(multibody::backend(automatic, base, 3), multibody::Backend::dense);
+  EXPECT_EQ(multibody::backend(automatic, base, point), multibody::Backend::dense);
 }
 
 }  // namespace
