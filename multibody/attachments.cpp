@@ -128,8 +128,9 @@ double Attachments::energy(const Vector& q, bool rotations) const {
   if (rotations)
     for (int k = 0; k < chain_.hinges(); ++k)
       if (rot_k_[k] > 0.0) {
-        double dm = 0.0;
-        for (const auto& [segment, weight] : mean_rotation(chain_, k)) dm += weight * (q[segment] - q0_[segment]);
+        const int j = is_end(chain_, k) ? (k == 0 ? 0 : k - 1) : (k + chain_.n() - 1) % chain_.n();
+        const int i = is_end(chain_, k) ? j : k;  // an arch's end: its one segment (mean_rotation)
+        const double dm = 0.5 * (q[j] - q0_[j] + q[i] - q0_[i]);
         e += 0.5 * rot_k_[k] * dm * dm;
       }
   return e;

@@ -327,10 +327,9 @@ std::vector<ring::ModeShape> Chain::rest_shapes(const Matrix& dq) const {
 Vector Chain::spring_forces(const Vector& q) const {
   const Vector r = hinge_rotations(q);
   Vector f = Vector::Zero(dofs());
-  for (int k = first_spring(); k < n_; ++k) {  // spring k joins segments k - 1 and k
-    f[k] += k_ * r[k];
-    f[(k + n_ - 1) % n_] -= k_ * r[k];
-  }
+  // f_k = K (r_k - r_{k+1}), cyclic on the ring; an arch has no spring at its ends (r_0 = 0
+  // by hinge_rotations, r_n = 0 here).
+  for (int k = 0; k < n_; ++k) f[k] = k_ * (r[k] - (arch_ && k + 1 == n_ ? 0.0 : r[(k + 1) % n_]));
   return f;
 }
 

@@ -16,8 +16,14 @@ namespace {
 
 /// What the chain takes of an arch (chain.hpp: the open chain, dense angle paths): its ends
 /// pinned, clamped or free, further pins, point loads. The rest is refused by key, naming
-/// ring.arc. `who` names the analysis. O(supports + masses).
-void check_arch(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const std::string& who) {
+/// ring.arc. `who` names the analysis; `plastic`: whether it refuses ring.plastic, ignores it
+/// (the linear modes are elastic, as the ring's) or takes it (the statics: the interior hinges'
+/// law, bending.hpp; a clamped end's half-hinge is elastic, so not with a clamp). O(supports + masses).
+/// What an analysis does with ring.plastic on an arch.
+enum class PlasticUse { refused, ignored, taken };
+
+void check_arch(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const std::string& who,
+                PlasticUse plastic) {
   if (!spec.is_arch()) return;
   auto refuse = [&](const std::string& key, const std::string& why) {
     throw std::invalid_argument(who + " on an arch (ring.arc) does not take " + key + " yet: " + why);
@@ -32,7 +38,11 @@ void check_arch(const ring::RingSpec& spec, const ring::MultibodyOptions& option
   if (!spec.supports.springs.empty()) refuse("supports.springs", "pin or clamp its ends");
   if (!spec.masses.empty()) refuse("masses", "remove the point masses");
   if (spec.foundation.any()) refuse("foundation", "remove the foundation");
-  if (spec.plastic) refuse("ring.plastic", "remove ring.plastic");
+  if (spec.plastic && plastic == PlasticUse::refused) refuse("ring.plastic", "remove ring.plastic");
+  // The statics take the law at the interior hinges; a clamped end's half-hinge is elastic.
+  if (plastic == PlasticUse::taken && spec.plastic && spec.supports.clamp)
+    refuse("ring.plastic with supports.clamp", "a clamped end's half-hinge to the wall has no plastic law (attachments.hpp); "
+                                              "pin the ends or remove ring.plastic");
 }
 
 /// The loads of a static analysis on an arch: point loads only (refused by key otherwise).
@@ -49,7 +59,7 @@ void check_arch_loads(const ring::RingSpec& spec, const ring::Loads& loads, cons
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
-  check_arch(spec, options, "the multibody linear modes");
+  check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
   // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
   if (sparse)
@@ -85,7 +95,7 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
-  check_arch(spec, options, "the multibody statics");
+  check_arch(spec, options, "the multibody statics", PlasticUse::taken);
   check_arch_loads(spec, statics.loads, "static");
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
   // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
@@ -142,7 +152,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  check_arch(spec, options, "the multibody response");
+  check_arch(spec, options, "the multibody response", PlasticUse::refused);
   if (spec.is_arch()) {
     // The dense angle integrators (newmark, generalized-alpha) on the open chain whose far end
     // is pinned (its rows: the partitioning's dependent angles), under point loads.
