@@ -45,15 +45,28 @@ void check_arch(const ring::RingSpec& spec, const ring::MultibodyOptions& option
                                               "pin the ends or remove ring.plastic");
 }
 
-/// The loads of a static analysis on an arch: point loads only (refused by key otherwise).
+/// True when both ends of the arch are pinned (supports.pin or .pins at `from` and `to`).
+bool ends_pinned(const ring::RingSpec& spec) {
+  bool from = false, to = false;
+  for (double p : spec.supports.pinned()) {
+    const double at = spec.arc->offset(p);
+    from = from || at < 1e-9;
+    to = to || std::abs(at - spec.arc->span()) < 1e-9;
+  }
+  return from && to;
+}
+
+/// The loads of a static analysis on an arch: point loads, and uniform pressure of any kind
+/// with both ends pinned (the follower pressure's potential p A closes the polygon through
+/// its ends, loading.hpp; constant there). Gravity is refused by key.
 void check_arch_loads(const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section) {
   if (!spec.is_arch()) return;
-  if (loads.pressure.any())
-    throw std::invalid_argument("the multibody statics on an arch (ring.arc) does not take " + section +
-                                ".pressure yet: use point loads");
+  if (loads.pressure.any() && !ends_pinned(spec))
+    throw std::invalid_argument("the multibody statics on an arch (ring.arc) takes " + section +
+                                ".pressure with both ends pinned only (supports.pin and supports.pins at the ends)");
   if (loads.has_gravity())
     throw std::invalid_argument("the multibody statics on an arch (ring.arc) does not take " + section +
-                                ".gravity yet: use point loads");
+                                ".gravity yet: use point loads or pressure");
 }
 
 }  // namespace

@@ -57,10 +57,11 @@ Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loa
       }
       break;
     case ring::Pressure::Kind::follower:
-      // Its potential p A needs the closed polygon's area; an arch's has no closing side.
-      if (chain.arch() && p != 0.0)
+      // Its potential p A: on an arch the polygon closes through its ends (the pair (n, 0)),
+      // whose side is then constant only with both ends held (the checks ask for pins there).
+      if (chain.arch() && p != 0.0 && !(chain.holds(0) && chain.holds(n)))
         throw std::invalid_argument("multibody: " + section + ".pressure of kind \"follower\" on an arch (ring.arc) "
-                                    "is not offered yet: use kind \"dead\"");
+                                    "needs both ends pinned");
       follower_ = p;
       break;
     case ring::Pressure::Kind::central: central_ = p; break;

@@ -266,6 +266,63 @@ TEST(ArchStatics, PlasticCollapseIsTheLimitAnalysisOfThePolygon) {
   }
 }
 
+/// The load factor of the first bifurcation of the pinned 120-degree arch [30, 150] under the
+/// uniform pressure `p` (N/m) of `kind` on the n-segment chain (paths::Trace::bifurcation_*,
+/// the bracket's middle), or NaN when the path ends otherwise.
+double pressure_bifurcation(int n, double p, ring::Pressure::Kind kind) {
+  const ring::RingSpec spec = arch(30.0, 150.0, false);
+  ring::Loads loads;
+  loads.pressure.value = p;
+  loads.pressure.kind = kind;
+  const multibody::Chain chain(spec, mbtest::dense_chain(n));
+  auto eq = multibody::detail::angle_equilibrium(chain, spec, loads, spec.section.depth());
+  paths::Continuation policy;
+  policy.steps = 10;
+  const paths::Trace t = paths::follow(*eq, {eq->rest(), 0.0}, policy);
+  if (t.end != paths::Trace::End::bifurcation) return std::nan("");
+  return 0.5 * (t.bifurcation_low + t.bifurcation_high);
+}
+
+// Uniform follower pressure on the pinned arch: the circle is its funicular (the inextensible
+// arch stays at rest, compressed), and it buckles at Timoshenko & Gere's q R^3 / EI =
+// pi^2 / alpha^2 - 1 (alpha half the opening: 8 for 120 degrees; archtest::
+// pinned_follower_pressure), where the statics' path meets its bifurcation.
+TEST(ArchStatics, FollowerPressureBucklesThePinnedArchAtTimoshenkoAndGere) {
+  const ring::RingSpec spec = arch(30.0, 150.0, false);
+  const double exact = archtest::pinned_follower_pressure(60.0 * kPi / 180.0);
+  RecordProperty("timoshenko_gere", sci(exact));
+  const double scale = spec.EI() / std::pow(spec.radius, 3);
+  const std::vector<int> ns{24, 48, 96};
+  std::vector<double> errors;
+  for (int n : ns) {
+    const double q = pressure_bifurcation(n, 1.5 * exact * scale, ring::Pressure::Kind::follower) * 1.5 * exact;
+    RecordProperty("critical_n" + std::to_string(n), sci(q));
+    errors.push_back(std::abs(q - exact) / exact);
+  }
+  RecordProperty("critical_order", sci(ringtest::fit_order(ringtest::in_n(ns, errors)).order));
+  // Order 2 as the modes' (0.15); the bracket is 1e-6 of a load step (continuation.hpp), far below.
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.15, 2e-3));
+}
+
+// Under dead pressure (constant forces p n0 l / 2 at each end of every segment) the rest polygon
+// is itself in equilibrium (the forces at each interior hinge are radial and equal, the
+// segments carry them as a uniform compression): nothing moves below the first bifurcation.
+TEST(ArchStatics, DeadPressureLeavesThePinnedArchAtRest) {
+  const ring::RingSpec spec = arch(30.0, 150.0, false);
+  ring::StaticOptions st;
+  st.loads.pressure.value = 2.0 * spec.EI() / std::pow(spec.radius, 3);  // a quarter of the follower's critical
+  st.loads.pressure.kind = ring::Pressure::Kind::dead;
+  st.record = {60.0, 90.0, 120.0};
+  const ring::StaticResult r = multibody::solve_static(spec, mbtest::dense_chain(24), st);
+  EXPECT_GE(r.steps, 1);
+  ASSERT_EQ(r.displacements.size(), 3u);
+  // Round-off of the hinge positions (R = 10 m): 1e-12 m.
+  for (const ring::PointDisplacement& d : r.displacements) {
+    EXPECT_LT(std::abs(d.ux), 1e-12) << d.angle;
+    EXPECT_LT(std::abs(d.uy), 1e-12) << d.angle;
+  }
+}
+
 /// A step load F (N) down at the apex (90 deg) of an arch, dt = 2.5 ms for 1.5 s (about two
 /// periods of the lowest mode of the 120-degree arches), the apex and 60 deg recorded.
 ring::ResponseOptions apex_step(double F, ring::ResponseOptions::Integrator integrator) {
@@ -356,12 +413,18 @@ TEST(ArchChecks, RefuseByKey) {
     EXPECT_NE(message.find("ring.arc"), std::string::npos) << message;
     EXPECT_NE(message.find(key), std::string::npos) << message;
   }
+  // Pressure needs both ends pinned; gravity is refused.
   ring::StaticOptions st;
   st.loads.pressure.value = 1e3;
   st.loads.pressure.kind = ring::Pressure::Kind::dead;
-  const std::string pressure = refusal([&] { multibody::check_static(base, o, st); });
+  const std::string pressure = refusal([&] { multibody::check_static(arch(30.0, 150.0, true, false), o, st); });
   EXPECT_NE(pressure.find("static.pressure"), std::string::npos) << pressure;
   EXPECT_NE(pressure.find("ring.arc"), std::string::npos) << pressure;
+  EXPECT_EQ(refusal([&] { multibody::check_static(base, o, st); }), "");
+  ring::StaticOptions gravity;
+  gravity.loads.gravity = {0.0, -9.81};
+  const std::string weight = refusal([&] { multibody::check_static(base, o, gravity); });
+  EXPECT_NE(weight.find("static.gravity"), std::string::npos) << weight;
   // An arch held by one pin turns about it under a point load: refused, naming the ends' keys.
   ring::StaticOptions point;
   point.loads.points = {{90.0, {0.0, -1e3}}};
