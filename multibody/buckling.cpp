@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "modal/buckling.hpp"
+#include "multibody/checks.hpp"
 #include "multibody/statics.hpp"
 #include "ring/errors.hpp"
 
@@ -13,7 +14,7 @@ namespace multibody {
 
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling) {
-  ring::refuse_arch(spec, "the multibody buckling");
+  check_arch_buckling(spec, options, buckling.loads);  // an arch: the statics' loads (checks.hpp)
   if (spec.plastic)
     throw ring::InputError("", "ring.plastic",
                            "multibody linear buckling is about the undeformed, elastic ring and would ignore the "

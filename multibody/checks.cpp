@@ -71,6 +71,11 @@ void check_arch_loads(const ring::RingSpec& spec, const ring::Loads& loads, cons
 
 }  // namespace
 
+void check_arch_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::Loads& loads) {
+  check_arch(spec, options, "the multibody buckling", PlasticUse::refused);
+  check_arch_loads(spec, loads, "buckling");
+}
+
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;

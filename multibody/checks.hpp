@@ -4,11 +4,12 @@
 // any solver runs, so a refusal never comes after another solver's work. O(1).
 //
 // An arch (ring.arc; chain.hpp, "The arch") runs on the dense angle paths: the linear modes,
-// the statics under point loads (static.path included) and the newmark / generalized-alpha
+// the statics under point loads and pressure (static.path included), linear buckling, and the newmark / generalized-alpha
 // response under point loads with its `to` end pinned. Refused by key, each message naming
 // ring.arc: multibody.method = "sparse", dependent = "paper", the Timoshenko chain, a roller,
 // springs, masses, the foundation, ring.plastic, pressure and gravity, the energy-momentum
-// integrator, a free `to` end in the response, buckling and the modes under load.
+// integrator, a free `to` end in the response, and the modes under load. Linear buckling
+// takes the statics' loads (check_arch_buckling).
 #pragma once
 
 #include "ring/analysis.hpp"
@@ -16,6 +17,9 @@
 
 namespace multibody {
 
+/// Linear buckling on an arch (buckling.hpp): the arch's refusals of the statics (point loads,
+/// pressure with both ends pinned; no ring.plastic); nothing for a ring. O(supports).
+void check_arch_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::Loads& loads);
 /// Linear modes: n >= 4, a positive section and material, method = "sparse" only with
 /// dependent = "robust" and n >= 10.
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "multibody/backend.hpp"
+#include "multibody/buckling.hpp"
 #include "multibody/checks.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/modes.hpp"
@@ -293,15 +294,30 @@ TEST(ArchStatics, FollowerPressureBucklesThePinnedArchAtTimoshenkoAndGere) {
   RecordProperty("timoshenko_gere", sci(exact));
   const double scale = spec.EI() / std::pow(spec.radius, 3);
   const std::vector<int> ns{24, 48, 96};
-  std::vector<double> errors;
+  std::vector<double> errors, critical;
   for (int n : ns) {
     const double q = pressure_bifurcation(n, 1.5 * exact * scale, ring::Pressure::Kind::follower) * 1.5 * exact;
     RecordProperty("critical_n" + std::to_string(n), sci(q));
+    critical.push_back(q);
     errors.push_back(std::abs(q - exact) / exact);
   }
   RecordProperty("critical_order", sci(ringtest::fit_order(ringtest::in_n(ns, errors)).order));
   // Order 2 as the modes' (0.15); the bracket is 1e-6 of a load step (continuation.hpp), far below.
   EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.15, 2e-3));
+  // Linear buckling (buckling.hpp) about the rest arch: the prebuckling state does not move
+  // (the circle is funicular), so its factor is the chain's bifurcation itself, to the eigen
+  // solver's round-off (1e-9 of it) against the path's bracket (1e-6 of a load step of 0.15
+  // times the reference: 1e-6 relative bounds both).
+  for (std::size_t i = 0; i < ns.size(); ++i) {
+    ring::BucklingOptions b;
+    b.loads.pressure.value = scale;  // q R^3 / EI = 1: the factor is the critical q R^3 / EI
+    b.loads.pressure.kind = ring::Pressure::Kind::follower;
+    b.count = 1;
+    const ring::BucklingResult r = multibody::compute_buckling(spec, mbtest::dense_chain(ns[i]), b);
+    ASSERT_EQ(r.factors.size(), 1u);
+    RecordProperty("buckling_n" + std::to_string(ns[i]), sci(r.factors[0]));
+    EXPECT_NEAR(r.factors[0], critical[i], 1e-6 * exact);
+  }
 }
 
 // Under dead pressure (constant forces p n0 l / 2 at each end of every segment) the rest polygon
