@@ -56,17 +56,17 @@ bool ends_pinned(const ring::RingSpec& spec) {
   return from && to;
 }
 
-/// The loads of a static analysis on an arch: point loads, and uniform pressure of any kind
-/// with both ends pinned (the follower pressure's potential p A closes the polygon through
-/// its ends, loading.hpp; constant there). Gravity is refused by key.
+/// The loads of a static analysis on an arch: point loads; uniform pressure of any kind and
+/// gravity with both ends pinned (the follower pressure's potential p A closes the polygon
+/// through its ends, loading.hpp, constant there; gravity tested on that arch).
 void check_arch_loads(const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section) {
   if (!spec.is_arch()) return;
   if (loads.pressure.any() && !ends_pinned(spec))
     throw std::invalid_argument("the multibody statics on an arch (ring.arc) takes " + section +
                                 ".pressure with both ends pinned only (supports.pin and supports.pins at the ends)");
-  if (loads.has_gravity())
-    throw std::invalid_argument("the multibody statics on an arch (ring.arc) does not take " + section +
-                                ".gravity yet: use point loads or pressure");
+  if (loads.has_gravity() && !ends_pinned(spec))
+    throw std::invalid_argument("the multibody statics on an arch (ring.arc) takes " + section +
+                                ".gravity with both ends pinned only (supports.pin and supports.pins at the ends)");
 }
 
 }  // namespace
