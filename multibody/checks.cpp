@@ -153,7 +153,6 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics) {
-  ring::refuse_arch(spec, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
   if (spec.plastic)

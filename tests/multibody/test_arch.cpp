@@ -320,6 +320,40 @@ TEST(ArchStatics, FollowerPressureBucklesThePinnedArchAtTimoshenkoAndGere) {
   }
 }
 
+// Modes under load (modes.preload = "static") on the pinned arch under follower pressure q:
+// the rest state is the equilibrium (the circle is funicular), so the pencil is
+// (K0 + q K1, M) and its lowest omega^2 is the minimum of functions linear in q: concave in q,
+// zero where K0 + q K1 turns singular, at the linear buckling factor (tested above against
+// Timoshenko & Gere). So omega_1^2(q_cr/2) >= omega_1^2(0)/2, and omega_1^2 vanishes at q_cr.
+TEST(ArchStatics, ModesUnderFollowerPressureVanishAtTheBucklingLoad) {
+  const ring::RingSpec spec = arch(30.0, 150.0, false);
+  const double scale = spec.EI() / std::pow(spec.radius, 3);
+  const int n = 24;
+  ring::BucklingOptions b;
+  b.loads.pressure.value = scale;
+  b.loads.pressure.kind = ring::Pressure::Kind::follower;
+  b.count = 1;
+  const double critical = multibody::compute_buckling(spec, mbtest::dense_chain(n), b).factors.at(0);
+  auto omega2 = [&](double f) {
+    ring::StaticOptions st;
+    st.loads = b.loads;
+    st.loads.pressure.value = f * critical * scale;
+    const ring::ModalResult r = multibody::compute_modes_under_load(spec, mbtest::dense_chain(n), st, 1);
+    return r.omega.at(0) * r.omega.at(0);
+  };
+  const double w0 = multibody::compute_modes(spec, mbtest::dense_chain(n), 1).omega.at(0);
+  const double half = omega2(0.5), near = omega2(1.0 - 1e-6);
+  RecordProperty("omega2_half_over_rest", sci(half / (w0 * w0)));
+  RecordProperty("omega2_near_critical_over_rest", sci(near / (w0 * w0)));
+  // Concave with a zero at q_cr: above the chord from (0, omega_1^2(0)) to (q_cr, 0), less the
+  // eigensolvers' round-off (~1e-12 of omega_1^2(0)).
+  EXPECT_GE(half, 0.5 * w0 * w0 * (1.0 - 1e-9));
+  EXPECT_GE(near, 1e-6 * w0 * w0 - 1e-12 * w0 * w0);
+  // And it vanishes there: 1e-6 below q_cr it is of the order of the chord (measured 1.0004e-6
+  // of omega_1^2(0): nearly linear in q); 2e-6 bounds a slope twice the chord's.
+  EXPECT_LT(near, 2e-6 * w0 * w0);
+}
+
 // Under dead pressure (constant forces p n0 l / 2 at each end of every segment) the rest polygon
 // is itself in equilibrium (the forces at each interior hinge are radial and equal, the
 // segments carry them as a uniform compression): nothing moves below the first bifurcation.
