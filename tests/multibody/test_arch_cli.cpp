@@ -75,6 +75,28 @@ TEST(ArchCli, StaticPathThroughTheLimitPoint) {
   EXPECT_NEAR(most * kLoad, exact, 0.01 * exact);
 }
 
+// Linear buckling of the pinned 120-degree arch under follower pressure (1 N/m, so the factor is
+// the critical pressure): Timoshenko & Gere's pi^2 / alpha^2 - 1 = 8 EI/R^3
+// (archtest::pinned_follower_pressure), the chain at n = 40 within its O(1/n^2) error
+// (test_arch.cpp: 5.7e-3 at n = 24, 1.4e-3 at 48; so about 2e-3 at 40): 5e-3 bounds it.
+TEST(ArchCli, BucklingOfThePinnedArchUnderFollowerPressure) {
+  const std::string dir = ringtest::temp_dir();
+  std::ostringstream s;
+  s.precision(17);
+  s << "[ring]\nradius = " << kR << "\nE = " << kE << "\nrho = " << kRho
+    << "\nsection = { shape = \"circle\", diameter = " << kD << " }\narc = [30.0, 150.0]\n"
+    << "[supports]\npin = 30.0\npins = [150.0]\n"
+    << "[multibody]\nn = 40\n"
+    << "[buckling]\nsolvers = [\"multibody\"]\npressure = { value = 1.0, kind = \"follower\" }\ncount = 1\n";
+  ringtest::write(dir + "/arch-buckling.toml", s.str());
+  const auto r = ringvib("buckling " + dir + "/arch-buckling.toml --solver multibody --json -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto f = nlohmann::json::parse(r.out)["factors"];
+  ASSERT_EQ(f.size(), 1u);
+  const double exact = archtest::pinned_follower_pressure(kPi / 3.0) * kEI / (kR * kR * kR);
+  EXPECT_NEAR(f[0].get<double>() / exact, 1.0, 5e-3);
+}
+
 TEST(ArchCli, ForcedSparseIsRefusedNamingTheArch) {
   const std::string scene = deep_arch_scene();
   const auto r = ringvib("modes " + scene + " --solver multibody --set multibody.method=\"sparse\"");
