@@ -183,7 +183,9 @@ void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& op
     bool to_pinned = false;
     for (double p : spec.supports.pinned()) to_pinned = to_pinned || std::abs(spec.arc->offset(p) - spec.arc->span()) < 1e-9;
     if (!to_pinned) refuse("a free `to` end", "pin the end at " + std::to_string(to) + " deg (supports.pins)");
-    if (!response.loads.points_only()) refuse("response.pressure or response.gravity", "use point loads");
+    if (response.loads.pressure.any()) refuse("response.pressure", "use point loads or gravity");
+    if (response.loads.has_gravity() && !ends_pinned(spec))
+      refuse("response.gravity without both ends pinned", "pin both ends (supports.pin and supports.pins)");
   }
   // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
   // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete

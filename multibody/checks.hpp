@@ -6,11 +6,11 @@
 // An arch (ring.arc; chain.hpp, "The arch") runs on the dense angle paths: the linear modes;
 // the statics under point loads, and pressure and gravity with both ends pinned (static.path
 // included; ring.plastic with pinned ends); linear buckling and the modes under load with the
-// statics' loads; the newmark / generalized-alpha response under point loads with its `to`
-// end pinned. Refused by key, each message naming ring.arc: multibody.method = "sparse",
+// statics' loads; the newmark / generalized-alpha response under point loads (and gravity
+// with both ends pinned) with its `to` end pinned. Refused by key, each message naming ring.arc: multibody.method = "sparse",
 // dependent = "paper", the Timoshenko chain, a roller, springs, masses, the foundation,
 // ring.plastic with a clamped end and in the response, pressure and gravity without both ends
-// pinned and in the response, the energy-momentum integrator and a free `to` end in the
+// pinned, pressure in the response, the energy-momentum integrator and a free `to` end in the
 // response.
 #pragma once
 
