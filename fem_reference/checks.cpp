@@ -160,6 +160,7 @@ double precision_ratio_bound(int elements, int degree) {
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  ring::refuse_arch(spec, "the fem linear modes");
   check_linear(spec, o);
   // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused
   // here, before any assembly, where the bound already exceeds the limit (the model's own
@@ -185,6 +186,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_arch(spec, "the fem statics");
   check_nonlinear(spec, o, st.loads, st.record, "static");
   check_plastic(spec, "statics");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
@@ -203,6 +205,7 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
+  ring::refuse_arch(spec, "the fem buckling");
   refuse_plastic(spec, "linear buckling is about the undeformed, elastic ring and would ignore the plastic law "
                        "(follow the equilibrium path with static.path = true instead)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
@@ -216,6 +219,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_arch(spec, "the fem modes under load");
   refuse_plastic(spec, "the modes under load take the elastic tangent at the loaded equilibrium, which the plastic "
                        "statics do not provide yet (remove modes.preload)");
   // static.path shapes the path's report, not the equilibrium at the full load.
@@ -233,6 +237,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  ring::refuse_arch(spec, "the fem response");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   check_plastic(spec, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,
