@@ -140,8 +140,8 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
 void refuse_arch_here(const ring::RingSpec& spec, const std::string& who) {
   if (spec.is_arch())
     throw ring::InputError("", "ring.arc",
-                           who + " does not take an arch (ring.arc) yet; the chain's linear modes and nonlinear "
-                                 "statics (point loads, gravity, static.path) do");
+                           who + " does not take an arch (ring.arc) yet; the chain's linear modes, nonlinear "
+                                 "statics (point loads, gravity, static.path) and response do");
 }
 
 }  // namespace
@@ -242,7 +242,6 @@ void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& optio
 
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& r) {
-  refuse_arch_here(spec, "the lumped response");
   check_chain(spec, options, "response");
   check_loads(spec, options, r.loads, "response");
   using Integrator = ring::ResponseOptions::Integrator;
