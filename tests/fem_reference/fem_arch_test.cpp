@@ -1,0 +1,191 @@
+// The FE beam on an arch (ring.arc, issue 48): the curved elements from arc.from to arc.to
+// without the ring's periodic wrap, the ends taking the supports.
+//
+// Oracles (tests/support/arch.hpp, written from the mechanics without any solver's code):
+//  - natural frequencies of pinned-pinned and clamped-pinned arches by the exact transfer
+//    matrix of the curved Euler-Bernoulli beam (extensible and inextensible; ~1e-12);
+//  - DaDeppo & Schmidt's deep arch (215 deg, clamped-pinned, apex load) by shooting on the
+//    inextensible elastica: limit P R^2/EI = 8.97308997;
+//  - the rigid-mode count of spec.rigid_modes() (free-free 3, pinned-free 1, pinned-pinned 0);
+//  - fitted orders (support/convergence.hpp): the form is consistent, eigenvalues converge
+//    like h^(2(p-1)) (fem_reference/README.md), as on the ring.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fem_reference/modes.hpp"
+#include "fem_reference/nonlinear.hpp"
+#include "fem_reference/buckling.hpp"
+#include "ring/errors.hpp"
+#include "support/arch.hpp"
+#include "support/convergence.hpp"
+#include "support/refusal.hpp"
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+/// The paper's section on an arch of radius R = 10 m from `from` to `to` (degrees).
+ring::RingSpec arch(double from, double to) {
+  ring::RingSpec s;
+  s.radius = 10.0;
+  s.E = 2.1e11;
+  s.rho = 7.8e3;
+  s.section.shape = ring::Section::Shape::circle;
+  s.section.diameter = 0.12;
+  s.arc = ring::Arc{from, to};
+  return s;
+}
+
+/// Pins both ends; `clamp_from`: the `from` end clamped.
+ring::RingSpec pinned_arch(double from, double to, bool clamp_from = false) {
+  ring::RingSpec s = arch(from, to);
+  s.supports.pin = from;
+  s.supports.pins = {to};
+  if (clamp_from) s.supports.clamp = from;
+  return s;
+}
+
+/// The oracle's arch of the same spec: theta from 0 to the span.
+archtest::Arch oracle(const ring::RingSpec& s, archtest::End start, archtest::End end, bool extensible) {
+  archtest::Arch a;
+  a.R = s.radius;
+  a.alpha = s.arc->span() * kDeg;
+  a.EI = s.EI();
+  a.EA = extensible ? s.EA() : std::numeric_limits<double>::infinity();
+  a.rhoA = s.rhoA();
+  a.start = start;
+  a.end = end;
+  return a;
+}
+
+ring::FemOptions fe_options(int elements, int degree, bool extensible = true) {
+  ring::FemOptions o;
+  o.elements = elements;
+  o.degree = degree;
+  o.extensible = extensible;
+  return o;
+}
+
+double worst_error(const std::vector<double>& fe, const std::vector<double>& exact) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < exact.size(); ++i) e = std::max(e, std::abs(fe.at(i) / exact[i] - 1.0));
+  return e;
+}
+
+std::string digits(double x) {
+  std::ostringstream o;
+  o << std::setprecision(4) << x;
+  return o.str();
+}
+
+}  // namespace
+
+// Pinned-pinned arches of three openings, extensible: the five lowest frequencies against
+// the transfer matrix. 16 elements of degree 8 (as fine as the reference's first steps):
+// within 1e-9 (the oracle's ~1e-12 and the refined eigen-solve's round-off ~1e-12 below).
+TEST(FemArch, PinnedArchesMeetTheTransferMatrix) {
+  for (double span : {60.0, 180.0, 270.0}) {
+    const ring::RingSpec s = pinned_arch(30.0, 30.0 + span);
+    ASSERT_EQ(s.rigid_modes(), 0);
+    const auto exact = archtest::arch_omegas(oracle(s, archtest::End::pinned, archtest::End::pinned, true), 5);
+    const ring::ModalResult r = fem::compute_modes(s, fe_options(16, 8), 5);
+    EXPECT_EQ(r.rigid_modes, 0);
+    const double e = worst_error(r.omega, exact);
+    RecordProperty("pinned_error_" + std::to_string(static_cast<int>(span)), digits(e));
+    EXPECT_LT(e, 1e-9) << "span " << span;
+  }
+}
+
+// Clamped-pinned, extensible and inextensible (fem.extensible = false: Richardson in 1/beta
+// from EA = beta EI/R^2 and 2 beta, beta = 1e6, modes.hpp), against the transfer matrix with
+// EA and with EA = infinity. Measured: extensible 9.8e-14; inextensible 2.3e-9, which is the
+// extrapolation's own O(beta^-2) remainder: the transfer matrix extrapolated the same way
+// from beta and 2 beta is 2.255e-9 off the exact inextensible arch too, and the FE meets
+// that extrapolated value to 1e-12.
+TEST(FemArch, ClampedPinnedArchMeetsTheTransferMatrix) {
+  const ring::RingSpec s = pinned_arch(-17.5, 197.5, true);
+  const archtest::End clamped = archtest::End::clamped, pinned = archtest::End::pinned;
+  const auto extensible = archtest::arch_omegas(oracle(s, clamped, pinned, true), 5);
+  const double e = worst_error(fem::compute_modes(s, fe_options(16, 8), 5).omega, extensible);
+  RecordProperty("clamped_pinned_error_extensible", digits(e));
+  EXPECT_LT(e, 1e-9);
+  const auto inextensible = archtest::arch_omegas(oracle(s, clamped, pinned, false), 5);
+  archtest::Arch a = oracle(s, clamped, pinned, true);
+  const double beta = 1e6 * s.EI() / (s.radius * s.radius);
+  a.EA = beta;
+  const auto w1 = archtest::arch_omegas(a, 5);
+  a.EA = 2.0 * beta;
+  const auto w2 = archtest::arch_omegas(a, 5);
+  std::vector<double> extrapolated;
+  for (int i = 0; i < 5; ++i) extrapolated.push_back(std::sqrt(2.0 * w2[i] * w2[i] - w1[i] * w1[i]));
+  const std::vector<double> fe = fem::compute_modes(s, fe_options(16, 8, false), 5).omega;
+  const double to_limit = worst_error(fe, inextensible), to_extrapolated = worst_error(fe, extrapolated);
+  RecordProperty("clamped_pinned_error_inextensible", digits(to_limit));
+  RecordProperty("clamped_pinned_error_inextensible_vs_extrapolated_oracle", digits(to_extrapolated));
+  EXPECT_LT(to_extrapolated, 1e-9);
+  // The O(beta^-2) remainder of the oracle's own extrapolation (2.3e-9) with a margin.
+  EXPECT_LT(to_limit, 1e-8);
+}
+
+// The order in h: cubic elements (p = 3) converge like h^(2(p-1)) = h^4 on the arch as on
+// the ring (a consistent form: the ends add no inconsistency). 4, 8, 16, 32 elements.
+TEST(FemArch, FrequenciesConvergeAtTheRingsOrder) {
+  const ring::RingSpec s = pinned_arch(-17.5, 197.5, true);
+  const auto exact = archtest::arch_omegas(oracle(s, archtest::End::clamped, archtest::End::pinned, true), 3);
+  std::vector<int> n{8, 16, 32, 64};
+  std::vector<double> e;
+  for (int k : n) e.push_back(worst_error(fem::compute_modes(s, fe_options(k, 3), 3).omega, exact));
+  const ringtest::Order p = ringtest::fit_order(ringtest::in_n(n, e));
+  RecordProperty("order_p3", digits(p.order));
+  RecordProperty("error_64x3", digits(e.back()));
+  // Expected 4 (2(p - 1)); 0.3: the pre-asymptotic spread of the ring's measured fits.
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(n, e), 4.0, 0.3));
+}
+
+// Rigid modes by the supports (spec.rigid_modes()): free-free 3, one pin 1; the FE finds
+// that many (near-)zero pairs below the elastic ones, and the elastic frequencies of the
+// free-pinned arch meet the transfer matrix.
+TEST(FemArch, RigidModesFollowTheSupports) {
+  ring::RingSpec free = arch(0.0, 150.0);
+  ASSERT_EQ(free.rigid_modes(), 3);
+  const auto exact_free = archtest::arch_omegas(oracle(free, archtest::End::free, archtest::End::free, true), 4);
+  const ring::ModalResult rf = fem::compute_modes(free, fe_options(16, 8), 4);
+  EXPECT_EQ(rf.rigid_modes, 3);
+  EXPECT_LT(worst_error(rf.omega, exact_free), 1e-8);
+  ring::RingSpec one = arch(0.0, 150.0);
+  one.supports.pin = 150.0;
+  ASSERT_EQ(one.rigid_modes(), 1);
+  const auto exact_one = archtest::arch_omegas(oracle(one, archtest::End::free, archtest::End::pinned, true), 4);
+  const ring::ModalResult r1 = fem::compute_modes(one, fe_options(16, 8), 4);
+  EXPECT_EQ(r1.rigid_modes, 1);
+  EXPECT_LT(worst_error(r1.omega, exact_one), 1e-8);
+}
+
+// fem.reference on an arch: the p/h refinement converges and its estimate bounds the error
+// against the transfer matrix.
+TEST(FemArch, ReferenceOnAnArch) {
+  const ring::RingSpec s = pinned_arch(-17.5, 197.5, true);
+  const auto exact = archtest::arch_omegas(oracle(s, archtest::End::clamped, archtest::End::pinned, true), 4);
+  ring::FemOptions o = fe_options(8, 3);
+  o.reference = true;
+  o.tolerance = 1e-9;
+  const ring::ModalResult r = fem::compute_modes(s, o, 4);
+  const double e = worst_error(r.omega, exact);
+  RecordProperty("reference_error", digits(e));
+  RecordProperty("reference_estimate", digits(r.error_estimate));
+  EXPECT_LT(e, 1e-9);
+  // The shapes: zero off the arch, nonzero on it.
+  const auto& w = r.shapes.at(0).radial;
+  double off = 0.0, on = 0.0;
+  for (int st = 0; st < static_cast<int>(w.size()); ++st) {
+    const double a = ring::station_angle(st);
+    (s.arc->contains(a) ? on : off) = std::max(s.arc->contains(a) ? on : off, std::abs(w[st]));
+  }
+  EXPECT_EQ(off, 0.0);
+  EXPECT_GT(on, 0.1);
+}
