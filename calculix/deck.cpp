@@ -109,6 +109,7 @@ void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
 }  // namespace
 
 void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
+  ring::refuse_arch(spec, "the calculix column");
   check_refusals(spec, o, inertia);
   check_points(spec, o);
 }

@@ -65,7 +65,7 @@ std::pair<int, double> wave_of(const Harmonics& h) {
 
 std::vector<SplitPair> split_pairs(const ring::ModalResult& r) {
   std::vector<SplitPair> out;
-  if (r.shapes.size() != r.omega.size()) return out;
+  if (r.arch || r.shapes.size() != r.omega.size()) return out;
   const std::size_t m = r.omega.size();
   std::vector<Harmonics> h;
   std::vector<int> wave(m, 0);

@@ -37,7 +37,7 @@ constexpr double kPairShare = 0.5;
 /// Relative splits at or below this are a degenerate pair (eigen-solvers' round-off ~1e-12).
 constexpr double kSplit = 1e-9;
 
-/// The split pairs of r (empty without shapes), by ascending lower mode.
+/// The split pairs of r (empty without shapes, and for an arch), by ascending lower mode.
 std::vector<SplitPair> split_pairs(const ring::ModalResult& r);
 
 /// As JSON: [{"wave", "modes": [lower, upper], "omega": [lower, upper], "split",

@@ -463,6 +463,14 @@ SolverEntry wrapped(SolverEntry e) {
   e.statics = finite(named_and_timed(e.name, e.statics));
   e.response = finite(named_and_timed(e.name, e.response));
   e.buckling = finite(named_and_timed(e.name, e.buckling));
+  if (e.modes) {
+    auto modes = e.modes;
+    e.modes = [modes](const ring::Scene& s, int count) {
+      ring::ModalResult r = modes(s, count);
+      r.arch = s.ring.is_arch();
+      return r;
+    };
+  }
   e.modes = finite(e.modes);
   return e;
 }

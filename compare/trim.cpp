@@ -50,6 +50,8 @@ TrimResult run_trim(const std::string& text, const std::string& name, const std:
   const ring::Scene s = parse_scene(text, name, overrides);
   const std::string solver = !t.solver.empty() ? t.solver : s.modes.solvers.empty() ? "" : s.modes.solvers.front();
   if (solver.empty()) throw ring::InputError(name, "--solver", "the scene lists no modal solver: name one");
+  if (s.ring.is_arch())
+    throw ring::InputError(name, "ring.arc", "an arch's modes come in no degenerate pairs: trimming is for closed rings");
   const SolverEntry& entry = cmp::solver(solver);
   if (t.at.empty() || t.at.size() > 2)
     throw ring::InputError("", "--at", "one or two angles (degrees): a pair's split has two components");

@@ -34,13 +34,6 @@ std::string vertex_rule(const ring::RingSpec& spec) {
   return std::to_string(spec.anchor()) + " + k * 360 / fem.elements";
 }
 
-/// An analysis of the FE beam that takes no arch (ring.arc) yet: refused by that key.
-void refuse_arch(const ring::RingSpec& spec, const std::string& analysis) {
-  if (spec.is_arch())
-    throw ring::InputError("", "ring.arc",
-                           "fem: the " + analysis + " of the FE beam takes no arch yet (linear modes and statics do)");
-}
-
 /// What the arch (ring.arc) needs of the FE model: the Euler-Bernoulli beam on the exact
 /// circle (the Timoshenko model and the Reissner beam, and the polygon, keep the closed
 /// ring's periodic mesh only), and no roller (a ring's roller moves along the line through
@@ -254,7 +247,7 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
-  refuse_arch(spec, "linear buckling");
+  ring::refuse_arch(spec, "the fem buckling");
   refuse_plastic(spec, "linear buckling is about the undeformed, elastic ring and would ignore the plastic law "
                        "(follow the equilibrium path with static.path = true instead)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
@@ -268,7 +261,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  refuse_arch(spec, "modes under load");
+  ring::refuse_arch(spec, "the fem modes under load");
   refuse_plastic(spec, "the modes under load take the elastic tangent at the loaded equilibrium, which the plastic "
                        "statics do not provide yet (remove modes.preload)");
   // static.path shapes the path's report, not the equilibrium at the full load.
@@ -286,7 +279,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  refuse_arch(spec, "forced response");
+  ring::refuse_arch(spec, "the fem response");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   check_plastic(spec, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,

@@ -141,6 +141,7 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
+  ring::refuse_arch(spec, "the lumped linear modes");
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
@@ -160,6 +161,7 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 }
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
+  ring::refuse_arch(spec, "the lumped statics");
   check_chain(spec, options, "statics");
   check_loads(spec, options, statics.loads, "static");
   if (ring::static_rigid_modes(spec, statics.loads) > 0)
@@ -175,6 +177,7 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics) {
+  ring::refuse_arch(spec, "the lumped modes under load");
   check_plastic(spec, options, "modes under load (modes.preload)");
   if (options.variant == ring::LumpedOptions::Variant::frame)
     throw std::invalid_argument("lumped: modes.preload = \"static\": lumped.variant = \"frame\" lumps no rotary "
@@ -188,6 +191,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions
 
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling) {
+  ring::refuse_arch(spec, "the lumped buckling");
   check_chain(spec, options, "buckling");
   check_loads(spec, options, buckling.loads, "buckling");
   const ring::Loads& l = buckling.loads;
@@ -205,6 +209,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& optio
 
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& r) {
+  ring::refuse_arch(spec, "the lumped response");
   check_chain(spec, options, "response");
   check_loads(spec, options, r.loads, "response");
   using Integrator = ring::ResponseOptions::Integrator;

@@ -13,6 +13,7 @@ namespace multibody {
 
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling) {
+  ring::refuse_arch(spec, "the multibody buckling");
   if (spec.plastic)
     throw ring::InputError("", "ring.plastic",
                            "multibody linear buckling is about the undeformed, elastic ring and would ignore the "

@@ -13,6 +13,7 @@ namespace multibody {
 using detail::has_point_inertia;
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
+  ring::refuse_arch(spec, "the multibody linear modes");
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
   // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
   if (sparse)
@@ -48,6 +49,7 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
+  ring::refuse_arch(spec, "the multibody statics");
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
   // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
   if (backend(options, spec, statics) == Backend::banded) {
@@ -98,6 +100,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
+  ring::refuse_arch(spec, "the multibody response");
   // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
   // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
   // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted

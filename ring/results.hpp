@@ -60,6 +60,8 @@ struct ModalResult {
   std::string residual_norm = kResidual2Norm;
   /// Estimated remaining relative error (reference runs only; 0 if not estimated).
   double error_estimate = 0.0;
+  /// The model is an arch (ring.arc): its modes come in no degenerate pairs (compare/pairs.hpp).
+  bool arch = false;
 };
 
 /// Linear buckling of one model (ring::BucklingOptions): the lowest positive critical load

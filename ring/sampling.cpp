@@ -51,6 +51,28 @@ ModeShape sample_polygon(double anchor_deg, const std::vector<double>& ux,
   return s;
 }
 
+ModeShape sample_arc(const Arc& arc, const std::vector<double>& ux, const std::vector<double>& uy) {
+  const int n = static_cast<int>(ux.size()) - 1;
+  const StationDirections& dir = directions();
+  ModeShape s;
+  s.radial.assign(kStations, 0.0);
+  s.tangential.assign(kStations, 0.0);
+  for (int i = 0; i < kStations; ++i) {
+    const double rel = arc.offset(station_angle(i));
+    if (rel > arc.span() + 1e-9) continue;
+    const double steps = std::min(rel * n / arc.span(), static_cast<double>(n));
+    const int k = std::min(static_cast<int>(std::floor(steps)), n - 1);
+    const double f = steps - k;
+    const double x = (1.0 - f) * ux[k] + f * ux[k + 1];
+    const double y = (1.0 - f) * uy[k] + f * uy[k + 1];
+    const double c = dir.c[i], sn = dir.s[i];
+    s.radial[i] = c * x + sn * y;
+    s.tangential[i] = -sn * x + c * y;
+  }
+  normalize(s);
+  return s;
+}
+
 void normalize(ModeShape& shape) {
   double big = 0.0;
   for (const auto* v : {&shape.radial, &shape.tangential})

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ring/results.hpp"
+#include "ring/spec.hpp"
 
 namespace ring {
 
@@ -15,6 +16,12 @@ namespace ring {
 /// O(kStations).
 ModeShape sample_polygon(double anchor_deg, const std::vector<double>& ux,
                          const std::vector<double>& uy);
+
+/// Samples an arch's polygonal model: node k at from + span k / n, k = 0..n (n + 1 =
+/// ux.size() nodes), displacements linear along each side as sample_polygon. Stations
+/// outside the arch are 0 (no ring there), so MAC compares arches station by station.
+/// Normalized with `normalize`. O(kStations).
+ModeShape sample_arc(const Arc& arc, const std::vector<double>& ux, const std::vector<double>& uy);
 
 /// Scales a shape so that its largest |component| is 1 and positive.
 void normalize(ModeShape& shape);

@@ -274,6 +274,24 @@ double read_angle(const Reader& r, const toml::table& t, const std::string& sec,
   return wrap_degrees(r.number(t, sec, key, 0.0, -360.0, 360.0));
 }
 
+/// ring.arc = [from, to]: an arch (degrees, counter-clockwise), from in [-360, 360] and
+/// 0 < to - from < 360; absent: the closed ring.
+std::optional<Arc> read_arc(const Reader& r, const toml::table& ring_t) {
+  if (!ring_t.contains("arc")) return std::nullopt;
+  const toml::node* n = ring_t.get("arc");
+  const std::vector<double> v = r.numbers(ring_t, "ring", "arc", {}, 2);
+  Arc arc{v[0], v[1]};
+  if (arc.from < -360.0 || arc.from > 360.0)
+    r.fail("ring.arc", n, "the first angle (from) must lie in [-360, 360] degrees, got " + fmt_num(arc.from));
+  if (!(arc.span() > 0.0))
+    r.fail("ring.arc", n, "expected [from, to] with to > from (degrees, counter-clockwise), got [" + fmt_num(arc.from) +
+                              ", " + fmt_num(arc.to) + "]");
+  if (arc.span() >= 360.0)
+    r.fail("ring.arc", n, "the arch spans " + fmt_num(arc.span()) +
+                              " degrees; an arch spans less than 360 (a closed ring: leave ring.arc out)");
+  return arc;
+}
+
 /// [supports]: pin, pins, clamp, roller, springs. `pin` is the first pinned point (the
 /// models' anchor): given, else the clamp, else the first of `pins`.
 void read_supports(const Reader& r, const toml::table& root, RingSpec& ring) {
@@ -377,6 +395,25 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   if (s.buckling)
     for (std::size_t i = 0; i < s.buckling->loads.points.size(); ++i)
       points.push_back({point_load_key("buckling", s.buckling->loads, i), s.buckling->loads.points[i].angle});
+  auto node_of = [&](const Point& p) -> const toml::node* {
+    const auto dot = p.key.find('.');
+    return root.at_path(p.key.substr(0, dot)).as_table() ? root.at_path(p.key).node() : nullptr;
+  };
+  if (const auto& arc = s.ring.arc) {
+    if (sup.pin) points.push_back({"supports.pin", *sup.pin});
+    for (const auto& p : points)
+      if (!arc->contains(p.angle))
+        r.fail(p.key, node_of(p), "angle " + fmt_num(p.angle) + " lies outside the arch (ring.arc = [" +
+                                      fmt_num(arc->from) + ", " + fmt_num(arc->to) + "])");
+    for (const auto& p : points)
+      for (const auto& m : models)
+        if (!on_node(s.ring, p.angle, m.n))
+          r.fail(p.key, node_of(p),
+                 "angle " + fmt_num(p.angle) + " is not a node of the " + m.name + " model (" + m.key + " = " +
+                     std::to_string(m.n) + " cuts the arch into pieces of " + fmt_num(arc->span() / m.n) +
+                     " degrees from " + fmt_num(arc->from) + ")");
+    return;
+  }
   for (const auto& p : points) {
     for (const auto& m : models) {
       if (on_node(p.angle, anchor, m.n)) continue;
@@ -385,10 +422,7 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
                          " = " + std::to_string(m.n) + " puts nodes every " + fmt_num(360.0 / m.n) +
                          " degrees from " + fmt_num(anchor) + ")";
       if (opposite) what += "; " + m.key + " must be even so that a node lies opposite";
-      const auto dot = p.key.find('.');
-      const toml::node* n = root.at_path(p.key.substr(0, dot)).as_table()
-                                ? root.at_path(p.key).node() : nullptr;
-      r.fail(p.key, n, what);
+      r.fail(p.key, node_of(p), what);
     }
   }
 }
@@ -519,13 +553,14 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   // [ring]
   const toml::table* rt = r.table(root, "", "ring");
   if (!rt) r.fail("ring", &root, "missing: the [ring] section (radius, E, rho, section)");
-  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient", "plastic"});
+  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient", "plastic", "arc"});
   s.ring.radius = r.number(*rt, "ring", "radius", 10.0, 0.0, HUGE_VAL, true);
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
   s.ring.section = read_section(r, *rt);
   s.ring.theory = read_theory(r, *rt, "ring").value_or(Theory::euler_bernoulli);
   s.ring.plastic = read_plastic(r, *rt, s.ring.section);
+  s.ring.arc = read_arc(r, *rt);
   s.ring.nu = r.number(*rt, "ring", "nu", 0.3, -1.0, 0.5);
   if (s.ring.nu <= -1.0 || s.ring.nu >= 0.5)
     r.fail("ring.nu", rt->get("nu"), "Poisson's ratio must lie in (-1, 0.5), got " + fmt_num(s.ring.nu));

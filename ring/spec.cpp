@@ -182,16 +182,24 @@ std::optional<ScaleViolation> scale_violation(const RingSpec& spec) {
 int static_rigid_modes(const RingSpec& spec, const Loads& loads) {
   const int rigid = spec.rigid_modes();
   if (rigid != 1 || !spec.supports.pin || !loads.has_gravity()) return rigid;
-  // With a pin, the one motion left is the rotation about it.
+  // With a pin, the one motion left is the rotation about it; it is held when the centroid of
+  // the centre line (the ring's centre; an arch's at R sin(h) / h along its bisector, h half
+  // its opening) lies below the pin.
   const double a = *spec.supports.pin * M_PI / 180.0;
-  const double below = -(loads.gravity[0] * std::cos(a) + loads.gravity[1] * std::sin(a));
+  double cx = 0.0, cy = 0.0;
+  if (spec.arc) {
+    const double h = spec.arc->span() * M_PI / 360.0, mid = (spec.arc->from + spec.arc->to) * M_PI / 360.0;
+    cx = spec.radius * std::sin(h) / h * std::cos(mid);
+    cy = spec.radius * std::sin(h) / h * std::sin(mid);
+  }
+  const double below = loads.gravity[0] * (cx - spec.radius * std::cos(a)) + loads.gravity[1] * (cy - spec.radius * std::sin(a));
   return below > 0.0 ? 0 : 1;
 }
 
 double load_scale(const RingSpec& spec, const Loads& loads) {
   double f = 0.0;
   for (const auto& p : loads.points) f += std::hypot(p.force[0], p.force[1]);
-  const double L = 2.0 * M_PI * spec.radius;
+  const double L = (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * M_PI * spec.radius;
   double mass = spec.rhoA() * L;
   for (const auto& m : spec.masses) mass += m.mass;
   return f + std::abs(loads.pressure.value) * L + mass * std::hypot(loads.gravity[0], loads.gravity[1]);
@@ -215,9 +223,33 @@ double wrap_degrees(double a) {
 
 std::vector<double> node_angles(const RingSpec& spec, int n) {
   const double anchor = spec.anchor();
-  std::vector<double> a(n);
-  for (int k = 0; k < n; ++k) a[k] = wrap_degrees(anchor + 360.0 * k / n);
+  const double step = spec.arc ? spec.arc->span() / n : 360.0 / n;
+  std::vector<double> a(node_count(spec, n));
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = wrap_degrees(anchor + step * static_cast<double>(k));
   return a;
+}
+
+int node_index(const RingSpec& spec, double angle, int n) {
+  const double span = spec.arc ? spec.arc->span() : 360.0;
+  const double rel = spec.arc ? spec.arc->offset(angle) : wrap_degrees(angle - spec.anchor());
+  const double steps = rel * n / span;
+  // Angles come from decimal input: accept a node to 1e-9 of a step.
+  const double k = std::round(steps);
+  if (std::abs(steps - k) >= 1e-9 * std::max(1.0, steps)) return -1;
+  if (!spec.arc) return static_cast<int>(k) % n;
+  return k <= n ? static_cast<int>(k) : -1;
+}
+
+bool Arc::contains(double deg) const { return offset(deg) <= span() + 1e-9; }
+
+double Arc::offset(double deg) const {
+  const double rel = wrap_degrees(deg - from);
+  // A point a hair before `from` is the `from` end, not a full turn on.
+  return rel > 360.0 - 1e-9 ? 0.0 : rel;
+}
+
+void refuse_arch(const RingSpec& spec, const std::string& who) {
+  if (spec.arc) throw std::invalid_argument(who + " does not take an arch (ring.arc) yet");
 }
 
 bool on_node(double angle, double anchor, int n) {

@@ -134,6 +134,22 @@ struct Loads {
   std::vector<std::string> beyond_one_point(const std::string& section) const;
 };
 
+/// ring.arc: an open arch whose centroid line runs counter-clockwise on the circle of radius R
+/// from the polar angle `from` to `to` (degrees, 0 < to - from < 360). Its ends take the
+/// supports at their angles (a pin, a clamp, springs); an end without one is free. Every model
+/// of an arch puts a node at each end and cuts the arch into equal pieces from `from` to `to`.
+struct Arc {
+  double from = 0.0;  ///< degrees
+  double to = 0.0;    ///< degrees, from < to < from + 360
+  double span() const { return to - from; }
+  /// True when the polar angle `deg` lies on the arch (ends included, to 1e-9 degrees), in any
+  /// turn of the circle.
+  bool contains(double deg) const;
+  /// The position of `deg` along the arch, in degrees from `from` in [0, 360): in [0, span()]
+  /// for a point of the arch.
+  double offset(double deg) const;
+};
+
 /// The beam theory of the ring's wall.
 /// euler_bernoulli: plane sections stay normal to the centroid line (no shear strain).
 /// timoshenko: the cross-section turns independently of the centroid line's tangent; shear
@@ -156,6 +172,9 @@ struct RingSpec {
   Supports supports;
   std::vector<PointMass> masses;
   Foundation foundation;
+  /// ring.arc: an arch from `from` to `to`; none: the closed ring.
+  std::optional<Arc> arc;
+  bool is_arch() const { return arc.has_value(); }
   /// ring.plastic: the elastic–plastic bending law (ring/plastic.hpp); none: elastic.
   std::optional<Plastic> plastic;
   /// Degrees: where the models of a free ring (no pin) put their node 0, so that every model
@@ -163,8 +182,8 @@ struct RingSpec {
   /// the scene (static, then response, then buckling; 0 without one). A pinned
   /// ring's models start at the pin and ignore it.
   double free_anchor = 0.0;
-  /// Where every model puts its node 0: the pin, or free_anchor.
-  double anchor() const { return supports.pin.value_or(free_anchor); }
+  /// Where every model puts its node 0: an arch's `from` end; a ring's pin, or free_anchor.
+  double anchor() const { return arc ? arc->from : supports.pin.value_or(free_anchor); }
 
   double A() const { return section.area(); }
   double I() const { return section.inertia(); }
@@ -201,6 +220,10 @@ struct RingSpec {
 /// set it may be the solver's own.
 void refuse_timoshenko(const RingSpec& spec, const std::string& who);
 
+/// Throws std::invalid_argument "`who` does not take an arch (ring.arc) yet" when spec is an
+/// arch, for a solver or analysis that has only the closed ring.
+void refuse_arch(const RingSpec& spec, const std::string& who);
+
 /// Throws std::invalid_argument "`who` does not take KEYS yet" when `spec` has terms beyond
 /// the paper's ring (RingSpec::terms_beyond_paper), for an analysis that lacks them.
 void refuse_terms_beyond_paper(const RingSpec& spec, const std::string& who);
@@ -235,7 +258,7 @@ std::optional<ScaleViolation> scale_violation(const RingSpec& spec);
 
 /// The rigid motions that a static analysis under `loads` leaves free: spec.rigid_modes(),
 /// less the rotation about a single pin when gravity holds it (the ring hangs from the pin:
-/// the centre lies below it, g . (centre - pin) > 0, so turning raises the centre of mass).
+/// the centre (an arch's centroid) lies below it, g . (centre - pin) > 0, so turning raises the centre of mass).
 /// A static analysis needs 0.
 int static_rigid_modes(const RingSpec& spec, const Loads& loads);
 
@@ -299,10 +322,19 @@ struct CalculixOptions {
   int threads = 1;         ///< OMP_NUM_THREADS and CCX_NPROC_* of the ccx process
 };
 
-/// Node angles of a model with n equal pieces: spec.anchor() + 360 k / n, k = 0..n-1.
+/// Node angles of a model with n equal pieces, in [0, 360): a ring's n nodes
+/// spec.anchor() + 360 k / n, k = 0..n-1; an arch's n + 1 nodes from + span k / n, k = 0..n.
 std::vector<double> node_angles(const RingSpec& spec, int n);
-/// True when `angle` (degrees) coincides with a node of an n-piece model anchored at `anchor`.
+/// The number of nodes of a model with n equal pieces: n for a ring, n + 1 for an arch.
+inline int node_count(const RingSpec& spec, int n) { return spec.arc ? n + 1 : n; }
+/// True when `angle` (degrees) coincides with a node of an n-piece model anchored at `anchor`
+/// (a closed ring).
 bool on_node(double angle, double anchor, int n);
+/// The index k of the node of an n-piece model of `spec` (ring or arch) at `angle`, or -1 when
+/// none is there (to 1e-9 of a piece, as on_node). O(1).
+int node_index(const RingSpec& spec, double angle, int n);
+/// True when `angle` is a node of an n-piece model of `spec` (ring or arch).
+inline bool on_node(const RingSpec& spec, double angle, int n) { return node_index(spec, angle, n) >= 0; }
 /// Angle difference reduced to [0, 360).
 double wrap_degrees(double a);
 

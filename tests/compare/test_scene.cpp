@@ -595,3 +595,44 @@ TEST(VaryItems, WhatIsNotOneNonEmptyArrayIsRefused) {
 }
 
 }  // namespace
+
+// ---- ring.arc: the hostile arcs of the arch issue, each refused naming the key ----
+
+namespace {
+
+const std::string kArch = "\ntitle = \"arch\"\n" + ringtest::paper_ring_toml() + R"(arc = [-17.5, 197.5]
+[supports]
+clamp = -17.5
+pins = [197.5]
+[multibody]
+n = 20
+[modes]
+count = 3
+solvers = ["multibody"]
+)";
+
+TEST(SceneReject, ArcWhoseEndsDoNotIncrease) {
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [90, 90]"), "ring.arc", "to > from");
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [90, 10]"), "ring.arc", "to > from");
+}
+TEST(SceneReject, ArcOfAFullTurnOrMore) {
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [0, 360]"), "ring.arc", "leave ring.arc out");
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [-100, 300]"), "ring.arc", "less than 360");
+}
+TEST(SceneReject, ArcThatIsNotTwoFiniteNumbers) {
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [nan, 90]"), "ring.arc", "finite");
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [0, 90, 180]"), "ring.arc", "expected 2 numbers");
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = 90"), "ring.arc", "array");
+  expect_rejected(replace(kArch, "arc = [-17.5, 197.5]", "arc = [-400, 90]"), "ring.arc", "[-360, 360]");
+}
+TEST(SceneReject, SupportOrLoadOutsideTheArc) {
+  expect_rejected(replace(kArch, "pins = [197.5]", "pins = [250]"), "supports.pins", "outside the arch");
+  expect_rejected(replace(kArch, "clamp = -17.5", "clamp = 200"), "supports.clamp", "outside the arch");
+  expect_rejected(kArch + "[static]\nat = 270.0\nforce = [0.0, -1e3]\n", "static", "outside the arch");
+}
+TEST(SceneReject, ArchPointBetweenNodes) {
+  // 215 / 20 = 10.75 degrees a piece: 100 degrees is no node.
+  expect_rejected(replace(kArch, "pins = [197.5]", "pins = [100]"), "supports.pins", "pieces of 10.75 degrees from -17.5");
+}
+
+}  // namespace
