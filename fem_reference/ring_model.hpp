@@ -390,7 +390,7 @@ class RingModel : public BeamModel {
   /// The u and w DoFs of vertex k (0..vertices()-1; an arch's vertex cells() is the right
   /// end of the last cell).
   std::array<types::global_dof_index, 2> vertex_dofs(unsigned int k) const {
-    return k < setup_.cells() ? end_dofs(k, 0.0) : end_dofs(k - 1, 1.0);
+    return k < static_cast<unsigned int>(setup_.cells()) ? end_dofs(k, 0.0) : end_dofs(k - 1, 1.0);
   }
   /// The cells that meet at vertex v, each with its end there (1: the left cell's right
   /// end, 0: the right cell's left end): two at a joint, one at an arch's end.

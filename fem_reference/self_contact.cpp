@@ -39,7 +39,7 @@ Approach closest_approach(const std::vector<Point2>& loop, int min_gap, double r
   const int n = open ? points - 1 : points;  // edges
   Approach best{reach, -1, -1};
   if (n < 3 || (open ? min_gap >= n : 2 * min_gap > n)) return best;
-  auto end = [&](int k) -> const Point2& { return loop[(k + 1) % n]; };
+  auto end = [&](int k) -> const Point2& { return loop[open ? k + 1 : (k + 1) % n]; };
   double longest = 0.0;
   for (int k = 0; k < n; ++k) longest = std::max(longest, norm(end(k)[0] - loop[k][0], end(k)[1] - loop[k][1]));
   // Two edges closer than `reach` have midpoints closer than longest + reach, so with

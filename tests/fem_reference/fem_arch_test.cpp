@@ -189,3 +189,109 @@ TEST(FemArch, ReferenceOnAnArch) {
   EXPECT_EQ(off, 0.0);
   EXPECT_GT(on, 0.1);
 }
+
+namespace {
+
+/// DaDeppo & Schmidt's deep arch (archtest::detail::DeepArch): 215 deg about the apex at
+/// 90 deg, clamped at -17.5 deg (arc.from), pinned at 197.5 deg, an apex load P = p EI/R^2
+/// straight down; `diameter` sets the slenderness (R = 10 m).
+ring::RingSpec deep_arch(double diameter = 0.12) {
+  ring::RingSpec s = pinned_arch(-17.5, 197.5, true);
+  s.section.diameter = diameter;
+  return s;
+}
+
+ring::StaticOptions apex_load(const ring::RingSpec& s, double p) {
+  ring::StaticOptions st;
+  st.loads.points = {{90.0, {0.0, -p * s.EI() / (s.radius * s.radius)}}};
+  st.record = {90.0};
+  st.steps = 20;
+  return st;
+}
+
+/// The limit load P R^2/EI of one discretization (trace_static's located maximum of the
+/// load factor under an apex load of 10 EI/R^2, beyond the limit), the path cut off 40 arc
+/// steps after it.
+double fe_limit(const ring::RingSpec& s, const ring::FemOptions& o) {
+  fem::ContinuationOptions c;
+  c.max_arc_steps = 40;
+  const fem::StaticPath path = fem::trace_static(s, o, apex_load(s, 10.0), c);
+  EXPECT_TRUE(std::isfinite(path.limit_load_factor)) << path.failure;
+  return 10.0 * path.limit_load_factor;
+}
+
+}  // namespace
+
+// The deep arch's limit load, inextensible (fem.extensible = false: Richardson in 1/beta of
+// the limit, nonlinear.hpp) against the elastica's 8.97308997 (archtest::deep_arch_limit, 2e-10).
+// p-convergence on 20 elements, measured: 7.3e-3 (p = 3), 1.8e-4 (4), 9.1e-7 (5), 3.1e-8 (6);
+// the test runs p = 4 and 6 (6 s); 1e-7 bounds p = 6 (its change from p = 5 is 8.8e-7, the
+// contraction ~30 per degree).
+TEST(FemArch, DeepArchLimitMeetsTheElastica) {
+  const double exact = archtest::deep_arch_limit().load;
+  const ring::RingSpec s = deep_arch();
+  std::vector<double> e;
+  for (int p : {4, 6}) {
+    e.push_back(std::abs(fe_limit(s, fe_options(20, p, false)) / exact - 1.0));
+    RecordProperty("deep_arch_limit_error_20x" + std::to_string(p), digits(e.back()));
+  }
+  EXPECT_LT(e.front(), 1e-3);
+  EXPECT_LT(e.back(), 1e-7);
+}
+
+// The extensible beam's limit against the inextensible elastica's, three slendernesses
+// R / r = 333, 167, 83 (d = 0.12, 0.24, 0.48 m on R = 10 m): the difference is the axial
+// strain's, O((r/R)^2) (the membrane compliance EI / (EA R^2) = (r/R)^2 enters the energy
+// linearly), so its fitted order in r/R is 2.
+TEST(FemArch, ExtensibleLimitDiffersLikeTheSlendernessSquared) {
+  const double exact = archtest::deep_arch_limit().load;
+  std::vector<double> h, e;
+  for (double d : {0.12, 0.24, 0.48}) {
+    const ring::RingSpec s = deep_arch(d);
+    const double limit = fe_limit(s, fe_options(20, 6, true));
+    h.push_back(1.0 / s.slenderness());
+    e.push_back(std::abs(limit / exact - 1.0));
+    RecordProperty("extensible_limit_d" + std::to_string(static_cast<int>(d * 100)), digits(limit));
+    RecordProperty("extensible_difference_d" + std::to_string(static_cast<int>(d * 100)), digits(e.back()));
+  }
+  // Measured: 1.41e-4, 5.63e-4, 2.24e-3 (P_ext = P_elastica (1 - 15.6 (r/R)^2)), order 1.996.
+  EXPECT_LT(e.front(), 2e-4);
+  const ringtest::Samples samples = ringtest::in_h(h, e);
+  RecordProperty("slenderness_order", digits(ringtest::fit_order(samples).order));
+  EXPECT_TRUE(ringtest::OrderNear(samples, 2.0, 0.1));
+}
+
+// static.path = true through the limit point (paths::follow with branch switching): the path
+// is reported, its largest load factor is the located limit, the apex goes on down past it.
+TEST(FemArch, DeepArchPathThroughTheLimit) {
+  const ring::RingSpec s = deep_arch();
+  ring::StaticOptions st = apex_load(s, 10.0);
+  st.path = true;
+  fem::ContinuationOptions c;
+  c.max_arc_steps = 40;
+  const fem::StaticPath path = fem::trace_static(s, fe_options(20, 4), st, c);
+  ASSERT_TRUE(std::isfinite(path.limit_load_factor)) << path.failure;
+  double top = 0.0;
+  std::size_t at_top = 0;
+  for (std::size_t k = 0; k < path.points.size(); ++k)
+    if (path.points[k].load_factor > top) top = path.points[at_top = k].load_factor;
+  EXPECT_LE(top, path.limit_load_factor + 1e-12);
+  ASSERT_LT(at_top + 2, path.points.size());
+  EXPECT_LT(path.points.back().load_factor, path.limit_load_factor);
+  EXPECT_LT(path.points.back().displacement[1], path.points[at_top].displacement[1]);
+}
+
+// The apex displacement on the rising branch under P R^2/EI = 8 (inextensible) against the
+// elastica's (archtest::deep_arch_under, O(h^4) shooting, steps = 2000: ~1e-10).
+TEST(FemArch, DeepArchApexMeetsTheElastica) {
+  const archtest::DeepArchPoint exact = archtest::deep_arch_under(8.0);
+  const ring::RingSpec s = deep_arch();
+  for (bool extensible : {false, true}) {
+    const ring::StaticResult r = fem::solve_static(s, fe_options(20, 6, extensible), apex_load(s, 8.0));
+    ASSERT_EQ(r.displacements.size(), 1u);
+    const double dx = r.displacements[0].ux / s.radius, dy = r.displacements[0].uy / s.radius;
+    const double e = std::hypot(dx - exact.apex_dx, dy - exact.apex_dy) / std::hypot(exact.apex_dx, exact.apex_dy);
+    RecordProperty(std::string("apex_error_") + (extensible ? "extensible" : "inextensible"), digits(e));
+    EXPECT_LT(e, extensible ? 1e-3 : 1e-6);
+  }
+}
