@@ -247,7 +247,6 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
-  ring::refuse_arch(spec, "the fem buckling");
   refuse_plastic(spec, "linear buckling is about the undeformed, elastic ring and would ignore the plastic law "
                        "(follow the equilibrium path with static.path = true instead)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
@@ -279,7 +278,6 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  ring::refuse_arch(spec, "the fem response");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   check_plastic(spec, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,

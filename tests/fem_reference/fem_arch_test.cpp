@@ -20,6 +20,7 @@
 #include "fem_reference/modes.hpp"
 #include "fem_reference/nonlinear.hpp"
 #include "fem_reference/buckling.hpp"
+#include "fem_reference/checks.hpp"
 #include "ring/errors.hpp"
 #include "support/arch.hpp"
 #include "support/convergence.hpp"
@@ -294,4 +295,81 @@ TEST(FemArch, DeepArchApexMeetsTheElastica) {
     RecordProperty(std::string("apex_error_") + (extensible ? "extensible" : "inextensible"), digits(e));
     EXPECT_LT(e, extensible ? 1e-3 : 1e-6);
   }
+}
+
+// Linear buckling of a pinned-pinned arch under uniform follower pressure against Timoshenko
+// & Gere (sec. 7.5; archtest::pinned_follower_pressure): q R^3/EI = pi^2/alpha^2 - 1, alpha
+// half the opening, for the inextensible arch (fem.extensible = false: the factors
+// extrapolated in 1/beta, buckling.hpp). Openings 60, 120, 180 deg, 16 elements of degree 6:
+// measured 1.4e-8, 3.1e-9, 9.4e-11 (the shallowest arch the farthest: the extrapolation's
+// O(beta^-2), as in the modes); 1e-6 leaves a margin of 70.
+TEST(FemArch, PinnedArchBucklesUnderFollowerPressureAsTimoshenkoAndGere) {
+  for (double span : {60.0, 120.0, 180.0}) {
+    const ring::RingSpec s = pinned_arch(90.0 - span / 2, 90.0 + span / 2);
+    ring::BucklingOptions b;
+    b.loads.pressure.value = s.EI() / std::pow(s.radius, 3);
+    b.loads.pressure.kind = ring::Pressure::Kind::follower;
+    b.count = 1;
+    const double exact = archtest::pinned_follower_pressure(span / 2 * kDeg);
+    const ring::BucklingResult r = fem::compute_buckling(s, fe_options(16, 6, false), b);
+    const double e = std::abs(r.factors.at(0) / exact - 1.0);
+    RecordProperty("follower_buckling_error_" + std::to_string(static_cast<int>(span)), digits(e));
+    EXPECT_LT(e, 1e-6) << "span " << span << ": " << r.factors.at(0) << " against " << exact;
+  }
+}
+
+// A follower pressure on an arch with an end that can move is refused by ring.arc: its
+// potential holds only where neither end moves (beam_potential.hpp).
+TEST(FemArch, FollowerPressureNeedsBothEndsHeld) {
+  ring::RingSpec s = arch(0.0, 120.0);
+  s.supports.pin = 0.0;
+  s.supports.clamp = 0.0;
+  ring::BucklingOptions b;
+  b.loads.pressure.value = 1e3;
+  b.count = 1;
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_buckling(s, fe_options(16, 4), b); }), "ring.arc");
+  b.loads.pressure.kind = ring::Pressure::Kind::dead;
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_buckling(s, fe_options(16, 4), b); }), "");
+}
+
+// What the FE beam does not take on an arch is refused by the key ring.arc (exit 2): the
+// Timoshenko model and the Reissner beam, the polygon, the plastic statics.
+TEST(FemArch, RefusesWhatItDoesNotTakeByTheKey) {
+  ring::RingSpec s = pinned_arch(0.0, 120.0);
+  s.theory = ring::Theory::timoshenko;
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_modes(s, fe_options(16, 4)); }), "ring.arc");
+  s.theory = ring::Theory::euler_bernoulli;
+  ring::FemOptions polygon = fe_options(16, 4);
+  polygon.geometry = ring::FemOptions::Geometry::polygon;
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_modes(s, polygon); }), "ring.arc");
+  s.plastic = ring::Plastic{};
+  s.plastic->moment = 1e4;
+  ring::StaticOptions st;
+  st.loads.points = {{60.0, {0.0, -1e3}}};
+  EXPECT_EQ(ringtest::refused_key([&] { fem::check_static(s, fe_options(16, 4), st); }), "ring.arc");
+}
+
+// The forced response on an arch: the deep arch under an apex load ramped to P R^2/EI = 8
+// over ten periods of its lowest mode, then held, with mass-proportional Rayleigh damping
+// (critical for that mode): the apex settles on the elastica's equilibrium
+// (archtest::deep_arch_under; the extensible beam lies 3.6e-5 from it, DeepArchApexMeetsTheElastica).
+// And the energy balance T + V + D - W stays at the Newton tolerance's level.
+TEST(FemArch, DeepArchResponseSettlesOnTheElastica) {
+  const ring::RingSpec s = deep_arch();
+  archtest::Arch a = oracle(s, archtest::End::clamped, archtest::End::pinned, true);
+  const double omega = archtest::arch_omegas(a, 1).at(0), period = 2.0 * M_PI / omega;
+  ring::ResponseOptions rs;
+  rs.loads = apex_load(s, 8.0).loads;
+  rs.history.kind = ring::LoadHistory::Kind::ramp;
+  rs.history.period = 10.0 * period;
+  rs.dt = period / 40.0;
+  rs.t_end = 20.0 * period;
+  rs.rayleigh_mass = 2.0 * omega;
+  rs.record = {90.0};
+  const ring::TimeHistory h = fem::respond(s, fe_options(20, 4), rs);
+  const archtest::DeepArchPoint exact = archtest::deep_arch_under(8.0);
+  const double dx = h.ux.at(0).back() / s.radius, dy = h.uy.at(0).back() / s.radius;
+  const double e = std::hypot(dx - exact.apex_dx, dy - exact.apex_dy) / std::hypot(exact.apex_dx, exact.apex_dy);
+  RecordProperty("response_apex_error", digits(e));
+  EXPECT_LT(e, 1e-3);
 }
