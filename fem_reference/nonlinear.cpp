@@ -241,7 +241,7 @@ class BeamStepper : public paths::Stepper {
     const Vector<double> full = model_.expand(q_);
     x.clear();
     y.clear();
-    for (unsigned int k = 0; k < model_.cells(); ++k) {
+    for (unsigned int k = 0; k < model_.vertices(); ++k) {
       const auto X = model_.vertex_position(k);
       const auto u = model_.vertex_displacement(full, k);
       x.push_back(X[0] + u[0]);
