@@ -126,9 +126,10 @@ TEST(ArchModes, RigidModesAreTheSpecs) {
 /// clamped at -17.5, pinned at 197.5.
 ring::RingSpec deep_arch() { return arch(-17.5, 197.5, true); }
 
-/// The chain's limit load P R^2 / EI under the apex load, following the path with the
-/// continuation driver to its first maximum (paths::Trace::limit).
-double deep_arch_limit(int n) {
+/// The chain's limit point under the apex load: P R^2 / EI and the apex's displacement / R
+/// there, following the path with the continuation driver to its first maximum
+/// (paths::Trace::limit, limit_state).
+archtest::DeepArchPoint deep_arch_limit_point(int n) {
   const ring::RingSpec spec = deep_arch();
   const double P = 10.0;  // P R^2 / EI at load factor 1, above the limit
   ring::Loads loads;
@@ -140,22 +141,39 @@ double deep_arch_limit(int n) {
   policy.steps = 10;
   policy.max_arc_steps = 300;
   const paths::Trace t = paths::follow(*eq, {eq->rest(), 0.0}, policy);
-  return t.limit * P;
+  archtest::DeepArchPoint out{t.limit * P, std::nan(""), std::nan("")};
+  if (t.limit_state) {
+    const int apex = chain.hinge_at(90.0);
+    const Eigen::Vector2d u = eq->hinges(t.limit_state->z).col(apex) - chain.hinge_rest(apex);
+    out.apex_dx = u.x() / spec.radius;
+    out.apex_dy = u.y() / spec.radius;
+  }
+  return out;
 }
+double deep_arch_limit(int n) { return deep_arch_limit_point(n).load; }
 
 TEST(ArchStatics, DeepArchLimitLoadConvergesAtOrderTwoToDaDeppo) {
-  const double exact = archtest::deep_arch_limit().load;  // 8.97308997 (DaDeppo & Schmidt: 8.97)
+  const archtest::DeepArchPoint exact = archtest::deep_arch_limit();  // 8.97308997 (DaDeppo & Schmidt: 8.97)
   const std::vector<int> ns{20, 40, 80, 160};
-  std::vector<double> errors;
+  std::vector<double> errors, dx, dy;
   for (int n : ns) {
-    const double limit = deep_arch_limit(n);
-    RecordProperty("limit_n" + std::to_string(n), sci(limit));
-    errors.push_back(std::abs(limit - exact) / exact);
+    const archtest::DeepArchPoint c = deep_arch_limit_point(n);
+    RecordProperty("limit_n" + std::to_string(n), sci(c.load));
+    RecordProperty("apex_n" + std::to_string(n), sci(c.apex_dx) + " " + sci(c.apex_dy));
+    errors.push_back(std::abs(c.load - exact.load) / exact.load);
+    dx.push_back(std::abs(c.apex_dx - exact.apex_dx));
+    dy.push_back(std::abs(c.apex_dy - exact.apex_dy));
   }
   RecordProperty("limit_order", sci(ringtest::fit_order(ringtest::in_n(ns, errors)).order));
+  RecordProperty("apex_dx_order", sci(ringtest::fit_order(ringtest::in_n(ns, dx)).order));
+  RecordProperty("apex_dy_order", sci(ringtest::fit_order(ringtest::in_n(ns, dy)).order));
   // Order 2 (0.15: as the modes'); the chain's error at n = 160 is O((l/R)^2), l/R = 0.023,
   // with a constant below 1 (the modes'): 5e-4 bounds it.
   EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.15, 5e-4));
+  // The apex at the limit (archtest: -0.6114 R, -1.1373 R): order 2 (measured 1.98 and 2.19;
+  // 0.25: the located point's spread), within 1e-3 R at n = 160 (the load's error, 3.7e-4).
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, dx), 2.0, 0.25, 1e-3));
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, dy), 2.0, 0.25, 1e-3));
 }
 
 // The command's path (solve_static with static.path): through the limit point and on, the
@@ -176,6 +194,11 @@ TEST(ArchStatics, DeepArchPathPassesTheLimitPoint) {
   // The located limit is a point of the path within 1e-6 of a step; the accepted points come
   // within a step's load change of it: 1 % of the limit bounds that at n = 40.
   EXPECT_NEAR(most * P, deep_arch_limit(40), 0.01 * deep_arch_limit(40));
+  // The located limit point is the driver's (the same path): its load factor and the apex there.
+  ASSERT_EQ(r.limit_points.size(), 1u);
+  const archtest::DeepArchPoint limit = deep_arch_limit_point(40);
+  EXPECT_NEAR(r.limit_points[0].load_factor * P, limit.load, 1e-9 * limit.load);
+  EXPECT_NEAR(r.limit_points[0].displacements.at(0).uy, limit.apex_dy * spec.radius, 1e-9 * spec.radius);
   // The pinned end does not move (its rows), to round-off of the hinge positions.
   for (const ring::PathPoint& p : r.path) {
     EXPECT_LT(std::hypot(p.displacements.at(1).ux, p.displacements.at(1).uy), 1e-9 * spec.radius);
