@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -89,6 +90,45 @@ TEST(CalculixArch, DeckIsAnOpenLineFromEndToEnd) {
   b31.element = ring::CalculixOptions::Element::b31;
   EXPECT_EQ(calculix::node_count(s, b31), 5);
   EXPECT_NE(calculix::frequency_deck(s, b31, {10}).text.find("\n4, 4, 5\n"), std::string::npos);
+}
+
+// The arch's nodal shares (dead pressure, foundation): the consistent weights of the quadratic
+// elements, an end node of the arch in one element only (L/6), so that the dead pressure's nodal
+// forces add up, in magnitude, to p times the arch's length, and each end carries p L / 6; the
+// foundation's end springs (set ...TIP) half an inner end node's.
+TEST(CalculixArch, EndNodesCarryHalfAnEndNodesShare) {
+  ring::RingSpec s = arch(0.0, 180.0);
+  s.supports.pin = 0.0;
+  s.supports.pins = {180.0};
+  const int n = 6;
+  ring::StaticOptions st;
+  st.loads.pressure.kind = ring::Pressure::Kind::dead;
+  st.loads.pressure.value = 1000.0;
+  const calculix::Deck d = calculix::static_deck(s, b32r(n), st);
+  const std::size_t at = d.text.find("*CLOAD\n");
+  ASSERT_NE(at, std::string::npos) << d.text;
+  std::istringstream in(d.text.substr(at + 7));
+  std::vector<double> fx(2 * n + 1, 0.0), fy(2 * n + 1, 0.0);
+  for (std::string line; std::getline(in, line) && line[0] != '*';) {
+    int node = 0, dof = 0;
+    double f = 0.0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%d, %d, %lf", &node, &dof, &f), 3) << line;
+    (dof == 1 ? fx : fy).at(node - 1) += f;
+  }
+  const double L = M_PI * s.radius, Le = L / n;
+  double total = 0.0;
+  for (int k = 0; k <= 2 * n; ++k) total += std::hypot(fx[k], fy[k]);
+  EXPECT_TRUE(IsClose(total, 1000.0 * L, 1e-12));  // the deck's 14 digits
+  EXPECT_TRUE(IsClose(std::hypot(fx.front(), fy.front()), 1000.0 * Le / 6.0, 1e-12));
+  EXPECT_TRUE(IsClose(std::hypot(fx.back(), fy.back()), 1000.0 * Le / 6.0, 1e-12));
+  EXPECT_TRUE(IsClose(std::hypot(fx[2], fy[2]), 1000.0 * Le / 3.0, 1e-12));
+  s.foundation.radial = 1e6;
+  const std::string f = calculix::frequency_deck(s, b32r(n), {10}).text;
+  const std::size_t tip = f.find("*SPRING, ELSET=EFOUNDRTIP");
+  ASSERT_NE(tip, std::string::npos) << f;
+  double k_tip = 0.0;
+  ASSERT_EQ(std::sscanf(f.c_str() + f.find("\n", f.find("\n", tip) + 1) + 1, "%lf", &k_tip), 1);
+  EXPECT_TRUE(IsClose(k_tip, 1e6 * Le / 6.0, 1e-12));
 }
 
 // A support outside the arch or off its nodes is refused by key; the response refuses an arch
