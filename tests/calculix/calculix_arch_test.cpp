@@ -29,9 +29,10 @@
 
 namespace {
 
-#define REQUIRE_CCX()                                                                                  \
-  if (calculix::find_ccx().empty()) GTEST_SKIP() << "ccx is not on the PATH (Debian package calculix-ccx; " \
-                                                    "scripts/install-deps.sh installs it)"
+#define REQUIRE_CCX()                                                     \
+  if (calculix::find_ccx().empty())                                       \
+  GTEST_SKIP() << "ccx is not on the PATH (Debian package calculix-ccx; " \
+                  "scripts/install-deps.sh installs it)"
 
 using ringtest::IsClose;
 
