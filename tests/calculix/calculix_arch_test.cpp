@@ -133,7 +133,8 @@ TEST(CalculixArch, EndNodesCarryHalfAnEndNodesShare) {
 }
 
 // A support outside the arch or off its nodes is refused by key; the response refuses an arch
-// (std::invalid_argument naming ring.arc: its reader is the ring's only so far).
+// (std::invalid_argument naming ring.arc: its reader is the ring's only so far), the statics a
+// pressure or gravity on it (calculix/README.md, "Arches").
 TEST(CalculixArch, RefusesPointsOffTheArchAndTheResponse) {
   ring::RingSpec s = arch(0.0, 180.0);
   s.supports.pin = 0.0;
@@ -149,6 +150,23 @@ TEST(CalculixArch, RefusesPointsOffTheArchAndTheResponse) {
   EXPECT_THROW(calculix::check_deck(s, b32r(8)), ring::InputError);
   s.supports.pins = {180.0};
   EXPECT_NO_THROW(calculix::check_deck(s, b32r(8)));
+  if (!calculix::find_ccx().empty()) {  // check_static ends by requiring ccx
+    ring::StaticOptions st;
+    st.record = {90.0};
+    st.loads.pressure.value = 1.0;
+    try {
+      calculix::check_static(s, b32r(8), st);
+      FAIL() << "a pressure on an arch was accepted";
+    } catch (const ring::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("static.pressure"), std::string::npos) << e.what();
+    }
+    st.loads.pressure.value = 0.0;
+    st.loads.gravity = {0.0, -9.81};
+    EXPECT_THROW(calculix::check_static(s, b32r(8), st), ring::InputError);
+    st.loads.gravity = {0.0, 0.0};
+    st.loads.points.push_back({90.0, {0.0, -1.0}});
+    EXPECT_NO_THROW(calculix::check_static(s, b32r(8), st));
+  }
   ring::ResponseOptions rs;
   rs.t_end = 1e-3;
   rs.dt = 1e-4;
