@@ -57,6 +57,17 @@ TEST(ArchOracle, SystemMatrixCarriesTheFreeRingsFourierModes) {
     const double tr = k11 + k22, det = k11 * k22 - k12 * k12, disc = std::sqrt(tr * tr - 4 * det);
     for (double lam : {det / (0.5 * (tr + disc)), 0.5 * (tr + disc)})
       EXPECT_LT(fourier_residual(lam, e, k), 1e-12) << "extensible, k = " << k << ", Omega^2 = " << lam;
+    // With a Winkler foundation: K + diag(fr, ft) (ring::closed_form::free_ring_extensible's
+    // foundation term, per unit EI/R^4).
+    const double fr = 300.0, ft = 50.0, f11 = k11 + fr, f22 = k22 + ft;
+    const double ftr = f11 + f22, fdet = f11 * f22 - k12 * k12, fdisc = std::sqrt(ftr * ftr - 4 * fdet);
+    for (double lam : {fdet / (0.5 * (ftr + fdisc)), 0.5 * (ftr + fdisc)}) {
+      const Eigen::Matrix<std::complex<double>, 6, 6> B =
+          archtest::detail::system_matrix(lam, e, 0.0, 0.0, fr, ft).cast<std::complex<double>>() -
+          std::complex<double>(0.0, k) * Eigen::Matrix<std::complex<double>, 6, 6>::Identity();
+      const auto sv = B.jacobiSvd().singularValues();
+      EXPECT_LT(sv(5) / sv(0), 1e-12) << "foundation, k = " << k << ", Omega^2 = " << lam;
+    }
   }
 }
 

@@ -37,6 +37,8 @@ namespace archtest {
 // gamma = Q / kGA (the thin-ring kinematics of ring::closed_form::free_ring_timoshenko), so
 //   w' = v - R phi + R Q / kGA;
 // a clamp holds the cross-section's rotation.
+// Optionally a Winkler foundation (kr radial, kt tangential, N/m per metre, on the displacements
+// of the undeformed point) adds R kt v to N' and R kr w to Q' (the inertia terms' places).
 // In units R = EI = rhoA = 1 (state y = (w/R, v/R, phi, M R/EI, N R^2/EI, Q R^2/EI),
 // Omega^2 = rhoA omega^2 R^4 / EI, e = EI/(EA R^2), j = rhoI/(rhoA R^2), g = EI/(kGA R^2)):
 //   y' = A(Omega) y,  A constant along the arch, so y(alpha) = exp(A alpha) y(0).
@@ -72,8 +74,9 @@ struct Arch {
   double rhoA = 1.0;
   double rhoI = 0.0;
   double kGA = std::numeric_limits<double>::infinity();
-  End start = End::pinned;  ///< the end at theta = 0 (ring.arc's `from`)
-  End end = End::pinned;    ///< the end at theta = alpha (ring.arc's `to`)
+  double kr = 0.0, kt = 0.0;  ///< Winkler foundation, radial and tangential, N/m per metre (>= 0)
+  End start = End::pinned;    ///< the end at theta = 0 (ring.arc's `from`)
+  End end = End::pinned;      ///< the end at theta = alpha (ring.arc's `to`)
 };
 
 namespace detail {
@@ -102,7 +105,8 @@ inline std::array<int, 3> free_components(End e) {
 
 /// A of y' = A y in units R = EI = rhoA = 1, for Omega^2 = W2, e = EI/(EA R^2), j = rhoI/(rhoA R^2),
 /// g = EI/(kGA R^2).
-inline Mat6 system_matrix(double W2, double e, double j, double g = 0.0) {
+/// Foundation: fr = kr R^4/EI, ft = kt R^4/EI.
+inline Mat6 system_matrix(double W2, double e, double j, double g = 0.0, double fr = 0.0, double ft = 0.0) {
   Mat6 A = Mat6::Zero();
   A(0, 1) = 1.0;  // w'   = v - phi + g Q
   A(0, 2) = -1.0;
@@ -112,10 +116,10 @@ inline Mat6 system_matrix(double W2, double e, double j, double g = 0.0) {
   A(2, 3) = 1.0;  // phi' = M
   A(3, 5) = 1.0;  // M'   = Q - j Omega^2 phi
   A(3, 2) = -j * W2;
-  A(4, 5) = -1.0;  // N'   = -Q - Omega^2 v
-  A(4, 1) = -W2;
-  A(5, 4) = 1.0;  // Q'   = N - Omega^2 w
-  A(5, 0) = -W2;
+  A(4, 5) = -1.0;  // N'   = -Q - (Omega^2 - ft) v
+  A(4, 1) = -(W2 - ft);
+  A(5, 4) = 1.0;  // Q'   = N - (Omega^2 - fr) w
+  A(5, 0) = -(W2 - fr);
   return A;
 }
 
@@ -131,7 +135,8 @@ inline SignedLog boundary_determinant(const Arch& a, double Omega) {
   const double j = a.rhoI / (a.rhoA * a.R * a.R);
   const double g = std::isinf(a.kGA) ? 0.0 : a.EI / (a.kGA * a.R * a.R);
   const double W2 = Omega * Omega, kappa = std::max(1.0, std::sqrt(Omega));
-  Mat6 A = system_matrix(W2, e, j, g);
+  const double f = a.EI / (a.R * a.R * a.R * a.R);
+  Mat6 A = system_matrix(W2, e, j, g, a.kr / f, a.kt / f);
   const Eigen::Matrix<double, 6, 1> d{1.0, 1.0, kappa, kappa * kappa, kappa * kappa * kappa, kappa * kappa * kappa};
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c) A(r, c) *= d(c) / d(r);  // A~ = D^-1 A D
@@ -169,7 +174,7 @@ inline SignedLog boundary_determinant(const Arch& a, double Omega) {
 /// Cost: ~64 determinant evaluations per mode plus ~50 per root.
 inline std::vector<double> arch_omegas(const Arch& a, std::size_t count) {
   if (!(a.alpha > 0.0 && a.alpha <= 2.0 * M_PI + 1e-12) || !(a.R > 0) || !(a.EI > 0) || !(a.EA > 0) || !(a.rhoA > 0) ||
-      !(a.rhoI >= 0) || !(a.kGA > 0))
+      !(a.rhoI >= 0) || !(a.kGA > 0) || !(a.kr >= 0) || !(a.kt >= 0))
     throw std::invalid_argument("archtest::arch_omegas: need 0 < alpha <= 2 pi and positive R, EI, EA, kGA, rhoA");
   auto sign_at = [&](double t) { return detail::boundary_determinant(a, t * t).sign; };
   const double dt = M_PI / a.alpha / 64.0;
