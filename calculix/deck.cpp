@@ -45,17 +45,23 @@ std::string number(double x) {
   return buf;
 }
 
+namespace {
+
+/// The equal pieces between nodes: elements (B31) or 2 elements (B32, B32R: a middle node).
 int pieces(const ring::CalculixOptions& o) {
   return o.element == ring::CalculixOptions::Element::b31 ? o.elements : 2 * o.elements;
 }
 
-int node_count(const ring::CalculixOptions& o) { return pieces(o); }
-
-int node_count(const ring::RingSpec& spec, const ring::CalculixOptions& o) { return ring::node_count(spec, pieces(o)); }
-
+/// The length of the centroid line (m): the circle's, or the arch's.
 double centroid_length(const ring::RingSpec& spec) {
   return (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * kPi * spec.radius;
 }
+
+}  // namespace
+
+int node_count(const ring::CalculixOptions& o) { return pieces(o); }
+
+int node_count(const ring::RingSpec& spec, const ring::CalculixOptions& o) { return ring::node_count(spec, pieces(o)); }
 
 namespace {
 
@@ -101,8 +107,8 @@ void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
   auto need_node = [&](double angle, const std::string& key) {
     if (spec.arc && !spec.arc->contains(angle))
       throw ring::InputError("", key,
-                             "angle " + number(angle) + " lies outside the arch (ring.arc = [" + number(spec.arc->from) +
-                                 ", " + number(spec.arc->to) + "])");
+                             "angle " + number(angle) + " lies outside the arch (ring.arc = [" +
+                                 number(spec.arc->from) + ", " + number(spec.arc->to) + "])");
     if (!ring::on_node(spec, angle, pieces(o)))
       throw ring::InputError("", key,
                              "angle is not a node of the calculix model (calculix.elements = " +
@@ -202,7 +208,8 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
 
   std::ostringstream s;
   s << "** CalculiX deck written by ringvib (calculix/deck.cpp)" << (title.empty() ? "" : ": " + title) << "\n"
-    << "** " << analysis << " of a circular " << (spec.arc ? "arch" : "ring") << ": " << o.elements << " " << type << " beam elements, which ccx\n"
+    << "** " << analysis << " of a circular " << (spec.arc ? "arch" : "ring") << ": " << o.elements << " " << type
+    << " beam elements, which ccx\n"
     << "** expands into " << (o.element == Element::b31 ? "8" : "20") << "-node bricks of the section's shape.\n"
     << "** Units SI (m, kg, s, N, Pa); frequencies in the .dat file in rad/s and cycles/s.\n"
     << "*HEADING\n"

@@ -97,6 +97,8 @@ class BeamEquilibrium : public paths::Equilibrium {
     for (double a : st_.record) record_vertices_.push_back(model_.vertex_of(a));
     out_.points.push_back(point_at(0.0, model_.expand(q_)));
   }
+  /// The path point of an equilibrium (the located limit point).
+  ring::PathPoint point_of(const paths::State& x) const { return point_at(x.s, full(x.z)); }
   /// The record and the deformed vertices at the end of a path that reached the full load
   /// (or, static.path, at its touching equilibrium).
   void finish(const paths::Vector& z);
@@ -345,6 +347,7 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   }
   out.trace = paths::follow(beam, {paths::Vector::Zero(beam.size()), 0.0}, options);
   if (out.reached() || (st.path && out.trace.end == paths::Trace::End::contact)) beam.finish(out.trace.state.z);
+  if (st.path && out.trace.limit_state) out.limits.push_back(beam.point_of(*out.trace.limit_state));
   return out;
 }
 

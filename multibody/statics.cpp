@@ -312,8 +312,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   if (statics.path) {
     res.path = eq->path();
     res.branch_points = path.branch_points;
-    // The located limit point (the first maximum of the load factor), at the recorded hinges.
-    if (path.limit_state) res.limit_points.push_back(eq->path_point(path.limit_state->s, eq->hinges(path.limit_state->z)));
+    if (path.limit_state) res.limit_points.push_back(eq->path_point(path.limit, eq->hinges(path.limit_state->z)));
     res.end = touched ? "contact: " + path.contact : statics.history.empty() ? "full load" : "end of the history";
     res.end_load = path.end_load;  // the touch, or the full load (a history: its last factor)
   }
