@@ -48,7 +48,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
   check_static(spec, options, st);
   const Deck deck = static_deck(spec, options, st, title);
   const RunOutput out = run(deck.text, {options.timeout, options.threads}, hooks);
-  const int nodes = node_count(options);
+  const int nodes = node_count(spec, options);
   const DatStatic dat = read_static_dat(out.dat, nodes);
   if (!(std::abs(dat.time - 1.0) <= 1e-6))  // written so that a NaN time fails too
     throw ring::NumericalError("calculix: ccx stopped at load factor " + std::to_string(dat.time) +

@@ -17,19 +17,22 @@ constexpr double kPi = 3.14159265358979323846;
 
 Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   Chain c;
-  c.n = o.n;
-  c.l = 2.0 * kPi * spec.radius / c.n;
+  c.open = spec.is_arch();
+  c.n = o.n + (c.open ? 1 : 0);
+  const double angle = c.open ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi;  // the centroid line's, rad
+  c.step_deg = angle / o.n * 180.0 / kPi;
+  c.l = angle * spec.radius / o.n;
   c.k = spec.EI() / c.l;
   c.m = spec.rhoA() * c.l;
-  c.rho = c.l / (2.0 * std::sin(kPi / c.n));
-  c.theta0 = 2.0 * kPi / c.n;
+  c.rho = c.l / (2.0 * std::sin(0.5 * angle / o.n));
+  c.theta0 = angle / o.n;
   c.depth = spec.section.depth();
   c.anchor_deg = spec.anchor();
   // The linear model checks every point of the spec (a node, the clamp at a pinned point,
   // the roller apart from the pin) and gives the support rows: one code for both analyses.
   c.S = assemble(spec, o).S;
   c.rest.resize(2 * c.n);
-  const auto angles = ring::node_angles(spec, c.n);
+  const auto angles = ring::node_angles(spec, o.n);
   for (int j = 0; j < c.n; ++j) {
     c.rest[2 * j] = c.rho * std::cos(angles[j] * kPi / 180.0);
     c.rest[2 * j + 1] = c.rho * std::sin(angles[j] * kPi / 180.0);
@@ -109,6 +112,7 @@ Springs springs(const Chain& c, const Vec& q, double hess_scale, bool hinges) {
         add_spring(sp.r, sp.k, &s.energy, &s.grad, hess_scale, &s.hess);
     }
   for (int j = 0; hinges && j < c.n; ++j) {
+    if (!c.has_spring(j)) continue;
     const Turn t = turn(c, q, j, hess_scale != 0.0);
     const double e = t.theta - c.theta0;
     const ring::BilinearLaw::Point m = c.bending.at(j, e);
@@ -133,7 +137,8 @@ Springs springs(const Chain& c, const Vec& q, double hess_scale, bool hinges) {
 
 std::vector<double> bending_strains(const Chain& c, const Vec& x) {
   std::vector<double> e(static_cast<std::size_t>(c.n));
-  for (int j = 0; j < c.n; ++j) e[static_cast<std::size_t>(j)] = turn(c, x, j, false).theta - c.theta0;
+  for (int j = 0; j < c.n; ++j)
+    e[static_cast<std::size_t>(j)] = c.has_spring(j) ? turn(c, x, j, false).theta - c.theta0 : 0.0;
   return e;
 }
 
@@ -166,7 +171,7 @@ Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& q, const Vec
 
 Vec constraints(const Chain& c, const Vec& x) {
   Vec g(c.rows());
-  for (int j = 0; j < c.n; ++j) g[j] = ((c.at(x, j + 1) - c.at(x, j)).squaredNorm() - c.l * c.l) / (2.0 * c.l);
+  for (int j = 0; j < c.links(); ++j) g[j] = ((c.at(x, j + 1) - c.at(x, j)).squaredNorm() - c.l * c.l) / (2.0 * c.l);
   if (c.S.rows() > 0) g.tail(c.S.rows()) = c.S * (x - c.rest);
   return g;
 }
@@ -176,7 +181,7 @@ void jacobian(const Chain& c, const Vec& x, int row_offset, double scale, bool t
     if (transpose) out.emplace_back(col, row_offset + r, scale * v);
     else out.emplace_back(row_offset + r, col, scale * v);
   };
-  for (int j = 0; j < c.n; ++j) {
+  for (int j = 0; j < c.links(); ++j) {
     const Vec2 d = (c.at(x, j + 1) - c.at(x, j)) / c.l;
     const int a = 2 * j, b = 2 * ((j + 1) % c.n);
     put(j, a, -d.x());
@@ -185,11 +190,11 @@ void jacobian(const Chain& c, const Vec& x, int row_offset, double scale, bool t
     put(j, b + 1, d.y());
   }
   for (int col = 0; col < c.S.outerSize(); ++col)
-    for (Sparse::InnerIterator it(c.S, col); it; ++it) put(c.n + static_cast<int>(it.row()), col, it.value());
+    for (Sparse::InnerIterator it(c.S, col); it; ++it) put(c.links() + static_cast<int>(it.row()), col, it.value());
 }
 
 void constraint_hessian(const Chain& c, const Vec& lambda, double scale, Triplets& out) {
-  for (int j = 0; j < c.n; ++j) {
+  for (int j = 0; j < c.links(); ++j) {
     const double w = scale * lambda[j] / c.l;
     const int a = 2 * j, b = 2 * ((j + 1) % c.n);
     for (int d = 0; d < 2; ++d) {
@@ -207,7 +212,7 @@ Sparse mass_matrix(const Chain& c, HingeRotations hinges) {
   Triplets t;
   for (const Terms::Inertia& in : c.terms->inertia())
     for (int d = 0; d < 2; ++d) t.emplace_back(2 * in.node + d, 2 * in.node + d, in.mass);
-  for (int j = 0; j < c.n; ++j) {
+  for (int j = 0; j < c.links(); ++j) {
     const int a = 2 * j, b = 2 * ((j + 1) % c.n);
     for (int d = 0; d < 2; ++d)
       for (int p : {a + d, b + d})
@@ -225,6 +230,13 @@ std::vector<int> load_hinges(const Chain& c, const ring::RingSpec& spec, const r
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const ring::PointLoad& load = loads.points[i];
     const std::string key = loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    if (c.open) {
+      h.push_back(node_at(spec, load.angle, c.n - 1, key));
+      for (double p : spec.supports.pinned())
+        if (node_at(spec, p, c.n - 1, "supports.pins") == h.back())
+          throw std::invalid_argument("lumped: " + key + " acts at a pinned end of the arch");
+      continue;
+    }
     if (!ring::on_node(load.angle, c.anchor_deg, c.n))
       throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(load.angle) + ") is not a hinge of the chain");
     h.push_back(c.hinge(load.angle));

@@ -5,6 +5,9 @@
 //
 // Unknowns x = (x_0, y_0, ..., x_{n-1}, y_{n-1}) (2n values), constraint rows g(x) = (links
 // c_j, j = 0..n-1, then the support rows S (x - rest)), multipliers lambda in that order.
+// An arch (ring.arc, model.hpp): Chain::n counts its lumped.n + 1 nodes, the links are
+// j = 0..n-2 (no closing link), the hinge springs sit at the interior nodes 1..n-2 only
+// (has_spring); an end's clamp is the terms' half hinge (terms.hpp).
 // Cost: O(n) time and memory for every function here.
 #pragma once
 
@@ -26,7 +29,9 @@ namespace lumped {
 
 /// The chain's fixed data: geometry, stiffness, mass, supports and the spec's terms.
 struct Chain {
-  int n = 0;
+  int n = 0;                ///< nodes: lumped.n on a ring, lumped.n + 1 on an arch
+  bool open = false;        ///< an arch (ring.arc): node 0 at `from`, node n - 1 at `to`
+  double step_deg = 0.0;    ///< the angle between neighbouring nodes, degrees
   double l = 0.0, k = 0.0, m = 0.0, rho = 0.0, theta0 = 0.0, anchor_deg = 0.0, depth = 0.0;
   Eigen::VectorXd rest;     ///< 2n: hinge rest positions
   /// Support rows on the hinge displacements, model.cpp's S (pins, further pins, roller):
@@ -36,8 +41,12 @@ struct Chain {
   /// The hinge springs' law on the turning angle minus its rest value (bending.hpp): k e, or
   /// ring.plastic's from the committed states (the statics commit their own copy's).
   Bending bending;
-  /// Constraint rows: the n links, then the supports.
-  int rows() const { return n + static_cast<int>(S.rows()); }
+  /// The links: n on a ring, n - 1 on an arch (link j joins node j to j + 1).
+  int links() const { return open ? n - 1 : n; }
+  /// Whether hinge j has a spring (bending law): every node of a ring, an arch's interior ones.
+  bool has_spring(int j) const { return !open || (j > 0 && j < n - 1); }
+  /// Constraint rows: the links, then the supports.
+  int rows() const { return links() + static_cast<int>(S.rows()); }
 
   Eigen::Vector2d at(const Eigen::VectorXd& x, int j) const {
     j = ((j % n) + n) % n;
@@ -45,8 +54,8 @@ struct Chain {
   }
   /// Hinge index of a point named by its polar angle (a node, checked by the caller).
   int hinge(double deg) const {
-    const double step = 360.0 / n;
-    return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor_deg) / step)) % n;
+    const int k = static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor_deg) / step_deg));
+    return open ? k : k % n;
   }
 };
 
@@ -105,7 +114,8 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const E
 Springs tangent(const Chain& c, const ChainLoads& loads, const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                 double s, double scale, bool hinges = true);
 
-/// The hinge rotations e_j = theta_j - 2 pi / n at the positions x (c.bending's strains), rad.
+/// The hinge rotations e_j = theta_j - 2 pi / n at the positions x (c.bending's strains), rad
+/// (an arch: 0 at its ends, which have no spring).
 std::vector<double> bending_strains(const Chain& c, const Eigen::VectorXd& x);
 
 /// Constraint values: links (|d|^2 - l^2) / (2 l), then the supports (m).
@@ -120,7 +130,7 @@ void jacobian(const Chain& c, const Eigen::VectorXd& x, int row_offset, double s
 void constraint_hessian(const Chain& c, const Eigen::VectorXd& lambda, double scale, Triplets& out);
 
 /// The constant translational mass matrix: the midpoint masses, m/4 [I I; I I] on every
-/// link, and the point masses on their hinges (terms.hpp), 2n x 2n; with
+/// link (an arch's end node: one link's), and the point masses on their hinges (terms.hpp), 2n x 2n; with
 /// HingeRotations::unknowns on q = (x, chi) (springs()), J on every hinge rotation chi.
 Eigen::SparseMatrix<double> mass_matrix(const Chain& c, HingeRotations hinges = HingeRotations::condensed);
 

@@ -1,6 +1,7 @@
 #include "lumped_mass/checks.hpp"
 
 #include "lumped_mass/preload.hpp"
+#include "lumped_mass/terms.hpp"
 #include "ring/errors.hpp"
 
 #include <array>
@@ -22,12 +23,24 @@ void check_loads(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
     const double a = loads.points[i].angle;
     const std::string key =
         loads.points.size() == 1 ? section + ".at" : section + ".loads[" + std::to_string(i + 1) + "].at";
+    if (spec.is_arch()) {  // a node of the arch, none at a pinned point (chain.cpp, load_hinges)
+      const int k = node_at(spec, a, o.n, key);
+      for (double p : spec.supports.pinned())
+        if (node_at(spec, p, o.n, "supports.pins") == k)
+          throw std::invalid_argument("lumped: " + key + " acts at a pinned point of the arch");
+      continue;
+    }
     if (!std::isfinite(a) || !ring::on_node(a, anchor, o.n))
       throw std::invalid_argument("lumped: " + key + " (=" + std::to_string(a) + ") is not a hinge of the chain (lumped.n = " +
                                   std::to_string(o.n) + "; valid: anchor " + std::to_string(anchor) + " deg + 360 k / n)");
     if (spec.supports.pin && std::abs(std::remainder(a - anchor, 360.0)) < 1e-9)
       throw std::invalid_argument("lumped: " + key + " acts at the pin");
   }
+  if (spec.is_arch() && loads.pressure.any())
+    throw ring::InputError("", "ring.arc",
+                           "lumped: " + section + ".pressure on an arch (ring.arc) is not offered by the chain yet: "
+                           "its follower potential is the area the closed chain encloses, which an open chain has "
+                           "not; give point loads or gravity");
   const std::array<std::pair<const char*, double>, 3> finite{
       {{"pressure", loads.pressure.value}, {"gravity", loads.gravity[0]}, {"gravity", loads.gravity[1]}}};
   for (const auto& [key, v] : finite)
@@ -123,6 +136,14 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
        "a dead load has no equilibrium");
 }
 
+/// What the chain does not take on an arch (ring.arc) yet: ring::InputError naming ring.arc.
+void refuse_arch_here(const ring::RingSpec& spec, const std::string& who) {
+  if (spec.is_arch())
+    throw ring::InputError("", "ring.arc",
+                           who + " does not take an arch (ring.arc) yet; the chain's linear modes, nonlinear "
+                                 "statics (point loads, gravity, static.path) and response do");
+}
+
 }  // namespace
 
 void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
@@ -141,7 +162,6 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
-  ring::refuse_arch(spec, "the lumped linear modes");
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
@@ -153,6 +173,20 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
     points.emplace_back("supports.springs[" + std::to_string(i + 1) + "]", spec.supports.springs[i].angle);
   for (std::size_t i = 0; i < spec.masses.size(); ++i)
     points.emplace_back("masses[" + std::to_string(i + 1) + "]", spec.masses[i].angle);
+  if (spec.is_arch()) {
+    // The chain's open form (model.hpp); the frames still close their ring.
+    if (options.variant != ring::LumpedOptions::Variant::chain)
+      throw ring::InputError("", "ring.arc",
+                             "lumped: lumped.variant = \"" + ring::to_string(options.variant) +
+                                 "\" does not take an arch (ring.arc) yet; use lumped.variant = \"chain\"");
+    if (spec.supports.roller)
+      throw ring::InputError("", "ring.arc",
+                             "lumped: supports.roller on an arch (ring.arc) is not offered: its ends take pins, "
+                             "clamps and springs");
+    for (const auto& [key, a] : points) node_at(spec, a, options.n, key);
+    if (spec.supports.pin) node_at(spec, *spec.supports.pin, options.n, "supports.pin");
+    return;
+  }
   for (const auto& [key, a] : points)
     if (!std::isfinite(a) || !ring::on_node(a, anchor, options.n))
       throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(a) + " deg) is not a node of the n = " +
@@ -161,7 +195,6 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 }
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
-  ring::refuse_arch(spec, "the lumped statics");
   check_chain(spec, options, "statics");
   check_loads(spec, options, statics.loads, "static");
   if (ring::static_rigid_modes(spec, statics.loads) > 0)
@@ -177,7 +210,7 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics) {
-  ring::refuse_arch(spec, "the lumped modes under load");
+  refuse_arch_here(spec, "the lumped modes under load (modes.preload)");
   check_plastic(spec, options, "modes under load (modes.preload)");
   if (options.variant == ring::LumpedOptions::Variant::frame)
     throw std::invalid_argument("lumped: modes.preload = \"static\": lumped.variant = \"frame\" lumps no rotary "
@@ -191,7 +224,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions
 
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling) {
-  ring::refuse_arch(spec, "the lumped buckling");
+  refuse_arch_here(spec, "the lumped buckling");
   check_chain(spec, options, "buckling");
   check_loads(spec, options, buckling.loads, "buckling");
   const ring::Loads& l = buckling.loads;
@@ -209,7 +242,6 @@ void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& optio
 
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& r) {
-  ring::refuse_arch(spec, "the lumped response");
   check_chain(spec, options, "response");
   check_loads(spec, options, r.loads, "response");
   using Integrator = ring::ResponseOptions::Integrator;

@@ -13,27 +13,27 @@ Vec2 at(const Vec& x, int j, int n) {
   return {x[2 * j], x[2 * j + 1]};
 }
 
-/// Twice the enclosed area, sum_j x_j x x_{j+1}.
-double twice_area(const Vec& x, int n) {
+/// Twice the enclosed area, sum_j x_j x x_{j+1} over the links.
+double twice_area(const Vec& x, int n, int links) {
   double a = 0.0;
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j < links; ++j) {
     const Vec2 p = at(x, j, n), q = at(x, j + 1, n);
     a += p.x() * q.y() - p.y() * q.x();
   }
   return a;
 }
 
-double midpoint_radii(const Vec& x, int n) {
+double midpoint_radii(const Vec& x, int n, int links) {
   double s = 0.0;
-  for (int j = 0; j < n; ++j) s += (0.5 * (at(x, j, n) + at(x, j + 1, n))).norm();
+  for (int j = 0; j < links; ++j) s += (0.5 * (at(x, j, n) + at(x, j + 1, n))).norm();
   return s;
 }
 
 }  // namespace
 
 ChainLoads::ChainLoads(const ring::Loads& loads, const Vec& rest, double side,
-                       const Eigen::SparseMatrix<double>& translational_mass, const std::vector<int>& hinges)
-    : n_(static_cast<int>(rest.size() / 2)), l_(side), pressure_(loads.pressure), rest_(rest) {
+                       const Eigen::SparseMatrix<double>& translational_mass, const std::vector<int>& hinges, bool open)
+    : n_(static_cast<int>(rest.size() / 2)), links_(open ? n_ - 1 : n_), l_(side), pressure_(loads.pressure), rest_(rest) {
   const int n = n_;
   dead_ = Vec::Zero(2 * n);
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
@@ -46,15 +46,15 @@ ChainLoads::ChainLoads(const ring::Loads& loads, const Vec& rest, double side,
     dead_ += translational_mass * G;
   }
   if (pressure_.any() && pressure_.kind == ring::Pressure::Kind::dead)
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < links_; ++j) {
       const Vec2 d = at(rest, j + 1, n) - at(rest, j, n);
       const Vec2 nu = Vec2(-d.y(), d.x()).normalized();  // inward on the counter-clockwise chain
       const Vec2 f = 0.5 * pressure_.value * l_ * nu;
       dead_.segment<2>(2 * j) += f;
       dead_.segment<2>(2 * ((j + 1) % n)) += f;
     }
-  area0_ = 0.5 * twice_area(rest, n);
-  central0_ = midpoint_radii(rest, n);
+  area0_ = 0.5 * twice_area(rest, n, links_);
+  central0_ = midpoint_radii(rest, n, links_);
 }
 
 bool ChainLoads::has_stiffness() const {
@@ -65,8 +65,8 @@ double ChainLoads::potential(const Vec& x) const {
   double P = -dead_.dot(x - rest_);
   if (!pressure_.any()) return P;
   const double p = pressure_.value;
-  if (pressure_.kind == ring::Pressure::Kind::follower) P += p * (0.5 * twice_area(x, n_) - area0_);
-  if (pressure_.kind == ring::Pressure::Kind::central) P += p * l_ * (midpoint_radii(x, n_) - central0_);
+  if (pressure_.kind == ring::Pressure::Kind::follower) P += p * (0.5 * twice_area(x, n_, links_) - area0_);
+  if (pressure_.kind == ring::Pressure::Kind::central) P += p * l_ * (midpoint_radii(x, n_, links_) - central0_);
   return P;
 }
 
@@ -83,7 +83,7 @@ Vec ChainLoads::gradient(const Vec& x) const {
       g[2 * j + 1] -= 0.5 * p * c.x();
     }
   if (pressure_.kind == ring::Pressure::Kind::central)
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < links_; ++j) {
       const Vec2 y = 0.5 * (at(x, j, n) + at(x, j + 1, n));
       const Vec2 f = 0.5 * p * l_ * y / y.norm();
       g.segment<2>(2 * j) += f;
@@ -98,7 +98,7 @@ void ChainLoads::add_hessian(const Vec& x, double scale, Triplets& out) const {
   const int n = n_;
   if (pressure_.kind == ring::Pressure::Kind::follower)
     // d2 A / dx_j dx_{j+1} = -J / 2 = [[0, 1/2], [-1/2, 0]]; its transpose for (j+1, j).
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < links_; ++j) {
       const int a = 2 * j, b = 2 * ((j + 1) % n);
       const double h = 0.5 * p * scale;
       out.emplace_back(a, b + 1, h);
@@ -107,7 +107,7 @@ void ChainLoads::add_hessian(const Vec& x, double scale, Triplets& out) const {
       out.emplace_back(b, a + 1, -h);
     }
   if (pressure_.kind == ring::Pressure::Kind::central)
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < links_; ++j) {
       const Vec2 y = 0.5 * (at(x, j, n) + at(x, j + 1, n));
       const double r = y.norm();
       const Vec2 e = y / r;

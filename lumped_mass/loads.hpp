@@ -44,8 +44,11 @@ class ChainLoads {
   /// \param rest hinge rest positions (2n), counter-clockwise
   /// \param translational_mass the constant mass on the hinge positions (2n x 2n), for gravity
   /// \param hinges the hinge of each of loads.points (checked by the caller)
+  /// \param open an arch (ring.arc): the n nodes' n - 1 links, no closing link. Its point loads
+  ///        and gravity are as above; a pressure on the open chain is refused by checks.hpp
+  ///        (its follower potential needs the closed area).
   ChainLoads(const ring::Loads& loads, const Eigen::VectorXd& rest, double side,
-             const Eigen::SparseMatrix<double>& translational_mass, const std::vector<int>& hinges);
+             const Eigen::SparseMatrix<double>& translational_mass, const std::vector<int>& hinges, bool open = false);
 
   /// P(x) - P(rest) at load factor 1, J.
   double potential(const Eigen::VectorXd& x) const;
@@ -56,7 +59,7 @@ class ChainLoads {
   bool has_stiffness() const;
 
  private:
-  int n_ = 0;
+  int n_ = 0, links_ = 0;
   double l_ = 0.0;
   ring::Pressure pressure_;
   Eigen::VectorXd rest_;

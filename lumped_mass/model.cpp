@@ -2,6 +2,7 @@
 
 #include "lumped_mass/terms.hpp"
 #include "lumped_mass/checks.hpp"
+#include "ring/errors.hpp"
 
 #include <array>
 #include <cmath>
@@ -16,11 +17,13 @@ struct Vec2 {
   double x, y;
 };
 
-/// Node positions on the regular n-gon, node k at anchor + 360 k / n degrees. O(n).
-std::vector<Vec2> polygon(int n, double anchor_deg, double circumradius) {
-  std::vector<Vec2> p(n);
-  for (int k = 0; k < n; ++k) {
-    const double a = (anchor_deg + 360.0 * k / n) * M_PI / 180.0;
+/// Node positions on the regular n-gon, node k at anchor + 360 k / n degrees (an arch: its
+/// n + 1 nodes at from + span k / n, ring::node_angles). O(n).
+std::vector<Vec2> polygon(const ring::RingSpec& spec, int pieces, double circumradius) {
+  const std::vector<double> angles = ring::node_angles(spec, pieces);
+  std::vector<Vec2> p(angles.size());
+  for (std::size_t k = 0; k < angles.size(); ++k) {
+    const double a = angles[k] * M_PI / 180.0;
     p[k] = {circumradius * std::cos(a), circumradius * std::sin(a)};
   }
   return p;
@@ -46,28 +49,33 @@ void check_spec(const ring::RingSpec& spec, const ring::LumpedOptions& options) 
 /// rotation (the chain's clamp is a spring on its chord rotation, add_terms()).
 SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int dpn, double anchor, int cols) {
   const int n = static_cast<int>(p.size());
+  const int pieces = spec.is_arch() ? n - 1 : n;
+  auto node = [&](double deg, const std::string& key) { return node_at(spec, deg, pieces, key); };
   Triplets t;
   int rows = 0;
   if (spec.supports.roller && !spec.supports.pin)
     throw std::invalid_argument("supports.roller needs supports.pin");
-  if (!spec.supports.pin && (!spec.supports.pins.empty() || spec.supports.clamp))
+  if (!spec.is_arch() && !spec.supports.pin && (!spec.supports.pins.empty() || spec.supports.clamp))
     throw std::invalid_argument("lumped: supports.pins and supports.clamp need supports.pin (the first pinned point)");
   for (std::size_t i = 0; i < spec.supports.pinned().size(); ++i) {
     const double a = spec.supports.pinned()[i];
-    const int k = node_of(a, anchor, n, i == 0 ? "supports.pin" : "supports.pins");
+    const int k = node(a, i == 0 ? "supports.pin" : "supports.pins");
     t.emplace_back(rows++, dpn * k, 1.0);
     t.emplace_back(rows++, dpn * k + 1, 1.0);
   }
   if (spec.supports.clamp) {
     const double a = *spec.supports.clamp;
-    const int k = node_of(a, anchor, n, "supports.clamp");
+    const int k = node(a, "supports.clamp");
     bool pinned = false;
-    for (double q : spec.supports.pinned()) pinned = pinned || node_of(q, anchor, n, "supports.pins") == k;
+    for (double q : spec.supports.pinned()) pinned = pinned || node(q, "supports.pins") == k;
     if (!pinned)
       throw std::invalid_argument("lumped: supports.clamp (= " + std::to_string(a) +
                                   " deg) must be a pinned point (supports.pin or one of supports.pins)");
     if (dpn == 3) t.emplace_back(rows++, 3 * k + 2, 1.0);
   }
+  if (spec.supports.roller && spec.is_arch())
+    throw std::invalid_argument("lumped: supports.roller on an arch (ring.arc) is not offered: its ends take pins, "
+                                "clamps and springs");
   if (spec.supports.roller) {
     const double r = *spec.supports.roller;
     if (!ring::on_node(r, anchor, n))
@@ -87,12 +95,13 @@ SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int d
 }
 
 /// Chain: hinges at the nodes, side j is a rigid link of length l from node j to j+1.
+/// An arch (m.open): the n + 1 nodes' n links, the n - 1 interior hinges (model.hpp).
 void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, double l, Model& m) {
-  const int n = m.n, N = 2 * n;
+  const int n = m.n, N = 2 * n, links = m.links;
   const double mass = spec.rhoA() * l, k = spec.EI() / l;
   // Unit side vectors t_j and their left normals nu_j (t rotated by +90 deg).
-  std::vector<Vec2> t(n), nu(n);
-  for (int j = 0; j < n; ++j) {
+  std::vector<Vec2> t(links), nu(links);
+  for (int j = 0; j < links; ++j) {
     const Vec2& a = p[j];
     const Vec2& b = p[(j + 1) % n];
     const double len = std::hypot(b.x - a.x, b.y - a.y);
@@ -101,22 +110,23 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   }
   // Link lengths |P_{j+1} - P_j| = l, linearised: t_j . (u_{j+1} - u_j) = 0.
   Triplets c;
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j < links; ++j) {
     const int a = 2 * j, b = 2 * ((j + 1) % n);
     c.emplace_back(j, a, -t[j].x);
     c.emplace_back(j, a + 1, -t[j].y);
     c.emplace_back(j, b, t[j].x);
     c.emplace_back(j, b + 1, t[j].y);
   }
-  m.C.resize(n, N);
+  m.C.resize(links, N);
   m.C.setFromTriplets(c.begin(), c.end());
 
   // Spring at hinge j: theta_j = atan2(a x b, a . b), a = P_j - P_{j-1} (side j-1),
   // b = P_{j+1} - P_j (side j). d theta_j = d phi(b) - d phi(a), and the direction
   // angle phi of a side vector v changes by d phi = (v x dv) / |v|^2 = nu . dv / l.
   Triplets kt, bt;
-  for (int j = 0; j < n; ++j) {
-    const int jm = (j + n - 1) % n, jp = (j + 1) % n;
+  const int first = m.open ? 1 : 0, hinges = m.open ? n - 2 : n;  // an arch's ends have no hinge spring
+  for (int j = first; j < first + hinges; ++j) {
+    const int jm = (j + n - 1) % n, jp = (j + 1) % n, row = j - first;
     // grad theta_j as (node, coefficient vector) pairs; nodes jm, j, jp.
     const std::array<int, 3> node{jm, j, jp};
     std::array<Vec2, 3> g{};
@@ -127,8 +137,8 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
     g[1].x -= nu[jm].x / l; g[1].y -= nu[jm].y / l;
     g[0].x += nu[jm].x / l; g[0].y += nu[jm].y / l;
     for (int r = 0; r < 3; ++r) {
-      bt.emplace_back(j, 2 * node[r], g[r].x);
-      bt.emplace_back(j, 2 * node[r] + 1, g[r].y);
+      bt.emplace_back(row, 2 * node[r], g[r].x);
+      bt.emplace_back(row, 2 * node[r] + 1, g[r].y);
     }
     for (int r = 0; r < 3; ++r)
       for (int s = 0; s < 3; ++s) {
@@ -139,13 +149,13 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
   }
   m.K.resize(N, N);
   m.K.setFromTriplets(kt.begin(), kt.end());
-  m.B.resize(n, N);
+  m.B.resize(hinges, N);
   m.B.setFromTriplets(bt.begin(), bt.end());
-  m.D = Eigen::VectorXd::Constant(n, k);
+  m.D = Eigen::VectorXd::Constant(hinges, k);
 
   // Point mass at the midpoint (P_j + P_{j+1}) / 2 of side j: T = m/2 |(u_j + u_{j+1})/2|'^2.
   Triplets mt;
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j < links; ++j) {
     const int a = j, b = (j + 1) % n;
     for (int d = 0; d < 2; ++d) {
       mt.emplace_back(2 * a + d, 2 * a + d, mass / 4.0);
@@ -405,14 +415,20 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   check_spec(spec, options);
   Model m;
   m.variant = options.variant;
-  m.n = options.n;
+  m.open = spec.is_arch();
+  if (m.open && options.variant != ring::LumpedOptions::Variant::chain)
+    throw ring::InputError("", "ring.arc", "lumped: lumped.variant = \"" + ring::to_string(options.variant) +
+                                               "\" does not take an arch (ring.arc) yet; use lumped.variant = \"chain\"");
+  m.links = options.n;
+  m.n = options.n + (m.open ? 1 : 0);
   m.dofs_per_node = options.variant == ring::LumpedOptions::Variant::chain ? 2 : 3;
   m.anchor_deg = spec.anchor();
-  m.side = 2.0 * M_PI * spec.radius / m.n;
-  m.circumradius = m.side / (2.0 * std::sin(M_PI / m.n));
+  const double angle = m.open ? spec.arc->span() * M_PI / 180.0 : 2.0 * M_PI;  // the centroid line's, rad
+  m.side = angle * spec.radius / m.links;
+  m.circumradius = m.side / (2.0 * std::sin(0.5 * angle / m.links));
   m.expected_rigid = spec.rigid_modes();
   m.lambda_scale = spec.EI() / (spec.rhoA() * std::pow(spec.radius, 4));
-  const std::vector<Vec2> p = polygon(m.n, m.anchor_deg, m.circumradius);
+  const std::vector<Vec2> p = polygon(spec, m.links, m.circumradius);
   using Variant = ring::LumpedOptions::Variant;
   switch (options.variant) {
     case Variant::chain: assemble_chain(spec, p, m.side, m); break;

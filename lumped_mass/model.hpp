@@ -5,6 +5,10 @@
 // Geometry. Node k (k = 0..n-1) sits at polar angle a_k = anchor + 360 k / n degrees
 // (ring::node_angles), at distance rho = l / (2 sin(pi/n)) from the centre; side k
 // joins node k to node k+1 (mod n), counter-clockwise.
+// An arch (ring.arc = [from, to], span alpha rad; the chain only, checks.hpp): an OPEN chain of
+// n links, l = R alpha / n (the chain's length = the arc's), nodes k = 0..n at from + span k / n
+// at rho = l / (2 sin(alpha / (2n))); the ring's closing link is absent. Model::n then counts
+// the n + 1 nodes and Model::links the n links.
 //
 // DOF order (node-major), stated once for every matrix below:
 //   chain:  {ux_0, uy_0, ux_1, uy_1, ...}                 (2 per node, hinge displacements)
@@ -27,18 +31,21 @@ using SpMat = Eigen::SparseMatrix<double>;  // column-major, int indices
 /// C x = 0 (internal constraints) and S x = 0 (supports).
 struct Model {
   ring::LumpedOptions::Variant variant = ring::LumpedOptions::Variant::chain;
-  int n = 0;                 ///< nodes (= links / elements)
+  int n = 0;                 ///< nodes (= links / elements on a ring; links + 1 on an arch)
+  int links = 0;             ///< links / elements: options.n
+  bool open = false;         ///< an arch (ring.arc): node 0 at `from`, node n - 1 at `to`
   int dofs_per_node = 2;     ///< 2 (chain) or 3 (frame variants, timoshenko_frame included)
   double anchor_deg = 0.0;   ///< polar angle of node 0 (the pin, or 0 for a free ring)
-  double side = 0.0;         ///< l = 2 pi R / n, m
-  double circumradius = 0.0; ///< rho = l / (2 sin(pi / n)), m
+  double side = 0.0;         ///< l = 2 pi R / n, m (an arch: R alpha / n)
+  double circumradius = 0.0; ///< rho = l / (2 sin(pi / n)), m (an arch: l / (2 sin(alpha / 2n)))
   /// Unknowns: the node DOFs (dofs_per_node * n, the order above), then, for the chain in
   /// the linear modes, the rotation chi of every hinge with a point inertia and no clamp
   /// (Terms::hinge_rotations' order, rad; add_terms in model.cpp). N = node_dofs() + those.
   int node_dofs() const { return dofs_per_node * n; }
   SpMat K;                   ///< stiffness, N x N, N/m; K = B^T diag(D) B
   /// The stiffness in factored form, strain energy = 1/2 sum_i D_i (B x)_i^2. Rows of B:
-  /// chain: the hinge turning angles theta_j (n rows, rad/m), D_j = EI/l;
+  /// chain: the hinge turning angles theta_j (n rows, rad/m; an arch: its n - 1 interior
+  /// hinges, the ends have no hinge spring), D_j = EI/l;
   /// frames: per element j, rows 3j = axial strain (u2 - u1) . t / l, D = EA l, and
   /// 3j+1, 3j+2 = curvature at the two Gauss points x = l/2 (1 -+ 1/sqrt 3), D = EI l/2
   /// (two-point Gauss integrates the linear curvature's energy exactly);
@@ -75,7 +82,11 @@ struct Model {
 /// finite and >= 0. O(n) time and memory.
 ///
 /// chain: point masses m = rho A l at the side midpoints, rigid massless links (rows of C),
-///   rotational springs k = EI/l at all n hinges. The spring angle at hinge j is the
+///   rotational springs k = EI/l at all n hinges. An arch: the n links' midpoint masses (an
+///   end node carries one link's, m/4 [I I; I I] with its neighbour: on the diagonal, lumped,
+///   half a link's mass at an end and a whole link's at an interior node), springs at the n - 1
+///   interior hinges; an end has none, except a clamp's half hinge 2 EI/l to the wall on the
+///   end link's rotation (terms.hpp). The spring angle at hinge j is the
 ///   turning angle between sides j-1 and j, theta_j(P) = atan2(a x b, a . b) with
 ///   a = P_j - P_{j-1}, b = P_{j+1} - P_j; K = k sum_j grad theta_j grad theta_j^T is its
 ///   exact Hessian at the unstressed n-gon (the term with the Hessian of theta_j is

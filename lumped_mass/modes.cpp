@@ -18,6 +18,22 @@ ring::ModeShape sample_shape(double anchor_deg, int dofs_per_node, const Eigen::
   return ring::sample_polygon(anchor_deg, ux, uy);
 }
 
+namespace {
+
+/// The chain's n + 1 node displacements on an arch, sampled by ring::sample_arc (stations
+/// outside the arc are 0). O(n + stations).
+ring::ModeShape sample_arch_shape(const ring::Arc& arc, const Eigen::Ref<const Eigen::VectorXd>& x) {
+  const int n = static_cast<int>(x.size()) / 2;
+  std::vector<double> ux(n), uy(n);
+  for (int k = 0; k < n; ++k) {
+    ux[k] = x[2 * k];
+    uy[k] = x[2 * k + 1];
+  }
+  return ring::sample_arc(arc, ux, uy);
+}
+
+}  // namespace
+
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count) {
   return compute_modes(spec, options, count, Method::automatic);
 }
@@ -46,7 +62,8 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
   r.unknowns = pairs.unknowns;
   // The shapes are the nodes' displacements; the chain's hinge rotations after them are not.
   for (int c : sel.elastic)
-    r.shapes.push_back(sample_shape(model.anchor_deg, model.dofs_per_node, pairs.X.col(c).head(model.node_dofs())));
+    r.shapes.push_back(model.open ? sample_arch_shape(*spec.arc, pairs.X.col(c).head(model.node_dofs()))
+                                  : sample_shape(model.anchor_deg, model.dofs_per_node, pairs.X.col(c).head(model.node_dofs())));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

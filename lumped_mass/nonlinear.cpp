@@ -58,13 +58,14 @@ Contact closest_nonadjacent(const Chain& c, const Vec& x) {
   std::unordered_map<long long, std::vector<int>> grid;
   auto key = [&](long long gx, long long gy) { return gx * 1000003LL + gy; };
   auto mid = [&](int j) -> Vec2 { return 0.5 * (c.at(x, j) + c.at(x, j + 1)); };
-  for (int j = 0; j < c.n; ++j) {
+  const int links = c.links();
+  for (int j = 0; j < links; ++j) {
     const Vec2 p = mid(j);
     grid[key(std::floor(p.x() / cell), std::floor(p.y() / cell))].push_back(j);
   }
   Contact best;
   if (2 * gap > c.n) return best;
-  for (int j = 0; j < c.n; ++j) {
+  for (int j = 0; j < links; ++j) {
     const Vec2 p = mid(j);
     const long long gx = std::floor(p.x() / cell), gy = std::floor(p.y() / cell);
     for (long long dx = -1; dx <= 1; ++dx)
@@ -72,7 +73,8 @@ Contact closest_nonadjacent(const Chain& c, const Vec& x) {
         auto it = grid.find(key(gx + dx, gy + dy));
         if (it == grid.end()) continue;
         for (int i : it->second) {
-          const int sep = std::min((i - j + c.n) % c.n, (j - i + c.n) % c.n);
+          // Along the chain: around the ring either way, along an arch (no closing link) one way.
+          const int sep = c.open ? i - j : std::min((i - j + c.n) % c.n, (j - i + c.n) % c.n);
           if (i <= j || sep < gap) continue;
           const double d = segment_distance(c.at(x, j), c.at(x, j + 1), c.at(x, i), c.at(x, i + 1));
           if (d < best.distance) best = {d, j, i};
@@ -103,9 +105,14 @@ std::string contact_where(const Chain& c, const Contact& k) {
 
 namespace {
 
-std::vector<int> record_hinges(const Chain& c, const std::vector<double>& record, const std::string& key) {
+std::vector<int> record_hinges(const Chain& c, const ring::RingSpec& spec, const std::vector<double>& record,
+                               const std::string& key) {
   std::vector<int> h;
   for (double a : record) {
+    if (c.open) {
+      h.push_back(node_at(spec, a, c.n - 1, key));
+      continue;
+    }
     if (!ring::on_node(a, c.anchor_deg, c.n))
       throw std::invalid_argument("lumped: " + key + " angle " + std::to_string(a) + " is not a hinge of the chain");
     h.push_back(c.hinge(a));
@@ -172,7 +179,7 @@ class ChainStatics : public paths::Equilibrium {
   /// shrink with the links.
   double move(const paths::Vector& dz) const override {
     double turn = 0.0;
-    for (int j = 0; j < c_.n; ++j) {
+    for (int j = 0; j < c_.links(); ++j) {
       const int k = (j + 1) % c_.n;
       turn = std::max(turn, std::hypot(dz[2 * k] - dz[2 * j], dz[2 * k + 1] - dz[2 * j + 1]) / c_.l);
     }
@@ -265,8 +272,8 @@ class ChainStatics : public paths::Equilibrium {
       const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
       pt.displacements.push_back({ring::wrap_degrees(c_.anchor_deg + 360.0 * k / c_.n), u.x(), u.y()});
     }
-    double most = 0.0, least = INFINITY;
-    for (int k = 0; k < (c_.n + 1) / 2; ++k) {
+    double most = 0.0, least = c_.open ? 0.0 : INFINITY;  // an arch has no opposite hinges: 0
+    for (int k = 0; !c_.open && k < (c_.n + 1) / 2; ++k) {
       const double d = (c_.at(x, k) - c_.at(x, k + c_.n / 2)).norm();
       most = std::max(most, d);
       least = std::min(least, d);
@@ -329,9 +336,9 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   if (options.variant != ring::LumpedOptions::Variant::chain) return frame_static(spec, options, statics);
   const Chain c = make_chain(spec, options);
   const auto at = load_hinges(c, spec, statics.loads, "static");
-  const auto rec = record_hinges(c, statics.record, "static.record");
+  const auto rec = record_hinges(c, spec, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
-  const ChainLoads loads(statics.loads, c.rest, c.l, mass_matrix(c), at);
+  const ChainLoads loads(statics.loads, c.rest, c.l, mass_matrix(c), at, c.open);
   const detail::StaticState st =
       detail::follow_statics(c, loads, spec, statics, statics.path ? &rec : nullptr, route, "lumped statics");
   const paths::Trace& path = st.trace;
@@ -351,6 +358,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   out.plastic_curvature = st.plastic_curvature;
   detail.work = st.work;
   detail.stored = st.stored;
+  detail.limit = path.limit;
   for (std::size_t p = 0; p < rec.size(); ++p) {
     const Vec2 u = c.at(x, rec[p]) - c.at(c.rest, rec[p]);
     out.displacements.push_back({statics.record[p], u.x(), u.y()});
@@ -475,6 +483,7 @@ class ChainStepper : public detail::MidpointStepper {
     if (damped_) res += C_ * vm;
     if (ch_ > 0)
       for (int j = 0; j < c_.n; ++j) {
+        if (!c_.has_spring(j)) continue;
         const Turn tm_ = turn(c_, xm, j, false);
         const double rate = (turn(c_, x1, j, false).theta - turn(c_, q_, j, false).theta) / hh;
         for (int i = 0; i < 6; ++i) {
@@ -509,6 +518,7 @@ class ChainStepper : public detail::MidpointStepper {
   void add_discrete_hinges(Springs& sp) const {
     const Vec qm = 0.5 * (q_ + q1_);
     for (int j = 0; j < c_.n; ++j) {
+      if (!c_.has_spring(j)) continue;
       const Turn t0 = turn(c_, q_, j, false), t1 = turn(c_, q1_, j, false), tm = turn(c_, qm, j, true);
       const double e0 = t0.theta - c_.theta0, e1 = t1.theta - c_.theta0, de = e1 - e0;
       const ring::BilinearLaw::Point p1 = c_.bending.at(j, e1);
@@ -573,6 +583,7 @@ class ChainStepper : public detail::MidpointStepper {
     double d = 0.0;
     if (ch_ > 0)
       for (int j = 0; j < c_.n; ++j) {
+        if (!c_.has_spring(j)) continue;
         const double rate = (turn(c_, q1, j, false).theta - turn(c_, q0, j, false).theta) / hh;
         d += hh * ch_ * rate * rate;
       }
@@ -629,10 +640,10 @@ ring::TimeHistory respond(const ring::RingSpec& spec, const ring::LumpedOptions&
   if (options.variant != ring::LumpedOptions::Variant::chain) return frame_respond(spec, options, r);
   const Chain c = make_chain(spec, options);
   const auto at = load_hinges(c, spec, r.loads, "response");
-  const auto rec = record_hinges(c, r.record, "response.record");
+  const auto rec = record_hinges(c, spec, r.record, "response.record");
   const int N = 2 * c.n, R = c.rows();
   const Sparse M = mass_matrix(c);
-  const ChainLoads loads(r.loads, c.rest, c.l, M, at);
+  const ChainLoads loads(r.loads, c.rest, c.l, M, at, c.open);
   // The unknowns q = (x, chi) (ChainStepper): J on every hinge rotation chi.
   const auto& hr = c.terms->hinge_rotations();
   const int Q = N + static_cast<int>(hr.size());

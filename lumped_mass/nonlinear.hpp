@@ -83,6 +83,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -113,10 +114,13 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 /// exact for a path linear in the load factor, O(steps^-2) otherwise), J; `stored`: the elastic
 /// energy at the end (the bending law's and the terms'; the frames' axial and shear too), J.
 /// The energy identity: work = stored + result.dissipated.
+/// `limit`: the path's first limit point (the first maximum of the load factor, located by the
+/// continuation driver to 1e-6 of its arc step), NaN when the path met none.
 struct StaticDetail {
   ring::StaticResult result;
   std::array<double, 2> ground_force{0.0, 0.0};
   double work = 0.0, stored = 0.0;
+  double limit = std::numeric_limits<double>::quiet_NaN();
 };
 /// How the statics count an equilibrium's unstable directions for the continuation
 /// driver's bifurcation test (stability.hpp): automatic (dense up to n = 200, an O(n)

@@ -44,12 +44,16 @@ std::optional<int> frontal_count(const Chain& c, const Triplets& tangent_hess, c
   // first ones (the corners of the band), so they wait in the border with the supports.
   std::vector<std::vector<int>> groups;
   std::vector<int> border;
+  // An arch (c.open) has no closing link: every node with its link (the last node alone) in
+  // order, and only the supports, which join its two ends, in the border.
+  const int links = c.links();
   for (int j = 0; j < n; ++j) {
-    std::vector<int> g{2 * j, 2 * j + 1, N + j};
-    if (j < n - 2) groups.push_back(g);
+    std::vector<int> g{2 * j, 2 * j + 1};
+    if (j < links) g.push_back(N + j);
+    if (c.open || j < n - 2) groups.push_back(g);
     else border.insert(border.end(), g.begin(), g.end());
   }
-  for (int r = n; r < R; ++r) border.push_back(N + r);
+  for (int r = links; r < R; ++r) border.push_back(N + r);
   const std::optional<modal::Inertia> in = modal::frontal_inertia(K, groups, border);
   if (!in || in->zero != 0 || in->negative < R || in->positive < R) return std::nullopt;
   return static_cast<int>(in->negative - R);

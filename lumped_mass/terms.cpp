@@ -24,14 +24,30 @@ int node_of(double deg, double anchor, int n, const std::string& key) {
   return static_cast<int>(std::lround(ring::wrap_degrees(deg - anchor) * n / 360.0)) % n;
 }
 
+int node_at(const ring::RingSpec& spec, double deg, int pieces, const std::string& key) {
+  if (!spec.is_arch()) return node_of(deg, spec.anchor(), pieces, key);
+  const int k = std::isfinite(deg) ? ring::node_index(spec, deg, pieces) : -1;
+  if (k < 0)
+    throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(deg) + " deg) is not a node of the n = " +
+                                std::to_string(pieces) + " model of the arch (ring.arc = [" +
+                                std::to_string(spec.arc->from) + ", " + std::to_string(spec.arc->to) +
+                                "]; valid: from + span k / n, k = 0..n)");
+  return k;
+}
+
 void check_nonnegative(double v, const std::string& key) {
   if (!(v >= 0.0) || !std::isfinite(v))
     throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(v) + ") must be finite and >= 0");
 }
 
 Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, double side, const Eigen::VectorXd& rest)
-    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), k4_(4.0 * spec.EI() / side), rest_(rest) {
+    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), open_(spec.is_arch()), k4_(4.0 * spec.EI() / side),
+      rest_(rest) {
   const int n = n_, dpn = dpn_;
+  const int pieces = open_ ? n - 1 : n;  // an arch's n + 1 nodes bound n pieces
+  auto node = [&](double deg, const std::string& key) {
+    return open_ ? node_at(spec, deg, pieces, key) : node_of(deg, anchor_deg, n, key);
+  };
   auto stiffness = [&](std::vector<std::pair<int, double>> row, double k) {
     if (k > 0.0) springs_.push_back({-1, std::move(row), k});
   };
@@ -41,14 +57,15 @@ Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, d
   if (f.any())
     for (int k = 0; k < n; ++k) {
       const double rr = std::hypot(rest[2 * k], rest[2 * k + 1]), rx = rest[2 * k] / rr, ry = rest[2 * k + 1] / rr;
-      stiffness({{dpn * k, rx}, {dpn * k + 1, ry}}, f.radial * side);
-      stiffness({{dpn * k, -ry}, {dpn * k + 1, rx}}, f.tangential * side);
+      const double w = open_ && (k == 0 || k == n - 1) ? 0.5 * side : side;  // an arch's end: half a piece
+      stiffness({{dpn * k, rx}, {dpn * k + 1, ry}}, f.radial * w);
+      stiffness({{dpn * k, -ry}, {dpn * k + 1, rx}}, f.tangential * w);
     }
   std::vector<double> kr(n, 0.0);  // rotational springs to the ground by node (a clamp: infinite)
   for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
     const ring::Spring& s = spec.supports.springs[i];
     const std::string key = "supports.springs[" + std::to_string(i + 1) + "]";
-    const int h = node_of(s.angle, anchor_deg, n, key);
+    const int h = node(s.angle, key);
     check_nonnegative(s.kx, key + ".kx");
     check_nonnegative(s.ky, key + ".ky");
     check_nonnegative(s.kr, key + ".kr");
@@ -57,16 +74,17 @@ Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, d
     kr[h] += s.kr;
   }
   const bool chain = dpn == 2;
-  if (chain && spec.supports.clamp) kr[node_of(*spec.supports.clamp, anchor_deg, n, "supports.clamp")] = HUGE_VAL;
-  const double k4 = k4_;
+  if (chain && spec.supports.clamp) kr[node(*spec.supports.clamp, "supports.clamp")] = HUGE_VAL;
   for (int h = 0; h < n; ++h)
-    if (kr[h] > 0.0)
+    if (kr[h] > 0.0) {
+      const double k4 = hinge_stiffness(h);
       springs_.push_back({h, {}, !chain ? kr[h] : std::isinf(kr[h]) ? k4 : k4 * kr[h] / (k4 + kr[h])});
+    }
   std::map<int, Inertia> by_node;
   for (std::size_t i = 0; i < spec.masses.size(); ++i) {
     const ring::PointMass& pm = spec.masses[i];
     const std::string key = "masses[" + std::to_string(i + 1) + "]";
-    const int h = node_of(pm.angle, anchor_deg, n, key);
+    const int h = node(pm.angle, key);
     check_nonnegative(pm.mass, key + ".mass");
     check_nonnegative(pm.inertia, key + ".inertia");
     Inertia& in = by_node[h];
@@ -78,7 +96,7 @@ Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, d
     inertia_.push_back(in);
     double J = 0.0;
     for (const ring::PointMass& pm : spec.masses)
-      if (node_of(pm.angle, anchor_deg, n, "masses") == h) J += pm.inertia;
+      if (node(pm.angle, "masses") == h) J += pm.inertia;
     if (chain && J > 0.0 && !std::isinf(kr[h])) hinge_rotations_.push_back({h, kr[h], J});
   }
 }
@@ -98,6 +116,7 @@ Measure Terms::rotation(const Eigen::VectorXd& u, int h, bool with_hessian) cons
     return m;
   }
   const int n = n_, hm = (h + n - 1) % n, hp = (h + 1) % n;
+  if (open_ && (h == 0 || h == n - 1)) return end_rotation(u, h, with_hessian);
   auto pos = [&](int k) { return Eigen::Vector2d(rest_[2 * k] + u[2 * k], rest_[2 * k + 1] + u[2 * k + 1]); };
   auto rest = [&](int k) { return Eigen::Vector2d(rest_[2 * k], rest_[2 * k + 1]); };
   // Link rotation from its rest direction e: atan2(e x d, e . d).
@@ -122,6 +141,29 @@ Measure Terms::rotation(const Eigen::VectorXd& u, int h, bool with_hessian) cons
     m.hess.block<2, 2>(2, 4) -= Hb;
     m.hess.block<2, 2>(4, 2) -= Hb;
     m.hess.block<2, 2>(4, 4) += Hb;
+  }
+  return m;
+}
+
+Measure Terms::end_rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const {
+  // The one link of an arch's end: from node 0 to 1, or from n - 2 to n - 1; d = x_b - x_a.
+  const int a = h == 0 ? 0 : h - 1, b = a + 1;
+  auto pos = [&](int k) { return Eigen::Vector2d(rest_[2 * k] + u[2 * k], rest_[2 * k + 1] + u[2 * k + 1]); };
+  const Eigen::Vector2d d = pos(b) - pos(a);
+  const Eigen::Vector2d e = Eigen::Vector2d(rest_[2 * b] - rest_[2 * a], rest_[2 * b + 1] - rest_[2 * a + 1]).normalized();
+  Measure m;
+  m.value = std::atan2(e.x() * d.y() - e.y() * d.x(), e.dot(d));
+  m.dofs = {2 * a, 2 * a + 1, 2 * b, 2 * b + 1};
+  const Eigen::Vector2d g = angle_gradient(d);
+  m.grad.resize(4);
+  m.grad << -g, g;
+  if (with_hessian) {
+    const Eigen::Matrix2d H = angle_hessian(d);
+    m.hess = Eigen::MatrixXd::Zero(4, 4);
+    m.hess.block<2, 2>(0, 0) = H;
+    m.hess.block<2, 2>(0, 2) = -H;
+    m.hess.block<2, 2>(2, 0) = -H;
+    m.hess.block<2, 2>(2, 2) = H;
   }
   return m;
 }
@@ -184,7 +226,7 @@ std::vector<Terms::Split> Terms::split(const Eigen::VectorXd& u, std::size_t i, 
   r.grad.conservativeResize(r.grad.size() + 1);
   r.grad[r.grad.size() - 1] = -1.0;
   if (with_hessian) r.hess.conservativeResizeLike(Eigen::MatrixXd::Zero(r.grad.size(), r.grad.size()));
-  out[0].k = k4_;
+  out[0].k = hinge_stiffness(hr.node);
   if (hr.kr > 0.0) {
     Measure g;
     g.value = chi;

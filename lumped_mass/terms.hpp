@@ -11,11 +11,15 @@
 //     k = l k_r and l k_t (the node stands for one side l of ring);
 //   spring at node h: r = ux_h, uy_h (global directions), k = kx, ky; and kr on the rotation
 //     of the tangent at h (below; the chain: in series with 4 EI/l, model.hpp);
-//   the chain's clamp: 4 EI/l on the rotation (kr -> infinity in the same convention).
+//   the chain's clamp: 4 EI/l on the rotation (kr -> infinity in the same convention); at an
+//     arch's end (ring.arc) the half hinge 2 EI/l from the end link to the wall: the end
+//     link's midpoint, where its rotation stands, is l/2 from the wall (hinge_stiffness()).
+//   foundation at an arch's end node: l/2 of arch (the trapezoidal rule).
 // Linear measures have a zero Hessian: these terms are exactly quadratic in u. The rotation of
 // the tangent at node h is:
 //   frames: the rotation unknown th_h (linear);
-//   chain: the mean of the rotations of its two links from their rest directions,
+//   chain: the mean of the rotations of its two links from their rest directions (at an
+//     arch's end node, which has one link, that link's rotation),
 //     m_h = (dphi_{h-1} + dphi_h) / 2, dphi_j = atan2(e_j x d_j, e_j . d_j), d_j = x_{j+1} - x_j
 //     the deformed link and e_j its unit rest direction. Exact for any rotation of a link below
 //     pi from its rest direction (beyond, atan2 wraps: no term is defined there). At rest its
@@ -60,6 +64,10 @@ Eigen::Matrix2d angle_hessian(const Eigen::Vector2d& v);
 
 /// The node at `deg` (anchor + 360 k / n), or std::invalid_argument naming `key`.
 int node_of(double deg, double anchor, int n, const std::string& key);
+/// The node at `deg` of a model of `pieces` equal pieces of the spec's ring or arch: on a ring
+/// node_of(deg, spec.anchor(), pieces, key); on an arch (ring.arc) ring::node_index, node k at
+/// from + span k / pieces, k = 0..pieces. Else std::invalid_argument naming `key`. O(1).
+int node_at(const ring::RingSpec& spec, double deg, int pieces, const std::string& key);
 /// std::invalid_argument naming `key` unless v is finite and >= 0.
 void check_nonnegative(double v, const std::string& key);
 
@@ -83,6 +91,7 @@ enum class HingeRotations { condensed, unknowns };
 class Terms {
  public:
   /// \param rest node rest positions (x_0, y_0, x_1, ...), 2n values, on the model's n-gon
+  ///        (an arch, ring.arc: its n + 1 nodes from `from` to `to`, the chain only)
   /// \param dofs_per_node 2 (chain) or 3 (frames)
   /// Throws std::invalid_argument naming the key for points off the nodes and negative or
   /// non-finite stiffnesses, masses and inertias.
@@ -110,6 +119,10 @@ class Terms {
   /// Whether node h is one of hinge_rotations(). O(terms).
   bool own_rotation(int h) const;
   bool any_stiffness() const { return !springs_.empty(); }
+  /// The chain's two half hinge springs at node h in parallel, the stiffness from the
+  /// tangent's rotation to the hinge's own rotation chi: 4 EI/l, and 2 EI/l at an arch's end
+  /// node, which has one link (the half hinge from the end link to the wall or chi). O(1).
+  double hinge_stiffness(int h) const { return open_ && (h == 0 || h == n_ - 1) ? 0.5 * k4_ : k4_; }
 
   /// The rotation of the centroid line's tangent at node h at displacement u (see above).
   Measure rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const;
@@ -147,11 +160,14 @@ class Terms {
     double k = 0.0;
   };
   Measure measure(const Spring& s, const Eigen::VectorXd& u, bool with_hessian) const;
+  /// rotation() at an arch's end node h: its one link's rotation from its rest direction.
+  Measure end_rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const;
 
   /// Whether a spring is one that HingeRotations::unknowns leaves out.
   bool left_out(const Spring& s, HingeRotations hinges) const;
 
   int n_ = 0, dpn_ = 2;
+  bool open_ = false;  ///< an arch (ring.arc): nodes 0 and n_ - 1 are its ends, one link each
   double k4_ = 0.0;  ///< the chain's two half hinge springs 2K in parallel, 4 EI/l
   Eigen::VectorXd rest_;
   std::vector<Spring> springs_;

@@ -32,8 +32,13 @@ namespace archtest {
 //   N' = -Q - R rhoA omega^2 v,   Q' = N - R rhoA omega^2 w,   M' = R Q - R rhoI omega^2 phi,
 // and the constitutive and kinematic relations
 //   w' = v - R phi,   v' = R N / EA - w,   phi' = R M / EI.
+// Optionally (kGA finite) Timoshenko's shear: phi is then the rotation of the cross-section,
+// the centroid line's tangent turns by (v - w')/R = phi - gamma with the shear strain
+// gamma = Q / kGA (the thin-ring kinematics of ring::closed_form::free_ring_timoshenko), so
+//   w' = v - R phi + R Q / kGA;
+// a clamp holds the cross-section's rotation.
 // In units R = EI = rhoA = 1 (state y = (w/R, v/R, phi, M R/EI, N R^2/EI, Q R^2/EI),
-// Omega^2 = rhoA omega^2 R^4 / EI, e = EI/(EA R^2), j = rhoI/(rhoA R^2)):
+// Omega^2 = rhoA omega^2 R^4 / EI, e = EI/(EA R^2), j = rhoI/(rhoA R^2), g = EI/(kGA R^2)):
 //   y' = A(Omega) y,  A constant along the arch, so y(alpha) = exp(A alpha) y(0).
 // e = 0 is the exact inextensible arch (v' = -w, N a reaction): the system stays regular.
 //
@@ -58,6 +63,7 @@ enum class End { free, pinned, clamped };
 
 /// A circular arch of radius R and opening alpha (radians, 0 < alpha <= 2 pi).
 /// EA = infinity: the inextensible arch. rhoI: rotary inertia per length (0: none).
+/// kGA = infinity: Euler-Bernoulli (no shear strain); finite: Timoshenko's shear.
 struct Arch {
   double R = 1.0;
   double alpha = M_PI;
@@ -65,6 +71,7 @@ struct Arch {
   double EA = std::numeric_limits<double>::infinity();
   double rhoA = 1.0;
   double rhoI = 0.0;
+  double kGA = std::numeric_limits<double>::infinity();
   End start = End::pinned;  ///< the end at theta = 0 (ring.arc's `from`)
   End end = End::pinned;    ///< the end at theta = alpha (ring.arc's `to`)
 };
@@ -93,11 +100,13 @@ inline std::array<int, 3> free_components(End e) {
   return out;
 }
 
-/// A of y' = A y in units R = EI = rhoA = 1, for Omega^2 = W2, e = EI/(EA R^2), j = rhoI/(rhoA R^2).
-inline Mat6 system_matrix(double W2, double e, double j) {
+/// A of y' = A y in units R = EI = rhoA = 1, for Omega^2 = W2, e = EI/(EA R^2), j = rhoI/(rhoA R^2),
+/// g = EI/(kGA R^2).
+inline Mat6 system_matrix(double W2, double e, double j, double g = 0.0) {
   Mat6 A = Mat6::Zero();
-  A(0, 1) = 1.0;   // w'   = v - phi
+  A(0, 1) = 1.0;   // w'   = v - phi + g Q
   A(0, 2) = -1.0;
+  A(0, 5) = g;
   A(1, 0) = -1.0;  // v'   = -w + e N
   A(1, 4) = e;
   A(2, 3) = 1.0;   // phi' = M
@@ -120,8 +129,9 @@ struct SignedLog {
 inline SignedLog boundary_determinant(const Arch& a, double Omega) {
   const double e = std::isinf(a.EA) ? 0.0 : a.EI / (a.EA * a.R * a.R);
   const double j = a.rhoI / (a.rhoA * a.R * a.R);
+  const double g = std::isinf(a.kGA) ? 0.0 : a.EI / (a.kGA * a.R * a.R);
   const double W2 = Omega * Omega, kappa = std::max(1.0, std::sqrt(Omega));
-  Mat6 A = system_matrix(W2, e, j);
+  Mat6 A = system_matrix(W2, e, j, g);
   const Eigen::Matrix<double, 6, 1> d{1.0, 1.0, kappa, kappa * kappa, kappa * kappa * kappa, kappa * kappa * kappa};
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c) A(r, c) *= d(c) / d(r);  // A~ = D^-1 A D
@@ -159,8 +169,8 @@ inline SignedLog boundary_determinant(const Arch& a, double Omega) {
 /// Cost: ~64 determinant evaluations per mode plus ~50 per root.
 inline std::vector<double> arch_omegas(const Arch& a, std::size_t count) {
   if (!(a.alpha > 0.0 && a.alpha <= 2.0 * M_PI + 1e-12) || !(a.R > 0) || !(a.EI > 0) || !(a.EA > 0) ||
-      !(a.rhoA > 0) || !(a.rhoI >= 0))
-    throw std::invalid_argument("archtest::arch_omegas: need 0 < alpha <= 2 pi and positive R, EI, EA, rhoA");
+      !(a.rhoA > 0) || !(a.rhoI >= 0) || !(a.kGA > 0))
+    throw std::invalid_argument("archtest::arch_omegas: need 0 < alpha <= 2 pi and positive R, EI, EA, kGA, rhoA");
   auto sign_at = [&](double t) { return detail::boundary_determinant(a, t * t).sign; };
   const double dt = M_PI / a.alpha / 64.0;
   std::vector<double> out;
