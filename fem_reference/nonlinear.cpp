@@ -85,6 +85,7 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   if (st.path) {
     const bool touched = sol.trace.end == paths::Trace::End::contact;
     r.path = std::move(sol.points);
+    r.limit_points = std::move(sol.limit_points);
     r.branch_points = sol.trace.branch_points;
     r.end = touched ? "contact: " + sol.trace.contact : st.history.empty() ? "full load" : "end of the history";
     r.end_load = sol.trace.end_load;  // the touch, or the full load (a history: its last factor)

@@ -97,6 +97,8 @@ class BeamEquilibrium : public paths::Equilibrium {
     for (double a : st_.record) record_vertices_.push_back(model_.vertex_of(a));
     out_.points.push_back(point_at(0.0, model_.expand(q_)));
   }
+  /// The path point of the reduced state z at load factor s (st.path's record vertices).
+  ring::PathPoint path_point_of(const paths::Vector& z, double s) const { return point_at(s, full(z)); }
   /// The record and the deformed vertices at the end of a path that reached the full load
   /// (or, static.path, at its touching equilibrium).
   void finish(const paths::Vector& z);
@@ -344,6 +346,8 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
     beam.record_path();
   }
   out.trace = paths::follow(beam, {paths::Vector::Zero(beam.size()), 0.0}, options);
+  if (st.path && out.trace.limit_state)
+    out.limit_points.push_back(beam.path_point_of(out.trace.limit_state->z, out.trace.limit_state->s));
   if (out.reached() || (st.path && out.trace.end == paths::Trace::End::contact)) beam.finish(out.trace.state.z);
   return out;
 }
