@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -372,4 +374,18 @@ TEST(FemArch, DeepArchResponseSettlesOnTheElastica) {
   const double e = std::hypot(dx - exact.apex_dx, dy - exact.apex_dy) / std::hypot(exact.apex_dx, exact.apex_dy);
   RecordProperty("response_apex_error", digits(e));
   EXPECT_LT(e, 1e-3);
+}
+
+// The VTU output of an arch's modes: the n cells as an open curve (ring_vtu.cpp), written
+// with each mode's Cartesian displacement.
+TEST(FemArch, WritesTheModesOfAnArchToVtu) {
+  const ring::RingSpec s = pinned_arch(-17.5, 197.5, true);
+  char dir[] = "/tmp/fem-arch-vtu-XXXXXX";
+  ASSERT_NE(mkdtemp(dir), nullptr);
+  const std::string file = fem::write_vtu(s, fe_options(8, 3), 2, dir);
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("<VTKFile"), std::string::npos);
+  EXPECT_NE(text.str().find("displacement_1_omega_"), std::string::npos);
 }
