@@ -307,4 +307,42 @@ TEST(LumpedArch, ASlowDampedRampSettlesAtTheEquilibrium) {
   for (double c : h.constraint_residual) EXPECT_LT(c, 1e-9 * spec.radius);
 }
 
+// ring.plastic on an arch (the interior hinges' law, bending.hpp): a cantilever arch (90 deg,
+// clamped at `from` = 0 deg, free at 90 deg) under a dead load F down at its tip, the
+// resultant law with no hardening. Limit analysis: the moment F R cos(theta) is largest at
+// the clamp, so the arch collapses at F = Mp / R. The chain's clamp is the elastic half hinge
+// (terms.hpp), so its first plastic hinge is node 1, F rho cos(alpha / n) = Mp: its limit
+// differs from Mp / R by O(l^2) (rho = R (1 + O(l^2)), cos = 1 - O(l^2)); the statics end
+// there, past the limit point (ring::NumericalError naming its load factor). Mp R / EI = 1e-5:
+// the displacement before collapse changes the lever by O(1e-5). The path (static.path) turns
+// at a located limit there (the hinge's lever grows as the mechanism swings; far on it shrinks
+// and the load rises again, so the full load is reached). Measured: the limit 5.0e-6 (relative)
+// below the chain's mechanism load Mp / (rho cos(alpha / n)) at n = 16, 32, 64 (the lever's
+// change before collapse, O(Mp R / EI)), bound 10 % of that load's distance from Mp / R
+// (4.4e-3, 1.1e-3, 2.8e-4), which falls at fitted order 2.00 (tolerance 0.1).
+TEST(LumpedArch, PlasticCantileverArchCollapsesAtItsLimitLoad) {
+  ring::RingSpec spec = arch(0.0, 90.0, End::clamped, End::free);
+  const double Mp = 1e-5 * spec.EI() / spec.radius;
+  spec.plastic = ring::Plastic{};
+  spec.plastic->moment = Mp;
+  const double full = 1.5 * Mp / spec.radius;  // above the collapse load
+  ring::StaticOptions st;
+  st.loads.points = {{90.0, {0.0, -full}}};
+  st.path = true;  // the mechanism swings on and its lever shrinks: the load rises past 1.5 Mp / R
+  const std::vector<int> ns{16, 32, 64};
+  std::vector<double> errors;
+  for (int n : ns) {
+    const lumped::StaticDetail d = lumped::solve_static_detail(spec, lumptest::options(n, lumptest::kChain), st);
+    ASSERT_TRUE(std::isfinite(d.limit)) << "n = " << n << ": no limit point; the path ended: " << d.result.end;
+    const double limit = d.limit;
+    const double F = limit * full, collapse = Mp / spec.radius;
+    const double alpha = M_PI / 2.0, l = spec.radius * alpha / n, rho = l / (2.0 * std::sin(alpha / (2.0 * n)));
+    const double chain = Mp / (rho * std::cos(alpha / n));  // the chain's own mechanism
+    std::printf("[ plastic arch ] n = %d: limit %.9e, chain mechanism %.9e, Mp / R %.9e\n", n, F, chain, collapse);
+    EXPECT_NEAR(F, chain, 0.1 * std::abs(chain - collapse)) << "n = " << n;
+    errors.push_back(std::abs(F / collapse - 1.0));
+  }
+  EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 2.0, 0.1));
+}
+
 }  // namespace
