@@ -4,8 +4,7 @@
 // runs, so a refusal never comes after another solver's work. O(1).
 //
 // An arch (ring.arc, model.hpp: the chain as an open chain of n links) is taken by the chain's
-// linear modes, linear buckling (point loads, gravity, a follower pressure with both ends
-// pinned), nonlinear statics (point loads, gravity, static.path, ring.plastic at the interior
+// linear modes, linear buckling (a follower pressure with both ends pinned, no other load), nonlinear statics (point loads, gravity, static.path, ring.plastic at the interior
 // hinges) and response; refused with ring::InputError naming ring.arc: the frames (every
 // analysis), a pressure in the statics and the response, the dead and central pressures, a
 // roller and the modes under load. Its points (supports, masses, loads, records)
