@@ -45,9 +45,23 @@ std::string number(double x) {
   return buf;
 }
 
-int node_count(const ring::CalculixOptions& o) {
+namespace {
+
+/// The equal pieces between nodes: elements (B31) or 2 elements (B32, B32R: a middle node).
+int pieces(const ring::CalculixOptions& o) {
   return o.element == ring::CalculixOptions::Element::b31 ? o.elements : 2 * o.elements;
 }
+
+/// The length of the centroid line (m): the circle's, or the arch's.
+double centroid_length(const ring::RingSpec& spec) {
+  return (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * kPi * spec.radius;
+}
+
+}  // namespace
+
+int node_count(const ring::CalculixOptions& o) { return pieces(o); }
+
+int node_count(const ring::RingSpec& spec, const ring::CalculixOptions& o) { return ring::node_count(spec, pieces(o)); }
 
 namespace {
 
@@ -84,18 +98,23 @@ void check_refusals(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
                            "shape for ccx to expand (use \"equivalent-rectangle\")");
 }
 
-/// Every point term on a node: nodes every 360/nodes degrees from spec.anchor().
+/// Every point term on a node: a ring's nodes every 360/nodes degrees from spec.anchor(), an
+/// arch's every span/pieces degrees from its `from` end to its `to` end.
 void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
   // Every point term on a node of the model (the scene reader checks this for every model;
   // the deck checks it again for callers without a scene).
-  const double step = 360.0 / node_count(o), anchor = spec.anchor();
+  const double step = (spec.arc ? spec.arc->span() : 360.0) / pieces(o), anchor = spec.anchor();
   auto need_node = [&](double angle, const std::string& key) {
-    const double off = ring::wrap_degrees(angle - anchor) / step;
-    if (std::abs(off - std::round(off)) > 1e-9)
+    if (spec.arc && !spec.arc->contains(angle))
+      throw ring::InputError("", key,
+                             "angle " + number(angle) + " lies outside the arch (ring.arc = [" +
+                                 number(spec.arc->from) + ", " + number(spec.arc->to) + "])");
+    if (!ring::on_node(spec, angle, pieces(o)))
       throw ring::InputError("", key,
                              "angle is not a node of the calculix model (calculix.elements = " +
                                  std::to_string(o.elements) + " puts nodes every " + number(step) + " degrees from " +
-                                 (spec.supports.pin ? std::string("the pin") : number(anchor)) + ")");
+                                 (spec.arc ? "the arch's end " + number(anchor)
+                                           : spec.supports.pin ? std::string("the pin") : number(anchor)) + ")");
   };
   if (spec.supports.roller) need_node(*spec.supports.roller, "supports.roller");
   if (spec.supports.clamp) need_node(*spec.supports.clamp, "supports.clamp");  // before pins, which hold it too
@@ -109,7 +128,6 @@ void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
 }  // namespace
 
 void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
-  ring::refuse_arch(spec, "the calculix column");
   check_refusals(spec, o, inertia);
   check_points(spec, o);
 }
@@ -117,12 +135,17 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Iner
 namespace {
 
 /// The share of the ring's length at each node (m): B31 the element length L, B32/B32R
-/// the quadratic element's consistent weights (an end node L/3, a middle node 2L/3).
+/// the quadratic element's consistent weights (an end node L/3, a middle node 2L/3). An
+/// arch's two end nodes belong to one element only: half of that (B31 L/2, B32/B32R L/6).
 std::vector<double> node_shares(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
-  const double L = 2.0 * kPi * spec.radius / o.elements;
+  const double L = centroid_length(spec) / o.elements;
   const bool quadratic = o.element != ring::CalculixOptions::Element::b31;
-  std::vector<double> w(node_count(o));
+  std::vector<double> w(node_count(spec, o));
   for (std::size_t k = 0; k < w.size(); ++k) w[k] = quadratic ? (k % 2 ? 2.0 * L / 3.0 : L / 3.0) : L;
+  if (spec.arc) {
+    w.front() *= 0.5;
+    w.back() *= 0.5;
+  }
   return w;
 }
 
@@ -167,9 +190,9 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
   // anisotropic plasticity; a *SOLID SECTION takes it): the fibre law keeps the isotropic
   // material, and the section's bending across its width with it (calculix/README.md).
   const bool width_rigid = wants_width_rigid && !fibre;
-  const int nodes = node_count(o);
+  const int nodes = node_count(spec, o);
   d.anchor = spec.anchor();
-  d.node_angles = ring::node_angles(spec, nodes);
+  d.node_angles = ring::node_angles(spec, pieces(o));
   const bool circle = o.section == ring::CalculixOptions::Section::as_given &&
                       spec.section.shape == ring::Section::Shape::circle;
   if (o.section == ring::CalculixOptions::Section::equivalent_rectangle) {
@@ -185,24 +208,34 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
 
   std::ostringstream s;
   s << "** CalculiX deck written by ringvib (calculix/deck.cpp)" << (title.empty() ? "" : ": " + title) << "\n"
-    << "** " << analysis << " of a circular ring: " << o.elements << " " << type << " beam elements, which ccx\n"
+    << "** " << analysis << " of a circular " << (spec.arc ? "arch" : "ring") << ": " << o.elements << " " << type
+    << " beam elements, which ccx\n"
     << "** expands into " << (o.element == Element::b31 ? "8" : "20") << "-node bricks of the section's shape.\n"
     << "** Units SI (m, kg, s, N, Pa); frequencies in the .dat file in rad/s and cycles/s.\n"
     << "*HEADING\n"
     << (title.empty() ? std::string("ringvib ring") : title.substr(0, 70)) << "\n";
 
-  s << "** Nodes on the centroid circle, R = " << number(spec.radius) << " m: node k + 1 at polar angle\n"
-    << "** " << number(d.anchor) << " + 360 k / " << nodes << " degrees, counter-clockwise from +x"
-    << (spec.supports.pin ? " (node 1 is the pin)" : "") << ".\n"
-    << "*NODE, NSET=NALL\n";
+  if (spec.arc)
+    s << "** Nodes on the centroid circle, R = " << number(spec.radius) << " m: node k + 1 at polar angle\n"
+      << "** " << number(spec.arc->from) << " + " << number(spec.arc->span()) << " k / " << pieces(o)
+      << " degrees, k = 0.." << pieces(o) << ", counter-clockwise from +x: the arch from node 1 to node " << nodes
+      << ".\n"
+      << "*NODE, NSET=NALL\n";
+  else
+    s << "** Nodes on the centroid circle, R = " << number(spec.radius) << " m: node k + 1 at polar angle\n"
+      << "** " << number(d.anchor) << " + 360 k / " << nodes << " degrees, counter-clockwise from +x"
+      << (spec.supports.pin ? " (node 1 is the pin)" : "") << ".\n"
+      << "*NODE, NSET=NALL\n";
   for (int k = 0; k < nodes; ++k) {
     const double a = d.node_angles[k] * kPi / 180.0;
     s << k + 1 << ", " << number(spec.radius * std::cos(a)) << ", " << number(spec.radius * std::sin(a)) << ", 0.0\n";
   }
 
   s << "** Elements: " << (o.element == Element::b31 ? "two nodes each" : "end, middle, end node")
-    << ", closing the ring.\n"
+    << (spec.arc ? ", an open line from end to end.\n" : ", closing the ring.\n")
     << "*ELEMENT, TYPE=" << type << ", ELSET=ERING\n";
+  // Modulo nodes: the ring's last element closes on node 1; an arch has one node more than it
+  // has pieces, so its last element ends on the last node.
   for (int e = 0; e < o.elements; ++e) {
     if (o.element == Element::b31)
       s << e + 1 << ", " << e + 1 << ", " << (e + 1) % nodes + 1 << "\n";
@@ -353,13 +386,18 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
     // 2L/3, L/6 (an end node L/3, shared by two elements). The springs act in the cylindrical
     // system about the ring's axis, fixed radial and tangential directions of each node's
     // undeformed position (SPRING1 keeps its direction under NLGEOM).
-    const double L = 2.0 * kPi * spec.radius / o.elements;
+    const double L = centroid_length(spec) / o.elements;
     const bool quadratic = o.element != Element::b31;
     const std::vector<double> shares = node_shares(spec, o);
+    // An arch's two end nodes carry half an end node's share: a set of their own (TIP), the
+    // END set then starts at the next element end (node index 1 for B31, 2 for B32/B32R) and
+    // stops before the last node.
+    const int step = quadratic ? 2 : 1;
+    const int first = spec.arc ? step : 0, last = spec.arc ? nodes - 1 : nodes;
     s << "** Winkler foundation: radial " << number(spec.foundation.radial) << " and tangential "
       << number(spec.foundation.tangential) << " N/m per metre of ring, a spring at every node\n"
       << "** times its share of the ring (" << (quadratic ? "end nodes L/3, middle nodes 2L/3" : "L")
-      << ", L = " << number(L) << " m), in the\n"
+      << (spec.arc ? ", the arch's two ends half an end node's" : "") << ", L = " << number(L) << " m), in the\n"
       << "** cylindrical system about z: degree of freedom 1 radial, 2 tangential, of the undeformed node.\n"
       << "*ORIENTATION, NAME=CYLINDER, SYSTEM=CYLINDRICAL\n0.0, 0.0, 0.0, 0.0, 0.0, 1.0\n";
     for (int dof : {1, 2}) {
@@ -367,10 +405,19 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
       if (modulus == 0.0) continue;
       for (int middle : quadratic ? std::vector<int>{0, 1} : std::vector<int>{0}) {
         const std::string set = std::string("EFOUND") + (dof == 1 ? "R" : "T") + (middle ? "MID" : "END");
+        const int from = middle ? 1 : first;
+        if (from >= last) continue;  // an arch of one element has no inner end node
         s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n";
-        for (int k = middle; k < nodes; k += quadratic ? 2 : 1) s << ++element << ", " << k + 1 << "\n";
+        for (int k = from; k < last; k += step) s << ++element << ", " << k + 1 << "\n";
         s << "*SPRING, ELSET=" << set << ", ORIENTATION=CYLINDER\n" << dof << "\n"
-          << number(modulus * shares[middle]) << "\n";
+          << number(modulus * shares[from]) << "\n";
+      }
+      if (spec.arc) {
+        const std::string set = std::string("EFOUND") + (dof == 1 ? "R" : "T") + "TIP";
+        s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n"
+          << ++element << ", 1\n" << ++element << ", " << nodes << "\n"
+          << "*SPRING, ELSET=" << set << ", ORIENTATION=CYLINDER\n" << dof << "\n"
+          << number(modulus * shares.front()) << "\n";
       }
     }
   }

@@ -36,6 +36,10 @@
 // Node k (1-based k + 1) sits at polar angle spec.anchor() + 360 k / nodes (degrees), the
 // anchor of every solver (the pin, or a free ring's free_anchor); B31: nodes = elements,
 // B32/B32R: nodes = 2 elements (the middle nodes on the circle too).
+// An arch (ring.arc = [from, to]) is an open line of the same elements from `from` to `to`:
+// node k + 1 at from + span k / pieces, k = 0..pieces (pieces = elements for B31, 2 elements
+// for B32/B32R: one node more than the ring's), node 1 at `from`; the ends take the supports
+// at their angles (pin: both displacements held; clamp: the rotation too; none: free).
 #pragma once
 
 #include <string>
@@ -91,8 +95,10 @@ Deck response_deck(const ring::RingSpec& spec, const ring::CalculixOptions& opti
 /// damping (Rayleigh, hinge). ring::InputError naming the key.
 void check_response_deck(const ring::ResponseOptions& response);
 
-/// Nodes of the model: elements (B31) or 2 elements (B32, B32R).
+/// Nodes of a ring's model: elements (B31) or 2 elements (B32, B32R).
 int node_count(const ring::CalculixOptions& options);
+/// Nodes of the model of `spec`: a ring's as above, an arch's one more (both ends).
+int node_count(const ring::RingSpec& spec, const ring::CalculixOptions& options);
 
 /// A number as ccx reads it: at most 20 characters (ccx's field width), 14 significant
 /// digits (13 for a three-digit exponent).

@@ -36,9 +36,10 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
   const auto start = std::chrono::steady_clock::now();
   check_deck(spec, options);
   require_ccx();
-  const int nodes = node_count(options);
+  const int nodes = node_count(spec, options);
   const int rigid = spec.rigid_modes();
-  const double node_mass = spec.rhoA() * 2.0 * M_PI * spec.radius / nodes;
+  const double length = (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * M_PI * spec.radius;
+  const double node_mass = spec.rhoA() * length / nodes;
   const int most = 3 * nodes;  // the beam nodes' in-plane degrees of freedom bound the in-plane modes
   FrequencyStep step{eigenvalues_for(spec, count)};
   for (int attempt = 0;; ++attempt) {
@@ -89,7 +90,8 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
     for (int i = rigid; i < rigid + count; ++i) {
       const DatMode& m = *in_plane[i];
       res.omega.push_back(m.omega);
-      res.shapes.push_back(ring::sample_polygon(deck.anchor, m.ux, m.uy));
+      res.shapes.push_back(spec.arc ? ring::sample_arc(*spec.arc, m.ux, m.uy)
+                                    : ring::sample_polygon(deck.anchor, m.ux, m.uy));
     }
     res.unknowns = equation_count(out.log);
     // ccx reports no residual: none (JSON null), not a perfect 0.

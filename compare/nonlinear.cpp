@@ -154,7 +154,8 @@ std::string units_note(const NonlinearTable& t) {
   return t.analysis == "response"
              ? std::string("peak_u: largest |u| over the history (m); t_peak: when it occurs (s)") +
                    (plastic ? "; u_end: |u| at the end (m); dissipated: plastic work (J)" : "")
-             : "ux, uy: displacement (m, ring-centred frame); u: its magnitude; dissipated: plastic work (J)";
+             : "ux, uy: displacement (m, ring-centred frame); u: its magnitude; dissipated: plastic work (J); "
+               "limit_load: the load factor at the path's first limit point";
 }
 
 }  // namespace
@@ -246,6 +247,15 @@ NonlinearTable static_table(const std::string& title, const std::vector<ring::St
     if (reference) row.reference = reference->dissipated;
     t.rows.push_back(row);
   }
+  // A path through a limit point (an arch's snap, a ring's collapse): the first limit load.
+  const auto limit = [](const ring::StaticResult& r) { return r.limit_points.empty() ? NAN : r.limit_points.front().load_factor; };
+  const auto has_limit = [](const ring::StaticResult& r) { return !r.limit_points.empty(); };
+  if (std::any_of(results.begin(), results.end(), has_limit) || (reference && has_limit(*reference))) {
+    NonlinearRow row{NonlinearRow::kWholeRing, "limit_load", {}, {}, std::nullopt, {}};
+    for (const auto& r : results) row.value.push_back(limit(r));
+    if (reference) row.reference = limit(*reference);
+    t.rows.push_back(row);
+  }
   fill_relative(t);
   return t;
 }
@@ -326,7 +336,7 @@ std::string format_json(const NonlinearTable& t) {
   return j.dump(2) + "\n";
 }
 
-void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories, double radius) {
+void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories, const ring::RingSpec& ring) {
   std::vector<Series> series;
   for (std::size_t s = 0; s < histories.size(); ++s) {
     const auto& h = histories[s];
@@ -342,36 +352,23 @@ void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>
   }
   plot_series(dir, "response_history", "Forced response, |u| of the recorded points (solid: the base solver; dashed, dotted: the others in order)", "t (s)",
               "|displacement| (m)", series);
-  std::vector<Series> shapes = {undeformed_ring(radius)};
+  std::vector<Series> shapes = {undeformed_ring(ring)};
   for (std::size_t s = 0; s < histories.size(); ++s) {
     const auto& h = histories[s];
-    for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
-      Series x{h.solver + ", t = " + sig4(h.snapshot_t[k]) + " s", {}, {}, static_cast<int>(k), 1 + static_cast<int>(s % 4)};
-      for (std::size_t i = 0; i <= h.snapshot_x[k].size(); ++i) {
-        const std::size_t j = i % h.snapshot_x[k].size();
-        x.x.push_back(h.snapshot_x[k][j]);
-        x.y.push_back(h.snapshot_y[k][j]);
-      }
-      shapes.push_back(x);
-    }
+    for (std::size_t k = 0; k < h.snapshot_t.size(); ++k)
+      shapes.push_back(deformed_line(h.solver + ", t = " + sig4(h.snapshot_t[k]) + " s", h.snapshot_x[k], h.snapshot_y[k],
+                                     ring, static_cast<int>(k), 1 + static_cast<int>(s % 4)));
   }
   if (shapes.size() > 1)
     plot_series(dir, "response_shapes", "Deformed ring at several instants (solid: the base solver; dashed, dotted, dash-dotted: the others in order)",
                 "x (m)", "y (m)", shapes, false, false, true);
 }
 
-void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, double radius) {
-  std::vector<Series> shapes = {undeformed_ring(radius)};
-  for (std::size_t s = 0; s < results.size(); ++s) {
-    const auto& r = results[s];
-    if (r.node_x.empty()) continue;
-    Series x{r.solver, {}, {}, static_cast<int>(s), 1};
-    for (std::size_t i = 0; i <= r.node_x.size(); ++i) {
-      x.x.push_back(r.node_x[i % r.node_x.size()]);
-      x.y.push_back(r.node_y[i % r.node_y.size()]);
-    }
-    shapes.push_back(x);
-  }
+void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring) {
+  std::vector<Series> shapes = {undeformed_ring(ring)};
+  for (std::size_t s = 0; s < results.size(); ++s)
+    if (!results[s].node_x.empty())
+      shapes.push_back(deformed_line(results[s].solver, results[s].node_x, results[s].node_y, ring, static_cast<int>(s)));
   if (shapes.size() > 1)
     plot_series(dir, "static_shapes", "Deformed ring under the static load, every solver", "x (m)", "y (m)", shapes,
                 false, false, true);

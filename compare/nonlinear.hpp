@@ -50,7 +50,8 @@ struct NonlinearTable {
 
 /// Response: per recorded point, the peak of |u| = sqrt(ux^2 + uy^2) over the history
 /// and the time it occurs. Statics: ux, uy and |u| per recorded point, and for a plastic
-/// ring the dissipated energy (point "ring"). A relative
+/// ring the dissipated energy, for a path through a limit point its first limit load factor
+/// (point "ring", quantities "dissipated" and "limit_load"). A relative
 /// difference or error is left out (NaN) where the value it is taken against is below
 /// 1e-9 of the largest value of that quantity (a pinned point, a symmetry plane).
 NonlinearTable response_table(const std::string& title, const std::vector<ring::TimeHistory>& histories,
@@ -69,7 +70,7 @@ std::string format_json(const NonlinearTable& t);
 /// Figures: the recorded displacements of every solver overlaid against time (the
 /// paper's Figure 4) and the deformed ring of every solver at the snapshot instants
 /// (Figure 5); the deformed ring of every solver under the static load.
-void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories, double radius);
-void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, double radius);
+void plot_histories(const std::string& dir, const std::vector<ring::TimeHistory>& histories, const ring::RingSpec& ring);
+void plot_static_shapes(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring);
 
 }  // namespace cmp

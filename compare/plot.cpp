@@ -100,22 +100,45 @@ void render(const std::string& dir, const std::string& name, const std::string& 
   }
 }
 
-Series undeformed_ring(double radius) {
-  Series ring{"undeformed", {}, {}, Series::kGrey, 2};
+Series undeformed_ring(const ring::RingSpec& spec) {
+  Series line{"undeformed", {}, {}, Series::kGrey, 2};
+  const double from = spec.arc ? spec.arc->from : 0.0, span = spec.arc ? spec.arc->span() : 360.0;
   for (int i = 0; i <= 360; ++i) {
-    ring.x.push_back(radius * std::cos(i * M_PI / 180.0));
-    ring.y.push_back(radius * std::sin(i * M_PI / 180.0));
+    const double t = (from + span * i / 360.0) * M_PI / 180.0;
+    line.x.push_back(spec.radius * std::cos(t));
+    line.y.push_back(spec.radius * std::sin(t));
   }
-  return ring;
+  return line;
 }
 
-void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius, int count,
-                      const ShapeFigure& figure) {
+Series deformed_line(std::string name, const std::vector<double>& x, const std::vector<double>& y,
+                     const ring::RingSpec& spec, int color, int dash) {
+  Series s{std::move(name), x, y, color, dash};
+  if (!spec.arc && !x.empty()) {
+    s.x.push_back(x.front());
+    s.y.push_back(y.front());
+  }
+  return s;
+}
+
+void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, const ring::RingSpec& spec,
+                      int count, const ShapeFigure& figure) {
+  const double radius = spec.radius;
+  // The stations drawn, in order along the centroid line: every one around a ring (closed by
+  // the first again), the arch's from its `from` end to its `to` end.
+  std::vector<int> stations;
+  if (spec.arc) {
+    const int first = static_cast<int>(std::ceil(spec.arc->from - 1e-9));
+    for (int deg = first; deg <= spec.arc->to + 1e-9; ++deg)
+      stations.push_back(static_cast<int>(ring::wrap_degrees(deg)) % ring::kStations);
+  } else {
+    for (int i = 0; i <= ring::kStations; ++i) stations.push_back(i % ring::kStations);
+  }
   int modes = count;
   for (const auto& r : results) modes = std::min<int>(modes, static_cast<int>(r.shapes.size()));
   if (modes <= 0) return;
   // Data blocks: index (mode * models + model), columns x y of the deformed ring (m),
-  // closed by repeating the first station. Amplitude: 15 % of the radius.
+  // closed by repeating the first station (a ring; an arch is open). Amplitude: 15 % of the radius.
   const double a = 0.15 * radius;
   std::ostringstream d;
   d.precision(8);
@@ -137,8 +160,7 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
           s.tangential[i] = -s.tangential[i];
         }
       d << "# mode " << k + 1 << " " << r.solver << "\n";
-      for (int i = 0; i <= ring::kStations; ++i) {
-        const int j = i % ring::kStations;
+      for (const int j : stations) {
         const double t = ring::station_angle(j) * M_PI / 180.0;
         const double rr = radius + a * s.radial[j];
         d << rr * std::cos(t) - a * s.tangential[j] * std::sin(t) << " "
@@ -149,8 +171,10 @@ void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResul
   const int cols = modes <= 4 ? 2 : 3, rows = (modes + cols - 1) / cols;
   std::ostringstream g;
   g << "set multiplot layout " << rows << "," << cols
-    << " title " << gp_string(figure.title + " (deformed ring over the undeformed circle, amplitude 15 % of R)") << "\n"
-    << "set size ratio -1\nunset key\nset xtics format ''\nset ytics format ''\nset parametric\nset trange [0:2*pi]\n"
+    << " title " << gp_string(figure.title + (spec.arc ? " (deformed arch over the undeformed one" : " (deformed ring over the undeformed circle") + ", amplitude 15 % of R)") << "\n"
+    << "set size ratio -1\nunset key\nset xtics format ''\nset ytics format ''\nset parametric\n"
+    << "set trange [" << (spec.arc ? spec.arc->from * M_PI / 180.0 : 0.0) << ":"
+    << (spec.arc ? spec.arc->to * M_PI / 180.0 : 2.0 * M_PI) << "]\n"
     << "set xrange [" << -1.3 * radius << ":" << 1.3 * radius << "]\nset yrange [" << -1.3 * radius << ":"
     << 1.3 * radius << "]\n";
   for (int k = 0; k < modes; ++k) {

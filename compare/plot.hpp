@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ring/results.hpp"
+#include "ring/spec.hpp"
 
 namespace cmp {
 
@@ -25,7 +26,7 @@ struct ShapeFigure {
   std::string panel = "mode ";             ///< panel k's title: panel k: prefix value suffix
   std::string prefix, suffix = " rad/s";
 };
-void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, double radius,
+void plot_mode_shapes(const std::string& dir, const std::vector<ring::ModalResult>& results, const ring::RingSpec& ring,
                       int count = 9, const ShapeFigure& figure = {});
 
 /// Lines y[k] against x for several named series, with labelled axes (log-log if asked).
@@ -36,9 +37,13 @@ struct Series {
   int color = -1;       ///< palette index; -1: the series' position; kGrey: grey
   int dash = 1;         ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
 };
-/// The undeformed centroid circle of radius `radius` (grey, dashed), drawn under the
-/// deformed rings of the shape figures.
-Series undeformed_ring(double radius);
+/// The undeformed centroid line (grey, dashed): the circle, or the arch of ring.arc, drawn
+/// under the deformed rings of the shape figures.
+Series undeformed_ring(const ring::RingSpec& ring);
+/// A deformed centroid line through the nodes (x, y), m: closed back to its first node for a
+/// ring, open for an arch.
+Series deformed_line(std::string name, const std::vector<double>& x, const std::vector<double>& y,
+                     const ring::RingSpec& ring, int color = -1, int dash = 1);
 
 void plot_series(const std::string& dir, const std::string& name, const std::string& title, const std::string& xlabel,
                  const std::string& ylabel, const std::vector<Series>& series, bool logx = false, bool logy = false,

@@ -326,7 +326,7 @@ SolverEntry calculix_entry() {
   // The beam nodes' in-plane degrees of freedom (ux, uy, rotation) bound the in-plane modes.
   e.elastic_modes = [](const ring::Scene& s) -> long long {
     const int held = s.ring.supports.constraint_rows() + s.ring.rigid_modes();
-    return 3LL * calculix::node_count(s.calculix) - held;
+    return 3LL * calculix::node_count(s.ring, s.calculix) - held;
   };
   e.inextensible = [](const ring::Scene&) { return false; };
   e.curve = [](const ring::Scene& s) { return "calculix (" + ring::to_string(s.calculix.element) + ")"; };

@@ -123,7 +123,7 @@ void write_report(const std::string& dir, const RunReport& r) {
     std::vector<ring::ModalResult> with_shapes;
     for (const auto& m : r.modal)
       if (!m.shapes.empty()) with_shapes.push_back(m);
-    plot_mode_shapes(dir, with_shapes, s.ring.radius, 9);
+    plot_mode_shapes(dir, with_shapes, s.ring, 9);
     files.push_back("mode_shapes.png");
     md << "## Mode shapes (the paper's Figure 3)\n\n![mode shapes](mode_shapes.png)\n\n";
   }
@@ -166,8 +166,8 @@ void write_report(const std::string& dir, const RunReport& r) {
       put("response_table.csv", format_csv(*r.response_table));
       put("response_table.json", format_json(*r.response_table));
     }
-    if (histories.size() > 1) plot_histories(dir, histories, s.ring.radius);
-    else plot_response(dir, *r.history, s.ring.radius);
+    if (histories.size() > 1) plot_histories(dir, histories, s.ring);
+    else plot_response(dir, *r.history, s.ring);
     files.push_back("response_history.png");
     md << "![time histories](response_history.png)\n\n";
     if (!r.history->snapshot_t.empty()) {
@@ -193,7 +193,7 @@ void write_report(const std::string& dir, const RunReport& r) {
     }
     std::vector<ring::StaticResult> all = r.nonlinear ? r.nonlinear->statics : std::vector<ring::StaticResult>{*r.statics};
     if (r.nonlinear && r.nonlinear->static_reference) all.push_back(*r.nonlinear->static_reference);
-    plot_static_shapes(dir, all, s.ring.radius);
+    plot_static_shapes(dir, all, s.ring);
     files.push_back("static_shapes.png");
     md << "![deformed ring under the static load](static_shapes.png)\n\n";
     if (!all.front().path.empty()) {
@@ -202,7 +202,7 @@ void write_report(const std::string& dir, const RunReport& r) {
         md << "- " << x.solver << ": " << x.path.size() << " equilibria; ended at load factor " << x.end_load << ": "
            << x.end << "\n";
       }
-      plot_static_paths(dir, all);
+      plot_static_paths(dir, all, s.ring);
       files.push_back("static_path.png");
       md << "\n![equilibrium paths](static_path.png)\n\n";
       if (!s.statics->history.empty()) {
@@ -210,7 +210,7 @@ void write_report(const std::string& dir, const RunReport& r) {
         files.push_back("static_history.png");
         md << "![the load history](static_history.png)\n\n";
       }
-      plot_path_shapes(dir, all.front());
+      plot_path_shapes(dir, all.front(), s.ring);
       files.push_back("static_path_shapes.png");
       md << "![the ring along its path](static_path_shapes.png)\n\n";
     }
@@ -231,7 +231,7 @@ void write_report(const std::string& dir, const RunReport& r) {
     std::vector<ring::ModalResult> shapes;
     for (const auto& b : r.buckling->results) shapes.push_back(as_modal(b));
     if (r.buckling->reference) shapes.push_back(as_modal(*r.buckling->reference));
-    plot_mode_shapes(dir, shapes, s.ring.radius, std::min(9, s.buckling->count),
+    plot_mode_shapes(dir, shapes, s.ring, std::min(9, s.buckling->count),
                      {"buckling_shapes", "Buckling modes", "buckling mode ", "lambda = ", ""});
     files.push_back("buckling_shapes.png");
     md << "![buckling modes](buckling_shapes.png)\n\n";

@@ -40,10 +40,17 @@ std::string history_csv(const ring::TimeHistory& h) {
   return s.str();
 }
 
+namespace {
+nlohmann::json displacements_json(const std::vector<ring::PointDisplacement>& v) {
+  nlohmann::json d = nlohmann::json::array();
+  for (const auto& x : v) d.push_back({{"angle", x.angle}, {"ux", x.ux}, {"uy", x.uy}});
+  return d;
+}
+}  // namespace
+
 std::string static_json(const ring::StaticResult& r) {
   nlohmann::json j;
-  j["displacements"] = nlohmann::json::array();
-  for (const auto& d : r.displacements) j["displacements"].push_back({{"angle", d.angle}, {"ux", d.ux}, {"uy", d.uy}});
+  j["displacements"] = displacements_json(r.displacements);
   j["steps"] = r.steps;
   j["newton_iterations"] = r.newton_iterations;
   j["solver"] = r.solver;
@@ -53,15 +60,16 @@ std::string static_json(const ring::StaticResult& r) {
     j["end"] = r.end;
     j["end_load"] = r.end_load;
     j["branch_points"] = r.branch_points;
+    j["limit_points"] = nlohmann::json::array();
+    for (const auto& p : r.limit_points)
+      j["limit_points"].push_back({{"load_factor", p.load_factor}, {"displacements", displacements_json(p.displacements)}});
     j["path_points"] = r.path.size();
     // Every accepted equilibrium: the load factor, the recorded points' displacements and,
     // for a plastic ring, the plastic work done so far and the largest plastic curvature.
     j["path"] = nlohmann::json::array();
     for (const auto& p : r.path) {
-      nlohmann::json d = nlohmann::json::array();
-      for (const auto& x : p.displacements) d.push_back({{"angle", x.angle}, {"ux", x.ux}, {"uy", x.uy}});
       j["path"].push_back({{"load_factor", p.load_factor},
-                           {"displacements", d},
+                           {"displacements", displacements_json(p.displacements)},
                            {"ovalisation", p.ovalisation},
                            {"dissipated", p.dissipated},
                            {"plastic_curvature", p.plastic_curvature}});
@@ -90,6 +98,7 @@ std::string path_summary(const std::vector<ring::StaticResult>& results) {
   for (const auto& r : results) {
     if (r.path.empty()) continue;
     s << r.solver << ": " << r.path.size() << " equilibria from rest";
+    for (const auto& l : r.limit_points) s << "; a limit point at load factor " << sig4(l.load_factor);
     for (double b : r.branch_points) s << "; onto a branch at load factor " << sig4(b);
     s << "; ended at load factor " << fmt::format("{:.6g}", r.end_load) << ": " << r.end << "\n";
   }
@@ -111,19 +120,41 @@ std::string static_path_csv(const ring::StaticResult& r) {
   return s.str();
 }
 
-void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results) {
+void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring) {
   std::vector<Series> series;
-  for (const auto& r : results) {
-    if (r.path.empty()) continue;
-    Series x{r.solver, {}, {}};
-    for (const auto& p : r.path) {
-      x.x.push_back(p.ovalisation);
-      x.y.push_back(p.load_factor);
+  if (!ring.arc) {
+    for (const auto& r : results) {
+      if (r.path.empty()) continue;
+      Series x{r.solver, {}, {}};
+      for (const auto& p : r.path) {
+        x.x.push_back(p.ovalisation);
+        x.y.push_back(p.load_factor);
+      }
+      series.push_back(x);
     }
+    plot_series(dir, "static_path", "Equilibrium paths: load factor against ovalisation", "(largest - smallest diameter) / R",
+                "load factor", series);
+    return;
+  }
+  // An arch: the load factor against both displacements of the first recorded point (the
+  // loaded point, as DaDeppo & Schmidt and Simo & Vu-Quoc draw the deep arch).
+  double angle = 0.0;
+  for (std::size_t s = 0; s < results.size(); ++s) {
+    const auto& r = results[s];
+    if (r.path.empty() || r.path.front().displacements.empty()) continue;
+    angle = r.path.front().displacements[0].angle;
+    Series x{r.solver + ": ux", {}, {}, static_cast<int>(s), 2}, y{r.solver + ": uy", {}, {}, static_cast<int>(s), 1};
+    for (const auto& p : r.path) {
+      x.x.push_back(p.displacements[0].ux);
+      y.x.push_back(p.displacements[0].uy);
+      x.y.push_back(p.load_factor);
+      y.y.push_back(p.load_factor);
+    }
+    series.push_back(y);
     series.push_back(x);
   }
-  plot_series(dir, "static_path", "Equilibrium paths: load factor against ovalisation", "(largest - smallest diameter) / R",
-              "load factor", series);
+  plot_series(dir, "static_path", "Equilibrium paths: load factor against the displacement of the first recorded point",
+              "displacement at " + deg_label(angle) + " deg (m)", "load factor", series);
 }
 
 void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results) {
@@ -150,35 +181,38 @@ void plot_static_history(const std::string& dir, const std::vector<ring::StaticR
               std::string(y ? "uy" : "ux") + " at " + deg_label(angle) + " deg, m", "load factor", series);
 }
 
-void plot_path_shapes(const std::string& dir, const ring::StaticResult& r) {
+void plot_path_shapes(const std::string& dir, const ring::StaticResult& r, const ring::RingSpec& ring) {
   if (r.path.empty()) return;
-  // Five equilibria, nearest to 0, 1/4, ..., 1 of the path's largest ovalisation.
+  // Five equilibria, nearest to 0, 1/4, ..., 1 of the path's largest ovalisation (a ring) or
+  // displacement of the first recorded point (an arch, which has no opposite points).
+  const auto progress = [&](const ring::PathPoint& p) {
+    if (!ring.arc) return p.ovalisation;
+    return p.displacements.empty() ? 0.0 : std::hypot(p.displacements[0].ux, p.displacements[0].uy);
+  };
   double most = 0.0;
-  for (const auto& p : r.path) most = std::max(most, p.ovalisation);
+  for (const auto& p : r.path) most = std::max(most, progress(p));
   std::vector<std::size_t> chosen;
   for (int i = 0; i <= 4; ++i) {
     const double target = most * i / 4.0;
     std::size_t best = 0;
     for (std::size_t k = 1; k < r.path.size(); ++k)
-      if (std::abs(r.path[k].ovalisation - target) < std::abs(r.path[best].ovalisation - target)) best = k;
+      if (std::abs(progress(r.path[k]) - target) < std::abs(progress(r.path[best]) - target)) best = k;
     if (std::find(chosen.begin(), chosen.end(), best) == chosen.end()) chosen.push_back(best);
   }
   std::vector<Series> series;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const ring::PathPoint& p = r.path[chosen[i]];
     if (p.node_x.empty()) continue;
-    Series s{"load factor " + fmt::format("{:.4g}", p.load_factor) + ", ovalisation " + fmt::format("{:.3f}", p.ovalisation),
-             p.node_x, p.node_y, static_cast<int>(i), 1};
-    s.x.push_back(p.node_x.front());  // closed
-    s.y.push_back(p.node_y.front());
-    series.push_back(std::move(s));
+    series.push_back(deformed_line("load factor " + fmt::format("{:.4g}", p.load_factor) +
+                                       (ring.arc ? "" : ", ovalisation " + fmt::format("{:.3f}", p.ovalisation)),
+                                   p.node_x, p.node_y, ring, static_cast<int>(i)));
   }
   if (series.empty()) return;
   plot_series(dir, "static_path_shapes", r.solver + ": the ring along its equilibrium path", "x (m)", "y (m)", series,
               false, false, true);
 }
 
-void plot_response(const std::string& dir, const ring::TimeHistory& h, double radius) {
+void plot_response(const std::string& dir, const ring::TimeHistory& h, const ring::RingSpec& ring) {
   std::vector<Series> series;
   for (std::size_t p = 0; p < h.record_angles.size(); ++p) {
     const int color = static_cast<int>(p);
@@ -190,16 +224,9 @@ void plot_response(const std::string& dir, const ring::TimeHistory& h, double ra
   if (h.snapshot_t.empty()) return;
   // Deformed ring at the snapshots, node positions (the paper's Figure 5 shows one half;
   // for its symmetric load the other half is the mirror image).
-  std::vector<Series> shapes = {undeformed_ring(radius)};
-  for (std::size_t k = 0; k < h.snapshot_t.size(); ++k) {
-    Series s{"t = " + sig4(h.snapshot_t[k]) + " s", {}, {}};
-    for (std::size_t i = 0; i <= h.snapshot_x[k].size(); ++i) {
-      const std::size_t j = i % h.snapshot_x[k].size();
-      s.x.push_back(h.snapshot_x[k][j]);
-      s.y.push_back(h.snapshot_y[k][j]);
-    }
-    shapes.push_back(s);
-  }
+  std::vector<Series> shapes = {undeformed_ring(ring)};
+  for (std::size_t k = 0; k < h.snapshot_t.size(); ++k)
+    shapes.push_back(deformed_line("t = " + sig4(h.snapshot_t[k]) + " s", h.snapshot_x[k], h.snapshot_y[k], ring));
   plot_series(dir, "response_shapes", "Deformed ring at several instants (node positions)", "x (m)", "y (m)", shapes,
               false, false, true);
 }

@@ -24,18 +24,19 @@ std::string path_summary(const std::vector<ring::StaticResult>& results);
 /// static.path: the path as CSV (load_factor, ovalisation, ux_A, uy_A for each recorded point,
 /// dissipated, plastic_curvature).
 std::string static_path_csv(const ring::StaticResult& r);
-/// static.path: load factor against ovalisation, every solver's path overlaid (static_path.png).
-void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results);
+/// static.path: load factor against ovalisation (a ring) or against the displacements of the first
+/// recorded point (an arch), every solver's path overlaid (static_path.png).
+void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring);
 /// static.history: load factor against the displacement of the first recorded point (its
 /// component with the larger range), every solver's path overlaid (static_history.png): the
 /// loops of cyclic loading of a plastic ring.
 void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results);
 /// static_path_shapes.png: the deformed ring of `r`'s path at five equilibria, nearest to 0,
 /// 1/4, ..., 1 of its largest ovalisation (rest to the touch), true to scale.
-void plot_path_shapes(const std::string& dir, const ring::StaticResult& r);
+void plot_path_shapes(const std::string& dir, const ring::StaticResult& r, const ring::RingSpec& ring);
 
 /// Figures of a response: time histories of the recorded points, and the deformed
 /// ring at the snapshot instants (the paper's Figure 5).
-void plot_response(const std::string& dir, const ring::TimeHistory& h, double radius);
+void plot_response(const std::string& dir, const ring::TimeHistory& h, const ring::RingSpec& ring);
 
 }  // namespace cmp

@@ -26,6 +26,44 @@ void refuse_plastic(const ring::RingSpec& spec, const std::string& analysis_and_
 
 void check_linear(const ring::RingSpec& spec, const ring::FemOptions& o);
 
+/// Where the vertices are, for a message: the ring's anchor + k 360 / fem.elements, or the
+/// arch's from + k span / fem.elements.
+std::string vertex_rule(const ring::RingSpec& spec) {
+  if (spec.is_arch())
+    return std::to_string(spec.arc->from) + " + k * " + std::to_string(spec.arc->span()) + " / fem.elements";
+  return std::to_string(spec.anchor()) + " + k * 360 / fem.elements";
+}
+
+/// What the arch (ring.arc) needs of the FE model: the Euler-Bernoulli beam on the exact
+/// circle (the Timoshenko model and the Reissner beam, and the polygon, keep the closed
+/// ring's periodic mesh only), and no roller (a ring's roller moves along the line through
+/// the pin; an arch's ends take pins and clamps).
+void check_arch(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  if (!spec.is_arch()) return;
+  if (o.theory.value_or(spec.theory) == ring::Theory::timoshenko)
+    throw ring::InputError("", "ring.arc",
+                           "fem: the Timoshenko model and the Reissner beam take no arch yet (ring.theory = "
+                           "\"euler-bernoulli\" does)");
+  if (o.geometry != ring::FemOptions::Geometry::curved)
+    throw ring::InputError("", "ring.arc",
+                           "fem: fem.geometry = \"polygon\" (the paper's SAP5 frame of the closed ring) takes no arch "
+                           "(fem.geometry = \"curved\" does)");
+  if (spec.supports.roller)
+    throw ring::InputError("", "ring.arc", "fem: an arch takes no supports.roller (pin or clamp its ends)");
+}
+
+/// The end vertices of an arch that hold both displacements (a pin or a clamp there).
+int held_ends(const ring::RingSpec& spec, int elements) {
+  int held = 0;
+  for (double end : {spec.arc->from, spec.arc->to}) {
+    bool at = false;
+    for (double a : spec.supports.pinned())
+      at = at || ring::node_index(spec, a, elements) == ring::node_index(spec, end, elements);
+    held += at;
+  }
+  return held;
+}
+
 /// The plastic law on the Euler-Bernoulli beam (statics and response): the fibre law needs
 /// the section's shape; the Reissner beam takes no law yet (plastic_points.hpp says why).
 void check_plastic(const ring::RingSpec& spec, const std::string& analysis) {
@@ -50,11 +88,9 @@ void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, cons
   check_linear(spec, o);
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
-  const double anchor = spec.anchor();
   auto on_vertex = [&](double a, const std::string& key) {
-    need(ring::on_node(a, anchor, o.elements), section + "." + key + " (=" + std::to_string(a) +
-                                                   ") must fall on an FE vertex: " + std::to_string(anchor) +
-                                                   " + k * 360 / fem.elements");
+    need(ring::on_node(spec, a, o.elements), section + "." + key + " (=" + std::to_string(a) +
+                                                 ") must fall on an FE vertex: " + vertex_rule(spec));
   };
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const ring::PointLoad& load = loads.points[i];
@@ -67,18 +103,23 @@ void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, cons
   for (double a : record) on_vertex(a, "record");
   need(std::isfinite(loads.pressure.value), section + ".pressure.value must be finite");
   need(std::isfinite(loads.gravity[0]) && std::isfinite(loads.gravity[1]), section + ".gravity must be finite");
+  // The follower pressure's potential -p (A - A0) (A swept from the centre) has the follower
+  // load as its gradient up to the ends' term [x cross dx] / 2: exact where neither end moves.
+  if (spec.is_arch() && loads.pressure.any() && loads.pressure.kind == ring::Pressure::Kind::follower &&
+      held_ends(spec, o.elements) < 2)
+    throw ring::InputError("", "ring.arc",
+                           "fem: a follower pressure on an arch needs both ends pinned or clamped (its potential "
+                           "holds only where the ends do not move)");
 }
 
 /// The supports, springs, masses and foundation of linear modes: finite, >= 0, every point
 /// on an FE vertex (anchor + k 360 / fem.elements), pins and clamp with a pin.
 void check_terms(const ring::RingSpec& spec, const ring::FemOptions& o) {
   const ring::Supports& s = spec.supports;
-  const double anchor = spec.anchor();
   auto on_vertex = [&](double a, const std::string& key) {
     need(std::isfinite(a), key + " must be finite");
-    need(ring::on_node(a, anchor, o.elements), key + " (=" + std::to_string(a) +
-                                                   ") must fall on an FE vertex: " + std::to_string(anchor) +
-                                                   " + k * 360 / fem.elements");
+    need(ring::on_node(spec, a, o.elements), key + " (=" + std::to_string(a) +
+                                                 ") must fall on an FE vertex: " + vertex_rule(spec));
   };
   auto non_negative = [&](double v, const std::string& key) {
     need(std::isfinite(v) && v >= 0.0, key + " (=" + std::to_string(v) + ") must be finite and >= 0");
@@ -135,6 +176,7 @@ void check_linear(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(!o.reference || (o.tolerance > 0 && o.tolerance < 1), "fem.tolerance must be in (0, 1)");
   need(!o.reference || (o.response_tolerance > 0 && o.response_tolerance < 1), "fem.response_tolerance must be in (0, 1)");
   need(!spec.supports.roller || spec.supports.pin, "supports.roller needs supports.pin");
+  check_arch(spec, o);
   check_terms(spec, o);
   if (spec.supports.roller) {
     need(ring::wrap_degrees(*spec.supports.roller - *spec.supports.pin) > 1e-9 &&
@@ -160,7 +202,6 @@ double precision_ratio_bound(int elements, int degree) {
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
-  ring::refuse_arch(spec, "the fem linear modes");
   check_linear(spec, o);
   // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused
   // here, before any assembly, where the bound already exceeds the limit (the model's own
@@ -186,8 +227,9 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
-  ring::refuse_arch(spec, "the fem statics");
   check_nonlinear(spec, o, st.loads, st.record, "static");
+  if (spec.is_arch() && spec.plastic)
+    throw ring::InputError("", "ring.arc", "fem: the plastic statics take no arch yet (remove ring.plastic)");
   check_plastic(spec, "statics");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
@@ -205,7 +247,6 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
-  ring::refuse_arch(spec, "the fem buckling");
   refuse_plastic(spec, "linear buckling is about the undeformed, elastic ring and would ignore the plastic law "
                        "(follow the equilibrium path with static.path = true instead)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
@@ -237,7 +278,6 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
-  ring::refuse_arch(spec, "the fem response");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   check_plastic(spec, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,

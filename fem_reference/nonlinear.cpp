@@ -86,6 +86,7 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
     const bool touched = sol.trace.end == paths::Trace::End::contact;
     r.path = std::move(sol.points);
     r.branch_points = sol.trace.branch_points;
+    r.limit_points = std::move(sol.limits);
     r.end = touched ? "contact: " + sol.trace.contact : st.history.empty() ? "full load" : "end of the history";
     r.end_load = sol.trace.end_load;  // the touch, or the full load (a history: its last factor)
   }
@@ -241,7 +242,7 @@ class BeamStepper : public paths::Stepper {
     const Vector<double> full = model_.expand(q_);
     x.clear();
     y.clear();
-    for (unsigned int k = 0; k < model_.cells(); ++k) {
+    for (unsigned int k = 0; k < model_.vertices(); ++k) {
       const auto X = model_.vertex_position(k);
       const auto u = model_.vertex_displacement(full, k);
       x.push_back(X[0] + u[0]);

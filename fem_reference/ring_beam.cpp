@@ -81,7 +81,7 @@ std::vector<BendingPoint> RingModel::bending_points(const Vector<double>& q, con
   const double P = penalty_;
   const ring::BilinearLaw hinge = plastic.law.hinge(P);
   const ring::SectionLaw& section = plastic.law.section;
-  for (unsigned int v = 0; v < n; ++v) {
+  for (unsigned int v = first_joint(); v < n; ++v) {
     const unsigned int l = ((v + n - 1) % n) * per_cell + per_cell - 1, r = v * per_cell;
     const double J = std::remainder(tangent_angle(g[r]).value - tangent_angle(g[l]).value, 2.0 * kPi);
     const double M = 0.5 * (section.at(plastic.point(l), out[l].curvature).force +
@@ -159,8 +159,8 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
   // Interior penalty at every vertex on the exact rotation jump J = phi_R - phi_L (the
   // angle from the left cell's tangent to the right one's, never wrapped: both are
   // measured from the same t0) and the mean moment {M} = EI (phi'_L + phi'_R) / (2 R):
-  // E_v = {M} J + penalty / 2 J^2.
-  for (unsigned int v = 0; v < n; ++v) {
+  // E_v = {M} J + penalty / 2 J^2. (An arch's end vertices are no joints.)
+  for (unsigned int v = first_joint(); v < n; ++v) {
     const unsigned int left = (v + n - 1) % n;
     cells_[left]->get_dof_indices(dofs);
     cells_[v]->get_dof_indices(right);
@@ -257,18 +257,22 @@ double RingModel::rotation_spring(unsigned int v, double kr, const Vector<double
                                   SparseMatrix<double>* tangent) const {
   // kr/2 {phi}^2 with {phi} = (phi_left + phi_right)/2 the mean of the two cells' exact
   // tangent angles at the vertex (measured from t0, the right one as the left one plus the
-  // jump [[phi]] reduced to (-pi, pi], as the beam's vertex terms).
-  const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
+  // jump [[phi]] reduced to (-pi, pi], as the beam's vertex terms). At an arch's end the
+  // one cell's angle, written as both sides (so the mean is that angle).
+  const unsigned int dpc = fe_.n_dofs_per_cell();
+  const auto sides = cells_at(v);
+  const auto& [left_cell, left_end] = sides.front();
+  const auto& [right_cell, right_end] = sides.back();
   std::vector<types::global_dof_index> dofs(2 * dpc), side(dpc);
-  cells_[(v + n - 1) % n]->get_dof_indices(side);
+  cells_[left_cell]->get_dof_indices(side);
   std::copy(side.begin(), side.end(), dofs.begin());
-  cells_[v]->get_dof_indices(side);
+  cells_[right_cell]->get_dof_indices(side);
   std::copy(side.begin(), side.end(), dofs.begin() + dpc);
   std::vector<Vec4> b(2 * dpc);
   Vec4 gl{1.0, 0.0, 0.0, 0.0}, gr{1.0, 0.0, 0.0, 0.0};
   for (unsigned int i = 0; i < dpc; ++i) {
-    b[i] = strain_row(i, nq_ + 1);        // right end of the left cell
-    b[dpc + i] = strain_row(i, nq_);      // left end of the right cell
+    b[i] = strain_row(i, left_end == 0.0 ? nq_ : nq_ + 1);         // right end of the left cell
+    b[dpc + i] = strain_row(i, right_end == 0.0 ? nq_ : nq_ + 1);  // left end of the right cell
     for (int a = 0; a < 4; ++a) {
       gl[a] += full[dofs[i]] * b[i][a];
       gr[a] += full[dofs[dpc + i]] * b[dpc + i][a];
@@ -306,7 +310,10 @@ double RingModel::rotation_spring(unsigned int v, double kr, const Vector<double
 // ---- BeamModel: the vertices and the centreline, either model ----
 
 BeamModel::BeamModel(const ring::RingSpec& spec, const Setup& setup)
-    : LinearModel(spec, setup), theta0_(spec.anchor() * kPi / 180.0), h_(2.0 * kPi / setup.cells()) {}
+    : LinearModel(spec, setup),
+      open_(spec.is_arch()),
+      theta0_(spec.anchor() * kPi / 180.0),
+      h_((spec.is_arch() ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi) / setup.cells()) {}
 
 void BeamModel::measure_lengths() {
   lengths_.assign(n_free_, 1.0);
@@ -322,6 +329,11 @@ void BeamModel::measure_lengths() {
 unsigned int BeamModel::vertex_of(double degrees) const {
   const double pin = spec_.anchor();
   const unsigned int n = setup_.cells();
+  if (open_) {
+    const int k = ring::node_index(spec_, degrees, static_cast<int>(n));
+    if (k < 0) throw std::logic_error("fem: " + std::to_string(degrees) + " deg is no vertex of the arch");
+    return static_cast<unsigned int>(k);
+  }
   return static_cast<unsigned int>(std::lround(ring::wrap_degrees(degrees - pin) * n / 360.0)) % n;
 }
 
@@ -371,6 +383,11 @@ std::vector<std::array<double, 2>> BeamModel::centreline(const Vector<double>& f
       const double r = spec_.radius + U[1];
       out.push_back({r * std::cos(a) - U[0] * std::sin(a), r * std::sin(a) + U[0] * std::cos(a)});
     }
+  }
+  if (open_) {  // an arch: its `to` end closes the open curve
+    const auto X = vertex_position(n);
+    const auto u = vertex_displacement(full, n);
+    out.push_back({X[0] + u[0], X[1] + u[1]});
   }
   return out;
 }

@@ -102,7 +102,7 @@ RingModel::RingModel(const ring::RingSpec& spec, const Setup& setup)
 }
 
 void RingModel::make_grid() {
-  GridGenerator::subdivided_hyper_cube(triangulation_, setup_.cells(), theta0_, theta0_ + 2.0 * kPi);
+  GridGenerator::subdivided_hyper_cube(triangulation_, setup_.cells(), theta0_, theta0_ + setup_.cells() * h_);
   dof_handler_.distribute_dofs(fe_);
   for (const auto& cell : dof_handler_.active_cell_iterators()) cells_.push_back(cell);
   std::sort(cells_.begin(), cells_.end(),
@@ -171,6 +171,14 @@ void RingModel::make_grid() {
   penalty_ = 2.0 * (q_kappa + 1) * (q_kappa + 2) * spec_.EI() / (ds_dtheta() * h_);
 }
 
+std::vector<std::pair<unsigned int, double>> RingModel::cells_at(unsigned int v) const {
+  const unsigned int n = setup_.cells();
+  std::vector<std::pair<unsigned int, double>> out;
+  if (!open_ || v > 0) out.emplace_back((v + n - 1) % n, 1.0);
+  if (!open_ || v < n) out.emplace_back(v % n, 0.0);
+  return out;
+}
+
 std::array<types::global_dof_index, 2> RingModel::end_dofs(unsigned int cell, double xi) const {
   std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
   cells_[cell]->get_dof_indices(dofs);
@@ -184,16 +192,20 @@ std::array<types::global_dof_index, 2> RingModel::end_dofs(unsigned int cell, do
 void RingModel::setup_constraints() {
   const unsigned int n = setup_.cells();
   // Periodic closure: the vertex at theta0 + 2 pi is the vertex at theta0. The field
-  // components are the same there (polar basis at the same angle, or Cartesian).
+  // components are the same there (polar basis at the same angle, or Cartesian). An arch
+  // (ring.arc) is the same mesh without the wrap: its end vertices 0 and n are distinct,
+  // and an end without a support has the natural (free-end) conditions.
   const auto first = end_dofs(0, 0.0), last = end_dofs(n - 1, 1.0);
-  for (unsigned int c = 0; c < 2; ++c) {
-    constraints_.add_line(last[c]);
-    constraints_.add_entry(last[c], first[c], 1.0);
-  }
-  if (spec_.supports.pin) {
+  if (!open_)
     for (unsigned int c = 0; c < 2; ++c) {
-      constraints_.add_line(first[c]);  // both components zero at vertex 0
+      constraints_.add_line(last[c]);
+      constraints_.add_entry(last[c], first[c], 1.0);
     }
+  if (spec_.supports.pin) {
+    // Both components zero at the pin's vertex (the ring's vertex 0; an arch's pin may sit
+    // at either end).
+    const auto pinned = vertex_dofs(vertex_of(*spec_.supports.pin));
+    for (unsigned int c = 0; c < 2; ++c) constraints_.add_line(pinned[c]);
     if (spec_.supports.roller) {
       // The roller vertex stays on the line pin-roller: the displacement component
       // along e, the unit normal of that line, is zero.
@@ -217,7 +229,7 @@ void RingModel::setup_constraints() {
     }
     // Further pins: both components zero at their vertices.
     for (double a : spec_.supports.pins) {
-      const auto dofs = end_dofs(vertex_of(a), 0.0);
+      const auto dofs = vertex_dofs(vertex_of(a));
       for (unsigned int c = 0; c < 2; ++c)
         if (!constraints_.is_constrained(dofs[c])) constraints_.add_line(dofs[c]);
     }
@@ -232,11 +244,10 @@ void RingModel::constrain_rotation(unsigned int v) {
   // (C1) solution satisfies both and the test functions do too, so the penalty and
   // moment terms at the clamp vanish and the form stays consistent. Each row eliminates
   // the interior DoF of its cell with the largest coefficient (degree >= 2: w has one).
-  const unsigned int n = setup_.cells(), dpc = fe_.n_dofs_per_cell();
+  const unsigned int dpc = fe_.n_dofs_per_cell();
   const auto& points = fe_.get_unit_support_points();
   std::vector<types::global_dof_index> dofs(dpc);
-  const std::array<std::pair<unsigned int, double>, 2> sides{{{(v + n - 1) % n, 1.0}, {v, 0.0}}};
-  for (const auto& [cell, end] : sides) {
+  for (const auto& [cell, end] : cells_at(v)) {
     cells_[cell]->get_dof_indices(dofs);
     const unsigned int q = end == 0.0 ? nq_ : nq_ + 1;
     std::vector<double> coef(dpc, 0.0);
@@ -259,17 +270,19 @@ void RingModel::vertex_rotation(unsigned int v, std::vector<types::global_dof_in
   // The rotation at a vertex is the mean of the two cells' end rotations: on the exact
   // (C1) solution both are the rotation, and the mean keeps the form consistent (the
   // vertex's natural condition [[M]] = kr {phi} pairs with {phi} of the test function).
-  const unsigned int n = setup_.cells(), dpc = fe_.n_dofs_per_cell();
-  dofs.resize(2 * dpc);
-  coef.resize(2 * dpc);
+  // At an arch's end the one cell's end rotation is the rotation.
+  const unsigned int dpc = fe_.n_dofs_per_cell();
+  const auto sides = cells_at(v);
+  const double weight = 1.0 / sides.size();
+  dofs.clear();
+  coef.clear();
   std::vector<types::global_dof_index> side(dpc);
-  cells_[(v + n - 1) % n]->get_dof_indices(side);
-  std::copy(side.begin(), side.end(), dofs.begin());
-  cells_[v]->get_dof_indices(side);
-  std::copy(side.begin(), side.end(), dofs.begin() + dpc);
-  for (unsigned int i = 0; i < dpc; ++i) {
-    coef[i] = 0.5 * kinematics((v + n - 1) % n, i, nq_ + 1).phi;
-    coef[dpc + i] = 0.5 * kinematics(v, i, nq_).phi;
+  for (const auto& [cell, end] : sides) {
+    cells_[cell]->get_dof_indices(side);
+    for (unsigned int i = 0; i < dpc; ++i) {
+      dofs.push_back(side[i]);
+      coef.push_back(weight * kinematics(cell, i, end == 0.0 ? nq_ : nq_ + 1).phi);
+    }
   }
 }
 
@@ -278,7 +291,7 @@ void RingModel::setup_point_terms() {
   // (-sin a, cos a), n0 = (cos a, sin a)) or (ux, uy) (polygon).
   auto translation = [&](unsigned int v, unsigned int direction, double stiffness, double mass) {
     if (stiffness == 0.0 && mass == 0.0) return;
-    const auto d = end_dofs(v, 0.0);
+    const auto d = vertex_dofs(v);
     PointTerm t{{d[0], d[1]}, {0.0, 0.0}, stiffness, mass};
     if (setup_.geometry == Geometry::curved) {
       const double a = theta0_ + v * h_;
@@ -318,7 +331,7 @@ void RingModel::setup_reduced_system() {
   DynamicSparsityPattern dsp(n_free_);
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
   std::vector<types::global_dof_index> a(dpc), b(dpc);
-  for (unsigned int v = 0; v < n; ++v) {
+  for (unsigned int v = first_joint(); v < n; ++v) {
     cells_[(v + n - 1) % n]->get_dof_indices(a);
     cells_[v]->get_dof_indices(b);
     std::vector<unsigned int> rows;
@@ -415,7 +428,7 @@ void RingModel::assemble() {
   std::vector<double> jump(2 * dpc), mean(2 * dpc);
   std::vector<types::global_dof_index> pair_dofs(2 * dpc), right(dpc);
   FullMatrix<double> k_vertex(2 * dpc, 2 * dpc);
-  for (unsigned int v = 0; v < n; ++v) {
+  for (unsigned int v = first_joint(); v < n; ++v) {
     vertex_terms(v, jump, mean);
     for (unsigned int i = 0; i < 2 * dpc; ++i)
       for (unsigned int j = 0; j < 2 * dpc; ++j)
@@ -471,7 +484,7 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
     scatter(dofs, 0, dpc, lm, mq);
   }
   std::vector<double> jump(2 * dpc), mean(2 * dpc);
-  for (unsigned int v = 0; v < n; ++v) {
+  for (unsigned int v = first_joint(); v < n; ++v) {
     vertex_terms(v, jump, mean);
     cells_[(v + n - 1) % n]->get_dof_indices(dofs);
     cells_[v]->get_dof_indices(right);
@@ -492,6 +505,25 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
 }
 
 ring::ModeShape RingModel::sample(const Vector<double>& full) const {
+  if (open_) {
+    // An arch: the Cartesian displacement at kArchSamples points per cell, equally spaced
+    // from arc.from to arc.to, to ring::sample_arc (its nodes; stations off the arc are 0).
+    constexpr unsigned int kArchSamples = 8;
+    const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells(), m = n * kArchSamples;
+    std::vector<double> ux(m + 1), uy(m + 1);
+    std::vector<types::global_dof_index> dofs(dpc);
+    for (unsigned int k = 0; k <= m; ++k) {
+      const unsigned int cell = std::min(n - 1, k / kArchSamples);
+      const double xi = static_cast<double>(k) / kArchSamples - cell;
+      cells_[cell]->get_dof_indices(dofs);
+      std::array<double, 2> U{0.0, 0.0};
+      for (unsigned int i = 0; i < dpc; ++i) U[component_[i]] += full[dofs[i]] * fe_.shape_value(i, Point<1>(xi));
+      const double a = theta0_ + (cell + xi) * h_;
+      ux[k] = -U[0] * std::sin(a) + U[1] * std::cos(a);
+      uy[k] = U[0] * std::cos(a) + U[1] * std::sin(a);
+    }
+    return ring::sample_arc(*spec_.arc, ux, uy);
+  }
   ring::ModeShape shape;
   shape.radial.resize(ring::kStations);
   shape.tangential.resize(ring::kStations);

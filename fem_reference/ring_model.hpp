@@ -260,6 +260,14 @@ class BeamModel : public LinearModel {
   // mass() (constant: the polar basis at fixed theta does not move) and stiffness() (the
   // tangent of beam_energy at q = 0) are LinearModel's.
   unsigned int cells() const { return setup_.cells(); }
+  /// An arch (ring.arc): the cells run from arc.from to arc.to with no periodic wrap, and
+  /// vertex cells() is the `to` end; a ring: vertex cells() is vertex 0.
+  bool open() const { return open_; }
+  /// Distinct vertices: cells() + 1 on an arch, cells() on the ring.
+  unsigned int vertices() const { return open_ ? setup_.cells() + 1 : setup_.cells(); }
+  /// The first vertex with a cell on either side (the joints first_joint()..cells()-1 carry
+  /// the interior penalty): 1 on an arch (vertex 0 is an end), 0 on the ring.
+  unsigned int first_joint() const { return open_ ? 1 : 0; }
   /// Index of the vertex at `degrees` (which must be a vertex: ring::on_node).
   unsigned int vertex_of(double degrees) const;
   /// Reduced generalized force of the force f (N, Cartesian) acting at vertex k.
@@ -315,8 +323,9 @@ class BeamModel : public LinearModel {
   LoadRule load_rule_;
   std::vector<double> lengths_;
 
-  const double theta0_;  ///< polar angle of vertex 0 (the pin), rad
-  const double h_;       ///< cell size in theta, rad
+  const bool open_;      ///< an arch (ring.arc): no periodic wrap
+  const double theta0_;  ///< polar angle of vertex 0 (the pin; an arch: arc.from), rad
+  const double h_;       ///< cell size in theta (2 pi or the arch's span over the cells), rad
   std::vector<DoFHandler<1>::active_cell_iterator> cells_;  ///< counter-clockwise order
 };
 
@@ -342,7 +351,7 @@ class RingModel : public BeamModel {
   std::size_t bending_point_count() const override;
 
  private:
-  std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const override { return end_dofs(k, 0.0); }
+  std::array<types::global_dof_index, 2> translation_dofs(unsigned int k) const override { return vertex_dofs(k); }
   double rotation_spring(unsigned int v, double kr, const Vector<double>& full, Vector<double>* gradient,
                          SparseMatrix<double>* tangent) const override;
   const FESystem<1>& fe() const override { return fe_; }
@@ -360,11 +369,12 @@ class RingModel : public BeamModel {
   void setup_point_terms();
   void assemble();
 
-  /// The clamp: the rotation phi of both cells that meet at `vertex` is zero (one
-  /// interior DoF of each cell eliminated; the vertex itself is pinned).
+  /// The clamp: the rotation phi of both cells that meet at `vertex` (one at an arch's end)
+  /// is zero (one interior DoF of each cell eliminated; the vertex itself is pinned).
   void constrain_rotation(unsigned int vertex);
   /// Coefficients of the vertex rotation {phi} = (phi_left + phi_right) / 2 on the local
-  /// DoFs [cell vertex-1 | cell vertex] (the DoFs in `dofs`).
+  /// DoFs [cell vertex-1 | cell vertex] (the DoFs in `dofs`); at an arch's end the one
+  /// cell's end rotation on that cell's DoFs.
   void vertex_rotation(unsigned int vertex, std::vector<types::global_dof_index>& dofs, std::vector<double>& coef) const;
 
   /// Kinematics of local shape function i of `cell` at cell quadrature point q
@@ -377,6 +387,14 @@ class RingModel : public BeamModel {
   double ds_dtheta() const;
   /// DoFs at one end (xi = 0 or 1) of a cell, by component.
   std::array<types::global_dof_index, 2> end_dofs(unsigned int cell, double xi) const;
+  /// The u and w DoFs of vertex k (0..vertices()-1; an arch's vertex cells() is the right
+  /// end of the last cell).
+  std::array<types::global_dof_index, 2> vertex_dofs(unsigned int k) const {
+    return k < static_cast<unsigned int>(setup_.cells()) ? end_dofs(k, 0.0) : end_dofs(k - 1, 1.0);
+  }
+  /// The cells that meet at vertex v, each with its end there (1: the left cell's right
+  /// end, 0: the right cell's left end): two at a joint, one at an arch's end.
+  std::vector<std::pair<unsigned int, double>> cells_at(unsigned int v) const;
   void apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const override;
 
   Triangulation<1> triangulation_;

@@ -47,11 +47,13 @@ void write_ring_vtu(const ring::RingSpec& spec, const Setup& setup, double theta
   const bool curved = setup.geometry == Geometry::curved;
   const bool shear = setup.theory == ring::Theory::timoshenko;
   const unsigned int n = setup.cells(), m = setup.subdivisions;
-  const double h = 2.0 * kPi / n;
+  // An arch (ring.arc, curved geometry only: checks.cpp): n + 1 vertices, no closing cell.
+  const bool open = spec.is_arch();
+  const double h = (open ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi) / n;
   const double chord_angle = 2.0 * kPi / setup.elements;
   const double corner = curved ? spec.radius : spec.radius * (chord_angle / 2.0) / std::sin(chord_angle / 2.0);
-  std::vector<Point<2>> vertices(n);
-  for (unsigned int i = 0; i < n; ++i) {
+  std::vector<Point<2>> vertices(open ? n + 1 : n);
+  for (unsigned int i = 0; i < vertices.size(); ++i) {
     const double a0 = theta0 + (i / m) * chord_angle, a1 = a0 + chord_angle, f = double(i % m) / m;
     if (curved)
       vertices[i] = Point<2>(spec.radius * std::cos(theta0 + i * h), spec.radius * std::sin(theta0 + i * h));
@@ -60,7 +62,7 @@ void write_ring_vtu(const ring::RingSpec& spec, const Setup& setup, double theta
                              corner * ((1 - f) * std::sin(a0) + f * std::sin(a1)));
   }
   std::vector<CellData<1>> cells(n);
-  for (unsigned int i = 0; i < n; ++i) cells[i].vertices = {i, (i + 1) % n};
+  for (unsigned int i = 0; i < n; ++i) cells[i].vertices = {i, open ? i + 1 : (i + 1) % n};
   Triangulation<1, 2> plane;
   plane.create_triangulation(vertices, cells, SubCellData());
   const SphericalManifold<1, 2> circle;

@@ -34,11 +34,12 @@ double segment_gap(const Point2& a, const Point2& b, const Point2& c, const Poin
   return std::min(std::min(to_segment(a, c, d), to_segment(b, c, d)), std::min(to_segment(c, a, b), to_segment(d, a, b)));
 }
 
-Approach closest_approach(const std::vector<Point2>& loop, int min_gap, double reach) {
-  const int n = static_cast<int>(loop.size());
+Approach closest_approach(const std::vector<Point2>& loop, int min_gap, double reach, bool open) {
+  const int points = static_cast<int>(loop.size());
+  const int n = open ? points - 1 : points;  // edges
   Approach best{reach, -1, -1};
-  if (n < 3 || 2 * min_gap > n) return best;
-  auto end = [&](int k) -> const Point2& { return loop[(k + 1) % n]; };
+  if (n < 3 || (open ? min_gap >= n : 2 * min_gap > n)) return best;
+  auto end = [&](int k) -> const Point2& { return loop[open ? k + 1 : (k + 1) % n]; };
   double longest = 0.0;
   for (int k = 0; k < n; ++k) longest = std::max(longest, norm(end(k)[0] - loop[k][0], end(k)[1] - loop[k][1]));
   // Two edges closer than `reach` have midpoints closer than longest + reach, so with
@@ -63,7 +64,7 @@ Approach closest_approach(const std::vector<Point2>& loop, int min_gap, double r
         if (found == buckets.end()) continue;
         for (int j : found->second) {
           // Each pair once (i < j), and only edges min_gap apart both ways round.
-          if (j - i < min_gap || n - (j - i) < min_gap) continue;
+          if (j - i < min_gap || (!open && n - (j - i) < min_gap)) continue;
           const double d = segment_gap(loop[i], end(i), loop[j], end(j));
           if (d < best.distance) best = {d, i, j};
         }

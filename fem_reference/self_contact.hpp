@@ -17,11 +17,13 @@ using Point2 = std::array<double, 2>;
 /// least `min_gap` both ways round the loop, among the pairs closer than `reach`;
 /// distance 0 when the edges cross. `first`, `second` = -1 when no pair is closer than
 /// `reach` (then distance = reach). Expected O(edges) (a uniform grid of buckets).
+/// `open` (an arch): `loop` is an open polyline, no edge closes it, and edges are
+/// counted apart along it only.
 struct Approach {
   double distance = 0.0;
   int first = -1, second = -1;
 };
-Approach closest_approach(const std::vector<Point2>& loop, int min_gap, double reach);
+Approach closest_approach(const std::vector<Point2>& loop, int min_gap, double reach, bool open = false);
 
 /// Distance between the segments [a, b] and [c, d]: 0 when they cross. O(1).
 double segment_gap(const Point2& a, const Point2& b, const Point2& c, const Point2& d);

@@ -89,7 +89,7 @@ class BeamEquilibrium : public paths::Equilibrium {
   /// a depth (closest_approach looks no farther), negative once they have touched.
   /// O(2 pi R / depth) (the grid).
   std::optional<double> clearance(const paths::State& x) override {
-    return closest_approach(model_.centreline(full(x.z), per_cell_), min_gap_, depth_).distance - depth_;
+    return closest_approach(model_.centreline(full(x.z), per_cell_), min_gap_, depth_, model_.open()).distance - depth_;
   }
   /// st.path: record ring::PathPoint in out.points (accept()).
   void record_path() {
@@ -97,6 +97,8 @@ class BeamEquilibrium : public paths::Equilibrium {
     for (double a : st_.record) record_vertices_.push_back(model_.vertex_of(a));
     out_.points.push_back(point_at(0.0, model_.expand(q_)));
   }
+  /// The path point of an equilibrium (the located limit point).
+  ring::PathPoint point_of(const paths::State& x) const { return point_at(x.s, full(x.z)); }
   /// The record and the deformed vertices at the end of a path that reached the full load
   /// (or, static.path, at its touching equilibrium).
   void finish(const paths::Vector& z);
@@ -161,7 +163,7 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
   // bent to radius rho: spacing^2 / (8 rho), far below the depth); edges whose nearest
   // ends are at least 2 depths apart along the ring are "not neighbours": bending alone
   // would need a radius below the depth to bring those within a depth of each other.
-  const double cell_arc = 2.0 * kPi * spec.radius / model_.cells();
+  const double cell_arc = (spec.is_arch() ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi) * spec.radius / model_.cells();
   per_cell_ = std::max(2u, static_cast<unsigned int>(std::ceil(cell_arc / (0.5 * depth_))));
   min_gap_ = 1 + static_cast<int>(std::ceil(2.0 * depth_ / (cell_arc / per_cell_)));
   DynamicSparsityPattern dsp(N_ + 1, N_ + 1);
@@ -242,10 +244,12 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
     const double w = static_cast<double>(j) / substeps;
     for (std::size_t k = 0; k < next.size(); ++k)
       for (int c = 0; c < 2; ++c) at[k][c] = last_centreline_[k][c] + w * (next[k][c] - last_centreline_[k][c]);
-    const Approach a = closest_approach(at, min_gap_, depth_);
+    const Approach a = closest_approach(at, min_gap_, depth_, model_.open());
     if (a.first >= 0 && a.distance < depth_) {
       const double pin = spec_.anchor();
-      auto angle = [&](int edge) { return ring::wrap_degrees(pin + (edge + 0.5) * 360.0 / at.size()); };
+      const double edges = model_.open() ? at.size() - 1.0 : at.size();
+      const double span = spec_.is_arch() ? spec_.arc->span() : 360.0;
+      auto angle = [&](int edge) { return ring::wrap_degrees(pin + (edge + 0.5) * span / edges); };
       return paths::Touch{w, "the centreline near " + number(angle(a.first), 4) + " deg and near " +
                                  number(angle(a.second), 4) + " deg (rest positions) " +
                                  (a.distance == 0.0 ? std::string("crosses itself")
@@ -299,14 +303,16 @@ ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) con
     return std::array<double, 2>{X[0] + u[0], X[1] + u[1]};
   };
   double most = 0.0, least = HUGE_VAL;
-  for (unsigned int k = 0; k < (n + 1) / 2; ++k) {
+  // An arch has no opposite vertices: its ovalisation stays 0.
+  for (unsigned int k = 0; k < (model_.open() ? 0 : (n + 1) / 2); ++k) {
     const auto a = at(k), b = at((k + n / 2) % n);
     const double d = std::hypot(a[0] - b[0], a[1] - b[1]);
     most = std::max(most, d);
     least = std::min(least, d);
   }
-  pt.ovalisation = (most - least) / radius_;
-  for (unsigned int k = 0; k < n; k += static_cast<unsigned int>(ring::path_shape_stride(n))) {
+  pt.ovalisation = model_.open() ? 0.0 : (most - least) / radius_;
+  const unsigned int vertices = model_.vertices();
+  for (unsigned int k = 0; k < vertices; k += static_cast<unsigned int>(ring::path_shape_stride(vertices))) {
     const auto p = at(k);
     pt.node_x.push_back(p[0]);
     pt.node_y.push_back(p[1]);
@@ -317,7 +323,7 @@ ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) con
 void BeamEquilibrium::finish(const paths::Vector& z) {
   const Vector<double> q = full(z);
   for (double a : st_.record) out_.record.push_back(model_.vertex_displacement(q, model_.vertex_of(a)));
-  for (unsigned int k = 0; k < model_.cells(); ++k) {
+  for (unsigned int k = 0; k < model_.vertices(); ++k) {
     const auto X = model_.vertex_position(k);
     const auto u = model_.vertex_displacement(q, k);
     out_.node_x.push_back(X[0] + u[0]);
@@ -341,6 +347,7 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   }
   out.trace = paths::follow(beam, {paths::Vector::Zero(beam.size()), 0.0}, options);
   if (out.reached() || (st.path && out.trace.end == paths::Trace::End::contact)) beam.finish(out.trace.state.z);
+  if (st.path && out.trace.limit_state) out.limits.push_back(beam.point_of(*out.trace.limit_state));
   return out;
 }
 

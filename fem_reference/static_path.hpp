@@ -22,6 +22,8 @@ struct StaticSolve {
   /// st.path: every accepted equilibrium from rest as ring::PathPoint (the displacements
   /// at st.record, the ovalisation between opposite vertices), the touching one last.
   std::vector<ring::PathPoint> points;
+  /// st.path: the located limit points (paths::Trace::limit_state) as ring::PathPoint.
+  std::vector<ring::PathPoint> limits;
   /// ring.plastic, at the path's end: the plastic work done (J) and the largest |plastic
   /// curvature| (1/m) of the beam's bending points (plastic_points.hpp); 0 without.
   double dissipated = 0.0;

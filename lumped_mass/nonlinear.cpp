@@ -241,6 +241,8 @@ class ChainStatics : public paths::Equilibrium {
   }
   /// The recorded path, rest first.
   const std::vector<ring::PathPoint>& path() const { return path_; }
+  /// The path point of an equilibrium (the located limit point), at the recorded hinges.
+  ring::PathPoint point_of(const paths::State& x) const { return path_point(x.s, x.z.head(N_)); }
   /// The inertia of the tangent on the constraints' tangent space (stability.hpp): dense
   /// O(n^3) up to n = 200, O(n) frontal LDL^T of the KKT matrix up to n = 10^4, none above.
   std::optional<int> unstable_directions(const paths::State& s) override {
@@ -270,7 +272,7 @@ class ChainStatics : public paths::Equilibrium {
     pt.load_factor = s;
     for (int k : record_) {
       const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
-      pt.displacements.push_back({ring::wrap_degrees(c_.anchor_deg + 360.0 * k / c_.n), u.x(), u.y()});
+      pt.displacements.push_back({ring::wrap_degrees(c_.anchor_deg + c_.step_deg * k), u.x(), u.y()});
     }
     double most = 0.0, least = c_.open ? 0.0 : INFINITY;  // an arch has no opposite hinges: 0
     for (int k = 0; !c_.open && k < (c_.n + 1) / 2; ++k) {
@@ -320,6 +322,7 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   st.x = st.trace.state.z.head(N);
   st.lambda = st.trace.state.z.tail(R) * scale;
   if (record) st.path = eq.path();
+  if (record && st.trace.limit_state) st.limits.push_back(eq.point_of(*st.trace.limit_state));
   st.dissipated = eq.bending().dissipated();
   st.plastic_curvature = eq.bending().plastic_curvature();
   st.work = eq.work();
@@ -349,6 +352,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   if (statics.path) {
     out.path = st.path;
     out.branch_points = path.branch_points;
+    out.limit_points = st.limits;
     out.end = touched ? "contact: " + path.contact : statics.history.empty() ? "full load" : "end of the history";
     out.end_load = path.end_load;  // the touch, or the full load (a history: its last factor)
   }

@@ -151,6 +151,7 @@ struct StaticState {
   Eigen::VectorXd x;               ///< hinge positions (2n, chain.hpp's order), m
   Eigen::VectorXd lambda;          ///< multipliers (links, then supports), N: tangent()'s lambda
   std::vector<ring::PathPoint> path;  ///< the recorded path (only with `record`), rest first
+  std::vector<ring::PathPoint> limits;  ///< the located limit points (only with `record`)
   double dissipated = 0.0;         ///< ring.plastic: the plastic work along the path, J
   double plastic_curvature = 0.0;  ///< the largest |plastic hinge rotation| / l at the end, 1/m
   double work = 0.0;               ///< the loads' work along the path (StaticDetail), J

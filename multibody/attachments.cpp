@@ -12,11 +12,13 @@ namespace {
 
 /// The hinge at `deg`, or std::invalid_argument naming `key`.
 int hinge(const Chain& chain, double deg, const std::string& key) {
-  if (!ring::on_node(deg, chain.anchor_deg(), chain.n()))
+  const int k = chain.hinge_index(deg);
+  if (k < 0)
     throw std::invalid_argument("multibody: " + key + " (= " + std::to_string(deg) +
                                 " deg) is not a hinge of the n = " + std::to_string(chain.n()) +
-                                " chain (valid: anchor + 360 k / n)");
-  return chain.hinge_at(deg);
+                                (chain.arch() ? " arch chain (valid: from + span k / n)"
+                                              : " chain (valid: anchor + 360 k / n)"));
+  return k;
 }
 
 /// K += sum_k (d u_k/dq)^T B[k] (d u_k/dq) at the angles of q, through the suffix sums of B
@@ -56,18 +58,17 @@ void add_pulled_back(const Chain& chain, const Vector& q, const std::vector<Eige
   if (chain.free()) grad.tail<2>() += F[0];
 }
 
-/// The mean rotation of hinge h's two segments (h - 1 cyclic) as a row on q: its value is
-/// (q[h-1] + q[h]) / 2.
+/// The mean rotation of hinge h's segments (attachments.hpp, mean_rotation) as a row on q,
+/// times `scale`, added to v.
 void add_mean_rotation(const Chain& chain, int h, double scale, Vector& v) {
-  v[(h + chain.n() - 1) % chain.n()] += 0.5 * scale;
-  v[h] += 0.5 * scale;
+  for (const auto& [segment, weight] : mean_rotation(chain, h)) v[segment] += weight * scale;
 }
 
 /// A += sum_h w[h] a_h a_h^T with a_h the mean rotation of hinge h (n x n on the segments'
 /// rotations). O(n) nonzeros, O(n^2) with the dense A.
 void add_mean_rotations(const Chain& chain, const std::vector<double>& w, Eigen::Ref<Matrix> A) {
   const int n = chain.n();
-  for (int h = 0; h < n; ++h)
+  for (int h = 0; h < chain.hinges(); ++h)
     if (w[h] > 0.0) {
       Vector a = Vector::Zero(n);
       add_mean_rotation(chain, h, 1.0, a);
@@ -79,9 +80,9 @@ void add_mean_rotations(const Chain& chain, const std::vector<double>& w, Eigen:
 
 Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
     : chain_(chain),
-      stiff_(chain.n(), Eigen::Matrix2d::Zero()),
-      mass_(chain.n(), Eigen::Matrix2d::Zero()),
-      rot_k_(chain.n(), 0.0),
+      stiff_(chain.hinges(), Eigen::Matrix2d::Zero()),
+      mass_(chain.hinges(), Eigen::Matrix2d::Zero()),
+      rot_k_(chain.hinges(), 0.0),
       q0_(chain.q0()) {
   const int n = chain.n();
   if (spec.foundation.any())
@@ -89,7 +90,7 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
       const Eigen::Vector2d r = chain.hinge_rest(k).normalized(), t(-r.y(), r.x());
       stiff_[k] += chain.l() * (spec.foundation.radial * r * r.transpose() + spec.foundation.tangential * t * t.transpose());
     }
-  std::vector<double> kr(n, 0.0);  // rotational springs to the ground, by hinge (a clamp: infinite)
+  std::vector<double> kr(chain.hinges(), 0.0);  // rotational springs to the ground, by hinge (a clamp: infinite)
   for (std::size_t i = 0; i < spec.supports.springs.size(); ++i) {
     const ring::Spring& s = spec.supports.springs[i];
     const int h = hinge(chain, s.angle, "supports.springs[" + std::to_string(i + 1) + "]");
@@ -98,8 +99,8 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
   }
   if (spec.supports.clamp) kr[hinge(chain, *spec.supports.clamp, "supports.clamp")] = HUGE_VAL;
   // psi condensed: 4K and kr in series on the mean rotation, psi = 4K m / (4K + kr) (file comment).
-  for (int h = 0; h < n; ++h)
-    if (kr[h] > 0.0) rot_k_[h] = condensed_rotation_stiffness(kr[h], chain.K());
+  for (int h = 0; h < chain.hinges(); ++h)
+    if (kr[h] > 0.0) rot_k_[h] = condensed_rotation_stiffness(kr[h], chain.K(), is_end(chain, h));
   std::vector<double> inertia(n, 0.0);
   for (std::size_t i = 0; i < spec.masses.size(); ++i) {
     const ring::PointMass& pm = spec.masses[i];
@@ -109,7 +110,13 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
   }
   for (int h = 0; h < n; ++h)
     if (kr[h] > 0.0 || inertia[h] > 0.0) rotations_.push_back({h, kr[h], inertia[h]});
-  for (double p : spec.supports.pins) pins_.push_back(hinge(chain, p, "supports.pins"));
+  if (chain.arch() && kr[n] > 0.0) rotations_.push_back({n, kr[n], 0.0});
+  // The pinned hinges that the chain does not hold itself (Chain::holds: a ring's pin, an
+  // arch's pinned ends) are rows of their own.
+  for (double p : spec.supports.pinned()) {
+    const int h = hinge(chain, p, p == spec.supports.pin ? "supports.pin" : "supports.pins");
+    if (!chain.holds(h)) pins_.push_back(h);
+  }
   has_stiffness_ = spec.foundation.any() || spec.supports.clamp || !spec.supports.springs.empty();
   has_mass_ = !spec.masses.empty();
 }
@@ -117,14 +124,15 @@ Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
 double Attachments::energy(const Vector& q, bool rotations) const {
   const Eigen::Matrix2Xd p = chain_.hinge_positions(q);
   double e = 0.0;
-  for (int k = 0; k < chain_.n(); ++k) {
-    e += 0.5 * (p.col(k) - chain_.hinge_rest(k)).dot(hinge_force(k, p.col(k)));
-    if (rotations && rot_k_[k] > 0.0) {
-      const int j = (k + chain_.n() - 1) % chain_.n();
-      const double dm = 0.5 * (q[j] - q0_[j] + q[k] - q0_[k]);
-      e += 0.5 * rot_k_[k] * dm * dm;
-    }
-  }
+  for (int k = 0; k < chain_.n(); ++k) e += 0.5 * (p.col(k) - chain_.hinge_rest(k)).dot(hinge_force(k, p.col(k)));
+  if (rotations)
+    for (int k = 0; k < chain_.hinges(); ++k)
+      if (rot_k_[k] > 0.0) {
+        const int j = is_end(chain_, k) ? (k == 0 ? 0 : k - 1) : (k + chain_.n() - 1) % chain_.n();
+        const int i = is_end(chain_, k) ? j : k;  // an arch's end: its one segment (mean_rotation)
+        const double dm = 0.5 * (q[j] - q0_[j] + q[i] - q0_[i]);
+        e += 0.5 * rot_k_[k] * dm * dm;
+      }
   return e;
 }
 
@@ -145,11 +153,11 @@ void Attachments::add_stiffness(const Vector& q, Vector& grad, Eigen::Ref<Matrix
 }
 
 void Attachments::add_rotation_forces(const Vector& dq, Vector& grad) const {
-  const int n = chain_.n();
-  for (int h = 0; h < n; ++h)
+  for (int h = 0; h < chain_.hinges(); ++h)
     if (rot_k_[h] > 0.0) {
-      const int j = (h + n - 1) % n;
-      add_mean_rotation(chain_, h, rot_k_[h] * 0.5 * (dq[j] + dq[h]), grad);
+      double dm = 0.0;
+      for (const auto& [segment, weight] : mean_rotation(chain_, h)) dm += weight * dq[segment];
+      add_mean_rotation(chain_, h, rot_k_[h] * dm, grad);
     }
 }
 

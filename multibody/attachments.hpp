@@ -15,6 +15,10 @@
 // - a point mass at hinge h: m on u_h, its inertia J on psi;
 // - a further pin at hinge h: u_h = 0 (2 constraint rows);
 // - a clamp at hinge h: psi = 0.
+// On an arch (chain.hpp) an end hinge has one segment: its half spring 2EI/l joins that
+// segment to psi, so a clamped end is 2EI/l on the end segment's rotation (the segment against
+// the wall over half its length) and kr is in series with 2EI/l (mean_rotation,
+// condensed_rotation_stiffness).
 // The hinge's rotation psi: the spring EI/l at a hinge stands for the bending from one
 // segment's midpoint to the next; split in two halves of 2EI/l, each from a segment to the
 // hinge's own (massless) rotation psi, it is the same spring with psi = the mean m of the two
@@ -42,6 +46,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "multibody/chain.hpp"
@@ -61,9 +66,23 @@ struct HingeRotation {
 };
 
 /// kr and the two half springs 2 EI/l of a hinge (file comment) condensed onto the mean
-/// rotation of its segments: 4K kr / (4K + kr), 4K for a clamp. K = EI/l.
-inline double condensed_rotation_stiffness(double kr, double K) {
-  return std::isinf(kr) ? 4.0 * K : 4.0 * K * kr / (4.0 * K + kr);
+/// rotation of its segments: 4K kr / (4K + kr), 4K for a clamp. K = EI/l. At an arch's end
+/// (`end`) the hinge has one segment and one half spring: 2K kr / (2K + kr), 2K for a clamp
+/// (the end segment against the wall over half its length).
+inline double condensed_rotation_stiffness(double kr, double K, bool end = false) {
+  const double half = end ? 2.0 * K : 4.0 * K;
+  return std::isinf(kr) ? half : half * kr / (half + kr);
+}
+
+/// True for an arch's end hinge (0 or n). O(1).
+inline bool is_end(const Chain& chain, int h) { return chain.arch() && (h == 0 || h == chain.n()); }
+
+/// The "mean rotation" of hinge h as weights on the segments' rotations: (h - 1 cyclic, 1/2)
+/// and (h, 1/2); at an arch's end hinge its one segment's, (0, 1) or (n - 1, 1). O(1).
+inline std::vector<std::pair<int, double>> mean_rotation(const Chain& chain, int h) {
+  const int n = chain.n();
+  if (is_end(chain, h)) return {{h == 0 ? 0 : n - 1, 1.0}};
+  return {{(h + n - 1) % n, 0.5}, {h, 0.5}};
 }
 
 /// The spec's terms on a chain (whose anchor is spec.anchor()). Immutable; every member O(n) memory.

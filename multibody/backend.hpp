@@ -15,6 +15,8 @@
 //   response  100            time per step equal near n = 80-100
 //
 // The energy-momentum response is banded whatever this says (hinge positions only).
+// An arch (ring.arc) is dense for every analysis: "auto" keeps it dense, and checks.hpp
+// refuses a forced "sparse" (the O(n) paths close the chain).
 #pragma once
 
 #include <algorithm>
@@ -72,6 +74,7 @@ constexpr int kPositionModesMaxN = 60000;
 /// statics' rule takes them and the loads: the next overload) and the Timoshenko chain
 /// (linear_model.hpp). O(masses).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, Analysis analysis) {
+  if (options.method == ring::MultibodyOptions::Method::automatic && spec.is_arch()) return Backend::dense;
   if (options.method == ring::MultibodyOptions::Method::automatic &&
       (analysis == Analysis::modes ? !banded_modes_lacks(spec).empty()
                                    : !spec.paper_terms_only() || spec.theory == ring::Theory::timoshenko))
@@ -95,7 +98,8 @@ inline std::string banded_statics_lacks(const ring::RingSpec& spec) {
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, const ring::Loads& loads,
                        Analysis analysis) {
   if (analysis == Analysis::statics) {
-    if (options.method == ring::MultibodyOptions::Method::automatic && !banded_statics_lacks(spec).empty())
+    if (options.method == ring::MultibodyOptions::Method::automatic &&
+        (!banded_statics_lacks(spec).empty() || spec.is_arch()))
       return Backend::dense;
     return backend(options, analysis);
   }
@@ -117,6 +121,7 @@ inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSp
 /// unknowns (c: closure, roller, two rows per further pin) or 4 nev + 60 reaches r, and for
 /// what the O(n) modes lack (banded_modes_lacks). O(masses).
 inline Backend backend(const ring::MultibodyOptions& options, const ring::RingSpec& spec, int count) {
+  if (options.method == ring::MultibodyOptions::Method::automatic && spec.is_arch()) return Backend::dense;
   const ring::Supports& supports = spec.supports;
   const int r = options.n + (supports.free() ? 2 : 0) - (supports.roller ? 3 : 2) -
                 2 * static_cast<int>(supports.pins.size());

@@ -80,22 +80,25 @@ double HingeBending::stored(int k, double e) const {
 double HingeBending::stored_on_angles(const Chain& chain, const Eigen::VectorXd& q) const {
   const Eigen::VectorXd r = chain.hinge_rotations(q);
   double V = 0.0;
-  for (int k = 0; k < n_; ++k) V += stored(k, r[k]);
+  for (int k = chain.first_spring(); k < n_; ++k) V += stored(k, r[k]);
   return V;
 }
 
 Eigen::VectorXd HingeBending::forces_on_angles(const Chain& chain, const Eigen::VectorXd& q) const {
   const Eigen::VectorXd r = chain.hinge_rotations(q);
-  Eigen::VectorXd M(n_), f = Eigen::VectorXd::Zero(chain.dofs());
-  for (int k = 0; k < n_; ++k) M[k] = moment(k, r[k]);
-  for (int k = 0; k < n_; ++k) f[k] = M[k] - M[(k + 1) % n_];
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(chain.dofs());
+  for (int k = chain.first_spring(); k < n_; ++k) {  // spring k joins segments k - 1 and k
+    const double M = moment(k, r[k]);
+    f[k] += M;
+    f[(k + n_ - 1) % n_] -= M;
+  }
   return f;
 }
 
 void HingeBending::add_tangent_on_angles(const Chain& chain, const Eigen::VectorXd& q,
                                          Eigen::Ref<Eigen::MatrixXd> T) const {
   const Eigen::VectorXd r = chain.hinge_rotations(q);
-  for (int k = 0; k < n_; ++k) {  // r_k = theta_k - theta_{k-1}: t_k grad r_k grad r_k^T
+  for (int k = chain.first_spring(); k < n_; ++k) {  // r_k = theta_k - theta_{k-1}: t_k grad r_k grad r_k^T
     const int a = (k + n_ - 1) % n_;
     const double t = tangent(k, r[k]);
     T(k, k) += t;

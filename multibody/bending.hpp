@@ -66,7 +66,8 @@ class HingeBending {
   double dissipated_by(const Eigen::Ref<const Eigen::VectorXd>& strains) const;
 
   /// The hinges' forces on the segment angles q of `chain` (dofs() entries, zero on a free
-  /// ring's base): dV/dq_k = M_k - M_{k+1}, M_k at the hinge rotation r_k = theta_k -
+  /// ring's base; an arch's springs are at hinges 1 .. n-1 only, Chain::first_spring):
+  /// dV/dq_k = M_k - M_{k+1}, M_k at the hinge rotation r_k = theta_k -
   /// theta_{k-1} (Chain::hinge_rotations). O(n states()).
   Eigen::VectorXd forces_on_angles(const Chain& chain, const Eigen::VectorXd& q) const;
   /// Adds their Jacobian, sum_k tangent_k grad r_k grad r_k^T (the cyclic (2, -1, -1) times K

@@ -22,28 +22,42 @@ std::string num(double x) {
 
 Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
              std::optional<double> loaded_angle)
-    : n_(options.n), free_(spec.supports.free()) {
+    : n_(options.n), where_(spec), free_(spec.supports.free()) {
   if (n_ < 4)
     throw std::invalid_argument("multibody: n = " + std::to_string(n_) + " must be >= 4");
   if (!(spec.radius > 0.0) || !(spec.A() > 0.0) || !(spec.I() > 0.0) || !(spec.E > 0.0) ||
       !(spec.rho > 0.0))
     throw std::invalid_argument("multibody: radius, A, I, E and rho must all be > 0");
-  l_ = 2.0 * kPi * spec.radius / n_;
+  arch_ = spec.is_arch();
+  span_ = arch_ ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi;
+  // The chain's length is the centroid line's (file comment): l = R span / n.
+  l_ = span_ * spec.radius / n_;
   m_ = spec.rhoA() * l_;
   jr_ = options.rotary_inertia ? m_ * l_ * l_ / 12.0 : 0.0;
   k_ = hinge_stiffness(spec, l_);
-  rp_ = l_ / (2.0 * std::sin(kPi / n_));
+  rp_ = l_ / (2.0 * std::sin(span_ / (2.0 * n_)));
 
   anchor_deg_ = ring::wrap_degrees(spec.anchor());
   angles_ = ring::node_angles(spec, n_);
-  if (loaded_angle && !ring::on_node(*loaded_angle, anchor_deg_, n_))
+  if (arch_) {
+    if (spec.supports.roller)
+      throw std::invalid_argument("multibody: an arch (ring.arc) takes no supports.roller");
+    // Its ends: hinge 0 held by the coordinates, hinge n by the closure rows (file comment).
+    free_ = true;
+    for (double p : spec.supports.pinned()) {
+      const int h = hinge_index(p);
+      if (h == 0) free_ = false;
+      if (h == n_) end_pinned_ = true;
+    }
+  }
+  if (loaded_angle && hinge_index(*loaded_angle) < 0)
     throw std::invalid_argument("multibody: loaded point at " + num(*loaded_angle) +
                                 " deg is not a hinge of the n = " + std::to_string(n_) +
                                 " chain anchored at " + num(anchor_deg_) +
-                                " deg (valid: anchor + 360 k / n)");
+                                (arch_ ? " deg (valid: from + span k / n)" : " deg (valid: anchor + 360 k / n)"));
   phi0_.resize(n_);
   const double a0 = anchor_deg_ * kPi / 180.0;
-  for (int i = 0; i < n_; ++i) phi0_[i] = a0 + 2.0 * kPi * i / n_ + 0.5 * kPi + kPi / n_;
+  for (int i = 0; i < n_; ++i) phi0_[i] = a0 + span_ * i / n_ + 0.5 * kPi + span_ / (2.0 * n_);
   cos0_ = phi0_.array().cos();
   sin0_ = phi0_.array().sin();
 
@@ -62,12 +76,15 @@ Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
   }
 }
 
+int Chain::hinge_index(double deg) const { return ring::node_index(where_, deg, n_); }
+
 int Chain::hinge_at(double deg) const {
-  if (!ring::on_node(deg, anchor_deg_, n_))
+  const int k = hinge_index(deg);
+  if (k < 0)
     throw std::invalid_argument("multibody: " + num(deg) + " deg is not a hinge (anchor " +
-                                num(anchor_deg_) + " deg, n = " + std::to_string(n_) + ")");
-  const double steps = ring::wrap_degrees(deg - anchor_deg_) * n_ / 360.0;
-  return static_cast<int>(std::lround(steps)) % n_;
+                                num(anchor_deg_) + " deg, n = " + std::to_string(n_) +
+                                (arch_ ? ", arch)" : ")"));
+  return k;
 }
 
 Vector Chain::q0() const {
@@ -77,7 +94,7 @@ Vector Chain::q0() const {
 }
 
 Eigen::Vector2d Chain::hinge_rest(int k) const {
-  const double a = anchor_deg_ * kPi / 180.0 + 2.0 * kPi * k / n_;
+  const double a = anchor_deg_ * kPi / 180.0 + span_ * k / n_;
   return rp_ * e(a);
 }
 
@@ -105,12 +122,13 @@ Eigen::Vector2d Chain::hinge_position(const Vector& q, int k) const {
 
 Eigen::Matrix2Xd Chain::hinge_positions(const Vector& q) const {
   check(q);
-  Eigen::Matrix2Xd p(2, n_);
+  Eigen::Matrix2Xd p(2, hinges());
   Eigen::Vector2d x = base(q);
   for (int k = 0; k < n_; ++k) {
     p.col(k) = x;
     x += l_ * e(q[k]);
   }
+  if (arch_) p.col(n_) = x;
   return p;
 }
 
@@ -244,8 +262,8 @@ double Chain::kinetic_energy(const Vector& q, const Vector& qd) const {
 
 Vector Chain::hinge_rotations(const Vector& q) const {
   check(q);
-  Vector r(n_);
-  for (int k = 0; k < n_; ++k) {
+  Vector r = Vector::Zero(n_);
+  for (int k = first_spring(); k < n_; ++k) {
     const int km = (k + n_ - 1) % n_;
     r[k] = (q[k] - phi0_[k]) - (q[km] - phi0_[km]);
   }
@@ -265,35 +283,43 @@ void Chain::accumulate(const Vector& cos, const Vector& sin, const Eigen::Ref<co
     px -= l_ * dq(j) * sin[j];
     py += l_ * dq(j) * cos[j];
   }
+  if (arch_) {
+    ux[n_] = px;
+    uy[n_] = py;
+  }
+}
+
+ring::ModeShape Chain::sample(const std::vector<double>& ux, const std::vector<double>& uy) const {
+  return arch_ ? ring::sample_arc(*where_.arc, ux, uy) : ring::sample_polygon(anchor_deg_, ux, uy);
 }
 
 Eigen::Matrix2Xd Chain::displacements_at(const Vector& q, const Vector& dq) const {
-  Eigen::Matrix<double, Eigen::Dynamic, 2> u(n_, 2);
+  Eigen::Matrix<double, Eigen::Dynamic, 2> u(hinges(), 2);
   accumulate(q.head(n_).array().cos(), q.head(n_).array().sin(), dq, u.col(0).data(), u.col(1).data());
   return u.transpose();
 }
 
 Eigen::Matrix2Xd Chain::rest_displacements(const Vector& dq) const {
-  Eigen::Matrix<double, Eigen::Dynamic, 2> u(n_, 2);
+  Eigen::Matrix<double, Eigen::Dynamic, 2> u(hinges(), 2);
   accumulate(cos0_, sin0_, dq, u.col(0).data(), u.col(1).data());
   return u.transpose();
 }
 
 ring::ModeShape Chain::shape_at(const Vector& q, const Vector& dq) const {
-  std::vector<double> ux(n_), uy(n_);
+  std::vector<double> ux(hinges()), uy(hinges());
   accumulate(q.head(n_).array().cos(), q.head(n_).array().sin(), dq, ux.data(), uy.data());
-  return ring::sample_polygon(anchor_deg_, ux, uy);
+  return sample(ux, uy);
 }
 
 ring::ModeShape Chain::rest_shape(const Vector& dq) const { return rest_shapes(dq).front(); }
 
 std::vector<ring::ModeShape> Chain::rest_shapes(const Matrix& dq) const {
-  std::vector<double> ux(n_), uy(n_);
+  std::vector<double> ux(hinges()), uy(hinges());
   std::vector<ring::ModeShape> shapes;
   shapes.reserve(static_cast<std::size_t>(dq.cols()));
   for (Eigen::Index k = 0; k < dq.cols(); ++k) {
     accumulate(cos0_, sin0_, dq.col(k), ux.data(), uy.data());
-    shapes.push_back(ring::sample_polygon(anchor_deg_, ux, uy));
+    shapes.push_back(sample(ux, uy));
   }
   return shapes;
 }
@@ -301,16 +327,20 @@ std::vector<ring::ModeShape> Chain::rest_shapes(const Matrix& dq) const {
 Vector Chain::spring_forces(const Vector& q) const {
   const Vector r = hinge_rotations(q);
   Vector f = Vector::Zero(dofs());
-  for (int k = 0; k < n_; ++k) f[k] = k_ * (r[k] - r[(k + 1) % n_]);
+  // f_k = K (r_k - r_{k+1}), cyclic on the ring; an arch has no spring at its ends (r_0 = 0
+  // by hinge_rotations, r_n = 0 here).
+  for (int k = 0; k < n_; ++k) f[k] = k_ * (r[k] - (arch_ && k + 1 == n_ ? 0.0 : r[(k + 1) % n_]));
   return f;
 }
 
 Matrix Chain::stiffness_matrix() const {
   Matrix S = Matrix::Zero(dofs(), dofs());
-  for (int k = 0; k < n_; ++k) {
-    S(k, k) = 2.0 * k_;
-    S(k, (k + 1) % n_) -= k_;
-    S((k + 1) % n_, k) -= k_;
+  for (int k = first_spring(); k < n_; ++k) {  // spring k joins segments a = k - 1 and k
+    const int a = (k + n_ - 1) % n_;
+    S(k, k) += k_;
+    S(a, a) += k_;
+    S(k, a) -= k_;
+    S(a, k) -= k_;
   }
   return S;
 }
@@ -323,6 +353,7 @@ Eigen::Vector2d Chain::closure(const Vector& q) const {
   check(q);
   Eigen::Vector2d g = Eigen::Vector2d::Zero();
   for (int j = 0; j < n_; ++j) g += e(q[j]);
+  if (arch_) return base(q) + l_ * g - hinge_rest(n_);  // the far end's pin (file comment)
   return l_ * g;
 }
 
@@ -330,6 +361,7 @@ Matrix Chain::closure_jacobian(const Vector& q) const {
   check(q);
   Matrix J = Matrix::Zero(2, dofs());
   for (int j = 0; j < n_; ++j) J.col(j) = l_ * eprime(q[j]);
+  if (arch_ && free_) J.rightCols<2>().setIdentity();
   return J;
 }
 
@@ -362,14 +394,14 @@ double Chain::roller_jdot_qdot(const Vector& q, const Vector& qd) const {
 
 Vector Chain::constraints(const Vector& q) const {
   Vector g(constraint_count());
-  g.head<2>() = closure(q);
+  if (constraint_count() >= 2) g.head<2>() = closure(q);
   if (roller_) g[2] = roller(q);
   return g;
 }
 
 Matrix Chain::constraint_jacobian(const Vector& q) const {
   Matrix J(constraint_count(), dofs());
-  J.topRows<2>() = closure_jacobian(q);
+  if (constraint_count() >= 2) J.topRows<2>() = closure_jacobian(q);
   if (roller_) J.row(2) = roller_jacobian(q).transpose();
   return J;
 }
@@ -378,6 +410,19 @@ Chain::ConstraintKinematics Chain::constraint_kinematics(const Vector& q) const 
   check(q);
   const int c = constraint_count();
   ConstraintKinematics k{Vector(c), Matrix::Zero(c, dofs()), Matrix::Zero(c, dofs())};
+  if (arch_) {  // the far end's pin rows, or none (file comment)
+    if (c == 0) return k;
+    Eigen::Vector2d p = base(q);
+    for (int j = 0; j < n_; ++j) {
+      const Eigen::Vector2d u = e(q[j]);
+      p += l_ * u;
+      k.G.col(j) = l_ * eprime(q[j]);
+      k.hess.col(j) = -l_ * u;
+    }
+    k.g = p - hinge_rest(n_);
+    if (free_) k.G.rightCols<2>().setIdentity();
+    return k;
+  }
   // The same operations as closure(), roller() and their Jacobians: g sums the unit
   // vectors e(phi_j) (closure) and the hinge positions (roller); each constraint is a sum
   // of l (a cos phi_j + b sin phi_j), so its second derivative is minus that term.
@@ -402,7 +447,7 @@ Chain::ConstraintKinematics Chain::constraint_kinematics(const Vector& q) const 
 
 Vector Chain::constraint_jdot_qdot(const Vector& q, const Vector& qd) const {
   Vector g(constraint_count());
-  g.head<2>() = closure_jdot_qdot(q, qd);
+  if (constraint_count() >= 2) g.head<2>() = closure_jdot_qdot(q, qd);
   if (roller_) g[2] = roller_jdot_qdot(q, qd);
   return g;
 }

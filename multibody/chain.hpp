@@ -44,6 +44,19 @@
 // nu is the unit normal of that line, nu = (-d_y, d_x), d = (P_r - P_0)/|P_r - P_0|.
 // constraints() stacks them: rows (closure x, closure y[, roller]).
 //
+// ## The arch (ring.arc = [from, to], spec.is_arch())
+// An OPEN chain of n segments from `from` to `to`: hinge k at a_k = from + span k / n, k = 0..n
+// (n + 1 hinges, ring::node_angles). The rule for l is the ring's: the chain's length is the
+// arch's, l = R span / n (span in rad), so the hinges sit on the circle of circumradius
+// Rp = l / (2 sin(span / 2n)) (slightly above R) and the chain converges to the inextensible
+// arch of radius R at order 2 in 1/n. phi0_i = a_i + pi/2 + span / 2n. Hinge 0 is held when
+// the `from` end is pinned (supports.pin or .pins there); otherwise the chain is free()
+// and carries (x_0, y_0). The closure rows become the far end's pin rows: with the `to`
+// end pinned, g(q) = p_n(q) - P_n = base + l sum_j e(phi_j) - P_n (2 rows, with the identity
+// in (x_0, y_0) when free); without, no rows. The hinge springs EI/l sit at the interior
+// hinges 1 .. n-1 only (spring k joins segments k-1 and k); a clamped end's half-hinge 2EI/l
+// to the wall is a term on its segment's rotation (attachments.hpp). No roller.
+//
 // Every member is const and thread-safe; a Chain is an immutable description (O(n) memory).
 #pragma once
 
@@ -77,7 +90,19 @@ class Chain {
   double circumradius() const { return rp_; }    ///< Rp = l / (2 sin(pi/n)), m
   bool free() const { return free_; }            ///< no pin: two translation coordinates
   int dofs() const { return free_ ? n_ + 2 : n_; }
-  int constraint_count() const { return roller_ ? 3 : 2; }
+  int constraint_count() const { return arch_ ? (end_pinned_ ? 2 : 0) : (roller_ ? 3 : 2); }
+  /// An open arch (file comment) rather than the closed ring.
+  bool arch() const { return arch_; }
+  /// The number of hinges: n (ring), n + 1 (arch: hinge n is the `to` end).
+  int hinges() const { return arch_ ? n_ + 1 : n_; }
+  /// The first hinge with a spring EI/l: 0 (ring), 1 (arch: the ends have none). Spring k
+  /// joins segments k - 1 (cyclic) and k.
+  int first_spring() const { return arch_ ? 1 : 0; }
+  /// True when the chain's own coordinates or rows hold hinge k still: hinge 0 when not
+  /// free(), an arch's hinge n when its `to` end is pinned (the closure rows).
+  bool holds(int k) const { return (k == 0 && !free_) || (arch_ && k == n_ && end_pinned_); }
+  /// The hinge index at polar angle `deg`, or -1 when no hinge is there. O(1).
+  int hinge_index(double deg) const;
   double anchor_deg() const { return anchor_deg_; }       ///< polar angle of hinge 0
   const std::vector<double>& hinge_angles_deg() const { return angles_; }  ///< rest angles
   /// Hinge index at polar angle `deg` (rest configuration); throws std::invalid_argument
@@ -99,7 +124,7 @@ class Chain {
   /// Position of hinge k, 0 <= k <= n (k = n is the chain's far end, equal to hinge 0
   /// when closed). O(k).
   Eigen::Vector2d hinge_position(const Vector& q, int k) const;
-  /// All hinge positions, column k = hinge k, k = 0..n-1. O(n).
+  /// All hinge positions, column k = hinge k, k = 0..hinges()-1. O(n).
   Eigen::Matrix2Xd hinge_positions(const Vector& q) const;
   /// All segment midpoints, column i = segment i. O(n).
   Eigen::Matrix2Xd midpoints(const Vector& q) const;
@@ -134,7 +159,8 @@ class Chain {
   double kinetic_energy(const Vector& q, const Vector& qd) const;
 
   // ---- springs ----
-  /// Relative rotation of spring k (hinge k): theta_k - theta_{k-1}, cyclic. O(n).
+  /// Relative rotation of spring k (hinge k): theta_k - theta_{k-1}, cyclic (n entries; an
+  /// arch's entry 0 is 0: its ends have no spring). O(n).
   Vector hinge_rotations(const Vector& q) const;
   /// Spring energy K/2 sum_k (theta_k - theta_{k-1})^2, J. O(n).
   double spring_energy(const Vector& q) const;
@@ -150,7 +176,7 @@ class Chain {
   Vector point_load_forces(const Vector& q, int k, const Eigen::Vector2d& F) const;
 
   // ---- constraints ----
-  /// Closure gap l sum_j e(phi_j), m. O(n).
+  /// Closure gap l sum_j e(phi_j), m (an arch: the far end's gap p_n - P_n). O(n).
   Eigen::Vector2d closure(const Vector& q) const;
   /// Its Jacobian (2 x dofs): column j = l (-sin phi_j, cos phi_j); zero for x_0, y_0. O(n).
   Matrix closure_jacobian(const Vector& q) const;
@@ -179,11 +205,16 @@ class Chain {
   void check(const Vector& q) const;
   Eigen::Vector2d base(const Vector& q) const;  ///< position of hinge 0
   /// dp_k = dp_0 + l sum_{j<k} (-sin_j, cos_j) dq_j for the tangents of some state, into
-  /// ux[k], uy[k] (n entries each).
+  /// ux[k], uy[k] (hinges() entries each).
   void accumulate(const Vector& cos, const Vector& sin, const Eigen::Ref<const Vector>& dq, double* ux,
                   double* uy) const;
+  /// The hinge displacements sampled at the common stations: sample_polygon, or sample_arc.
+  ring::ModeShape sample(const std::vector<double>& ux, const std::vector<double>& uy) const;
 
   int n_;
+  ring::RingSpec where_;  ///< the spec's geometry and supports, for ring::node_index
+  bool arch_ = false, end_pinned_ = false;
+  double span_ = 0.0;  ///< rad: 2 pi for the ring
   double l_, m_, jr_, k_, rp_;
   bool free_;
   double anchor_deg_;

@@ -12,8 +12,67 @@
 namespace multibody {
 using detail::has_point_inertia;
 
+namespace {
+
+/// What the chain takes of an arch (chain.hpp: the open chain, dense angle paths): its ends
+/// pinned, clamped or free, further pins, point loads. The rest is refused by key, naming
+/// ring.arc. `who` names the analysis; `plastic`: whether it refuses ring.plastic, ignores it
+/// (the linear modes are elastic, as the ring's) or takes it (the statics: the interior hinges'
+/// law, bending.hpp; a clamped end's half-hinge is elastic, so not with a clamp). O(supports + masses).
+/// What an analysis does with ring.plastic on an arch.
+enum class PlasticUse { refused, ignored, taken };
+
+void check_arch(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const std::string& who,
+                PlasticUse plastic) {
+  if (!spec.is_arch()) return;
+  auto refuse = [&](const std::string& key, const std::string& why) {
+    throw std::invalid_argument(who + " on an arch (ring.arc) does not take " + key + " yet: " + why);
+  };
+  if (options.method == ring::MultibodyOptions::Method::sparse)
+    refuse("multibody.method = \"sparse\"", "the O(n) paths close the chain; set multibody.method = \"dense\" or \"auto\"");
+  if (options.dependent == ring::MultibodyOptions::Dependent::paper)
+    refuse("multibody.dependent = \"paper\"", "its dependent angles are the closed ring's; use \"robust\"");
+  if (spec.theory == ring::Theory::timoshenko)
+    refuse("ring.theory = \"timoshenko\" (or multibody.theory)", "the shear chain is the closed ring's; use \"euler-bernoulli\"");
+  if (spec.supports.roller) refuse("supports.roller", "pin or clamp its ends (supports.pin, supports.pins, supports.clamp)");
+  if (!spec.supports.springs.empty()) refuse("supports.springs", "pin or clamp its ends");
+  if (!spec.masses.empty()) refuse("masses", "remove the point masses");
+  if (spec.foundation.any()) refuse("foundation", "remove the foundation");
+  if (spec.plastic && plastic == PlasticUse::refused) refuse("ring.plastic", "remove ring.plastic");
+  // The statics take the law at the interior hinges; a clamped end's half-hinge is elastic.
+  if (plastic == PlasticUse::taken && spec.plastic && spec.supports.clamp)
+    refuse("ring.plastic with supports.clamp", "a clamped end's half-hinge to the wall has no plastic law (attachments.hpp); "
+                                              "pin the ends or remove ring.plastic");
+}
+
+/// True when both ends of the arch are pinned (supports.pin or .pins at `from` and `to`).
+bool ends_pinned(const ring::RingSpec& spec) {
+  bool from = false, to = false;
+  for (double p : spec.supports.pinned()) {
+    const double at = spec.arc->offset(p);
+    from = from || at < 1e-9;
+    to = to || std::abs(at - spec.arc->span()) < 1e-9;
+  }
+  return from && to;
+}
+
+/// The loads of a static analysis on an arch: point loads, and uniform pressure of any kind
+/// with both ends pinned (the follower pressure's potential p A closes the polygon through
+/// its ends, loading.hpp; constant there). Gravity is refused by key.
+void check_arch_loads(const ring::RingSpec& spec, const ring::Loads& loads, const std::string& section) {
+  if (!spec.is_arch()) return;
+  if (loads.pressure.any() && !ends_pinned(spec))
+    throw std::invalid_argument("the multibody statics on an arch (ring.arc) takes " + section +
+                                ".pressure with both ends pinned only (supports.pin and supports.pins at the ends)");
+  if (loads.has_gravity())
+    throw std::invalid_argument("the multibody statics on an arch (ring.arc) does not take " + section +
+                                ".gravity yet: use point loads or pressure");
+}
+
+}  // namespace
+
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
-  ring::refuse_arch(spec, "the multibody linear modes");
+  check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
   // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
   if (sparse)
@@ -49,7 +108,8 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
-  ring::refuse_arch(spec, "the multibody statics");
+  check_arch(spec, options, "the multibody statics", PlasticUse::taken);
+  check_arch_loads(spec, statics.loads, "static");
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
   // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
   if (backend(options, spec, statics) == Backend::banded) {
@@ -74,6 +134,10 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   // ring until it hangs along its line of action. The tangent stays regular only away from
   // that, so refuse rather than guess.
   const int rigid = ring::static_rigid_modes(spec, statics.loads);
+  if (spec.is_arch() && rigid > 0)
+    throw std::invalid_argument("multibody::solve_static: the arch (ring.arc) is free to move rigidly (" +
+                                std::to_string(rigid) + " rigid motion(s)): pin or clamp its ends (supports.pin, "
+                                "supports.pins, supports.clamp)");
   if (!spec.supports.pin && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
   if (rigid > 0)
@@ -84,6 +148,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics) {
+  ring::refuse_arch(spec, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
   if (spec.plastic)
@@ -100,7 +165,22 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
-  ring::refuse_arch(spec, "the multibody response");
+  check_arch(spec, options, "the multibody response", PlasticUse::refused);
+  if (spec.is_arch()) {
+    // The dense angle integrators (newmark, generalized-alpha) on the open chain whose far end
+    // is pinned (its rows: the partitioning's dependent angles), under point loads.
+    auto refuse = [&](const std::string& key, const std::string& why) {
+      throw std::invalid_argument("the multibody response on an arch (ring.arc) does not take " + key + " yet: " + why);
+    };
+    if (response.integrator == ring::ResponseOptions::Integrator::energy_momentum)
+      refuse("response.integrator = \"energy-momentum\"", "its hinge positions close the chain; use \"newmark\" or "
+                                                           "\"generalized-alpha\"");
+    const double to = spec.arc->to;
+    bool to_pinned = false;
+    for (double p : spec.supports.pinned()) to_pinned = to_pinned || std::abs(spec.arc->offset(p) - spec.arc->span()) < 1e-9;
+    if (!to_pinned) refuse("a free `to` end", "pin the end at " + std::to_string(to) + " deg (supports.pins)");
+    if (!response.loads.points_only()) refuse("response.pressure or response.gravity", "use point loads");
+  }
   // ring.plastic: newmark and generalized-alpha on either angle backend assemble the hinges'
   // law (bending.hpp, newton_backend.hpp), energy-momentum (hinge positions) the discrete
   // gradient of its incremental potential (energy_momentum.hpp); each commits it at accepted

@@ -2,6 +2,13 @@
 // std::invalid_argument naming the key and the valid range. Each analysis calls its check
 // first, and the driver calls them for every analysis a scene asks of the chain before
 // any solver runs, so a refusal never comes after another solver's work. O(1).
+//
+// An arch (ring.arc; chain.hpp, "The arch") runs on the dense angle paths: the linear modes,
+// the statics under point loads (static.path included) and the newmark / generalized-alpha
+// response under point loads with its `to` end pinned. Refused by key, each message naming
+// ring.arc: multibody.method = "sparse", dependent = "paper", the Timoshenko chain, a roller,
+// springs, masses, the foundation, ring.plastic, pressure and gravity, the energy-momentum
+// integrator, a free `to` end in the response, buckling and the modes under load.
 #pragma once
 
 #include "ring/analysis.hpp"

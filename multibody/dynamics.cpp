@@ -112,7 +112,8 @@ class ChainStepper : public paths::Stepper {
     out.dissipated = dissipated_;
     if (bending_) out.plastic = bending_->dissipated();
     // Values only: the kinematics (G, its Hessian) are the step's business, not the sample's.
-    out.constraint_residual = detail::constraint_values(chain_, p_.terms, q).cwiseAbs().maxCoeff();
+    const Vector g = detail::constraint_values(chain_, p_.terms, q);
+    out.constraint_residual = g.size() ? g.cwiseAbs().maxCoeff() : 0.0;
     return out;
   }
 
@@ -123,7 +124,8 @@ class ChainStepper : public paths::Stepper {
   }
 
   std::optional<std::string> contact() const override {
-    const auto cp = detail::closest_contact(chain_.hinge_positions(coordinates(s_.q)), chain_.l(), gap_, depth_);
+    const auto cp = detail::closest_contact(chain_.hinge_positions(coordinates(s_.q)), chain_.l(), gap_, depth_,
+                                            !chain_.arch());
     if (cp.distance >= depth_) return std::nullopt;
     std::ostringstream m;
     m << detail::describe_contact(cp) << " (section depth " << depth_ << " m)";

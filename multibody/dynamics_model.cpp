@@ -86,10 +86,9 @@ void load_forces(const Chain& chain, const DeadLoad& load, const Vector& q, Vect
   // Phi_j = l e'(phi_j) . F for j < hinge, so dPhi_j/dphi_j = -l e(phi_j) . F, and the
   // segment direction e(phi_j) is (p_{j+1} - p_j) / l.
   const Eigen::Matrix2Xd p = chain.hinge_positions(q);
-  const int n = chain.n();
   dphi_diag = Vector::Zero(chain.dofs());
-  for (int j = 0; j < load.hinge; ++j) {
-    const Eigen::Vector2d d = p.col((j + 1) % n) - p.col(j);
+  for (int j = 0; j < load.hinge; ++j) {  // an arch's far end is column n
+    const Eigen::Vector2d d = p.col((j + 1) % p.cols()) - p.col(j);
     dphi_diag[j] = -d.dot(load.force);
   }
 }
@@ -108,24 +107,24 @@ double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
   return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
 }
 
-ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double reach) {
-  const int n = static_cast<int>(p.cols());
+ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& p, int min_gap, double reach, bool closed) {
+  const int m = static_cast<int>(p.cols()), n = closed ? m : m - 1;  // hinges, segments
   ClosestPair best{reach, -1, -1};
   // Bounding boxes of the segments i = (p_i, p_{i+1}).
   std::vector<Eigen::Vector2d> lo(n), hi(n);
   for (int i = 0; i < n; ++i) {
-    const auto a = p.col(i), b = p.col((i + 1) % n);
+    const auto a = p.col(i), b = p.col((i + 1) % m);
     lo[i] = a.cwiseMin(b);
     hi[i] = a.cwiseMax(b);
   }
   for (int i = 0; i < n; ++i) {
     for (int j = i + min_gap; j < n; ++j) {
-      if (n - (j - i) < min_gap) break;  // cyclic gap
+      if (closed && n - (j - i) < min_gap) break;  // cyclic gap
       if (lo[j].x() > hi[i].x() + reach || lo[i].x() > hi[j].x() + reach ||
           lo[j].y() > hi[i].y() + reach || lo[i].y() > hi[j].y() + reach)
         continue;
-      const Eigen::Vector2d a = p.col(i), b = p.col((i + 1) % n);
-      const double dist = segment_distance(a, b, p.col(j), p.col((j + 1) % n));
+      const Eigen::Vector2d a = p.col(i), b = p.col((i + 1) % m);
+      const double dist = segment_distance(a, b, p.col(j), p.col((j + 1) % m));
       if (dist < best.distance) best = {dist, i, j};
     }
   }

@@ -88,7 +88,8 @@ double segment_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
                         const Eigen::Vector2d& d);
 
 std::string describe_contact(const ClosestPair& cp);
-ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& hinges, int min_gap, double reach);
+/// `closed` = false: an arch's open chain, hinges.cols() - 1 segments and no cyclic gap.
+ClosestPair closest_nonadjacent(const Eigen::Matrix2Xd& hinges, int min_gap, double reach, bool closed = true);
 
 /// Smallest index gap checked for self-contact so that the undeformed chain is clear of
 /// `depth`: 2 + floor(2 depth / l).

@@ -224,7 +224,8 @@ bool SparseSaddle::solve_columns(const Matrix& B, const Matrix& D, Matrix& X, Ma
   return X.allFinite() && Y.allFinite();
 }
 
-ClosestPair closest_contact(const Eigen::Matrix2Xd& hinges, double l, int min_gap, double reach) {
+ClosestPair closest_contact(const Eigen::Matrix2Xd& hinges, double l, int min_gap, double reach, bool closed) {
+  if (!closed) return closest_nonadjacent(hinges, min_gap, reach, false);
   return hinges.cols() >= kGridContact ? closest_nonadjacent_grid(hinges, l, min_gap, reach)
                                        : closest_nonadjacent(hinges, min_gap, reach);
 }

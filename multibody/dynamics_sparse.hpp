@@ -106,8 +106,9 @@ ClosestPair closest_nonadjacent_grid(const Eigen::Matrix2Xd& hinges, double l, i
 
 /// The contact test of every response step: closest_nonadjacent below kGridContact
 /// segments (the O(n^2) box loop is as fast there, both well under a step's cost), the
-/// grid above (same pairs, same result, O(n)).
+/// grid above (same pairs, same result, O(n)). `closed` = false: an arch's open chain
+/// (closest_nonadjacent's box loop at every n: the arch runs on the dense paths only).
 constexpr int kGridContact = 128;
-ClosestPair closest_contact(const Eigen::Matrix2Xd& hinges, double l, int min_gap, double reach);
+ClosestPair closest_contact(const Eigen::Matrix2Xd& hinges, double l, int min_gap, double reach, bool closed = true);
 
 }  // namespace multibody::detail

@@ -46,6 +46,7 @@ int linear_unknowns(const Chain& chain, const detail::LinearTerms* terms, const 
 }
 
 double j2_condition(const Matrix& J, int n) {
+  if (J.rows() < 2) return 1.0;  // an arch without the far end's rows: no J_2
   Eigen::JacobiSVD<Eigen::Matrix2d> svd(J.block(0, n - 2, 2, 2).eval());
   const auto sv = svd.singularValues();
   return sv[0] / sv[1];
@@ -89,15 +90,15 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
     add(K, j, i, -c);
   };
   const double Kh = chain.K();
-  for (int h = 0; h < n; ++h) spring((h + n - 1) % n, h, Kh);  // the hinge springs
+  for (int h = chain.first_spring(); h < n; ++h) spring((h + n - 1) % n, h, Kh);  // the hinge springs
   if (terms) {
     for (const detail::HingeRotation& t : terms->rotations) {
       if (t.moves()) continue;
-      // Condensed onto the mean rotation (attachments.hpp): c m^2 / 2, m = (r_a + r_b) / 2.
-      const int a = (t.hinge + n - 1) % n, b = t.hinge;
-      const double c = detail::condensed_rotation_stiffness(t.kr, Kh) / 4.0;
-      for (int i : {a, b})
-        for (int j : {a, b}) add(K, i, j, c);
+      // Condensed onto the mean rotation (attachments.hpp): c m^2 / 2, m = (r_a + r_b) / 2
+      // (an arch's end: its one segment's rotation).
+      const double c = detail::condensed_rotation_stiffness(t.kr, Kh, detail::is_end(chain, t.hinge));
+      for (const auto& [i, wi] : detail::mean_rotation(chain, t.hinge))
+        for (const auto& [j, wj] : detail::mean_rotation(chain, t.hinge)) add(K, i, j, c * wi * wj);
     }
     // The moving hinges: the spring split in two halves 2K to the hinge's rotation chi, which
     // carries the inertia and kr.

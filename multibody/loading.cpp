@@ -22,13 +22,14 @@ Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loa
     : chain_(chain), f_(Eigen::Matrix2Xd::Zero(2, chain.n() + 1)), rest_(2, chain.n() + 1) {
   const int n = chain.n();
   const double l = chain.l();
-  for (int k = 0; k <= n; ++k) rest_.col(k) = chain.hinge_rest(k % n);
+  for (int k = 0; k <= n; ++k) rest_.col(k) = chain.hinge_rest(chain.arch() ? k : k % n);
   auto hinge = [&](double deg, const std::string& key) {
-    if (!ring::on_node(deg, chain.anchor_deg(), n))
+    const int k = chain.hinge_index(deg);
+    if (k < 0)
       throw std::invalid_argument("multibody: " + key + " (=" + std::to_string(deg) + " deg) is not a hinge of the " +
                                   std::to_string(n) + "-segment chain anchored at " +
                                   std::to_string(chain.anchor_deg()) + " deg");
-    return chain.hinge_at(deg);
+    return k;
   };
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const auto& p = loads.points[i];
@@ -55,7 +56,14 @@ Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loa
         f_.col(j + 1) += 0.5 * p * l * inward;
       }
       break;
-    case ring::Pressure::Kind::follower: follower_ = p; break;
+    case ring::Pressure::Kind::follower:
+      // Its potential p A: on an arch the polygon closes through its ends (the pair (n, 0)),
+      // whose side is then constant only with both ends held (the checks ask for pins there).
+      if (chain.arch() && p != 0.0 && !(chain.holds(0) && chain.holds(n)))
+        throw std::invalid_argument("multibody: " + section + ".pressure of kind \"follower\" on an arch (ring.arc) "
+                                    "needs both ends pinned");
+      follower_ = p;
+      break;
     case ring::Pressure::Kind::central: central_ = p; break;
   }
   rest_shape_ = shape_potential(rest_);

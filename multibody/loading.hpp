@@ -20,7 +20,9 @@
 //   the force -p dA/dp_k is p times the inward normal of the deformed neighbours;
 // - central pressure: Pi = p sum_j int_0^l |x(s)| ds, x(s) on the deformed segment, by
 //   4-point Gauss-Legendre (error O((l/R)^8) against the segment's O((l/R)^2)).
-// Hinge p_n is the chain's far end (p_0 when the closure holds).
+// Hinge p_n is the chain's far end (p_0 when the closure holds). On an arch the polygon
+// p_0 .. p_n closes through its ends: with both ends pinned that side is constant, and p A is
+// the follower pressure's potential exactly (refused otherwise).
 //
 // ## Pull-back to the angles (as attachments.hpp)
 // p_k = p_0 + l sum_{j<k} e(phi_j), so with c_j = l e'(phi_j), hinge gradients g_k and hinge

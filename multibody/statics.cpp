@@ -36,24 +36,30 @@ ring::PathPoint StaticEquilibrium::path_point(double s, const Eigen::Matrix2Xd& 
     pt.displacements.push_back({chain_.hinge_angles_deg()[k], u.x(), u.y()});
   }
   const int n = chain_.n();
-  double most = 0.0, least = HUGE_VAL;
-  for (int k = 0; k < (n + 1) / 2; ++k) {
-    const double d = (p.col(k) - p.col((k + n / 2) % n)).norm();
-    most = std::max(most, d);
-    least = std::min(least, d);
+  if (!chain_.arch()) {  // the spread of the diameters: a closed ring's measure
+    double most = 0.0, least = HUGE_VAL;
+    for (int k = 0; k < (n + 1) / 2; ++k) {
+      const double d = (p.col(k) - p.col((k + n / 2) % n)).norm();
+      most = std::max(most, d);
+      least = std::min(least, d);
+    }
+    pt.ovalisation = (most - least) / chain_.circumradius();
   }
-  pt.ovalisation = (most - least) / chain_.circumradius();
   pt.dissipated = dissipated();
   pt.plastic_curvature = plastic_curvature();
   for (int k = 0; k < n; k += ring::path_shape_stride(n)) {
     pt.node_x.push_back(p(0, k));
     pt.node_y.push_back(p(1, k));
   }
+  if (chain_.arch()) {  // the far end closes the drawn arch
+    pt.node_x.push_back(p(0, n));
+    pt.node_y.push_back(p(1, n));
+  }
   return pt;
 }
 
 std::optional<double> StaticEquilibrium::clearance(const paths::State& x) {
-  return closest_contact(hinges(x.z), chain_.l(), gap_, depth_).distance - depth_;
+  return closest_contact(hinges(x.z), chain_.l(), gap_, depth_, !chain_.arch()).distance - depth_;
 }
 
 std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State& from, const paths::State& to) {
@@ -62,7 +68,7 @@ std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State& from, 
   // The step converged: its trial plastic states become the committed ones (ring/plastic.hpp).
   bending_.commit(hinge_strains(to.z));
   if (recording_) path_.push_back(path_point(to.s, p));
-  const ClosestPair cp = closest_contact(p, chain_.l(), gap_, depth_);
+  const ClosestPair cp = closest_contact(p, chain_.l(), gap_, depth_, !chain_.arch());
   if (cp.distance >= depth_) return std::nullopt;
   std::ostringstream m;
   m << describe_contact(cp) << " (section depth " << depth_ << " m); the chain model does not include contact";
@@ -306,6 +312,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   if (statics.path) {
     res.path = eq->path();
     res.branch_points = path.branch_points;
+    if (path.limit_state) res.limit_points.push_back(eq->path_point(path.limit, eq->hinges(path.limit_state->z)));
     res.end = touched ? "contact: " + path.contact : statics.history.empty() ? "full load" : "end of the history";
     res.end_load = path.end_load;  // the touch, or the full load (a history: its last factor)
   }

@@ -372,11 +372,12 @@ class Follower {
 
   /// Narrows the first maximum of s between `from` (rate > 0) and the step of length
   /// `len` whose end has rate `rate_end` <= 0; returns the largest s met.
-  double locate_limit(const State& from, const Tangent& tangent, double len, double s_end, double rate_end) {
+  double locate_limit(const State& from, const Tangent& tangent, double len, const State& end, double rate_end) {
     // Regula falsi with the Illinois modification on the rate ds/dtau as a function of
     // the arc length tau from `from`: each evaluation is an arc step of length tau and
     // the tangent there. ds/dtau is smooth and crosses zero linearly at a limit point.
-    double lo = 0.0, hi = len, r_lo = tangent.rate, r_hi = rate_end, best = std::max(from.s, s_end);
+    double lo = 0.0, hi = len, r_lo = tangent.rate, r_hi = rate_end, best = std::max(from.s, end.s);
+    out_.limit_state = from.s >= end.s ? from : end;
     int side = 0;
     State x;
     Tangent tx;
@@ -394,7 +395,10 @@ class Follower {
         tau = 0.5 * (lo + hi);
         if (!evaluate(tau)) break;
       }
-      best = std::max(best, x.s);
+      if (x.s > best) {
+        best = x.s;
+        out_.limit_state = x;
+      }
       if (tx.rate > 0.0) {
         lo = tau;
         r_lo = tx.rate;
@@ -459,7 +463,7 @@ class Follower {
       };
       if (!accept(state, next, limit_between(tangent.rate, ahead.rate), &along)) return;
       if (std::isnan(out_.limit) && tangent.rate > 0.0 && ahead.rate <= 0.0)
-        out_.limit = locate_limit(state, tangent, len, next.s, ahead.rate);
+        out_.limit = locate_limit(state, tangent, len, next, ahead.rate);
       // The next length: towards kTargetIterations corrector iterations (at most doubled
       // or halved), shorter (down to half) after a load change above one increment, and
       // a chord within the model's basin.
@@ -542,7 +546,10 @@ Trace follow_history(Equilibrium& eq, const State& rest, const Continuation& opt
     all.arc_steps += t.arc_steps;
     all.iterations += t.iterations;
     all.continuation = all.continuation || t.continuation;
-    if (std::isnan(all.limit) && !std::isnan(t.limit)) all.limit = leg.load(t.limit);
+    if (std::isnan(all.limit) && !std::isnan(t.limit)) {
+      all.limit = leg.load(t.limit);
+      if (t.limit_state) all.limit_state = leg.model(*t.limit_state);
+    }
     all.stepping_stopped = leg.load(t.stepping_stopped);
     all.end_load = leg.load(t.end_load);
     all.contact = t.contact;

@@ -163,6 +163,8 @@ struct Trace {
   int iterations = 0;  ///< Newton iterations of accepted steps and of the limit's location
   bool continuation = false;  ///< the arc-length continuation ran
   double limit = std::numeric_limits<double>::quiet_NaN();  ///< first maximum of s, if met
+  /// The equilibrium at `limit` (located to 1e-6 of its arc step), if met; its s is `limit`.
+  std::optional<State> limit_state;
   double stepping_stopped = 0.0;  ///< load factor where load stepping handed over
   double end_load = 0.0;          ///< where the path ended (contact: the load factor of the touch)
   std::string contact;            ///< Touch::where

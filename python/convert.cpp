@@ -178,13 +178,15 @@ Static to_python(const ring::StaticResult& r) {
       structured(angle.size(), {{{"angle", &angle}, {"ux", &ux}, {"uy", &uy}}, {}, {"angle", "ux", "uy"}});
   o.nodes = pairs(r.node_x, r.node_y);
   o.path = py::none();
-  if (!r.path.empty()) {
-    // The columns of static_path_<solver>.csv, in its order.
-    const std::size_t n = r.path.size(), points = r.path.front().displacements.size();
+  o.limit_points = py::none();
+  // The columns of static_path_<solver>.csv, in its order (`whole`), or the load factor and
+  // the recorded points' displacements alone.
+  auto table = [](const std::vector<ring::PathPoint>& path, bool whole) {
+    const std::size_t n = path.size(), points = path.front().displacements.size();
     std::vector<double> load(n), oval(n), dissipated(n), plastic(n);
     std::vector<std::vector<double>> ux(points, std::vector<double>(n)), uy = ux;
     for (std::size_t k = 0; k < n; ++k) {
-      const ring::PathPoint& p = r.path[k];
+      const ring::PathPoint& p = path[k];
       load[k] = p.load_factor;
       oval[k] = p.ovalisation;
       dissipated[k] = p.dissipated;
@@ -195,21 +197,29 @@ Static to_python(const ring::StaticResult& r) {
       }
     }
     Columns c;
-    c.order = {"load_factor", "ovalisation"};
-    c.real = {{"load_factor", &load}, {"ovalisation", &oval}};
+    c.order = {"load_factor"};
+    c.real = {{"load_factor", &load}};
+    if (whole) {
+      c.order.push_back("ovalisation");
+      c.real.push_back({"ovalisation", &oval});
+    }
     for (std::size_t i = 0; i < points; ++i) {
-      const std::string d = degrees(r.path.front().displacements[i].angle);
+      const std::string d = degrees(path.front().displacements[i].angle);
       c.order.push_back("ux_" + d);
       c.real.push_back({"ux_" + d, &ux[i]});
       c.order.push_back("uy_" + d);
       c.real.push_back({"uy_" + d, &uy[i]});
     }
-    c.order.push_back("dissipated");
-    c.real.push_back({"dissipated", &dissipated});
-    c.order.push_back("plastic_curvature");
-    c.real.push_back({"plastic_curvature", &plastic});
-    o.path = structured(n, c);
-  }
+    if (whole) {
+      c.order.push_back("dissipated");
+      c.real.push_back({"dissipated", &dissipated});
+      c.order.push_back("plastic_curvature");
+      c.real.push_back({"plastic_curvature", &plastic});
+    }
+    return structured(n, c);
+  };
+  if (!r.path.empty()) o.path = table(r.path, true);
+  if (!r.limit_points.empty()) o.limit_points = table(r.limit_points, false);
   o.branch_points = vector(r.branch_points);
   o.end = r.end;
   o.end_load = r.end_load;

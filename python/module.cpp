@@ -353,6 +353,10 @@ PYBIND11_MODULE(ringvib, m) {
                     "with the columns of static_path_<solver>.csv: load_factor, ovalisation, ux_<deg>, uy_<deg>\n"
                     "per recorded point (m), dissipated (J), plastic_curvature (1/m). None without a path.")
       .def_readonly("branch_points", &Static::branch_points, "Load factors where the path switched onto a branch.")
+      .def_readonly("limit_points", &Static::limit_points,
+                    "static.path: the located limit points (maxima of the load factor along the path), a\n"
+                    "structured ndarray with load_factor and ux_<deg>, uy_<deg> per recorded point (m). None\n"
+                    "without one.")
       .def_readonly("end", &Static::end, "How the path ended: 'full load' or 'contact: <where>'.")
       .def_readonly("end_load", &Static::end_load, "The load factor where the path ended.")
       .def_readonly("dissipated", &Static::dissipated, "ring.plastic: the plastic work done, J (0 if elastic).")

@@ -124,6 +124,9 @@ struct StaticResult {
   /// touched itself (a result: the equilibrium above is the last one before the touch).
   std::vector<PathPoint> path;
   std::vector<double> branch_points;
+  /// static.path = true: the located limit points (maxima of the load factor along the path,
+  /// paths::Trace::limit_state), each with the recorded points' displacements there.
+  std::vector<PathPoint> limit_points;
   std::string end = "full load";  ///< "full load", "end of the history" or "contact: <where>"
   double end_load = 1.0;          ///< load factor where the path ended
   /// ring.plastic, at the end: as PathPoint's (J, 1/m).

@@ -87,6 +87,11 @@ TEST(Continuation, PassesBothTurnsOfASnapThroughToTheFullLoad) {
   // The limit's bracket is 1e-6 of a step (~0.1): s there within |s''| (1e-7)^2 ~ 1e-13;
   // 1e-10 allows the corrector's 1e-13 tolerance.
   EXPECT_NEAR(t.limit, kLimit, 1e-10);
+  // The equilibrium there: u = 1 - 1/sqrt(3), to the bracket's 1e-6 of an arc step (< 0.5:
+  // the model's basin) in u, where s is flat.
+  ASSERT_TRUE(t.limit_state.has_value());
+  EXPECT_EQ(t.limit_state->s, t.limit);
+  EXPECT_NEAR(t.limit_state->z(0), 1.0 - 1.0 / std::sqrt(3.0), 1e-6);
   EXPECT_DOUBLE_EQ(t.state.s, 1.0);
   EXPECT_NEAR(t.state.z(0), far_root(1.0), 1e-12);  // Newton at s = 1: 1e-13 correction
   // Every accepted point is on the path (the corrector's tolerance, 1e-13 on u).

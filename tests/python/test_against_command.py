@@ -173,6 +173,19 @@ def test_static_path_equals_the_commands_json():
             assert row["ux_" + name] == d["ux"] and row["uy_" + name] == d["uy"]
 
 
+def test_static_limit_points_equal_the_commands_json():
+    # The deep arch's path passes its limit point: the module's limit_points are the JSON's.
+    values = {"multibody.n": 20}
+    s = ringvib.Scene.load(scene_path("deep-arch.toml"), set=values)
+    r = ringvib.static(s, "multibody")
+    j = ringvib_json("static", scene_path("deep-arch.toml"), "--solver", "multibody", "--json", "--set", "multibody.n=20")
+    assert len(r.limit_points) == len(j["limit_points"]) == 1
+    assert r.limit_points.dtype.names == ("load_factor", "ux_90", "uy_90")
+    row, p = r.limit_points[0], j["limit_points"][0]
+    assert row["load_factor"] == p["load_factor"]
+    assert row["ux_90"] == p["displacements"][0]["ux"] and row["uy_90"] == p["displacements"][0]["uy"]
+
+
 def test_bench_equals_the_commands_csv(tmp_path):
     # The same sweep as the command's: the same solvers, sizes and errors (times differ run to
     # run); the progress callback receives the study's lines as str.

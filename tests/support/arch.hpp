@@ -11,13 +11,13 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <unsupported/Eigen/MatrixFunctions>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
 namespace archtest {
@@ -32,8 +32,15 @@ namespace archtest {
 //   N' = -Q - R rhoA omega^2 v,   Q' = N - R rhoA omega^2 w,   M' = R Q - R rhoI omega^2 phi,
 // and the constitutive and kinematic relations
 //   w' = v - R phi,   v' = R N / EA - w,   phi' = R M / EI.
+// Optionally (kGA finite) Timoshenko's shear: phi is then the rotation of the cross-section,
+// the centroid line's tangent turns by (v - w')/R = phi - gamma with the shear strain
+// gamma = Q / kGA (the thin-ring kinematics of ring::closed_form::free_ring_timoshenko), so
+//   w' = v - R phi + R Q / kGA;
+// a clamp holds the cross-section's rotation.
+// Optionally a Winkler foundation (kr radial, kt tangential, N/m per metre, on the displacements
+// of the undeformed point) adds R kt v to N' and R kr w to Q' (the inertia terms' places).
 // In units R = EI = rhoA = 1 (state y = (w/R, v/R, phi, M R/EI, N R^2/EI, Q R^2/EI),
-// Omega^2 = rhoA omega^2 R^4 / EI, e = EI/(EA R^2), j = rhoI/(rhoA R^2)):
+// Omega^2 = rhoA omega^2 R^4 / EI, e = EI/(EA R^2), j = rhoI/(rhoA R^2), g = EI/(kGA R^2)):
 //   y' = A(Omega) y,  A constant along the arch, so y(alpha) = exp(A alpha) y(0).
 // e = 0 is the exact inextensible arch (v' = -w, N a reaction): the system stays regular.
 //
@@ -58,6 +65,7 @@ enum class End { free, pinned, clamped };
 
 /// A circular arch of radius R and opening alpha (radians, 0 < alpha <= 2 pi).
 /// EA = infinity: the inextensible arch. rhoI: rotary inertia per length (0: none).
+/// kGA = infinity: Euler-Bernoulli (no shear strain); finite: Timoshenko's shear.
 struct Arch {
   double R = 1.0;
   double alpha = M_PI;
@@ -65,8 +73,10 @@ struct Arch {
   double EA = std::numeric_limits<double>::infinity();
   double rhoA = 1.0;
   double rhoI = 0.0;
-  End start = End::pinned;  ///< the end at theta = 0 (ring.arc's `from`)
-  End end = End::pinned;    ///< the end at theta = alpha (ring.arc's `to`)
+  double kGA = std::numeric_limits<double>::infinity();
+  double kr = 0.0, kt = 0.0;  ///< Winkler foundation, radial and tangential, N/m per metre (>= 0)
+  End start = End::pinned;    ///< the end at theta = 0 (ring.arc's `from`)
+  End end = End::pinned;      ///< the end at theta = alpha (ring.arc's `to`)
 };
 
 namespace detail {
@@ -93,20 +103,23 @@ inline std::array<int, 3> free_components(End e) {
   return out;
 }
 
-/// A of y' = A y in units R = EI = rhoA = 1, for Omega^2 = W2, e = EI/(EA R^2), j = rhoI/(rhoA R^2).
-inline Mat6 system_matrix(double W2, double e, double j) {
+/// A of y' = A y in units R = EI = rhoA = 1, for Omega^2 = W2, e = EI/(EA R^2), j = rhoI/(rhoA R^2),
+/// g = EI/(kGA R^2).
+/// Foundation: fr = kr R^4/EI, ft = kt R^4/EI.
+inline Mat6 system_matrix(double W2, double e, double j, double g = 0.0, double fr = 0.0, double ft = 0.0) {
   Mat6 A = Mat6::Zero();
-  A(0, 1) = 1.0;   // w'   = v - phi
+  A(0, 1) = 1.0;  // w'   = v - phi + g Q
   A(0, 2) = -1.0;
+  A(0, 5) = g;
   A(1, 0) = -1.0;  // v'   = -w + e N
   A(1, 4) = e;
-  A(2, 3) = 1.0;   // phi' = M
-  A(3, 5) = 1.0;   // M'   = Q - j Omega^2 phi
+  A(2, 3) = 1.0;  // phi' = M
+  A(3, 5) = 1.0;  // M'   = Q - j Omega^2 phi
   A(3, 2) = -j * W2;
-  A(4, 5) = -1.0;  // N'   = -Q - Omega^2 v
-  A(4, 1) = -W2;
-  A(5, 4) = 1.0;   // Q'   = N - Omega^2 w
-  A(5, 0) = -W2;
+  A(4, 5) = -1.0;  // N'   = -Q - (Omega^2 - ft) v
+  A(4, 1) = -(W2 - ft);
+  A(5, 4) = 1.0;  // Q'   = N - (Omega^2 - fr) w
+  A(5, 0) = -(W2 - fr);
   return A;
 }
 
@@ -120,8 +133,10 @@ struct SignedLog {
 inline SignedLog boundary_determinant(const Arch& a, double Omega) {
   const double e = std::isinf(a.EA) ? 0.0 : a.EI / (a.EA * a.R * a.R);
   const double j = a.rhoI / (a.rhoA * a.R * a.R);
+  const double g = std::isinf(a.kGA) ? 0.0 : a.EI / (a.kGA * a.R * a.R);
   const double W2 = Omega * Omega, kappa = std::max(1.0, std::sqrt(Omega));
-  Mat6 A = system_matrix(W2, e, j);
+  const double f = a.EI / (a.R * a.R * a.R * a.R);
+  Mat6 A = system_matrix(W2, e, j, g, a.kr / f, a.kt / f);
   const Eigen::Matrix<double, 6, 1> d{1.0, 1.0, kappa, kappa * kappa, kappa * kappa * kappa, kappa * kappa * kappa};
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c) A(r, c) *= d(c) / d(r);  // A~ = D^-1 A D
@@ -158,9 +173,9 @@ inline SignedLog boundary_determinant(const Arch& a, double Omega) {
 /// frequencies of rigid motions (free-free: 3, free-pinned: 1) are not listed.
 /// Cost: ~64 determinant evaluations per mode plus ~50 per root.
 inline std::vector<double> arch_omegas(const Arch& a, std::size_t count) {
-  if (!(a.alpha > 0.0 && a.alpha <= 2.0 * M_PI + 1e-12) || !(a.R > 0) || !(a.EI > 0) || !(a.EA > 0) ||
-      !(a.rhoA > 0) || !(a.rhoI >= 0))
-    throw std::invalid_argument("archtest::arch_omegas: need 0 < alpha <= 2 pi and positive R, EI, EA, rhoA");
+  if (!(a.alpha > 0.0 && a.alpha <= 2.0 * M_PI + 1e-12) || !(a.R > 0) || !(a.EI > 0) || !(a.EA > 0) || !(a.rhoA > 0) ||
+      !(a.rhoI >= 0) || !(a.kGA > 0) || !(a.kr >= 0) || !(a.kt >= 0))
+    throw std::invalid_argument("archtest::arch_omegas: need 0 < alpha <= 2 pi and positive R, EI, EA, kGA, rhoA");
   auto sign_at = [&](double t) { return detail::boundary_determinant(a, t * t).sign; };
   const double dt = M_PI / a.alpha / 64.0;
   std::vector<double> out;
@@ -229,8 +244,8 @@ struct DeepArch {
   double theta_c = 0.5 * M_PI - half, theta_p = 0.5 * M_PI + half;
 
   struct Shot {
-    Eigen::Vector4d F;      // x(L) - x_p, y(L) - y_p, M(L), y_apex
-    Eigen::Matrix4d J;      // dF / d(m0, hx, hy, P)
+    Eigen::Vector4d F;  // x(L) - x_p, y(L) - y_p, M(L), y_apex
+    Eigen::Matrix4d J;  // dF / d(m0, hx, hy, P)
     double apex_x = 0.0;
   };
 
@@ -332,7 +347,8 @@ inline DeepArchPoint deep_arch_at(double apex_down, int steps = 2000) {
 /// load is passed, then Newton on P(d) = load with dP/dd, safeguarded by bisection in that
 /// bracket. Throws std::invalid_argument past the limit. For a solver's load-controlled path.
 inline DeepArchPoint deep_arch_under(double load, int steps = 2000) {
-  if (steps < 4 || steps % 2 != 0) throw std::invalid_argument("archtest::deep_arch_under: steps must be even and >= 4");
+  if (steps < 4 || steps % 2 != 0)
+    throw std::invalid_argument("archtest::deep_arch_under: steps must be even and >= 4");
   if (!(load >= 0.0)) throw std::invalid_argument("archtest::deep_arch_under: load must be >= 0");
   if (load == 0.0) return {};
   const detail::DeepArch arch{steps};
@@ -358,8 +374,8 @@ inline DeepArchPoint deep_arch_under(double load, int steps = 2000) {
       throw std::runtime_error("archtest::deep_arch_under: no convergence at load " + std::to_string(load));
     }
     if (detail::DeepArch::slope(s) <= 0.0)
-      throw std::invalid_argument("archtest::deep_arch_under: load " + std::to_string(load) + " is above the limit load " +
-                                  std::to_string(v(3)));
+      throw std::invalid_argument("archtest::deep_arch_under: load " + std::to_string(load) +
+                                  " is above the limit load " + std::to_string(v(3)));
     prev = u;
     u = v;
     d += dd;
@@ -370,7 +386,8 @@ inline DeepArchPoint deep_arch_under(double load, int steps = 2000) {
 /// The limit point (maximum load) of the deep arch's equilibrium path from the unloaded arch:
 /// {P R^2/EI, apex dx / R, apex dy / R}. Cost: ~60 continuation steps and ~10 secant steps.
 inline DeepArchPoint deep_arch_limit(int steps = 2000) {
-  if (steps < 4 || steps % 2 != 0) throw std::invalid_argument("archtest::deep_arch_limit: steps must be even and >= 4");
+  if (steps < 4 || steps % 2 != 0)
+    throw std::invalid_argument("archtest::deep_arch_limit: steps must be even and >= 4");
   const detail::DeepArch arch{steps};
   const double dd = 0.02;
   Eigen::Vector4d u = Eigen::Vector4d::Zero(), prev = u;
@@ -439,7 +456,8 @@ inline double pinned_follower_pressure(double half_angle) {
 
 inline double clamped_follower_pressure(double half_angle) {
   const double a = half_angle;
-  if (!(a > 0.0 && a < M_PI)) throw std::invalid_argument("archtest::clamped_follower_pressure: need 0 < half angle < pi");
+  if (!(a > 0.0 && a < M_PI))
+    throw std::invalid_argument("archtest::clamped_follower_pressure: need 0 < half angle < pi");
   auto h = [&](double x) { return a * std::cos(a) * std::sin(x) - x * std::sin(a) * std::cos(x); };
   double lo = M_PI, hi = 2.0 * M_PI;
   for (int it = 0; it < 200 && hi - lo > 4e-16 * hi; ++it) {
