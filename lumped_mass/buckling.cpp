@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 
 #include "lumped_mass/chain.hpp"
@@ -87,7 +88,7 @@ Pencil buckling_pencil(const Dense& gt, const Vec& x0, const Vec& gP, double len
 }
 
 ring::BucklingResult result(const ring::LumpedOptions& options, const Pencil& p, double anchor_deg,
-                            int dofs_per_node) {
+                            int dofs_per_node, const std::optional<ring::Arc>& arc = std::nullopt) {
   ring::BucklingResult r;
   r.solver = "lumped";
   r.model["n"] = static_cast<long long>(options.n);
@@ -95,7 +96,8 @@ ring::BucklingResult result(const ring::LumpedOptions& options, const Pencil& p,
   r.unknowns = p.Z.cols();
   r.factors.assign(p.factors.factors.data(), p.factors.factors.data() + p.factors.factors.size());
   for (Eigen::Index i = 0; i < p.factors.vectors.cols(); ++i)
-    r.shapes.push_back(sample_shape(anchor_deg, dofs_per_node, p.Z * p.factors.vectors.col(i)));
+    r.shapes.push_back(arc ? sample_arch_shape(*arc, p.Z * p.factors.vectors.col(i))
+                           : sample_shape(anchor_deg, dofs_per_node, p.Z * p.factors.vectors.col(i)));
   return r;
 }
 
@@ -130,14 +132,15 @@ ring::BucklingResult compute_buckling(const ring::RingSpec& spec, const ring::Lu
   } else {
     const Chain c = make_chain(spec, options);
     const int N = 2 * c.n, R = c.rows();
-    const ChainLoads loads(buckling.loads, c.rest, c.l, mass_matrix(c), load_hinges(c, spec, buckling.loads, "buckling"));
+    const ChainLoads loads(buckling.loads, c.rest, c.l, mass_matrix(c), load_hinges(c, spec, buckling.loads, "buckling"),
+                           c.open);
     Triplets gt;
     jacobian(c, c.rest, 0, 1.0, true, gt);
     const TangentAt tangent_at = [&](const Vec& x, const Vec& lambda, double s) {
       return tangent_at_chain(c, loads, x, lambda, s);
     };
     r = result(options, buckling_pencil(dense(N, R, gt), c.rest, loads.gradient(c.rest), c.l, tangent_at, buckling.count),
-               c.anchor_deg, 2);
+               c.anchor_deg, 2, spec.arc);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;

@@ -2,6 +2,13 @@
 // std::invalid_argument naming the key. The nonlinear analyses call these first, and the
 // driver calls them for every analysis a scene asks of the lumped models before any solver
 // runs, so a refusal never comes after another solver's work. O(1).
+//
+// An arch (ring.arc, model.hpp: the chain as an open chain of n links) is taken by the chain's
+// linear modes, linear buckling (a follower pressure with both ends pinned, no other load), nonlinear statics (point loads, gravity, static.path, ring.plastic at the interior
+// hinges) and response; refused with ring::InputError naming ring.arc: the frames (every
+// analysis), a pressure in the statics and the response, the dead and central pressures, a
+// roller and the modes under load. Its points (supports, masses, loads, records)
+// are nodes from + span k / n, k = 0..n.
 #pragma once
 
 #include "ring/analysis.hpp"
@@ -19,7 +26,7 @@ namespace lumped {
 void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// Linear modes: the shear stiffness of the Timoshenko frame (check_theory); every term of RingSpec (supports, masses,
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
-/// anchor + 360 k / n.
+/// anchor + 360 k / n (an arch: from + span k / n; the chain only, no roller).
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// ring.plastic (the resultant law, bending.hpp) is taken by the chain's nonlinear statics;
 /// the frames (checks.cpp says why), the fibre law, and ring.plastic in any other analysis are

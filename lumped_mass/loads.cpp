@@ -53,7 +53,9 @@ ChainLoads::ChainLoads(const ring::Loads& loads, const Vec& rest, double side,
       dead_.segment<2>(2 * j) += f;
       dead_.segment<2>(2 * ((j + 1) % n)) += f;
     }
-  area0_ = 0.5 * twice_area(rest, n, links_);
+  // The follower pressure's area: the closed polygon's, the closing chord included (on an arch
+  // whose ends are pinned the chord is fixed: the area between chain and chord; loads.hpp).
+  area0_ = 0.5 * twice_area(rest, n, n);
   central0_ = midpoint_radii(rest, n, links_);
 }
 
@@ -65,7 +67,7 @@ double ChainLoads::potential(const Vec& x) const {
   double P = -dead_.dot(x - rest_);
   if (!pressure_.any()) return P;
   const double p = pressure_.value;
-  if (pressure_.kind == ring::Pressure::Kind::follower) P += p * (0.5 * twice_area(x, n_, links_) - area0_);
+  if (pressure_.kind == ring::Pressure::Kind::follower) P += p * (0.5 * twice_area(x, n_, n_) - area0_);
   if (pressure_.kind == ring::Pressure::Kind::central) P += p * l_ * (midpoint_radii(x, n_, links_) - central0_);
   return P;
 }
@@ -98,7 +100,7 @@ void ChainLoads::add_hessian(const Vec& x, double scale, Triplets& out) const {
   const int n = n_;
   if (pressure_.kind == ring::Pressure::Kind::follower)
     // d2 A / dx_j dx_{j+1} = -J / 2 = [[0, 1/2], [-1/2, 0]]; its transpose for (j+1, j).
-    for (int j = 0; j < links_; ++j) {
+    for (int j = 0; j < n; ++j) {
       const int a = 2 * j, b = 2 * ((j + 1) % n);
       const double h = 0.5 * p * scale;
       out.emplace_back(a, b + 1, h);

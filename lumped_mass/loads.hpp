@@ -44,9 +44,14 @@ class ChainLoads {
   /// \param rest hinge rest positions (2n), counter-clockwise
   /// \param translational_mass the constant mass on the hinge positions (2n x 2n), for gravity
   /// \param hinges the hinge of each of loads.points (checked by the caller)
-  /// \param open an arch (ring.arc): the n nodes' n - 1 links, no closing link. Its point loads
-  ///        and gravity are as above; a pressure on the open chain is refused by checks.hpp
-  ///        (its follower potential needs the closed area).
+  /// \param open an arch (ring.arc): the n nodes' n - 1 links, no closing link. Point loads,
+  ///        gravity and the dead and central pressures act on its links as above; the follower
+  ///        pressure's potential p A keeps the closed polygon's area (the chord from the last
+  ///        node to the first closing it), which is the area between the chain and its chord:
+  ///        with both ends pinned the chord is fixed, the forces on the links are the follower
+  ///        pressure's and the chord's act on the pinned ends (reactions). checks.hpp refuses
+  ///        it on an arch with a free or unpinned end (no potential there: the follower load
+  ///        on an open chain with a moving end is not conservative).
   ChainLoads(const ring::Loads& loads, const Eigen::VectorXd& rest, double side,
              const Eigen::SparseMatrix<double>& translational_mass, const std::vector<int>& hinges, bool open = false);
 

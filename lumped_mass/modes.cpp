@@ -18,10 +18,6 @@ ring::ModeShape sample_shape(double anchor_deg, int dofs_per_node, const Eigen::
   return ring::sample_polygon(anchor_deg, ux, uy);
 }
 
-namespace {
-
-/// The chain's n + 1 node displacements on an arch, sampled by ring::sample_arc (stations
-/// outside the arc are 0). O(n + stations).
 ring::ModeShape sample_arch_shape(const ring::Arc& arc, const Eigen::Ref<const Eigen::VectorXd>& x) {
   const int n = static_cast<int>(x.size()) / 2;
   std::vector<double> ux(n), uy(n);
@@ -31,8 +27,6 @@ ring::ModeShape sample_arch_shape(const ring::Arc& arc, const Eigen::Ref<const E
   }
   return ring::sample_arc(arc, ux, uy);
 }
-
-}  // namespace
 
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count) {
   return compute_modes(spec, options, count, Method::automatic);

@@ -41,6 +41,9 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
 /// (ux, uy) first: model.hpp's order) at the common stations: ring::sample_polygon from
 /// node 0 at `anchor_deg`, with ModeShape's scaling. The one sampling of every lumped shape
 /// (modes, buckling). O(n + kStations).
+/// The chain's n + 1 node displacements (ux, uy interleaved) on an arch, sampled by
+/// ring::sample_arc (stations off the arch are 0). O(n + stations).
+ring::ModeShape sample_arch_shape(const ring::Arc& arc, const Eigen::Ref<const Eigen::VectorXd>& x);
 ring::ModeShape sample_shape(double anchor_deg, int dofs_per_node, const Eigen::Ref<const Eigen::VectorXd>& x);
 
 /// The same with the eigen-solution path chosen explicitly (tests, benchmarks).

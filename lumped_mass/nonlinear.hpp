@@ -3,6 +3,13 @@
 // multibody chain without segment rotary inertia, in other coordinates, which makes
 // each an exact oracle for the other in continuous time.
 //
+// ## An arch (ring.arc): the open chain (model.hpp)
+// n + 1 nodes from `from` to `to`, n links, springs at the n - 1 interior hinges only (an
+// end's hinge has one link: a clamp's half hinge 2 EI/l to the wall, terms.hpp), the masses at
+// the n links' midpoints; statics (point loads and gravity; static.path through limit points:
+// StaticDetail::limit) and response run as below. A path point's ovalisation is 0 (an arch has
+// no opposite hinges); contact is measured between links along the open chain.
+//
 // ## Model (Cartesian hinge positions, no small-rotation assumption anywhere)
 // Unknowns x = (x_0, y_0, ..., x_{n-1}, y_{n-1}): the hinge positions, ring-centred
 // frame, hinge k resting at rho (cos a_k, sin a_k) (model.hpp's n-gon, a_k from the pin).
