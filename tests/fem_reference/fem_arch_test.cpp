@@ -25,6 +25,7 @@
 #include "fem_reference/checks.hpp"
 #include "ring/errors.hpp"
 #include "support/arch.hpp"
+#include "support/paper.hpp"
 #include "support/convergence.hpp"
 #include "support/refusal.hpp"
 
@@ -34,12 +35,7 @@ constexpr double kDeg = M_PI / 180.0;
 
 /// The paper's section on an arch of radius R = 10 m from `from` to `to` (degrees).
 ring::RingSpec arch(double from, double to) {
-  ring::RingSpec s;
-  s.radius = 10.0;
-  s.E = 2.1e11;
-  s.rho = 7.8e3;
-  s.section.shape = ring::Section::Shape::circle;
-  s.section.diameter = 0.12;
+  ring::RingSpec s = ringtest::free_ring();
   s.arc = ring::Arc{from, to};
   return s;
 }
