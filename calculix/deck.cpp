@@ -52,11 +52,6 @@ int pieces(const ring::CalculixOptions& o) {
   return o.element == ring::CalculixOptions::Element::b31 ? o.elements : 2 * o.elements;
 }
 
-/// The length of the centroid line (m): the circle's, or the arch's.
-double centroid_length(const ring::RingSpec& spec) {
-  return (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * kPi * spec.radius;
-}
-
 }  // namespace
 
 int node_count(const ring::CalculixOptions& o) { return pieces(o); }
@@ -138,7 +133,7 @@ namespace {
 /// the quadratic element's consistent weights (an end node L/3, a middle node 2L/3). An
 /// arch's two end nodes belong to one element only: half of that (B31 L/2, B32/B32R L/6).
 std::vector<double> node_shares(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
-  const double L = centroid_length(spec) / o.elements;
+  const double L = spec.length() / o.elements;
   const bool quadratic = o.element != ring::CalculixOptions::Element::b31;
   std::vector<double> w(node_count(spec, o));
   for (std::size_t k = 0; k < w.size(); ++k) w[k] = quadratic ? (k % 2 ? 2.0 * L / 3.0 : L / 3.0) : L;
@@ -386,7 +381,7 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
     // 2L/3, L/6 (an end node L/3, shared by two elements). The springs act in the cylindrical
     // system about the ring's axis, fixed radial and tangential directions of each node's
     // undeformed position (SPRING1 keeps its direction under NLGEOM).
-    const double L = centroid_length(spec) / o.elements;
+    const double L = spec.length() / o.elements;
     const bool quadratic = o.element != Element::b31;
     const std::vector<double> shares = node_shares(spec, o);
     // An arch's two end nodes carry half an end node's share: a set of their own (TIP), the

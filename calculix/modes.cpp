@@ -38,7 +38,7 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
   require_ccx();
   const int nodes = node_count(spec, options);
   const int rigid = spec.rigid_modes();
-  const double length = (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * M_PI * spec.radius;
+  const double length = spec.length();
   const double node_mass = spec.rhoA() * length / nodes;
   const int most = 3 * nodes;  // the beam nodes' in-plane degrees of freedom bound the in-plane modes
   FrequencyStep step{eigenvalues_for(spec, count)};

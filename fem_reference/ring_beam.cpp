@@ -313,7 +313,7 @@ BeamModel::BeamModel(const ring::RingSpec& spec, const Setup& setup)
     : LinearModel(spec, setup),
       open_(spec.is_arch()),
       theta0_(spec.anchor() * kPi / 180.0),
-      h_((spec.is_arch() ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi) / setup.cells()) {}
+      h_(spec.opening() / setup.cells()) {}
 
 void BeamModel::measure_lengths() {
   lengths_.assign(n_free_, 1.0);

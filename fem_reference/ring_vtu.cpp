@@ -49,7 +49,7 @@ void write_ring_vtu(const ring::RingSpec& spec, const Setup& setup, double theta
   const unsigned int n = setup.cells(), m = setup.subdivisions;
   // An arch (ring.arc, curved geometry only: checks.cpp): n + 1 vertices, no closing cell.
   const bool open = spec.is_arch();
-  const double h = (open ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi) / n;
+  const double h = spec.opening() / n;
   const double chord_angle = 2.0 * kPi / setup.elements;
   const double corner = curved ? spec.radius : spec.radius * (chord_angle / 2.0) / std::sin(chord_angle / 2.0);
   std::vector<Point<2>> vertices(open ? n + 1 : n);

@@ -163,7 +163,7 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
   // bent to radius rho: spacing^2 / (8 rho), far below the depth); edges whose nearest
   // ends are at least 2 depths apart along the ring are "not neighbours": bending alone
   // would need a radius below the depth to bring those within a depth of each other.
-  const double cell_arc = (spec.is_arch() ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi) * spec.radius / model_.cells();
+  const double cell_arc = spec.opening() * spec.radius / model_.cells();
   per_cell_ = std::max(2u, static_cast<unsigned int>(std::ceil(cell_arc / (0.5 * depth_))));
   min_gap_ = 1 + static_cast<int>(std::ceil(2.0 * depth_ / (cell_arc / per_cell_)));
   DynamicSparsityPattern dsp(N_ + 1, N_ + 1);

@@ -19,7 +19,7 @@ Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   Chain c;
   c.open = spec.is_arch();
   c.n = o.n + (c.open ? 1 : 0);
-  const double angle = c.open ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi;  // the centroid line's, rad
+  const double angle = spec.opening();  // the centroid line's, rad
   c.step_deg = angle / o.n * 180.0 / kPi;
   c.l = angle * spec.radius / o.n;
   c.k = spec.EI() / c.l;

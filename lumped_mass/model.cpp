@@ -423,7 +423,7 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   m.n = options.n + (m.open ? 1 : 0);
   m.dofs_per_node = options.variant == ring::LumpedOptions::Variant::chain ? 2 : 3;
   m.anchor_deg = spec.anchor();
-  const double angle = m.open ? spec.arc->span() * M_PI / 180.0 : 2.0 * M_PI;  // the centroid line's, rad
+  const double angle = spec.opening();  // the centroid line's, rad
   m.side = angle * spec.radius / m.links;
   m.circumradius = m.side / (2.0 * std::sin(0.5 * angle / m.links));
   m.expected_rigid = spec.rigid_modes();

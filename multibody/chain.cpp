@@ -29,7 +29,7 @@ Chain::Chain(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
       !(spec.rho > 0.0))
     throw std::invalid_argument("multibody: radius, A, I, E and rho must all be > 0");
   arch_ = spec.is_arch();
-  span_ = arch_ ? spec.arc->span() * kPi / 180.0 : 2.0 * kPi;
+  span_ = spec.opening();
   // The chain's length is the centroid line's (file comment): l = R span / n.
   l_ = span_ * spec.radius / n_;
   m_ = spec.rhoA() * l_;

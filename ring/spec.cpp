@@ -57,6 +57,8 @@ std::vector<double> Supports::pinned() const {
   return all;
 }
 
+double RingSpec::opening() const { return arc ? arc->span() * M_PI / 180.0 : 2.0 * M_PI; }
+
 int RingSpec::rigid_modes() const {
   // Rows on the rigid motion (tx, ty, w) of the ring: the displacement of the point at polar
   // angle a is (tx - w R sin a, ty + w R cos a). A constraint or a positive spring along a
@@ -199,7 +201,7 @@ int static_rigid_modes(const RingSpec& spec, const Loads& loads) {
 double load_scale(const RingSpec& spec, const Loads& loads) {
   double f = 0.0;
   for (const auto& p : loads.points) f += std::hypot(p.force[0], p.force[1]);
-  const double L = (spec.arc ? spec.arc->span() / 360.0 : 1.0) * 2.0 * M_PI * spec.radius;
+  const double L = spec.length();
   double mass = spec.rhoA() * L;
   for (const auto& m : spec.masses) mass += m.mass;
   return f + std::abs(loads.pressure.value) * L + mass * std::hypot(loads.gravity[0], loads.gravity[1]);

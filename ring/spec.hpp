@@ -185,6 +185,11 @@ struct RingSpec {
   /// Where every model puts its node 0: an arch's `from` end; a ring's pin, or free_anchor.
   double anchor() const { return arc ? arc->from : supports.pin.value_or(free_anchor); }
 
+  /// The angle the centroid line subtends, rad: 2 pi for a ring, an arch's span.
+  double opening() const;
+  /// The centroid line's length, m: radius x opening().
+  double length() const { return radius * opening(); }
+
   double A() const { return section.area(); }
   double I() const { return section.inertia(); }
   double EI() const { return E * section.inertia(); }
