@@ -203,6 +203,7 @@ double precision_ratio_bound(int elements, int degree) {
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   check_linear(spec, o);
+  ring::refuse_rotation(spec, "the fem modes");
   // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused
   // here, before any assembly, where the bound already exceeds the limit (the model's own
   // ratio, measured after assembly in modes.cpp, catches the rest). 10^4 elements of

@@ -189,6 +189,7 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
+  ring::refuse_rotation(spec, "the lumped modes");
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
   const double anchor = spec.anchor();
   std::vector<std::pair<std::string, double>> points;

@@ -78,6 +78,7 @@ void check_arch_buckling(const ring::RingSpec& spec, const ring::MultibodyOption
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
+  ring::refuse_rotation(spec, "the multibody modes");
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
   // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
   if (sparse)

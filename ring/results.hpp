@@ -35,6 +35,16 @@ inline const char* const kResidual2Norm = "2-norm";
 /// A value describing a model (JSON scalar).
 using ModelValue = std::variant<long long, double, bool, std::string>;
 
+/// A mode of a spinning ring (rotation.speed != 0): the travelling wave its complex shape is.
+/// x(t) = Re(x e^{i omega t}); the radial shape's Fourier coefficients c_k (w = sum c_k e^{i k theta})
+/// name it: `number` the wave number k >= 0 of the largest |c_k|^2 + |c_-k|^2, `direction` +1 when
+/// it travels in the sense of the spin (c_-k the larger for a positive speed), -1 against it, 0
+/// standing (|c_k| = |c_-k| to 1e-6 of them, as at rest). modal::classify_wave.
+struct Wave {
+  int number = 0;
+  int direction = 0;
+};
+
 /// Natural frequencies and mode shapes of one model.
 struct ModalResult {
   std::string solver;                         ///< "multibody", "fem", "lumped"
@@ -62,6 +72,13 @@ struct ModalResult {
   double error_estimate = 0.0;
   /// The model is an arch (ring.arc): its modes come in no degenerate pairs (compare/pairs.hpp).
   bool arch = false;
+  /// A spinning ring (rotation.speed != 0): each mode's wave, same order as omega (empty at
+  /// rest). Its omega are then in the rotating frame as the solvers return them (frame =
+  /// "rotating"), or the fixed frame's |omega + direction k speed| re-sorted by the driver
+  /// (modes.frame = "fixed"), shapes the real part x at t = 0, phased so that the largest
+  /// radial entry is real.
+  std::vector<Wave> waves;
+  std::string frame;  ///< "rotating" or "fixed" for a spinning ring, "" at rest
 };
 
 /// Linear buckling of one model (ring::BucklingOptions): the lowest positive critical load

@@ -531,10 +531,43 @@ OptionValues read_solver_section(const Reader& r, const toml::table& root, const
   return v;
 }
 
+/// [rotation] {speed, tension}: read after the analyses, which it checks. A spinning ring has
+/// its modes (the gyroscopic eigenproblem in the frame that turns with it); the other analyses
+/// and the shapes it cannot spin refuse it here, naming rotation.speed.
+void read_rotation(const Reader& r, const toml::table& t, Scene& s) {
+  r.known_keys(t, "rotation", {"speed", "tension"});
+  Rotation& rot = s.ring.rotation;
+  // A bound far above any ring that holds together (a steel ring's hoop stress rho (speed R)^2
+  // reaches its yield stress at a rim speed of ~200 m/s) and far below the doubles' range.
+  rot.speed = r.number(t, "rotation", "speed", 0.0, -1e12, 1e12);
+  rot.tension = r.choice(t, "rotation", "tension", "spin", {"spin", "none"}) == "spin" ? Rotation::Tension::spin
+                                                                                      : Rotation::Tension::none;
+  if (!rot.spinning()) return;
+  const toml::node* at = t.get("speed");
+  const double rim = std::abs(rot.speed) * s.ring.radius, wave = std::sqrt(s.ring.E / s.ring.rho);
+  if (rim >= wave)
+    r.fail("rotation.speed", at,
+           "the rim speed " + fmt_num(rim) + " m/s reaches the ring's wave speed sqrt(E/rho) = " + fmt_num(wave) +
+               " m/s: the hoop strain of the spin would exceed 1 and no model here holds");
+  if (s.ring.arc) r.fail("rotation.speed", at, "an arch (ring.arc) does not spin here: rotation is the closed ring's");
+  if (s.ring.rigid_modes() > 0)
+    r.fail("rotation.speed", at,
+           "a spinning ring needs its rigid motions held in the turning frame (supports, springs or a foundation); "
+           "this one has " + std::to_string(s.ring.rigid_modes()) + " rigid modes");
+  for (const auto& [sec, there] : {std::pair{"static", s.statics.has_value()}, std::pair{"response", s.response.has_value()},
+                                    std::pair{"buckling", s.buckling.has_value()}})
+    if (there)
+      r.fail("rotation.speed", at,
+             std::string("the [") + sec + "] analysis of a spinning ring is not implemented: its modes are ([modes], [table])");
+  if (s.modes.preload_static)
+    r.fail("rotation.speed", at, "modes.preload = \"static\" and a spin: the modes of a spinning ring take the spin's own "
+                                 "prestress (rotation.tension) and no other load");
+}
+
 Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema) {
   Scene s;
   s.reference_solver = schema.reference_solver;
-  std::vector<std::string> sections = {"title", "ring", "supports", "masses", "foundation"};
+  std::vector<std::string> sections = {"title", "ring", "supports", "masses", "foundation", "rotation"};
   const std::vector<std::string> analyses = {"modes", "table", "gates", "response", "static", "buckling"};
   for (const auto& m : schema.solvers) {
     if (std::find(sections.begin(), sections.end(), m.name) != sections.end() ||
@@ -600,8 +633,11 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
 
   // [modes]: solvers default to those whose section the scene has (multibody if none).
   if (const toml::table* t = r.table(root, "", "modes")) {
-    r.known_keys(*t, "modes", {"count", "solvers", "preload"});
+    r.known_keys(*t, "modes", {"count", "solvers", "preload", "frame"});
     s.modes.count = static_cast<int>(r.integer(*t, "modes", "count", 23, 1, 100000));
+    s.modes.fixed_frame = r.choice(*t, "modes", "frame", "rotating", {"rotating", "fixed"}) == "fixed";
+    if (t->contains("frame") && !root.get("rotation"))
+      r.fail("modes.frame", t->get("frame"), "names the frame of a spinning ring's frequencies, and the scene has no [rotation]");
     s.modes.preload_static = r.choice(*t, "modes", "preload", "none", {"none", "static"}) == "static";
     s.modes.solvers = r.strings(*t, "modes", "solvers", schema.names());
     if (t->contains("solvers") && s.modes.solvers.empty())
@@ -741,6 +777,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
              "gravity on a ring that is free to move rigidly has no equilibrium and no meaning here: add a pin, a "
              "clamp, springs or a foundation");
   }
+
+  if (const toml::table* t = r.table(root, "", "rotation")) read_rotation(r, *t, s);
 
   if (s.modes.preload_static && !s.statics)
     r.fail("modes.preload", root.at_path("modes.preload").node(),

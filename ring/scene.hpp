@@ -25,6 +25,9 @@ struct ModesRequest {
   /// load (its tangent stiffness, the prestress's geometric and the loads' own stiffness
   /// included), the frequencies under load; false: about the unloaded ring.
   bool preload_static = false;
+  /// modes.frame: a spinning ring's frequencies in the fixed frame (true) or in the frame
+  /// that turns with it (false, the default); ring/results.hpp, ModalResult::frame.
+  bool fixed_frame = false;
 };
 
 /// A column of another code's results ([[table.import]]): frequencies from a CSV file

@@ -254,6 +254,10 @@ void refuse_arch(const RingSpec& spec, const std::string& who) {
   if (spec.arc) throw std::invalid_argument(who + " does not take an arch (ring.arc) yet");
 }
 
+void refuse_rotation(const RingSpec& spec, const std::string& who) {
+  if (spec.rotation.spinning()) throw std::invalid_argument(who + " does not take a spinning ring (rotation.speed) yet");
+}
+
 bool on_node(double angle, double anchor, int n) {
   const double steps = wrap_degrees(angle - anchor) * n / 360.0;
   // Angles come from decimal input: accept a node to 1e-9 of a step.

@@ -157,6 +157,17 @@ struct Arc {
 /// kappa, and the cross-section's rotary inertia rho I.
 enum class Theory { euler_bernoulli, timoshenko };
 
+/// [rotation]: the ring spins at `speed` rad/s about its axis (counter-clockwise positive) and
+/// is analysed in the frame that turns with it: the Coriolis (gyroscopic) term 2 speed m S v,
+/// the centrifugal softening -speed^2 m, and the spin's hoop tension or none.
+struct Rotation {
+  double speed = 0.0;  ///< rad/s; 0: at rest (every analysis as without [rotation])
+  /// spin: the centrifugal body force's prestress (the hoop tension rho A speed^2 R^2 of the
+  /// free ring) and its geometric stiffness; none: without it, as inflation-only tyre models.
+  enum class Tension { spin, none } tension = Tension::spin;
+  bool spinning() const { return speed != 0.0; }
+};
+
 /// The ring itself: geometry, material and supports.
 struct RingSpec {
   double radius = 10.0;  ///< m, centroid radius R
@@ -177,6 +188,8 @@ struct RingSpec {
   bool is_arch() const { return arc.has_value(); }
   /// ring.plastic: the elastic–plastic bending law (ring/plastic.hpp); none: elastic.
   std::optional<Plastic> plastic;
+  /// [rotation]: the spin of the ring and the frame it is analysed in.
+  Rotation rotation;
   /// Degrees: where the models of a free ring (no pin) put their node 0, so that every model
   /// of every solver has the same nodes. The scene reader sets it to the first point load of
   /// the scene (static, then response, then buckling; 0 without one). A pinned
@@ -217,6 +230,10 @@ struct RingSpec {
   /// ("supports.clamp", "masses", "foundation", ...), for refusals that name them.
   std::vector<std::string> terms_beyond_paper() const;
 };
+
+/// Throws std::invalid_argument "`who` does not take a spinning ring (rotation.speed) yet" when
+/// spec spins, for a solver or analysis that has only the ring at rest.
+void refuse_rotation(const RingSpec& spec, const std::string& who);
 
 /// Throws std::invalid_argument "`who` has no Timoshenko model yet (ring.theory, or the
 /// solver's multibody.theory or fem.theory)" when spec.theory is Timoshenko, for a solver or

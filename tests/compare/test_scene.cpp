@@ -635,4 +635,31 @@ TEST(SceneReject, ArchPointBetweenNodes) {
   expect_rejected(replace(kArch, "pins = [197.5]", "pins = [100]"), "supports.pins", "pieces of 10.75 degrees from -17.5");
 }
 
+// A spinning ring: the paper's ring on a foundation that holds its rigid motions.
+const std::string kSpinning = kPaper + "[foundation]\nradial = 1e4\ntangential = 1e4\n[rotation]\nspeed = 3.0\n";
+
+TEST(SceneRotation, ReadsSpeedTensionAndTheFrame) {
+  const ring::Scene s = cmp::parse_scene(replace(kSpinning, "count = 23", "count = 23\nframe = \"fixed\""), "spin.toml");
+  EXPECT_EQ(s.ring.rotation.speed, 3.0);
+  EXPECT_EQ(s.ring.rotation.tension, ring::Rotation::Tension::spin);
+  EXPECT_TRUE(s.modes.fixed_frame);
+  EXPECT_EQ(cmp::parse_scene(kPaper, "rest.toml").ring.rotation.speed, 0.0);
+}
+TEST(SceneReject, SpeedThatIsNotAFiniteNumberOrTooFast) {
+  expect_rejected(replace(kSpinning, "speed = 3.0", "speed = nan"), "rotation.speed");
+  expect_rejected(replace(kSpinning, "speed = 3.0", "speed = inf"), "rotation.speed");
+  expect_rejected(replace(kSpinning, "speed = 3.0", "speed = \"fast\""), "rotation.speed", "expected a number");
+  // Steel's sqrt(E/rho) = 5189 m/s at R = 10 m: 600 rad/s is a rim speed of 6000 m/s.
+  expect_rejected(replace(kSpinning, "speed = 3.0", "speed = 600.0"), "rotation.speed", "wave speed");
+  expect_rejected(replace(kSpinning, "speed = 3.0", "speed = 3.0\ntension = \"half\""), "rotation.tension");
+  expect_rejected(replace(kSpinning, "speed = 3.0", "speed = 3.0\nspin = 1"), "rotation.spin");
+}
+TEST(SceneReject, SpinWhatIsNotImplementedOrHasNoMeaning) {
+  // Free ring: nothing holds it in the turning frame.
+  expect_rejected(kPaper.substr(0, kPaper.find("[supports]")) + "[rotation]\nspeed = 1.0\n", "rotation.speed", "rigid");
+  expect_rejected(kSpinning + "[static]\nat = 90.0\nforce = [0.0, -1e3]\n", "rotation.speed", "[static]");
+  expect_rejected(kArch + "[rotation]\nspeed = 1.0\n", "rotation.speed", "arch");
+  expect_rejected(replace(kPaper, "count = 23", "count = 23\nframe = \"fixed\""), "modes.frame", "[rotation]");
+}
+
 }  // namespace

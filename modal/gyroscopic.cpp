@@ -1,0 +1,129 @@
+#include "modal/gyroscopic.hpp"
+
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+#include "ring/errors.hpp"
+#include "ring/sampling.hpp"
+
+namespace modal {
+
+GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
+                                 const Eigen::MatrixXd& G, int count) {
+  const Eigen::Index n = K.rows();
+  if (K.cols() != n || M.rows() != n || M.cols() != n || G.rows() != n || G.cols() != n)
+    throw std::invalid_argument("gyroscopic_modes: K, M and G must be square and of one size");
+  if (count < 1 || count > n)
+    throw std::invalid_argument("gyroscopic_modes: count " + std::to_string(count) + " is not in [1, " +
+                                std::to_string(n) + "]");
+  if (n > kMaxGyroscopicUnknowns)
+    throw std::invalid_argument(solver + ": the spinning ring's modes are dense and take at most " +
+                                std::to_string(kMaxGyroscopicUnknowns) + " unknowns, this model has " +
+                                std::to_string(n) + ": lower the model's size");
+  if (!K.allFinite() || !M.allFinite() || !G.allFinite())
+    throw ring::NumericalError(solver + ": the spinning ring's matrices are not finite");
+  const Eigen::LLT<Eigen::MatrixXd> lk(K), lm(M);
+  if (lk.info() != Eigen::Success)
+    throw ring::NumericalError(solver + ": the stiffness in the turning frame is not positive definite: the spin's "
+                                        "centrifugal softening has overcome a mode's stiffness (a divergence speed)");
+  if (lm.info() != Eigen::Success) throw ring::NumericalError(solver + ": the mass matrix is not positive definite");
+  const Eigen::MatrixXd Lk = lk.matrixL(), Lm = lm.matrixL();
+  // S12 = Lk^T Lm^-T, S22 = -Lm^-1 G Lm^-T.
+  const Eigen::MatrixXd s12 = lm.matrixL().solve(Lk).transpose();
+  Eigen::MatrixXd s22 = lm.matrixL().solve(lm.matrixL().solve(G).transpose()).transpose();
+  s22 = -0.5 * (s22 - s22.transpose());  // skew to round-off: keep it exactly skew
+  Eigen::MatrixXcd H = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
+  const std::complex<double> i(0.0, 1.0);
+  H.topRightCorner(n, n) = i * s12.cast<std::complex<double>>();
+  H.bottomLeftCorner(n, n) = -i * s12.transpose().cast<std::complex<double>>();
+  H.bottomRightCorner(n, n) = i * s22.cast<std::complex<double>>();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> eig(H);
+  if (eig.info() != Eigen::Success) throw ring::NumericalError(solver + ": the gyroscopic eigensolve did not converge");
+  // Eigenvalues ascend: -omega for the positive frequencies come first, the largest omega
+  // first; the lowest omega are the negative eigenvalues closest to zero.
+  const Eigen::VectorXd& mu = eig.eigenvalues();
+  Eigen::Index neg = 0;
+  while (neg < 2 * n && mu(neg) < 0.0) ++neg;
+  if (neg < count)
+    throw ring::NumericalError(solver + ": the gyroscopic eigenproblem gave " + std::to_string(neg) +
+                               " positive frequencies, fewer than the " + std::to_string(count) + " asked for");
+  GyroscopicModes out;
+  out.omega.resize(count);
+  out.vectors.resize(n, count);
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Index j = neg - 1 - k;
+    const double w = -mu(j);
+    const Eigen::VectorXcd top = eig.eigenvectors().col(j).head(n);
+    Eigen::VectorXcd x(n);  // Lk^T x = top, real triangle, complex right-hand side
+    x.real() = Lk.transpose().triangularView<Eigen::Upper>().solve(Eigen::VectorXd(top.real()));
+    x.imag() = Lk.transpose().triangularView<Eigen::Upper>().solve(Eigen::VectorXd(top.imag()));
+    x /= x.norm();
+    out.omega(k) = w;
+    out.vectors.col(k) = x;
+    const Eigen::VectorXcd kx = K * x, mx = M * x, gx = G * x;
+    const double r = (kx - w * w * mx + i * w * gx).norm();
+    const double scale = kx.norm() + w * w * mx.norm() + w * gx.norm();
+    const double rel = scale > 0.0 ? r / scale : r;
+    out.max_residual = std::isnan(rel) || rel > out.max_residual ? rel : out.max_residual;
+  }
+  return out;
+}
+
+ring::Wave classify_wave(const Eigen::VectorXcd& radial, double speed) {
+  const int m = static_cast<int>(radial.size());
+  const double pi = std::acos(-1.0);
+  int best = 0;
+  double best_power = -1.0, plus = 0.0, minus = 0.0;
+  for (int k = 0; k <= m / 2; ++k) {
+    std::complex<double> cp = 0.0, cm = 0.0;  // c_k and c_-k
+    for (int s = 0; s < m; ++s) {
+      const double a = 2.0 * pi * k * s / m;
+      const std::complex<double> e(std::cos(a), -std::sin(a));
+      cp += radial(s) * e;
+      cm += radial(s) * std::conj(e);
+    }
+    const double p = std::norm(cp) + std::norm(cm);
+    if (p > best_power * (1.0 + 1e-12)) best = k, best_power = p, plus = std::abs(cp), minus = std::abs(cm);
+  }
+  ring::Wave w;
+  w.number = best;
+  // Towards +theta (c_-k the larger) is with a positive spin.
+  if (best == 0 || std::abs(minus - plus) <= 1e-6 * std::max(minus, plus)) return w;
+  const int towards_plus = minus > plus ? 1 : -1;
+  w.direction = speed >= 0.0 ? towards_plus : -towards_plus;
+  return w;
+}
+
+std::pair<ring::ModeShape, ring::Wave> travelling_mode(const Eigen::VectorXcd& x_in,
+                                                       const std::function<ring::ModeShape(const Eigen::VectorXd&)>& sample,
+                                                       double speed) {
+  Eigen::Index big = 0;
+  x_in.cwiseAbs().maxCoeff(&big);
+  const std::complex<double> phase = std::abs(x_in(big)) > 0.0 ? std::conj(x_in(big)) / std::abs(x_in(big)) : 1.0;
+  const Eigen::VectorXcd x = x_in * phase;
+  const Eigen::VectorXd a = x.real(), b = x.imag();
+  ring::ModeShape shape = sample(a);
+  ring::normalize(shape);
+  const int m = static_cast<int>(shape.radial.size());
+  Eigen::VectorXcd radial(m);
+  auto as_vector = [](const std::vector<double>& v) { return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()); };
+  if (b.norm() <= 1e-12 * a.norm()) {
+    radial = as_vector(shape.radial).cast<std::complex<double>>();
+  } else {
+    // sample() = (linear sample) / unknown scale: ra = A / alpha, rb = B / beta, rc = (A + B) / gamma,
+    // so rc = (alpha / gamma) ra + (beta / gamma) rb, least squares over every component.
+    const ring::ModeShape sa = sample(a), sb = sample(b), sc = sample(a + b);
+    Eigen::MatrixXd P(2 * m, 2);
+    Eigen::VectorXd q(2 * m);
+    P.col(0) << as_vector(sa.radial), as_vector(sa.tangential);
+    P.col(1) << as_vector(sb.radial), as_vector(sb.tangential);
+    q << as_vector(sc.radial), as_vector(sc.tangential);
+    const Eigen::Vector2d ab = P.colPivHouseholderQr().solve(q);
+    radial = (ab(0) * as_vector(sa.radial)).cast<std::complex<double>>() +
+             std::complex<double>(0.0, 1.0) * (ab(1) * as_vector(sb.radial)).cast<std::complex<double>>();
+  }
+  return {shape, classify_wave(radial, speed)};
+}
+
+}  // namespace modal
