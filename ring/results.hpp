@@ -45,6 +45,20 @@ struct Wave {
   int direction = 0;
 };
 
+/// A spinning ring's wave pair k (the driver's compare/spin.hpp): its lowest forward and lowest
+/// backward mode. rad/s.
+struct SpinPair {
+  int wave = 0;
+  double forward = 0.0, backward = 0.0;              ///< in the turning frame
+  /// In the fixed frame, signed: forward + k |speed| and backward - k |speed|; a negative
+  /// backward_fixed is a backward wave that the spin carries forward in space (past the
+  /// critical speed, where it stands still).
+  double forward_fixed = 0.0, backward_fixed = 0.0;
+  /// Bryan's factor: the rate at which the pair's standing pattern turns in space over the
+  /// spin's, 1 - (backward - forward) / (2 k |speed|); (k^2 - 1)/(k^2 + 1) for the inextensible ring.
+  double bryan = 0.0;
+};
+
 /// Natural frequencies and mode shapes of one model.
 struct ModalResult {
   std::string solver;                         ///< "multibody", "fem", "lumped"
@@ -79,6 +93,9 @@ struct ModalResult {
   /// radial entry is real.
   std::vector<Wave> waves;
   std::string frame;  ///< "rotating" or "fixed" for a spinning ring, "" at rest
+  /// A spinning ring's wave pairs, by wave number (the driver fills them from the turning
+  /// frame's waves: compare/spin.hpp).
+  std::vector<SpinPair> spin_pairs;
 };
 
 /// Linear buckling of one model (ring::BucklingOptions): the lowest positive critical load
