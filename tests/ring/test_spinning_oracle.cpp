@@ -11,6 +11,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "ring/closed_form.hpp"
@@ -217,6 +218,109 @@ TEST(SpinningOracle, BreathingModeKeepsAngularMomentum) {
     EXPECT_TRUE(IsClose(w.extensional.backward, w.extensional.forward, 1e-15)) << "f = " << f;
     // sqrt of a round-off ~1e-16 b2 in omega^2: ~1e-8 sqrt(b2) (measured <= 9e-10 sqrt(b2))
     EXPECT_NEAR(w.flexural.forward, 0.0, 1e-7 * std::sqrt(b2)) << "f = " << f;
+  }
+}
+
+// ---- The Timoshenko oracle (spintest::timoshenko) ----
+
+/// A thick version of the paper's ring (d = 1 m, d/R = 0.1: shear and rotary inertia matter)
+/// as a RingSpec (for ring::closed_form) and as the oracle's input.
+ring::RingSpec thick_spec(double kr = 0.0, double kt = 0.0) {
+  auto s = ringtest::free_ring();
+  s.section.diameter = 1.0;
+  s.theory = ring::Theory::timoshenko;
+  s.foundation.radial = kr;
+  s.foundation.tangential = kt;
+  return s;
+}
+
+spintest::TimoshenkoRing thick_ring(double speed, bool tension, double kr = 0.0, double kt = 0.0) {
+  const auto s = thick_spec(kr, kt);
+  spintest::TimoshenkoRing t;
+  t.ring.radius = s.radius;
+  t.ring.EI = s.EI();
+  t.ring.rhoA = s.rhoA();
+  t.ring.kr = kr;
+  t.ring.kt = kt;
+  t.ring.speed = speed;
+  t.ring.tension = tension;
+  t.EA = s.EA();
+  t.kGA = s.kGA();
+  t.rhoI = s.rhoI();
+  return t;
+}
+
+// Oracle: at rest the Timoshenko oracle is the free Timoshenko ring of Seidel & Erdelyi (1964)
+// and Kirkhope (1976), ring::closed_form::free_ring_timoshenko (its own basis, Cauchy-Binet and
+// bisection), with and without a foundation; and with EA = infinity its inextensible form
+// (free_ring_timoshenko_inextensional). 1e-10: two algorithms on the same pencil (measured
+// <= 3e-15).
+TEST(SpinningOracle, TimoshenkoAtRestIsTheClosedForm) {
+  for (const double kr : {0.0, 3.0e7})
+    for (int k = 0; k <= 6; ++k) {
+      const auto ref = ring::closed_form::free_ring_timoshenko(thick_spec(kr, 0.4 * kr), k);
+      const auto w = spintest::timoshenko(thick_ring(0.0, true, kr, 0.4 * kr), k);
+      ASSERT_EQ(w.branches.size(), 3u) << "k = " << k;
+      for (int j = 0; j < 3; ++j) {
+        EXPECT_TRUE(IsClose(w.branches[j].forward, ref[j], 1e-10, 1e-10)) << "k = " << k << ", branch " << j;
+        EXPECT_TRUE(IsClose(w.branches[j].backward, ref[j], 1e-10, 1e-10)) << "k = " << k << ", branch " << j;
+      }
+      if (k < 2) continue;
+      auto stiff = thick_ring(0.0, true, kr, 0.4 * kr);
+      stiff.EA = std::numeric_limits<double>::infinity();
+      const auto ri = ring::closed_form::free_ring_timoshenko_inextensional(thick_spec(kr, 0.4 * kr), k);
+      const auto wi = spintest::timoshenko(stiff, k);
+      ASSERT_EQ(wi.branches.size(), 2u) << "k = " << k;
+      for (int j = 0; j < 2; ++j)
+        EXPECT_TRUE(IsClose(wi.branches[j].backward, ri[j], 1e-10)) << "inextensible, k = " << k << ", branch " << j;
+    }
+}
+
+// Oracle: shear-rigid (kGA = infinity) without rotary inertia, the Timoshenko oracle is the
+// Euler-Bernoulli one (spintest::extensible: the quartic, a separate derivation and solve), and
+// with EA = infinity too the inextensible closed form (spintest::inextensible), spinning, both
+// tensions, with a foundation. 1e-10 (measured <= 9.2e-15).
+TEST(SpinningOracle, TimoshenkoShearRigidIsTheEulerBernoulliOracle) {
+  const double W = 0.3 * omega2_at_rest();
+  for (const bool tension : {true, false})
+    for (int k = 0; k <= 8; ++k) {
+      const auto e = paper_ring(W, tension, 1.0e5, 3.0e4);
+      spintest::TimoshenkoRing t;
+      t.ring = e.ring;
+      t.EA = e.EA;
+      const auto ref = spintest::extensible(e, k);
+      const auto w = spintest::timoshenko(t, k);
+      ASSERT_EQ(w.branches.size(), 2u) << "k = " << k;
+      EXPECT_TRUE(IsClose(w.branches[0].forward, ref.flexural.forward, 1e-10, 1e-10)) << "k = " << k;
+      EXPECT_TRUE(IsClose(w.branches[0].backward, ref.flexural.backward, 1e-10, 1e-10)) << "k = " << k;
+      EXPECT_TRUE(IsClose(w.branches[1].forward, ref.extensional.forward, 1e-10)) << "k = " << k;
+      EXPECT_TRUE(IsClose(w.branches[1].backward, ref.extensional.backward, 1e-10)) << "k = " << k;
+      if (k < 2) continue;
+      t.EA = std::numeric_limits<double>::infinity();
+      const auto ri = spintest::inextensible(t.ring, k);
+      const auto wi = spintest::timoshenko(t, k);
+      ASSERT_EQ(wi.branches.size(), 1u) << "k = " << k;
+      EXPECT_TRUE(IsClose(wi.branches[0].forward, ri.forward, 1e-10)) << "inextensible, k = " << k;
+      EXPECT_TRUE(IsClose(wi.branches[0].backward, ri.backward, 1e-10)) << "inextensible, k = " << k;
+    }
+}
+
+// Oracle: the thick spinning ring's k = 1 translation rests in space (as for the thin ring):
+// backward = Omega, forward = -Omega; the pattern lags (forward below backward) for k >= 2.
+// 1e-8 Omega: a double root found through a central-difference f' (measured <= 5.6e-12).
+TEST(SpinningOracle, TimoshenkoTranslationRestsAndForwardIsLower) {
+  for (const bool tension : {true, false}) {
+    const double W = 0.3 * ring::closed_form::free_ring_timoshenko(thick_spec(), 2)[0];
+    const auto t = thick_ring(W, tension);
+    const auto w1 = spintest::timoshenko(t, 1);
+    ASSERT_EQ(w1.branches.size(), 3u);
+    EXPECT_NEAR(w1.branches[0].backward, W, 1e-8 * W);
+    EXPECT_NEAR(w1.branches[0].forward, -W, 1e-8 * W);
+    for (int k = 2; k <= 6; ++k) {
+      const auto w = spintest::timoshenko(t, k);
+      ASSERT_EQ(w.branches.size(), 3u) << "k = " << k;
+      EXPECT_LT(w.branches[0].forward, w.branches[0].backward) << "k = " << k;
+    }
   }
 }
 

@@ -72,10 +72,45 @@
 // Solve: the 4 x 4 companion matrix of P/m^2 (Eigen), each root then polished by Newton on P
 // (the coefficients carry no cancellation, so the flexural roots keep their relative accuracy
 // although they lie sqrt(A R^2/I) below the extensional ones).
+//
+// ## The Timoshenko ring (shear and rotary inertia), exact per wave number
+// A TimoshenkoRing adds the cross-section's rotation psi (its own field), the shear stiffness
+// kGA and the rotary inertia rho I, with ring::closed_form::free_ring_timoshenko's kinematics:
+// shear strain gamma = psi - phi, change of curvature psi'/R (phi = (v - w')/R as above), energy
+// per length EA/2 eps^2 + kGA/2 gamma^2 + EI/2 (psi'/R)^2 + N0 E + foundation. The section turns
+// at Omega + psi_t in space: its kinetic energy rho I/2 (Omega + psi_t)^2 has no Coriolis term
+// (rho I Omega psi_t is a total time derivative) and no centrifugal softening (as the shared
+// vocabulary's K: the softening is of the translations' mass only). On q = (W, V, P) e^{i k theta},
+// P = R psi, each energy term c (l q)^2 contributes c l^H l to K_k:
+//   eps:    l = (1, ik, 0)/R,    c = EA + N0      (N0 E's eps^2/2 included, as above)
+//   gamma:  l = (ik, -1, 1)/R,   c = kGA
+//   psi'/R: l = (0, 0, ik)/R^2,  c = EI
+//   phi:    l = (-ik, 1, 0)/R,   c = N0           (N0 E's phi^2/2)
+// plus diag(kr - c, kt - c, 0); M = diag(m, m, rho I/R^2); G = 2 m Omega on (W, V) as above.
+// (kGA -> infinity: P = V - ik W and the bending row is (k^2, ik, 0)/R^2: the Euler-Bernoulli
+// K_k above.) The thin ring's stiff terms (EA, kGA: up to 1e16 above the flexural scale) are
+// taken apart exactly: in y = (l_eps q, l_gamma q, V) R, q = T y with
+//   T = [[1, 0, -ik], [0, 0, 1], [-ik, 1, 1 - k^2]]   (columns y1, y2, y3; det T = -1),
+// the stiff terms are diag(alpha, beta, 0), alpha = (EA + N0)/R^2, beta = kGA/R^2, and the rest
+// S(omega) = T^H (K_soft - omega^2 M + i omega G) T is of the flexural scale, so
+//   f(omega) = det(diag(alpha, beta, 0) + S)/(alpha beta)
+//            = S33 + det S[y2 y3]/beta + det S[y1 y3]/alpha + det S/(alpha beta)
+// (real: the matrix is Hermitian) carries no cancellation, and takes EA or kGA = infinity
+// (1/alpha or 1/beta = 0: y1 = 0 is inextensibility, y2 = 0 Euler-Bernoulli; y3 alone is
+// spintest::inextensible's mode, w = -v', R psi = v - w'). Roots: first guesses from the
+// Hermitian linearisation [[0, Kt^(1/2)], [Kt^(1/2), i Gt]] (Kt, Gt: K and G in coordinates
+// where M = I, on the finite coordinates; a massless y2 (rho I = 0) condensed out first, exactly,
+// as it has neither mass nor Coriolis term), whose eigenvalues are the roots to eps times the
+// largest; the non-Hermitian companion when Kt is not positive definite. Then Newton on f
+// (central-difference slope), and a close pair (the free ring's k = 1 translation) as the
+// root of f'. Branches ascending: n finite coordinates give 2 n roots r_0 <= ... <= r_{2n-1},
+// branch j forward -r_{n-1-j}, backward r_{n+j} (j = 0 flexural; then extensional and shear,
+// ascending, as ring::closed_form::free_ring_timoshenko's).
 #pragma once
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <complex>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -216,18 +251,25 @@ inline ExtensibleWaves extensible(const ExtensibleRing& e, int k) {
     // A double root (k = 1 of a free ring: the translation at rest in space, with its secular
     // companion) comes out of the companion and Newton only to sqrt(eps); it is the root of P'
     // there, which Newton finds quadratically.
-    for (std::size_t i = 0; i + 1 < roots.size(); ++i)
-      if (roots[i + 1] - roots[i] < 1e-6 * scale) {
-        double x = 0.5 * (roots[i] + roots[i + 1]);
-        for (int it = 0; it < 60; ++it) {
-          const double d = q.slope(x) / ((12.0 * x * x + 2.0 * q.c2));
-          if (!std::isfinite(d) || d == 0.0) break;
-          x -= d;
-          if (std::abs(d) < 1e-16 * std::abs(x)) break;
-        }
+    // A pair closer than 1e-6 of the scale is taken for one double root when P at the root of
+    // P' between them is at round-off (100 eps times the sum of P's terms' sizes); a distinct
+    // pair there has P = -P'' (sep/2)^2/2, above that for sep > ~1e-7 of the root.
+    for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
+      const double sep = roots[i + 1] - roots[i];
+      if (sep >= 1e-6 * scale) continue;
+      double x = 0.5 * (roots[i] + roots[i + 1]);
+      for (int it = 0; it < 60; ++it) {
+        const double d = q.slope(x) / ((12.0 * x * x + 2.0 * q.c2));
+        if (!std::isfinite(d) || d == 0.0) break;
+        x -= d;
+        if (std::abs(d) < 1e-16 * std::abs(x)) break;
+      }
+      const double size = x * x * x * x + std::abs(q.c2) * x * x + std::abs(q.c1 * x) + std::abs(q.c0);
+      if (std::abs(q(x)) <= 100.0 * std::numeric_limits<double>::epsilon() * size) {
         roots[i] = roots[i + 1] = x;
         ++i;
       }
+    }
   }
   std::sort(roots.begin(), roots.end());
   ExtensibleWaves out;
@@ -244,6 +286,212 @@ inline ExtensibleWaves extensible(const ExtensibleRing& e, int k) {
   if (roots.size() == 4) {
     fill(out.flexural, -roots[1], roots[2]);
     fill(out.extensional, -roots[0], roots[3]);
+  }
+  return out;
+}
+
+/// The ring of the Timoshenko oracle (file comment): an ExtensibleRing's data with the shear
+/// stiffness and the rotary inertia. EA or kGA may be infinite (inextensible; Euler-Bernoulli).
+struct TimoshenkoRing {
+  Ring ring;
+  double EA = std::numeric_limits<double>::infinity();   ///< N
+  double kGA = std::numeric_limits<double>::infinity();  ///< N
+  double rhoI = 0.0;                                     ///< kg m
+};
+
+/// The Timoshenko ring's wave number k: branches ascending (flexural first), each a WavePair,
+/// and the real roots, ascending (file comment). Unstable: branches empty, roots listed.
+struct TimoshenkoWaves {
+  std::vector<WavePair> branches;
+  std::vector<double> roots;
+};
+
+namespace detail {
+
+struct TimoshenkoPencil {
+  Eigen::Matrix3cd T, K, M, G;  ///< K = K_soft (without the EA and kGA terms), in q = (W, V, P)
+  double inv_alpha = 0.0, inv_beta = 0.0, alpha = 0.0, beta = 0.0;
+
+  /// f(omega) of the file comment.
+  double f(double w) const { return eval(w, false); }
+  /// The same sum with every product by its size: f's round-off is eps times this.
+  double size(double w) const { return eval(w, true); }
+
+  double eval(double w, bool sizes) const {
+    const std::complex<double> I(0.0, 1.0);
+    Eigen::Matrix3cd S;
+    if (sizes)
+      S = (T.cwiseAbs().transpose() * (K.cwiseAbs() + w * w * M.cwiseAbs() + std::abs(w) * G.cwiseAbs()) *
+           T.cwiseAbs())
+              .cast<std::complex<double>>();
+    else
+      S = T.adjoint() * (K - w * w * M + I * w * G) * T;
+    auto minor = [&](int a, int b) {
+      return sizes ? std::abs(S(a, a) * S(b, b)) + std::abs(S(a, b) * S(b, a))
+                   : (S(a, a) * S(b, b) - S(a, b) * S(b, a)).real();
+    };
+    double v = sizes ? std::abs(S(2, 2)) : S(2, 2).real();
+    if (inv_beta != 0.0) v += inv_beta * minor(1, 2);
+    if (inv_alpha != 0.0) v += inv_alpha * minor(0, 2);
+    if (inv_alpha != 0.0 && inv_beta != 0.0) {
+      if (sizes) {  // the six products of the 3 x 3 determinant
+        double d = 0.0;
+        const int P[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+        for (const auto& r : P) d += std::abs(S(0, r[0]) * S(1, r[1]) * S(2, r[2]));
+        v += inv_alpha * inv_beta * d;
+      } else {
+        v += inv_alpha * inv_beta * S.determinant().real();
+      }
+    }
+    return sizes ? std::abs(v) : v;
+  }
+};
+
+inline TimoshenkoPencil timoshenko_pencil(const TimoshenkoRing& t, int k) {
+  const Ring& r = t.ring;
+  const std::complex<double> I(0.0, 1.0), ik(0.0, double(k));
+  const double R = r.radius, W = std::abs(r.speed), m = r.rhoA, kk = double(k) * k;
+  const double N0 = r.tension ? m * W * W * R * R : 0.0, c = m * W * W;
+  TimoshenkoPencil p;
+  p.T << 1.0, 0.0, -ik, 0.0, 0.0, 1.0, -ik, 1.0, 1.0 - kk;
+  Eigen::RowVector3cd phi(-ik, 1.0, 0.0);
+  p.K = (N0 / (R * R)) * phi.adjoint() * phi;
+  p.K(2, 2) += r.EI * kk / (R * R * R * R);
+  p.K(0, 0) += r.kr - c;
+  p.K(1, 1) += r.kt - c;
+  p.M = Eigen::Matrix3cd::Zero();
+  p.M(0, 0) = m;
+  p.M(1, 1) = m;
+  p.M(2, 2) = t.rhoI / (R * R);
+  p.G = Eigen::Matrix3cd::Zero();
+  p.G(0, 1) = -2.0 * m * W;
+  p.G(1, 0) = 2.0 * m * W;
+  p.alpha = (t.EA + N0) / (R * R);
+  p.beta = t.kGA / (R * R);
+  p.inv_alpha = std::isinf(t.EA) ? 0.0 : 1.0 / p.alpha;
+  p.inv_beta = std::isinf(t.kGA) ? 0.0 : 1.0 / p.beta;
+  (void)I;
+  return p;
+}
+
+}  // namespace detail
+
+/// The Timoshenko ring's waves k >= 0 (file comment).
+inline TimoshenkoWaves timoshenko(const TimoshenkoRing& t, int k) {
+  using Mat = Eigen::MatrixXcd;
+  const std::complex<double> I(0.0, 1.0);
+  const detail::TimoshenkoPencil p = detail::timoshenko_pencil(t, k);
+  // y-coordinates: the stiff terms on the diagonal; keep the finite ones (y3 always).
+  const Eigen::Matrix3cd Ky0 = p.T.adjoint() * p.K * p.T, My0 = p.T.adjoint() * p.M * p.T,
+                         Gy0 = p.T.adjoint() * p.G * p.T;
+  std::vector<int> keep;
+  if (p.inv_alpha != 0.0) keep.push_back(0);
+  if (p.inv_beta != 0.0) keep.push_back(1);
+  keep.push_back(2);
+  const int n0 = int(keep.size());
+  Mat K(n0, n0), Ms(n0, n0), G(n0, n0);
+  for (int i = 0; i < n0; ++i)
+    for (int j = 0; j < n0; ++j) {
+      K(i, j) = Ky0(keep[i], keep[j]);
+      Ms(i, j) = My0(keep[i], keep[j]);
+      G(i, j) = Gy0(keep[i], keep[j]);
+    }
+  for (int i = 0; i < n0; ++i) {
+    if (keep[i] == 0) K(i, i) += p.alpha;
+    if (keep[i] == 1) K(i, i) += p.beta;
+  }
+  if (t.rhoI == 0.0 && p.inv_beta != 0.0) {  // y2 massless, no Coriolis: condense it exactly
+    const int s = (p.inv_alpha != 0.0) ? 1 : 0;  // its position in keep
+    std::vector<int> rest;
+    for (int i = 0; i < n0; ++i)
+      if (i != s) rest.push_back(i);
+    const int n1 = int(rest.size());
+    Mat K1(n1, n1), M1(n1, n1), G1(n1, n1);
+    for (int i = 0; i < n1; ++i)
+      for (int j = 0; j < n1; ++j) {
+        K1(i, j) = K(rest[i], rest[j]) - K(rest[i], s) * K(s, rest[j]) / K(s, s);
+        M1(i, j) = Ms(rest[i], rest[j]);
+        G1(i, j) = G(rest[i], rest[j]);
+      }
+    K = K1;
+    Ms = M1;
+    G = G1;
+  }
+  const int n = int(K.rows());
+  // M = L L^H: Kt = L^-1 K L^-H, Gt likewise.
+  const Eigen::LLT<Mat> llt(Ms);
+  Mat Kt = llt.matrixL().solve(K);
+  Kt = llt.matrixL().solve(Kt.adjoint().eval()).adjoint().eval();
+  Mat Gt = llt.matrixL().solve(G);
+  Gt = llt.matrixL().solve(Gt.adjoint().eval()).adjoint().eval();
+  Kt = (0.5 * (Kt + Kt.adjoint())).eval();
+  Gt = (0.5 * (Gt - Gt.adjoint())).eval();
+  std::vector<std::complex<double>> guesses;
+  const Eigen::SelfAdjointEigenSolver<Mat> ke(Kt);
+  if (ke.eigenvalues().minCoeff() > 0.0) {
+    const Mat root = ke.eigenvectors() * ke.eigenvalues().cwiseSqrt().asDiagonal() * ke.eigenvectors().adjoint();
+    Mat H = Mat::Zero(2 * n, 2 * n);
+    H.topRightCorner(n, n) = root;
+    H.bottomLeftCorner(n, n) = root;
+    H.bottomRightCorner(n, n) = I * Gt;
+    const Eigen::SelfAdjointEigenSolver<Mat> he(0.5 * (H + H.adjoint()));
+    for (int i = 0; i < 2 * n; ++i) guesses.push_back(he.eigenvalues()[i]);
+  } else {
+    Mat Z = Mat::Zero(2 * n, 2 * n);
+    Z.topRightCorner(n, n) = Mat::Identity(n, n);
+    Z.bottomLeftCorner(n, n) = Kt;
+    Z.bottomRightCorner(n, n) = I * Gt;
+    const Eigen::ComplexEigenSolver<Mat> ce(Z);
+    for (int i = 0; i < 2 * n; ++i) guesses.push_back(ce.eigenvalues()[i]);
+  }
+  double scale = 0.0;
+  for (const auto& g : guesses) scale = std::max(scale, std::abs(g));
+  auto slope = [&](double x) {
+    const double h = 1e-6 * std::max(std::abs(x), 1e-3 * scale);
+    return (p.f(x + h) - p.f(x - h)) / (2.0 * h);
+  };
+  std::vector<double> roots;
+  for (const auto& g : guesses) {
+    if (std::abs(g.imag()) > 1e-6 * scale) continue;  // flutter, divergence (as extensible)
+    double x = g.real();
+    for (int it = 0; it < 60; ++it) {
+      const double fx = p.f(x), d = fx / slope(x);
+      if (!std::isfinite(d) || !(std::abs(p.f(x - d)) < std::abs(fx))) break;
+      x -= d;
+    }
+    roots.push_back(x);
+  }
+  std::sort(roots.begin(), roots.end());
+  for (std::size_t i = 0; i + 1 < roots.size(); ++i) {  // a double root: the root of f' (as extensible)
+    const double sep = roots[i + 1] - roots[i];
+    if (sep < 1e-6 * scale) {
+      double x = 0.5 * (roots[i] + roots[i + 1]);
+      for (int it = 0; it < 60; ++it) {
+        const double h = 1e-4 * std::max(std::abs(x), 1e-3 * scale);
+        const double d1 = (p.f(x + h) - p.f(x - h)) / (2.0 * h);
+        const double d2 = (p.f(x + h) - 2.0 * p.f(x) + p.f(x - h)) / (h * h);
+        const double d = d1 / d2;
+        if (!std::isfinite(d) || std::abs(d) < 1e-15 * std::abs(x)) break;
+        x -= d;
+      }
+      if (std::abs(p.f(x)) <= 100.0 * std::numeric_limits<double>::epsilon() * p.size(x)) {
+        roots[i] = roots[i + 1] = x;
+        ++i;
+      }
+    }
+  }
+  TimoshenkoWaves out;
+  out.roots = roots;
+  if (int(roots.size()) == 2 * n) {
+    const double W = std::abs(t.ring.speed);
+    for (int j = 0; j < n; ++j) {
+      WavePair w;
+      w.forward = -roots[n - 1 - j];
+      w.backward = roots[n + j];
+      w.forward_fixed = w.forward + k * W;
+      w.backward_fixed = w.backward - k * W;
+      out.branches.push_back(w);
+    }
   }
   return out;
 }
