@@ -110,8 +110,8 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <complex>
 #include <cmath>
+#include <complex>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -119,12 +119,12 @@
 namespace spintest {
 
 struct Ring {
-  double radius = 10.0;  ///< R, m
-  double EI = 0.0;       ///< N m^2
-  double rhoA = 0.0;     ///< kg/m
+  double radius = 10.0;       ///< R, m
+  double EI = 0.0;            ///< N m^2
+  double rhoA = 0.0;          ///< kg/m
   double kr = 0.0, kt = 0.0;  ///< foundation, N/m^2
-  double speed = 0.0;    ///< Omega, rad/s
-  bool tension = true;   ///< rotation.tension = "spin"
+  double speed = 0.0;         ///< Omega, rad/s
+  bool tension = true;        ///< rotation.tension = "spin"
 };
 
 struct WavePair {
@@ -321,8 +321,7 @@ struct TimoshenkoPencil {
     const std::complex<double> I(0.0, 1.0);
     Eigen::Matrix3cd S;
     if (sizes)
-      S = (T.cwiseAbs().transpose() * (K.cwiseAbs() + w * w * M.cwiseAbs() + std::abs(w) * G.cwiseAbs()) *
-           T.cwiseAbs())
+      S = (T.cwiseAbs().transpose() * (K.cwiseAbs() + w * w * M.cwiseAbs() + std::abs(w) * G.cwiseAbs()) * T.cwiseAbs())
               .cast<std::complex<double>>();
     else
       S = T.adjoint() * (K - w * w * M + I * w * G) * T;
@@ -349,7 +348,7 @@ struct TimoshenkoPencil {
 
 inline TimoshenkoPencil timoshenko_pencil(const TimoshenkoRing& t, int k) {
   const Ring& r = t.ring;
-  const std::complex<double> I(0.0, 1.0), ik(0.0, double(k));
+  const std::complex<double> ik(0.0, double(k));
   const double R = r.radius, W = std::abs(r.speed), m = r.rhoA, kk = double(k) * k;
   const double N0 = r.tension ? m * W * W * R * R : 0.0, c = m * W * W;
   TimoshenkoPencil p;
@@ -370,7 +369,6 @@ inline TimoshenkoPencil timoshenko_pencil(const TimoshenkoRing& t, int k) {
   p.beta = t.kGA / (R * R);
   p.inv_alpha = std::isinf(t.EA) ? 0.0 : 1.0 / p.alpha;
   p.inv_beta = std::isinf(t.kGA) ? 0.0 : 1.0 / p.beta;
-  (void)I;
   return p;
 }
 
@@ -400,7 +398,7 @@ inline TimoshenkoWaves timoshenko(const TimoshenkoRing& t, int k) {
     if (keep[i] == 0) K(i, i) += p.alpha;
     if (keep[i] == 1) K(i, i) += p.beta;
   }
-  if (t.rhoI == 0.0 && p.inv_beta != 0.0) {  // y2 massless, no Coriolis: condense it exactly
+  if (t.rhoI == 0.0 && p.inv_beta != 0.0) {      // y2 massless, no Coriolis: condense it exactly
     const int s = (p.inv_alpha != 0.0) ? 1 : 0;  // its position in keep
     std::vector<int> rest;
     for (int i = 0; i < n0; ++i)
