@@ -1,4 +1,5 @@
 #include "compare/pairs.hpp"
+#include "compare/spin.hpp"
 #include "compare/commands.hpp"
 
 #include <fmt/format.h>
@@ -71,12 +72,19 @@ std::string modes_text(const ring::ModalResult& m) {
   std::ostringstream s;
   s << m.solver << ":";
   for (const auto& [k, v] : m.model) s << " " << k << "=" << model_value(v);
-  s << "\nrigid modes: " << m.rigid_modes << "\n\n  mode   omega rad/s        Hz\n";
-  for (std::size_t i = 0; i < m.omega.size(); ++i)
-    s << fmt::format("  {:4d}  {:>12}  {:>8}\n", i + 1, sig4(m.omega[i]), sig4(m.omega[i] / (2 * M_PI)));
+  s << "\nrigid modes: " << m.rigid_modes << "\n";
+  const bool waves = m.waves.size() == m.omega.size() && !m.waves.empty();
+  if (!m.frame.empty()) s << "spinning: frequencies in the " << (m.frame == "fixed" ? "fixed" : "turning") << " frame\n";
+  s << "\n  mode   omega rad/s        Hz" << (waves ? "  wave" : "") << "\n";
+  for (std::size_t i = 0; i < m.omega.size(); ++i) {
+    s << fmt::format("  {:4d}  {:>12}  {:>8}", i + 1, sig4(m.omega[i]), sig4(m.omega[i] / (2 * M_PI)));
+    if (waves) s << fmt::format("  {} {}", m.waves[i].number, direction_name(m.waves[i].direction));
+    s << "\n";
+  }
   s << fmt::format("\n{} unknowns, solved in {:.3g} s, max relative eigen-residual {} ({})\n", m.unknowns,
                    m.seconds, residual_cell(m), m.residual_norm);
   s << split_pairs_text({{m.solver, split_pairs(m)}}, false);
+  s << spin_pairs_text({{m.solver, m.spin_pairs}}, false);
   return s.str();
 }
 

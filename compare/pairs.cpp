@@ -65,7 +65,8 @@ std::pair<int, double> wave_of(const Harmonics& h) {
 
 std::vector<SplitPair> split_pairs(const ring::ModalResult& r) {
   std::vector<SplitPair> out;
-  if (r.arch || r.shapes.size() != r.omega.size()) return out;
+  // A spinning ring's pairs are travelling waves that the Coriolis term splits: compare/spin.hpp.
+  if (r.arch || r.shapes.size() != r.omega.size() || !r.waves.empty()) return out;
   const std::size_t m = r.omega.size();
   std::vector<Harmonics> h;
   std::vector<int> wave(m, 0);

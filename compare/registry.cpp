@@ -24,6 +24,7 @@
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "lumped_mass/preload.hpp"
+#include "compare/spin.hpp"
 #include "multibody/dynamics.hpp"
 #include "multibody/modes.hpp"
 #include "multibody/options.hpp"
@@ -469,6 +470,7 @@ SolverEntry wrapped(SolverEntry e) {
     e.modes = [modes](const ring::Scene& s, int count) {
       ring::ModalResult r = modes(s, count);
       r.arch = s.ring.is_arch();
+      finish_spin(r, s.ring.rotation.speed, s.modes.fixed_frame);
       return r;
     };
   }

@@ -10,6 +10,7 @@
 #include "compare/files.hpp"
 #include "compare/output.hpp"
 #include "compare/pairs.hpp"
+#include "compare/spin.hpp"
 #include "compare/plot.hpp"
 #include "compare/response.hpp"
 
@@ -35,6 +36,15 @@ nlohmann::json modes_json_value(const ring::ModalResult& m, bool with_shapes) {
   if (m.error_estimate > 0) j["error_estimate"] = m.error_estimate;
   // The pairs the scene's terms split (their frequencies, split and orientation).
   if (const auto pairs = split_pairs(m); !pairs.empty()) j["pairs"] = split_pairs_json(pairs);
+  // A spinning ring: the frame of omega, each mode's wave and the wave pairs with Bryan's factor.
+  if (!m.frame.empty()) j["frame"] = m.frame;
+  if (!m.waves.empty()) {
+    nlohmann::json wave = nlohmann::json::array(), direction = nlohmann::json::array();
+    for (const auto& w : m.waves) wave.push_back(w.number), direction.push_back(direction_name(w.direction));
+    j["wave"] = wave;
+    j["direction"] = direction;
+  }
+  if (!m.spin_pairs.empty()) j["wave_pairs"] = spin_pairs_json(m.spin_pairs);
   if (with_shapes) {
     nlohmann::json shapes = nlohmann::json::array();
     for (const auto& s : m.shapes) shapes.push_back({{"radial", s.radial}, {"tangential", s.tangential}});

@@ -13,6 +13,8 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -24,6 +26,7 @@
 #include "compare/nonlinear.hpp"
 #include "compare/output.hpp"
 #include "compare/plot.hpp"
+#include "compare/spin.hpp"
 #include "compare/progress.hpp"
 #include "compare/registry.hpp"
 #include "compare/runner.hpp"
@@ -339,6 +342,49 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
   return true;
 }
 
+/// The Campbell diagram of a sweep whose first key is rotation.speed: every wave branch
+/// ("wave k forward|backward" rows) per solver against the speed, and the critical speeds
+/// where a branch in the fixed frame changes sign (linear between the cases). Returns the
+/// markdown lines of the critical speeds, or nullopt when the sweep has no such rows.
+std::optional<std::string> plot_campbell(const std::string& dir, const std::vector<std::string>& keys,
+                                         const std::vector<SweepRow>& rows) {
+  if (keys.empty() || keys[0] != "rotation.speed") return std::nullopt;
+  std::map<std::string, Series> branches;
+  for (const auto& r : rows) {
+    if (r.status != "ok" || r.quantity.rfind("wave ", 0) != 0) continue;
+    std::string label = r.solver + ", " + r.quantity;
+    for (std::size_t i = 1; i < keys.size(); ++i) label += ", " + keys[i] + " = " + r.values[i];
+    Series& s = branches[label];
+    s.name = label;
+    s.x.push_back(std::strtod(r.values[0].c_str(), nullptr));
+    s.y.push_back(r.value);
+    if (r.quantity.find("backward") != std::string::npos) s.dash = 2;
+  }
+  if (branches.empty()) return std::nullopt;
+  std::vector<Series> plot;
+  std::ostringstream critical;
+  for (auto& [label, s] : branches) {
+    std::vector<std::size_t> order(s.x.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
+    Series sorted = s;
+    for (std::size_t i = 0; i < order.size(); ++i) sorted.x[i] = s.x[order[i]], sorted.y[i] = s.y[order[i]];
+    for (std::size_t i = 1; i < sorted.x.size(); ++i)
+      if ((sorted.y[i - 1] < 0.0) != (sorted.y[i] < 0.0)) {
+        const double x = sorted.x[i - 1] + (sorted.x[i] - sorted.x[i - 1]) * sorted.y[i - 1] / (sorted.y[i - 1] - sorted.y[i]);
+        critical << "- " << label << ": " << sig4(x) << " rad/s\n";
+      }
+    plot.push_back(sorted);
+  }
+  plot_series(dir, "campbell", "Campbell diagram: the waves' frequencies against the spin (dashed: backward)",
+              "rotation.speed (rad/s)", "omega (rad/s)", plot);
+  const std::string found = critical.str();
+  return "\n## Campbell diagram\n\n![campbell](campbell.png)\n\nCritical speeds (a branch of the fixed frame "
+         "through zero: the wave stands still in space): " +
+         (found.empty() ? std::string("none in the speeds swept (they show only with modes.frame = \"fixed\").\n")
+                        : "\n\n" + found);
+}
+
 }  // namespace
 
 std::vector<std::vector<std::string>> sweep_cases(const std::vector<std::string>& vary, bool zip,
@@ -432,6 +478,22 @@ std::vector<SweepRow> run_case(const std::string& text, const CommonArgs& a, int
           r.seconds = columns[c].seconds;
           rows.push_back(r);
         }
+      // A spinning ring: each wave pair's branches in the scene's frame (the fixed frame's
+      // signed, so that a backward wave passes through zero at its critical speed), the rows
+      // of the Campbell diagram.
+      const bool fixed = s.modes.fixed_frame;
+      for (const auto& col : columns)
+        for (const auto& p : col.spin_pairs)
+          for (const int dir : {1, -1}) {
+            SweepRow r = row();
+            r.solver = col.solver;
+            r.analysis = "modes";
+            r.quantity = "wave " + std::to_string(p.wave) + " " + direction_name(dir);
+            r.value = dir > 0 ? (fixed ? p.forward_fixed : p.forward) : (fixed ? p.backward_fixed : p.backward);
+            r.unknowns = col.unknowns;
+            r.seconds = col.seconds;
+            rows.push_back(r);
+          }
     }
     if (s.response || s.statics) {
       const NonlinearRun nl = run_nonlinear(s);
@@ -636,6 +698,7 @@ int cmd_sweep(const CommonArgs& a, const SweepArgs& args, int argc, char** argv)
      << cases.size() - todo.size() << " kept from an earlier run; " << failed_cases << " failed.\n\n"
      << "Data: `sweep.csv`, `sweep.json` (one row per case x solver x mode or recorded point).\n";
   if (plot_sweep(dir, keys, rows)) md << "\n![sweep](sweep.png)\n";
+  if (const auto campbell = plot_campbell(dir, keys, rows)) md << *campbell;
   write_file(dir + "/sweep.md", md.str());
   files.publish();
   return 0;

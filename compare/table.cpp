@@ -11,6 +11,7 @@
 
 #include "compare/grid.hpp"
 #include "compare/output.hpp"
+#include "compare/spin.hpp"
 #include "compare/registry.hpp"
 #include "ring/sampling.hpp"
 
@@ -247,8 +248,10 @@ Table build_table(const std::string& title, const std::vector<ring::ModalResult>
     t.columns.push_back(pair_column(base, r, rows));
     t.columns.back().theory = theory(r);
     t.splits.push_back({r.solver, split_pairs(r)});
+    t.spins.emplace_back(r.solver, r.spin_pairs);
   }
   if (reference) t.splits.push_back({"reference", split_pairs(*reference)});
+  if (reference) t.spins.emplace_back("reference", reference->spin_pairs);
   if (reference) {
     t.reference = pair_column(base, *reference, rows);
     t.reference->theory = theory(*reference);
@@ -280,13 +283,15 @@ std::vector<ring::PaperRow> paper_table() { return ring::parse_paper_table(ringv
 std::string format_text(const Table& t) {
   std::ostringstream s;
   if (!t.title.empty()) s << t.title << "\n\n";
-  s << text_grid(cells(t, true)) << "\n" << footnotes(t) << split_pairs_text(t.splits, false);
+  s << text_grid(cells(t, true)) << "\n" << footnotes(t) << split_pairs_text(t.splits, false)
+    << spin_pairs_text(t.spins, false);
   return s.str();
 }
 
 std::string format_markdown(const Table& t) {
   std::ostringstream s;
-  s << markdown_grid(cells(t, true)) << "\n" << footnotes(t) << split_pairs_text(t.splits, true);
+  s << markdown_grid(cells(t, true)) << "\n" << footnotes(t) << split_pairs_text(t.splits, true)
+    << spin_pairs_text(t.spins, true);
   return s.str();
 }
 
@@ -362,6 +367,8 @@ std::string format_json(const Table& t) {
   j["rows"] = rows;
   for (const auto& sp : t.splits)
     if (!sp.pairs.empty()) j["pairs"][sp.solver] = split_pairs_json(sp.pairs);
+  for (const auto& [solver, ps] : t.spins)
+    if (!ps.empty()) j["wave_pairs"][solver] = spin_pairs_json(ps);
   return j.dump(2) + "\n";
 }
 

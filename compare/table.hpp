@@ -44,6 +44,8 @@ struct Table {
   /// Each column's (and the reference's) pairs split by the scene's terms (compare/pairs.hpp),
   /// listed after the table where any has one.
   std::vector<SolverSplits> splits;
+  /// A spinning ring's wave pairs per solver (and "reference"), compare/spin.hpp.
+  std::vector<std::pair<std::string, std::vector<ring::SpinPair>>> spins;
 };
 
 /// Below this MAC a pairing compares unlike shapes: marked "?" in the table, with no
