@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "compare/pairs.hpp"
+#include "compare/spin.hpp"
 #include "ring/errors.hpp"
 #include "ring/scene.hpp"
 
@@ -161,6 +162,18 @@ Modes to_python(const ring::ModalResult& m) {
     d["relative_split"] = p.relative();
     d["orientation_deg"] = p.orientation;
     o.pairs.append(d);
+  }
+  o.frame = m.frame;
+  for (const auto& w : m.waves) o.wave.append(w.number), o.direction.append(cmp::direction_name(w.direction));
+  for (const auto& p : m.spin_pairs) {
+    py::dict d;
+    d["wave"] = p.wave;
+    d["forward"] = p.forward;
+    d["backward"] = p.backward;
+    d["forward_fixed"] = p.forward_fixed;
+    d["backward_fixed"] = p.backward_fixed;
+    d["bryan"] = p.bryan;
+    o.wave_pairs.append(d);
   }
   return o;
 }

@@ -34,6 +34,10 @@ struct Modes {
   std::optional<double> max_residual;  ///< None where the solver reports none (ccx, imports)
   std::string residual_norm;
   py::list pairs;  ///< the split pairs (compare/pairs.hpp): dicts as modes --json's "pairs"
+  /// A spinning ring (compare/spin.hpp): the frame of omega ("rotating", "fixed"; "" at rest),
+  /// each mode's wave number and direction, the wave pairs as modes --json's "wave_pairs".
+  std::string frame;
+  py::list wave, direction, wave_pairs;
 };
 Modes to_python(const ring::ModalResult& m);
 

@@ -333,6 +333,17 @@ PYBIND11_MODULE(ringvib, m) {
                     "{wave, modes (lower, upper; 1-based), omega (rad/s), split (rad/s), relative_split (of the\n"
                     "pair's mean), orientation_deg (the lower mode's radial antinode, in [0, 180/wave))}, as\n"
                     "`modes --json`'s \"pairs\"; empty for a perfect ring.")
+      .def_readonly("frame", &Modes::frame,
+                    "A spinning ring ([rotation]): the frame of omega, \"rotating\" (turning with the ring) or\n"
+                    "\"fixed\" (modes.frame); \"\" at rest.")
+      .def_readonly("wave", &Modes::wave, "A spinning ring: each mode's wave number k (list; empty at rest).")
+      .def_readonly("direction", &Modes::direction,
+                    "A spinning ring: each mode's travelling direction in its frame, \"forward\" (with the spin),\n"
+                    "\"backward\" or \"standing\" (list; empty at rest).")
+      .def_readonly("wave_pairs", &Modes::wave_pairs,
+                    "A spinning ring's wave pairs: dicts {wave, forward, backward (turning frame, rad/s),\n"
+                    "forward_fixed, backward_fixed (fixed frame, signed, rad/s), bryan (Bryan's factor: the\n"
+                    "standing pattern's turn in space over the spin's)}, as `modes --json`'s \"wave_pairs\".")
       .def_readonly("error_estimate", &Modes::error_estimate,
                     "Estimated remaining relative error of a converged reference (0: not estimated).")
       .def_property_readonly(
