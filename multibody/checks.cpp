@@ -97,6 +97,11 @@ void check_spinning(const ring::RingSpec& spec, const ring::MultibodyOptions& op
     throw std::invalid_argument("rotation.speed: the spinning ring has " + std::to_string(rigid) +
                                 " rigid motion(s) its supports leave free, and its stiffness in the turning frame must "
                                 "hold every motion; add supports, springs or a foundation");
+  // The spin's equilibrium and tangent are the nonlinear statics' (sections.hpp: the
+  // Timoshenko chain's condensed sections need hinge 0 held).
+  if (spec.theory == ring::Theory::timoshenko && spec.supports.free())
+    throw std::invalid_argument("multibody: the spinning Timoshenko chain (ring.theory = \"timoshenko\" with "
+                                "rotation.speed) needs a pinned ring (supports.pin)");
   // The unknowns: the angles [, x_0, y_0] less the constraint rows, [the shear angles,] the
   // point inertias' rotations; bounded above by this.
   long long unknowns = options.n + 2 + static_cast<long long>(spec.masses.size());
