@@ -25,6 +25,7 @@
 #include "multibody/modes.hpp"
 #include "multibody/spin.hpp"
 #include "multibody/statics.hpp"
+#include "ring/errors.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
 #include "support/paper.hpp"
@@ -308,6 +309,18 @@ TEST(SpinningChain, TranslationProductsAreTheCentroidsJacobians) {
   terms.add_mass(q, chain_mass);
   chain_mass.diagonal().head(n).array() -= chain.Jr();
   EXPECT_LT((tp.mass - chain_mass).norm(), 1e-13 * chain_mass.norm());
+}
+
+TEST(SpinningChain, PastTheDivergenceSpeedTheStiffnessIsNotPositive) {
+  // Without the tension, the closed form's k = 0 wave has K = pi R (kt - rho A speed^2): it
+  // diverges at speed = sqrt(kt / rho A) (4.12 rad/s); the chain's k = 0 frequency at n = 40 is
+  // within 2e-3 of it, so 5 % beyond is past the chain's divergence too: a numerical failure
+  // (exit 3), not a frequency. With the tension the k = 0 wave keeps kt (K = pi R kt) and the
+  // k = 1 wave diverges at sqrt((kr + kt) / (2 rho A)), the same speed here.
+  const double divergence = std::sqrt(1500.0 / ringtest::free_ring().rhoA());
+  EXPECT_THROW(multibody::compute_modes(spinning_ring(1.05 * divergence, Tension::none), mbtest::dense_chain(40), kCount),
+               ring::NumericalError);
+  EXPECT_NO_THROW(multibody::compute_modes(spinning_ring(0.95 * divergence, Tension::none), mbtest::dense_chain(40), kCount));
 }
 
 TEST(SpinningChain, AutoStaysDenseAndWhatCannotWorkIsRefusedByKey) {
