@@ -23,7 +23,11 @@ namespace multibody {
 /// pressure with both ends pinned; no ring.plastic); nothing for a ring. O(supports).
 void check_arch_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::Loads& loads);
 /// Linear modes: n >= 4, a positive section and material, method = "sparse" only with
-/// dependent = "robust" and n >= 10.
+/// dependent = "robust" and n >= 10. A spinning ring (rotation.speed; spin.hpp): a finite
+/// speed, a closed ring whose rigid motions are held, the dense path (method = "sparse"
+/// refused), dependent = "robust", the Timoshenko chain pinned, at most
+/// modal::kMaxGyroscopicUnknowns unknowns (multibody.n). The statics, buckling, response and
+/// modes under load refuse a spin (ring::refuse_rotation).
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options);
 /// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1;
 /// the Timoshenko chain on the dense path only, and without ring.plastic (ring::InputError:
