@@ -70,26 +70,29 @@ GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixX
   return out;
 }
 
-ring::Wave classify_wave(const Eigen::VectorXcd& radial, double speed) {
+ring::Wave classify_wave(const Eigen::VectorXcd& radial, const Eigen::VectorXcd& tangential, double speed) {
   const int m = static_cast<int>(radial.size());
   const double pi = std::acos(-1.0);
   int best = 0;
-  double best_power = -1.0, plus = 0.0, minus = 0.0;
+  double best_power = -1.0, plus = 0.0, minus = 0.0;  // |c_k|^2 and |c_-k|^2 of both parts
   for (int k = 0; k <= m / 2; ++k) {
-    std::complex<double> cp = 0.0, cm = 0.0;  // c_k and c_-k
-    for (int s = 0; s < m; ++s) {
-      const double a = 2.0 * pi * k * s / m;
-      const std::complex<double> e(std::cos(a), -std::sin(a));
-      cp += radial(s) * e;
-      cm += radial(s) * std::conj(e);
+    double p_plus = 0.0, p_minus = 0.0;
+    for (const Eigen::VectorXcd* part : {&radial, &tangential}) {
+      std::complex<double> cp = 0.0, cm = 0.0;  // c_k and c_-k
+      for (int s = 0; s < m; ++s) {
+        const double a = 2.0 * pi * k * s / m;
+        const std::complex<double> e(std::cos(a), -std::sin(a));
+        cp += (*part)(s) * e;
+        cm += (*part)(s) * std::conj(e);
+      }
+      p_plus += std::norm(cp), p_minus += std::norm(cm);
     }
-    const double p = std::norm(cp) + std::norm(cm);
-    if (p > best_power * (1.0 + 1e-12)) best = k, best_power = p, plus = std::abs(cp), minus = std::abs(cm);
+    if (p_plus + p_minus > best_power * (1.0 + 1e-12)) best = k, best_power = p_plus + p_minus, plus = p_plus, minus = p_minus;
   }
   ring::Wave w;
   w.number = best;
-  // Towards +theta (c_-k the larger) is with a positive spin.
-  if (best == 0 || std::abs(minus - plus) <= 1e-6 * std::max(minus, plus)) return w;
+  // Towards +theta (c_-k the larger) is with a positive spin; powers agree to 2e-6 for amplitudes to 1e-6.
+  if (best == 0 || std::abs(minus - plus) <= 2e-6 * std::max(minus, plus)) return w;
   const int towards_plus = minus > plus ? 1 : -1;
   w.direction = speed >= 0.0 ? towards_plus : -towards_plus;
   return w;
@@ -106,10 +109,11 @@ std::pair<ring::ModeShape, ring::Wave> travelling_mode(const Eigen::VectorXcd& x
   ring::ModeShape shape = sample(a);
   ring::normalize(shape);
   const int m = static_cast<int>(shape.radial.size());
-  Eigen::VectorXcd radial(m);
+  Eigen::VectorXcd radial(m), tangential(m);
   auto as_vector = [](const std::vector<double>& v) { return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()); };
   if (b.norm() <= 1e-12 * a.norm()) {
     radial = as_vector(shape.radial).cast<std::complex<double>>();
+    tangential = as_vector(shape.tangential).cast<std::complex<double>>();
   } else {
     // sample() = (linear sample) / unknown scale: ra = A / alpha, rb = B / beta, rc = (A + B) / gamma,
     // so rc = (alpha / gamma) ra + (beta / gamma) rb, least squares over every component.
@@ -122,8 +126,10 @@ std::pair<ring::ModeShape, ring::Wave> travelling_mode(const Eigen::VectorXcd& x
     const Eigen::Vector2d ab = P.colPivHouseholderQr().solve(q);
     radial = (ab(0) * as_vector(sa.radial)).cast<std::complex<double>>() +
              std::complex<double>(0.0, 1.0) * (ab(1) * as_vector(sb.radial)).cast<std::complex<double>>();
+    tangential = (ab(0) * as_vector(sa.tangential)).cast<std::complex<double>>() +
+                 std::complex<double>(0.0, 1.0) * (ab(1) * as_vector(sb.tangential)).cast<std::complex<double>>();
   }
-  return {shape, classify_wave(radial, speed)};
+  return {shape, classify_wave(radial, tangential, speed)};
 }
 
 }  // namespace modal

@@ -21,7 +21,8 @@
 // centrifugal softening overcomes a mode's stiffness: a divergence) is a ring::NumericalError.
 //
 // ## The wave of a mode (travelling_mode)
-// The radial shape at the common stations, w(theta) = sum_k c_k e^{i k theta}: the term
+// The shape at the common stations, w(theta) = sum_k c_k e^{i k theta} (radial and tangential
+// parts, their powers added): the term
 // c_k e^{i (k theta + omega t)} travels towards -theta, c_-k e^{i (omega t - k theta)} towards
 // +theta. The wave number is the k >= 0 of the largest |c_k|^2 + |c_-k|^2; the direction is
 // +1 (with the spin) when the part travelling in the spin's sense is the larger, -1 against,
@@ -65,7 +66,9 @@ std::pair<ring::ModeShape, ring::Wave> travelling_mode(const Eigen::VectorXcd& x
                                                        const std::function<ring::ModeShape(const Eigen::VectorXd&)>& sample,
                                                        double speed);
 
-/// The wave of a complex radial shape at the kStations common stations (file comment). O(kStations^2).
-ring::Wave classify_wave(const Eigen::VectorXcd& radial, double speed);
+/// The wave of a complex shape at the kStations common stations (file comment), from its
+/// radial and tangential parts together: a wave k moves both alike, and the mode of a ring
+/// turning on its tangential foundation (k = 0) has no radial part to speak of. O(kStations^2).
+ring::Wave classify_wave(const Eigen::VectorXcd& radial, const Eigen::VectorXcd& tangential, double speed);
 
 }  // namespace modal

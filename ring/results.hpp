@@ -36,7 +36,7 @@ inline const char* const kResidual2Norm = "2-norm";
 using ModelValue = std::variant<long long, double, bool, std::string>;
 
 /// A mode of a spinning ring (rotation.speed != 0): the travelling wave its complex shape is.
-/// x(t) = Re(x e^{i omega t}); the radial shape's Fourier coefficients c_k (w = sum c_k e^{i k theta})
+/// x(t) = Re(x e^{i omega t}); the Fourier coefficients c_k of its radial and tangential shape (w = sum c_k e^{i k theta})
 /// name it: `number` the wave number k >= 0 of the largest |c_k|^2 + |c_-k|^2, `direction` +1 when
 /// it travels in the sense of the spin (c_-k the larger for a positive speed), -1 against it, 0
 /// standing (|c_k| = |c_-k| to 1e-6 of them, as at rest). modal::classify_wave.

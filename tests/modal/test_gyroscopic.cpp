@@ -80,15 +80,20 @@ Eigen::VectorXcd wave(int k, int towards) {  // e^{-i towards k theta} travels t
 }
 
 TEST(ClassifyWave, NamesTheWaveNumberAndTheSenseAgainstTheSpin) {
-  ring::Wave w = modal::classify_wave(wave(3, +1), 2.0);
+  ring::Wave w = modal::classify_wave(wave(3, +1), wave(3, +1) * 0.5, 2.0);
   EXPECT_EQ(w.number, 3);
   EXPECT_EQ(w.direction, 1);
-  w = modal::classify_wave(wave(3, +1), -2.0);  // the same wave on a ring spinning the other way
+  w = modal::classify_wave(wave(3, +1), wave(3, +1) * 0.5, -2.0);  // the same wave on a ring spinning the other way
   EXPECT_EQ(w.direction, -1);
-  w = modal::classify_wave(wave(2, -1) + 0.3 * wave(2, +1), 1.0);  // mostly backward, a little forward
+  w = modal::classify_wave(wave(2, -1) + 0.3 * wave(2, +1), Eigen::VectorXcd::Zero(ring::kStations), 1.0);  // mostly backward, a little forward
   EXPECT_EQ(w.number, 2);
   EXPECT_EQ(w.direction, -1);
-  w = modal::classify_wave(wave(2, -1) + wave(2, +1), 1.0);  // standing: cos 2 theta
+  w = modal::classify_wave(wave(2, -1) + wave(2, +1), Eigen::VectorXcd::Zero(ring::kStations), 1.0);  // standing: cos 2 theta
+  EXPECT_EQ(w.direction, 0);
+  // The ring turning on a tangential foundation: no radial motion but a small polygon ripple
+  // (wave 40 at 1e-3), all of it tangential and uniform: wave 0.
+  w = modal::classify_wave(1e-3 * wave(40, +1), Eigen::VectorXcd::Ones(ring::kStations), 1.0);
+  EXPECT_EQ(w.number, 0);
   EXPECT_EQ(w.direction, 0);
 }
 
