@@ -102,7 +102,7 @@ class FrameLoads {
   Eigen::VectorXd gradient(const Eigen::VectorXd& q) const;
   void add_hessian(const Eigen::VectorXd& q, double scale, Triplets& out) const;
   /// Adds the spin's centrifugal body force on the translational mass (ChainLoads::set_spin).
-  void set_spin(double speed) { loads_->set_spin(speed); }
+  void set_spin(double speed);
 
  private:
   const Frame& f_;

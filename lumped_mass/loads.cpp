@@ -33,8 +33,7 @@ double midpoint_radii(const Vec& x, int n, int links) {
 
 ChainLoads::ChainLoads(const ring::Loads& loads, const Vec& rest, double side,
                        const Eigen::SparseMatrix<double>& translational_mass, const std::vector<int>& hinges, bool open)
-    : n_(static_cast<int>(rest.size() / 2)), links_(open ? n_ - 1 : n_), l_(side), pressure_(loads.pressure), rest_(rest),
-      mass_(translational_mass) {
+    : n_(static_cast<int>(rest.size() / 2)), links_(open ? n_ - 1 : n_), l_(side), pressure_(loads.pressure), rest_(rest) {
   const int n = n_;
   dead_ = Vec::Zero(2 * n);
   for (std::size_t i = 0; i < loads.points.size(); ++i) {

@@ -67,8 +67,12 @@ class ChainLoads {
   void add_hessian(const Eigen::VectorXd& x, double scale, Triplets& out) const;
   bool has_stiffness() const;
   /// Adds the centrifugal body force of a spin at `speed` rad/s (file comment) on the
-  /// translational mass given to the constructor. O(n).
-  void set_spin(double speed) { spin2_ = speed * speed; }
+  /// translational mass M_t (2n x 2n, as the constructor's; kept only here, so that the other
+  /// analyses carry no copy). O(n).
+  void set_spin(double speed, const Eigen::SparseMatrix<double>& translational_mass) {
+    spin2_ = speed * speed;
+    mass_ = translational_mass;
+  }
 
  private:
   int n_ = 0, links_ = 0;
@@ -77,7 +81,7 @@ class ChainLoads {
   Eigen::VectorXd rest_;
   Eigen::VectorXd dead_;  ///< the position-independent force at load factor 1 (points, gravity, dead pressure)
   double area0_ = 0.0, central0_ = 0.0;
-  Eigen::SparseMatrix<double> mass_;  ///< M_t, for the spin's centrifugal force
+  Eigen::SparseMatrix<double> mass_;  ///< M_t of set_spin (empty without a spin)
   double spin2_ = 0.0;                ///< Omega^2 of set_spin, 1/s^2; 0: no spin
 };
 

@@ -114,7 +114,7 @@ ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::LumpedO
   const int N = 2 * c.n;
   const Sparse Mt = mass_matrix(c);
   ChainLoads loads(ring::Loads{}, c.rest, c.l, Mt, {}, c.open);
-  loads.set_spin(speed);
+  loads.set_spin(speed, Mt);
 
   // 1. The state the modes are about and its multipliers: the centrifugal equilibrium on the
   //    statics' path (tension = spin), or the undeformed chain without prestress (none).
