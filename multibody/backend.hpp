@@ -50,9 +50,11 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
 /// take it): the paper's ring runs in segment angles (shifted_solve.hpp), its terms beyond
 /// (attachments.hpp: foundation, springs, clamp, further pins, point masses) in hinge
 /// positions (position_modes.hpp), pinned or free; neither has the shear angles, nor a point
-/// inertia's own hinge rotation (the dense path's unknown chi, linear_model.hpp). The modes
-/// under load (modes.preload) are the dense path's as well: check_preloaded_modes. O(masses).
+/// inertia's own hinge rotation (the dense path's unknown chi, linear_model.hpp), nor the
+/// spinning ring's gyroscopic modes (spin.hpp: dense). The modes under load (modes.preload)
+/// are the dense path's as well: check_preloaded_modes. O(masses).
 inline std::string banded_modes_lacks(const ring::RingSpec& spec) {
+  if (spec.rotation.spinning()) return "spinning ring (rotation.speed: its gyroscopic modes are dense)";
   if (spec.theory == ring::Theory::timoshenko) return "Timoshenko chain (ring.theory = \"timoshenko\")";
   for (std::size_t i = 0; i < spec.masses.size(); ++i)
     if (spec.masses[i].inertia > 0.0)

@@ -15,6 +15,7 @@ namespace multibody {
 void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::BucklingOptions& buckling) {
   check_arch_buckling(spec, options, buckling.loads);  // an arch: the statics' loads (checks.hpp)
+  ring::refuse_rotation(spec, "multibody linear buckling");
   if (spec.plastic)
     throw ring::InputError("", "ring.plastic",
                            "multibody linear buckling is about the undeformed, elastic ring and would ignore the "

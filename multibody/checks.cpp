@@ -7,6 +7,7 @@
 #include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
 #include "multibody/bending.hpp"
+#include "modal/gyroscopic.hpp"
 #include "ring/errors.hpp"
 
 namespace multibody {
@@ -76,9 +77,47 @@ void check_arch_buckling(const ring::RingSpec& spec, const ring::MultibodyOption
   check_arch_loads(spec, loads, "buckling");
 }
 
+namespace {
+
+/// The spinning ring's modes (spin.hpp): dense, in robust coordinates, on a closed ring whose
+/// rigid motions are held, at most modal::kMaxGyroscopicUnknowns unknowns. O(masses).
+void check_spinning(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
+  const double speed = spec.rotation.speed;
+  if (!std::isfinite(speed))
+    throw std::invalid_argument("rotation.speed = " + std::to_string(speed) + " rad/s must be finite");
+  if (spec.is_arch())
+    throw std::invalid_argument("the multibody modes of a spinning arch (ring.arc with rotation.speed) are not offered yet");
+  if (options.method == ring::MultibodyOptions::Method::sparse)
+    throw std::invalid_argument("multibody.method = \"sparse\" does not take rotation.speed yet (the spinning ring's "
+                                "gyroscopic modes are dense): set multibody.method = \"dense\" or \"auto\"");
+  if (options.dependent == ring::MultibodyOptions::Dependent::paper)
+    throw std::invalid_argument("multibody.dependent = \"paper\" does not take rotation.speed yet (the spinning ring's "
+                                "modes take the constraints' orthonormal tangent space): use \"robust\"");
+  if (const int rigid = spec.rigid_modes(); rigid > 0)
+    throw std::invalid_argument("rotation.speed: the spinning ring has " + std::to_string(rigid) +
+                                " rigid motion(s) its supports leave free, and its stiffness in the turning frame must "
+                                "hold every motion; add supports, springs or a foundation");
+  // The spin's equilibrium and tangent are the nonlinear statics' (sections.hpp: the
+  // Timoshenko chain's condensed sections need hinge 0 held).
+  if (spec.theory == ring::Theory::timoshenko && spec.supports.free())
+    throw std::invalid_argument("multibody: the spinning Timoshenko chain (ring.theory = \"timoshenko\" with "
+                                "rotation.speed) needs a pinned ring (supports.pin)");
+  // The unknowns: the angles [, x_0, y_0] less the constraint rows, [the shear angles,] the
+  // point inertias' rotations; bounded above by this.
+  long long unknowns = options.n + 2 + static_cast<long long>(spec.masses.size());
+  if (spec.theory == ring::Theory::timoshenko) unknowns += options.n;
+  if (unknowns > modal::kMaxGyroscopicUnknowns)
+    throw std::invalid_argument("multibody.n = " + std::to_string(options.n) +
+                                " is too large for the spinning ring's dense gyroscopic modes (at most " +
+                                std::to_string(modal::kMaxGyroscopicUnknowns) + " unknowns, " + std::to_string(unknowns) +
+                                " here): lower multibody.n (the chain's error is order 2 in 1/n)");
+}
+
+}  // namespace
+
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
   check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
-  ring::refuse_rotation(spec, "the multibody modes");
+  if (spec.rotation.spinning()) check_spinning(spec, options);
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
   // What neither O(n) path assembles (backend.hpp, banded_modes_lacks; "auto" keeps it dense).
   if (sparse)
@@ -115,6 +154,9 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
   check_arch(spec, options, "the multibody statics", PlasticUse::taken);
+  // The chain's loads hold the centrifugal force of a spinning spec (loading.hpp), but the
+  // statics have no turning frame to report in yet.
+  ring::refuse_rotation(spec, "the multibody statics");
   check_arch_loads(spec, statics.loads, "static");
   // The O(n) statics (hinge positions) assemble every term and load; "auto" keeps the rest
   // dense (backend.hpp, banded_statics_lacks): the shear angles (sections.hpp).
@@ -154,6 +196,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics) {
+  ring::refuse_rotation(spec, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
   if (spec.plastic)
@@ -171,6 +214,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
   check_arch(spec, options, "the multibody response", PlasticUse::refused);
+  ring::refuse_rotation(spec, "the multibody response");
   if (spec.is_arch()) {
     // The dense angle integrators (newmark, generalized-alpha) on the open chain whose far end
     // is pinned (its rows: the partitioning's dependent angles), under point loads.

@@ -66,6 +66,13 @@ Loading::Loading(const Chain& chain, const ring::RingSpec& spec, const ring::Loa
       break;
     case ring::Pressure::Kind::central: central_ = p; break;
   }
+  if (spec.rotation.spinning()) {
+    spin2_ = spec.rotation.speed * spec.rotation.speed;
+    segment_mass_ = spec.rhoA() * l;
+    for (std::size_t i = 0; i < spec.masses.size(); ++i)
+      point_masses_.emplace_back(hinge(spec.masses[i].angle, "masses[" + std::to_string(i + 1) + "].at"),
+                                 spec.masses[i].mass);
+  }
   rest_shape_ = shape_potential(rest_);
 }
 
@@ -117,6 +124,26 @@ Eigen::Matrix2Xd Loading::hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<
       }
     }
   }
+  if (spin2_ != 0.0) {
+    // -speed^2 / 2 m |c_j|^2, c_j = (p_j + p_{j+1}) / 2: gradient -speed^2 m c_j / 2 at each end.
+    const double w = spin2_ * segment_mass_;
+    const Eigen::Matrix2d h = -0.25 * w * Eigen::Matrix2d::Identity();
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector2d c = 0.5 * (p.col(j) + p.col(j + 1));
+      g.col(j) -= 0.5 * w * c;
+      g.col(j + 1) -= 0.5 * w * c;
+      if (H) {
+        H->push_back({j, j, h});
+        H->push_back({j, j + 1, h});
+        H->push_back({j + 1, j, h});
+        H->push_back({j + 1, j + 1, h});
+      }
+    }
+    for (const auto& [k, m] : point_masses_) {
+      g.col(k) -= spin2_ * m * p.col(k);
+      if (H) H->push_back({k, k, -spin2_ * m * Eigen::Matrix2d::Identity()});
+    }
+  }
   return g;
 }
 
@@ -131,7 +158,12 @@ double Loading::shape_potential(const Eigen::Matrix2Xd& p) const {
     for (Eigen::Index j = 0; j + 1 < p.cols(); ++j)
       for (std::size_t i = 0; i < kXi.size(); ++i)
         radius += chain_.l() * kW[i] * ((1.0 - kXi[i]) * p.col(j) + kXi[i] * p.col(j + 1)).norm();
-  return follower_ * area + central_ * radius;
+  double spin = 0.0;  // sum_j m |c_j|^2 + sum_k m_k |p_k|^2
+  if (spin2_ != 0.0) {
+    for (Eigen::Index j = 0; j + 1 < p.cols(); ++j) spin += segment_mass_ * (0.5 * (p.col(j) + p.col(j + 1))).squaredNorm();
+    for (const auto& [k, m] : point_masses_) spin += m * p.col(k).squaredNorm();
+  }
+  return follower_ * area + central_ * radius - 0.5 * spin2_ * spin;
 }
 
 double Loading::potential(const Vector& q) const {

@@ -20,6 +20,15 @@
 //   the force -p dA/dp_k is p times the inward normal of the deformed neighbours;
 // - central pressure: Pi = p sum_j int_0^l |x(s)| ds, x(s) on the deformed segment, by
 //   4-point Gauss-Legendre (error O((l/R)^8) against the segment's O((l/R)^2)).
+// - the centrifugal body force of a spinning ring (spec.rotation, in the frame turning with
+//   it): Pi = -speed^2 / 2 (sum_j m |c_j|^2 + sum_k m_k |p_k|^2), c_j = (p_j + p_{j+1}) / 2 the
+//   segment's centroid (a rigid segment's centrifugal force is m speed^2 c_j, through c_j; its
+//   rotary inertia adds a constant), m_k the point masses. Quadratic in the hinge positions:
+//   blocks -speed^2 m / 4 on (j, j), (j, j + 1), (j + 1, j), (j + 1, j + 1) and -speed^2 m_k
+//   at hinge k, i.e. the centrifugal softening -speed^2 M_trans (the translations' mass). It
+//   is part of every Loading of a spinning spec, scaled by the load factor like the others
+//   (the spin's equilibrium, spin.hpp); the analyses that do not take a spin refuse it
+//   (checks.hpp).
 // Hinge p_n is the chain's far end (p_0 when the closure holds). On an arch the polygon
 // p_0 .. p_n closes through its ends: with both ends pinned that side is constant, and p A is
 // the follower pressure's potential exactly (refused otherwise).
@@ -34,6 +43,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 #include "multibody/chain.hpp"
@@ -73,8 +83,9 @@ class Loading {
   /// (2 x (n + 1)) and, if `H` is not null, the non-zero Hessian blocks (O(n) of them:
   /// hinge k with k and k + 1, and the closing pair (n, 0)). O(n).
   Eigen::Matrix2Xd hinge_gradient(const Eigen::Matrix2Xd& p, std::vector<Block>* H) const;
-  /// True when Pi has a Hessian in the hinge positions (follower or central pressure).
-  bool shape_dependent() const { return follower_ != 0.0 || central_ != 0.0; }
+  /// True when Pi has a Hessian in the hinge positions (follower or central pressure, the
+  /// centrifugal force).
+  bool shape_dependent() const { return follower_ != 0.0 || central_ != 0.0 || spin2_ != 0.0; }
 
  private:
   /// Hinge positions p_0 .. p_n (2 x (n + 1)). O(n).
@@ -82,7 +93,8 @@ class Loading {
   /// -l e(phi_j) . sum_{k > j} g_k: the hinge gradients g pulled through the curvature of
   /// the hinge positions in the angles (d2 p_k / d phi_j^2 = -l e(phi_j), j < k). O(n).
   Vector angle_curvature(const Vector& q, const Eigen::Matrix2Xd& g) const;
-  /// The shape-dependent part of Pi (follower and central pressure) at hinge positions p.
+  /// The shape-dependent part of Pi (follower and central pressure, the centrifugal force)
+  /// at hinge positions p.
   double shape_potential(const Eigen::Matrix2Xd& p) const;
 
   const Chain& chain_;
@@ -90,6 +102,9 @@ class Loading {
   Eigen::Matrix2Xd rest_;  ///< rest positions P_0 .. P_n
   double follower_ = 0.0;  ///< p of follower pressure, N/m
   double central_ = 0.0;   ///< p of central pressure, N/m
+  double spin2_ = 0.0;     ///< speed^2 of a spinning spec (the centrifugal force), rad^2/s^2
+  double segment_mass_ = 0.0;                        ///< m = rho A l, kg
+  std::vector<std::pair<int, double>> point_masses_;  ///< (hinge, kg): their centrifugal force
   double rest_shape_ = 0.0;  ///< follower p A + central p int |x| ds0 of the rest polygon, J
 };
 

@@ -20,6 +20,7 @@
 #include "multibody/lanczos.hpp"
 #include "multibody/position_modes.hpp"
 #include "multibody/shifted_solve.hpp"
+#include "multibody/spin.hpp"
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
@@ -311,6 +312,8 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
                           SparseEigensolver eigensolver) {
   const auto start = std::chrono::steady_clock::now();
   check_modes(spec, options);
+  // The spinning ring's modes are complex (spin.hpp): compute_modes has them.
+  ring::refuse_rotation(spec, "multibody::solve_modes (the modes at rest; compute_modes has the spinning ring's)");
   const Chain chain(spec, options);
   const bool sparse = backend(options, spec, count) == Backend::banded;
   const double s = modal::bending_scale(spec);
@@ -393,6 +396,7 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
 
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 int count) {
+  if (spec.rotation.spinning()) return compute_spinning_modes(spec, options, count);
   return solve_modes(spec, options, count).result;
 }
 

@@ -120,8 +120,8 @@ struct ModalSolution {
 /// Solves for the `count` lowest elastic modes (see the file comment).
 /// \param count 1 <= count <= r - rigid modes of the supports; otherwise
 ///        std::invalid_argument naming the range.
-/// Throws std::invalid_argument for an invalid chain (see Chain) or method = sparse with
-/// dependent = paper, ring::NumericalError
+/// Throws std::invalid_argument for an invalid chain (see Chain), method = sparse with
+/// dependent = paper or a spinning ring (its modes: compute_modes), ring::NumericalError
 /// if M0 or K0 + s M0 is not positive definite or the eigensolver does not converge.
 /// The rigid modes found are reported as found (result.rigid_modes), not forced to the
 /// supports' count.
@@ -132,7 +132,8 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
 ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options, int count,
                           SparseEigensolver eigensolver);
 
-/// The project-wide entry point: solve_modes(...).result.
+/// The project-wide entry point: solve_modes(...).result at rest; for a spinning ring
+/// (spec.rotation.spinning()) the gyroscopic modes of spin.hpp (compute_spinning_modes).
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                 int count);
 

@@ -59,6 +59,11 @@ double memory_estimate(const ring::RingSpec& spec, const ring::MultibodyOptions&
   // Modes under load (dense): the statics' path, then T, Z, the reduced pencil and the
   // eigensolver's work; measured 92 and 81 n^2 at n = 400, 800.
   if (count > 0 && q.preload) return 100.0 * n * n;
+  // The spinning ring's gyroscopic modes (spin.hpp): the spin's statics and pencil as the modes
+  // under load, then the Hermitian matrix of order 2N and its eigenvectors (complex, 2 x 64 N^2
+  // bytes) with LAPACK's workspace; counted, not measured: 100 n^2 + 200 N^2.
+  if (count > 0 && spec.rotation.spinning())
+    return 100.0 * n * n + 200.0 * (spec.theory == ring::Theory::timoshenko ? 4.0 : 1.0) * n * n;
   // The Timoshenko chain's dense matrices are (2n)^2: its shear angles double the unknowns.
   const double N = spec.theory == ring::Theory::timoshenko ? 2.0 * n : n;
   // The O(n) modes with the terms (hinge positions, multibody/position_modes.hpp): the

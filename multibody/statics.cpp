@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "modal/buckling.hpp"
+#include "modal/gyroscopic.hpp"
 #include "modal/modes.hpp"
 #include "ring/errors.hpp"
 
@@ -21,6 +22,7 @@
 #include "multibody/linear_model.hpp"
 #include "multibody/sections.hpp"
 #include "multibody/static_equilibria.hpp"
+#include "multibody/spin.hpp"
 
 namespace multibody {
 namespace detail {
@@ -206,6 +208,60 @@ std::unique_ptr<detail::StaticEquilibrium> detail::angle_equilibrium(const Chain
   return std::make_unique<AngleStatics>(chain, spec, loads, depth);
 }
 
+namespace {
+
+/// The modes' pencil about the equilibrium x of `eq` (the modes under load, the spinning
+/// ring's): the tangent T and the mass M on every unknown, (q[, gamma][, chi]), and Z, the
+/// constraints' tangent space at q for q and every extra unknown (they enter no constraint).
+struct LoadedPencil {
+  Vector q;     ///< the chain's coordinates at the equilibrium
+  Matrix T, M;  ///< on every unknown
+  Matrix Z;     ///< every unknown x the reduced problem's
+};
+
+LoadedPencil loaded_pencil(const Chain& ch, const ring::RingSpec& spec, const AngleStatics& eq, const paths::State& x) {
+  LoadedPencil p;
+  Chain::ConstraintKinematics ck;
+  p.T = eq.tangent(x, ck);
+  p.q = x.z.head(ch.dofs());
+  p.Z = modal::kernel_basis(ck.G, ch.dofs());
+  const detail::Attachments terms(ch, spec);
+  p.M = detail::mass_matrix(ch, &terms, p.q);  // the chain's and the point masses' about q
+  // The shear angles and the point inertias' hinge rotations back as unknowns (q, [gamma,]
+  // chi). The shear angles (sections.hpp): T holds K_c = A - A (A + S)^{-1} A, the Schur
+  // complement over gamma of [A, A; A, A + S], so on (phi, gamma) the full tangent is
+  // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J]. The hinge rotations
+  // (attachments.hpp): T holds what condensing chi gives, H's border restores chi with its
+  // inertia J (on the sections' rotations on the Timoshenko chain).
+  const bool shear = spec.theory == ring::Theory::timoshenko;
+  std::optional<detail::HingeInertias> hinges;  // its (n + p)^2 border only where there is one
+  if (detail::has_point_inertia(spec)) hinges.emplace(ch, terms, shear);
+  if (!shear && !hinges) return p;
+  const Eigen::Index d = ch.dofs(), N = d + (shear ? ch.n() : 0) + (hinges ? hinges->n() : 0), extra = N - d;
+  Matrix Tf = Matrix::Zero(N, N), Mf = Matrix::Zero(N, N);
+  Tf.topLeftCorner(d, d) = p.T;
+  Mf.topLeftCorner(d, d) = p.M;
+  if (shear) {
+    const detail::Sections sections(ch, &terms, Shear::of(spec, ch.l()));
+    sections.add_stiffness(Tf);
+    Tf.topLeftCorner(d, d) -= sections.condensed();
+    sections.add_mass(1.0, Mf);
+  }
+  if (hinges) {
+    hinges->add_stiffness(1.0, Tf);
+    hinges->add_mass(1.0, Mf);
+  }
+  Matrix Zf = Matrix::Zero(N, p.Z.cols() + extra);
+  Zf.topLeftCorner(d, p.Z.cols()) = p.Z;
+  Zf.bottomRightCorner(extra, extra).setIdentity();
+  p.T = std::move(Tf);
+  p.M = std::move(Mf);
+  p.Z = std::move(Zf);
+  return p;
+}
+
+}  // namespace
+
 ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                                            const ring::StaticOptions& statics, int count) {
   check_preloaded_modes(spec, options, statics);
@@ -221,64 +277,83 @@ ring::ModalResult compute_modes_under_load(const ring::RingSpec& spec, const rin
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError("multibody modes under load: " + paths::failure_message(path, policy));
   // The pencil (Z^T T Z, Z^T M Z) at the equilibrium (modal::loaded_modes).
-  Chain::ConstraintKinematics ck;
-  const Matrix T = eq.tangent(path.state, ck);
-  const Vector q = path.state.z.head(ch.dofs());
-  Matrix Z = modal::kernel_basis(ck.G, ch.dofs());
-  const detail::Attachments terms(ch, spec);
-  const Matrix M = detail::mass_matrix(ch, &terms, q);  // the chain's and the point masses' about q
-  Matrix Tr = Z.transpose() * T * Z, Mr = Z.transpose() * M * Z;
-  // Unknowns that enter no constraint appended to q (tangent Tf, mass Mf on (q, extra)): the
-  // tangent space is Z for q and every extra unknown. O(n^3).
-  auto border = [&](const Matrix& Tf, const Matrix& Mf) {
-    const Eigen::Index d = ch.dofs(), extra = Tf.rows() - d;
-    Matrix Zf = Matrix::Zero(d + extra, Z.cols() + extra);
-    Zf.topLeftCorner(d, Z.cols()) = Z;
-    Zf.bottomRightCorner(extra, extra).setIdentity();
-    Tr = Zf.transpose() * Tf * Zf;
-    Mr = Zf.transpose() * Mf * Zf;
-    Z = std::move(Zf);
-  };
-  // The shear angles and the point inertias' hinge rotations back as unknowns (q, [gamma,]
-  // chi). The shear angles (sections.hpp): T holds K_c = A - A (A + S)^{-1} A, the Schur
-  // complement over gamma of [A, A; A, A + S], so on (phi, gamma) the full tangent is
-  // [T - K_c + A, A; A, A + S] and the mass [M(q) + J, J; J, J]. The hinge rotations
-  // (attachments.hpp): T holds what condensing chi gives, H's border restores chi with its
-  // inertia J (on the sections' rotations on the Timoshenko chain).
-  const bool shear = spec.theory == ring::Theory::timoshenko;
-  std::optional<detail::HingeInertias> hinges;  // its (n + p)^2 border only where there is one
-  if (detail::has_point_inertia(spec))
-    hinges.emplace(ch, terms, shear);
-  if (shear || hinges) {
-    const Eigen::Index d = ch.dofs(), N = d + (shear ? ch.n() : 0) + (hinges ? hinges->n() : 0);
-    Matrix Tf = Matrix::Zero(N, N), Mf = Matrix::Zero(N, N);
-    Tf.topLeftCorner(d, d) = T;
-    Mf.topLeftCorner(d, d) = M;
-    if (shear) {
-      const detail::Sections sections(ch, &terms, Shear::of(spec, ch.l()));
-      sections.add_stiffness(Tf);
-      Tf.topLeftCorner(d, d) -= sections.condensed();
-      sections.add_mass(1.0, Mf);
-    }
-    if (hinges) {
-      hinges->add_stiffness(1.0, Tf);
-      hinges->add_mass(1.0, Mf);
-    }
-    border(Tf, Mf);
-  }
+  const LoadedPencil p = loaded_pencil(ch, spec, eq, path.state);
+  const Matrix Tr = p.Z.transpose() * p.T * p.Z, Mr = p.Z.transpose() * p.M * p.Z;
   const modal::LoadedModes m = modal::loaded_modes(Tr, Mr, modal::bending_scale(spec), count, "multibody modes under load");
   ring::ModalResult res;
   res.solver = "multibody";
   res.model["n"] = static_cast<long long>(ch.n());
   res.model["rotary_inertia"] = options.rotary_inertia;
   res.model["preload"] = std::string("static");
-  res.unknowns = Z.cols();
+  res.unknowns = p.Z.cols();
   res.max_residual = m.max_residual;
   for (int k = 0; k < count; ++k) {
     res.omega.push_back(std::sqrt(m.omega2(k)));
-    res.shapes.push_back(ch.shape_at(q, (Z * m.vectors.col(k)).head(ch.dofs())));
+    res.shapes.push_back(ch.shape_at(p.q, (p.Z * m.vectors.col(k)).head(ch.dofs())));
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+
+ring::ModalResult compute_spinning_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options, int count) {
+  check_modes(spec, options);
+  if (!spec.rotation.spinning())
+    throw std::invalid_argument("multibody::compute_spinning_modes: rotation.speed is 0 (the modes at rest: compute_modes)");
+  const auto start = std::chrono::steady_clock::now();
+  const double speed = spec.rotation.speed;
+  // The modes are elastic, as at rest: the spin's equilibrium on the elastic hinges.
+  ring::RingSpec elastic = spec;
+  elastic.plastic.reset();
+  const Chain ch(elastic, options);
+  // Loading adds the centrifugal body force of a spinning spec (loading.hpp): with no other
+  // load, the statics' equilibrium at load factor 1 is the spin's, and the factor scales
+  // speed^2 along the path.
+  AngleStatics eq(ch, elastic, ring::Loads{}, elastic.section.depth());
+  const bool tension = spec.rotation.tension == ring::Rotation::Tension::spin;
+  paths::State state{eq.rest(), 0.0};
+  if (tension) {
+    paths::Continuation policy;
+    policy.steps = 5;  // the spin's equilibrium is mild (the free ring's: the rest polygon itself)
+    const paths::Trace path = paths::follow(eq, state, policy);
+    if (path.end != paths::Trace::End::reached)
+      throw ring::NumericalError("multibody spinning modes (the spin's equilibrium, rotation.tension = \"spin\"): " +
+                                 paths::failure_message(path, policy));
+    state = path.state;
+  }
+  LoadedPencil p = loaded_pencil(ch, elastic, eq, state);
+  const detail::Attachments terms(ch, elastic);
+  const detail::TranslationProducts tp = detail::translation_products(ch, &terms, p.q);
+  const Eigen::Index d = ch.dofs(), N = p.T.rows();
+  // tension = none: the tangent at rest (load factor 0, no multipliers) and the centrifugal
+  // softening alone; tension = spin: the equilibrium's tangent holds it with the prestress.
+  if (!tension) p.T.topLeftCorner(d, d) -= speed * speed * tp.mass;
+  Matrix G = Matrix::Zero(N, N);
+  G.topLeftCorner(d, d) = 2.0 * speed * tp.coriolis;
+  Matrix Kr = p.Z.transpose() * p.T * p.Z, Mr = p.Z.transpose() * p.M * p.Z, Gr = p.Z.transpose() * G * p.Z;
+  Kr = 0.5 * (Kr + Kr.transpose()).eval();
+  Mr = 0.5 * (Mr + Mr.transpose()).eval();
+  Gr = 0.5 * (Gr - Gr.transpose()).eval();
+  const modal::GyroscopicModes gm = modal::gyroscopic_modes("multibody", Kr, Mr, Gr, count);
+  ring::ModalResult res;
+  res.solver = "multibody";
+  res.model["n"] = static_cast<long long>(ch.n());
+  res.model["rotary_inertia"] = options.rotary_inertia;
+  res.model["theory"] = ring::to_string(spec.theory);
+  res.model["dependent"] = ring::to_string(options.dependent);
+  res.model["method"] = std::string("dense");
+  res.unknowns = p.Z.cols();
+  res.rigid_modes = 0;
+  res.max_residual = gm.max_residual;
+  res.residual_norm = ring::kResidual2Norm;
+  res.frame = "rotating";
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto sample = [&](const Eigen::VectorXd& x) { return ch.shape_at(p.q, (p.Z * x).head(d)); };
+  for (int k = 0; k < count; ++k) {
+    auto [shape, wave] = modal::travelling_mode(gm.vectors.col(k), sample, speed);
+    res.omega.push_back(gm.omega(k));
+    res.shapes.push_back(std::move(shape));
+    res.waves.push_back(wave);
+  }
   return res;
 }
 
