@@ -23,23 +23,27 @@ using Vec = Eigen::VectorXd;
 using Dense = Eigen::MatrixXd;
 using Sparse = Eigen::SparseMatrix<double>;
 
-/// The Coriolis matrix 2 Omega M_t S on q (`dofs` per node, the translations first at every
-/// node; further unknowns take none): M_t's translational 2 x 2 blocks are multiples of I, so
-/// (M_t S) has the columns [M_t e_{y_b}, -M_t e_{x_b}] at node b's (x_b, y_b). O(Q^2).
-Dense coriolis(const Sparse& Mt, int nodes, int dofs, int Q, double speed) {
-  const Dense M(Mt);
-  Dense C = Dense::Zero(Q, Q);
-  for (int b = 0; b < nodes; ++b) {
-    C.topRows(M.rows()).col(dofs * b) = 2.0 * speed * M.col(dofs * b + 1);
-    C.topRows(M.rows()).col(dofs * b + 1) = -2.0 * speed * M.col(dofs * b);
-  }
+/// The Coriolis matrix 2 Omega M_t S on q (Q unknowns, `dofs` per node, the translations
+/// first at every node; further unknowns take none): M_t's translational 2 x 2 blocks are
+/// multiples of I, so (M_t S) has the columns [M_t e_{y_b}, -M_t e_{x_b}] at node b's
+/// (x_b, y_b). O(nonzeros of M_t).
+Sparse coriolis(const Sparse& Mt, int dofs, int Q, double speed) {
+  Triplets t;
+  for (int c = 0; c < Mt.outerSize(); ++c)
+    for (Sparse::InnerIterator it(Mt, c); it; ++it) {
+      const int node = c / dofs, d = c % dofs, r = static_cast<int>(it.row());
+      if (d == 1) t.emplace_back(r, dofs * node, 2.0 * speed * it.value());
+      if (d == 0) t.emplace_back(r, dofs * node + 1, -2.0 * speed * it.value());
+    }
+  Sparse C(Q, Q);
+  C.setFromTriplets(t.begin(), t.end());
   return C;
 }
 
 /// Steps 3-4 of spin.hpp on the unknowns q: K = Zq^T T Zq, M = Zq^T Mq Zq, G = Zq^T C Zq, the
 /// gyroscopic modes and their waves through `sample` of the kernel's coordinates.
 ring::ModalResult gyroscopic_result(const ring::RingSpec& spec, const ring::LumpedOptions& options, const Sparse& T,
-                                    const Sparse& Mq, const Dense& C, const Dense& Zq,
+                                    const Sparse& Mq, const Sparse& C, const Dense& Zq,
                                     const std::function<ring::ModeShape(const Vec&)>& sample, int count,
                                     const std::string& who) {
   const Eigen::Index unknowns = Zq.cols();
@@ -49,7 +53,7 @@ ring::ModalResult gyroscopic_result(const ring::RingSpec& spec, const ring::Lump
                                 " (its unknowns on the constraints' kernel)");
   const Dense K = Zq.transpose() * (T * Zq);
   const Dense M = Zq.transpose() * (Mq * Zq);
-  const Dense G = Zq.transpose() * C * Zq;
+  const Dense G = Zq.transpose() * (C * Zq);
   const modal::GyroscopicModes gm = modal::gyroscopic_modes(who, 0.5 * (K + K.transpose()), 0.5 * (M + M.transpose()),
                                                             0.5 * (G - G.transpose()), count);
   ring::ModalResult res;
@@ -96,7 +100,7 @@ ring::ModalResult frame_spinning_modes(const ring::RingSpec& spec, const ring::L
   Mt.setFromTriplets(mt.begin(), mt.end());
   const Dense Z = modal::kernel_basis(Dense(f.S), N);
   const auto sample = [&](const Vec& y) { return sample_shape(f.geometry.anchor_deg, 3, Z * y); };
-  return gyroscopic_result(spec, options, T, f.M, coriolis(Mt, f.n, 3, N, spec.rotation.speed), Z, sample, count, who);
+  return gyroscopic_result(spec, options, T, f.M, coriolis(Mt, 3, N, spec.rotation.speed), Z, sample, count, who);
 }
 
 }  // namespace
@@ -146,7 +150,7 @@ ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::LumpedO
   // 3-4. K, M (J on chi) and the Coriolis matrix on the kernel, the modes and their waves.
   const auto sample = [&](const Vec& y) { return sample_shape(c.anchor_deg, 2, Z * y.head(Z.cols())); };
   ring::ModalResult res = gyroscopic_result(spec, options, T, mass_matrix(c, HingeRotations::unknowns),
-                                            coriolis(Mt, c.n, 2, Q, speed), Zq, sample, count, who);
+                                            coriolis(Mt, 2, Q, speed), Zq, sample, count, who);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
