@@ -29,6 +29,7 @@
 #include "lumped_mass/nonlinear.hpp"
 #include "lumped_mass/preload.hpp"
 #include "multibody/modes.hpp"
+#include "ring/errors.hpp"
 #include "support/convergence.hpp"
 #include "support/spinning_ring.hpp"
 
@@ -302,6 +303,23 @@ TEST(SpinningChainRefusals, NamesTheKey) {
   EXPECT_NE(refusal([&] { lumped::compute_modes_under_load(spec, lumptest::options(40, lumptest::kChain), st, 4); })
                 .find("rotation.speed"),
             std::string::npos);
+}
+
+// Past the divergence: without the spin's tension the rigid motions k = 0, 1 on the foundation
+// keep the stiffness kt - rho A speed^2 (spinning_ring.hpp's K for k = 1 with kr = kt), which
+// is negative at 1.5 sqrt(kt / rho A): K is not positive definite, a ring::NumericalError (not
+// a refusal: the speed is a valid input), for both variants.
+TEST(SpinningChainDivergence, IsANumericalError) {
+  const ring::RingSpec spec = spinning_ring(1.5, Tension::none);
+  for (auto v : {lumptest::kChain, ring::LumpedOptions::Variant::timoshenko_frame}) {
+    std::string what;
+    try {
+      lumped::compute_modes(spec, lumptest::options(20, v), 4);
+    } catch (const ring::NumericalError& e) {
+      what = e.what();
+    }
+    EXPECT_NE(what.find("divergence"), std::string::npos) << ring::to_string(v) << ": " << what;
+  }
 }
 
 }  // namespace
