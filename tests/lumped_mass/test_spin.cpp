@@ -1,15 +1,16 @@
-// The spinning lumped chain (lumped_mass/spin.hpp, issue 49: modes of a spinning ring in the
-// turning frame). Oracles from outside the code under test:
+// The spinning lumped chain and Timoshenko frame (lumped_mass/spin.hpp, issue 49: modes of a
+// spinning ring in the turning frame). Oracles from outside the code under test:
 //  - the inextensible ring's closed form (tests/support/spinning_ring.hpp): the chain is
 //    inextensible, so its waves k = 2, 3 converge to it at the chain's O(1/n^2) (fitted over
 //    n = 20, 40, 80), for both rotation.tension kinds; Bryan's factor (k^2 - 1) / (k^2 + 1);
+//    the Timoshenko frame on a thinner ring at its O(1/n^2) (n = 40, 80, 160);
 //  - the sign of the Coriolis term: the forward wave (with the spin) is the lower one and sits
 //    at the closed form's forward frequency (a wrong sign of G swaps them: off by the split);
 //  - the chain's linear modes at rest (lumped::compute_modes at speed 0: model.cpp's assembly,
 //    not the nonlinear chain's tangent) at a tiny speed;
 //  - the multibody chain (multibody/, segment angles, independent code): the same discrete
 //    model in other coordinates, to 1e-10 at n = 40;
-//  - the refusals, by the key they name.
+//  - the refusals, by the key they name; past the divergence speed, a ring::NumericalError.
 // The test ring: R = 10 m, a 40 mm steel rod, on a Winkler foundation kr = kt = 7.2 EI / R^4,
 // which gives the k = 2 wave a foundation stiffness pi R (4 kr + kt) equal to its bending
 // stiffness 36 pi EI / R^3; the lowest frequency at rest is sqrt(kt / rho A) (the k = 0 and
