@@ -2,6 +2,7 @@
 
 #include "lumped_mass/preload.hpp"
 #include "lumped_mass/terms.hpp"
+#include "modal/gyroscopic.hpp"
 #include "ring/errors.hpp"
 
 #include <array>
@@ -139,6 +140,8 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   // (frame.hpp) with their linear element's stiffness. The lumped "frame" has massless
   // rotations: no response (a state without inertia; check_response).
   using Variant = ring::LumpedOptions::Variant;
+  // A spin: the chain's linear modes only (check_spin); check_modes below would take it.
+  ring::refuse_rotation(spec, "the lumped " + what);
   if (what == "response")
     need(o.variant != Variant::frame,
          "lumped.variant = \"frame\" lumps no rotary inertia (its rotations are massless), so it has no response "
@@ -159,6 +162,35 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
   need(spec.supports.pin.has_value() || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under "
        "a dead load has no equilibrium");
+}
+
+/// A spinning ring (rotation.speed, spin.hpp): the linear modes of the chain and of the
+/// Timoshenko frame (lumped masses: the Coriolis term of a point mass) on a closed ring that
+/// nothing leaves free to turn, of a size the dense gyroscopic eigensolve takes.
+void check_spin(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
+  using Variant = ring::LumpedOptions::Variant;
+  if (o.variant == Variant::frame)
+    throw std::invalid_argument("lumped: lumped.variant = \"frame\" does not take rotation.speed yet (its rotations "
+                                "are massless and condensed); use \"chain\" or \"timoshenko-frame\"");
+  if (o.variant == Variant::frame_consistent)
+    throw std::invalid_argument("lumped: lumped.variant = \"frame-consistent\" does not take rotation.speed yet (the "
+                                "Coriolis term of its consistent mass is not derived); use \"chain\" or "
+                                "\"timoshenko-frame\"");
+  if (spec.is_arch())
+    throw std::invalid_argument("lumped: rotation.speed: a spinning arch (ring.arc) is not offered");
+  if (!std::isfinite(spec.rotation.speed))
+    throw std::invalid_argument("lumped: rotation.speed must be finite");
+  if (const int rigid = spec.rigid_modes(); rigid > 0)
+    throw std::invalid_argument("lumped: rotation.speed: the spinning ring's stiffness must hold it (" +
+                                std::to_string(rigid) + " rigid mode" + (rigid > 1 ? "s" : "") +
+                                " left free); add supports, springs or a foundation");
+  // The dense eigensolve's bound on its unknowns: about n on the chain's kernel, 3n on the frame.
+  const int max_n = o.variant == Variant::chain ? kMaxPreloadHinges
+                                                : static_cast<int>(modal::kMaxGyroscopicUnknowns / 3);
+  if (o.n > max_n)
+    throw std::invalid_argument("lumped: rotation.speed: the spinning " + ring::to_string(o.variant) +
+                                "'s modes are dense (O(n^3)): lumped.n (=" + std::to_string(o.n) + ") must be <= " +
+                                std::to_string(max_n));
 }
 
 /// What the chain does not take on an arch (ring.arc) yet: ring::InputError naming ring.arc.
@@ -189,7 +221,7 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
-  ring::refuse_rotation(spec, "the lumped modes");
+  if (spec.rotation.spinning()) check_spin(spec, options);
   if (options.n < 4) throw std::invalid_argument("lumped.n (=" + std::to_string(options.n) + ") must be >= 4");
   const double anchor = spec.anchor();
   std::vector<std::pair<std::string, double>> points;

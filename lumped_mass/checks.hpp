@@ -27,6 +27,10 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 /// Linear modes: the shear stiffness of the Timoshenko frame (check_theory); every term of RingSpec (supports, masses,
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
 /// anchor + 360 k / n (an arch: from + span k / n; the chain only, no roller).
+/// A spinning ring (rotation.speed, spin.hpp): "chain" (lumped.n <= kMaxPreloadHinges) and
+/// "timoshenko-frame" (lumped.n <= modal::kMaxGyroscopicUnknowns / 3), on a closed ring without
+/// rigid modes; "frame" and "frame-consistent" refuse it naming lumped.variant and
+/// rotation.speed, and every other analysis refuses a spin (ring::refuse_rotation).
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options);
 /// ring.plastic (the resultant law, bending.hpp) is taken by the chain's nonlinear statics;
 /// the frames (checks.cpp says why), the fibre law, and ring.plastic in any other analysis are

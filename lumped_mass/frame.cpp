@@ -161,6 +161,8 @@ FrameLoads::FrameLoads(const Frame& f, const ring::RingSpec& spec, const ring::L
   loads_.emplace(loads, f.rest_xy, f.l, translational_mass(f), nodes);
 }
 
+void FrameLoads::set_spin(double speed) { loads_->set_spin(speed, translational_mass(f_)); }
+
 double FrameLoads::potential(const Vec& q) const { return loads_->potential(f_.positions(q)); }
 
 Vec FrameLoads::gradient(const Vec& q) const {

@@ -101,6 +101,8 @@ class FrameLoads {
   double potential(const Eigen::VectorXd& q) const;
   Eigen::VectorXd gradient(const Eigen::VectorXd& q) const;
   void add_hessian(const Eigen::VectorXd& q, double scale, Triplets& out) const;
+  /// Adds the spin's centrifugal body force on the translational mass (ChainLoads::set_spin).
+  void set_spin(double speed);
 
  private:
   const Frame& f_;

@@ -60,11 +60,12 @@ ChainLoads::ChainLoads(const ring::Loads& loads, const Vec& rest, double side,
 }
 
 bool ChainLoads::has_stiffness() const {
-  return pressure_.any() && pressure_.kind != ring::Pressure::Kind::dead;
+  return (pressure_.any() && pressure_.kind != ring::Pressure::Kind::dead) || spin2_ != 0.0;
 }
 
 double ChainLoads::potential(const Vec& x) const {
   double P = -dead_.dot(x - rest_);
+  if (spin2_ != 0.0) P -= 0.5 * spin2_ * (x.dot(mass_ * x) - rest_.dot(mass_ * rest_));
   if (!pressure_.any()) return P;
   const double p = pressure_.value;
   if (pressure_.kind == ring::Pressure::Kind::follower) P += p * (0.5 * twice_area(x, n_, n_) - area0_);
@@ -74,6 +75,7 @@ double ChainLoads::potential(const Vec& x) const {
 
 Vec ChainLoads::gradient(const Vec& x) const {
   Vec g = -dead_;
+  if (spin2_ != 0.0) g -= spin2_ * (mass_ * x);
   if (!pressure_.any()) return g;
   const double p = pressure_.value;
   const int n = n_;
@@ -96,6 +98,11 @@ Vec ChainLoads::gradient(const Vec& x) const {
 
 void ChainLoads::add_hessian(const Vec& x, double scale, Triplets& out) const {
   if (!has_stiffness() || scale == 0.0) return;
+  if (spin2_ != 0.0)
+    for (int k = 0; k < mass_.outerSize(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(mass_, k); it; ++it)
+        out.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), -scale * spin2_ * it.value());
+  if (!pressure_.any()) return;
   const double p = pressure_.value;
   const int n = n_;
   if (pressure_.kind == ring::Pressure::Kind::follower)

@@ -20,7 +20,11 @@
 //    the link's two hinges;
 //  - gravity g: the weight of every mass, M_t g, M_t the translational mass matrix (the links'
 //    midpoint masses rho A l, half to each end, and the point masses on their hinges):
-//    P = -(M_t G) . (x - X), G = (g_x, g_y, g_x, g_y, ...).
+//    P = -(M_t G) . (x - X), G = (g_x, g_y, g_x, g_y, ...);
+//  - the spin's centrifugal body force (set_spin, spin.hpp: a ring turning at Omega, seen from
+//    the frame that turns with it): the same masses flung outward,
+//    P = -Omega^2 / 2 (x^T M_t x - X^T M_t X), gradient -Omega^2 M_t x, Hessian -Omega^2 M_t
+//    (the centrifugal softening; with the load factor s, s Omega^2 is the squared speed).
 // On the rest n-gon the three pressures are the same force p l (nu_{j-1} + nu_j) / 2 at
 // hinge j, as ring/spec.hpp asks; they differ in their load stiffness. On the regular n-gon
 // this is an inward force p l cos(pi/n) at every hinge, which links under the compression
@@ -62,6 +66,13 @@ class ChainLoads {
   /// out += scale * Hess P at x (the load stiffness: follower and central pressure only).
   void add_hessian(const Eigen::VectorXd& x, double scale, Triplets& out) const;
   bool has_stiffness() const;
+  /// Adds the centrifugal body force of a spin at `speed` rad/s (file comment) on the
+  /// translational mass M_t (2n x 2n, as the constructor's; kept only here, so that the other
+  /// analyses carry no copy). O(n).
+  void set_spin(double speed, const Eigen::SparseMatrix<double>& translational_mass) {
+    spin2_ = speed * speed;
+    mass_ = translational_mass;
+  }
 
  private:
   int n_ = 0, links_ = 0;
@@ -70,6 +81,8 @@ class ChainLoads {
   Eigen::VectorXd rest_;
   Eigen::VectorXd dead_;  ///< the position-independent force at load factor 1 (points, gravity, dead pressure)
   double area0_ = 0.0, central0_ = 0.0;
+  Eigen::SparseMatrix<double> mass_;  ///< M_t of set_spin (empty without a spin)
+  double spin2_ = 0.0;                ///< Omega^2 of set_spin, 1/s^2; 0: no spin
 };
 
 }  // namespace lumped

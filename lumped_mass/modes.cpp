@@ -1,5 +1,6 @@
 #include "lumped_mass/modes.hpp"
 #include "lumped_mass/checks.hpp"
+#include "lumped_mass/spin.hpp"
 
 #include <chrono>
 
@@ -35,6 +36,7 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOp
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options, int count,
                                 Method method) {
   check_modes(spec, options);
+  if (spec.rotation.spinning()) return spinning_modes(spec, options, count);  // spin.hpp
   const auto t0 = std::chrono::steady_clock::now();
   const Model model = assemble(spec, options);
   const Eigenpairs pairs = solve(model, count, method);

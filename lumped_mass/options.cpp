@@ -55,6 +55,11 @@ double memory_estimate(const ring::RingSpec& spec, const ring::LumpedOptions& o,
   // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
   // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
   if (q.preload) return (frame ? 600.0 : 100.0) * n * n;
+  // A spinning ring's modes are dense too (lumped_mass/spin.hpp), counted, not measured: the
+  // Hermitian eigenproblem of order 2N (its matrix, vectors and workspace, 3 x 16 (2N)^2 bytes)
+  // and the real N^2, Q^2 blocks, N ~ n unknowns on the chain's kernel (~400 n^2 in all),
+  // N = 3n on the frame (~2400 n^2).
+  if (spec.rotation.spinning()) return (frame ? 2400.0 : 400.0) * n * n;
   auto per_node = [count](double factor_peak, double with_basis) {
     return std::max(factor_peak, with_basis + 40.0 * count);
   };
