@@ -436,6 +436,49 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
   return d;
 }
 
+void check_spin(const ring::RingSpec& spec) {
+  if (!spec.rotation.spinning()) return;
+  if (spec.arc)
+    throw ring::InputError("", "ring.arc", "the calculix deck of a spinning ring takes a closed ring, not an arch");
+  if (spec.rigid_modes() > 0)
+    throw ring::InputError("", "rotation.speed",
+                           "a spinning ring with rigid modes: the centrifugal softening makes its free motions "
+                           "unstable; hold the ring by supports, springs or a foundation");
+  if (!spec.masses.empty())
+    throw ring::InputError("", "masses",
+                           "the calculix deck of a spinning ring cannot carry point masses: ccx 2.20 assembles the "
+                           "Coriolis matrix (mafillcorio) of solid elements only, so a MASS element would get neither "
+                           "the Coriolis term nor the centrifugal softening; leave calculix out or the masses");
+}
+
+Deck spinning_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const SpinStep& step,
+                   const std::string& title) {
+  Deck d = model_deck(spec, o, title, "In-plane vibration of the spinning ring", true);
+  const double speed = spec.rotation.speed;
+  const bool tension = spec.rotation.tension == ring::Rotation::Tension::spin;
+  std::ostringstream centrif;
+  centrif << "*DLOAD\nERING, CENTRIF, " << number(speed * speed) << ", 0.0, 0.0, 0.0, 0.0, 0.0, "
+          << (speed > 0.0 ? "1.0" : "-1.0") << "\n";
+  std::ostringstream s;
+  s << "** The ring spins at " << number(speed) << " rad/s about z (rotation.speed): the frame turns with it.\n"
+    << "** Step 1: the equilibrium under the centrifugal body force (CENTRIF, speed^2, a point on the axis,\n"
+    << "** the axis' direction: the sign of the speed)"
+    << (tension ? ", NLGEOM: its hoop tension (rotation.tension = \"spin\").\n"
+                : ";\n** rotation.tension = \"none\": without the load, so that the next steps perturb the unstressed\n"
+                  "** ring (ccx adds the centrifugal softening in a perturbation step only).\n")
+    << "*STEP, NLGEOM\n*STATIC\n" << (tension ? centrif.str() : "") << "*END STEP\n"
+    << "** Step 2: " << step.eigenvalues << " real modes of the tangent (prestress, softening -speed^2 M), stored\n"
+    << "** for step 3.\n"
+    << "*STEP, PERTURBATION\n*FREQUENCY, STORAGE=YES\n" << step.eigenvalues << "\n"
+    << (tension ? "" : centrif.str()) << "*END STEP\n"
+    << "** Step 3: the " << step.complex << " lowest modes with the Coriolis term, in the basis of step 2's modes;\n"
+    << "** the beam nodes' real and imaginary parts to the .dat file.\n"
+    << "*STEP, PERTURBATION\n*COMPLEX FREQUENCY, CORIOLIS\n" << step.complex << "\n"
+    << "*NODE PRINT, NSET=NALL\nU\n*END STEP\n";
+  d.text += s.str();
+  return d;
+}
+
 namespace {
 
 /// True when `loads` put forces on nodes beyond the paper's point loads: the consistent

@@ -55,6 +55,12 @@ struct FrequencyStep {
   int eigenvalues = 0;  ///< ccx's *FREQUENCY count (in-plane, rigid and out-of-plane modes together)
 };
 
+/// The steps of a spinning ring's modes (rotation.speed != 0): spinning_deck.
+struct SpinStep {
+  int eigenvalues = 0;  ///< the real modes of the *FREQUENCY step, the basis of the complex ones
+  int complex = 0;      ///< ccx's *COMPLEX FREQUENCY count (at most eigenvalues)
+};
+
 struct Deck {
   std::string text;                 ///< the .inp file
   std::vector<double> node_angles;  ///< degrees, node k + 1 at node_angles[k]
@@ -75,6 +81,30 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options
 /// The deck of a frequency analysis. O(elements).
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const FrequencyStep& step,
                     const std::string& title = "");
+
+/// The deck of the modes of a spinning ring (rotation.speed = Omega about +z), in the frame
+/// that turns with it:
+/// 1. *STEP, NLGEOM with *STATIC: the centrifugal body force *DLOAD ERING, CENTRIF, Omega^2,
+///    point (0, 0, 0), axis (0, 0, 1) (rotation.tension = "spin": the prestressed equilibrium;
+///    "none": the same step without a load, so that the next step is a perturbation of the
+///    unstressed ring);
+/// 2. *STEP, PERTURBATION with *FREQUENCY, STORAGE=YES: the real modes of the tangent with the
+///    prestress's geometric stiffness and the centrifugal softening -Omega^2 M (e_c3d adds the
+///    softening in a perturbation step only, which is why "none" needs step 1 too; with "none"
+///    the CENTRIF load is given in this step);
+/// 3. *STEP, PERTURBATION with *COMPLEX FREQUENCY, CORIOLIS: the gyroscopic modes in the basis
+///    of step 2's modes, printed with their beam nodes' real and imaginary parts.
+/// It writes what check_spin refuses too (a free ring: the tests measure ccx with it); the
+/// callers refuse. O(elements).
+Deck spinning_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const SpinStep& step,
+                   const std::string& title = "");
+
+/// Refuses a spinning ring the deck cannot write (ring::InputError naming the key): an arch
+/// (ring.arc), rigid modes (rotation.speed: the spin's softening makes a free motion
+/// unstable, as the scene reader says), point masses (masses: ccx 2.20's Coriolis matrix,
+/// mafillcorio, assembles solid elements only and its MASS elements get neither the Coriolis
+/// term nor the centrifugal softening). Nothing at rest.
+void check_spin(const ring::RingSpec& spec);
 
 /// The deck of the nonlinear statics under static's loads: *STEP, NLGEOM with *STATIC in
 /// static.steps equal increments (ccx may cut them), the load blocks (see above; point

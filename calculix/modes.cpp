@@ -1,10 +1,13 @@
 #include "calculix/modes.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <complex>
 #include <cmath>
 #include <sstream>
 
 #include "calculix/dat.hpp"
+#include "modal/gyroscopic.hpp"
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
@@ -20,6 +23,83 @@ int point_mass_node(const Deck& d, double angle) {
   return 0;
 }
 
+/// The spinning ring's modes (file comment of modes.hpp): spinning_deck, the complex modes'
+/// in-plane ones by the same kinetic-energy rule as at rest (ccx normalizes a complex mode to
+/// Re^T M Re + Im^T M Im = 1), their waves by modal::travelling_mode.
+ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::CalculixOptions& options, int count,
+                                 const Hooks& hooks, const std::string& title,
+                                 std::chrono::steady_clock::time_point start) {
+  const int nodes = node_count(spec, options);
+  const double node_mass = spec.rhoA() * spec.length() / nodes;
+  const int most = 3 * nodes;
+  SpinStep step{eigenvalues_for(spec, count), 0};
+  for (int attempt = 0;; ++attempt) {
+    step.complex = step.eigenvalues;  // the whole basis: the out-of-plane modes come along
+    const Deck deck = spinning_deck(spec, options, step, title);
+    const RunOutput out = run(deck.text, {options.timeout, options.threads}, hooks);
+    const std::vector<DatComplexMode> modes = read_complex_dat(out.dat, nodes);
+    std::vector<const DatComplexMode*> in_plane;
+    for (const DatComplexMode& m : modes) {
+      double kinetic = 0.0;
+      for (int k = 0; k < nodes; ++k) kinetic += node_mass * (std::norm(m.ux[k]) + std::norm(m.uy[k]));
+      if (kinetic > 0.5) in_plane.push_back(&m);
+    }
+    if (static_cast<int>(in_plane.size()) < count) {
+      if (attempt < 3 && step.eigenvalues < most + 10) {
+        step.eigenvalues *= 2;
+        continue;
+      }
+      throw ring::NumericalError("calculix: ccx returned " + std::to_string(in_plane.size()) +
+                                 " in-plane modes of the spinning ring of the " + std::to_string(count) + " asked (" +
+                                 std::to_string(modes.size()) + " complex modes)");
+    }
+    std::sort(in_plane.begin(), in_plane.end(),
+              [](const DatComplexMode* a, const DatComplexMode* b) { return a->omega < b->omega; });
+    // A spin past a divergence leaves a mode without stiffness: ccx then returns a zero or
+    // negative real part (comparison written so that a NaN fails it too).
+    const double scale = spec.bending_frequency_scale();
+    if (!(in_plane.front()->omega >= 1e-2 * scale))
+      throw ring::NumericalError("calculix: the spinning ring's lowest in-plane mode has omega = " +
+                                 std::to_string(in_plane.front()->omega) +
+                                 " rad/s: a spin past a divergence (rotation.speed)");
+
+    ring::ModalResult res;
+    res.solver = "calculix";
+    res.model["elements"] = static_cast<long long>(options.elements);
+    res.model["element"] = ring::to_string(options.element);
+    res.model["section"] = ring::to_string(options.section);
+    res.model["section_width"] = deck.width;
+    res.model["section_height"] = deck.height;
+    res.model["eigenvalues"] = static_cast<long long>(step.eigenvalues);
+    res.model["ccx_seconds"] = out.seconds;
+    res.model["ccx_cpu_seconds"] = out.cpu_seconds;
+    res.rigid_modes = 0;
+    res.frame = "rotating";
+    // The sampler of a coordinate vector [ux of the nodes, uy of the nodes].
+    const auto sample = [&](const Eigen::VectorXd& v) {
+      const std::vector<double> ux(v.data(), v.data() + nodes), uy(v.data() + nodes, v.data() + 2 * nodes);
+      return ring::sample_polygon(deck.anchor, ux, uy);
+    };
+    for (int i = 0; i < count; ++i) {
+      const DatComplexMode& m = *in_plane[i];
+      Eigen::VectorXcd x(2 * nodes);
+      for (int k = 0; k < nodes; ++k) {
+        x[k] = m.ux[k];
+        x[nodes + k] = m.uy[k];
+      }
+      auto [shape, wave] = modal::travelling_mode(x, sample, spec.rotation.speed);
+      res.omega.push_back(m.omega);
+      res.shapes.push_back(std::move(shape));
+      res.waves.push_back(wave);
+    }
+    res.unknowns = equation_count(out.log);
+    res.max_residual.reset();
+    res.residual_norm = "not reported by ccx";
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+  }
+}
+
 }  // namespace
 
 int eigenvalues_for(const ring::RingSpec& spec, int count) {
@@ -28,14 +108,18 @@ int eigenvalues_for(const ring::RingSpec& spec, int count) {
 
 Deck modes_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, int count,
                 const std::string& title) {
-  return frequency_deck(spec, options, FrequencyStep{eigenvalues_for(spec, count)}, title);
+  const int n = eigenvalues_for(spec, count);
+  if (spec.rotation.spinning()) return spinning_deck(spec, options, SpinStep{n, n}, title);
+  return frequency_deck(spec, options, FrequencyStep{n}, title);
 }
 
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::CalculixOptions& options, int count,
                                 const Hooks& hooks, const std::string& title) {
   const auto start = std::chrono::steady_clock::now();
   check_deck(spec, options);
+  check_spin(spec);
   require_ccx();
+  if (spec.rotation.spinning()) return spinning_modes(spec, options, count, hooks, title, start);
   const int nodes = node_count(spec, options);
   const int rigid = spec.rigid_modes();
   const double length = spec.length();

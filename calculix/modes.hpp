@@ -14,6 +14,26 @@
 // Shapes: the beam nodes' displacements, linear between nodes (ring::sample_polygon), at
 // the 360 common stations. Frequencies carry ccx's 7 printed digits.
 //
+// A spinning ring (rotation.speed != 0; check_spin's refusals): spinning_deck's three steps
+// (the centrifugal equilibrium, the real modes of the tangent, *COMPLEX FREQUENCY, CORIOLIS in
+// their basis). omega: the real parts ccx prints in rad/time, in the frame that turns with the
+// ring (frame = "rotating"), ascending; the in-plane modes by the kinetic-energy rule above on
+// the complex beam-node displacements; shapes and waves by modal::travelling_mode on them (ccx's
+// x(t) = Re(x e^{i omega t})); no rigid modes.
+// What the column measures against the inextensible closed form (tests/calculix/
+// calculix_spin_test.cpp, R/h = 250): the pair frequencies within 8e-4, and a Coriolis split
+// 0.28 % (k = 1) to 0.45 % (k = 4) low on a ring held by a foundation, springs or pins. The
+// cause is ccx 2.20's Coriolis matrix, not the model: the same free ring without a foundation
+// has the closed form's split to 3e-5 (k = 2) and 2e-4 (k = 3), and springs of no stiffness
+// (1e-6 N/m^2) bring the whole deficit back. A spring or a boundary on a beam node makes ccx
+// tie it to a corner of the expanded section by an MPC whose dependent term is that corner
+// (gen3dconnect, gen3dboun); mafillcorio assembles the skew Coriolis matrix with mafillsm's
+// symmetric rules, and its "regular DOF / MPC" branch swaps the two degrees of freedom when the
+// dependent one comes first in the element, so the entry's transpose goes in with the sign of
+// the entry (a skew matrix needs the opposite). Neither the mesh (40 to 80 elements), the basis
+// (12 to 60 real modes), the centrifugal softening's mass (the split is the same with
+// tension = "none") nor the bricks' rotary inertia (order (h/R)^2 = 1.6e-5) moves it.
+//
 // Cost: ccx's, about 18 s for 640 B32R elements and 30 eigenvalues on one thread
 // (docs/measured.md); reading is O(nodes x modes).
 #pragma once
@@ -30,7 +50,8 @@ namespace calculix {
 int eigenvalues_for(const ring::RingSpec& spec, int count);
 
 /// The deck compute_modes runs first (`ringvib export-deck` writes it): the frequency
-/// deck with eigenvalues_for(spec, count) eigenvalues.
+/// deck with eigenvalues_for(spec, count) eigenvalues, or a spinning ring's spinning_deck
+/// with as many real and complex modes.
 Deck modes_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, int count,
                 const std::string& title = "");
 
