@@ -22,12 +22,11 @@
 // x(t) = Re(x e^{i omega t})); no rigid modes.
 // What the column measures against the inextensible closed form (tests/calculix/
 // calculix_spin_test.cpp, R/h = 250): the pair frequencies within 8e-4, and a Coriolis split
-// 0.28 % (k = 1) to 0.45 % (k = 4) low on a ring held by a foundation, springs or pins. The
+// 0.28 % (k = 1) to 0.45 % (k = 4) low on a ring on a foundation. The
 // cause is ccx 2.20's Coriolis matrix, not the model: the same free ring without a foundation
 // has the closed form's split to 3e-5 (k = 2) and 2e-4 (k = 3), and springs of no stiffness
-// (1e-6 N/m^2) bring the whole deficit back. A spring or a boundary on a beam node makes ccx
-// tie it to a corner of the expanded section by an MPC whose dependent term is that corner
-// (gen3dconnect, gen3dboun); mafillcorio assembles the skew Coriolis matrix with mafillsm's
+// (1e-6 N/m^2) bring the whole deficit back. A spring on a beam node makes ccx tie it to the
+// expanded section by an MPC whose dependent term is a corner of the section (gen3dconnect); mafillcorio assembles the skew Coriolis matrix with mafillsm's
 // symmetric rules, and its "regular DOF / MPC" branch swaps the two degrees of freedom when the
 // dependent one comes first in the element, so the entry's transpose goes in with the sign of
 // the entry (a skew matrix needs the opposite). Neither the mesh (40 to 80 elements), the basis

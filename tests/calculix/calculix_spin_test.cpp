@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <string>
 #include <vector>
 
 #include "calculix/ccx.hpp"
@@ -121,6 +123,24 @@ INSTANTIATE_TEST_SUITE_P(Tension, CalculixSpin,
                            return std::string(info.param == ring::Rotation::Tension::spin ? "Spin" : "None");
                          });
 
+// A ring spinning clockwise is the mirror image of the counter-clockwise one: the same
+// frequencies (ccx's 7 digits: to 1e-6) and the lower mode of each pair again with the spin
+// (direction +1 means with the spin, whatever its sign).
+TEST(CalculixSpinMirror, ClockwiseSpinGivesTheSameModes) {
+  REQUIRE_CCX();
+  ring::RingSpec s = spinning_ring();
+  const ring::ModalResult ccw = calculix::compute_modes(s, options(), 7);
+  s.rotation.speed = -kSpeed;
+  const ring::ModalResult cw = calculix::compute_modes(s, options(), 7);
+  ASSERT_EQ(cw.omega.size(), ccw.omega.size());
+  for (std::size_t i = 0; i < cw.omega.size(); ++i) {
+    EXPECT_NEAR(cw.omega[i] / ccw.omega[i] - 1.0, 0.0, 1e-6) << "mode " << i + 1;
+    if (ccw.waves[i].number == 0) continue;  // tangential: no radial shape to name it
+    EXPECT_EQ(cw.waves[i].number, ccw.waves[i].number) << "mode " << i + 1;
+    EXPECT_EQ(cw.waves[i].direction, ccw.waves[i].direction) << "mode " << i + 1;
+  }
+}
+
 /// The complex modes of a deck run by hand, and the split of wave k: the two complex
 /// frequencies nearest the closed form's pair (the pairs of this ring lie far apart).
 double split_over_closed_form(const std::vector<calculix::DatComplexMode>& modes, const spintest::WavePair& exact) {
@@ -180,6 +200,41 @@ TEST(CalculixSpinRefusals, ByKey) {
   s.rotation.speed = 0.0;
   s.masses.push_back({});
   EXPECT_EQ(key_of(s), "");  // at rest: nothing refused here
+}
+
+// The reader of a *COMPLEX FREQUENCY step's .dat, on the layout ccx 2.20 prints (the real
+// modes' table first, the complex table last, participation factors between).
+TEST(CalculixSpinDat, ReadsTheComplexTableAndBothParts) {
+  const std::string dat =
+      "\n     E I G E N V A L U E   O U T P U T\n\n"
+      "      1   0.1166436E+03   0.1080017E+02   0.1718900E+01   0.0000000E+00\n"
+      "\n     E I G E N V A L U E   O U T P U T\n\n"
+      "      1   0.7929425E+01   0.1262007E+01   0.6720572E-04\n"
+      "\nP A R T I C I P A T I O N   F A C T O R S   F O R   M O D E       1\n\n"
+      "      1   0.1718900E+01   0.2391918E-04  -0.1000007E+01\n"
+      "\n                    E I G E N V A L U E    N U M B E R     1\n\n"
+      "                    R E A L   P A R T\n\n"
+      " displacements (vx,vy,vz) for set NALL and time  0.1000000E+01\n\n"
+      "         1  6.155773E-04  5.050314E-01  0.000000E+00\n"
+      "         2  1.0E-01  2.0E-01  0.000000E+00\n"
+      "\n                    I M A G I N A R Y   P A R T\n\n"
+      " displacements (vx,vy,vz) for set NALL and time  0.1000000E+01\n\n"
+      "         1  5.050300E-01 -6.270940E-04 -4.038968E-28\n"
+      "         2  3.0E-01  4.0E-01  0.0\n"
+      "\n     E I G E N M O D E   T U R N I N G   D I R E C T I O N\n\n"
+      "      1          F\n";
+  const auto modes = calculix::read_complex_dat(dat, 2);
+  ASSERT_EQ(modes.size(), 1u);
+  EXPECT_DOUBLE_EQ(modes[0].omega, 7.929425);
+  EXPECT_DOUBLE_EQ(modes[0].imag, 6.720572e-5);
+  EXPECT_EQ(modes[0].ux[1], std::complex<double>(0.1, 0.3));
+  EXPECT_EQ(modes[0].uy[1], std::complex<double>(0.2, 0.4));
+  EXPECT_EQ(modes[0].ux[0], std::complex<double>(6.155773e-4, 0.50503));
+  // A node missing from a part is a file ccx did not write.
+  std::string short_dat = dat;
+  short_dat.erase(short_dat.find("         2  3.0E-01"), std::string("         2  3.0E-01  4.0E-01  0.0\n").size());
+  EXPECT_THROW(calculix::read_complex_dat(short_dat, 2), ring::NumericalError);
+  EXPECT_THROW(calculix::read_complex_dat("no table\n", 2), ring::NumericalError);
 }
 
 // The spinning deck's steps, in order, with the centrifugal load where each tension needs it.
