@@ -207,6 +207,36 @@ std::vector<DatComplexMode> read_complex_dat(const std::string& text, int nodes,
   return modes;
 }
 
+std::vector<double> read_real_eigenvalues(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::vector<double> eig;
+  bool table = false;
+  int line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    if (line.find("E I G E N V A L U E   O U T P U T") != std::string::npos) {
+      if (table) break;  // the next table: the first one is read
+      table = true;
+      continue;
+    }
+    if (!table) continue;
+    if (line.find("P A R T I C I P A T I O N") != std::string::npos ||
+        line.find("E I G E N V A L U E    N U M B E R") != std::string::npos)
+      break;
+    const auto w = words(line);
+    long k = 0;
+    double x = 0.0;
+    if (w.size() == 5 && to_int(w[0], k)) {
+      if (!to_double(w[1], x))
+        throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line_no) + ": expected an eigenvalue");
+      eig.push_back(x);
+    }
+  }
+  if (eig.empty())
+    throw ring::NumericalError("calculix: " + name + ": no eigenvalue table of a *FREQUENCY step");
+  return eig;
+}
+
 DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name) {
   std::istringstream in(text);
   DatStatic out;

@@ -37,6 +37,11 @@ struct DatComplexMode {
 /// naming `name` and the line for a file that is not what ccx writes.
 std::vector<DatComplexMode> read_complex_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
 
+/// The eigenvalues (rad^2/s^2, signed: a negative one is a mode without stiffness) of the
+/// first eigenvalue table of a .dat text: a *FREQUENCY step's (mode, eigenvalue, rad/time,
+/// cycles/time, imaginary part). Throws ring::NumericalError naming `name` when there is none.
+std::vector<double> read_real_eigenvalues(const std::string& text, const std::string& name = "ring.dat");
+
 /// The last displacement block of a static step's .dat (*NODE PRINT after every
 /// increment: "displacements (vx,vy,vz) for set NALL and time t").
 struct DatStatic {

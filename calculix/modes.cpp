@@ -37,6 +37,16 @@ ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::Calculi
     step.complex = step.eigenvalues;  // the whole basis: the out-of-plane modes come along
     const Deck deck = spinning_deck(spec, options, step, title);
     const RunOutput out = run(deck.text, {options.timeout, options.threads}, hooks);
+    // K = the tangent with the softening must stay positive definite (modal/gyroscopic.hpp's
+    // contract): a negative eigenvalue of the real step is a spin past a divergence, whose
+    // complex modes ccx still prints (measured: the ring of tests/calculix/
+    // calculix_spin_test.cpp at 12 rad/s, past its k = 1 divergence at 11.3 rad/s).
+    const double scale = spec.bending_frequency_scale();
+    for (double eig : read_real_eigenvalues(out.dat))
+      if (!(eig > -1e-8 * scale * scale))
+        throw ring::NumericalError("calculix: the spinning ring's tangent has the eigenvalue " + std::to_string(eig) +
+                                   " rad^2/s^2: the centrifugal softening overcomes a mode's stiffness, a spin past "
+                                   "a divergence (rotation.speed = " + std::to_string(spec.rotation.speed) + ")");
     const std::vector<DatComplexMode> modes = read_complex_dat(out.dat, nodes);
     std::vector<const DatComplexMode*> in_plane;
     for (const DatComplexMode& m : modes) {
@@ -55,9 +65,8 @@ ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::Calculi
     }
     std::sort(in_plane.begin(), in_plane.end(),
               [](const DatComplexMode* a, const DatComplexMode* b) { return a->omega < b->omega; });
-    // A spin past a divergence leaves a mode without stiffness: ccx then returns a zero or
-    // negative real part (comparison written so that a NaN fails it too).
-    const double scale = spec.bending_frequency_scale();
+    // A mode at (near) zero: a spin at a divergence (comparison written so that a NaN fails it
+    // too).
     if (!(in_plane.front()->omega >= 1e-2 * scale))
       throw ring::NumericalError("calculix: the spinning ring's lowest in-plane mode has omega = " +
                                  std::to_string(in_plane.front()->omega) +

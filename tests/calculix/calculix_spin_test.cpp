@@ -141,6 +141,21 @@ TEST(CalculixSpinMirror, ClockwiseSpinGivesTheSameModes) {
   }
 }
 
+// Past the divergence of the k = 1 pair, speed^2 > (kr + kt) / (2 rho A) (the closed form's
+// K of k = 1 crosses zero at 11.32 rad/s), the tangent is indefinite: a numerical failure, as
+// modal::gyroscopic_modes makes it, not the modes ccx still prints.
+TEST(CalculixSpinDivergence, PastTheDivergenceIsANumericalFailure) {
+  REQUIRE_CCX();
+  ring::RingSpec s = spinning_ring();
+  s.rotation.speed = 12.0;
+  try {
+    calculix::compute_modes(s, options(), 3);
+    ADD_FAILURE() << "no failure past the divergence";
+  } catch (const ring::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("divergence"), std::string::npos) << e.what();
+  }
+}
+
 /// The complex modes of a deck run by hand, and the split of wave k: the two complex
 /// frequencies nearest the closed form's pair (the pairs of this ring lie far apart).
 double split_over_closed_form(const std::vector<calculix::DatComplexMode>& modes, const spintest::WavePair& exact) {
