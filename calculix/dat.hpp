@@ -23,8 +23,9 @@ struct DatMode {
 /// (a missing table, a mode without displacements, a node out of range).
 std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
 
-/// A mode of a *COMPLEX FREQUENCY, CORIOLIS step: x(t) = Re(x e^{i omega t}) (checked: the
-/// lower mode of a ring's pair turns with the spin, as ccx's own turning direction says).
+/// A mode of a *COMPLEX FREQUENCY, CORIOLIS step: x(t) = Re(x e^{i omega t}) (checked: so read,
+/// the lower mode of each of a spinning ring's pairs travels with the spin, as in the closed
+/// form, tests/calculix/calculix_spin_test.cpp).
 struct DatComplexMode {
   double omega = 0.0;  ///< rad/s, the real part from the rad/time column (the frame that turns)
   double imag = 0.0;   ///< rad/s, ccx's imaginary part (round-off of an undamped model)

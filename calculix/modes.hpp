@@ -22,16 +22,20 @@
 // x(t) = Re(x e^{i omega t})); no rigid modes.
 // What the column measures against the inextensible closed form (tests/calculix/
 // calculix_spin_test.cpp, R/h = 250): the pair frequencies within 8e-4, and a Coriolis split
-// 0.28 % (k = 1) to 0.45 % (k = 4) low on a ring on a foundation. The
-// cause is ccx 2.20's Coriolis matrix, not the model: the same free ring without a foundation
-// has the closed form's split to 3e-5 (k = 2) and 2e-4 (k = 3), and springs of no stiffness
-// (1e-6 N/m^2) bring the whole deficit back. A spring on a beam node makes ccx tie it to the
-// expanded section by an MPC whose dependent term is a corner of the section (gen3dconnect); mafillcorio assembles the skew Coriolis matrix with mafillsm's
-// symmetric rules, and its "regular DOF / MPC" branch swaps the two degrees of freedom when the
-// dependent one comes first in the element, so the entry's transpose goes in with the sign of
-// the entry (a skew matrix needs the opposite). Neither the mesh (40 to 80 elements), the basis
-// (12 to 60 real modes), the centrifugal softening's mass (the split is the same with
-// tension = "none") nor the bricks' rotary inertia (order (h/R)^2 = 1.6e-5) moves it.
+// 0.28 % (k = 1) to 0.45 % (k = 4) low on a ring on a foundation, with either tension. The
+// cause is ccx 2.20's Coriolis matrix under MPCs, not the model: the same ring without the
+// foundation has the closed form's split to 3e-5 (k = 2) and 2e-4 (k = 3), and springs of no
+// stiffness (1e-6 N/m^2) bring the whole deficit back. A spring on a beam node makes ccx tie
+// the node to the expanded section by an MPC whose dependent term is a corner of the section
+// (gen3dconnect). Measured by hand: the ring as C3D20R bricks with the springs on their own
+// nodes (no MPC) has the split to 5e-5; one *EQUATION per section tying two of its nodes (real
+// frequencies unchanged to 6 digits) cuts it by 7.4 %. The likely mechanism, read in
+// mafillcorio.f (calculix/cae's copy of the source): it assembles the skew Coriolis matrix with
+// the symmetric matrices' MPC rules, and its "regular DOF / MPC" branch swaps the two degrees
+// of freedom when the dependent one comes first, so an entry goes in where its transpose (the
+// opposite sign) belongs. Neither the mesh (40 or 80 elements), the basis (12 to 60 real
+// modes), the centrifugal softening's mass (the same deficit with tension = "none") nor the
+// bricks' rotary inertia (order (h/R)^2 = 1.6e-5) moves it.
 //
 // Cost: ccx's, about 18 s for 640 B32R elements and 30 eigenvalues on one thread
 // (docs/measured.md); reading is O(nodes x modes).
