@@ -21,7 +21,7 @@
 // the complex beam-node displacements; shapes and waves by modal::travelling_mode on them (ccx's
 // x(t) = Re(x e^{i omega t})); no rigid modes.
 // What the column measures against the inextensible closed form (tests/calculix/
-// calculix_spin_test.cpp, R/h = 250): the pair frequencies within 8e-4, and a Coriolis split
+// calculix_spin_test.cpp, R/h = 250): the pair frequencies within 8.2e-4, and a Coriolis split
 // 0.28 % (k = 1) to 0.45 % (k = 4) low on a ring on a foundation, with either tension. The
 // cause is ccx 2.20's Coriolis matrix under MPCs, not the model: the same ring without the
 // foundation has the closed form's split to 3e-5 (k = 2) and 2e-4 (k = 3), and springs of no
