@@ -126,7 +126,7 @@ ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::Calculix
                                 const Hooks& hooks, const std::string& title) {
   const auto start = std::chrono::steady_clock::now();
   check_deck(spec, options);
-  check_spin(spec);
+  check_spin(spec, options);
   require_ccx();
   if (spec.rotation.spinning()) return spinning_modes(spec, options, count, hooks, title, start);
   const int nodes = node_count(spec, options);

@@ -345,7 +345,7 @@ SolverEntry calculix_entry() {
     refuse_preload(s);
     with_scene_file(s, [&] {
       calculix::check_deck(s.ring, s.calculix);
-      calculix::check_spin(s.ring);
+      calculix::check_spin(s.ring, s.calculix);
       calculix::require_environment();
     });
   };

@@ -198,9 +198,9 @@ TEST(CalculixSpinCause, TheSplitDeficitComesWithTheMpcsOfTheFoundation) {
 TEST(CalculixSpinRefusals, ByKey) {
   ring::RingSpec s = spinning_ring();
   s.foundation = {};
-  auto key_of = [](const ring::RingSpec& r) -> std::string {
+  auto key_of = [](const ring::RingSpec& r, ring::CalculixOptions o = options()) -> std::string {
     try {
-      calculix::check_spin(r);
+      calculix::check_spin(r, o);
     } catch (const ring::InputError& e) {
       return e.key();
     }
@@ -211,6 +211,11 @@ TEST(CalculixSpinRefusals, ByKey) {
   s.masses.push_back({});
   s.masses.back().mass = 1.0;
   EXPECT_EQ(key_of(s), "masses");
+  for (auto element : {ring::CalculixOptions::Element::b31, ring::CalculixOptions::Element::b32}) {
+    ring::CalculixOptions o = options();
+    o.element = element;
+    EXPECT_EQ(key_of(spinning_ring(), o), "calculix.element");
+  }
   s = spinning_ring();
   s.rotation.speed = 0.0;
   s.masses.push_back({});
