@@ -23,19 +23,21 @@ int point_mass_node(const Deck& d, double angle) {
   return 0;
 }
 
-/// The spinning ring's modes (file comment of modes.hpp): spinning_deck, the complex modes'
-/// in-plane ones by the same kinetic-energy rule as at rest (ccx normalizes a complex mode to
+/// The spinning ring's modes (file comment of modes.hpp): spinning_brick_deck, the complex
+/// modes' in-plane ones by the same kinetic-energy rule as at rest on the stations' mean
+/// displacements (ccx normalizes a complex mode to
 /// Re^T M Re + Im^T M Im = 1), their waves by modal::travelling_mode.
 ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::CalculixOptions& options, int count,
                                  const Hooks& hooks, const std::string& title,
                                  std::chrono::steady_clock::time_point start) {
-  const int nodes = node_count(spec, options);
+  const int nodes = 2 * options.elements;  // the centroid line's stations
   const double node_mass = spec.rhoA() * spec.length() / nodes;
   const int most = 3 * nodes;
   SpinStep step{eigenvalues_for(spec, count), 0};
   for (int attempt = 0;; ++attempt) {
-    step.complex = step.eigenvalues;  // the whole basis: the out-of-plane modes come along
-    const Deck deck = spinning_deck(spec, options, step, title);
+    step.complex = step.eigenvalues;  // the whole basis
+    const BrickRing bricks = spinning_brick_deck(spec, options, step, title);
+    const Deck& deck = bricks.deck;
     const RunOutput out = run(deck.text, {options.timeout, options.threads}, hooks);
     // K = the tangent with the softening must stay positive definite (modal/gyroscopic.hpp's
     // contract): a negative eigenvalue of the real step is a spin past a divergence, whose
@@ -47,7 +49,21 @@ ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::Calculi
         throw ring::NumericalError("calculix: the spinning ring's tangent has the eigenvalue " + std::to_string(eig) +
                                    " rad^2/s^2: the centrifugal softening overcomes a mode's stiffness, a spin past "
                                    "a divergence (rotation.speed = " + std::to_string(spec.rotation.speed) + ")");
-    const std::vector<DatComplexMode> modes = read_complex_dat(out.dat, nodes);
+    // The centroid line's displacement at each station: the mean of its brick nodes.
+    std::vector<DatComplexMode> modes = read_complex_dat(out.dat, bricks.nodes);
+    for (DatComplexMode& m : modes) {
+      std::vector<std::complex<double>> ux(nodes), uy(nodes);
+      for (int k = 0; k < nodes; ++k) {
+        for (int node : bricks.stations[k]) {
+          ux[k] += m.ux[node - 1];
+          uy[k] += m.uy[node - 1];
+        }
+        ux[k] /= static_cast<double>(bricks.stations[k].size());
+        uy[k] /= static_cast<double>(bricks.stations[k].size());
+      }
+      m.ux = std::move(ux);
+      m.uy = std::move(uy);
+    }
     std::vector<const DatComplexMode*> in_plane;
     for (const DatComplexMode& m : modes) {
       double kinetic = 0.0;
@@ -118,7 +134,7 @@ int eigenvalues_for(const ring::RingSpec& spec, int count) {
 Deck modes_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, int count,
                 const std::string& title) {
   const int n = eigenvalues_for(spec, count);
-  if (spec.rotation.spinning()) return spinning_deck(spec, options, SpinStep{n, n}, title);
+  if (spec.rotation.spinning()) return spinning_brick_deck(spec, options, SpinStep{n, n}, title).deck;
   return frequency_deck(spec, options, FrequencyStep{n}, title);
 }
 
