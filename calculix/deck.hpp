@@ -95,7 +95,8 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& opt
 /// 3. *STEP, PERTURBATION with *COMPLEX FREQUENCY, CORIOLIS: the gyroscopic modes in the basis
 ///    of step 2's modes, printed with their beam nodes' real and imaginary parts.
 /// It writes what check_spin refuses too (a free ring: the tests measure ccx with it); the
-/// callers refuse. O(elements).
+/// column does not use it (the springs' MPCs spoil ccx's Coriolis matrix: spinning_brick_deck).
+/// O(elements).
 Deck spinning_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const SpinStep& step,
                    const std::string& title = "");
 

@@ -125,6 +125,38 @@ INSTANTIATE_TEST_SUITE_P(Tension, CalculixSpin,
                            return std::string(info.param == ring::Rotation::Tension::spin ? "Spin" : "None");
                          });
 
+// The bricks' supports against the column at rest (ccx's own B32R expansion, tested against
+// the FE reference in calculix_terms_reference_test.cpp): at a spin of 1e-3 rad/s, which moves
+// these split modes by order (speed/omega)^2 < 1e-8, the same frequencies. Measured at 80
+// elements: pin + roller within 2.3e-6; clamp + elastic support within 7.8e-5 (the clamped
+// brick section against ccx's knot, the spring on two centroid nodes against the section's
+// corners). Bound 2e-4.
+TEST(CalculixSpinSupports, ASlowSpinGivesTheModesAtRest) {
+  REQUIRE_CCX();
+  for (int c = 0; c < 2; ++c) {
+    ring::RingSpec s = spinning_ring();
+    s.foundation = {};
+    s.rotation.speed = 0.0;
+    if (c == 0) {
+      s.supports.pin = 0.0;
+      s.supports.roller = 180.0;
+    } else {
+      s.supports.pin = 90.0;
+      s.supports.clamp = 90.0;
+      s.supports.springs.push_back({270.0, 1e3, 2e3, 0.0});
+    }
+    ring::CalculixOptions o = options();
+    o.elements = 80;
+    const ring::ModalResult rest = calculix::compute_modes(s, o, 6);
+    s.rotation.speed = 1e-3;
+    const ring::ModalResult slow = calculix::compute_modes(s, o, 6);
+    ASSERT_EQ(slow.omega.size(), rest.omega.size());
+    for (std::size_t i = 0; i < rest.omega.size(); ++i)
+      EXPECT_NEAR(slow.omega[i] / rest.omega[i] - 1.0, 0.0, 2e-4) << (c ? "clamp and spring" : "pin and roller")
+                                                                  << ", mode " << i + 1;
+  }
+}
+
 // A ring spinning clockwise is the mirror image of the counter-clockwise one: the same
 // frequencies (ccx's 7 digits: to 1e-6) and the lower mode of each pair again with the spin
 // (direction +1 means with the spin, whatever its sign).
@@ -303,6 +335,18 @@ TEST(CalculixSpinRefusals, ByKey) {
     o.element = element;
     EXPECT_EQ(key_of(spinning_ring(), o), "calculix.element");
   }
+  s = spinning_ring();
+  s.supports.springs.push_back({4.5, 1e3, 1e3, 0.0});  // 40 elements: ends every 9 degrees
+  EXPECT_EQ(key_of(s), "supports.springs[1].at");
+  s = spinning_ring();
+  s.supports.pin = 0.0;
+  s.supports.roller = 90.0;  // the line through the pin is oblique
+  EXPECT_EQ(key_of(s), "supports.roller");
+  s = spinning_ring();
+  s.section = {ring::Section::Shape::circle, 0.01};
+  ring::CalculixOptions as_given = options();
+  as_given.section = ring::CalculixOptions::Section::as_given;
+  EXPECT_EQ(key_of(s, as_given), "calculix.section");
   s = spinning_ring();
   s.rotation.speed = 0.0;
   s.masses.push_back({});
