@@ -111,7 +111,7 @@ TEST_P(CalculixSpin, PairsAndBryanFactorAgainstTheInextensibleClosedForm) {
     EXPECT_NEAR(p.forward / exact.forward - 1.0, 0.0, 2e-4) << "k = " << k << ": " << p.forward;
     EXPECT_NEAR(p.backward / exact.backward - 1.0, 0.0, 2e-4) << "k = " << k << ": " << p.backward;
     // Bryan's factor 1 - (w_b - w_f) / (2 k speed) against (k^2 - 1) / (k^2 + 1). Measured:
-    // -1e-7 (k = 2) and -2e-6 (k = 3) relative at 80 elements (-1.8e-5 and -5.4e-5 at 40): the
+    // below 1e-6 (k = 2, ccx's 7 digits) and -2e-6 (k = 3) at 80 elements (-1.8e-5, -5.4e-5 at 40): the
     // split of the bricks written without MPCs is the closed form's. Bound 1e-4 (the beam
     // expansion's deck, with the MPCs of its springs, is 2.1e-3 off: CalculixSpinCause).
     const double bryan = 1.0 - (p.backward - p.forward) / (2.0 * k * kSpeed);
