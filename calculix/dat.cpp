@@ -115,6 +115,128 @@ std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, cons
   return modes;
 }
 
+std::vector<DatComplexMode> read_complex_dat(const std::string& text, int nodes, const std::string& name) {
+  auto fail = [&](int line, const std::string& what) {
+    throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line) + ": " + what);
+  };
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  std::size_t table = lines.size();
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].find("E I G E N V A L U E   O U T P U T") != std::string::npos) table = i;
+  if (table == lines.size()) fail(static_cast<int>(lines.size()), "no eigenvalue table (E I G E N V A L U E   O U T P U T)");
+  std::vector<DatComplexMode> modes;
+  std::size_t i = table + 1;
+  for (; i < lines.size(); ++i) {
+    if (lines[i].find("P A R T I C I P A T I O N") != std::string::npos ||
+        lines[i].find("E I G E N V A L U E    N U M B E R") != std::string::npos)
+      break;
+    const auto w = words(lines[i]);
+    long k = 0;
+    if (w.size() == 4 && to_int(w[0], k)) {
+      double omega, hz, imag;
+      if (!to_double(w[1], omega) || !to_double(w[2], hz) || !to_double(w[3], imag))
+        fail(static_cast<int>(i + 1), "expected: mode, rad/time, cycles/time, imaginary part");
+      if (k != static_cast<long>(modes.size()) + 1) fail(static_cast<int>(i + 1), "modes out of order");
+      DatComplexMode m;
+      m.omega = omega;
+      m.imag = imag;
+      modes.push_back(m);
+    }
+  }
+  if (modes.empty()) fail(static_cast<int>(table + 1), "an empty complex eigenvalue table");
+  enum class Part { none, real, imag };
+  Part part = Part::none;
+  int mode = -1, seen = 0;
+  std::vector<bool> have;
+  auto close = [&](int line) {
+    if (part != Part::none && seen != nodes)
+      fail(line, "mode " + std::to_string(mode + 1) + " has displacements of " + std::to_string(seen) + " of " +
+                     std::to_string(nodes) + " nodes");
+    part = Part::none;
+  };
+  for (; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const int no = static_cast<int>(i + 1);
+    if (line.find("E I G E N V A L U E    N U M B E R") != std::string::npos) {
+      close(no);
+      const auto w = words(line);
+      long k = 0;
+      if (w.empty() || !to_int(w.back(), k) || k < 1 || k > static_cast<long>(modes.size()))
+        fail(no, "a mode number with no eigenvalue in the table");
+      mode = static_cast<int>(k - 1);
+      modes[mode].ux.assign(nodes, 0.0);
+      modes[mode].uy.assign(nodes, 0.0);
+      continue;
+    }
+    const bool real = line.find("R E A L   P A R T") != std::string::npos;
+    if (real || line.find("I M A G I N A R Y   P A R T") != std::string::npos) {
+      close(no);
+      if (mode < 0) fail(no, "a displacement block before its mode number");
+      part = real ? Part::real : Part::imag;
+      have.assign(nodes, false);
+      seen = 0;
+      continue;
+    }
+    if (line.find("E I G E N M O D E   T U R N I N G") != std::string::npos) {
+      close(no);
+      break;
+    }
+    if (part == Part::none) continue;
+    const auto w = words(line);
+    long node = 0;
+    if (w.size() == 4 && to_int(w[0], node)) {
+      double x, y, z;
+      if (!to_double(w[1], x) || !to_double(w[2], y) || !to_double(w[3], z)) fail(no, "expected: node, ux, uy, uz");
+      if (node < 1 || node > nodes) fail(no, "node " + std::to_string(node) + " is not a beam node of the deck");
+      if (have[node - 1]) fail(no, "node " + std::to_string(node) + " printed twice");
+      have[node - 1] = true;
+      ++seen;
+      const std::complex<double> unit = part == Part::real ? 1.0 : std::complex<double>(0.0, 1.0);
+      modes[mode].ux[node - 1] += unit * x;
+      modes[mode].uy[node - 1] += unit * y;
+    }
+  }
+  close(static_cast<int>(lines.size()));
+  for (std::size_t k = 0; k < modes.size(); ++k)
+    if (modes[k].ux.empty())
+      fail(static_cast<int>(lines.size()), "mode " + std::to_string(k + 1) + " has no displacements (NODE PRINT)");
+  return modes;
+}
+
+std::vector<double> read_real_eigenvalues(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::vector<double> eig;
+  bool table = false;
+  int line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    if (line.find("E I G E N V A L U E   O U T P U T") != std::string::npos) {
+      if (table) break;  // the next table: the first one is read
+      table = true;
+      continue;
+    }
+    if (!table) continue;
+    if (line.find("P A R T I C I P A T I O N") != std::string::npos ||
+        line.find("E I G E N V A L U E    N U M B E R") != std::string::npos)
+      break;
+    const auto w = words(line);
+    long k = 0;
+    double x = 0.0;
+    if (w.size() == 5 && to_int(w[0], k)) {
+      if (!to_double(w[1], x))
+        throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line_no) + ": expected an eigenvalue");
+      eig.push_back(x);
+    }
+  }
+  if (eig.empty())
+    throw ring::NumericalError("calculix: " + name + ": no eigenvalue table of a *FREQUENCY step");
+  return eig;
+}
+
 DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name) {
   std::istringstream in(text);
   DatStatic out;

@@ -7,6 +7,7 @@
 // expanded section's nodes). The eigenvectors are normalized to U^T M U = 1.
 #pragma once
 
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,26 @@ struct DatMode {
 /// ring::NumericalError naming `name` and the line for a file that is not what ccx writes
 /// (a missing table, a mode without displacements, a node out of range).
 std::vector<DatMode> read_frequency_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
+
+/// A mode of a *COMPLEX FREQUENCY, CORIOLIS step: x(t) = Re(x e^{i omega t}) (checked: so read,
+/// the lower mode of each of a spinning ring's pairs travels with the spin, as in the closed
+/// form, tests/calculix/calculix_spin_test.cpp).
+struct DatComplexMode {
+  double omega = 0.0;  ///< rad/s, the real part from the rad/time column (the frame that turns)
+  double imag = 0.0;   ///< rad/s, ccx's imaginary part (round-off of an undamped model)
+  std::vector<std::complex<double>> ux, uy;  ///< [node - 1], real + i imaginary part
+};
+
+/// Parses the complex modes of a .dat text whose nodes are 1 .. nodes: the last eigenvalue
+/// table (mode, rad/time, cycles/time, imaginary part), then per mode the blocks "R E A L
+/// P A R T" and "I M A G I N A R Y   P A R T" of *NODE PRINT U. Throws ring::NumericalError
+/// naming `name` and the line for a file that is not what ccx writes.
+std::vector<DatComplexMode> read_complex_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
+
+/// The eigenvalues (rad^2/s^2, signed: a negative one is a mode without stiffness) of the
+/// first eigenvalue table of a .dat text: a *FREQUENCY step's (mode, eigenvalue, rad/time,
+/// cycles/time, imaginary part). Throws ring::NumericalError naming `name` when there is none.
+std::vector<double> read_real_eigenvalues(const std::string& text, const std::string& name = "ring.dat");
 
 /// The last displacement block of a static step's .dat (*NODE PRINT after every
 /// increment: "displacements (vx,vy,vz) for set NALL and time t").

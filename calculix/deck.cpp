@@ -436,6 +436,207 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
   return d;
 }
 
+void check_spin(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
+  if (!spec.rotation.spinning()) return;
+  if (o.element != ring::CalculixOptions::Element::b32r)
+    throw ring::InputError("", "calculix.element",
+                           "the calculix deck of a spinning ring takes B32R only: with ccx 2.20, B31 (C3D8I bricks) "
+                           "on a foundation gives the spinning ring's k = 1 pair 33 % low already in the real step, "
+                           "and B32 gives a Coriolis split 5 % low at any element count (measured, calculix/README.md)");
+  if (spec.arc)
+    throw ring::InputError("", "ring.arc", "the calculix deck of a spinning ring takes a closed ring, not an arch");
+  if (spec.rigid_modes() > 0)
+    throw ring::InputError("", "rotation.speed",
+                           "a spinning ring with rigid modes: the centrifugal softening makes its free motions "
+                           "unstable; hold the ring by supports, springs or a foundation");
+  if (o.section == ring::CalculixOptions::Section::as_given && spec.section.shape == ring::Section::Shape::circle)
+    throw ring::InputError("", "calculix.section",
+                           "the calculix deck of a spinning ring writes its bricks with a rectangular section: use "
+                           "\"equivalent-rectangle\" for a circle");
+  auto need_end = [&](double angle, const std::string& key) {
+    if (!ring::on_node(spec, angle, o.elements))
+      throw ring::InputError("", key,
+                             "the calculix deck of a spinning ring puts a point term on an element's end (every " +
+                                 number(360.0 / o.elements) + " degrees from " + number(spec.anchor()) +
+                                 "): its bricks have no node on the centroid line at an element's middle");
+  };
+  for (double p : spec.supports.pinned())
+    need_end(p, spec.supports.clamp && *spec.supports.clamp == p ? "supports.clamp"
+                : spec.supports.pin && *spec.supports.pin == p   ? "supports.pin"
+                                                                  : "supports.pins");
+  if (spec.supports.roller) {
+    need_end(*spec.supports.roller, "supports.roller");
+    const RollerLine n = roller_line(spec);
+    if (!(std::abs(n.nx) < 1e-12 || std::abs(n.ny) < 1e-12))
+      throw ring::InputError("", "supports.roller",
+                             "the calculix deck of a spinning ring holds a roller by a boundary condition, so its line "
+                             "through the pin must lie along x or y (an oblique one needs an *EQUATION, an MPC, under "
+                             "which ccx 2.20's Coriolis matrix is wrong)");
+  }
+  for (std::size_t i = 0; i < spec.supports.springs.size(); ++i)
+    need_end(spec.supports.springs[i].angle, "supports.springs[" + std::to_string(i + 1) + "].at");
+  if (!spec.masses.empty())
+    throw ring::InputError("", "masses",
+                           "the calculix deck of a spinning ring cannot carry point masses: ccx 2.20 assembles the "
+                           "Coriolis matrix (mafillcorio) of solid elements only, so a MASS element would get neither "
+                           "the Coriolis term nor the centrifugal softening; leave calculix out or the masses");
+}
+
+namespace {
+
+/// The three steps of a spinning ring's modes (spinning_deck's file comment), printing `print`.
+std::string spin_steps(const ring::RingSpec& spec, const SpinStep& step, const std::string& print) {
+  const double speed = spec.rotation.speed;
+  const bool tension = spec.rotation.tension == ring::Rotation::Tension::spin;
+  std::ostringstream centrif;
+  centrif << "*DLOAD\nERING, CENTRIF, " << number(speed * speed) << ", 0.0, 0.0, 0.0, 0.0, 0.0, "
+          << (speed > 0.0 ? "1.0" : "-1.0") << "\n";
+  std::ostringstream s;
+  s << "** The ring spins at " << number(speed) << " rad/s about z (rotation.speed): the frame turns with it.\n"
+    << "** Step 1: the equilibrium under the centrifugal body force (CENTRIF, speed^2, a point on the axis,\n"
+    << "** the axis' direction: the sign of the speed)"
+    << (tension ? ", NLGEOM: its hoop tension (rotation.tension = \"spin\").\n"
+                : ";\n** rotation.tension = \"none\": without the load, so that the next steps perturb the unstressed\n"
+                  "** ring (ccx adds the centrifugal softening in a perturbation step only).\n")
+    << "*STEP, NLGEOM\n*STATIC\n" << (tension ? centrif.str() : "") << "*END STEP\n"
+    << "** Step 2: " << step.eigenvalues << " real modes of the tangent (prestress, softening -speed^2 M), stored\n"
+    << "** for step 3.\n"
+    << "*STEP, PERTURBATION\n*FREQUENCY, STORAGE=YES\n" << step.eigenvalues << "\n"
+    << (tension ? "" : centrif.str()) << "*END STEP\n"
+    << "** Step 3: the " << step.complex << " lowest modes with the Coriolis term, in the basis of step 2's modes;\n"
+    << "** the real and imaginary parts of " << print << " to the .dat file.\n"
+    << "*STEP, PERTURBATION\n*COMPLEX FREQUENCY, CORIOLIS\n" << step.complex << "\n"
+    << "*NODE PRINT, NSET=NALL\nU\n*END STEP\n";
+  return s.str();
+}
+
+}  // namespace
+
+BrickRing spinning_brick_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const SpinStep& step,
+                              const std::string& title) {
+  check_refusals(spec, o, Inertia::matters);
+  BrickRing b;
+  Deck& d = b.deck;
+  const int turns = 2 * o.elements;  // stations: element ends (even) and middles (odd)
+  d.anchor = spec.anchor();
+  d.node_angles = ring::node_angles(spec, turns);
+  if (o.section == ring::CalculixOptions::Section::equivalent_rectangle) {
+    d.height = std::sqrt(12.0 * spec.I() / spec.A());
+    d.width = spec.A() / d.height;
+  } else {
+    d.width = spec.section.width;
+    d.height = spec.section.height;
+  }
+  const double R = spec.radius;
+  std::vector<int> id(static_cast<std::size_t>(turns) * 9, 0);
+  auto at = [&](int i, int j, int l) -> int& { return id[(static_cast<std::size_t>(i % turns) * 3 + j) * 3 + l]; };
+  std::ostringstream s;
+  s << "** CalculiX deck written by ringvib (calculix/deck.cpp)" << (title.empty() ? "" : ": " + title) << "\n"
+    << "** In-plane vibration of the spinning ring: " << o.elements << " x 1 x 1 C3D20R bricks written by the deck\n"
+    << "** (not expanded from beams: no MPC, under which ccx 2.20's Coriolis matrix is wrong).\n"
+    << "** Units SI (m, kg, s, N, Pa); frequencies in the .dat file in rad/s and cycles/s.\n"
+    << "*HEADING\n" << (title.empty() ? std::string("ringvib ring") : title.substr(0, 70)) << "\n"
+    << "** Nodes: station i (polar angle " << number(d.anchor) << " + 360 i / " << turns
+    << " degrees), radius R + (j - 1) h/2, z = (l - 1) b/2,\n** j, l = 0..2, at most one of i, j, l odd; R = "
+    << number(R) << " m, h = " << number(d.height) << " m (radial), b = " << number(d.width) << " m.\n"
+    << "*NODE, NSET=NALL\n";
+  int n = 0;
+  for (int i = 0; i < turns; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < 3; ++l) {
+        if (i % 2 + j % 2 + l % 2 > 1) continue;
+        at(i, j, l) = ++n;
+        const double a = d.node_angles[i] * kPi / 180.0, r = R + (j - 1) * d.height / 2.0;
+        s << n << ", " << number(r * std::cos(a)) << ", " << number(r * std::sin(a)) << ", "
+          << number((l - 1) * d.width / 2.0) << "\n";
+      }
+  b.nodes = n;
+  for (int i = 0; i < turns; ++i)
+    b.stations.push_back(i % 2 == 0 ? std::vector<int>{at(i, 1, 0), at(i, 1, 2)}
+                                    : std::vector<int>{at(i, 0, 0), at(i, 0, 2), at(i, 2, 0), at(i, 2, 2)});
+  // Local xi radial, eta around the ring, zeta across the width (right-handed): the C3D20
+  // corners, then the midside nodes of the edges.
+  static const int corner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                   {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  static const int middle[12][3] = {{0, -1, -1}, {1, 0, -1}, {0, 1, -1}, {-1, 0, -1}, {0, -1, 1},  {1, 0, 1},
+                                    {0, 1, 1},   {-1, 0, 1}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},   {-1, 1, 0}};
+  s << "** Elements: element e spans stations 2e .. 2e + 2 (the last closes the ring).\n"
+    << "*ELEMENT, TYPE=C3D20R, ELSET=ERING\n";
+  for (int e = 0; e < o.elements; ++e) {
+    s << e + 1;
+    for (int c = 0; c < 20; ++c) {
+      const int* x = c < 8 ? corner[c] : middle[c - 8];
+      s << (c == 15 ? ",\n" : ", ") << at(2 * e + 1 + x[1], 1 + x[0], 1 + x[2]);
+    }
+    s << "\n";
+  }
+  s << "** Material: Poisson's ratio 0, as the beam deck's.\n*MATERIAL, NAME=RING\n*ELASTIC\n" << number(spec.E)
+    << ", 0.0\n*DENSITY\n" << number(spec.rho) << "\n*SOLID SECTION, ELSET=ERING, MATERIAL=RING\n"
+    << "** In-plane motion only: the out-of-plane displacement of every node held.\n*BOUNDARY\nNALL, 3, 3\n";
+  auto station = [&](double angle) { return ring::node_index(spec, angle, o.elements) * 2; };
+  for (double p : spec.supports.pinned()) {
+    const int i = station(p);
+    const bool clamp = spec.supports.clamp && *spec.supports.clamp == p;
+    s << "** " << (clamp ? "Clamp" : "Pin") << " at " << number(p) << " degrees (station " << i << "): "
+      << (clamp ? "both displacements of the section's eight nodes held.\n"
+                : "both displacements of its two centroid nodes held.\n")
+      << "*BOUNDARY\n";
+    for (int j = 0; j < 3; ++j)
+      for (int l = 0; l < 3; ++l)
+        if ((j % 2 + l % 2 <= 1) && (clamp ? !(j == 1 && l == 1) : (j == 1 && l != 1)))
+          s << at(i, j, l) << ", 1, 2\n";
+  }
+  if (spec.supports.roller) {
+    const int i = station(*spec.supports.roller);
+    const RollerLine nl = roller_line(spec);
+    const int dof = std::abs(nl.nx) < 1e-12 ? 2 : 1;
+    s << "** Roller at " << number(*spec.supports.roller) << " degrees (station " << i
+      << "): its two centroid nodes held across the line through the pin.\n*BOUNDARY\n"
+      << at(i, 1, 0) << ", " << dof << ", " << dof << "\n" << at(i, 1, 2) << ", " << dof << ", " << dof << "\n";
+  }
+  int element = o.elements;
+  for (std::size_t k = 0; k < spec.supports.springs.size(); ++k) {
+    const ring::Spring& sp = spec.supports.springs[k];
+    const int i = station(sp.angle);
+    s << "** Elastic support " << k + 1 << " at " << number(sp.angle) << " degrees (station " << i
+      << "): half of kx and ky on each of its two centroid nodes.\n";
+    for (int dof : {1, 2}) {
+      const double stiffness = dof == 1 ? sp.kx : sp.ky;
+      if (stiffness == 0.0) continue;
+      const std::string set = "ESPRING" + std::to_string(k + 1) + (dof == 1 ? "X" : "Y");
+      s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n"
+        << ++element << ", " << at(i, 1, 0) << "\n" << ++element << ", " << at(i, 1, 2) << "\n"
+        << "*SPRING, ELSET=" << set << "\n" << dof << "\n" << number(stiffness / 2.0) << "\n";
+    }
+  }
+  if (spec.foundation.any()) {
+    const double L = spec.length() / o.elements;
+    s << "** Winkler foundation: radial " << number(spec.foundation.radial) << " and tangential "
+      << number(spec.foundation.tangential) << " N/m per metre of ring: SPRING1 on every station's\n"
+      << "** nodes (an end section's two centroid nodes share L/3, a middle's four corners 2L/3: L/6 each,\n"
+      << "** L = " << number(L) << " m) in the cylindrical system about z.\n"
+      << "*ORIENTATION, NAME=CYLINDER, SYSTEM=CYLINDRICAL\n0.0, 0.0, 0.0, 0.0, 0.0, 1.0\n";
+    for (int dof : {1, 2}) {
+      const double modulus = dof == 1 ? spec.foundation.radial : spec.foundation.tangential;
+      if (modulus == 0.0) continue;
+      const std::string set = std::string("EFOUND") + (dof == 1 ? "R" : "T");
+      s << "*ELEMENT, TYPE=SPRING1, ELSET=" << set << "\n";
+      for (const auto& nodes : b.stations)
+        for (int node : nodes) s << ++element << ", " << node << "\n";
+      s << "*SPRING, ELSET=" << set << ", ORIENTATION=CYLINDER\n" << dof << "\n" << number(modulus * L / 6.0) << "\n";
+    }
+  }
+  d.text = s.str() + spin_steps(spec, step, "every node");
+  return b;
+}
+
+Deck spinning_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const SpinStep& step,
+                   const std::string& title) {
+  Deck d = model_deck(spec, o, title, "In-plane vibration of the spinning ring", true);
+  d.text += spin_steps(spec, step, "the beam nodes");
+  return d;
+}
+
 namespace {
 
 /// True when `loads` put forces on nodes beyond the paper's point loads: the consistent

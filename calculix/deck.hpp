@@ -55,6 +55,12 @@ struct FrequencyStep {
   int eigenvalues = 0;  ///< ccx's *FREQUENCY count (in-plane, rigid and out-of-plane modes together)
 };
 
+/// The steps of a spinning ring's modes (rotation.speed != 0): spinning_deck.
+struct SpinStep {
+  int eigenvalues = 0;  ///< the real modes of the *FREQUENCY step, the basis of the complex ones
+  int complex = 0;      ///< ccx's *COMPLEX FREQUENCY count (at most eigenvalues)
+};
+
 struct Deck {
   std::string text;                 ///< the .inp file
   std::vector<double> node_angles;  ///< degrees, node k + 1 at node_angles[k]
@@ -75,6 +81,67 @@ void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options
 /// The deck of a frequency analysis. O(elements).
 Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const FrequencyStep& step,
                     const std::string& title = "");
+
+/// The deck of the modes of a spinning ring (rotation.speed = Omega about +z), in the frame
+/// that turns with it:
+/// 1. *STEP, NLGEOM with *STATIC: the centrifugal body force *DLOAD ERING, CENTRIF, Omega^2,
+///    point (0, 0, 0), axis (0, 0, 1) (rotation.tension = "spin": the prestressed equilibrium;
+///    "none": the same step without a load, so that the next step is a perturbation of the
+///    unstressed ring);
+/// 2. *STEP, PERTURBATION with *FREQUENCY, STORAGE=YES: the real modes of the tangent with the
+///    prestress's geometric stiffness and the centrifugal softening -Omega^2 M (e_c3d adds the
+///    softening in a perturbation step only, which is why "none" needs step 1 too; with "none"
+///    the CENTRIF load is given in this step);
+/// 3. *STEP, PERTURBATION with *COMPLEX FREQUENCY, CORIOLIS: the gyroscopic modes in the basis
+///    of step 2's modes, printed with their beam nodes' real and imaginary parts.
+/// It writes what check_spin refuses too (a free ring: the tests measure ccx with it); the
+/// column does not use it (the springs' MPCs spoil ccx's Coriolis matrix: spinning_brick_deck).
+/// O(elements).
+Deck spinning_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const SpinStep& step,
+                   const std::string& title = "");
+
+/// A spinning ring as C3D20R bricks written by the deck (spinning_brick_deck) and where its
+/// centroid line's displacement is read.
+struct BrickRing {
+  Deck deck;   ///< node_angles: the 2 elements stations of the centroid line (B32R's nodes)
+  int nodes = 0;  ///< brick nodes, 1 .. nodes
+  /// [station k]: the brick nodes (1-based) whose mean displacement is the centroid's at
+  /// deck.node_angles[k]: the two at the centroid radius on the width's faces at an element's
+  /// end, the four inner and outer corners of the faces at its middle.
+  std::vector<std::vector<int>> stations;
+};
+
+/// The deck of the modes of a spinning ring with the bricks written by the deck, not expanded
+/// by ccx from beam elements: ccx 2.20 assembles the Coriolis matrix wrongly at the degrees of
+/// freedom an MPC makes dependent (calculix/README.md, "Spinning rings"), and every spring,
+/// mass or support on an expanded beam's node is such an MPC. So: one C3D20R brick through the
+/// depth and one through the width per element (the section of the beam deck: the equivalent
+/// rectangle, or the rectangle as given), `elements` around, the 20-node grid of theta
+/// half-steps, radial and width levels 0..2 (at most one of them odd); Poisson's ratio 0;
+/// the out-of-plane displacement of every node held; a pin as both displacements of the two
+/// centroid nodes of its end section held (*BOUNDARY), a clamp as all eight nodes of the
+/// section held, an axis-aligned roller as one displacement of the two centroid nodes, an
+/// elastic support as SPRING1 on the two centroid nodes (half each), the foundation as
+/// SPRING1 on every station's nodes in the cylindrical system (each node L/6: the end
+/// section's L/3 on two nodes, the middle's 2L/3 on four). No *EQUATION anywhere. The three
+/// steps of spinning_deck, *NODE PRINT of every node. check_spin's refusals apply (the point
+/// terms at element ends, no oblique roller). O(elements).
+BrickRing spinning_brick_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const SpinStep& step,
+                              const std::string& title = "");
+
+/// Refuses a spinning ring the deck cannot write (ring::InputError naming the key): an arch
+/// (ring.arc), rigid modes (rotation.speed: the spin's softening makes a free motion
+/// unstable, as the scene reader says), point masses (masses: ccx 2.20's Coriolis matrix,
+/// mafillcorio, assembles solid elements only and its MASS elements get neither the Coriolis
+/// term nor the centrifugal softening), an element other than B32R (calculix.element: measured
+/// on the foundation ring of tests/calculix/calculix_spin_test.cpp, B31's real step puts the
+/// k = 1 pair at 7.25 rad/s where the translation on the foundation is 10.80, and B32's split
+/// is 5.2 % low at 40 and 160 elements), what the bricks of spinning_brick_deck cannot carry
+/// without an MPC: a point term (support, spring) off the element ends (its key: the bricks
+/// have no node on the centroid line at an element's middle), a roller whose line is not
+/// along x or y (supports.roller: an *EQUATION), a circle as given (calculix.section). Nothing
+/// at rest.
+void check_spin(const ring::RingSpec& spec, const ring::CalculixOptions& options);
 
 /// The deck of the nonlinear statics under static's loads: *STEP, NLGEOM with *STATIC in
 /// static.steps equal increments (ccx may cut them), the load blocks (see above; point

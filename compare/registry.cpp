@@ -344,9 +344,9 @@ SolverEntry calculix_entry() {
   e.memory = [](const ring::Scene& s, int count) { return calculix::memory_estimate(s.calculix, memory_query(s, count)); };
   e.check_modes = [](const ring::Scene& s) {
     refuse_preload(s);
-    ring::refuse_rotation(s.ring, "the calculix column");
     with_scene_file(s, [&] {
       calculix::check_deck(s.ring, s.calculix);
+      calculix::check_spin(s.ring, s.calculix);
       calculix::require_environment();
     });
   };
