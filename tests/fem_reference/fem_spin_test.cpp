@@ -124,29 +124,30 @@ TEST(FemSpin, InextensibleRingMatchesTheClosedFormWithAndWithoutTheSpinTension) 
     // 5e-8: the dense gyroscopic solve of the assembled tangent is not refined; its rounding
     // at beta = 2e6, amplified 3 times by the extrapolation, measured 5.3e-9 (k = 2, 16 x 6)
     // to 1.1e-8 (16 x 8); the discretization of k = 3 is 8e-10 at 16 x 6 (and the O(1/beta^2)
-    // of the extrapolation 1e-12). Bryan: the split is 1/4 (k = 2) to 1/7 (k = 3) of the
-    // frequencies, so 5e-7.
-    expect_closed_form(r, s, 5e-8, 5e-7, what);
+    // of the extrapolation 1e-12). Bryan: measured 5e-12 (the rounding moves both waves of a
+    // pair alike; uncorrelated, 5e-9 of the frequencies would be 4e-8 of the factor): 1e-8.
+    expect_closed_form(r, s, 5e-8, 1e-8, what);
   }
 }
 
 TEST(FemSpin, ThinExtensibleRingIsWithinItsThicknessOfTheInextensibleClosedForm) {
-  // The bound O(e), e = I / (A R^2) = 1e-6, of the file comment, with the factor 3: measured
-  // (16 x 6, both tensions) the extensible frequencies lie 0.43 e (k = 2 backward) to 2.1 e
-  // (k = 3 forward) below the inextensible ones (at rest: 0.88 e and 1.5 e), converged in
-  // the elements (16 x 8 the same to 1e-9).
+  // The bound O(e), e = I / (A R^2) = 1e-6, of the file comment, with the factor 4: measured
+  // (16 x 6) the extensible frequencies lie 0.43 e (k = 2 backward, tension none) to 2.6 e
+  // (k = 3 forward, tension spin) below the inextensible ones (at rest: 0.88 e and 1.5 e),
+  // converged in the elements (16 x 8 the same to 1e-9); Bryan's factors 1.3 e (k = 2) and
+  // 2.4 e (k = 3) below (k^2 - 1)/(k^2 + 1).
   const double e = 1e-6;
   for (Tension tension : {Tension::spin, Tension::none}) {
     const ring::RingSpec s = thin_ring(kSpeed, tension);
     const ring::ModalResult r = fem::compute_modes(s, options(true), kCount);
-    expect_closed_form(r, s, 3 * e, 3 * e, tension == Tension::spin ? "extensible, spin" : "extensible, none");
+    expect_closed_form(r, s, 4 * e, 4 * e, tension == Tension::spin ? "extensible, spin" : "extensible, none");
   }
 }
 
 TEST(FemSpin, ThinTimoshenkoRingIsWithinItsThicknessOfTheInextensibleClosedForm) {
   // The Reissner beam through the same code: the shear compliance EI / (kGA R^2) = 2.9 e
   // and the section's rotary inertia (rho I / (rho A R^2) = e) add to the membrane's e, each
-  // times k^2-ish: the bound 30 e.
+  // times k^2-ish: the bound 30 e (measured: 6 e at k = 2, 17.6 e at k = 3; Bryan 1.2 e).
   const double e = 1e-6;
   for (Tension tension : {Tension::spin, Tension::none}) {
     const ring::RingSpec s = thin_ring(kSpeed, tension, ring::Theory::timoshenko);
@@ -226,7 +227,7 @@ TEST(FemSpin, PointMassesSpinWithTheRing) {
   // of 8), so the masses' m, Coriolis g and centrifugal softening are those of the ring with
   // rho A times 1.25, and the closed form of that ring is the oracle to second order in the
   // masses' coupling of k to 8 - k and 8 + k (far stiffer waves): the tolerance is measured
-  // (below), the Bryan factor, which the coupling changes only through the shape, likewise.
+  // (below), Bryan's factor likewise.
   ring::RingSpec s = thin_ring(kSpeed, Tension::none);
   const double per = 0.25 * s.rhoA() * 2.0 * M_PI * s.radius / 8.0;
   for (int i = 0; i < 8; ++i) s.masses.push_back({45.0 * i, per, 0.0});
@@ -235,9 +236,13 @@ TEST(FemSpin, PointMassesSpinWithTheRing) {
   smeared.rhoA *= 1.25;
   for (int k = 2; k <= 3; ++k) {
     const spintest::WavePair p = spintest::inextensible(smeared, k);
-    EXPECT_NEAR(wave(r, k, +1) / p.forward - 1.0, 0.0, 1e-2) << k;
-    EXPECT_NEAR(wave(r, k, -1) / p.backward - 1.0, 0.0, 1e-2) << k;
-    EXPECT_NEAR(bryan(r, k, kSpeed), spintest::bryan_inextensible(k), 1e-2) << k;
+    // Measured 1.7e-4 to 2.3e-4 (k = 2) and 1.9e-3 to 2.4e-3 (k = 3) below, the same at
+    // degree 8 (the coupling, not the discretization); Bryan 1.6e-4 and 1.4e-3 above. A
+    // Coriolis term of the masses with the wrong sign makes Bryan's factor 0.76 for k = 2.
+    const double tol = k == 2 ? 5e-4 : 5e-3;
+    EXPECT_NEAR(wave(r, k, +1) / p.forward - 1.0, 0.0, tol) << k;
+    EXPECT_NEAR(wave(r, k, -1) / p.backward - 1.0, 0.0, tol) << k;
+    EXPECT_NEAR(bryan(r, k, kSpeed), spintest::bryan_inextensible(k), tol) << k;
   }
 }
 
