@@ -259,6 +259,26 @@ TEST(FemSpin, ExtensibleAndTimoshenkoRingsMatchTheirExactOracles) {
   }
 }
 
+TEST(FemSpin, RotaryInertiaEntersTheMassButNotTheCentrifugalSoftening) {
+  // fem.rotary_inertia = true on the Euler-Bernoulli ring: rho I in M, none in M_trans (the
+  // shared vocabulary's K); the oracle: spintest::timoshenko with kGA infinite (Euler-Bernoulli)
+  // and rho I, whose section has no centrifugal softening. Tension none: the bound 1e-8 as above.
+  const ring::RingSpec s = thin_ring(kSpeed, Tension::none);
+  ring::FemOptions o = options(true);
+  o.rotary_inertia = true;
+  const ring::ModalResult r = fem::compute_modes(s, o, kCount);
+  EXPECT_TRUE(std::get<bool>(r.model.at("rotary_inertia")));
+  for (int k = 2; k <= 3; ++k) {
+    spintest::TimoshenkoRing t;
+    t.ring = oracle(s);
+    t.EA = s.EA();
+    t.rhoI = s.rhoI();
+    const spintest::WavePair p = spintest::timoshenko(t, k).branches.at(0);
+    EXPECT_NEAR(wave(r, k, +1) / p.forward - 1.0, 0.0, 1e-8) << k;
+    EXPECT_NEAR(wave(r, k, -1) / p.backward - 1.0, 0.0, 1e-8) << k;
+  }
+}
+
 TEST(FemSpin, ExtensibleRingConvergesInTheElementsToTheExactOracle) {
   // Degree 4, tension none (no expansion left out): the error against spintest::extensible
   // falls like h^6 (2 (p - 1)) for both waves of k = 3, far above the rounding at 8 to 16.
