@@ -213,11 +213,6 @@ static void check_spin(const ring::RingSpec& spec, const ring::FemOptions& o) {
   need(spec.rigid_modes() == 0,
        "rotation.speed: a spinning ring needs its rigid motions held in the turning frame (" +
            std::to_string(spec.rigid_modes()) + " left free): supports, springs or a foundation");
-  need(!o.reference,
-       "fem.reference = true is not offered with a spinning ring (rotation.speed): its modes are one dense "
-       "gyroscopic solve of the assembled tangent (at most modal::kMaxGyroscopicUnknowns unknowns), whose rounding, "
-       "as the modes under load's, would stall a refinement until the frequencies stop changing at fem.tolerance; "
-       "choose fem.elements and fem.degree");
   refuse_plastic(spec, "the modes of a spinning ring take the elastic tangent at the spin's equilibrium (remove "
                        "ring.plastic or rotation.speed)");
 }

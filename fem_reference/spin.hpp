@@ -30,9 +30,13 @@
 // shapes and waves of 2 beta, whose wave numbers must agree with those of beta mode by mode
 // (else a ring::NumericalError: the extrapolation would pair different modes).
 //
-// Refused (checks.cpp, check_modes, by key): fem.reference = true (the dense step keeps the
-// rounding of the assembled tangent, as the modes under load, and has no refinement: a p/h
-// refinement to fem.tolerance would stall), fem.geometry = "polygon", an arch, ring.plastic,
+// Reference (fem.reference = true): p-refinement (then h, as the modes' reference) until the
+// largest relative change of the `count` frequencies is below fem.tolerance or no longer
+// halves: the dense step keeps the rounding of the assembled tangent (not refined, as the
+// modes under load's: 1e-9 to 1e-8 of omega on a thin ring), where the changes stop
+// contracting; the last change is the error_estimate (so it may exceed fem.tolerance, and
+// says so). Reaching modal::kMaxGyroscopicUnknowns first is a ring::NumericalError.
+// Refused (checks.cpp, check_modes, by key): fem.geometry = "polygon", an arch, ring.plastic,
 // rigid motions left free (K must be positive definite); above modal::kMaxGyroscopicUnknowns
 // reduced unknowns (naming fem.elements and fem.degree). The VTU output of a spinning ring's
 // complex modes is refused by rotation.speed.
@@ -52,7 +56,7 @@
 namespace fem::detail {
 
 /// The `count` lowest modes of the spinning ring (file comment): solver "fem", model as the
-/// modes at rest report it (reference false, refinements 0), omega in the turning frame
+/// modes at rest report it (reference, refinements, error_estimate), omega in the turning frame
 /// ascending, shapes (the real part at t = 0) and waves, frame "rotating", rigid_modes 0,
 /// unknowns (reduced), max_residual (2-norm), seconds.
 /// \throws std::invalid_argument (check_modes; count outside 1..unknowns; above
