@@ -34,7 +34,8 @@
 // largest relative change of the `count` frequencies is below fem.tolerance or no longer
 // halves: the dense step keeps the rounding of the assembled tangent (not refined, as the
 // modes under load's: 1e-9 to 1e-8 of omega on a thin ring), where the changes stop
-// contracting; the last change is the error_estimate (so it may exceed fem.tolerance, and
+// contracting (then the coarser of the last two solutions is kept: the finer one's rounding
+// is larger); the last change is the error_estimate (so it may exceed fem.tolerance, and
 // says so). Reaching modal::kMaxGyroscopicUnknowns first is a ring::NumericalError.
 // Refused (checks.cpp, check_modes, by key): fem.geometry = "polygon", an arch, ring.plastic,
 // rigid motions left free (K must be positive definite); above modal::kMaxGyroscopicUnknowns
