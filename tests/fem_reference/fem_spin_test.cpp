@@ -344,6 +344,14 @@ TEST(FemSpin, PointMassesSpinWithTheRing) {
   }
 }
 
+TEST(FemSpin, ASpeedPastADivergenceIsANumericalError) {
+  // Tension none: the rotation on kt loses its stiffness where speed^2 > kt / rho A (1.02
+  // rad^2/s^2): at 1.2 rad/s K is not positive definite (ring::NumericalError, exit 3).
+  EXPECT_THROW(fem::compute_modes(thin_ring(1.2, Tension::none), options(true), 4), ring::NumericalError);
+  // Just below it (1.0 rad/s) the modes exist.
+  EXPECT_NO_THROW(fem::compute_modes(thin_ring(1.0, Tension::none), options(true), 4));
+}
+
 TEST(FemSpin, RefusesWhatTheSpinningPathCannotTake) {
   const ring::RingSpec s = thin_ring(kSpeed, Tension::spin);
   auto message = [](auto&& f) -> std::string {
