@@ -80,6 +80,18 @@ Scalar fixed_force(const Y& y, double c_t, double c_n, double R) {
   return f;
 }
 
+/// The centrifugal body force of the spin (load potential): c/2 (|x|^2 - R^2) per ds0,
+/// c = rho A speed^2, x = x_t t0 + x_n n0; its gradient c x is the force outward from the
+/// axis, its Hessian c I on (x_t, x_n) the centrifugal softening.
+Scalar centrifugal(const Y& y, double c, double R) {
+  Scalar f;
+  f.value = 0.5 * c * (y[0] * y[0] + y[1] * y[1] - R * R);
+  f.d[0] = c * y[0];
+  f.d[1] = c * y[1];
+  f.dd[0][0] = f.dd[1][1] = c;
+  return f;
+}
+
 }  // namespace
 
 BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
@@ -99,7 +111,22 @@ BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
     if (k.ky > 0) translations_.push_back({{d[0], d[1]}, {std::cos(a), std::sin(a)}, k.ky});
     if (k.kr > 0) rotations_.emplace_back(v, k.kr);
   }
-  distributed_ = spec.foundation.any() || loads.pressure.any() || loads.has_gravity();
+  // The spin's centrifugal force on the point masses: speed^2 m (X . U + |U|^2 / 2), the
+  // fixed part with the constant loads, the quadratic one on the vertex's Ux and Uy.
+  speed_ = spec.rotation.speed;
+  if (spec.rotation.spinning())
+    for (const ring::PointMass& pm : spec.masses) {
+      if (!(pm.mass > 0)) continue;
+      const unsigned int v = model.vertex_of(pm.angle);
+      const double c = speed_ * speed_ * pm.mass;
+      const auto X = model.vertex_position(v);
+      constant_load_ += model.vertex_force(v, {c * X[0], c * X[1]});
+      const auto d = model.translation_dofs(v);
+      const double a = model.theta0_ + v * model.h_;
+      spinning_masses_.push_back({{d[0], d[1]}, {-std::sin(a), std::cos(a)}, c});
+      spinning_masses_.push_back({{d[0], d[1]}, {std::cos(a), std::sin(a)}, c});
+    }
+  distributed_ = spec.foundation.any() || loads.pressure.any() || loads.has_gravity() || spec.rotation.spinning();
   if (spec.plastic) law_.emplace(::fem::detail::plastic_law(spec, *spec.plastic));
 }
 
@@ -166,6 +193,7 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
           const double gn = g[0] * std::cos(theta) + g[1] * std::sin(theta);
           add(potential, fixed_force(y, rhoA_ * gt, rhoA_ * gn, R));
         }
+        if (speed_ != 0.0) add(potential, centrifugal(y, rhoA_ * speed_ * speed_, R));
         const double ds = rule.ds[qp];
         out.stored += ds * stored.value;
         out.load += ds * potential.value;
@@ -207,9 +235,70 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
     }
   }
 
+  // The point masses' centrifugal force (load potential): speed^2 m / 2 (c . x)^2 per
+  // Cartesian direction c (the fixed part speed^2 m X . U is in constant_load_).
+  for (const Translation& t : spinning_masses_) {
+    double y = 0.0;
+    for (unsigned int i = 0; i < t.dofs.size(); ++i) y += t.coef[i] * full[t.dofs[i]];
+    out.load += 0.5 * t.stiffness * y * y;
+    std::vector<double> f(t.dofs.size());
+    for (unsigned int i = 0; i < f.size(); ++i) f[i] = t.stiffness * y * t.coef[i];
+    if (residual) {
+      std::vector<double> minus(f.size());
+      for (unsigned int i = 0; i < f.size(); ++i) minus[i] = -s * f[i];
+      scatter(t.dofs, minus, *residual);
+    }
+    if (load) scatter(t.dofs, f, *load);
+    if (tangent) {
+      FullMatrix<double> k(t.dofs.size(), t.dofs.size());
+      for (unsigned int i = 0; i < t.dofs.size(); ++i)
+        for (unsigned int j = 0; j < t.dofs.size(); ++j) k(i, j) = -s * t.stiffness * t.coef[i] * t.coef[j];
+      m.add_local(k, t.dofs, *tangent);
+    }
+  }
+
   // Rotational springs: kr/2 theta^2 on the vertex's rotation (the model's, exact).
   for (const auto& [v, kr] : rotations_) out.stored += m.rotation_spring(v, kr, full, residual, tangent);
   return out;
+}
+
+void BeamPotential::coriolis(SparseMatrix<double>& G) const {
+  const BeamModel& m = model_;
+  const ring::RingSpec& spec = m.spec_;
+  G = 0;
+  if (speed_ == 0.0) return;
+  const unsigned int dpc = m.fe().n_dofs_per_cell();
+  const BeamModel::LoadRule& rule = m.load_rule_;
+  std::vector<types::global_dof_index> dofs(dpc);
+  FullMatrix<double> k(dpc, dpc);
+  // Every cell is the same image of the reference cell: one local matrix for all.
+  for (unsigned int qp = 0; qp < rule.xi.size(); ++qp) {
+    const double c = 2.0 * speed_ * rhoA_ * rule.ds[qp];
+    for (unsigned int i = 0; i < dpc; ++i) {
+      const auto& a = rule.row[qp * dpc + i];
+      for (unsigned int j = 0; j < dpc; ++j) {
+        const auto& b = rule.row[qp * dpc + j];
+        k(i, j) += c * (a[0] * b[1] - a[1] * b[0]);  // u_i w_j - w_i u_j
+      }
+    }
+  }
+  for (unsigned int cell = 0; cell < m.cells(); ++cell) {
+    m.cells_[cell]->get_dof_indices(dofs);
+    m.add_local(k, dofs, G);
+  }
+  // Point masses: 2 speed m U_i . S U_j = 2 speed m (Uy_i Ux_j - Ux_i Uy_j) on the vertex's
+  // (u, w) (at a = 0: Ux = w, Uy = u, the distributed term's u_i w_j - w_i u_j).
+  for (const ring::PointMass& pm : spec.masses) {
+    if (!(pm.mass > 0)) continue;
+    const unsigned int v = m.vertex_of(pm.angle);
+    const auto d = m.translation_dofs(v);
+    const double a = m.theta0_ + v * m.h_;
+    const double cx[2] = {-std::sin(a), std::cos(a)}, cy[2] = {std::cos(a), std::sin(a)};
+    FullMatrix<double> g(2, 2);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) g(i, j) = 2.0 * speed_ * pm.mass * (cy[i] * cx[j] - cx[i] * cy[j]);
+    m.add_local(g, {d[0], d[1]}, G);
+  }
 }
 
 }  // namespace fem::detail

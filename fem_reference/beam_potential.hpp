@@ -20,7 +20,11 @@ namespace fem::detail {
 ///  - Phi, the potential of the loads at load factor 1 (F = grad Phi the generalized load,
 ///    -hess Phi its load stiffness): point loads, the weight of the point masses, uniform
 ///    pressure (follower: -p (A - A0), A the enclosed area; dead: -p int w ds0; central:
-///    -p int (|x| - R) ds0) and the beam's weight rho A int g . U ds0.
+///    -p int (|x| - R) ds0), the beam's weight rho A int g . U ds0 and, on a spinning ring
+///    (spec.rotation, in the frame that turns with it), the centrifugal body force's
+///    speed^2/2 (int rho A (|x|^2 - R^2) ds0 + sum m (|x|^2 - |X|^2)) over the beam and the
+///    point masses, x = X + u t0 + w n0: its Hessian speed^2 M_trans (the mass of the
+///    translations, no rotary inertia) makes the tangent's centrifugal softening.
 /// Pins, roller and clamp are the model's constraints (exact at any displacement).
 /// ring.plastic: the beam's bending is the plastic law's incremental potential from the
 /// committed states that the caller passes in (plastic_points.hpp); V is then the
@@ -43,6 +47,13 @@ class BeamPotential {
   /// O(cells (p+2) (2p+3)^2), the beam's assembly (Reissner: O(cells (p+1) (3p+3)^2)).
   Value evaluate(const Vector<double>& q, double s, Vector<double>* residual, SparseMatrix<double>* tangent,
                  Vector<double>* load = nullptr, const std::vector<ring::PlasticState>* committed = nullptr) const;
+  /// The Coriolis matrix G of the spinning ring (spec.rotation.speed; zero at rest) on the
+  /// reduced unknowns, for M x'' + G x' + K x = 0 in the turning frame (modal/gyroscopic.hpp):
+  /// the Lagrangian's speed int rho A U_t . S U ds0 (S the quarter turn, S t0 = -n0, S n0 = t0)
+  /// gives G_ij = 2 speed int rho A (u_i w_j - w_i u_j) ds0 over the shape functions' (u, w)
+  /// and 2 speed m (Uy_i Ux_j - Ux_i Uy_j) on each point mass's vertex: skew. Assembled into
+  /// `G` (on model.sparsity(); zeroed first) with the distributed terms' cell rule. O(cells (p+2) (2p+3)^2).
+  void coriolis(SparseMatrix<double>& G) const;
   /// The law of ring.plastic at the beam's bending points (and vertex hinges); nullopt
   /// without ring.plastic.
   const std::optional<PlasticLaw>& plastic_law() const { return law_; }
@@ -64,9 +75,13 @@ class BeamPotential {
     double stiffness = 0.0;
   };
   std::vector<Translation> translations_;
+  /// The spin's centrifugal force on each point mass: speed^2 m / 2 (c . x)^2 per Cartesian
+  /// direction c (a load potential, not stored energy).
+  std::vector<Translation> spinning_masses_;
   /// A rotational spring kr at a vertex.
   std::vector<std::pair<unsigned int, double>> rotations_;
-  bool distributed_ = false;  ///< foundation, pressure or gravity: the cell loop runs
+  bool distributed_ = false;  ///< foundation, pressure, gravity or a spin: the cell loop runs
+  double speed_ = 0.0;        ///< spec.rotation.speed, rad/s (the centrifugal potential and G)
   std::optional<PlasticLaw> law_;  ///< ring.plastic's law at the bending points
 };
 

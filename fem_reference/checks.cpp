@@ -86,6 +86,8 @@ void check_plastic(const ring::RingSpec& spec, const std::string& analysis) {
 void check_nonlinear(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::Loads& loads,
                      const std::vector<double>& record, const std::string& section) {
   check_linear(spec, o);
+  // Only the linear modes take a spin (spin.hpp); the scene reader refuses the rest too.
+  ring::refuse_rotation(spec, "the fem " + section + " analysis");
   need(o.geometry == ring::FemOptions::Geometry::curved,
        "the geometrically exact beam needs fem.geometry = \"curved\"");
   auto on_vertex = [&](double a, const std::string& key) {
@@ -201,9 +203,23 @@ double precision_ratio_bound(int elements, int degree) {
   return 2.0e4 * std::pow(cells, 4) * std::pow(p, degree >= 6 ? 7.0 : 8.0);
 }
 
+/// The modes of a spinning ring (spin.hpp): what their path cannot take, by key.
+static void check_spin(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  need(std::isfinite(spec.rotation.speed), "rotation.speed must be finite");
+  need(!spec.is_arch(), "rotation.speed: an arch (ring.arc) does not spin here (rotation is the closed ring's)");
+  need(o.geometry == ring::FemOptions::Geometry::curved,
+       "fem.geometry = \"polygon\" does not take a spinning ring (rotation.speed): the spin's terms are the "
+       "geometrically exact beam's, on the curved geometry");
+  need(spec.rigid_modes() == 0,
+       "rotation.speed: a spinning ring needs its rigid motions held in the turning frame (" +
+           std::to_string(spec.rigid_modes()) + " left free): supports, springs or a foundation");
+  refuse_plastic(spec, "the modes of a spinning ring take the elastic tangent at the spin's equilibrium (remove "
+                       "ring.plastic or rotation.speed)");
+}
+
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   check_linear(spec, o);
-  ring::refuse_rotation(spec, "the fem modes");
+  if (spec.rotation.spinning()) check_spin(spec, o);
   // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused
   // here, before any assembly, where the bound already exceeds the limit (the model's own
   // ratio, measured after assembly in modes.cpp, catches the rest). 10^4 elements of

@@ -2,6 +2,7 @@
 // extrapolation), and the p/h refinement to the converged reference (modes.hpp).
 #include "fem_reference/checks.hpp"
 #include "fem_reference/ring_model.hpp"
+#include "fem_reference/spin.hpp"
 #include "fem_reference/timoshenko_model.hpp"
 #include "modal/modes.hpp"
 
@@ -215,6 +216,8 @@ Solved run(const ring::RingSpec& spec, const ring::FemOptions& o, int count, boo
 namespace fem {
 
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::FemOptions& options, int count) {
+  // A spinning ring: the gyroscopic modes of the turning frame (spin.hpp); at rest, today's path.
+  if (spec.rotation.spinning()) return detail::spinning_modes(spec, options, count);
   return detail::run(spec, options, count, false).result;
 }
 

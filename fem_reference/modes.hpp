@@ -181,10 +181,14 @@ inline const char* const kDualResidualNorm = "dual norm of K - sigma M";
 ///         ring::NumericalError for a failed factorization, eigen-solve or refinement.
 /// Cost: O(N (p+1)^2) assembly and, for N > 150, ARPACK with O(N p) work per
 /// Lanczos step after an O(N p^2) banded factorization; O(N^3) dense below.
+/// A spinning ring (spec.rotation.spinning()): the gyroscopic modes of the turning frame
+/// instead (spin.hpp: omega ascending in that frame, waves, frame "rotating", max_residual in
+/// the 2-norm; no reference; O((2N)^3) dense, N <= modal::kMaxGyroscopicUnknowns).
 ring::ModalResult compute_modes(const ring::RingSpec& spec, const ring::FemOptions& options,
                                 int count);
 
-/// Writes the `count` lowest mode shapes to `dir`/fem_modes.vtu (deal.II DataOut on the
+/// Writes the `count` lowest mode shapes to `dir`/fem_modes.vtu (not of a spinning ring:
+/// std::invalid_argument naming rotation.speed) (deal.II DataOut on the
 /// ring as a curve in the plane, Triangulation<1,2>: the circle, or the n-gon). For each
 /// mode k (1-based) with frequency w (rad/s): the scalar fields `radial_k_omega_w` and
 /// `tangential_k_omega_w` (polygon: `ux_...`, `uy_...`) and the vector
