@@ -117,7 +117,10 @@ ring::ModalResult spinning_modes(const ring::RingSpec& spec, const ring::Calculi
     ring::ModalResult res;
     res.solver = "calculix";
     res.model["elements"] = static_cast<long long>(options.elements);
-    res.model["element"] = ring::to_string(options.element);
+    // The spinning ring is written as the deck's own C3D20R bricks on the B32R stations, not
+    // ccx's expansion of the beam (its Coriolis matrix is wrong across the expansion's MPCs):
+    // calculix/README.md, "Spinning rings".
+    res.model["element"] = std::string("C3D20R (B32R's stations)");
     res.model["section"] = ring::to_string(options.section);
     res.model["section_width"] = deck.width;
     res.model["section_height"] = deck.height;

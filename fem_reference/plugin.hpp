@@ -38,8 +38,9 @@ struct Plugin {
 
 /// Version 2 added statics and respond (the geometrically exact beam), 3 buckling, 4
 /// modes_under_load, 5 ResponseOptions::progress (a std::function, called inside the plug-in;
-/// safe because both sides share one compiler and standard library, as for std::string).
-constexpr int kAbiVersion = 5;
+/// safe because both sides share one compiler and standard library, as for std::string), 6
+/// RingSpec::rotation and ModalResult's waves, frame and spin_pairs (a spinning ring).
+constexpr int kAbiVersion = 6;
 
 }  // namespace fem
 
