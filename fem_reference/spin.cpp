@@ -19,11 +19,6 @@ namespace fem::detail {
 namespace {
 
 const std::string kWho = "fem modes of a spinning ring";
-/// A mode whose radial shape is below this fraction of its tangential one is classified by
-/// the tangential shape (spun_once). A bending wave k of the thin ring has |w| / |u| = k >= 1
-/// (u' = -w); the rotation on kt 1e-6 or less (rounding, and the Coriolis force on the
-/// membrane: 2 speed omega rho R^2 / E).
-constexpr double kRadialless = 1e-3;
 
 /// One discretization's gyroscopic modes (at one EA).
 struct Spun {
@@ -81,18 +76,6 @@ Spun spun_once(const ring::RingSpec& spec, const Setup& setup, int count) {
   for (int k = 0; k < count; ++k) {
     out.omega2.push_back(modes.omega(k) * modes.omega(k));
     auto [shape, wave] = modal::travelling_mode(modes.vectors.col(k), sample, spec.rotation.speed);
-    // A mode without radial motion (the rotation on a tangential foundation: u uniform,
-    // w = 0 in the inextensible limit, ~1e-6 of u on the thin extensible ring) has no wave in
-    // its radial shape but the rounding's: its tangential shape gives the number, standing.
-    double radial = 0.0, tangential = 0.0;
-    for (double v : shape.radial) radial = std::max(radial, std::abs(v));
-    for (double v : shape.tangential) tangential = std::max(tangential, std::abs(v));
-    if (radial < kRadialless * tangential) {
-      Eigen::VectorXcd t(shape.tangential.size());
-      for (std::size_t i = 0; i < shape.tangential.size(); ++i) t(static_cast<Eigen::Index>(i)) = shape.tangential[i];
-      wave = modal::classify_wave(t, spec.rotation.speed);
-      wave.direction = 0;
-    }
     out.shapes.push_back(std::move(shape));
     out.waves.push_back(wave);
   }
