@@ -123,6 +123,7 @@ void check_points(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
 }  // namespace
 
 void check_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, Inertia inertia) {
+  ring::refuse_variations(spec, "the calculix column");
   check_refusals(spec, o, inertia);
   check_points(spec, o);
 }
@@ -437,6 +438,7 @@ Deck frequency_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, 
 }
 
 void check_spin(const ring::RingSpec& spec, const ring::CalculixOptions& o) {
+  ring::refuse_variations(spec, "the calculix column");
   if (!spec.rotation.spinning()) return;
   if (o.element != ring::CalculixOptions::Element::b32r)
     throw ring::InputError("", "calculix.element",

@@ -41,6 +41,7 @@ void check_response(const ring::RingSpec& spec, const ring::CalculixOptions& opt
   // The deck writes an arch (modes and statics take it); the response's reader and its tests
   // have the closed ring only so far.
   ring::refuse_arch(spec, "the calculix response");
+  ring::refuse_variations(spec, "the calculix response");
   check_response_deck(rs);
   if (spec.plastic)
     throw ring::InputError("", "ring.plastic",

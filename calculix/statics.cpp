@@ -35,6 +35,7 @@ int newton_iterations(const std::string& sta) {
 }  // namespace
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
+  ring::refuse_variations(spec, "the calculix statics");
   // An arch takes point loads (held to the elastica of DaDeppo & Schmidt's deep arch,
   // tests/calculix/calculix_arch_test.cpp). Distributed loads on an arch are refused until
   // validated: under a uniform pressure a pinned arch is membrane-dominated, its bending driven

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 #include <variant>
@@ -22,9 +23,40 @@ namespace {
 
 bool has_shapes(const ring::ModalResult& r) { return r.shapes.size() >= r.omega.size() && !r.omega.empty(); }
 
+/// A spinning ring's modes are travelling waves: the real parts the results keep turn with
+/// an arbitrary phase, so they pair by their waves instead of by MAC: the base's i-th mode of
+/// wave (k, direction) with the other's i-th of the same wave (or none). -1: unpaired.
+std::vector<int> pair_by_waves(const ring::ModalResult& base, const ring::ModalResult& other) {
+  std::vector<int> out(base.omega.size(), -1);
+  std::map<std::pair<int, int>, std::vector<int>> theirs;
+  for (std::size_t j = 0; j < other.waves.size(); ++j)
+    theirs[{other.waves[j].number, other.waves[j].direction}].push_back(static_cast<int>(j));
+  std::map<std::pair<int, int>, std::size_t> seen;
+  for (std::size_t i = 0; i < base.waves.size(); ++i) {
+    const std::pair<int, int> key{base.waves[i].number, base.waves[i].direction};
+    const std::size_t o = seen[key]++;
+    const auto it = theirs.find(key);
+    if (it != theirs.end() && o < it->second.size()) out[i] = it->second[o];
+  }
+  return out;
+}
+
 Column pair_column(const ring::ModalResult& base, const ring::ModalResult& other, int rows) {
   Column c;
   c.solver = other.solver;
+  const bool spinning = !base.waves.empty() && base.waves.size() == base.omega.size() && !other.waves.empty() &&
+                        other.waves.size() == other.omega.size();
+  if (spinning) {
+    const std::vector<int> p = pair_by_waves(base, other);
+    for (int i = 0; i < rows; ++i) {
+      const int j = i < static_cast<int>(p.size()) ? p[i] : -1;
+      c.omega.push_back(j >= 0 ? other.omega[j] : NAN);
+      c.mode.push_back(j + 1);
+      c.mac.push_back(NAN);
+      c.subspace.push_back(false);
+    }
+    return c;
+  }
   const bool by_mac = has_shapes(base) && has_shapes(other);
   const Pairing p = by_mac ? pair_modes(base, other) : Pairing{};
   for (int i = 0; i < rows; ++i) {
@@ -161,7 +193,12 @@ std::string footnotes(const Table& t) {
   s << t.unit << ". diff % = (" << label(t.columns[0].solver) << " - other) / other * 100 (the paper's definition)";
   if (t.reference) s << "; error % = (value - reference) / reference * 100, reference = converged FE";
   s << ".\n";
-  if (any_reordered(t)) s << "* paired by MAC with a mode of another number in that solver's own order.\n";
+  // A spinning ring's columns pair by their waves (pair_by_waves), not by MAC.
+  bool spinning = false;
+  for (const auto& sp : t.spins) spinning |= !sp.second.empty();
+  if (any_reordered(t))
+    s << (spinning ? "* paired by wave (number and direction) with a mode of another number in that solver's own order.\n"
+                   : "* paired by MAC with a mode of another number in that solver's own order.\n");
   if (any_subspace(t))
     s << "= one of a double value (equal to " << kDegenerate << " relative), compared as a subspace: its MAC is\n"
       << "  cos^2 of the base mode's angle to the pair's plane (each solver may return any basis of it).\n";
@@ -173,6 +210,7 @@ std::string footnotes(const Table& t) {
   };
   for (const auto& c : t.columns) count(c);
   if (t.reference) count(*t.reference);
+  if (spinning) return s.str();
   s << "Lowest MAC of any paired mode: " << sig4(worst) << ".\n";
   if (worst < kWeakMac)
     s << "? paired with MAC < " << kWeakMac << ": the shapes differ, so no difference or error is given (\"unlike\"): "

@@ -218,6 +218,7 @@ static void check_spin(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
+  ring::refuse_variations(spec, "the fem beam");
   check_linear(spec, o);
   if (spec.rotation.spinning()) check_spin(spec, o);
   // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused
@@ -244,6 +245,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_variations(spec, "the fem beam");
   check_nonlinear(spec, o, st.loads, st.record, "static");
   if (spec.is_arch() && spec.plastic)
     throw ring::InputError("", "ring.arc", "fem: the plastic statics take no arch yet (remove ring.plastic)");
@@ -264,6 +266,7 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
 }
 
 void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::BucklingOptions& b) {
+  ring::refuse_variations(spec, "the fem beam");
   refuse_plastic(spec, "linear buckling is about the undeformed, elastic ring and would ignore the plastic law "
                        "(follow the equilibrium path with static.path = true instead)");
   check_nonlinear(spec, o, b.loads, {}, "buckling");
@@ -277,6 +280,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::FemOptions& o, const
 }
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  ring::refuse_variations(spec, "the fem beam");
   ring::refuse_arch(spec, "the fem modes under load");
   refuse_plastic(spec, "the modes under load take the elastic tangent at the loaded equilibrium, which the plastic "
                        "statics do not provide yet (remove modes.preload)");
@@ -295,6 +299,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::FemOptions& o
 }
 
 void check_response(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::ResponseOptions& rs) {
+  ring::refuse_variations(spec, "the fem beam");
   check_nonlinear(spec, o, rs.loads, rs.record, "response");
   check_plastic(spec, "response");
   need(spec.supports.pin || spec.rigid_modes() == 0,

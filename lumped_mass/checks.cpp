@@ -219,6 +219,7 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
+  ring::refuse_variations(spec, "the lumped-mass model");
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
   if (spec.rotation.spinning()) check_spin(spec, options);
@@ -253,6 +254,7 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 }
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
+  ring::refuse_variations(spec, "the lumped-mass model");
   check_chain(spec, options, "statics");
   check_loads(spec, options, statics.loads, "static");
   if (ring::static_rigid_modes(spec, statics.loads) > 0)
@@ -268,6 +270,7 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                            const ring::StaticOptions& statics) {
+  ring::refuse_variations(spec, "the lumped-mass model");
   refuse_arch_here(spec, "the lumped modes under load (modes.preload)");
   check_plastic(spec, options, "modes under load (modes.preload)");
   if (options.variant == ring::LumpedOptions::Variant::frame)
@@ -282,6 +285,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions
 
 void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::BucklingOptions& buckling) {
+  ring::refuse_variations(spec, "the lumped-mass model");
   // On an arch the follower pressure alone, which Timoshenko & Gere's pinned arches test; point
   // loads and gravity bend the arch before it buckles and wait for an oracle.
   if (spec.is_arch() && (!buckling.loads.points.empty() || buckling.loads.has_gravity()))
@@ -305,6 +309,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::LumpedOptions& optio
 
 void check_response(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                     const ring::ResponseOptions& r) {
+  ring::refuse_variations(spec, "the lumped-mass model");
   check_chain(spec, options, "response");
   check_loads(spec, options, r.loads, "response");
   using Integrator = ring::ResponseOptions::Integrator;

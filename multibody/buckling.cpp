@@ -16,6 +16,7 @@ void check_buckling(const ring::RingSpec& spec, const ring::MultibodyOptions& op
                     const ring::BucklingOptions& buckling) {
   check_arch_buckling(spec, options, buckling.loads);  // an arch: the statics' loads (checks.hpp)
   ring::refuse_rotation(spec, "multibody linear buckling");
+  ring::refuse_variations(spec, "multibody linear buckling");
   if (spec.plastic)
     throw ring::InputError("", "ring.plastic",
                            "multibody linear buckling is about the undeformed, elastic ring and would ignore the "

@@ -116,6 +116,7 @@ void check_spinning(const ring::RingSpec& spec, const ring::MultibodyOptions& op
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
+  ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
   if (spec.rotation.spinning()) check_spinning(spec, options);
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;
@@ -153,6 +154,7 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics) {
+  ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody statics", PlasticUse::taken);
   // The chain's loads hold the centrifugal force of a spinning spec (loading.hpp), but the
   // statics have no turning frame to report in yet.
@@ -196,6 +198,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
 
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics) {
+  ring::refuse_variations(spec, "the multibody chain");
   ring::refuse_rotation(spec, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
@@ -213,6 +216,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
 
 void check_response(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                     const ring::ResponseOptions& response) {
+  ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody response", PlasticUse::refused);
   ring::refuse_rotation(spec, "the multibody response");
   if (spec.is_arch()) {

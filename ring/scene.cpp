@@ -276,6 +276,39 @@ double read_angle(const Reader& r, const toml::table& t, const std::string& sec,
 
 /// ring.arc = [from, to]: an arch (degrees, counter-clockwise), from in [-360, 360] and
 /// 0 < to - from < 360; absent: the closed ring.
+/// ring.variations = [{harmonic, thickness, density, phase}, ...] (ring/spec.hpp, Variation).
+/// Each model's resolution of the harmonics is checked with the nodes (check_nodes).
+std::vector<Variation> read_variations(const Reader& r, const toml::table& ring_t, const Section& section) {
+  std::vector<Variation> out;
+  double thick = 0.0, dense = 0.0;
+  for (const auto& [name, vt] : r.tables(ring_t, "ring", "variations")) {
+    r.known_keys(*vt, name, {"harmonic", "thickness", "density", "phase"});
+    Variation v;
+    if (!vt->contains("harmonic")) r.fail(name + ".harmonic", vt, "missing: the wave number K >= 1 of cos(K theta)");
+    v.harmonic = static_cast<int>(r.integer(*vt, name, "harmonic", 1, 1, 1000000));
+    v.thickness = r.number(*vt, name, "thickness", 0.0, -1.0, 1.0);
+    v.density = r.number(*vt, name, "density", 0.0, -1.0, 1.0);
+    v.phase = r.number(*vt, name, "phase", 0.0, -360.0, 360.0);
+    if (v.thickness == 0.0 && v.density == 0.0)
+      r.fail(name, vt, "a variation needs a thickness or a density amplitude (relative, in (-1, 1))");
+    if (v.thickness != 0.0 && section.shape == Section::Shape::general)
+      r.fail(name + ".thickness", vt->get("thickness"),
+             "a section given by {area, inertia} has no radial depth to vary: give its shape (circle or rectangle), "
+             "or vary the density alone");
+    thick += std::abs(v.thickness), dense += std::abs(v.density);
+    if (thick >= 1.0)
+      r.fail(name + ".thickness", vt->get("thickness"),
+             "the thickness amplitudes add up to " + fmt_num(thick) + ": a depth of 0 or less somewhere (keep the sum of "
+             "|thickness| below 1)");
+    if (dense >= 1.0)
+      r.fail(name + ".density", vt->get("density"),
+             "the density amplitudes add up to " + fmt_num(dense) + ": a density of 0 or less somewhere (keep the sum of "
+             "|density| below 1)");
+    out.push_back(v);
+  }
+  return out;
+}
+
 std::optional<Arc> read_arc(const Reader& r, const toml::table& ring_t) {
   if (!ring_t.contains("arc")) return std::nullopt;
   const toml::node* n = ring_t.get("arc");
@@ -369,6 +402,14 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
   std::vector<Model> models;
   for (const auto& m : schema.solvers)
     if (s.needs(m.name) || s.runs_nonlinear(m.name) || s.runs_buckling(m.name)) models.push_back({m.name, m.size_key, m.size(s)});
+  // A harmonic K of ring.variations needs more than 2 K pieces around the ring (its Nyquist
+  // limit) in every model that computes it.
+  for (std::size_t i = 0; i < s.ring.variations.size(); ++i)
+    for (const auto& m : models)
+      if (2 * s.ring.variations[i].harmonic >= m.n)
+        r.fail("ring.variations[" + std::to_string(i + 1) + "].harmonic", root.at_path("ring.variations").node(),
+               "the harmonic " + std::to_string(s.ring.variations[i].harmonic) + " is not resolved by " + m.key + " = " +
+                   std::to_string(m.n) + " pieces: a harmonic K needs more than 2 K (raise " + m.key + ")");
   const auto& sup = s.ring.supports;
   const double anchor = s.ring.anchor();
   struct Point { std::string key; double angle; };
@@ -586,7 +627,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   // [ring]
   const toml::table* rt = r.table(root, "", "ring");
   if (!rt) r.fail("ring", &root, "missing: the [ring] section (radius, E, rho, section)");
-  r.known_keys(*rt, "ring", {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient", "plastic", "arc"});
+  r.known_keys(*rt, "ring",
+               {"radius", "E", "rho", "section", "theory", "nu", "shear_coefficient", "plastic", "arc", "variations"});
   s.ring.radius = r.number(*rt, "ring", "radius", 10.0, 0.0, HUGE_VAL, true);
   s.ring.E = r.number(*rt, "ring", "E", 2.1e11, 0.0, HUGE_VAL, true);
   s.ring.rho = r.number(*rt, "ring", "rho", 7.8e3, 0.0, HUGE_VAL, true);
@@ -594,6 +636,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   s.ring.theory = read_theory(r, *rt, "ring").value_or(Theory::euler_bernoulli);
   s.ring.plastic = read_plastic(r, *rt, s.ring.section);
   s.ring.arc = read_arc(r, *rt);
+  s.ring.variations = read_variations(r, *rt, s.ring.section);
+  if (s.ring.arc && s.ring.varies())
+    r.fail("ring.variations", rt->get("variations"), "an arch (ring.arc) is not an imperfect ring here: vary a closed ring");
   s.ring.nu = r.number(*rt, "ring", "nu", 0.3, -1.0, 0.5);
   if (s.ring.nu <= -1.0 || s.ring.nu >= 0.5)
     r.fail("ring.nu", rt->get("nu"), "Poisson's ratio must lie in (-1, 0.5), got " + fmt_num(s.ring.nu));

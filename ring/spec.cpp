@@ -254,6 +254,34 @@ void refuse_arch(const RingSpec& spec, const std::string& who) {
   if (spec.arc) throw std::invalid_argument(who + " does not take an arch (ring.arc) yet");
 }
 
+void refuse_variations(const RingSpec& spec, const std::string& who) {
+  if (spec.varies()) throw std::invalid_argument(who + " does not take ring.variations yet");
+}
+
+double RingSpec::depth_factor(double deg) const {
+  double f = 1.0;
+  for (const auto& v : variations) f += v.thickness * std::cos(v.harmonic * (deg - v.phase) * M_PI / 180.0);
+  return f;
+}
+
+double RingSpec::density_factor(double deg) const {
+  double f = 1.0;
+  for (const auto& v : variations) f += v.density * std::cos(v.harmonic * (deg - v.phase) * M_PI / 180.0);
+  return f;
+}
+
+double RingSpec::A_at(double deg) const {
+  if (variations.empty()) return A();
+  const double s = depth_factor(deg);
+  return A() * (section.shape == Section::Shape::circle ? s * s : s);
+}
+
+double RingSpec::I_at(double deg) const {
+  if (variations.empty()) return I();
+  const double s = depth_factor(deg);
+  return I() * (section.shape == Section::Shape::circle ? s * s * s * s : s * s * s);
+}
+
 void refuse_rotation(const RingSpec& spec, const std::string& who) {
   if (spec.rotation.spinning()) throw std::invalid_argument(who + " does not take a spinning ring (rotation.speed) yet");
 }

@@ -168,6 +168,18 @@ struct Rotation {
   bool spinning() const { return speed != 0.0; }
 };
 
+/// ring.variations: one harmonic of an imperfect ring's variation around the circumference:
+/// the section's radial depth and the density change by the relative amounts `thickness` and
+/// `density` times cos(harmonic (theta - phase)). A rectangle keeps its width (A ~ depth,
+/// I ~ depth^3), a circle scales its diameter (A ~ depth^2, I ~ depth^4); a section given by
+/// {area, inertia} has no depth and takes only density variations (the scene reader).
+struct Variation {
+  int harmonic = 1;        ///< K >= 1
+  double thickness = 0.0;  ///< relative amplitude of the radial depth's variation
+  double density = 0.0;    ///< relative amplitude of the density's variation
+  double phase = 0.0;      ///< degrees
+};
+
 /// The ring itself: geometry, material and supports.
 struct RingSpec {
   double radius = 10.0;  ///< m, centroid radius R
@@ -190,6 +202,23 @@ struct RingSpec {
   std::optional<Plastic> plastic;
   /// [rotation]: the spin of the ring and the frame it is analysed in.
   Rotation rotation;
+  /// ring.variations: the imperfect ring's section and density around the circumference
+  /// (empty: uniform). The *_at(deg) members below give the local values.
+  std::vector<Variation> variations;
+  bool varies() const { return !variations.empty(); }
+  /// The local radial depth and density over the uniform ones at the polar angle `deg`:
+  /// 1 + sum thickness cos(K (deg - phase)), 1 + sum density cos(K (deg - phase)); > 0 (the
+  /// scene reader keeps the sums of |amplitude| below 1).
+  double depth_factor(double deg) const;
+  double density_factor(double deg) const;
+  /// Local section and mass properties at `deg` (the uniform A(), I(), EI(), ... when uniform).
+  double A_at(double deg) const;
+  double I_at(double deg) const;
+  double EI_at(double deg) const { return E * I_at(deg); }
+  double EA_at(double deg) const { return E * A_at(deg); }
+  double rhoA_at(double deg) const { return rho * density_factor(deg) * A_at(deg); }
+  double rhoI_at(double deg) const { return rho * density_factor(deg) * I_at(deg); }
+  double kGA_at(double deg) const { return kappa() * G() * A_at(deg); }
   /// Degrees: where the models of a free ring (no pin) put their node 0, so that every model
   /// of every solver has the same nodes. The scene reader sets it to the first point load of
   /// the scene (static, then response, then buckling; 0 without one). A pinned
@@ -234,6 +263,10 @@ struct RingSpec {
 /// Throws std::invalid_argument "`who` does not take a spinning ring (rotation.speed) yet" when
 /// spec spins, for a solver or analysis that has only the ring at rest.
 void refuse_rotation(const RingSpec& spec, const std::string& who);
+
+/// Throws std::invalid_argument "`who` does not take ring.variations yet" when spec varies
+/// around its circumference, for a solver or analysis that has only the uniform ring.
+void refuse_variations(const RingSpec& spec, const std::string& who);
 
 /// Throws std::invalid_argument "`who` has no Timoshenko model yet (ring.theory, or the
 /// solver's multibody.theory or fem.theory)" when spec.theory is Timoshenko, for a solver or

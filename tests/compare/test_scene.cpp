@@ -662,4 +662,32 @@ TEST(SceneReject, SpinWhatIsNotImplementedOrHasNoMeaning) {
   expect_rejected(replace(kPaper, "count = 23", "count = 23\nframe = \"fixed\""), "modes.frame", "[rotation]");
 }
 
+// An imperfect ring: the paper's ring with harmonic variations of its depth and density.
+std::string varied(const std::string& items) {
+  return replace(kPaper, "rho = 7.8e3", "rho = 7.8e3\nvariations = [" + items + "]");
+}
+
+TEST(SceneVariations, ReadsTheHarmonicsAndTheLocalSection) {
+  const ring::Scene s = cmp::parse_scene(varied("{harmonic = 4, thickness = 0.02, density = -0.01, phase = 10.0}"), "v.toml");
+  ASSERT_EQ(s.ring.variations.size(), 1u);
+  EXPECT_EQ(s.ring.variations[0].harmonic, 4);
+  // The paper's section is a circle: A ~ depth^2, I ~ depth^4; at the phase cos = 1.
+  EXPECT_NEAR(s.ring.A_at(10.0) / s.ring.A(), 1.02 * 1.02, 1e-14);
+  EXPECT_NEAR(s.ring.I_at(10.0) / s.ring.I(), std::pow(1.02, 4), 1e-14);
+  EXPECT_NEAR(s.ring.rhoA_at(10.0 + 45.0) / s.ring.rhoA(), 1.01 * 0.98 * 0.98, 1e-14);  // cos(4 x 45 deg) = -1
+}
+TEST(SceneReject, VariationsThatAreNotAnImperfectRing) {
+  expect_rejected(varied("{harmonic = 0, thickness = 0.01}"), "ring.variations[1].harmonic");
+  expect_rejected(varied("{thickness = 0.01}"), "ring.variations[1].harmonic", "missing");
+  expect_rejected(varied("{harmonic = 2}"), "ring.variations[1]", "amplitude");
+  expect_rejected(varied("{harmonic = 2, thickness = -1.0}"), "ring.variations[1].thickness");
+  expect_rejected(varied("{harmonic = 2, density = 0.6}, {harmonic = 3, density = -0.5}"), "ring.variations[2].density",
+                  "below 1");
+  expect_rejected(varied("{harmonic = 2, density = nan}"), "ring.variations[1].density");
+  expect_rejected(varied("{harmonic = 2, thickness = 0.01, phase = 1000.0}"), "ring.variations[1].phase");
+  // 40 pieces resolve harmonics up to 19.
+  expect_rejected(varied("{harmonic = 20, density = 0.01}"), "ring.variations[1].harmonic", "multibody.n");
+  expect_rejected(varied("{harmonic = 2, densty = 0.01}"), "ring.variations[1].densty");
+}
+
 }  // namespace
