@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -117,6 +119,40 @@ TEST(RingGyroscopeCli, TheTablePairsTravellingWavesByTheirWaves) {
       }
     EXPECT_TRUE(found) << solver;
   }
+}
+
+// The Campbell diagram through `ringvib sweep`: without the spin's tension the tyre's
+// backward k = 3 wave stands still in space at the speed where the closed form's
+// w_b(speed) = 3 speed (found here by bisection on the closed form); the sweep finds it by
+// linear interpolation between its cases. Bound: the chain's frequency error at n = 80
+// (1e-3 of w_b ~ 1400 rad/s, against the slope of w_b - 3 speed, ~2) moves the crossing by
+// ~0.7 rad/s, the interpolation over 10 rad/s by less: 1 % of the speed.
+TEST(SpinningTyreCli, TheSweepsCampbellDiagramFindsTheCriticalSpeed) {
+  spintest::Ring ring = tyre();
+  ring.tension = false;
+  double lo = 300.0, hi = 480.0;  // backward_fixed > 0 at lo, < 0 at hi (checked)
+  ring.speed = lo;
+  ASSERT_GT(spintest::inextensible(ring, 3).backward_fixed, 0.0);
+  ring.speed = hi;
+  ASSERT_LT(spintest::inextensible(ring, 3).backward_fixed, 0.0);
+  for (int i = 0; i < 60; ++i) {
+    ring.speed = 0.5 * (lo + hi);
+    (spintest::inextensible(ring, 3).backward_fixed > 0.0 ? lo : hi) = ring.speed;
+  }
+  const double critical = 0.5 * (lo + hi);
+  const std::string out = ringtest::temp_dir() + "/campbell";
+  const auto r = ringvib("sweep " + source("scenes/spinning-tyre.toml") +
+                         " --set 'rotation.tension=\"none\"' --set 'modes.solvers=[\"multibody\"]' --set modes.count=8"
+                         " --vary 'rotation.speed=[370, 380, 390, 400, 410]' -j 1 --out " + out);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream md(out + "/sweep.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  const std::string line = "multibody, wave 3 backward: ";
+  const auto at = text.find(line);
+  ASSERT_NE(at, std::string::npos) << text;
+  const double found = std::stod(text.substr(at + line.size()));
+  EXPECT_NEAR(found, critical, 0.01 * critical) << text;
+  EXPECT_TRUE(std::ifstream(out + "/campbell.png").good());
 }
 
 }  // namespace

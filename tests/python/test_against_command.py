@@ -186,6 +186,21 @@ def test_static_limit_points_equal_the_commands_json():
     assert row["ux_90"] == p["displacements"][0]["ux"] and row["uy_90"] == p["displacements"][0]["uy"]
 
 
+def test_spinning_modes_equal_the_commands_json():
+    # The spinning tyre in the fixed frame: frequencies, each mode's wave and direction, and
+    # the wave pairs with Bryan's factor are the JSON's, to the bit.
+    values = {"multibody.n": 40}
+    s = ringvib.Scene.load(scene_path("spinning-tyre.toml"), set=values)
+    m = ringvib.modes(s, "multibody")
+    j = ringvib_json("modes", scene_path("spinning-tyre.toml"), "--solver", "multibody", "--json",
+                     "--set", "multibody.n=40")
+    assert m.frame == j["frame"] == "fixed"
+    assert list(m.omega) == j["omega"]
+    assert m.wave == j["wave"] and m.direction == j["direction"]
+    assert m.wave_pairs == j["wave_pairs"]
+    assert {p["wave"] for p in m.wave_pairs} >= {2, 3}
+
+
 def test_bench_equals_the_commands_csv(tmp_path):
     # The same sweep as the command's: the same solvers, sizes and errors (times differ run to
     # run); the progress callback receives the study's lines as str.
