@@ -80,6 +80,8 @@
 #include <string>
 #include <vector>
 
+#include "ring/spec.hpp"
+
 namespace vartest {
 
 /// One harmonic of the variations (the fields of ring::Variation).
@@ -102,6 +104,43 @@ struct Ring {
   bool extensible = true;     ///< false: inextensible limit (w = -v')
 };
 
+/// The oracle's ring from a RingSpec: radius, E, rho, the uniform A and I, the shape's scaling
+/// law (circle: A ~ s^2, I ~ s^4; rectangle and general: A ~ s, I ~ s^3, as RingSpec::A_at),
+/// the variations, the foundation. Supports, masses, springs, theory, spin are not read (the
+/// oracle is the free or foundation-held Euler-Bernoulli ring at rest).
+inline Ring from_spec(const ring::RingSpec& spec, bool extensible = true) {
+  Ring r;
+  r.R = spec.radius;
+  r.E = spec.E;
+  r.rho = spec.rho;
+  r.A0 = spec.A();
+  r.I0 = spec.I();
+  r.circle = spec.section.shape == ring::Section::Shape::circle;
+  for (const auto& v : spec.variations) r.harmonics.push_back({v.harmonic, v.thickness, v.density, v.phase});
+  r.kr = spec.foundation.radial;
+  r.kt = spec.foundation.tangential;
+  r.extensible = extensible;
+  return r;
+}
+
+/// Local stiffnesses and mass per length at the polar angle `deg` (as RingSpec::EA_at, EI_at,
+/// rhoA_at): the coefficients the oracle integrates.
+struct Local {
+  double EA = 0.0, EI = 0.0, rhoA = 0.0;
+};
+
+inline Local local(const Ring& r, double deg) {
+  const double pi = std::acos(-1.0);
+  double s = 1.0, d = 1.0;
+  for (const auto& h : r.harmonics) {
+    const double c = std::cos(h.harmonic * (deg - h.phase) * pi / 180.0);
+    s += h.thickness * c;
+    d += h.density * c;
+  }
+  const double A = r.circle ? s * s : s, I = r.circle ? s * s * s * s : s * s * s;
+  return {r.E * r.A0 * A, r.E * r.I0 * I, r.rho * d * r.A0 * A};
+}
+
 struct Mode {
   double omega = 0.0;    ///< rad/s
   int wave = 0;          ///< dominant wave number (file comment)
@@ -116,17 +155,6 @@ struct Split {
 namespace detail {
 
 inline double pi() { return std::acos(-1.0); }
-
-inline double depth(const Ring& r, double th) {
-  double s = 1.0;
-  for (const auto& h : r.harmonics) s += h.thickness * std::cos(h.harmonic * (th - h.phase * pi() / 180.0));
-  return s;
-}
-inline double dens(const Ring& r, double th) {
-  double d = 1.0;
-  for (const auto& h : r.harmonics) d += h.density * std::cos(h.harmonic * (th - h.phase * pi() / 180.0));
-  return d;
-}
 
 /// Number of rigid modes (file comment).
 inline int rigid_count(const Ring& r) { return r.kt > 0.0 ? 0 : (r.kr > 0.0 ? 1 : 3); }
@@ -153,14 +181,13 @@ inline Solved solve(const Ring& r, int N) {
   for (const auto& h : r.harmonics) Kmax = std::max(Kmax, h.harmonic);
   const int nb = 2 * N + 1, nf = r.extensible ? 2 : 1, n = nf * nb;
   const int Q = 2 * N + 4 * Kmax + 8;
-  const double R = r.R, EI0 = r.E * r.I0, EA0 = r.E * r.A0, rA0 = r.rho * r.A0;
+  const double R = r.R, EI0 = r.E * r.I0, rA0 = r.rho * r.A0;
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), M = Eigen::MatrixXd::Zero(n, n);
   // Per point: rows of the linear maps coefficients -> (e, kappa R^2, w, v).
   Eigen::VectorXd le(n), lk(n), lw(n), lv(n);
   for (int q = 0; q < Q; ++q) {
     const double th = 2.0 * pi() * q / Q, wq = 2.0 * pi() / Q * R;
-    const double s = depth(r, th), d = dens(r, th);
-    const double A = r.circle ? s * s : s, I = r.circle ? s * s * s * s : s * s * s;
+    const Local c = local(r, th * 180.0 / pi());
     le.setZero();
     lk.setZero();
     lw.setZero();
@@ -177,11 +204,11 @@ inline Solved solve(const Ring& r, int N) {
         lk(nb + j) = -b2;
       }
     }
-    K.noalias() += wq * (EA0 * A / (R * R)) * le * le.transpose();
-    K.noalias() += wq * (EI0 * I / std::pow(R, 4)) * lk * lk.transpose();
+    K.noalias() += wq * (c.EA / (R * R)) * le * le.transpose();
+    K.noalias() += wq * (c.EI / std::pow(R, 4)) * lk * lk.transpose();
     if (r.kr != 0.0) K.noalias() += wq * r.kr * lw * lw.transpose();
     if (r.kt != 0.0) K.noalias() += wq * r.kt * lv * lv.transpose();
-    M.noalias() += wq * rA0 * d * A * (lw * lw.transpose() + lv * lv.transpose());
+    M.noalias() += wq * c.rhoA * (lw * lw.transpose() + lv * lv.transpose());
   }
   const double sigma = EI0 / (rA0 * std::pow(R, 4));
   Eigen::MatrixXd B = K + sigma * M;
@@ -260,7 +287,8 @@ inline std::vector<double> omegas(const Ring& r, int count, int N = 64) {
   return w;
 }
 
-/// Pair k (k >= 2 free; >= 0 on a foundation): the two lowest elastic modes of wave number k.
+/// Pair k (k >= 2 free; k >= 1 on a foundation): the two lowest elastic modes of wave number k
+/// (throws if fewer than two modes of the truncation have that wave number).
 inline Split pair_split(const Ring& r, int k, int N = 64) {
   const auto s = detail::solve(r, N);
   std::vector<Mode> found;
