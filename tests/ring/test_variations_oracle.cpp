@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include "ring/closed_form.hpp"
@@ -186,6 +187,9 @@ TEST(VariationsOracle, FromSpecKeepsTheSharedConventions) {
     const auto r = vartest::from_spec(spec);
     EXPECT_EQ(r.circle, circle);
     EXPECT_EQ(r.kr, 1.0e3);
+    auto pinned = spec;
+    pinned.supports.pin = 0.0;
+    EXPECT_THROW(vartest::from_spec(pinned), std::invalid_argument);
     for (double deg = -30.0; deg < 400.0; deg += 17.3) {
       const auto l = vartest::local(r, deg);
       EXPECT_LT(rel(l.EA, spec.EA_at(deg)), 1e-14) << deg;

@@ -106,9 +106,13 @@ struct Ring {
 
 /// The oracle's ring from a RingSpec: radius, E, rho, the uniform A and I, the shape's scaling
 /// law (circle: A ~ s^2, I ~ s^4; rectangle and general: A ~ s, I ~ s^3, as RingSpec::A_at),
-/// the variations, the foundation. Supports, masses, springs, theory, spin are not read (the
-/// oracle is the free or foundation-held Euler-Bernoulli ring at rest).
+/// the variations, the foundation. The oracle is the free or foundation-held Euler-Bernoulli ring
+/// at rest: a pin, springs, point masses, an arch or a spin throw std::invalid_argument; the
+/// theory (Timoshenko) and plasticity are not read (compare a thin Timoshenko ring to O(shear)).
 inline Ring from_spec(const ring::RingSpec& spec, bool extensible = true) {
+  if (!spec.supports.free() || !spec.supports.springs.empty() || !spec.masses.empty() || spec.is_arch() ||
+      spec.rotation.spinning())
+    throw std::invalid_argument("vartest::from_spec: only the free or foundation-held closed ring at rest");
   Ring r;
   r.R = spec.radius;
   r.E = spec.E;
