@@ -68,7 +68,7 @@
 // Symmetry rule (any order; checked with Hill in the self-test): a single harmonic K couples the
 // waves e^{+ik theta} and e^{-ik theta} only through n steps of +-K with n K = 2k, so it splits
 // pair k iff K divides 2k, at order 2k/K in the amplitude (K = 2k: first order; K = k: second
-// order); otherwise the pair stays exactly double (the ring's rotation by 360/K degrees turns
+// order: second_order_density_inextensible below); otherwise the pair stays exactly double (the ring's rotation by 360/K degrees turns
 // e^{ik theta} by different phases than e^{-ik theta}: two-dimensional representation of D_K).
 #pragma once
 
@@ -327,6 +327,38 @@ inline FirstOrder first_order_inextensible(const Ring& r, int k) {
   f.relative = std::abs(Z);
   const double per = 180.0 / k;
   double o = std::arg(Z) / (2.0 * k) * 180.0 / pi + 90.0 / k;
+  o = std::fmod(o, per);
+  if (o < 0.0) o += per;
+  if (o >= per) o -= per;
+  f.orientation_deg = o;
+  return f;
+}
+
+/// Second-order split of the FREE inextensible ring's pair k >= 2 by a density harmonic K = k
+/// (no first-order split: K does not equal 2k). Derived here: in the complex basis e^{im theta},
+/// eliminate the other waves from (K - lambda M) x = 0; waves k and -k are coupled through the
+/// single intermediate wave 0 (k - K = 0 = -k + K), the rigid rotation v = const (stiffness 0, mass
+/// 2 pi rho A0 R), with mass couplings M_{k,0} = M_{0,-k} = pi rho A0 R d e^{-i k phi} (the factor
+/// 1 + m n = 1). Its Schur term lambda M_{k,0} M_{0,-k} / M_{0,0} splits lambda by
+/// 2 |.| / M_kk = d^2 / (2 (k^2 + 1)) relative, so omega by
+///   (omega_hi - omega_lo)/omega0 = d^2 / (4 (k^2 + 1)) + O(d^4)   (0.05 d^2 for k = 2),
+/// the intermediates 2k and -2k shifting both waves alike. The lower mode's radial antinodes are
+/// at phi (mod 180/k). Several K = k harmonics add as D = sum d_i e^{-ik phi_i}. Throws
+/// std::invalid_argument for a thickness in a K = k harmonic (its squared coefficient, e.g. s^3,
+/// couples k and -k directly: not this formula), another harmonic, or a foundation.
+inline FirstOrder second_order_density_inextensible(const Ring& r, int k) {
+  if (r.kr != 0.0 || r.kt != 0.0) throw std::invalid_argument("vartest: second order split: free ring only");
+  const double pi = detail::pi();
+  std::complex<double> D = 0.0;
+  for (const auto& h : r.harmonics) {
+    if (h.harmonic != k || h.thickness != 0.0)
+      throw std::invalid_argument("vartest: second order split: density harmonics K = k only");
+    D += h.density * std::polar(1.0, -k * h.phase * pi / 180.0);
+  }
+  FirstOrder f;
+  f.relative = std::norm(D) / (4.0 * (double(k) * k + 1.0));
+  const double per = 180.0 / k;
+  double o = -std::arg(D) / k * 180.0 / pi;
   o = std::fmod(o, per);
   if (o < 0.0) o += per;
   if (o >= per) o -= per;
