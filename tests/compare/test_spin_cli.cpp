@@ -51,13 +51,13 @@ const nlohmann::json* pair_of(const nlohmann::json& j, int k) {
   return nullptr;
 }
 
-// Tolerances, from the measured errors through this command (twice them, rounded up):
-// multibody (n = 80) within 1.0e-3 of the closed form for k = 2, 3 in the turning frame and
-// 8e-4 in Bryan's factor; lumped chain (n = 80, the same discrete model's other coordinates at
-// its own masses) 3.4e-3 and 1.7e-3, both O(1/n^2) (their suites fit order 2.0); the FE beam
-// (40 cells of degree 3) against the exact extensible ring: the spin's prestressed circle is
-// larger by rho speed^2 R^2 / E = 6.5e-4 than the oracle's, which shifts its frequencies by
-// that order (measured below 1.5e-3).
+// Tolerances, from the measured errors through this command (about twice them): multibody
+// (n = 80) 1.8e-3 of the closed form at most (k = 3 backward, turning frame) and 8e-4 in Bryan's
+// factor; the lumped chain (n = 80) 3.7e-3 and 1.7e-3; both O(1/n^2) (their suites fit order
+// 2.0). The FE beam (40 cells of degree 3) against the exact extensible ring: 1.1e-3 at most
+// in frequency, which is the spin's prestressed circle, larger by rho speed^2 R^2 / E = 6.5e-4
+// than the oracle's (its own suite meets the oracle to 4e-7 where that ratio is 3e-7), and
+// 1e-6 in Bryan's factor.
 TEST(SpinningTyreCli, EverySolversWavePairsMeetTheClosedForms) {
   const spintest::Ring ring = tyre();
   for (const std::string solver : {"multibody", "lumped", "fem"}) {
@@ -65,8 +65,8 @@ TEST(SpinningTyreCli, EverySolversWavePairsMeetTheClosedForms) {
     if (j.is_null()) continue;
     EXPECT_EQ(j.at("frame"), "fixed") << solver;
     const bool fe = solver == "fem";
-    const double tol = solver == "multibody" ? 2e-3 : solver == "lumped" ? 7e-3 : 3e-3;
-    const double bryan_tol = solver == "multibody" ? 1.6e-3 : solver == "lumped" ? 3.4e-3 : 1e-3;
+    const double tol = solver == "multibody" ? 4e-3 : solver == "lumped" ? 8e-3 : 2.5e-3;
+    const double bryan_tol = solver == "multibody" ? 1.6e-3 : solver == "lumped" ? 3.4e-3 : 2e-6;
     for (int k : {2, 3}) {
       const nlohmann::json* p = pair_of(j, k);
       ASSERT_NE(p, nullptr) << solver << " has no wave pair " << k;
