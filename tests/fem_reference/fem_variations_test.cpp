@@ -6,6 +6,10 @@
 // Oracles (from outside the code under test):
 //  - the uniform ring's own modes: a variation of zero amplitude takes the varying path (the
 //    larger rule, the local tables) and must give them back to the refined pairs' round-off;
+//  - tests/support/variations.hpp (vartest, from the var-oracle branch): Hill's method
+//    (Fourier-Galerkin, spectrally converged) for the varying extensible ring, the pair's
+//    wave number, split and the lower mode's radial antinode, and the inextensible ring's
+//    first-order split (degenerate perturbation);
 //  - the refusals by key of every analysis that does not take the variations.
 #include <gtest/gtest.h>
 
@@ -14,10 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "fem_reference/buckling.hpp"
 #include "fem_reference/checks.hpp"
 #include "fem_reference/modes.hpp"
 #include "support/convergence.hpp"
 #include "support/paper.hpp"
+#include "support/variations.hpp"
 
 namespace {
 
@@ -74,6 +80,51 @@ TEST(FemVariations, PhaseOnAVertexTurnsTheRing) {
   const auto a = fem::compute_modes(varied({{4, 0.05, 0.02, 0.0}}), o, 8);
   const auto b = fem::compute_modes(varied({{4, 0.05, 0.02, 3 * 15.0}}), o, 8);
   for (std::size_t i = 0; i < a.omega.size(); ++i) EXPECT_NEAR(b.omega[i], a.omega[i], 1e-10 * a.omega[i]);
+}
+
+/// The radial antinode of the k-th harmonic of a shape's radial component at the common
+/// stations: W_c cos k theta + W_s sin k theta = C cos k (theta - o), o in [0, 180/k) degrees.
+double antinode(const ring::ModeShape& shape, int k) {
+  const double deg = std::acos(-1.0) / 180.0;
+  double c = 0.0, s = 0.0;
+  for (int j = 0; j < ring::kStations; ++j) {
+    c += shape.radial[j] * std::cos(k * ring::station_angle(j) * deg);
+    s += shape.radial[j] * std::sin(k * ring::station_angle(j) * deg);
+  }
+  const double per = 180.0 / k;
+  double o = std::fmod(std::atan2(s, c) / deg / k, per);
+  if (o < 0) o += per;
+  return o;
+}
+
+/// Angle between two orientations modulo the period 180/k, in [0, 90/k].
+double angle_apart(double a, double b, int k) {
+  const double per = 180.0 / k;
+  double d = std::fmod(std::abs(a - b), per);
+  return std::min(d, per - d);
+}
+
+/// Pair k splits at first order: K = 2k = 4 (thickness and density); K = 3 does not split it
+/// (it couples e^{i2 theta} and e^{-i2 theta} only through steps of 3, never summing to 4).
+ring::RingSpec splitting_ring() { return varied({{4, 0.05, 0.03, 20.0}}); }
+ring::RingSpec not_splitting_ring() {
+  ring::RingSpec s = varied({{3, 0.04, -0.03, 10.0}});
+  s.foundation.radial = 2e4;
+  s.foundation.tangential = 1e4;
+  return s;
+}
+
+TEST(FemVariations, Measure) {
+  for (const auto& spec : {splitting_ring(), not_splitting_ring()}) {
+    const auto exact = vartest::omegas(vartest::from_spec(spec), 8);
+    for (int p : {4, 6, 8})
+      for (int n : {16, 24, 32}) {
+        const auto r = fem::compute_modes(spec, options(n, p), 8);
+        double worst = 0;
+        for (int i = 0; i < 8; ++i) worst = std::max(worst, std::abs(r.omega[i] - exact[i]) / exact[i]);
+        std::printf("p %d n %d worst %.3e  (w1 %.12g ex %.12g)\n", p, n, worst, r.omega[0], exact[0]);
+      }
+  }
 }
 
 TEST(FemVariations, RefusesWhatItDoesNotTake) {
