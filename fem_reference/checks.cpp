@@ -218,7 +218,12 @@ static void check_spin(const ring::RingSpec& spec, const ring::FemOptions& o) {
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
-  ring::refuse_variations(spec, "the fem beam");
+  // ring.variations: the Euler-Bernoulli ring's linear modes take them (RingModel's local
+  // section, ring_model.hpp); the Timoshenko model's one cell matrix and the spinning ring's
+  // geometrically exact terms do not yet.
+  if (spec.varies() && (o.theory.value_or(spec.theory) == ring::Theory::timoshenko || spec.rotation.spinning()))
+    ring::refuse_variations(spec, spec.rotation.spinning() ? "the fem modes of a spinning ring"
+                                                           : "the fem Timoshenko ring");
   check_linear(spec, o);
   if (spec.rotation.spinning()) check_spin(spec, o);
   // The eigen-solve's precision limit, from fem.elements and fem.degree alone: refused

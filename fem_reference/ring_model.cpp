@@ -117,7 +117,13 @@ void RingModel::make_grid() {
   // Reference tables: every cell is the same affine image of [0, 1] in theta, so one
   // FEValues evaluation serves all cells. Gauss with p+2 points integrates the
   // polynomial integrands (degree <= 2p+2) exactly.
-  const QGauss<1> gauss(setup_.degree + 2);
+  int extra = 0;
+  if (spec_.varies()) {
+    int top = 0;
+    for (const ring::Variation& v : spec_.variations) top = std::max(top, v.harmonic);
+    extra = kVariationPoints + static_cast<int>(std::ceil(2.0 * top * h_));
+  }
+  const QGauss<1> gauss(setup_.degree + 2 + extra);
   std::vector<Point<1>> points = gauss.get_points();
   points.push_back(Point<1>(0.0));
   points.push_back(Point<1>(1.0));
@@ -169,6 +175,25 @@ void RingModel::make_grid() {
   // q = p (u' on the circle), makes the form coercive; h = arc length of a cell.
   const double q_kappa = setup_.degree;
   penalty_ = 2.0 * (q_kappa + 1) * (q_kappa + 2) * spec_.EI() / (ds_dtheta() * h_);
+  // ring.variations: the section at every Gauss point's and every vertex's polar angle.
+  // EA scales the axial stiffness in use (EA, or the inextensible penalty) by the local ratio.
+  if (spec_.varies()) {
+    constexpr double kDegrees = 180.0 / kPi;
+    const unsigned int n = setup_.cells();
+    const double EA_scale = setup_.EA / spec_.EA();
+    for (unsigned int cell = 0; cell < n; ++cell)
+      for (unsigned int q = 0; q < nq_; ++q) {
+        const double deg = (theta0_ + (cell + gauss.point(q)[0]) * h_) * kDegrees;
+        sections_.push_back({spec_.EI_at(deg), EA_scale * spec_.EA_at(deg), spec_.rhoA_at(deg),
+                             setup_.rotary_inertia ? spec_.rhoI_at(deg) : 0.0});
+      }
+    for (unsigned int v = 0; v <= n; ++v) vertex_EI_.push_back(spec_.EI_at((theta0_ + v * h_) * kDegrees));
+  }
+}
+
+RingModel::Section RingModel::section(unsigned int cell, unsigned int q) const {
+  if (!sections_.empty()) return sections_[cell * nq_ + q];
+  return {spec_.EI(), setup_.EA, spec_.rhoA(), setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0};
 }
 
 std::vector<std::pair<unsigned int, double>> RingModel::cells_at(unsigned int v) const {
@@ -387,7 +412,7 @@ Kinematics RingModel::kinematics(unsigned int cell, unsigned int i, unsigned int
 void RingModel::vertex_terms(unsigned int v, std::vector<double>& jump, std::vector<double>& mean) const {
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
   const unsigned int left = (v + n - 1) % n;
-  const double EI = spec_.EI();
+  const double EI = vertex_EI(v);
   for (unsigned int i = 0; i < dpc; ++i) {
     const auto l = kinematics(left, i, nq_ + 1);  // right end of the left cell
     jump[i] = -l.phi;
@@ -399,8 +424,6 @@ void RingModel::vertex_terms(unsigned int v, std::vector<double>& jump, std::vec
 }
 
 void RingModel::assemble() {
-  const double EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
-  const double rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
   // Winkler foundation on the polar fields (curved geometry only: check_modes).
   const double kt = spec_.foundation.tangential, kr = spec_.foundation.radial;
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
@@ -411,6 +434,7 @@ void RingModel::assemble() {
     k_cell = 0;
     m_cell = 0;
     for (unsigned int q = 0; q < nq_; ++q) {
+      const auto [EI, EA, rhoA, rhoI] = section(cell, q);
       for (unsigned int i = 0; i < dpc; ++i) kin[i] = kinematics(cell, i, q);
       for (unsigned int i = 0; i < dpc; ++i)
         for (unsigned int j = 0; j < dpc; ++j) {
@@ -430,9 +454,10 @@ void RingModel::assemble() {
   FullMatrix<double> k_vertex(2 * dpc, 2 * dpc);
   for (unsigned int v = first_joint(); v < n; ++v) {
     vertex_terms(v, jump, mean);
+    const double penalty = penalty_ * (vertex_EI_.empty() ? 1.0 : vertex_EI(v) / spec_.EI());
     for (unsigned int i = 0; i < 2 * dpc; ++i)
       for (unsigned int j = 0; j < 2 * dpc; ++j)
-        k_vertex(i, j) = mean[i] * jump[j] + mean[j] * jump[i] + penalty_ * jump[i] * jump[j];
+        k_vertex(i, j) = mean[i] * jump[j] + mean[j] * jump[i] + penalty * jump[i] * jump[j];
     cells_[(v + n - 1) % n]->get_dof_indices(dofs);
     cells_[v]->get_dof_indices(right);
     std::copy(dofs.begin(), dofs.end(), pair_dofs.begin());
@@ -444,8 +469,6 @@ void RingModel::assemble() {
 
 void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vector<Real>& mq) const {
   const Vector<double> full = expand(q);
-  const Real EI = spec_.EI(), EA = setup_.EA, rhoA = spec_.rhoA();
-  const Real rhoI = setup_.rotary_inertia ? spec_.rho * spec_.I() : 0.0;
   const Real kt = spec_.foundation.tangential, kr = spec_.foundation.radial;
   const unsigned int dpc = fe_.n_dofs_per_cell(), n = setup_.cells();
   kq.assign(n_free_, 0.0L);
@@ -474,6 +497,8 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
         phi += x[i] * kin[i].phi;
       }
       const Real ds = ds_[qp];
+      const Section local = section(cell, qp);
+      const Real EI = local.EI, EA = local.EA, rhoA = local.rhoA, rhoI = local.rhoI;
       for (unsigned int i = 0; i < dpc; ++i) {
         lk[i] += ds * (EA * eps * kin[i].eps + EI * kappa * kin[i].kappa + kt * d0 * kin[i].d[0] +
                        kr * d1 * kin[i].d[1]);
@@ -497,7 +522,8 @@ void RingModel::apply(const Vector<double>& q, std::vector<Real>& kq, std::vecto
       J += x[a] * jump[a];
       M += x[a] * mean[a];
     }
-    for (unsigned int a = 0; a < 2 * dpc; ++a) lk[a] = mean[a] * J + jump[a] * M + penalty_ * J * jump[a];
+    const Real penalty = penalty_ * (vertex_EI_.empty() ? 1.0 : vertex_EI(v) / spec_.EI());
+    for (unsigned int a = 0; a < 2 * dpc; ++a) lk[a] = mean[a] * J + jump[a] * M + penalty * J * jump[a];
     scatter(dofs, 0, dpc, lk, kq);
     scatter(right, dpc, dpc, lk, kq);
   }

@@ -96,6 +96,12 @@ constexpr double kAcceptedResidual = 1e-4;
 constexpr double kRoundOffFloor = 1e-12;
 /// Inextensible limit: EA -> beta EI / R^2 for these beta, then Richardson in 1/beta.
 constexpr double kInextensibleBeta = 1e6;
+/// ring.variations: the Euler-Bernoulli cell rule takes p + 2 + kVariationPoints +
+/// ceil(2 K h) Gauss points (K the highest harmonic, h the cell's angle) instead of p + 2.
+/// The integrands are then a polynomial of degree <= 2p + 2 times the local section, whose
+/// harmonics reach 4K (I ~ s^4 on a circle); the rule's error on them falls like h^(2n),
+/// far faster than the FE's own h^(2p) (measured in fem_variations_test).
+constexpr int kVariationPoints = 4;
 
 /// One discretization of the ring: what RingModel is built from.
 struct Setup {
@@ -413,7 +419,20 @@ class RingModel : public BeamModel {
   std::vector<unsigned int> bend_rows_;
   std::vector<double> bend_ds_;
   std::vector<unsigned int> component_;
-  double penalty_ = 0.0;  ///< sigma EI / h of the interior penalty
+  double penalty_ = 0.0;  ///< sigma EI / h of the interior penalty (uniform ring; vertex_EI scales it)
+
+  /// ring.variations (ring/spec.hpp): the local section at every Gauss point of every cell
+  /// (index [cell * nq_ + q], the point's polar angle theta0 + (cell + xi_q) h) and EI at
+  /// every vertex (the penalty and the mean moment), filled once in make_grid(); the terms
+  /// of assemble() (double) and apply() (long double) read them here and nowhere else.
+  /// Empty on a uniform ring: section() is then the spec's constants, as before.
+  struct Section {
+    double EI = 0.0, EA = 0.0, rhoA = 0.0, rhoI = 0.0;
+  };
+  std::vector<Section> sections_;
+  std::vector<double> vertex_EI_;
+  Section section(unsigned int cell, unsigned int q) const;
+  double vertex_EI(unsigned int v) const { return vertex_EI_.empty() ? spec_.EI() : vertex_EI_[v]; }
 };
 
 template <int spacedim = 1>
