@@ -85,6 +85,19 @@ TEST(MultibodyVariations, OpposedHarmonicsCancel) {
   for (std::size_t k = 0; k < a.omega.size(); ++k) EXPECT_NEAR(b.omega[k], a.omega[k], 1e-12 * a.omega[k]);
 }
 
+// dependent = "paper" is another basis of the same null space: on a varying pinned ring (pin
+// and roller, the paper's supports) it gives the robust basis's frequencies. Tolerance 1e-9
+// relative: the paper's block J_2 has condition cot(pi/n) ~ 13 at n = 40 (linear_model.hpp), so
+// its rounding is a few hundred eps of the robust path's.
+TEST(MultibodyVariations, PaperDependentAnglesAgree) {
+  const ring::RingSpec spec = varied(ringtest::pin_roller_ring(), 4, 0.1, 0.05, 30.0);
+  ring::MultibodyOptions paper = mbtest::dense_chain(40);
+  paper.dependent = ring::MultibodyOptions::Dependent::paper;
+  const ring::ModalResult a = multibody::compute_modes(spec, mbtest::dense_chain(40), 8);
+  const ring::ModalResult b = multibody::compute_modes(spec, paper, 8);
+  for (std::size_t k = 0; k < a.omega.size(); ++k) EXPECT_NEAR(b.omega[k], a.omega[k], 1e-9 * a.omega[k]) << k;
+}
+
 // What does not take ring.variations refuses by its key: the O(n) modes (method = sparse),
 // the spinning modes, the Timoshenko chain; "auto" stays dense where it would go sparse.
 TEST(MultibodyVariations, RefusedByKey) {
