@@ -46,6 +46,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -183,13 +184,20 @@ inline Vector constraint_jdot_qdot(const Chain::ConstraintKinematics& ck, const 
 /// segments'; n + x: the x-th moving hinge's chi, in the order of `rotations`; a negative c
 /// takes the hinge's own spring out), ground(i, c) for c r_i^2 / 2 and mass(i, J) for
 /// J r_i'^2 / 2. O(moving hinges).
-template <class Spring, class Ground, class Mass>
-void split_hinges(const std::vector<HingeRotation>& rotations, int n, double K, Spring spring, Ground ground,
+/// `Kat` is the hinge spring K, or a callable K(hinge) (a varying ring's local springs,
+/// linear_model.hpp's LocalChain).
+template <class Stiffness, class Spring, class Ground, class Mass>
+void split_hinges(const std::vector<HingeRotation>& rotations, int n, Stiffness Kat, Spring spring, Ground ground,
                   Mass mass) {
   int x = n;
   for (const HingeRotation& t : rotations) {
     if (!t.moves()) continue;
     const int a = (t.hinge + n - 1) % n, b = t.hinge;
+    double K;
+    if constexpr (std::is_invocable_v<Stiffness, int>)
+      K = Kat(t.hinge);
+    else
+      K = Kat;
     spring(a, b, -K);
     spring(a, x, 2.0 * K);
     spring(b, x, 2.0 * K);

@@ -55,6 +55,7 @@ inline Backend backend(const ring::MultibodyOptions& options, Analysis analysis)
 /// are the dense path's as well: check_preloaded_modes. O(masses).
 inline std::string banded_modes_lacks(const ring::RingSpec& spec) {
   if (spec.rotation.spinning()) return "spinning ring (rotation.speed: its gyroscopic modes are dense)";
+  if (spec.varies()) return "ring.variations (the local masses and springs are on the dense path only)";
   if (spec.theory == ring::Theory::timoshenko) return "Timoshenko chain (ring.theory = \"timoshenko\")";
   for (std::size_t i = 0; i < spec.masses.size(); ++i)
     if (spec.masses[i].inertia > 0.0)

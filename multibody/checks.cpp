@@ -116,7 +116,13 @@ void check_spinning(const ring::RingSpec& spec, const ring::MultibodyOptions& op
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
-  ring::refuse_variations(spec, "the multibody chain");
+  // ring.variations: the dense linear modes at rest of the Euler-Bernoulli chain only
+  // (linear_model.hpp, LocalChain); the O(n) paths are refused below (banded_modes_lacks).
+  if (spec.varies() && spec.rotation.spinning())
+    ring::refuse_variations(spec, "the multibody spinning modes (rotation.speed)");
+  if (spec.varies() && spec.theory == ring::Theory::timoshenko)
+    ring::refuse_variations(spec, "the multibody Timoshenko chain (ring.theory = \"timoshenko\")");
+  if (spec.varies() && spec.is_arch()) ring::refuse_variations(spec, "the multibody arch (ring.arc)");
   check_arch(spec, options, "the multibody linear modes", PlasticUse::ignored);
   if (spec.rotation.spinning()) check_spinning(spec, options);
   const bool sparse = backend(options, spec, Analysis::modes) == Backend::banded;

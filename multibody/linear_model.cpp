@@ -57,12 +57,12 @@ namespace {
 /// The unreduced K, M and J of the chain with its terms: on q (Euler-Bernoulli), or on
 /// (q, gamma) with the bending and the rotation terms on psi = theta + gamma (Timoshenko), and
 /// the hinge rotations that carry an inertia after them (linear_model.hpp). O(N^2).
-void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear* shear, Matrix& K, Matrix& M,
-              Matrix& J) {
+void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear* shear, const LocalChain* local,
+              Matrix& K, Matrix& M, Matrix& J) {
   const Vector q0 = chain.q0();
   const int n = chain.n(), dofs = chain.dofs(), hinge0 = dofs + (shear ? n : 0);
   const int N = linear_unknowns(chain, terms, shear);
-  M = chain.mass_matrix(q0);
+  M = local ? local->rest_mass_matrix(chain) : chain.mass_matrix(q0);
   if (N > dofs) {
     Matrix full = Matrix::Zero(N, N);
     full.topLeftCorner(dofs, dofs) = M;
@@ -89,21 +89,22 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
     add(K, i, j, -c);
     add(K, j, i, -c);
   };
-  const double Kh = chain.K();
-  for (int h = chain.first_spring(); h < n; ++h) spring((h + n - 1) % n, h, Kh);  // the hinge springs
+  // The hinge springs: the chain's K, or a varying ring's local K_h (LocalChain).
+  auto Kat = [&](int h) { return local ? local->spring[h % n] : chain.K(); };
+  for (int h = chain.first_spring(); h < n; ++h) spring((h + n - 1) % n, h, Kat(h));
   if (terms) {
     for (const detail::HingeRotation& t : terms->rotations) {
       if (t.moves()) continue;
       // Condensed onto the mean rotation (attachments.hpp): c m^2 / 2, m = (r_a + r_b) / 2
       // (an arch's end: its one segment's rotation).
-      const double c = detail::condensed_rotation_stiffness(t.kr, Kh, detail::is_end(chain, t.hinge));
+      const double c = detail::condensed_rotation_stiffness(t.kr, Kat(t.hinge), detail::is_end(chain, t.hinge));
       for (const auto& [i, wi] : detail::mean_rotation(chain, t.hinge))
         for (const auto& [j, wj] : detail::mean_rotation(chain, t.hinge)) add(K, i, j, c * wi * wj);
     }
     // The moving hinges: the spring split in two halves 2K to the hinge's rotation chi, which
     // carries the inertia and kr.
     detail::split_hinges(
-        terms->rotations, n, Kh, spring, [&](int x, double kr) { add(K, x, x, kr); },
+        terms->rotations, n, Kat, spring, [&](int x, double kr) { add(K, x, x, kr); },
         [&](int x, double j) { add(M, x, x, j); });
   }
   if (shear)
@@ -120,9 +121,10 @@ void assemble(const Chain& chain, const detail::LinearTerms* terms, const Shear*
 
 }  // namespace
 
-LinearModel linearize(const Chain& chain, Dependent dependent, const detail::LinearTerms* terms, const Shear* shear) {
+LinearModel linearize(const Chain& chain, Dependent dependent, const detail::LinearTerms* terms, const Shear* shear,
+                      const LocalChain* local) {
   Matrix K, M, J;
-  assemble(chain, terms, shear, K, M, J);
+  assemble(chain, terms, shear, local, K, M, J);
   const int N = static_cast<int>(K.rows()), c = static_cast<int>(J.rows()), r = N - c;
   LinearModel lm;
   lm.j2_condition = j2_condition(J, chain.n());
@@ -163,6 +165,51 @@ LinearModel linearize(const Chain& chain, Dependent dependent, const detail::Lin
     lm.M0 = reduce(M);
   }
   return lm;
+}
+
+LocalChain LocalChain::of(const Chain& chain, const ring::RingSpec& spec) {
+  const int n = chain.n();
+  const double l = chain.l();
+  const std::vector<double>& a = chain.hinge_angles_deg();
+  LocalChain lc{Vector(n), Vector(n), Vector(n)};
+  for (int i = 0; i < n; ++i) {
+    // Segment i runs from hinge i to hinge i + 1 (ring: 360 / n degrees on).
+    lc.mass[i] = spec.rhoA_at(a[i] + 180.0 / n) * l;
+    lc.rotary[i] = chain.Jr() > 0.0 ? lc.mass[i] * l * l / 12.0 : 0.0;
+    lc.spring[i] = spec.EI_at(a[i]) / l;
+  }
+  return lc;
+}
+
+Matrix LocalChain::rest_mass_matrix(const Chain& chain) const {
+  const int n = chain.n();
+  const double l = chain.l();
+  const Vector& c = chain.cos0();
+  const Vector& s = chain.sin0();
+  Vector after(n);  // S_j = sum_{i > j} m_i
+  double acc = 0.0;
+  for (int j = n - 1; j >= 0; --j) {
+    after[j] = acc;
+    acc += mass[j];
+  }
+  Matrix M = Matrix::Zero(chain.dofs(), chain.dofs());
+  for (int k = 0; k < n; ++k) {
+    for (int j = k + 1; j < n; ++j) {
+      const double v = l * l * (after[j] + 0.5 * mass[j]) * (c[j] * c[k] + s[j] * s[k]);
+      M(j, k) = v;
+      M(k, j) = v;
+    }
+    M(k, k) = l * l * (after[k] + 0.25 * mass[k]) + rotary[k];
+  }
+  if (chain.free()) {
+    for (int j = 0; j < n; ++j) {
+      const double b = l * (after[j] + 0.5 * mass[j]);
+      M(j, n) = M(n, j) = -b * s[j];
+      M(j, n + 1) = M(n + 1, j) = b * c[j];
+    }
+    M.bottomRightCorner<2, 2>() = acc * Eigen::Matrix2d::Identity();
+  }
+  return M;
 }
 
 Matrix LinearModel::expand(const Matrix& x) const {

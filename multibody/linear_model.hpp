@@ -26,6 +26,21 @@
 // unknown, so the stiff shear block of a thin ring stays apart from the bending: no rounding
 // loss at kGA l = 1e8 EI/l (tests/multibody/test_timoshenko.cpp). The modes converge at
 // order 2 to the inextensible Timoshenko ring in closed form.
+//
+// ## ring.variations (LocalChain)
+// A ring whose depth and density vary around the circumference (RingSpec::variations) keeps
+// the rest n-gon (the centroid line is the uniform ring's) and makes two things local, here
+// and nowhere else: segment i's mass m_i = rho A(mid_i) l at the polar angle mid_i of its
+// midpoint (midpoint rule: the centroid stays at the midpoint; the neglected first moment
+// rho A' l^3 / 12 and the second moment's correction are O(l^2) relative, so the order 2 in
+// 1/n holds), its rotary inertia m_i l^2 / 12 (when MultibodyOptions::rotary_inertia), and
+// hinge k's spring K_k = EI(a_k) / l at the hinge's own angle a_k (the midpoint rule of the
+// flexibility integral of 1/EI from midpoint to midpoint: also O(l^2)). The mass matrix at
+// rest is then sum_i m_i A_i^T A_i + diag(J_i) with A_i the midpoint's velocity map:
+//   M_jk = l^2 cos(phi_j - phi_k) (S_max(j,k) + m_max(j,k) / 2)  (j != k),
+//   M_jj = l^2 (S_j + m_j / 4) + J_j,   S_j = sum_{i > j} m_i,
+// and for a free ring M_(j, x0) = l e'(phi_j) (S_j + m_j / 2), M_(x0, x0) = sum m_i. Only the
+// dense linear modes at rest take it (checks.cpp refuses the rest by the key ring.variations).
 #pragma once
 
 #include <Eigen/Dense>
@@ -64,6 +79,17 @@ struct Shear {
   static Shear of(const ring::RingSpec& spec, double l) { return {spec.kGA() * l, spec.rhoI() * l}; }
 };
 
+/// The local segment masses and hinge springs of a varying ring (file comment), n each.
+struct LocalChain {
+  Vector mass;    ///< m_i = rho A(midpoint of segment i) l, kg
+  Vector rotary;  ///< J_i = m_i l^2 / 12, or 0 when the chain has no rotary inertia, kg m^2
+  Vector spring;  ///< K_k = EI(hinge k) / l, N m / rad
+  /// Of `spec` on `chain` (the chain built from spec). O(n).
+  static LocalChain of(const Chain& chain, const ring::RingSpec& spec);
+  /// The chain's mass matrix at rest q0 with these masses (file comment), dofs x dofs. O(n^2).
+  Matrix rest_mass_matrix(const Chain& chain) const;
+};
+
 /// The unknowns of the linear model, in this order: the chain's coordinates q, the shear
 /// angles gamma (one per segment, when `shear` is given), the hinge rotations that carry a
 /// point inertia (`terms`). O(1).
@@ -74,9 +100,12 @@ int linear_unknowns(const Chain& chain, const detail::LinearTerms* terms, const 
 /// clamp) added to K, M(q0) and the constraint rows when given (robust only), and with the
 /// shear angles of the Timoshenko chain when `shear` is given (file comment: the unknowns
 /// become (q, gamma), dofs + n). Cost O(N^2 c) time, O(N^2) memory (c = constraints, N the
-/// unknowns). Throws ring::NumericalError if the paper's block J_2 is singular.
+/// unknowns). `local`, when given, replaces the chain's uniform segment masses and hinge
+/// springs (a varying ring, file comment; not with `shear`). Throws ring::NumericalError if
+/// the paper's block J_2 is singular.
 LinearModel linearize(const Chain& chain, ring::MultibodyOptions::Dependent dependent,
-                      const detail::LinearTerms* terms = nullptr, const Shear* shear = nullptr);
+                      const detail::LinearTerms* terms = nullptr, const Shear* shear = nullptr,
+                      const LocalChain* local = nullptr);
 
 /// 2-norm condition number of the paper's block J_2 (the last two angle columns of the
 /// closure rows of J, c x dofs). O(1).

@@ -136,10 +136,10 @@ class ModesPath {
 class DensePath final : public ModesPath {
  public:
   DensePath(const Chain& chain, Dependent dependent, double s, const detail::LinearTerms* terms,
-            std::optional<Shear> shear)
-      : chain_(chain), dependent_(dependent), s_(s), terms_(terms), shear_(shear) {}
+            std::optional<Shear> shear, std::optional<LocalChain> local = std::nullopt)
+      : chain_(chain), dependent_(dependent), s_(s), terms_(terms), shear_(shear), local_(std::move(local)) {}
   void pairs(int nev, Vector& omega2, Matrix& vecs, LinearModel& model) override {
-    model = linearize(chain_, dependent_, terms_, shear_ ? &*shear_ : nullptr);
+    model = linearize(chain_, dependent_, terms_, shear_ ? &*shear_ : nullptr, local_ ? &*local_ : nullptr);
     dense_pairs(model, s_, nev, omega2, vecs);
   }
   void normalize(Matrix& vecs, const std::vector<int>& columns, ModalSolution& sol) override {
@@ -169,6 +169,7 @@ class DensePath final : public ModesPath {
   double s_;
   const detail::LinearTerms* terms_;
   std::optional<Shear> shear_;
+  std::optional<LocalChain> local_;  ///< ring.variations' local masses and springs (linear_model.hpp)
 };
 
 /// The O(n) paths' side in chain coordinates: the shapes dq, their M-normalization, the
@@ -335,7 +336,11 @@ ModalSolution solve_modes(const ring::RingSpec& spec, const ring::MultibodyOptio
     if (spec.theory == ring::Theory::timoshenko) shear = Shear::of(spec, chain.l());
     const int N = linear_unknowns(chain, terms ? &*terms : nullptr, shear ? &*shear : nullptr);
     r = N - chain.constraint_count() - (terms ? static_cast<int>(terms->J.rows()) : 0);
-    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr, shear);
+    // ring.variations: the local segment masses and hinge springs (linear_model.hpp, LocalChain),
+    // on this path only (checks.cpp refuses the others by the key).
+    std::optional<LocalChain> local;
+    if (spec.varies()) local = LocalChain::of(chain, spec);
+    path = std::make_unique<DensePath>(chain, options.dependent, s, terms ? &*terms : nullptr, shear, std::move(local));
   }
   const int expected_rigid = spec.rigid_modes();
   if (count < 1 || count > r - expected_rigid)
