@@ -219,7 +219,13 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 }
 
 void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
-  ring::refuse_variations(spec, "the lumped-mass model");
+  // ring.variations: the linear modes at rest of every variant on a closed ring (model.hpp,
+  // terms.hpp); the spinning modes (the nonlinear chain's and the corotational frame's
+  // uniform pieces, spin.hpp) and an arch's are refused.
+  if (spec.varies() && (spec.rotation.spinning() || spec.is_arch()))
+    throw std::invalid_argument(std::string("lumped: ring.variations: ") +
+                                (spec.is_arch() ? "an arch (ring.arc)" : "a spinning ring (rotation.speed)") +
+                                " does not take ring.variations yet; the linear modes at rest of a closed ring do");
   // Every term of the spec is in the linear model (model.hpp); its points must be nodes.
   check_theory(spec, options);
   if (spec.rotation.spinning()) check_spin(spec, options);

@@ -27,6 +27,8 @@ void check_theory(const ring::RingSpec& spec, const ring::LumpedOptions& options
 /// Linear modes: the shear stiffness of the Timoshenko frame (check_theory); every term of RingSpec (supports, masses,
 /// foundation) is in the model; n >= 4 and every point (pins, clamp, springs, masses) a node:
 /// anchor + 360 k / n (an arch: from + span k / n; the chain only, no roller).
+/// ring.variations: taken on a closed ring at rest by every variant (model.hpp, terms.hpp);
+/// with rotation.speed or ring.arc, std::invalid_argument naming ring.variations.
 /// A spinning ring (rotation.speed, spin.hpp): "chain" (lumped.n <= kMaxPreloadHinges) and
 /// "timoshenko-frame" (lumped.n <= modal::kMaxGyroscopicUnknowns / 3), on a closed ring without
 /// rigid modes; "frame" and "frame-consistent" refuse it naming lumped.variant and

@@ -5,6 +5,7 @@
 #include "ring/errors.hpp"
 
 #include <array>
+#include <functional>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -98,7 +99,13 @@ SpMat support_rows(const ring::RingSpec& spec, const std::vector<Vec2>& p, int d
 /// An arch (m.open): the n + 1 nodes' n links, the n - 1 interior hinges (model.hpp).
 void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, double l, Model& m) {
   const int n = m.n, N = 2 * n, links = m.links;
-  const double mass = spec.rhoA() * l, k = spec.EI() / l;
+  // ring.variations (terms.hpp, written once): link j's mass from rho A over its arc, hinge j's
+  // spring from the local EI at the hinge; a uniform ring: rho A l and EI / l.
+  const std::vector<double> angle = ring::node_angles(spec, links);  // node k's polar angle, deg
+  const double piece = (m.open ? spec.arc->to - spec.arc->from : 360.0) / links;
+  std::vector<double> mass(links), k(n);
+  for (int j = 0; j < links; ++j) mass[j] = piece_mass(spec, angle[j], angle[j] + piece, l);
+  for (int j = 0; j < n; ++j) k[j] = hinge_spring(spec, angle[j], l);
   // Unit side vectors t_j and their left normals nu_j (t rotated by +90 deg).
   std::vector<Vec2> t(links), nu(links);
   for (int j = 0; j < links; ++j) {
@@ -144,24 +151,25 @@ void assemble_chain(const ring::RingSpec& spec, const std::vector<Vec2>& p, doub
       for (int s = 0; s < 3; ++s) {
         const double gr[2] = {g[r].x, g[r].y}, gs[2] = {g[s].x, g[s].y};
         for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b) kt.emplace_back(2 * node[r] + a, 2 * node[s] + b, k * gr[a] * gs[b]);
+          for (int b = 0; b < 2; ++b) kt.emplace_back(2 * node[r] + a, 2 * node[s] + b, k[j] * gr[a] * gs[b]);
       }
   }
   m.K.resize(N, N);
   m.K.setFromTriplets(kt.begin(), kt.end());
   m.B.resize(hinges, N);
   m.B.setFromTriplets(bt.begin(), bt.end());
-  m.D = Eigen::VectorXd::Constant(hinges, k);
+  m.D.resize(hinges);
+  for (int j = first; j < first + hinges; ++j) m.D[j - first] = k[j];
 
   // Point mass at the midpoint (P_j + P_{j+1}) / 2 of side j: T = m/2 |(u_j + u_{j+1})/2|'^2.
   Triplets mt;
   for (int j = 0; j < links; ++j) {
     const int a = j, b = (j + 1) % n;
     for (int d = 0; d < 2; ++d) {
-      mt.emplace_back(2 * a + d, 2 * a + d, mass / 4.0);
-      mt.emplace_back(2 * b + d, 2 * b + d, mass / 4.0);
-      mt.emplace_back(2 * a + d, 2 * b + d, mass / 4.0);
-      mt.emplace_back(2 * b + d, 2 * a + d, mass / 4.0);
+      mt.emplace_back(2 * a + d, 2 * a + d, mass[j] / 4.0);
+      mt.emplace_back(2 * b + d, 2 * b + d, mass[j] / 4.0);
+      mt.emplace_back(2 * a + d, 2 * b + d, mass[j] / 4.0);
+      mt.emplace_back(2 * b + d, 2 * a + d, mass[j] / 4.0);
     }
   }
   m.M.resize(N, N);
@@ -190,8 +198,8 @@ constexpr std::array<int, 4> kBend{1, 2, 4, 5};
 /// on (v1, th1, v2, th2), d = EI l/2 (two-point Gauss integrates the linear curvature's
 /// energy exactly). Mass rho A l/2 per end on the translations (lumped, rotations massless)
 /// or the consistent matrix.
-Element euler_element(const ring::RingSpec& spec, double l, bool consistent) {
-  const double EA = spec.EA(), EI = spec.EI(), rA = spec.rhoA();
+Element euler_element(const Section& sec, double l, bool consistent) {
+  const double EA = sec.EA, EI = sec.EI, rA = sec.rhoA;
   Element e;
   e.k(0, 0) = e.k(3, 3) = EA / l;
   e.k(0, 3) = e.k(3, 0) = -EA / l;
@@ -243,8 +251,8 @@ Element euler_element(const ring::RingSpec& spec, double l, bool consistent) {
 /// (l (1 + phi)^2) vanishes with phi: no shear locking, whatever the slenderness.
 /// Mass lumped (row sum): rho A l/2 per end on the translations and rho I l/2 on the
 /// rotations (the section's rotary inertia; every DOF inertial, none condensed).
-Element timoshenko_element(const ring::RingSpec& spec, double l) {
-  const double EA = spec.EA(), EI = spec.EI(), kGA = spec.kGA();
+Element timoshenko_element(const Section& sec, double l) {
+  const double EA = sec.EA, EI = sec.EI, kGA = sec.kGA;
   const double phi = 12.0 * EI / (kGA * l * l);
   Element e;
   e.k(0, 0) = e.k(3, 3) = EA / l;
@@ -255,8 +263,8 @@ Element timoshenko_element(const ring::RingSpec& spec, double l) {
                            {6 * l, (2 - phi) * l * l, -6 * l, (4 + phi) * l * l}};
   for (int r = 0; r < 4; ++r)
     for (int s = 0; s < 4; ++s) e.k(kBend[r], kBend[s]) = EI / ((1.0 + phi) * l * l * l) * kb[r][s];
-  for (int i : {0, 1, 3, 4}) e.m(i, i) = spec.rhoA() * l / 2.0;
-  for (int i : {2, 5}) e.m(i, i) = spec.rhoI() * l / 2.0;
+  for (int i : {0, 1, 3, 4}) e.m(i, i) = sec.rhoA * l / 2.0;
+  for (int i : {2, 5}) e.m(i, i) = sec.rhoI * l / 2.0;
   // s and d on (v1, th1, v2, th2).
   const double s[4] = {1.0 / l, 0.5, -1.0 / l, 0.5}, d[4] = {0.0, -1.0, 0.0, 1.0};
   e.b = Eigen::Matrix<double, 4, 6>::Zero();
@@ -272,14 +280,17 @@ Element timoshenko_element(const ring::RingSpec& spec, double l) {
   return e;
 }
 
-/// Frame: element j on side j from node j to j+1, the element `e` rotated into the global
+/// Frame: element j on side j from node j to j+1, the element `element(j)` rotated into the global
 /// DOFs: global = R^T local R with R = blockdiag(r, r), r = [[c, s, 0], [-s, c, 0], [0, 0, 1]].
 /// O(n).
-void assemble_frame(const Element& e, const std::vector<Vec2>& p, Model& m) {
-  const int n = m.n, N = 3 * n, rows = static_cast<int>(e.b.rows());
+void assemble_frame(const std::function<Element(int)>& element, const std::vector<Vec2>& p, Model& m) {
+  const int n = m.n, N = 3 * n, rows = static_cast<int>(element(0).b.rows());
   m.D.resize(rows * n);
   Triplets kt, mt, bt;
+  bool massless_rotations = false;
   for (int j = 0; j < n; ++j) {
+    const Element e = element(j);
+    massless_rotations = e.massless_rotations;
     m.D.segment(rows * j, rows) = e.d;
     const int a = j, b = (j + 1) % n;
     const double dx = p[b].x - p[a].x, dy = p[b].y - p[a].y, len = std::hypot(dx, dy);
@@ -310,7 +321,7 @@ void assemble_frame(const Element& e, const std::vector<Vec2>& p, Model& m) {
   m.B.setFromTriplets(bt.begin(), bt.end());
   m.C.resize(0, N);
   m.massless.assign(N, 0);
-  if (e.massless_rotations)
+  if (massless_rotations)
     for (int k = 0; k < n; ++k) m.massless[3 * k + 2] = 1;
 }
 
@@ -404,7 +415,8 @@ void add_terms(const ring::RingSpec& spec, const std::vector<Vec2>& p, Model& m)
 NaturalStiffness natural_stiffness(const ring::RingSpec& spec, double l, ring::LumpedOptions::Variant variant) {
   using Variant = ring::LumpedOptions::Variant;
   if (variant == Variant::chain) throw std::invalid_argument("lumped: the chain has no frame element");
-  const Element e = variant == Variant::timoshenko_frame ? timoshenko_element(spec, l) : euler_element(spec, l, false);
+  const Section sec{spec.EA(), spec.EI(), spec.rhoA(), spec.rhoI(), spec.kGA()};  // uniform (the corotational frame)
+  const Element e = variant == Variant::timoshenko_frame ? timoshenko_element(sec, l) : euler_element(sec, l, false);
   NaturalStiffness k;
   k.axial = e.k(0, 0);
   k.bending << e.k(2, 2), e.k(2, 5), e.k(5, 2), e.k(5, 5);
@@ -430,11 +442,17 @@ Model assemble(const ring::RingSpec& spec, const ring::LumpedOptions& options) {
   m.lambda_scale = spec.EI() / (spec.rhoA() * std::pow(spec.radius, 4));
   const std::vector<Vec2> p = polygon(spec, m.links, m.circumradius);
   using Variant = ring::LumpedOptions::Variant;
+  // ring.variations in the frames: element j's section at its midpoint's polar angle (the
+  // midpoint rule over the element, O(l^2) per element, the frames' order; terms.hpp).
+  const double l = m.side, step = 360.0 / m.links, mid0 = m.anchor_deg + 0.5 * step;
+  const auto section = [&](int j) { return section_at(spec, mid0 + step * j); };
   switch (options.variant) {
     case Variant::chain: assemble_chain(spec, p, m.side, m); break;
-    case Variant::frame: assemble_frame(euler_element(spec, m.side, false), p, m); break;
-    case Variant::frame_consistent: assemble_frame(euler_element(spec, m.side, true), p, m); break;
-    case Variant::timoshenko_frame: assemble_frame(timoshenko_element(spec, m.side), p, m); break;
+    case Variant::frame: assemble_frame([&](int j) { return euler_element(section(j), l, false); }, p, m); break;
+    case Variant::frame_consistent:
+      assemble_frame([&](int j) { return euler_element(section(j), l, true); }, p, m);
+      break;
+    case Variant::timoshenko_frame: assemble_frame([&](int j) { return timoshenko_element(section(j), l); }, p, m); break;
   }
   add_terms(spec, p, m);
   m.S = support_rows(spec, p, m.dofs_per_node, m.anchor_deg, static_cast<int>(m.K.cols()));

@@ -81,6 +81,10 @@ struct Model {
 /// (anchor + 360 k / n), the clamp at a pinned point, stiffnesses, masses and inertias
 /// finite and >= 0. O(n) time and memory.
 ///
+/// ring.variations (terms.hpp, written once): every variant on a closed ring at rest. The chain's
+///   link mass is rho A integrated over the link's arc (3-point Gauss), its hinge spring EI / l
+///   the local EI at the hinge; a frame element takes the section at its midpoint's angle
+///   (the midpoint rule). Each O(l^2) or better: the models keep their order 2.
 /// chain: point masses m = rho A l at the side midpoints, rigid massless links (rows of C),
 ///   rotational springs k = EI/l at all n hinges. An arch: the n links' midpoint masses (an
 ///   end node carries one link's, m/4 [I I; I I] with its neighbour: on the diagonal, lumped,

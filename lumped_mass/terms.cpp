@@ -35,15 +35,33 @@ int node_at(const ring::RingSpec& spec, double deg, int pieces, const std::strin
   return k;
 }
 
+Section section_at(const ring::RingSpec& spec, double deg) {
+  if (!spec.varies()) return {spec.EA(), spec.EI(), spec.rhoA(), spec.rhoI(), spec.kGA()};
+  return {spec.EA_at(deg), spec.EI_at(deg), spec.rhoA_at(deg), spec.rhoI_at(deg), spec.kGA_at(deg)};
+}
+
+double piece_mass(const ring::RingSpec& spec, double from_deg, double to_deg, double length) {
+  if (!spec.varies()) return spec.rhoA() * length;
+  const double mid = 0.5 * (from_deg + to_deg), half = 0.5 * (to_deg - from_deg), x = std::sqrt(0.6);
+  const double mean = (5.0 * spec.rhoA_at(mid - x * half) + 8.0 * spec.rhoA_at(mid) + 5.0 * spec.rhoA_at(mid + x * half)) / 18.0;
+  return mean * length;
+}
+
+double hinge_spring(const ring::RingSpec& spec, double deg, double side) {
+  return (spec.varies() ? spec.EI_at(deg) : spec.EI()) / side;
+}
+
 void check_nonnegative(double v, const std::string& key) {
   if (!(v >= 0.0) || !std::isfinite(v))
     throw std::invalid_argument("lumped: " + key + " (= " + std::to_string(v) + ") must be finite and >= 0");
 }
 
 Terms::Terms(const ring::RingSpec& spec, int dofs_per_node, double anchor_deg, double side, const Eigen::VectorXd& rest)
-    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), open_(spec.is_arch()), k4_(4.0 * spec.EI() / side),
-      rest_(rest) {
+    : n_(static_cast<int>(rest.size() / 2)), dpn_(dofs_per_node), open_(spec.is_arch()), rest_(rest) {
   const int n = n_, dpn = dpn_;
+  k4_.resize(n);
+  for (int h = 0; h < n; ++h)  // the node's polar angle from its rest position
+    k4_[h] = 4.0 * hinge_spring(spec, std::atan2(rest[2 * h + 1], rest[2 * h]) * 180.0 / M_PI, side);
   const int pieces = open_ ? n - 1 : n;  // an arch's n + 1 nodes bound n pieces
   auto node = [&](double deg, const std::string& key) {
     return open_ ? node_at(spec, deg, pieces, key) : node_of(deg, anchor_deg, n, key);

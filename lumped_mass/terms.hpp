@@ -71,6 +71,25 @@ int node_at(const ring::RingSpec& spec, double deg, int pieces, const std::strin
 /// std::invalid_argument naming `key` unless v is finite and >= 0.
 void check_nonnegative(double v, const std::string& key);
 
+/// ring.variations (RingSpec::variations) in the bare ring, written ONCE here for every
+/// variant of the linear model (model.cpp) and the chain's hinge springs of these terms:
+/// the section and density at a polar angle, the model's pieces from them.
+struct Section {
+  double EA = 0.0, EI = 0.0, rhoA = 0.0, rhoI = 0.0, kGA = 0.0;
+};
+/// The local section at `deg` (RingSpec::EA_at...; a uniform ring: its constant values). O(harmonics).
+Section section_at(const ring::RingSpec& spec, double deg);
+/// The mass of the piece of ring from polar angle from_deg to to_deg (to > from, counter-clockwise)
+/// that a model piece of length `length` stands for: length times the mean of rho A over the arc, the
+/// mean by 3-point Gauss-Legendre in the angle (exact for polynomials of degree 5; its error
+/// O(l^6) per piece, far below every model's O(l^2)); a uniform ring: rho A length exactly. O(harmonics).
+double piece_mass(const ring::RingSpec& spec, double from_deg, double to_deg, double length);
+/// The chain's hinge spring at the hinge at polar angle `deg`: EI(deg) / l, the local EI at the
+/// hinge, the midpoint rule for the compliance integral of ds / EI over the arc of length l the
+/// hinge stands for (from its link midpoint to the next): O(l^2) per hinge, the chain's order
+/// (tests/lumped_mass/test_variations.cpp measures order 2). O(harmonics).
+double hinge_spring(const ring::RingSpec& spec, double deg, double side);
+
 /// A scalar function r(u) of a few DOFs at one configuration: value, gradient, Hessian.
 struct Measure {
   double value = 0.0;
@@ -122,7 +141,8 @@ class Terms {
   /// The chain's two half hinge springs at node h in parallel, the stiffness from the
   /// tangent's rotation to the hinge's own rotation chi: 4 EI/l, and 2 EI/l at an arch's end
   /// node, which has one link (the half hinge from the end link to the wall or chi). O(1).
-  double hinge_stiffness(int h) const { return open_ && (h == 0 || h == n_ - 1) ? 0.5 * k4_ : k4_; }
+  /// ring.variations: K = hinge_spring() at the node's angle.
+  double hinge_stiffness(int h) const { return open_ && (h == 0 || h == n_ - 1) ? 0.5 * k4_[h] : k4_[h]; }
 
   /// The rotation of the centroid line's tangent at node h at displacement u (see above).
   Measure rotation(const Eigen::VectorXd& u, int h, bool with_hessian) const;
@@ -168,7 +188,7 @@ class Terms {
 
   int n_ = 0, dpn_ = 2;
   bool open_ = false;  ///< an arch (ring.arc): nodes 0 and n_ - 1 are its ends, one link each
-  double k4_ = 0.0;  ///< the chain's two half hinge springs 2K in parallel, 4 EI/l
+  std::vector<double> k4_;  ///< by node: the chain's two half hinge springs 2K in parallel, 4 EI/l
   Eigen::VectorXd rest_;
   std::vector<Spring> springs_;
   std::vector<Inertia> inertia_;
