@@ -127,6 +127,9 @@ TrimResult run_trim(const std::string& text, const std::string& name, const std:
     }
     for (std::size_t j = 0; j < m.size(); ++j) {
       m[j] += dm[j];
+      // A mass within round-off of zero (the split lies along the other angle's direction
+      // alone: 1e-12 of the ring's mass, far below any probe's 1e-4) is none, not a removal.
+      if (std::abs(m[j]) <= 1e-12 * ring_mass) m[j] = 0.0;
       if (m[j] < 0.0)
         throw ring::NumericalError(fmt::format(
             "trim: pair k = {} needs {:.4g} kg at {:g} degrees, a removal; a mass at {:g} degrees acts as one: give "
