@@ -46,17 +46,6 @@ ring::RingSpec spinning_ring(ring::Rotation::Tension tension = ring::Rotation::T
   return s;
 }
 
-spintest::Ring oracle_ring(const ring::RingSpec& s) {
-  spintest::Ring r;
-  r.radius = s.radius;
-  r.EI = s.EI();
-  r.rhoA = s.rhoA();
-  r.kr = s.foundation.radial;
-  r.kt = s.foundation.tangential;
-  r.speed = s.rotation.speed;
-  r.tension = s.rotation.tension == ring::Rotation::Tension::spin;
-  return r;
-}
 
 ring::CalculixOptions options() {
   ring::CalculixOptions o;
@@ -102,7 +91,7 @@ TEST_P(CalculixSpin, PairsAndBryanFactorAgainstTheInextensibleClosedForm) {
     EXPECT_EQ(m.waves[i].direction, directions[i]) << "mode " << i + 1;
   }
   for (int k : {2, 3}) {
-    const spintest::WavePair exact = spintest::inextensible(oracle_ring(s), k);
+    const spintest::WavePair exact = spintest::inextensible(spintest::from_spec(s), k);
     const Pair p = pair_of(m, k);
     // Measured at 80 elements (tension spin; none within 2e-5 of it): k = 2 forward +5.0e-5,
     // backward +3.8e-5; k = 3 +8.6e-5, +8.0e-5: the bricks' discretization (at 40 elements
@@ -216,7 +205,7 @@ TEST(CalculixSpinCause, TheSplitDeficitComesWithTheMpcsOfTheFoundation) {
     const calculix::RunOutput out = calculix::run(deck.text, {});
     const auto modes = calculix::read_complex_dat(out.dat, calculix::node_count(options()));
     for (int k : {2, 3}) {
-      const double ratio = split_over_closed_form(modes, spintest::inextensible(oracle_ring(s), k));
+      const double ratio = split_over_closed_form(modes, spintest::inextensible(spintest::from_spec(s), k));
       if (modulus == 0.0) {
         // Measured +2.8e-5 (k = 2), +2.0e-4 (k = 3): the brick ring's extensibility and
         // thickness, order k^2 (h/R)^2. Bound 1e-3.
@@ -304,7 +293,7 @@ TEST(CalculixSpinCause, DISABLED_ABrickRingWithoutMpcsHasTheClosedFormsSplit) {
     const std::string deck = brick_ring_deck(s, 80, equations, &nodes);
     const auto modes = calculix::read_complex_dat(calculix::run(deck, {}).dat, nodes);
     for (int k : {1, 2, 3, 4}) {
-      const double ratio = split_over_closed_form(modes, spintest::inextensible(oracle_ring(s), k));
+      const double ratio = split_over_closed_form(modes, spintest::inextensible(spintest::from_spec(s), k));
       std::cout << (equations ? "with" : "without") << " equations, k = " << k << ": split / closed form - 1 = "
                 << ratio - 1.0 << "\n";
       // Measured without: -3.7e-5, 0, +2.5e-5, +3.4e-5; with: -7.4e-2, -7.4e-2, -7.3e-2, -7.2e-2.

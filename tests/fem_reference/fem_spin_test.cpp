@@ -57,17 +57,6 @@ ring::RingSpec thin_ring(double speed, Tension tension, ring::Theory theory = ri
 
 constexpr double kSpeed = 0.3;
 
-spintest::Ring oracle(const ring::RingSpec& s) {
-  spintest::Ring r;
-  r.radius = s.radius;
-  r.EI = s.EI();
-  r.rhoA = s.rhoA();
-  r.kr = s.foundation.radial;
-  r.kt = s.foundation.tangential;
-  r.speed = s.rotation.speed;
-  r.tension = s.rotation.tension == Tension::spin;
-  return r;
-}
 
 /// 16 elements of degree 6: the discretization error of k <= 3 is below the dense solve's
 /// rounding (inextensible, speed 0.3: 5e-9 at 16 x 6 and 1.1e-8 at 16 x 8 for k = 2; 16 x 4
@@ -105,7 +94,7 @@ void expect_closed_form(const ring::ModalResult& r, const ring::RingSpec& s, dou
                         const std::string& what) {
   ASSERT_EQ(r.waves.size(), r.omega.size()) << what;
   for (int k = 2; k <= 3; ++k) {
-    const spintest::WavePair p = spintest::inextensible(oracle(s), k);
+    const spintest::WavePair p = spintest::inextensible(spintest::from_spec(s), k);
     EXPECT_NEAR(wave(r, k, +1) / p.forward - 1.0, 0.0, frequency_tol) << what << " k = " << k << " forward";
     EXPECT_NEAR(wave(r, k, -1) / p.backward - 1.0, 0.0, frequency_tol) << what << " k = " << k << " backward";
     EXPECT_LT(wave(r, k, +1), wave(r, k, -1)) << what << ": the forward wave is the lower in the turning frame";
@@ -208,7 +197,7 @@ TEST(FemSpin, ConvergesInTheElements) {
   for (Tension tension : {Tension::spin, Tension::none}) {
     const ring::RingSpec s = thin_ring(kSpeed, tension);
     const std::vector<int> n = {8, 11, 16};
-    const spintest::WavePair p = spintest::inextensible(oracle(s), 3);
+    const spintest::WavePair p = spintest::inextensible(spintest::from_spec(s), 3);
     std::vector<double> forward, backward;
     for (int elements : n) {
       ring::FemOptions o = options(false);
@@ -224,11 +213,11 @@ TEST(FemSpin, ConvergesInTheElements) {
   }
 }
 
-spintest::ExtensibleRing extensible_oracle(const ring::RingSpec& s) { return {oracle(s), s.EA()}; }
+spintest::ExtensibleRing extensible_oracle(const ring::RingSpec& s) { return {spintest::from_spec(s), s.EA()}; }
 
 spintest::WavePair timoshenko_oracle(const ring::RingSpec& s, int k) {
   spintest::TimoshenkoRing t;
-  t.ring = oracle(s);
+  t.ring = spintest::from_spec(s);
   t.EA = s.EA();
   t.kGA = s.kGA();
   t.rhoI = s.rhoI();
@@ -270,7 +259,7 @@ TEST(FemSpin, RotaryInertiaEntersTheMassButNotTheCentrifugalSoftening) {
   EXPECT_TRUE(std::get<bool>(r.model.at("rotary_inertia")));
   for (int k = 2; k <= 3; ++k) {
     spintest::TimoshenkoRing t;
-    t.ring = oracle(s);
+    t.ring = spintest::from_spec(s);
     t.EA = s.EA();
     t.rhoI = s.rhoI();
     const spintest::WavePair p = spintest::timoshenko(t, k).branches.at(0);
@@ -330,7 +319,7 @@ TEST(FemSpin, PointMassesSpinWithTheRing) {
   const double per = 0.25 * s.rhoA() * 2.0 * M_PI * s.radius / 8.0;
   for (int i = 0; i < 8; ++i) s.masses.push_back({45.0 * i, per, 0.0});
   const ring::ModalResult r = fem::compute_modes(s, options(false), kCount);
-  spintest::Ring smeared = oracle(s);
+  spintest::Ring smeared = spintest::from_spec(s);
   smeared.rhoA *= 1.25;
   for (int k = 2; k <= 3; ++k) {
     const spintest::WavePair p = spintest::inextensible(smeared, k);

@@ -50,17 +50,6 @@ ring::RingSpec spinning_ring(double speed_fraction, Tension tension, double diam
   return s;
 }
 
-spintest::Ring oracle_of(const ring::RingSpec& s) {
-  spintest::Ring r;
-  r.radius = s.radius;
-  r.EI = s.EI();
-  r.rhoA = s.rhoA();
-  r.kr = s.foundation.radial;
-  r.kt = s.foundation.tangential;
-  r.speed = s.rotation.speed;
-  r.tension = s.rotation.tension == Tension::spin;
-  return r;
-}
 
 /// The frequency of the mode whose wave is (k, direction); NaN (a failure) when none is.
 double wave(const ring::ModalResult& r, int k, int direction) {
@@ -85,7 +74,7 @@ TEST_P(SpinningChain, WavesConvergeToTheInextensibleRingAtOrderTwo) {
   for (int n : ns) r.push_back(lumped::compute_modes(spec, lumptest::options(n, lumptest::kChain), 8));
   for (int k : {2, 3})
     for (int direction : {+1, -1}) {
-      const spintest::WavePair exact = spintest::inextensible(oracle_of(spec), k);
+      const spintest::WavePair exact = spintest::inextensible(spintest::from_spec(spec), k);
       const double w = direction > 0 ? exact.forward : exact.backward;
       std::vector<double> err;
       for (const ring::ModalResult& ri : r) err.push_back(std::abs(wave(ri, k, direction) / w - 1.0));
@@ -129,7 +118,7 @@ TEST_P(SpinningChain, ForwardIsLowerInTheTurningFrame) {
   EXPECT_TRUE(std::is_sorted(r.omega.begin(), r.omega.end()));
   EXPECT_LT(r.max_residual.value(), 1e-10);  // dense eigensolve at n = 40: rounding, ~1e-13 measured
   for (int k : {1, 2, 3}) {
-    const spintest::WavePair exact = spintest::inextensible(oracle_of(spec), k);
+    const spintest::WavePair exact = spintest::inextensible(spintest::from_spec(spec), k);
     const double f = wave(r, k, +1), b = wave(r, k, -1);
     EXPECT_LT(f, b) << "k = " << k;
     EXPECT_NEAR(f / exact.forward, 1.0, 1e-2) << "k = " << k;
@@ -241,7 +230,7 @@ TEST_P(SpinningFrame, WavesConvergeToTheInextensibleRing) {
     EXPECT_EQ(r.back().frame, "rotating");
   }
   for (int k : {2, 3}) {
-    const spintest::WavePair exact = spintest::inextensible(oracle_of(spec), k);
+    const spintest::WavePair exact = spintest::inextensible(spintest::from_spec(spec), k);
     std::vector<double> ef, eb, eB;
     for (const ring::ModalResult& ri : r) {
       const double f = wave(ri, k, +1), b = wave(ri, k, -1);

@@ -54,17 +54,6 @@ ring::RingSpec spinning_ring(double speed, Tension tension) {
 /// 2 rad/s: far above round-off.
 double test_speed() { return 0.3 * std::sqrt(1500.0 / ringtest::free_ring().rhoA()); }
 
-spintest::Ring oracle_ring(const ring::RingSpec& s) {
-  spintest::Ring r;
-  r.radius = s.radius;
-  r.EI = s.EI();
-  r.rhoA = s.rhoA();
-  r.kr = s.foundation.radial;
-  r.kt = s.foundation.tangential;
-  r.speed = s.rotation.speed;
-  r.tension = s.rotation.tension == Tension::spin;
-  return r;
-}
 
 /// The mode of wave number k travelling in `direction` (+1 with the spin), or -1.
 int find_wave(const ring::ModalResult& r, int k, int direction) {
@@ -86,7 +75,7 @@ class SpinningChain : public ::testing::TestWithParam<PairCase> {};
 TEST_P(SpinningChain, WavePairConvergesAtOrderTwoToTheInextensibleRing) {
   const PairCase c = GetParam();
   const ring::RingSpec spec = spinning_ring(test_speed(), c.tension);
-  const spintest::WavePair exact = spintest::inextensible(oracle_ring(spec), c.k);
+  const spintest::WavePair exact = spintest::inextensible(spintest::from_spec(spec), c.k);
   // The asymptotic range: k = 3's backward wave is pre-asymptotic below n = 80 (two error
   // sources of opposite sign; measured orders 2.44, 2.13, 2.03 over n = 40 .. 320 without the
   // tension, 0.4, 1.82, 1.96, 1.99 over n = 20 .. 320 with it), k = 2 from n = 20.
@@ -138,7 +127,7 @@ TEST(SpinningChain, PointMassesAtEveryHingeSpinAsTheRingOfTwiceTheMass) {
   const std::vector<int> ns{40, 80, 160};
   for (Tension t : {Tension::spin, Tension::none}) {
     const ring::RingSpec bare = spinning_ring(test_speed(), t);
-    spintest::Ring twice = oracle_ring(bare);
+    spintest::Ring twice = spintest::from_spec(bare);
     twice.rhoA *= 2.0;
     for (int k = 2; k <= 3; ++k) {
       const spintest::WavePair exact = spintest::inextensible(twice, k);
@@ -206,7 +195,7 @@ TEST(SpinningChain, EveryModeIsATravellingWaveAndPairsAreForwardThenBackward) {
   // g = 0) is standing. Its radial shape is the polygon's own ripple (the continuum's is 0), so
   // only the direction is asserted; its frequency within the chain's n = 40 error (2e-3
   // measured, order 2; 5e-3 allowed).
-  const double w0 = spintest::inextensible(oracle_ring(spec), 0).forward;
+  const double w0 = spintest::inextensible(spintest::from_spec(spec), 0).forward;
   int nearest = 0;
   for (std::size_t i = 1; i < r.omega.size(); ++i)
     if (std::abs(r.omega[i] - w0) < std::abs(r.omega[nearest] - w0)) nearest = static_cast<int>(i);

@@ -108,6 +108,8 @@
 // ascending, as ring::closed_form::free_ring_timoshenko's).
 #pragma once
 
+#include "ring/spec.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -147,6 +149,20 @@ inline WavePair inextensible(const Ring& r, int k) {
   p.forward_fixed = p.forward + k * W;
   p.backward_fixed = p.backward - k * W;
   return p;
+}
+
+/// The closed form's ring of a spec (radius, EI, rho A, foundation, speed, tension): the
+/// solvers' tests state their ring once, as a RingSpec, and take the oracle's from it.
+inline Ring from_spec(const ring::RingSpec& s) {
+  Ring r;
+  r.radius = s.radius;
+  r.EI = s.EI();
+  r.rhoA = s.rhoA();
+  r.kr = s.foundation.radial;
+  r.kt = s.foundation.tangential;
+  r.speed = s.rotation.speed;
+  r.tension = s.rotation.tension == ring::Rotation::Tension::spin;
+  return r;
 }
 
 /// Bryan's factor of the inextensible ring's wave k: (k^2 - 1) / (k^2 + 1).
