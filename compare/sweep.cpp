@@ -381,7 +381,8 @@ std::optional<std::string> plot_campbell(const std::string& dir, const std::vect
   const std::string found = critical.str();
   return "\n## Campbell diagram\n\n![campbell](campbell.png)\n\nCritical speeds (a branch of the fixed frame "
          "through zero: the wave stands still in space): " +
-         (found.empty() ? std::string("none in the speeds swept (they show only with modes.frame = \"fixed\").\n")
+         (found.empty() ? std::string("none between the speeds swept (a backward wave's branch changes sign there only in "
+                                             "the fixed frame, modes.frame = \"fixed\").\n")
                         : "\n\n" + found);
 }
 
