@@ -366,7 +366,8 @@ std::optional<std::string> plot_campbell(const std::string& dir, const std::vect
   for (auto& [label, s] : branches) {
     std::vector<std::size_t> order(s.x.size());
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
+    const std::vector<double>& xs = s.x;  // a lambda may not capture a structured binding before C++20 (clang)
+    std::sort(order.begin(), order.end(), [&xs](std::size_t a, std::size_t b) { return xs[a] < xs[b]; });
     Series sorted = s;
     for (std::size_t i = 0; i < order.size(); ++i) sorted.x[i] = s.x[order[i]], sorted.y[i] = s.y[order[i]];
     for (std::size_t i = 1; i < sorted.x.size(); ++i)
