@@ -36,6 +36,7 @@ int newton_iterations(const std::string& sta) {
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the calculix statics");
+  ring::refuse_displacement(st, "calculix");
   // An arch takes point loads (held to the elastica of DaDeppo & Schmidt's deep arch,
   // tests/calculix/calculix_arch_test.cpp). Distributed loads on an arch are refused until
   // validated: under a uniform pressure a pinned arch is membrane-dominated, its bending driven

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -155,7 +156,8 @@ std::string units_note(const NonlinearTable& t) {
              ? std::string("peak_u: largest |u| over the history (m); t_peak: when it occurs (s)") +
                    (plastic ? "; u_end: |u| at the end (m); dissipated: plastic work (J)" : "")
              : "ux, uy: displacement (m, ring-centred frame); u: its magnitude; dissipated: plastic work (J); "
-               "limit_load: the load factor at the path's first limit point";
+               "limit_load: the load factor at the path's first limit point; reaction_x, reaction_y: the force at the "
+               "driven point at the end (N); peak_reaction: its largest magnitude along the path (N)";
 }
 
 }  // namespace
@@ -246,6 +248,26 @@ NonlinearTable static_table(const std::string& title, const std::vector<ring::St
     for (const auto& r : results) row.value.push_back(r.dissipated);
     if (reference) row.reference = reference->dissipated;
     t.rows.push_back(row);
+  }
+  // A driven path (static.displacement): the force at the driven point at the end, x and y,
+  // and the largest force along the path (a crushing test's peak load), N.
+  const auto driven = [](const ring::StaticResult& r) { return r.driven; };
+  if (std::any_of(results.begin(), results.end(), driven) || (reference && driven(*reference))) {
+    const auto peak = [](const ring::StaticResult& r) {
+      double m = std::hypot(r.reaction[0], r.reaction[1]);
+      for (const auto& p : r.path) m = std::max(m, std::hypot(p.reaction[0], p.reaction[1]));
+      return m;
+    };
+    using Quantity = std::pair<const char*, std::function<double(const ring::StaticResult&)>>;
+    const std::vector<Quantity> quantities = {{"reaction_x", [](const ring::StaticResult& r) { return r.reaction[0]; }},
+                                              {"reaction_y", [](const ring::StaticResult& r) { return r.reaction[1]; }},
+                                              {"peak_reaction", peak}};
+    for (const auto& [name, value] : quantities) {
+      NonlinearRow row{NonlinearRow::kWholeRing, name, {}, {}, std::nullopt, {}};
+      for (const auto& r : results) row.value.push_back(value(r));
+      if (reference) row.reference = value(*reference);
+      t.rows.push_back(row);
+    }
   }
   // A path through a limit point (an arch's snap, a ring's collapse): the first limit load.
   const auto limit = [](const ring::StaticResult& r) { return r.limit_points.empty() ? NAN : r.limit_points.front().load_factor; };

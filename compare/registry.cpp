@@ -462,6 +462,14 @@ SolverEntry wrapped(SolverEntry e) {
     const SolverEntry copy = e;
     e.bench_sweep = [copy](const ring::Scene& s, int modes) { return doubling_sweep(copy, s, modes); };
   }
+  if (e.statics) {
+    auto statics = e.statics;
+    e.statics = [statics](const ring::Scene& s) {
+      ring::StaticResult r = statics(s);
+      r.driven = s.statics && s.statics->displacement;
+      return r;
+    };
+  }
   e.statics = finite(named_and_timed(e.name, e.statics));
   e.response = finite(named_and_timed(e.name, e.response));
   e.buckling = finite(named_and_timed(e.name, e.buckling));

@@ -212,11 +212,13 @@ void write_report(const std::string& dir, const RunReport& r) {
         md << "- " << x.solver << ": " << x.path.size() << " equilibria; ended at load factor " << x.end_load << ": "
            << x.end << "\n";
       }
-      plot_static_paths(dir, all, s.ring);
+      std::optional<std::array<double, 2>> drive;
+      if (s.statics->displacement) drive = s.statics->displacement->value;
+      plot_static_paths(dir, all, s.ring, drive);
       files.push_back("static_path.png");
       md << "\n![equilibrium paths](static_path.png)\n\n";
       if (!s.statics->history.empty()) {
-        plot_static_history(dir, all);
+        plot_static_history(dir, all, drive);
         files.push_back("static_history.png");
         md << "![the load history](static_history.png)\n\n";
       }

@@ -61,8 +61,10 @@ std::string static_json(const ring::StaticResult& r) {
     j["end_load"] = r.end_load;
     j["branch_points"] = r.branch_points;
     j["limit_points"] = nlohmann::json::array();
-    for (const auto& p : r.limit_points)
+    for (const auto& p : r.limit_points) {
       j["limit_points"].push_back({{"load_factor", p.load_factor}, {"displacements", displacements_json(p.displacements)}});
+      if (r.driven) j["limit_points"].back()["reaction"] = p.reaction;
+    }
     j["path_points"] = r.path.size();
     // Every accepted equilibrium: the load factor, the recorded points' displacements and,
     // for a plastic ring, the plastic work done so far and the largest plastic curvature.
@@ -73,10 +75,13 @@ std::string static_json(const ring::StaticResult& r) {
                            {"ovalisation", p.ovalisation},
                            {"dissipated", p.dissipated},
                            {"plastic_curvature", p.plastic_curvature}});
+      if (r.driven) j["path"].back()["reaction"] = p.reaction;
     }
   }
   j["dissipated"] = r.dissipated;
   j["plastic_curvature"] = r.plastic_curvature;
+  // static.displacement: the force [Fx, Fy] (N) the ring needs at the driven point.
+  if (r.driven) j["reaction"] = r.reaction;
   return j.dump(2) + "\n";
 }
 
@@ -90,6 +95,7 @@ std::string static_text(const ring::StaticResult& r) {
   }
   s << "   angle deg        ux m        uy m\n";
   for (const auto& d : r.displacements) s << fmt::format("  {:10.4g}  {:10.4e}  {:10.4e}\n", d.angle, d.ux, d.uy);
+  if (r.driven) s << fmt::format("reaction at the driven point: Fx {:.6e} N, Fy {:.6e} N\n", r.reaction[0], r.reaction[1]);
   return s.str();
 }
 
@@ -111,16 +117,42 @@ std::string static_path_csv(const ring::StaticResult& r) {
   s << "load_factor,ovalisation";
   if (!r.path.empty())
     for (const auto& d : r.path.front().displacements) s << ",ux_" << deg_label(d.angle) << ",uy_" << deg_label(d.angle);
-  s << ",dissipated,plastic_curvature\n";
+  s << ",dissipated,plastic_curvature" << (r.driven ? ",reaction_x,reaction_y" : "") << "\n";
   for (const auto& p : r.path) {
     s << p.load_factor << "," << p.ovalisation;
     for (const auto& d : p.displacements) s << "," << d.ux << "," << d.uy;
-    s << "," << p.dissipated << "," << p.plastic_curvature << "\n";
+    s << "," << p.dissipated << "," << p.plastic_curvature;
+    if (r.driven) s << "," << p.reaction[0] << "," << p.reaction[1];
+    s << "\n";
   }
   return s.str();
 }
 
-void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring) {
+namespace {
+
+/// A driven path (static.displacement = `drive` at load factor 1) drawn as a test machine
+/// draws it: the reaction's component along the drive against the driven point's travel.
+void plot_driven_paths(const std::string& dir, const std::string& name, const std::vector<ring::StaticResult>& results,
+                       const std::array<double, 2>& drive) {
+  const double length = std::hypot(drive[0], drive[1]);
+  std::vector<Series> series;
+  for (const auto& r : results) {
+    Series x{r.solver, {}, {}};
+    for (const auto& p : r.path) {
+      x.x.push_back(p.load_factor * length);
+      x.y.push_back((p.reaction[0] * drive[0] + p.reaction[1] * drive[1]) / length);
+    }
+    if (!x.x.empty()) series.push_back(x);
+  }
+  plot_series(dir, name, "Driven path: the force at the driven point against its travel",
+              "travel of the driven point along static.displacement.value (m)", "reaction along it (N)", series);
+}
+
+}  // namespace
+
+void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring,
+                       const std::optional<std::array<double, 2>>& drive) {
+  if (drive) return plot_driven_paths(dir, "static_path", results, *drive);
   std::vector<Series> series;
   if (!ring.arc) {
     for (const auto& r : results) {
@@ -157,7 +189,9 @@ void plot_static_paths(const std::string& dir, const std::vector<ring::StaticRes
               "displacement at " + deg_label(angle) + " deg (m)", "load factor", series);
 }
 
-void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results) {
+void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results,
+                         const std::optional<std::array<double, 2>>& drive) {
+  if (drive) return plot_driven_paths(dir, "static_history", results, *drive);
   if (results.empty() || results.front().path.empty() || results.front().path.front().displacements.empty()) return;
   // The component of the first recorded point that moves most along the first path.
   double range[2] = {0.0, 0.0};

@@ -2,6 +2,8 @@
 // response (the paper's Figures 4 and 5).
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 
 #include "ring/errors.hpp"
@@ -26,11 +28,15 @@ std::string path_summary(const std::vector<ring::StaticResult>& results);
 std::string static_path_csv(const ring::StaticResult& r);
 /// static.path: load factor against ovalisation (a ring) or against the displacements of the first
 /// recorded point (an arch), every solver's path overlaid (static_path.png).
-void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring);
+/// static.displacement (`drive` its value at load factor 1): the reaction's component along
+/// the drive (N) against the driven point's displacement along it (m) instead.
+void plot_static_paths(const std::string& dir, const std::vector<ring::StaticResult>& results, const ring::RingSpec& ring,
+                       const std::optional<std::array<double, 2>>& drive = std::nullopt);
 /// static.history: load factor against the displacement of the first recorded point (its
 /// component with the larger range), every solver's path overlaid (static_history.png): the
 /// loops of cyclic loading of a plastic ring.
-void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results);
+void plot_static_history(const std::string& dir, const std::vector<ring::StaticResult>& results,
+                         const std::optional<std::array<double, 2>>& drive = std::nullopt);
 /// static_path_shapes.png: the deformed ring of `r`'s path at five equilibria, nearest to 0,
 /// 1/4, ..., 1 of its largest ovalisation (rest to the touch), true to scale.
 void plot_path_shapes(const std::string& dir, const ring::StaticResult& r, const ring::RingSpec& ring);

@@ -252,6 +252,7 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the fem beam");
   check_nonlinear(spec, o, st.loads, st.record, "static");
+  ring::refuse_displacement(st, "the fem beam");
   if (spec.is_arch() && spec.plastic)
     throw ring::InputError("", "ring.arc", "fem: the plastic statics take no arch yet (remove ring.plastic)");
   check_plastic(spec, "statics");

@@ -39,8 +39,9 @@ struct Plugin {
 /// Version 2 added statics and respond (the geometrically exact beam), 3 buckling, 4
 /// modes_under_load, 5 ResponseOptions::progress (a std::function, called inside the plug-in;
 /// safe because both sides share one compiler and standard library, as for std::string), 6
-/// RingSpec::rotation and ModalResult's waves, frame and spin_pairs (a spinning ring).
-constexpr int kAbiVersion = 6;
+/// RingSpec::rotation and ModalResult's waves, frame and spin_pairs (a spinning ring), 7
+/// StaticOptions::displacement and the reactions of StaticResult and PathPoint.
+constexpr int kAbiVersion = 7;
 
 }  // namespace fem
 

@@ -262,6 +262,7 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the lumped-mass model");
   check_chain(spec, options, "statics");
+  ring::refuse_displacement(statics, "the lumped-mass model");
   check_loads(spec, options, statics.loads, "static");
   if (ring::static_rigid_modes(spec, statics.loads) > 0)
     throw std::invalid_argument(

@@ -162,6 +162,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                   const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody statics", PlasticUse::taken);
+  ring::refuse_displacement(statics, "the multibody chain");
   // The chain's loads hold the centrifugal force of a spinning spec (loading.hpp), but the
   // statics have no turning frame to report in yet.
   ring::refuse_rotation(spec, "the multibody statics");

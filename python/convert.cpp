@@ -194,9 +194,9 @@ Static to_python(const ring::StaticResult& r) {
   o.limit_points = py::none();
   // The columns of static_path_<solver>.csv, in its order (`whole`), or the load factor and
   // the recorded points' displacements alone.
-  auto table = [](const std::vector<ring::PathPoint>& path, bool whole) {
+  auto table = [&r](const std::vector<ring::PathPoint>& path, bool whole) {
     const std::size_t n = path.size(), points = path.front().displacements.size();
-    std::vector<double> load(n), oval(n), dissipated(n), plastic(n);
+    std::vector<double> load(n), oval(n), dissipated(n), plastic(n), rx(n), ry(n);
     std::vector<std::vector<double>> ux(points, std::vector<double>(n)), uy = ux;
     for (std::size_t k = 0; k < n; ++k) {
       const ring::PathPoint& p = path[k];
@@ -204,6 +204,8 @@ Static to_python(const ring::StaticResult& r) {
       oval[k] = p.ovalisation;
       dissipated[k] = p.dissipated;
       plastic[k] = p.plastic_curvature;
+      rx[k] = p.reaction[0];
+      ry[k] = p.reaction[1];
       for (std::size_t i = 0; i < points && i < p.displacements.size(); ++i) {
         ux[i][k] = p.displacements[i].ux;
         uy[i][k] = p.displacements[i].uy;
@@ -229,6 +231,12 @@ Static to_python(const ring::StaticResult& r) {
       c.order.push_back("plastic_curvature");
       c.real.push_back({"plastic_curvature", &plastic});
     }
+    if (r.driven) {
+      c.order.push_back("reaction_x");
+      c.real.push_back({"reaction_x", &rx});
+      c.order.push_back("reaction_y");
+      c.real.push_back({"reaction_y", &ry});
+    }
     return structured(n, c);
   };
   if (!r.path.empty()) o.path = table(r.path, true);
@@ -238,6 +246,7 @@ Static to_python(const ring::StaticResult& r) {
   o.end_load = r.end_load;
   o.dissipated = r.dissipated;
   o.plastic_curvature = r.plastic_curvature;
+  o.reaction = r.driven ? py::object(py::make_tuple(r.reaction[0], r.reaction[1])) : py::none();
   o.unknowns = r.unknowns;
   o.steps = r.steps;
   o.newton_iterations = r.newton_iterations;

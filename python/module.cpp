@@ -362,7 +362,8 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("path", &Static::path,
                     "static.path or static.history: every accepted equilibrium from rest, a structured ndarray\n"
                     "with the columns of static_path_<solver>.csv: load_factor, ovalisation, ux_<deg>, uy_<deg>\n"
-                    "per recorded point (m), dissipated (J), plastic_curvature (1/m). None without a path.")
+                    "per recorded point (m), dissipated (J), plastic_curvature (1/m), and with\n"
+                    "static.displacement reaction_x, reaction_y (N). None without a path.")
       .def_readonly("branch_points", &Static::branch_points, "Load factors where the path switched onto a branch.")
       .def_readonly("limit_points", &Static::limit_points,
                     "static.path: the located limit points (maxima of the load factor along the path), a\n"
@@ -373,6 +374,9 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("dissipated", &Static::dissipated, "ring.plastic: the plastic work done, J (0 if elastic).")
       .def_readonly("plastic_curvature", &Static::plastic_curvature,
                     "ring.plastic: the largest plastic curvature left in the ring, 1/m.")
+      .def_readonly("reaction", &Static::reaction,
+                    "static.displacement: the force (Fx, Fy) the ring needs at the driven point at the end, N.\n"
+                    "None when loads drive the path.")
       .def_readonly("unknowns", &Static::unknowns, "Size of the nonlinear system.")
       .def_readonly("steps", &Static::steps, "Load steps (or arc-length steps) taken.")
       .def_readonly("newton_iterations", &Static::newton_iterations)

@@ -1,7 +1,7 @@
 # Type stubs of the ringvib module (python/module.cpp), for editors and type checkers.
 # tests/python/test_stubs.py holds them to the module: every public name and attribute here
 # exists there and the other way round. Units are in each docstring (help(ringvib.modes)).
-from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -99,6 +99,8 @@ class Static:
     def dissipated(self) -> float: ...
     @property
     def plastic_curvature(self) -> float: ...
+    @property
+    def reaction(self) -> Optional[Tuple[float, float]]: ...
     @property
     def unknowns(self) -> int: ...
     @property

@@ -3,7 +3,10 @@
 // include the scene format (ring/scene.hpp).
 #pragma once
 
+#include <array>
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "ring/spec.hpp"
@@ -56,7 +59,22 @@ struct StaticOptions {
   /// static.history: the load factors visited in turn from rest, `steps` increments per
   /// leg (loading, unloading, reversed loading, cycles). Empty: one leg from 0 to 1.
   std::vector<double> history;
+  /// static.displacement: the path is driven by a point's displacement instead of loads (a
+  /// crushing test's way, and the way along a collapse plateau): the node at `at` is held at
+  /// s times `value` (its x and y displacement, m; s the load factor, through the history as
+  /// loads are), and the force the ring needs there is the result (PathPoint::reaction). No
+  /// loads act with it (the scene reader refuses them); the point counts as a pin in the
+  /// rigid-mode rule, and lies on a node of every model and on no support.
+  struct Displacement {
+    double at = 0.0;                   ///< degrees
+    std::array<double, 2> value{0, 0};  ///< m, x and y, at load factor 1
+  };
+  std::optional<Displacement> displacement;
 };
+
+/// Refuses static.displacement (exit 2 naming the key) for `who`, a solver that has no
+/// displacement control: "<who> has no displacement control (static.displacement) yet".
+void refuse_displacement(const StaticOptions& statics, const std::string& who);
 
 /// Linear buckling about the undeformed ring ([buckling]): the load factors lambda and
 /// modes phi of the reference loads with

@@ -1,6 +1,7 @@
 // Result types shared by all solvers, so that the driver can compare them.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -132,6 +133,10 @@ struct PathPoint {
   /// its plastic rotation over the segment length). 0 for an elastic ring.
   double dissipated = 0.0;
   double plastic_curvature = 0.0;
+  /// static.displacement: the force the ring needs at the driven point to be there, N, x
+  /// and y (the force the rig applies to the ring; a pinch downwards has reaction[1] < 0).
+  /// 0 without displacement control.
+  std::array<double, 2> reaction{0.0, 0.0};
 };
 
 /// The most nodes a PathPoint keeps of its deformed ring: a figure's resolution, and the
@@ -166,6 +171,11 @@ struct StaticResult {
   /// ring.plastic, at the end: as PathPoint's (J, 1/m).
   double dissipated = 0.0;
   double plastic_curvature = 0.0;
+  /// static.displacement, at the end: as PathPoint's (N, x and y).
+  std::array<double, 2> reaction{0.0, 0.0};
+  /// The path was driven by static.displacement (the registry sets it from the scene): the
+  /// load factor is the fraction of the prescribed displacement, `reaction` the result.
+  bool driven = false;
 };
 
 /// Time history of a forced response; one entry per accepted step (t = 0 first).

@@ -117,6 +117,34 @@ PointLoad read_point_load(const Reader& r, const toml::table& t, const std::stri
   return p;
 }
 
+/// static.displacement = {at, value = [ux, uy]}: the driven point (ring/analysis.hpp).
+StaticOptions::Displacement read_displacement(const Reader& r, const toml::table& t, const RingSpec& ring) {
+  const std::string name = "static.displacement";
+  r.known_keys(t, name, {"at", "value"});
+  if (!t.contains("at")) r.fail(name + ".at", &t, "missing: the angle (degrees) of the driven point");
+  if (!t.contains("value")) r.fail(name + ".value", &t, "missing: the displacement [ux, uy] in m at load factor 1");
+  StaticOptions::Displacement d;
+  d.at = wrap_degrees(r.number(t, name, "at", 0.0, -360.0, 360.0));
+  const auto v = r.numbers(t, name, "value", {}, 2);
+  // Beyond a few radii no model here holds (the inextensible ring spans 2 R at most); the
+  // bound keeps 1e300 from reaching a solver.
+  const double reach = 4.0 * ring.radius;
+  if (!(std::hypot(v[0], v[1]) > 0.0) || std::hypot(v[0], v[1]) > reach)
+    r.fail(name + ".value", t.get("value"),
+           "expected a displacement of length in (0, " + fmt_num(reach) + "] m (4 radii), got [" + fmt_num(v[0]) + ", " +
+               fmt_num(v[1]) + "]");
+  d.value = {v[0], v[1]};
+  for (double p : ring.supports.pinned())
+    if (circular_distance(d.at, p) < 1e-6)
+      r.fail(name + ".at", t.get("at"), "the point at " + fmt_num(d.at) + " deg is pinned (supports); drive another point");
+  if (ring.supports.roller && circular_distance(d.at, *ring.supports.roller) < 1e-6)
+    r.fail(name + ".at", t.get("at"), "the point at " + fmt_num(d.at) + " deg is supports.roller; drive another point");
+  for (const auto& sp : ring.supports.springs)
+    if (circular_distance(d.at, sp.angle) < 1e-6)
+      r.fail(name + ".at", t.get("at"), "the point at " + fmt_num(d.at) + " deg has a support spring; drive another point");
+  return d;
+}
+
 /// The loads of [static] or [response]: point loads (`loads = [{at, force}, ...]`, or the
 /// one-load shorthand `at`/`force`), `pressure = {value, kind}` and `gravity = [gx, gy]`;
 /// at least one of them.
@@ -432,6 +460,7 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
     for (std::size_t i = 0; i < s.statics->loads.points.size(); ++i)
       points.push_back({point_load_key("static", s.statics->loads, i), s.statics->loads.points[i].angle});
     for (double a : s.statics->record) points.push_back({"static.record", a});
+    if (s.statics->displacement) points.push_back({"static.displacement.at", s.statics->displacement->at});
   }
   if (s.buckling)
     for (std::size_t i = 0; i < s.buckling->loads.points.size(); ++i)
@@ -756,12 +785,25 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   if (const toml::table* t = r.table(root, "", "static")) {
     const std::string sec = "static";
     r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path", "branch",
-                           "history"});
+                           "history", "displacement"});
     StaticOptions o;
-    o.loads = read_loads(r, *t, sec);
+    if (const toml::table* dt = r.table(*t, sec, "displacement")) {
+      o.displacement = read_displacement(r, *dt, s.ring);
+      for (const char* key : {"at", "force", "loads", "pressure", "gravity"})
+        if (t->contains(key))
+          r.fail(sec + "." + key, t->get(key),
+                 "static.displacement drives the path, and loads would be scaled with it: give the one or the other");
+    } else {
+      o.loads = read_loads(r, *t, sec);
+    }
     // A dead load has an equilibrium only when nothing is left to move rigidly (gravity may
-    // hold the rotation of a ring that hangs from its pin).
-    if (const int rigid = static_rigid_modes(s.ring, o.loads); rigid > 0)
+    // hold the rotation of a ring that hangs from its pin); a driven point holds as a pin does.
+    RingSpec held = s.ring;
+    if (o.displacement) {
+      if (held.supports.pin) held.supports.pins.push_back(o.displacement->at);
+      else held.supports.pin = o.displacement->at;
+    }
+    if (const int rigid = static_rigid_modes(held, o.loads); rigid > 0)
       r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
              s.ring.supports.pin
                  ? "a static analysis needs a roller as well as the pin (or a second pin, a clamp, springs, a "
@@ -794,6 +836,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     const bool own = t->contains("at") || t->contains("force") || t->contains("loads") || t->contains("pressure") ||
                      t->contains("gravity");
     if (own) o.loads = read_loads(r, *t, sec);
+    else if (s.statics && s.statics->displacement)
+      r.fail("buckling.loads", t, "has no load: [static] drives a displacement (static.displacement), not loads; give "
+                                  "buckling.loads, .at/.force, .pressure or .gravity");
     else if (s.statics) o.loads = s.statics->loads;
     else r.fail("buckling.loads", t, "has no load: give buckling.loads, .at/.force, .pressure or .gravity, or a [static] "
                                      "section whose loads it takes");
@@ -825,6 +870,10 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
 
   if (const toml::table* t = r.table(root, "", "rotation")) read_rotation(r, *t, s);
 
+  if (s.modes.preload_static && s.statics && s.statics->displacement)
+    r.fail("modes.preload", root.at_path("modes.preload").node(),
+           "\"static\" takes the loads of [static], and its path is driven by static.displacement: the modes about a "
+           "driven state are not implemented");
   if (s.modes.preload_static && !s.statics)
     r.fail("modes.preload", root.at_path("modes.preload").node(),
            "\"static\" takes the equilibrium of [static], and the scene has no [static] section");

@@ -1,5 +1,6 @@
 #include "ring/spec.hpp"
 #include "ring/analysis.hpp"
+#include "ring/errors.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -280,6 +281,12 @@ double RingSpec::I_at(double deg) const {
   if (variations.empty()) return I();
   const double s = depth_factor(deg);
   return I() * (section.shape == Section::Shape::circle ? s * s * s * s : s * s * s);
+}
+
+void refuse_displacement(const StaticOptions& statics, const std::string& who) {
+  if (statics.displacement)
+    throw InputError("", "static.displacement",
+                     who + " has no displacement control (static.displacement) yet: drive the path by loads");
 }
 
 void refuse_rotation(const RingSpec& spec, const std::string& who) {

@@ -416,6 +416,41 @@ TEST(ScenePlastic, AnalysesThatWouldIgnoreThePlasticLawAreRefused) {
   expect_rejected(kPlasticStatic + "[buckling]\ncount = 2\n", "ring.plastic", "buckling");
   expect_rejected(replace(kPlasticStatic, "[modes]", "[modes]\npreload = \"static\""), "ring.plastic", "preload");
 }
+// static.displacement (docs/scenes.md): a driven point instead of loads. The pin at 180 and
+// the driven point at 0 hold the ring (the driven point counts as a pin).
+const std::string kDriven = kPaper + "[static]\ndisplacement = { at = 0.0, value = [-0.5, 0.0] }\n";
+TEST(SceneDisplacement, ReadsTheDrivenPointAndHoldsTheRingWithIt) {
+  const ring::Scene s = cmp::parse_scene(kDriven, "d.toml", {});
+  ASSERT_TRUE(s.statics.has_value() && s.statics->displacement.has_value());
+  EXPECT_DOUBLE_EQ(s.statics->displacement->at, 0.0);
+  EXPECT_DOUBLE_EQ(s.statics->displacement->value[0], -0.5);
+  EXPECT_DOUBLE_EQ(s.statics->displacement->value[1], 0.0);
+  EXPECT_TRUE(s.statics->loads.points.empty());
+}
+TEST(SceneDisplacement, HostileValuesAreRefusedNamingTheKey) {
+  const auto with = [](const std::string& d) {
+    return replace(kDriven, "displacement = { at = 0.0, value = [-0.5, 0.0] }", "displacement = " + d);
+  };
+  expect_rejected(with("{ value = [-0.5, 0.0] }"), "static.displacement.at", "missing");
+  expect_rejected(with("{ at = 0.0 }"), "static.displacement.value", "missing");
+  expect_rejected(with("{ at = 0.0, value = [0.0, 0.0] }"), "static.displacement.value", "length in (0");
+  expect_rejected(with("{ at = 0.0, value = [1e300, 0.0] }"), "static.displacement.value", "4 radii");
+  expect_rejected(with("{ at = 0.0, value = [nan, 0.0] }"), "static.displacement.value");
+  expect_rejected(with("{ at = 0.0, value = [-0.5] }"), "static.displacement.value", "2 numbers");
+  expect_rejected(with("{ at = inf, value = [-0.5, 0.0] }"), "static.displacement.at");
+  expect_rejected(with("{ at = 0.0, value = [-0.5, 0.0], by = 2 }"), "static.displacement.by");
+  expect_rejected(with("[0.0, -0.5]"), "static.displacement", "table");
+  // at a node of every model (multibody.n = 40: every 9 degrees from the pin at 180)
+  expect_rejected(with("{ at = 5.0, value = [-0.5, 0.0] }"), "static.displacement.at", "not a node");
+  // not at a support, not with loads, not on a ring it leaves free
+  expect_rejected(with("{ at = 180.0, value = [-0.5, 0.0] }"), "static.displacement.at", "pinned");
+  expect_rejected(kDriven + "at = 90.0\nforce = [1.0, 0.0]\n", "static.at", "one or the other");
+  expect_rejected(replace(kDriven, "pin = 180.0", ""), "supports.pin");
+}
+TEST(SceneDisplacement, AnalysesThatTakeTheStaticLoadsAreRefused) {
+  expect_rejected(kDriven + "[buckling]\ncount = 2\n", "buckling.loads", "static.displacement");
+  expect_rejected(replace(kDriven, "[modes]", "[modes]\npreload = \"static\""), "modes.preload", "driven");
+}
 TEST(SceneReject, StaticsWithoutRoller) {
   expect_rejected(kPaper + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\n", "supports.roller", "turn about the pin");
 }

@@ -235,3 +235,17 @@ TEST(FibrePinchedRingOracle, MatchesTheClosedFormsItIsBuiltFrom) {
   EXPECT_LT(gaps[1], 1e-3);
   EXPECT_LT(gaps[1], gaps[0] / 5.0);  // sqrt(100) = 10-fold expected
 }
+
+// The four-hinge mechanism's large-deflection load against the virtual work it is built from,
+// in its own parameter phi: c(phi) = 2 R (1 - cos phi + sin phi), each of four hinges turning by
+// 2 phi, so P dc/dphi = 8 Mp. The derivative is a central difference (h = 1e-5: error ~1e-10).
+TEST(PinchedPlasticRingOracle, TheMechanismLoadDoesTheHingesWork) {
+  const ringtest::PinchedPlasticRing ring{2.0, 3.0, 5.0};
+  EXPECT_DOUBLE_EQ(ring.mechanism_load(0.0), ring.collapse());
+  const auto closing = [&](double phi) { return 2.0 * ring.R * (1.0 - std::cos(phi) + std::sin(phi)); };
+  for (double phi : {0.05, 0.3, 0.7}) {
+    const double h = 1e-5, dc = (closing(phi + h) - closing(phi - h)) / (2.0 * h);
+    EXPECT_NEAR(ring.mechanism_load(closing(phi)) * dc, 8.0 * ring.Mp, 1e-8 * ring.Mp) << "phi " << phi;
+  }
+  EXPECT_NEAR(ring.mechanism_load(2.0 * ring.R), ring.collapse() / std::sqrt(2.0), 1e-14 * ring.collapse());
+}

@@ -47,7 +47,44 @@ struct PinchedPlasticRing {
   double residual_closing(double P) const { return closing(P) - elastic_closing(P); }
   /// The moment left under the loads after loading to P* (in [P_y, P_c]) and unloading, N m.
   double residual_moment(double P) const { return Mp - P * R / M_PI; }
+  /// Past collapse, at large deflection, rigid–plastic: the four hinges stay where they formed
+  /// (under the loads and on the other diameter) and each quarter turns rigidly by phi about
+  /// its hinge on the other diameter. The closing is c = 2 R (1 - cos phi + sin phi), each
+  /// hinge turns by 2 phi, and virtual work P dc = 8 Mp dphi gives the falling mechanism load
+  ///   P(c) = 4 Mp / (R sqrt(2 - (1 - c / (2 R))^2)),
+  /// P_c at c = 0 and P_c / sqrt(2) at c = 2 R (the mechanism of point loads; DeRuntz & Hodge's
+  /// plates make hinges that travel instead). The elastic–plastic ring approaches it from
+  /// below-left as c grows past its elastic closing at collapse, an offset of order Mp R^2 / EI.
+  double mechanism_load(double c) const {
+    const double a = 1.0 - c / (2.0 * R);
+    return 4.0 * Mp / (R * std::sqrt(2.0 - a * a));
+  }
 };
+
+/// The paper ring pinned at 270 deg and driven at 90 deg (static.displacement): the pinch by
+/// displacement control, with the resultant law's Mp = mp EI / R, perfectly plastic (none:
+/// elastic). The driven point holds the ring as a second pin.
+inline ring::RingSpec driven_plastic_ring(std::optional<double> mp) {
+  ring::RingSpec s = pinned_ring(270.0);
+  if (mp) {
+    s.plastic = ring::Plastic{};
+    s.plastic->moment = *mp * s.EI() / s.radius;
+  }
+  return s;
+}
+
+/// The statics of the driven pinch: the point at 90 deg moved down by `closing` (m), the
+/// points at 90 and 0 deg recorded, along `history` (default: to the full closing), `steps`
+/// increments per leg. The reaction there is (0, -P), P the pinching force.
+inline ring::StaticOptions driven_pinch(double closing, std::vector<double> history = {}, int steps = 20) {
+  ring::StaticOptions st;
+  st.displacement = ring::StaticOptions::Displacement{90.0, {0.0, -closing}};
+  st.record = {90.0, 0.0};
+  st.history = std::move(history);
+  st.path = true;
+  st.steps = steps;
+  return st;
+}
 
 /// The paper ring pinned at 0 and on a roller at 180 (the pinch's supports), with the resultant
 /// law's Mp = mp EI / R, perfectly plastic, kinematic (none: elastic).
