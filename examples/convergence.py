@@ -15,15 +15,17 @@ importable, and says so otherwise.
 import argparse
 import pathlib
 import time
+from typing import List, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 import ringvib
 
 HERE = pathlib.Path(__file__).resolve().parent
 
 
-def mac_pairing(a, b):
+def mac_pairing(a: ringvib.Modes, b: ringvib.Modes) -> Tuple[npt.NDArray[np.intp], npt.NDArray[np.float64]]:
     """For each mode of `a`, the mode of `b` with the largest MAC (shapes: modes x 360 x 2)."""
     x = a.shapes.reshape(len(a.omega), -1)
     y = b.shapes.reshape(len(b.omega), -1)
@@ -31,8 +33,8 @@ def mac_pairing(a, b):
     return mac.argmax(axis=1), mac.max(axis=1)
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main() -> None:
+    p = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     p.add_argument("--scene", default=str(HERE.parent / "scenes" / "paper1990.toml"))
     p.add_argument("--n", type=int, nargs="+", default=[40, 80, 160, 320, 640], help="segments")
     p.add_argument("--modes", type=int, default=23)
@@ -45,7 +47,7 @@ def main():
     print(f"reference: FE, inextensible, {reference.model}, {reference.unknowns} unknowns, "
           f"{time.perf_counter() - t0:.1f} s")
 
-    errors = []  # [n][mode], %
+    rows: List[npt.NDArray[np.float64]] = []  # [n][mode], %
     for n in a.n:
         chain = ringvib.modes(scene.with_(multibody__n=n), "multibody", a.modes)
         pair, mac = mac_pairing(chain, reference)
@@ -54,9 +56,9 @@ def main():
             raise SystemExit(f"n = {n}: the chain's modes do not pair one to one with the reference's "
                              f"(lowest MAC {mac.min():.3f})")
         ref = reference.omega[pair]
-        errors.append(np.abs(chain.omega - ref) / ref * 100.0)
+        rows.append(np.abs(chain.omega - ref) / ref * 100.0)
         print(f"n = {n:5d}: {chain.unknowns} unknowns, {chain.seconds:.3f} s, lowest MAC {mac.min():.3f}")
-    errors = np.array(errors)
+    errors = np.array(rows)
 
     ns = np.array(a.n, dtype=float)
     order = -np.array([np.polyfit(np.log(ns[-3:]), np.log(errors[-3:, k]), 1)[0] for k in range(a.modes)])
@@ -71,9 +73,9 @@ def main():
           f"per mode {order.min():.3f} to {order.max():.3f}")
 
     try:
-        import matplotlib
+        import matplotlib  # type: ignore[import]  # optional, and without type stubs
         matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        import matplotlib.pyplot as plt  # type: ignore[import]
     except ImportError:
         print("matplotlib is not installed: no figure")
         return

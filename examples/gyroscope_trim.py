@@ -16,19 +16,28 @@ away by adding mass at chosen angles. This script:
 """
 import argparse
 import pathlib
+from typing import Any, Dict, Optional
 
 import ringvib
 
 HERE = pathlib.Path(__file__).resolve().parent
 
 
-def pair(modes, wave):
+def pair(modes: ringvib.Modes, wave: int) -> Optional[Dict[str, Any]]:
     """The split pair of wave number `wave` in a Modes result, or None (no split left)."""
     return next((p for p in modes.pairs if p["wave"] == wave), None)
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def split_of(modes: ringvib.Modes, wave: int) -> Dict[str, Any]:
+    """The split pair of wave number `wave`, which must be there."""
+    q = pair(modes, wave)
+    if q is None:
+        raise SystemExit(f"no split pair of wave number {wave} in the {modes.solver} modes")
+    return q
+
+
+def main() -> None:
+    p = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     p.add_argument("--scene", default=str(HERE.parent / "scenes" / "imperfect-ring.toml"))
     p.add_argument("--at", type=float, nargs=2, default=[60.0, 90.0], help="trim angles, degrees")
     p.add_argument("--solver", default="fem", help="the model that measures the split while trimming")
@@ -45,17 +54,17 @@ def main():
                   f"(modes {q['modes'][0]}, {q['modes'][1]})")
 
     print(f"2. trimming the k = 2 pair with masses at {a.at[0]:g} and {a.at[1]:g} deg ({a.solver}):")
-    mode = pair(untrimmed[a.solver], 2)["modes"][0]
+    mode = split_of(untrimmed[a.solver], 2)["modes"][0]
     t = ringvib.trim(scene, mode, a.at, solver=a.solver)
-    for m in t["masses"]:
-        print(f"   {m['mass']:.4f} kg at {m['at']:g} deg")
+    for added in t["masses"]:
+        print(f"   {added['mass']:.4f} kg at {added['at']:g} deg")
     print(f"   relative split {t['split_before']:.4e} -> {t['split_after']:.3e} in {t['steps']} steps")
 
     print("3. the trimmed ring, measured by every solver:")
     for s in solvers:
-        q = pair(ringvib.modes(t["scene"], s), 2)
-        after = q["relative_split"] if q else 0.0
-        before = pair(untrimmed[s], 2)["relative_split"]
+        trimmed = pair(ringvib.modes(t["scene"], s), 2)
+        after = trimmed["relative_split"] if trimmed else 0.0
+        before = split_of(untrimmed[s], 2)["relative_split"]
         print(f"   {s:9s} k = 2: relative split {after:.3e} (was {before:.4e}: {before / max(after, 1e-300):.0f} times less)")
 
 

@@ -25,6 +25,7 @@ packages=(
   pybind11-dev python3-dev # the Python module (python/)
   python3-numpy            # its results as NumPy arrays
   python3-pytest           # its tests (tests/python)
+  python3-mypy             # the examples type-checked against the stubs (tests/python/test_types.py)
 )
 
 missing=()

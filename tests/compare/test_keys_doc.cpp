@@ -4,14 +4,50 @@
 // behind (regenerate: see the note in docs/scenes.md).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "compare/registry.hpp"
 
 namespace {
+
+std::string read_source(const std::string& path) {
+  std::ifstream f(ringtest::source(path));
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+// What a newcomer reads first stays short (the README's promise of five minutes): at most 200
+// lines, none longer than 120 characters outside tables and code blocks, and every page of
+// docs/ linked from it, so that nothing there is unreachable from the front page.
+TEST(Readme, IsShortWithLinesAFewWideAndLinksEveryPageOfDocs) {
+  const std::string readme = read_source("README.md");
+  ASSERT_FALSE(readme.empty());
+  std::istringstream lines(readme);
+  std::string line;
+  int count = 0;
+  bool code = false;
+  while (std::getline(lines, line)) {
+    ++count;
+    if (line.rfind("```", 0) == 0) code = !code;
+    if (!code && line.rfind("|", 0) != 0)
+      EXPECT_LE(line.size(), 120u) << "README.md line " << count << ": " << line;
+  }
+  EXPECT_LE(count, 200) << "README.md has " << count << " lines";
+  int pages = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(ringtest::source("docs"))) {
+    if (entry.path().extension() != ".md") continue;
+    ++pages;
+    const std::string link = "(docs/" + entry.path().filename().string();
+    EXPECT_NE(readme.find(link), std::string::npos) << "README.md does not link " << link.substr(1);
+  }
+  EXPECT_GE(pages, 8);
+}
 
 TEST(SceneReference, DocsSolverSectionsAreWhatRingvibKeysPrints) {
   const ringtest::Run r = ringtest::ringvib("keys");

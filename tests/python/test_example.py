@@ -1,13 +1,19 @@
-"""examples/convergence.py runs as documented and measures what theory says: the chain of
-rigid segments converges to the inextensible ring at second order in 1/n (docs/commands.md,
-`converge`: Richardson order 2), against the FE reference, an independent discretization.
+"""The examples (examples/, one per user group) run as documented and measure what their oracle
+says: the method study's chain converges at second order against the FE reference; the gyroscope
+maker's trim cancels the split in every solver; the report and the CI gate reproduce the command's
+own table (`ringvib table --json`).
 """
+import csv
+import json
 import os
 import re
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
-from conftest import SOURCE
+import pytest
+
+from conftest import COMMAND, SOURCE
 
 
 def test_convergence_example(tmp_path):
@@ -45,3 +51,56 @@ def test_gyroscope_trim_example(tmp_path):
     assert len(after) == 3, run.stdout
     for _, split, was in after:
         assert float(split) < 1e-3 * float(was)
+
+
+def command_table(scene):
+    """The rows of `ringvib table SCENE --json`: the command's own numbers, the oracle of the
+    report and gate examples (which go through the module)."""
+    run = subprocess.run([COMMAND, "table", str(scene), "--json"], capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    return json.loads(run.stdout)["rows"]
+
+
+def test_report_example_writes_the_commands_errors(tmp_path):
+    """examples/report.py: the CSV's frequencies and errors of modes 1..9 are the command's table's,
+    to the 12 digits the CSV keeps, and the summary's largest error is the largest of those rows."""
+    scene = SOURCE / "scenes" / "paper1990.toml"
+    run = subprocess.run([sys.executable, str(SOURCE / "examples" / "report.py"), "--modes", "1-9"],
+                         capture_output=True, text=True, env=dict(os.environ), cwd=tmp_path, timeout=600)
+    assert run.returncode == 0, run.stderr
+    rows = {int(r["mode"]): r for r in command_table(scene) if int(r["mode"]) <= 9}
+    with open(tmp_path / "report.csv") as f:
+        written = list(csv.DictReader(f))
+    assert [int(r["mode"]) for r in written] == list(range(1, 10))
+    solvers = [k[: -len("_error_pct")] for k in written[0] if k.endswith("_error_pct")]
+    assert sorted(solvers) == ["fem", "lumped", "multibody"]
+    for r in written:
+        ref = rows[int(r["mode"])]
+        assert float(r["reference"]) == pytest.approx(ref["reference"], rel=1e-12)
+        for s in solvers:
+            assert float(r[s + "_error_pct"]) == pytest.approx(ref[s + "_error_pct"], rel=1e-9, abs=1e-12)
+    for s in solvers:
+        worst = max(abs(rows[m][s + "_error_pct"]) for m in rows)
+        shown = float(re.search(rf"^\s+{s}\s+largest \|error\| ([\d.]+) %", run.stdout, re.M).group(1))
+        assert shown == pytest.approx(worst, abs=5e-5), run.stdout
+    assert (tmp_path / "report.md").read_text().startswith("# paper1990: modes 1 to 9")
+
+
+def test_ci_gate_example_fails_a_bound_below_the_error_and_passes_one_above(tmp_path):
+    """examples/ci_gate.py: the multibody chain's largest error over modes 1..9 (from the command's
+    table) is gated once with a bound 10 % below it (exit 1, one JUnit failure naming it) and once
+    10 % above it (exit 0, no failure)."""
+    rows = [r for r in command_table(SOURCE / "scenes" / "paper1990.toml") if int(r["mode"]) <= 9]
+    worst = max(abs(r["multibody_error_pct"]) for r in rows)
+    for factor, code in ((0.9, 1), (1.1, 0)):
+        xml = tmp_path / f"gates{code}.xml"
+        run = subprocess.run([sys.executable, str(SOURCE / "examples" / "ci_gate.py"), "--modes", "1-9",
+                              "--bound", f"multibody={factor * worst}", "--junit", str(xml)],
+                             capture_output=True, text=True, env=dict(os.environ), cwd=tmp_path, timeout=600)
+        assert run.returncode == code, run.stdout + run.stderr
+        suite = ET.parse(xml).getroot()
+        failures = suite.findall("./testcase/failure")
+        assert len(failures) == (1 if code else 0)
+        assert int(suite.get("failures")) == len(failures)
+        if code:
+            assert suite.find("./testcase[failure]").get("name") == "multibody"
