@@ -1,13 +1,81 @@
 #include "modal/gyroscopic.hpp"
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "ring/errors.hpp"
 #include "ring/sampling.hpp"
 
 namespace modal {
+
+namespace {
+
+/// The relative residual ||(K - w^2 M + i w G) x|| / (||K x|| + w^2 ||M x|| + w ||G x||).
+double relative_residual(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, const Eigen::MatrixXd& G,
+                         const Eigen::VectorXcd& x, double w) {
+  const std::complex<double> i(0.0, 1.0);
+  const Eigen::VectorXcd kx = K * x, mx = M * x, gx = G * x;
+  const double r = (kx - w * w * mx + i * w * gx).norm();
+  const double scale = kx.norm() + w * w * mx.norm() + w * gx.norm();
+  return scale > 0.0 ? r / scale : r;
+}
+
+/// K not positive definite: past a divergence speed the Coriolis coupling may still hold the ring
+/// (gyroscopic stabilization; Thomson–Tait: possible only where K has an even number of negative
+/// eigenvalues). The Hermitian form needs A = diag(K, M) definite, so the general eigenproblem of
+/// the first-order form x'' = -M^-1 (K x + G x') decides: stable when every eigenvalue lambda lies
+/// on the imaginary axis to kImaginaryAxis of the largest |lambda| (the general QR leaves
+/// round-off off the axis; a true growth rate above that is reported), the frequencies then
+/// omega = Im lambda > 0. A ring::NumericalError names the fastest growth rate otherwise.
+GyroscopicModes gyroscopically_stable_modes(const std::string& solver, const Eigen::MatrixXd& K,
+                                            const Eigen::MatrixXd& M, const Eigen::MatrixXd& G, int count) {
+  constexpr double kImaginaryAxis = 1e-7;
+  const Eigen::Index n = K.rows();
+  const Eigen::LDLT<Eigen::MatrixXd> m(M);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  C.topRightCorner(n, n).setIdentity();
+  C.bottomLeftCorner(n, n) = -m.solve(K);
+  C.bottomRightCorner(n, n) = -m.solve(G);
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(C);
+  if (eig.info() != Eigen::Success) throw ring::NumericalError(solver + ": the gyroscopic eigensolve did not converge");
+  const Eigen::VectorXcd& lambda = eig.eigenvalues();
+  const double largest = lambda.cwiseAbs().maxCoeff();
+  Eigen::Index fastest = 0;
+  for (Eigen::Index j = 1; j < lambda.size(); ++j)
+    if (lambda(j).real() > lambda(fastest).real()) fastest = j;
+  if (lambda(fastest).real() > kImaginaryAxis * largest)
+    throw ring::NumericalError(
+        solver + ": the spinning ring is unstable at this speed (a divergence): the centrifugal softening has overcome "
+                 "a mode's stiffness and the Coriolis coupling does not hold it (growth rate " +
+        std::to_string(lambda(fastest).real()) + " 1/s)");
+  std::vector<std::pair<double, Eigen::Index>> positive;
+  for (Eigen::Index j = 0; j < lambda.size(); ++j)
+    if (lambda(j).imag() > kImaginaryAxis * largest) positive.emplace_back(lambda(j).imag(), j);
+  std::sort(positive.begin(), positive.end());
+  if (static_cast<Eigen::Index>(positive.size()) < count)
+    throw ring::NumericalError(solver + ": the gyroscopic eigenproblem gave " + std::to_string(positive.size()) +
+                               " positive frequencies, fewer than the " + std::to_string(count) + " asked for");
+  GyroscopicModes out;
+  out.omega.resize(count);
+  out.vectors.resize(n, count);
+  for (int k = 0; k < count; ++k) {
+    const auto [w, j] = positive[k];
+    Eigen::VectorXcd x = eig.eigenvectors().col(j).head(n);
+    x /= x.norm();
+    out.omega(k) = w;
+    out.vectors.col(k) = x;
+    const double rel = relative_residual(K, M, G, x, w);
+    out.max_residual = std::isnan(rel) || rel > out.max_residual ? rel : out.max_residual;
+  }
+  return out;
+}
+
+}  // namespace
 
 GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                  const Eigen::MatrixXd& G, int count) {
@@ -24,10 +92,8 @@ GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixX
   if (!K.allFinite() || !M.allFinite() || !G.allFinite())
     throw ring::NumericalError(solver + ": the spinning ring's matrices are not finite");
   const Eigen::LLT<Eigen::MatrixXd> lk(K), lm(M);
-  if (lk.info() != Eigen::Success)
-    throw ring::NumericalError(solver + ": the stiffness in the turning frame is not positive definite: the spin's "
-                                        "centrifugal softening has overcome a mode's stiffness (a divergence speed)");
   if (lm.info() != Eigen::Success) throw ring::NumericalError(solver + ": the mass matrix is not positive definite");
+  if (lk.info() != Eigen::Success) return gyroscopically_stable_modes(solver, K, M, G, count);
   const Eigen::MatrixXd Lk = lk.matrixL(), Lm = lm.matrixL();
   // S12 = Lk^T Lm^-T, S22 = -Lm^-1 G Lm^-T.
   const Eigen::MatrixXd s12 = lm.matrixL().solve(Lk).transpose();
@@ -61,10 +127,7 @@ GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixX
     x /= x.norm();
     out.omega(k) = w;
     out.vectors.col(k) = x;
-    const Eigen::VectorXcd kx = K * x, mx = M * x, gx = G * x;
-    const double r = (kx - w * w * mx + i * w * gx).norm();
-    const double scale = kx.norm() + w * w * mx.norm() + w * gx.norm();
-    const double rel = scale > 0.0 ? r / scale : r;
+    const double rel = relative_residual(K, M, G, x, w);
     out.max_residual = std::isnan(rel) || rel > out.max_residual ? rel : out.max_residual;
   }
   return out;

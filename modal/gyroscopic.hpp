@@ -17,8 +17,11 @@
 // Hermitian eigensolve of order 2N whose eigenvalues are real by construction, never a
 // general complex one whose +-i omega pairs round off the imaginary axis. x = Lk^-T z_top.
 // Cost O((2N)^3) time, O((2N)^2) complex memory: kMaxGyroscopicUnknowns bounds N.
-// K not positive definite (a rigid motion left free, or a spin past the speed at which the
-// centrifugal softening overcomes a mode's stiffness: a divergence) is a ring::NumericalError.
+// K not positive definite (a spin past the speed at which the centrifugal softening overcomes
+// a mode's stiffness): the Coriolis coupling may still hold the ring (gyroscopic
+// stabilization), and the general eigenproblem of the first-order form decides: the
+// frequencies when every eigenvalue lies on the imaginary axis (to 1e-7 of the largest), else
+// a ring::NumericalError with the growth rate (a divergence).
 //
 // ## The wave of a mode (travelling_mode)
 // The shape at the common stations, w(theta) = sum_k c_k e^{i k theta} (radial and tangential
@@ -51,8 +54,9 @@ struct GyroscopicModes {
 
 /// The `count` lowest modes of M x'' + G x' + K x = 0 (file comment). Throws
 /// std::invalid_argument for mismatched sizes, count < 1 or more than N, or N above
-/// kMaxGyroscopicUnknowns; ring::NumericalError (naming `solver`) when K or M is not positive
-/// definite or a value is not finite. O(N^3).
+/// kMaxGyroscopicUnknowns; ring::NumericalError (naming `solver`) when M is not positive
+/// definite, a value is not finite, or the motion is unstable (K indefinite and not held by G).
+/// O(N^3).
 GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                  const Eigen::MatrixXd& G, int count);
 

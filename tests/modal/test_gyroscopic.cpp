@@ -4,8 +4,10 @@
 // waves for the classification.
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
 #include <cmath>
 #include <complex>
+#include <string>
 
 #include "modal/gyroscopic.hpp"
 #include "ring/errors.hpp"
@@ -70,6 +72,37 @@ TEST(GyroscopicModes, AStiffnessThatIsNotPositiveDefiniteIsANumericalFailure) {
   Eigen::MatrixXd K = -Eigen::MatrixXd::Identity(2, 2), M = Eigen::MatrixXd::Identity(2, 2), G = Eigen::MatrixXd::Zero(2, 2);
   EXPECT_THROW(modal::gyroscopic_modes("test", K, M, G, 1), ring::NumericalError);
   EXPECT_THROW(modal::gyroscopic_modes("test", M, M, G, 3), std::invalid_argument);
+}
+
+// Past a divergence (k < 0) a wave pair is held by its Coriolis coupling when g^2 + m k >= 0:
+// both roots (g -+ sqrt(g^2 + m k)) / m are then real and positive (Thomson–Tait gyroscopic
+// stabilization); below that they are complex and the motion grows. One held pair beside an
+// ordinary one, hidden by an orthogonal change of coordinates so that K is indefinite and full.
+// Tolerance 1e-9: the general eigensolver's round-off on a 4 x 4 of entries O(10).
+TEST(GyroscopicModes, ACoriolisCouplingThatHoldsADivergedPairGivesItsRealFrequencies) {
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(4, 4), M = K, G = K;
+  const Pair held{2.0, 3.0, -4.0}, plain{1.0, 0.5, 9.0};
+  add(K, M, G, 0, held);
+  add(K, M, G, 2, plain);
+  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd::Random(4, 4)).householderQ();
+  const Eigen::MatrixXd Kq = Q.transpose() * K * Q, Mq = Q.transpose() * M * Q, Gq = Q.transpose() * G * Q;
+  EXPECT_NE(Eigen::LLT<Eigen::MatrixXd>(Kq).info(), Eigen::Success);  // indefinite: the Hermitian form cannot
+  const modal::GyroscopicModes r = modal::gyroscopic_modes("test", Kq, Mq, Gq, 4);
+  const double s = std::sqrt(held.g * held.g + held.m * held.k);
+  EXPECT_NEAR(r.omega(0), (held.g - s) / held.m, 1e-9);
+  EXPECT_NEAR(r.omega(1), (held.g + s) / held.m, 1e-9);
+  EXPECT_NEAR(r.omega(2), plain.lower(), 1e-9);
+  EXPECT_NEAR(r.omega(3), plain.upper(), 1e-9);
+  EXPECT_LT(r.max_residual, 1e-12);
+  // g^2 + m k < 0: the same pair no longer held.
+  Eigen::MatrixXd K2 = Eigen::MatrixXd::Zero(2, 2), M2 = K2, G2 = K2;
+  add(K2, M2, G2, 0, Pair{2.0, 2.0, -4.0});
+  try {
+    modal::gyroscopic_modes("test", K2, M2, G2, 1);
+    ADD_FAILURE() << "an unstable spinning pair gave frequencies";
+  } catch (const ring::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("growth rate"), std::string::npos) << e.what();
+  }
 }
 
 Eigen::VectorXcd wave(int k, int towards) {  // e^{-i towards k theta} travels towards +theta for towards = +1

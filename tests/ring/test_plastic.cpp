@@ -249,3 +249,16 @@ TEST(PinchedPlasticRingOracle, TheMechanismLoadDoesTheHingesWork) {
   }
   EXPECT_NEAR(ring.mechanism_load(2.0 * ring.R), ring.collapse() / std::sqrt(2.0), 1e-14 * ring.collapse());
 }
+
+// DeRuntz & Hodge's plates against the virtual work they are built from, in the arc angle alpha:
+// c(alpha) = 2 R cos alpha, the flat length R (pi/2 - alpha) per quarter, dissipation 8 Mp |d alpha|.
+TEST(PinchedPlasticRingOracle, ThePlatesLoadDoesTheTravellingAndStationaryHingesWork) {
+  const ringtest::PinchedPlasticRing ring{2.0, 3.0, 5.0};
+  EXPECT_DOUBLE_EQ(ring.plates_load(0.0), ring.collapse());
+  const auto closing = [&](double alpha) { return 2.0 * ring.R * std::cos(alpha); };
+  for (double alpha : {1.5, 1.1, 0.6}) {
+    const double h = 1e-5, dc = (closing(alpha - h) - closing(alpha + h)) / (2.0 * h);  // c grows as alpha falls
+    EXPECT_NEAR(ring.plates_load(closing(alpha)) * dc, 8.0 * ring.Mp, 1e-8 * ring.Mp) << "alpha " << alpha;
+    EXPECT_NEAR(ring.plates_contact_length(closing(alpha)), 2.0 * ring.R * (M_PI / 2.0 - alpha), 1e-12);
+  }
+}

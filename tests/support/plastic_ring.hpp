@@ -59,6 +59,22 @@ struct PinchedPlasticRing {
     const double a = 1.0 - c / (2.0 * R);
     return 4.0 * Mp / (R * std::sqrt(2.0 - a * a));
   }
+  /// Crushed between two rigid, frictionless plates instead (DeRuntz & Hodge, "Crushing of a tube
+  /// between rigid plates", J. Appl. Mech. 30, 1963), rigid–plastic at large deflection: each
+  /// quarter is flat on its plate from the contact's middle to a travelling hinge, then a rigid
+  /// arc of radius R and angle alpha (pi/2 at rest) down to a stationary hinge on the other
+  /// diameter, which lies R (1 - cos alpha) below the plate: the plates' approach is
+  /// c = 2 R cos alpha (c / D = cos alpha, D = 2 R). A hinge travelling over the arc dissipates Mp / R per length
+  /// flattened, R |d alpha| per quarter, and the stationary hinge Mp |d alpha| per quarter, so
+  /// P dc = 8 Mp |d alpha| gives
+  ///   P(c) = (4 Mp / R) / sqrt(1 - (c / D)^2),
+  /// rising from P_c (a point load's mechanism falls instead), and each plate touches the ring
+  /// over the flat length 2 R asin(c / D).
+  double plates_load(double c) const {
+    const double x = c / (2.0 * R);
+    return 4.0 * Mp / (R * std::sqrt(1.0 - x * x));
+  }
+  double plates_contact_length(double c) const { return 2.0 * R * std::asin(c / (2.0 * R)); }
 };
 
 /// The paper ring pinned at 270 deg and driven at 90 deg (static.displacement): the pinch by
