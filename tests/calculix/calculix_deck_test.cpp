@@ -1,9 +1,9 @@
 // The CalculiX deck parsed back: nodes on the circle, the section's A and I, the supports
 // as *BOUNDARY lines or an *EQUATION at the right nodes (oracle: the ring's geometry), what
 // the deck refuses; and the .dat reader on a small file in ccx's layout.
-#include <array>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
