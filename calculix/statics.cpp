@@ -116,6 +116,21 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
       p.node_x.push_back(spec.radius * std::cos(t) + inc.ux[k]);
       p.node_y.push_back(spec.radius * std::sin(t) + inc.uy[k]);
     }
+    // (largest - smallest distance between opposite nodes) / R, the chains' definition
+    // (multibody/statics.cpp); 0 for an arch and for an odd node count (B31), which have no
+    // opposite nodes.
+    if (!spec.arc && nodes % 2 == 0) {
+      double most = 0.0, least = INFINITY;
+      for (int k = 0; k < nodes / 2; ++k) {
+        const int j = k + nodes / 2;
+        const double tk = deck.node_angles[k] * M_PI / 180.0, tj = deck.node_angles[j] * M_PI / 180.0;
+        const double d = std::hypot(spec.radius * (std::cos(tk) - std::cos(tj)) + inc.ux[k] - inc.ux[j],
+                                    spec.radius * (std::sin(tk) - std::sin(tj)) + inc.uy[k] - inc.uy[j]);
+        most = std::max(most, d);
+        least = std::min(least, d);
+      }
+      p.ovalisation = (most - least) / spec.radius;
+    }
     if (st.displacement) p.reaction = inc.force;
     if (spec.plastic) p.dissipated = p.plastic_curvature = std::nan("");
     return p;

@@ -89,6 +89,12 @@ TEST(CalculixDriven, ElasticPinchReactionConvergesToTheClosedForm) {
   // Against the thin closed form at 40 elements the same error, the model's 1.2e-4 inside it.
   const ring::StaticResult r = calculix::solve_static(spec, b32r(40), st);
   EXPECT_NEAR(-r.reaction[1] / thin_ring_force(spec, c), 1.0, 1e-3);
+  // The path's ovalisation, (widest - narrowest opposite nodes) / R: the closing c plus the
+  // widening across, (2/pi - 1/2) P R^3 / EI (Roark's case 1), over R; within 3e-3, the
+  // column's error at 40 elements.
+  ASSERT_FALSE(r.path.empty());
+  const double widening = (2.0 / M_PI - 0.5) / (M_PI / 4.0 - 2.0 / M_PI) * c;
+  EXPECT_NEAR(r.path.back().ovalisation / ((c + widening) / spec.radius), 1.0, 3e-3);
 }
 
 TEST(CalculixDriven, DrivenAndLoadedPinchAgreeAtTheSameClosing) {
