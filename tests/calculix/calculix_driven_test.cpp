@@ -24,13 +24,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "calculix/ccx.hpp"
+#include "calculix/dat.hpp"
+#include "calculix/deck.hpp"
 #include "calculix/statics.hpp"
-#include "compare/cli.hpp"
 #include "ring/errors.hpp"
 #include "support/convergence.hpp"
 #include "support/fibre_ring.hpp"
@@ -169,6 +170,52 @@ TEST(CalculixDriven, FibrePlasticPinchHoldsAPlateauNearTheCollapseLoad) {
   EXPECT_TRUE(std::isnan(r.dissipated)) << "ccx prints no plastic work";
 }
 
+// The energy identity of the driven fibre ring: the work the rig does, the trapezoid sum of
+// reaction . d(displacement) over the increments, is the ring's internal energy, elastic and
+// dissipated together: ccx's own total (*EL PRINT ELSE, the integral of sigma : d(eps) over the
+// bricks, printed with 7 digits), appended to the column's deck. An oracle apart from the reaction's
+// read-back (the RF block, the load factor from the total time). Tolerance 5e-4: the trapezoid
+// rule's error on the reaction's knee (measured at most 1.1e-4, at the first yield).
+TEST(CalculixDriven, FibrePlasticPinchWorkIsTheInternalEnergy) {
+  REQUIRE_CCX();
+  const ring::RingSpec spec = fibre_ring();
+  ring::CalculixOptions o = b32r(20);
+  o.section = ring::CalculixOptions::Section::as_given;
+  const ring::StaticOptions st = ringtest::driven_pinch(5e-3, {}, 10);
+  const calculix::Deck written = calculix::static_deck(spec, o, st);
+  std::string deck = written.text;
+  const auto end = deck.rfind("*END STEP");
+  ASSERT_NE(end, std::string::npos);
+  deck.insert(end, "*EL PRINT, ELSET=ERING, TOTALS=ONLY\nELSE\n");
+  const calculix::RunOutput out = calculix::run(deck, {o.timeout, o.threads});
+  const calculix::DatStatic dat = calculix::read_static_dat(out.dat, calculix::node_count(spec, o));
+  std::vector<double> energy;
+  std::istringstream in(out.dat);
+  for (std::string line; std::getline(in, line);)
+    if (line.find("total internal energy") != std::string::npos) {
+      double e = NAN;
+      in >> e;
+      energy.push_back(e);
+    }
+  ASSERT_EQ(energy.size(), dat.all.size());
+  int node = 0;  // the driven node, 0-based
+  while (std::abs(written.node_angles.at(node) - 90.0) > 1e-9) ++node;
+  ASSERT_NEAR(dat.all.back().uy[node], -5e-3, 1e-9) << "the driven node";
+  double work = 0.0, u = 0.0, uy = 0.0, fx = 0.0, fy = 0.0;
+  for (std::size_t i = 0; i < dat.all.size(); ++i) {
+    const auto& inc = dat.all[i];
+    work += 0.5 * (inc.force[0] + fx) * (inc.ux[node] - u) + 0.5 * (inc.force[1] + fy) * (inc.uy[node] - uy);
+    u = inc.ux[node];
+    uy = inc.uy[node];
+    fx = inc.force[0];
+    fy = inc.force[1];
+    EXPECT_NEAR(work / energy[i], 1.0, 5e-4) << "increment " << i + 1 << " of " << dat.all.size();
+  }
+  // Most of it dissipated: the plateau's work over the travel past the closing at collapse.
+  const ringtest::PinchedPlasticRing oracle{spec.radius, spec.EI(), plastic_moment(spec)};
+  EXPECT_GT(work, 2.0 * oracle.collapse() * oracle.closing(oracle.collapse()));
+}
+
 // A load history [1, 0] (static.history: one *STEP per leg, the loads times the amplitude
 // LOAD in total time): the fibre ring of the test above, pinned at 0 and on a roller at 180
 // deg, pinched by +-0.9 P_c at 90 and 270 deg and unloaded. Unloading from P* below P_c is
@@ -235,6 +282,40 @@ TEST(CalculixDriven, DrivenHistoryReturnsAlongTheElasticStiffness) {
   EXPECT_NEAR(r.displacements[0].uy, -(1.0 - back) * c, 1e-6 * c);
   const double k = thin_ring_force(spec, 1.0);
   EXPECT_NEAR((r.reaction[1] - top) / (k * back * c), 1.0, 6e-3) << "top " << top << " end " << r.reaction[1];
+}
+
+// Every kind of load follows a history's amplitude: the elastic paper ring (pinned at 270 deg,
+// a roller at 90 deg) under a follower pressure, gravity and a point load at 0 deg, each alone,
+// along [1, -0.5] ends where the single step to -0.5 ends (the same equilibrium: elastic, no
+// path dependence). Small loads (displacements ~1e-5 R), so both runs converge in few
+// iterations far below ccx's residual tolerance; the .dat's 7 digits: 1e-5 relative.
+TEST(CalculixDriven, EveryLoadFollowsTheHistorysAmplitude) {
+  REQUIRE_CCX();
+  ring::RingSpec spec = ringtest::pin_270_roller_90();
+  ring::Loads pressure, gravity, point;
+  pressure.pressure = {50.0, ring::Pressure::Kind::follower};
+  gravity.gravity = {0.0, -0.05};
+  point.points = {{0.0, {-1.0, 0.5}}};
+  for (const auto& [name, loads] : {std::pair{"pressure", pressure}, {"gravity", gravity}, {"point", point}}) {
+    ring::StaticOptions st;
+    st.loads = loads;
+    st.record = {0.0, 180.0};
+    st.steps = 2;
+    st.history = {1.0, -0.5};
+    const ring::StaticResult legs = calculix::solve_static(spec, b32r(10), st);
+    st.history.clear();
+    st.loads.points.clear();
+    for (auto p : loads.points) st.loads.points.push_back({p.angle, {-0.5 * p.force[0], -0.5 * p.force[1]}});
+    st.loads.pressure.value *= -0.5;
+    st.loads.gravity = {-0.5 * loads.gravity[0], -0.5 * loads.gravity[1]};
+    const ring::StaticResult once = calculix::solve_static(spec, b32r(10), st);
+    const double scale = std::hypot(once.displacements[0].ux, once.displacements[0].uy);
+    ASSERT_GT(scale, 0.0) << name;
+    for (std::size_t i = 0; i < 2; ++i) {
+      EXPECT_NEAR(legs.displacements[i].ux, once.displacements[i].ux, 1e-5 * scale) << name << " at " << st.record[i];
+      EXPECT_NEAR(legs.displacements[i].uy, once.displacements[i].uy, 1e-5 * scale) << name << " at " << st.record[i];
+    }
+  }
 }
 
 }  // namespace
