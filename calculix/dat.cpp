@@ -243,43 +243,67 @@ DatStatic read_static_dat(const std::string& text, int nodes, const std::string&
   auto fail = [&](int line, const std::string& what) {
     throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line) + ": " + what);
   };
+  enum class Block { none, displacements, forces };
+  Block block = Block::none;
   int line_no = 0, seen = 0;
-  bool block = false;
   std::vector<bool> have;
   auto close = [&](int line) {
-    if (block && seen != nodes)
+    if (block == Block::displacements && seen != nodes)
       fail(line, "displacements of " + std::to_string(seen) + " of " + std::to_string(nodes) + " nodes");
+    if (block == Block::forces && seen != 1)
+      fail(line, "a forces block of " + std::to_string(seen) + " nodes (one, the driven node, expected)");
   };
   for (std::string line; std::getline(in, line);) {
     ++line_no;
     const auto w = words(line);
-    if (line.find("displacements (vx,vy,vz)") != std::string::npos) {
+    const bool displacements = line.find("displacements (vx,vy,vz)") != std::string::npos;
+    if (displacements || line.find("forces (fx,fy,fz)") != std::string::npos) {
       close(line_no);
       double t = 0.0;
       if (w.empty() || !to_double(w.back(), t)) fail(line_no, "expected the time at the end of the line");
-      out.time = t;
-      ++out.increments;
-      out.ux.assign(nodes, 0.0);
-      out.uy.assign(nodes, 0.0);
-      have.assign(nodes, false);
+      if (displacements) {
+        DatStatic::Increment inc;
+        inc.time = t;
+        inc.ux.assign(nodes, 0.0);
+        inc.uy.assign(nodes, 0.0);
+        out.all.push_back(std::move(inc));
+        have.assign(nodes, false);
+        block = Block::displacements;
+      } else {
+        if (out.all.empty() || out.all.back().time != t || !std::isnan(out.all.back().force[0]))
+          fail(line_no, "a forces block without its increment's displacements before it");
+        block = Block::forces;
+      }
       seen = 0;
-      block = true;
       continue;
     }
     long node = 0;
-    if (block && w.size() == 4 && to_int(w[0], node)) {
+    if (block != Block::none && w.size() == 4 && to_int(w[0], node)) {
       double x, y, z;
-      if (!to_double(w[1], x) || !to_double(w[2], y) || !to_double(w[3], z)) fail(line_no, "expected: node, ux, uy, uz");
+      if (!to_double(w[1], x) || !to_double(w[2], y) || !to_double(w[3], z))
+        fail(line_no, block == Block::forces ? "expected: node, fx, fy, fz" : "expected: node, ux, uy, uz");
+      DatStatic::Increment& inc = out.all.back();
+      if (block == Block::forces) {
+        if (seen > 0) fail(line_no, "a forces block of more than one node (the driven node expected)");
+        inc.force = {x, y};
+        ++seen;
+        continue;
+      }
       if (node < 1 || node > nodes) fail(line_no, "node " + std::to_string(node) + " is not a beam node of the deck");
       if (have[node - 1]) fail(line_no, "node " + std::to_string(node) + " printed twice");
       have[node - 1] = true;
       ++seen;
-      out.ux[node - 1] = x;
-      out.uy[node - 1] = y;
+      inc.ux[node - 1] = x;
+      inc.uy[node - 1] = y;
     }
   }
   close(line_no);
-  if (out.increments == 0) fail(line_no, "no displacements (NODE PRINT): no increment converged");
+  if (out.all.empty()) fail(line_no, "no displacements (NODE PRINT): no increment converged");
+  out.increments = static_cast<int>(out.all.size());
+  out.time = out.all.back().time;
+  out.ux = out.all.back().ux;
+  out.uy = out.all.back().uy;
+  out.force = out.all.back().force;
   return out;
 }
 

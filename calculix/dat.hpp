@@ -7,6 +7,8 @@
 // expanded section's nodes). The eigenvectors are normalized to U^T M U = 1.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <complex>
 #include <string>
 #include <vector>
@@ -43,16 +45,28 @@ std::vector<DatComplexMode> read_complex_dat(const std::string& text, int nodes,
 /// cycles/time, imaginary part). Throws ring::NumericalError naming `name` when there is none.
 std::vector<double> read_real_eigenvalues(const std::string& text, const std::string& name = "ring.dat");
 
-/// The last displacement block of a static step's .dat (*NODE PRINT after every
-/// increment: "displacements (vx,vy,vz) for set NALL and time t").
+/// A static step's .dat (*NODE PRINT U of every node after every increment: "displacements
+/// (vx,vy,vz) for set NALL and time t"; with displacement control also *NODE PRINT RF of the
+/// driven node: "forces (fx,fy,fz) for set NDRIVE and time t", after the displacements).
 struct DatStatic {
-  double time = 0.0;        ///< the step time (load factor) of the last block
-  int increments = 0;       ///< blocks printed: the converged increments
-  std::vector<double> ux, uy;  ///< [node - 1], m
+  /// One converged increment. `time` is ccx's total time: with steps of period 1, the
+  /// step's number minus 1 plus its fraction done.
+  struct Increment {
+    double time = 0.0;
+    std::vector<double> ux, uy;  ///< [node - 1], m
+    /// The one node's reaction force of the forces block (N; NaN without one).
+    std::array<double, 2> force{NAN, NAN};
+  };
+  double time = 0.0;           ///< the total time of the last block
+  int increments = 0;          ///< blocks printed: the converged increments
+  std::vector<double> ux, uy;  ///< [node - 1], m, of the last block
+  std::array<double, 2> force{NAN, NAN};  ///< of the last block
+  std::vector<Increment> all;  ///< every block, in order
 };
 
 /// Parses a static step's .dat of nodes 1 .. nodes. Throws ring::NumericalError naming the
-/// line for a file that is not what ccx writes, or that has no displacements.
+/// line for a file that is not what ccx writes, or that has no displacements; a forces block
+/// must hold one node's row and follow its increment's displacements.
 DatStatic read_static_dat(const std::string& text, int nodes, const std::string& name = "ring.dat");
 
 /// The displacement history of a dynamic step's .dat (*NODE PRINT of a node set after

@@ -785,16 +785,51 @@ void check_response_deck(const ring::ResponseOptions& rs) {
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
   Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads));
-  const std::string cloads = load_blocks(spec, o, d, st.loads, "static", false);
+  // A history: one *STEP per leg, every load (and the driven displacement) times the amplitude
+  // LOAD in total time (leg k runs from total time k - 1 to k, from the factor s_{k-1} to s_k),
+  // so that a factor of 0 unloads (a load merely left out of a later step would stay on).
+  const bool history = !st.history.empty();
+  const std::vector<double> legs = history ? st.history : std::vector<double>{1.0};
+  const std::string cloads = load_blocks(spec, o, d, st.loads, "static", history);
   const double inc = 1.0 / st.steps;
   std::ostringstream s;
-  s << "** Step: geometrically nonlinear statics (NLGEOM) under the loads, in load\n"
-    << "** increments of 1/" << st.steps << " (static.steps; ccx may cut them, down to 1e-5 of that).\n"
-    << "*STEP, NLGEOM, INC=" << std::max(1000, 20 * st.steps) << "\n*STATIC\n"
-    << number(inc) << ", 1.0, " << number(1e-5 * inc) << ", " << number(inc) << "\n"
-    << cloads;
-  s << "** Displacements of the beam nodes after every increment, to the .dat file.\n"
-    << "*NODE PRINT, NSET=NALL\nU\n*END STEP\n";
+  int driven = -1;
+  if (st.displacement) {
+    driven = node_at(d.node_angles, st.displacement->at);
+    if (driven < 0)
+      throw ring::InputError("", "static.displacement.at",
+                             "angle " + number(st.displacement->at) + " is not a node of the calculix model");
+    s << "** The driven point (static.displacement) at " << number(st.displacement->at) << " degrees: node "
+      << driven + 1 << ", its reaction force printed.\n*NSET, NSET=NDRIVE\n" << driven + 1 << "\n";
+  }
+  if (history) {
+    s << "** The load factor against total time: leg k of static.history from s_{k-1} at k - 1 to s_k at k.\n"
+      << "*AMPLITUDE, NAME=LOAD, TIME=TOTAL TIME\n0.0, 0.0\n";
+    for (std::size_t k = 0; k < legs.size(); ++k) s << k + 1 << ".0, " << number(legs[k]) << "\n";
+  }
+  for (std::size_t k = 0; k < legs.size(); ++k) {
+    s << "** Step " << k + 1 << ": geometrically nonlinear statics (NLGEOM) "
+      << (history ? "to the load factor " + number(legs[k]) + " (static.history)" : std::string("under the loads"))
+      << ",\n** in increments of 1/" << st.steps << " (static.steps; ccx may cut them, down to 1e-5 of that).\n"
+      << "*STEP, NLGEOM, INC=" << std::max(1000, 20 * st.steps) << "\n*STATIC\n"
+      << number(inc) << ", 1.0, " << number(1e-5 * inc) << ", " << number(inc) << "\n"
+      << cloads;
+    if (st.displacement) {
+      // ccx ties the expanded section's nodes to the beam node by MPCs whose mean displacement
+      // is the node's; the boundary on the beam node holds that mean, and the node's RF is the
+      // force through those MPCs, the whole force on the section (checked: the driven pinch's
+      // reaction against the closed form, tests/calculix/calculix_driven_test.cpp).
+      const auto& v = st.displacement->value;
+      s << "** The driven node held at s (" << number(v[0]) << ", " << number(v[1]) << ") m, s the load factor"
+        << (history ? " (amplitude LOAD).\n*BOUNDARY, AMPLITUDE=LOAD\n" : " (ramped over the step).\n*BOUNDARY\n")
+        << driven + 1 << ", 1, 1, " << number(v[0]) << "\n" << driven + 1 << ", 2, 2, " << number(v[1]) << "\n";
+    }
+    s << "** Displacements of the beam nodes after every increment, to the .dat file"
+      << (st.displacement ? "; the driven node's reaction after them.\n" : ".\n")
+      << "*NODE PRINT, NSET=NALL\nU\n";
+    if (st.displacement) s << "*NODE PRINT, NSET=NDRIVE\nRF\n";
+    s << "*END STEP\n";
+  }
   d.text += s.str();
   return d;
 }

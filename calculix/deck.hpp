@@ -146,7 +146,11 @@ void check_spin(const ring::RingSpec& spec, const ring::CalculixOptions& options
 /// The deck of the nonlinear statics under static's loads: *STEP, NLGEOM with *STATIC in
 /// static.steps equal increments (ccx may cut them), the load blocks (see above; point
 /// masses only as their weight), *NODE PRINT of the beam nodes after every increment.
-/// Throws ring::InputError for a load off the nodes or one ccx cannot express. O(elements).
+/// static.displacement: the driven node (set NDRIVE) held by *BOUNDARY at the value for load
+/// factor 1, its RF printed after the displacements. static.history: one such *STEP per leg
+/// (period 1 each), the loads and the boundary with AMPLITUDE=LOAD, an amplitude in total time
+/// through (k, s_k). Throws ring::InputError for a load or a driven point off the nodes
+/// (static.displacement.at) or a load ccx cannot express. O(elements + legs).
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& step,
                  const std::string& title = "");
 

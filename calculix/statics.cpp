@@ -1,8 +1,10 @@
 #include "calculix/statics.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "calculix/dat.hpp"
 #include "calculix/deck.hpp"
@@ -36,7 +38,8 @@ int newton_iterations(const std::string& sta) {
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the calculix statics");
-  ring::refuse_displacement(st, "calculix");
+  // static.displacement is the driven node's *BOUNDARY (static_deck); the resultant law stays
+  // refused by the deck (ring.plastic.moment), with loads or driven.
   // An arch takes point loads (held to the elastica of DaDeppo & Schmidt's deep arch,
   // tests/calculix/calculix_arch_test.cpp). Distributed loads on an arch are refused until
   // validated: under a uniform pressure a pinned arch is membrane-dominated, its bending driven
@@ -60,6 +63,18 @@ void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& optio
   require_ccx();
 }
 
+namespace {
+
+/// The load factor at ccx's total time t of a deck whose step k (1-based) runs over total
+/// time (k - 1, k] from legs[k - 2] (0 for the first) to legs[k - 1].
+double load_factor(const std::vector<double>& legs, double t) {
+  const int k = std::clamp(static_cast<int>(std::ceil(t - 1e-9)), 1, static_cast<int>(legs.size()));
+  const double from = k == 1 ? 0.0 : legs[k - 2];
+  return from + (t - (k - 1)) * (legs[k - 1] - from);
+}
+
+}  // namespace
+
 ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::CalculixOptions& options,
                                 const ring::StaticOptions& st, const Hooks& hooks, const std::string& title) {
   const auto start = std::chrono::steady_clock::now();
@@ -68,22 +83,84 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
   const RunOutput out = run(deck.text, {options.timeout, options.threads}, hooks);
   const int nodes = node_count(spec, options);
   const DatStatic dat = read_static_dat(out.dat, nodes);
-  if (!(std::abs(dat.time - 1.0) <= 1e-6))  // written so that a NaN time fails too
-    throw ring::NumericalError("calculix: ccx stopped at load factor " + std::to_string(dat.time) +
-                               " of 1; the last lines of its output:\n" + tail(out.log, 12));
+  const std::vector<double> legs = st.history.empty() ? std::vector<double>{1.0} : st.history;
+  const double end = static_cast<double>(legs.size());
+  if (!(std::abs(dat.time - end) <= 1e-6))  // written so that a NaN time fails too
+    throw ring::NumericalError(
+        "calculix: ccx stopped at load factor " + std::to_string(load_factor(legs, dat.time)) +
+        (legs.size() > 1 ? " in leg " + std::to_string(static_cast<int>(std::ceil(dat.time - 1e-9))) + " of " +
+                               std::to_string(legs.size()) + " (static.history)"
+                         : std::string(" of 1")) +
+        "; the last lines of its output:\n" + tail(out.log, 12));
+  if (st.displacement)
+    for (const auto& inc : dat.all)
+      if (std::isnan(inc.force[0]))
+        throw ring::NumericalError("calculix: ccx printed no reaction of the driven node at total time " +
+                                   std::to_string(inc.time) + " (*NODE PRINT RF)");
   ring::StaticResult r;
   r.solver = "calculix";
   r.unknowns = equation_count(out.log);
   r.steps = dat.increments;
   r.newton_iterations = newton_iterations(out.sta);
-  for (double a : st.record) {
-    const int k = node_of(deck, a);
-    r.displacements.push_back({a, dat.ux[k], dat.uy[k]});
-  }
+  // The recorded points and the deformed ring of one increment.
+  auto point = [&](const DatStatic::Increment& inc) {
+    ring::PathPoint p;
+    p.load_factor = load_factor(legs, inc.time);
+    for (double a : st.record) {
+      const int k = node_of(deck, a);
+      p.displacements.push_back({a, inc.ux[k], inc.uy[k]});
+    }
+    const int stride = ring::path_shape_stride(nodes);
+    for (int k = 0; k < nodes; k += stride) {
+      const double t = deck.node_angles[k] * M_PI / 180.0;
+      p.node_x.push_back(spec.radius * std::cos(t) + inc.ux[k]);
+      p.node_y.push_back(spec.radius * std::sin(t) + inc.uy[k]);
+    }
+    // (largest - smallest distance between opposite nodes) / R, the chains' definition
+    // (multibody/statics.cpp); 0 for an arch and for an odd node count (B31), which have no
+    // opposite nodes.
+    if (!spec.arc && nodes % 2 == 0) {
+      double most = 0.0, least = INFINITY;
+      for (int k = 0; k < nodes / 2; ++k) {
+        const int j = k + nodes / 2;
+        const double tk = deck.node_angles[k] * M_PI / 180.0, tj = deck.node_angles[j] * M_PI / 180.0;
+        const double d = std::hypot(spec.radius * (std::cos(tk) - std::cos(tj)) + inc.ux[k] - inc.ux[j],
+                                    spec.radius * (std::sin(tk) - std::sin(tj)) + inc.uy[k] - inc.uy[j]);
+        most = std::max(most, d);
+        least = std::min(least, d);
+      }
+      p.ovalisation = (most - least) / spec.radius;
+    }
+    if (st.displacement) p.reaction = inc.force;
+    if (spec.plastic) p.dissipated = p.plastic_curvature = std::nan("");
+    return p;
+  };
+  const ring::PathPoint last = point(dat.all.back());
+  r.displacements = last.displacements;
+  r.reaction = last.reaction;
   for (int k = 0; k < nodes; ++k) {
     const double t = deck.node_angles[k] * M_PI / 180.0;
     r.node_x.push_back(spec.radius * std::cos(t) + dat.ux[k]);
     r.node_y.push_back(spec.radius * std::sin(t) + dat.uy[k]);
+  }
+  if (st.path) {
+    // Every converged increment from rest (ccx's load stepping: no arc length, so no limit
+    // point is passed or located, no branch switched and no contact found; a load-controlled
+    // run past a limit point stops, exit 3, as above).
+    ring::PathPoint rest;
+    rest.displacements = last.displacements;
+    for (auto& d : rest.displacements) d.ux = d.uy = 0.0;
+    const int stride = ring::path_shape_stride(nodes);
+    for (int k = 0; k < nodes; k += stride) {
+      const double t = deck.node_angles[k] * M_PI / 180.0;
+      rest.node_x.push_back(spec.radius * std::cos(t));
+      rest.node_y.push_back(spec.radius * std::sin(t));
+    }
+    if (spec.plastic) rest.dissipated = rest.plastic_curvature = std::nan("");
+    r.path.push_back(rest);
+    for (const auto& inc : dat.all) r.path.push_back(point(inc));
+    r.end = st.history.empty() ? "full load" : "end of the history";
+    r.end_load = legs.back();
   }
   if (spec.plastic) {
     // ccx prints no plastic work by itself (its ENER is the whole internal energy, elastic and

@@ -3,6 +3,7 @@
 // the deck refuses; and the .dat reader on a small file in ccx's layout.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -199,6 +200,62 @@ TEST(CalculixDeck, StaticStepLoadsTheNodeAtTheLoadsAngle) {
   EXPECT_EQ(std::stod(inc[1]), 1.0);
   st.loads.points = {{91.0, {0.0, -2e4}}};  // not a node
   EXPECT_THROW(calculix::static_deck(r, {}, st), ring::InputError);
+}
+
+// Displacement control: the driven node in a set of its own, its two displacements a
+// *BOUNDARY with the values at load factor 1 inside the step (ramped by ccx's *STATIC), its
+// RF printed after the displacements; no load. A history: one *STEP per leg, the boundary
+// times the amplitude LOAD in total time, whose rows are the legs' factors.
+TEST(CalculixDeck, ADrivenNodeIsABoundaryWithItsValueAndPrintsItsReaction) {
+  ring::RingSpec r = paper_ring();
+  r.supports.pin = 270.0;
+  ring::StaticOptions st;
+  st.displacement = ring::StaticOptions::Displacement{90.0, {0.25, -2e-3}};
+  st.steps = 4;
+  std::string deck = calculix::static_deck(r, {}, st).text;
+  const Parsed p = parse(deck);
+  const int node = node_near(p, 0.0, 10.0);
+  EXPECT_NE(deck.find("*NSET, NSET=NDRIVE\n" + std::to_string(node) + "\n"), std::string::npos);
+  const auto step = deck.find("*STEP");
+  const auto at = deck.find("*BOUNDARY\n" + std::to_string(node) + ", 1, 1, ", step);
+  ASSERT_NE(at, std::string::npos) << deck.substr(step);
+  std::istringstream in(deck.substr(at + 10));
+  std::string x, y;
+  std::getline(in, x);
+  std::getline(in, y);
+  EXPECT_EQ(std::stod(fields(x).at(3)), 0.25);
+  EXPECT_EQ(std::stod(fields(y).at(3)), -2e-3);
+  EXPECT_EQ(fields(y).at(1), "2");
+  EXPECT_LT(deck.find("*NODE PRINT, NSET=NALL\nU\n"), deck.find("*NODE PRINT, NSET=NDRIVE\nRF\n"));
+  EXPECT_EQ(deck.find("*CLOAD"), std::string::npos);
+  EXPECT_EQ(deck.find("AMPLITUDE"), std::string::npos);
+
+  st.history = {1.0, 0.0, -0.5};
+  deck = calculix::static_deck(r, {}, st).text;
+  std::size_t steps = 0;
+  for (auto k = deck.find("*STEP"); k != std::string::npos; k = deck.find("*STEP", k + 1)) ++steps;
+  EXPECT_EQ(steps, 3u);
+  const auto amp = deck.find("*AMPLITUDE, NAME=LOAD, TIME=TOTAL TIME\n");
+  ASSERT_NE(amp, std::string::npos);
+  std::istringstream rows(deck.substr(amp + 39));
+  const std::vector<std::array<double, 2>> expected = {{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}, {3.0, -0.5}};
+  for (const auto& e : expected) {
+    std::string row;
+    std::getline(rows, row);
+    const auto f = fields(row);
+    ASSERT_EQ(f.size(), 2u) << row;
+    EXPECT_EQ(std::stod(f[0]), e[0]) << row;
+    EXPECT_EQ(std::stod(f[1]), e[1]) << row;
+  }
+  EXPECT_NE(deck.find("*BOUNDARY, AMPLITUDE=LOAD\n" + std::to_string(node) + ", 1, 1, "), std::string::npos);
+
+  st.displacement->at = 91.0;  // not a node
+  try {
+    calculix::static_deck(r, {}, st);
+    ADD_FAILURE() << "no refusal";
+  } catch (const ring::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("static.displacement.at"), std::string::npos) << e.what();
+  }
 }
 
 // The fibre law in a static deck: *PLASTIC after the *ELASTIC of the material, the bilinear
@@ -559,6 +616,41 @@ TEST(CalculixDat, AStaticStepsLastIncrementIsTheResult) {
   EXPECT_EQ(s.uy[0], -0.01);
   EXPECT_THROW(calculix::read_static_dat(dat, 3), ring::NumericalError);
   EXPECT_THROW(calculix::read_static_dat("no increment\n", 2), ring::NumericalError);
+}
+
+TEST(CalculixDat, AStaticStepsDrivenNodeReactionIsReadPerIncrement) {
+  const std::string dat = R"(
+ displacements (vx,vy,vz) for set NALL and time  0.5000000E+00
+
+         1  1.000000E-01  0.000000E+00  0.000000E+00
+         2  2.000000E-01  0.000000E+00  0.000000E+00
+
+ forces (fx,fy,fz) for set NDRIVE and time  0.5000000E+00
+
+         2  3.000000E+00 -4.000000E+00  1.000000E-12
+
+ displacements (vx,vy,vz) for set NALL and time  0.1000000E+01
+
+         1  3.000000E-01 -1.000000E-02  0.000000E+00
+         2  4.000000E-01  0.000000E+00  0.000000E+00
+
+ forces (fx,fy,fz) for set NDRIVE and time  0.1000000E+01
+
+         2  5.000000E+00 -6.000000E+00  0.000000E+00
+)";
+  const auto s = calculix::read_static_dat(dat, 2);
+  ASSERT_EQ(s.all.size(), 2u);
+  EXPECT_EQ(s.all[0].time, 0.5);
+  EXPECT_EQ(s.all[0].force[0], 3.0);
+  EXPECT_EQ(s.all[0].force[1], -4.0);
+  EXPECT_EQ(s.all[1].ux[0], 0.3);
+  EXPECT_EQ(s.force[1], -6.0);
+  EXPECT_EQ(s.ux[1], 0.4);
+  // A forces block of two nodes, or one before any displacements, is not what the deck asks.
+  std::string two = dat;
+  two.insert(two.find("         2  5.0"), "         1  5.000000E+00 -6.000000E+00  0.000000E+00\n");
+  EXPECT_THROW(calculix::read_static_dat(two, 2), ring::NumericalError);
+  EXPECT_THROW(calculix::read_static_dat(dat.substr(dat.find(" forces")), 2), ring::NumericalError);
 }
 
 TEST(CalculixDat, AMalformedFileIsANumericalErrorNamingTheLine) {
