@@ -60,15 +60,6 @@ bool runs(const ring::NonlinearRequest& q, const std::string& name) {
   return std::find(q.solvers.begin(), q.solvers.end(), name) != q.solvers.end();
 }
 
-/// static.path (the equilibrium path with branch switching, contact as a result) is the
-/// multibody and lumped chains' and the FE beam's so far.
-void refuse_path(const ring::StaticOptions& statics) {
-  if (statics.path)
-    throw std::invalid_argument("static.path = true (the equilibrium path through bifurcations to contact) is "
-                                "not offered by this solver yet; the multibody and lumped chains and fem offer it (static.solvers = "
-                                "[\"multibody\", \"lumped\", \"fem\"])");
-}
-
 /// modes.preload = "static" (frequencies under load) is the chains' and fem's.
 void refuse_preload(const ring::Scene& s) {
   if (s.modes.preload_static)
@@ -353,16 +344,13 @@ SolverEntry calculix_entry() {
   e.modes = [](const ring::Scene& s, int count) {
     return with_scene_file(s, [&] { return calculix::compute_modes(s.ring, s.calculix, count, signal_hooks(), s.title); });
   };
+  // A history is one *STEP per leg, and a path ccx's converged increments (calculix/statics.cpp):
+  // ccx steps the load, so a path that would pass a limit point stops there (exit 3).
   e.check_static = [](const ring::Scene& s) {
-    // The deck's refusals first (the plastic law names its own key), then the history,
-    // which implies a path unless static.path says otherwise.
-    with_scene_file(s, [&] { calculix::check_static(s.ring, s.calculix, *s.statics); });
-    if (!s.statics->history.empty())
-      throw ring::InputError(s.file, "static.history",
-                             "a load history is not offered by calculix yet (its deck runs one *STEP from rest to "
-                             "the full load); the multibody and lumped chains and fem follow histories");
-    refuse_path(*s.statics);
-    with_scene_file(s, [&] { calculix::require_environment(); });
+    with_scene_file(s, [&] {
+      calculix::check_static(s.ring, s.calculix, *s.statics);
+      calculix::require_environment();
+    });
   };
   e.statics = [](const ring::Scene& s) {
     return with_scene_file(
@@ -596,7 +584,11 @@ void require_finite(const ring::StaticResult& r) {
     finite_points(r.solver, p.displacements, at);
     finite_values(r.solver, p.node_x, [&](std::size_t i) { return "x of node " + std::to_string(i + 1) + at; });
     finite_values(r.solver, p.node_y, [&](std::size_t i) { return "y of node " + std::to_string(i + 1) + at; });
+    finite_values(r.solver, {p.reaction[0], p.reaction[1]},
+                  [&](std::size_t i) { return (i ? "the reaction's y" : "the reaction's x") + at; });
   }
+  finite_values(r.solver, {r.reaction[0], r.reaction[1]},
+                [](std::size_t i) { return std::string(i ? "the reaction's y" : "the reaction's x"); });
 }
 
 void require_finite(const ring::TimeHistory& r) {

@@ -121,7 +121,11 @@ std::string static_path_csv(const ring::StaticResult& r) {
   for (const auto& p : r.path) {
     s << p.load_factor << "," << p.ovalisation;
     for (const auto& d : p.displacements) s << "," << d.ux << "," << d.uy;
-    s << "," << p.dissipated << "," << p.plastic_curvature;
+    // A value the solver does not report (ccx's plastic work: NaN) is an empty cell.
+    for (double v : {p.dissipated, p.plastic_curvature}) {
+      s << ",";
+      if (std::isfinite(v)) s << v;
+    }
     if (r.driven) s << "," << p.reaction[0] << "," << p.reaction[1];
     s << "\n";
   }

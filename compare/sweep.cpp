@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -346,24 +348,40 @@ bool plot_sweep(const std::string& dir, const std::vector<std::string>& keys, co
 /// ("wave k forward|backward" rows) per solver against the speed, and the critical speeds
 /// where a branch in the fixed frame changes sign (linear between the cases). Returns the
 /// markdown lines of the critical speeds, or nullopt when the sweep has no such rows.
+/// Drawn so that the key stays short: forward solid, backward dashed; one colour per wave number
+/// (its key "k = K" once), or, when further keys vary (rotation.tension), one colour per value
+/// of them (its key once); the solvers' branches of one wave overlie each other.
 std::optional<std::string> plot_campbell(const std::string& dir, const std::vector<std::string>& keys,
                                          const std::vector<SweepRow>& rows) {
   if (keys.empty() || keys[0] != "rotation.speed") return std::nullopt;
-  std::map<std::string, Series> branches;
+  struct Branch {
+    std::string extras;  // the further keys' values, ", key = value" each
+    int wave;
+    std::string solver;
+    bool backward;
+    bool operator<(const Branch& o) const {
+      return std::tie(extras, wave, solver, backward) < std::tie(o.extras, o.wave, o.solver, o.backward);
+    }
+  };
+  std::map<Branch, Series> branches;
+  std::vector<std::string> combos;  // the distinct extras, in order of appearance
   for (const auto& r : rows) {
     if (r.status != "ok" || r.quantity.rfind("wave ", 0) != 0) continue;
-    std::string label = r.solver + ", " + r.quantity;
-    for (std::size_t i = 1; i < keys.size(); ++i) label += ", " + keys[i] + " = " + r.values[i];
-    Series& s = branches[label];
-    s.name = label;
+    std::string extras;
+    for (std::size_t i = 1; i < keys.size(); ++i) extras += ", " + keys[i] + " = " + r.values[i];
+    if (std::find(combos.begin(), combos.end(), extras) == combos.end()) combos.push_back(extras);
+    const Branch b{extras, std::atoi(r.quantity.c_str() + 5), r.solver, r.quantity.find("backward") != std::string::npos};
+    Series& s = branches[b];
+    s.name = r.solver + ", " + r.quantity + extras;  // the critical speeds' label; the key's is set below
     s.x.push_back(std::strtod(r.values[0].c_str(), nullptr));
     s.y.push_back(r.value);
-    if (r.quantity.find("backward") != std::string::npos) s.dash = 2;
+    s.dash = b.backward ? 2 : 1;
   }
   if (branches.empty()) return std::nullopt;
   std::vector<Series> plot;
   std::ostringstream critical;
-  for (auto& [label, s] : branches) {
+  std::set<std::string> keyed;
+  for (auto& [branch, s] : branches) {
     std::vector<std::size_t> order(s.x.size());
     std::iota(order.begin(), order.end(), 0);
     const std::vector<double>& xs = s.x;  // a lambda may not capture a structured binding before C++20 (clang)
@@ -373,11 +391,16 @@ std::optional<std::string> plot_campbell(const std::string& dir, const std::vect
     for (std::size_t i = 1; i < sorted.x.size(); ++i)
       if ((sorted.y[i - 1] < 0.0) != (sorted.y[i] < 0.0)) {
         const double x = sorted.x[i - 1] + (sorted.x[i] - sorted.x[i - 1]) * sorted.y[i - 1] / (sorted.y[i - 1] - sorted.y[i]);
-        critical << "- " << label << ": " << sig4(x) << " rad/s\n";
+        critical << "- " << s.name << ": " << sig4(x) << " rad/s\n";
       }
+    const bool by_combo = combos.size() > 1;
+    const std::string key = by_combo ? branch.extras.substr(2) : "k = " + std::to_string(branch.wave);
+    sorted.color = by_combo ? static_cast<int>(std::find(combos.begin(), combos.end(), branch.extras) - combos.begin())
+                            : branch.wave;
+    sorted.name = keyed.insert(key).second ? key : "";
     plot.push_back(sorted);
   }
-  plot_series(dir, "campbell", "Campbell diagram: the waves' frequencies against the spin (dashed: backward)",
+  plot_series(dir, "campbell", "Campbell diagram: the waves' frequencies against the spin (solid forward, dashed backward)",
               "rotation.speed (rad/s)", "omega (rad/s)", plot);
   const std::string found = critical.str();
   return "\n## Campbell diagram\n\n![campbell](campbell.png)\n\nCritical speeds (a branch of the fixed frame "

@@ -136,6 +136,22 @@ TEST(ExtremeValues, ThePlasticKeysAndTheHistoryMakeNoNonFiniteResult) {
   sweep(plastic, keys, {"1e300", "-1e300", "1e-300", "nan", "inf", "0.999999"});
 }
 
+// The driven point (static.displacement) on the plastic pinch: its angle and its value at the
+// extremes, and at 4 radii (the reader's bound: accepted, and far past anything a ring can do,
+// so the path ends in exit 3 or at contact).
+TEST(ExtremeValues, TheDrivenPointsKeysMakeNoNonFiniteResult) {
+  const std::string driven =
+      "title = \"extremes\"\n" + ringtest::paper_ring_toml() + "plastic = { moment = 7.2e4, hardening = 0.0 }\n" +
+      "[supports]\npin = 270.0\n[multibody]\nn = 12\n[lumped]\nn = 12\n[fem]\nelements = 12\n"
+      "[static]\nsolvers = [\"multibody\", \"lumped\", \"fem\"]\n"
+      "displacement = { at = 90.0, value = [0.0, -0.5] }\nsteps = 4\nrecord = [90.0, 0.0]\n";
+  const std::vector<Key> keys = {
+      {"static.displacement.value", "static.displacement={at=90.0, value=[0.0, V]}"},
+      {"static.displacement.at", "static.displacement={at=V, value=[0.0, -0.5]}"},
+  };
+  sweep(driven, keys, {"1e300", "-1e300", "1e-300", "nan", "inf", "-40.0"});
+}
+
 namespace {
 
 int sweep(const std::string& scene_text, const std::vector<Key>& keys, const std::vector<std::string>& values) {
