@@ -124,12 +124,8 @@ void check_drive(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
     throw ring::InputError("", "static.displacement",
                            "drives the path, and the multibody chain would scale the loads of [static] with it: give "
                            "the one or the other");
-  // Both formulations would hold the point on these as a further pin does, but neither path
-  // is measured there yet: refused rather than offered untested.
-  if (spec.is_arch())
-    throw ring::InputError("", "static.displacement",
-                           "the multibody arch (ring.arc) has no displacement control yet (the closed ring with a pin "
-                           "has): drive it by loads");
+  // The free chain (its base (x_0, y_0) unknowns) would hold the point as a further pin does,
+  // but is not measured so yet: refused rather than offered untested.
   if (spec.supports.free())
     throw ring::InputError("", "static.displacement",
                            "the multibody chain drives a point of a ring with a pin (supports.pin) only yet: add a pin "

@@ -162,7 +162,9 @@ class StaticEquilibrium : public paths::Equilibrium {
 
 }  // namespace detail
 
-/// Static equilibrium under `statics.loads` at full load.
+/// Static equilibrium under `statics.loads` at full load, or with the point of
+/// `statics.displacement` driven to its value (file comment; `reaction` at every path point,
+/// limit point and the end).
 /// Returns the displacements of the recorded points (ring-centred frame, m), the
 /// number of accepted load steps, the total Newton iterations, and every hinge's
 /// deformed position. Cost: O(n^3) per Newton iteration on the dense path, O(n) on the

@@ -149,6 +149,37 @@ TEST(DrivenStatics, AgreesWithTheLoadControlledPathOfTheSameChain) {
   }
 }
 
+// The arch (ring.arc, chain.hpp: the open chain): pinned at 30 and 150 deg, the apex load
+// P R^2 / EI = 2 (a quarter of its limit, test_arch.cpp) against the apex driven to where that
+// load took it. The apex's x is free under the load and held by the drive: zero by the arch's
+// symmetry (n = 32, hinges symmetric about the apex) up to round-off.
+TEST(DrivenStatics, AnArchAgreesWithItsLoadControlledPath) {
+  ring::RingSpec spec = ringtest::free_ring();
+  spec.arc = ring::Arc{30.0, 150.0};
+  spec.supports.pin = 30.0;
+  spec.supports.pins = {150.0};
+  const double P = 2.0 * spec.EI() / (spec.radius * spec.radius);
+  ring::StaticOptions st;
+  st.loads.points = {{90.0, {0.0, -P}}};
+  st.record = {90.0, 60.0};
+  st.steps = 10;
+  const ring::StaticResult byload = drive(spec, 32, Method::dense, st);
+  const double ux = byload.displacements.at(0).ux, uy = byload.displacements.at(0).uy;
+  ring::StaticOptions driven;
+  driven.displacement = ring::StaticOptions::Displacement{90.0, {ux, uy}};
+  driven.record = st.record;
+  driven.steps = 10;
+  const ring::StaticResult bydrive = drive(spec, 32, Method::dense, driven);
+  ::testing::Test::RecordProperty("apex", mbtest::sci(ux) + " " + mbtest::sci(uy));
+  ::testing::Test::RecordProperty("reaction", mbtest::sci(bydrive.reaction[0]) + " " + mbtest::sci(bydrive.reaction[1]));
+  // Newton's 1e-12 rad on the angles, through the tangent's condition: 1e-8 of P bounds it
+  // (as the ring's above); the symmetry's x reaction to round-off of the forces (1e-8 of P).
+  EXPECT_NEAR(force(bydrive.reaction), P, 1e-8 * P);
+  EXPECT_NEAR(bydrive.reaction[0], 0.0, 1e-8 * P);
+  EXPECT_NEAR(bydrive.displacements.at(1).ux, byload.displacements.at(1).ux, 1e-8 * std::abs(uy));
+  EXPECT_NEAR(bydrive.displacements.at(1).uy, byload.displacements.at(1).uy, 1e-8 * std::abs(uy));
+}
+
 // ---- 3. plastic: the plateau, the mechanism, unloading, the energy balance ----
 
 // Past collapse the four hinges (under the points and on the horizontal diameter, hinges of the
