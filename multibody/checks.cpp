@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "multibody/attachments.hpp"
 #include "multibody/backend.hpp"
@@ -113,6 +114,40 @@ void check_spinning(const ring::RingSpec& spec, const ring::MultibodyOptions& op
                                 " here): lower multibody.n (the chain's error is order 2 in 1/n)");
 }
 
+/// static.displacement (statics.hpp, "Displacement control"): the driven point is a hinge of
+/// the chain other than a support's, and no loads act with it (the scene reader says so too;
+/// this holds for a library caller's options). Both formulations take it; what they take of
+/// the rest is the statics' own rule. O(supports).
+void check_drive(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
+  const ring::StaticOptions::Displacement& d = *statics.displacement;
+  if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())
+    throw ring::InputError("", "static.displacement",
+                           "drives the path, and the multibody chain would scale the loads of [static] with it: give "
+                           "the one or the other");
+  // The free chain (its base (x_0, y_0) unknowns) would hold the point as a further pin does,
+  // but is not measured so yet: refused rather than offered untested.
+  if (spec.supports.free())
+    throw ring::InputError("", "static.displacement",
+                           "the multibody chain drives a point of a ring with a pin (supports.pin) only yet: add a pin "
+                           "or drive the path by loads");
+  const double length = std::hypot(d.value[0], d.value[1]);
+  if (!(length > 0.0) || !std::isfinite(length))
+    throw ring::InputError("", "static.displacement.value",
+                           "expected a finite, nonzero displacement [ux, uy] (m), got [" + std::to_string(d.value[0]) +
+                               ", " + std::to_string(d.value[1]) + "]");
+  if (ring::node_index(spec, d.at, options.n) < 0)
+    throw ring::InputError("", "static.displacement.at",
+                           std::to_string(d.at) + " deg is not a hinge of the n = " + std::to_string(options.n) +
+                               " chain (valid: the anchor " + std::to_string(spec.anchor()) + " deg + 360 k / n)");
+  std::vector<double> held = spec.supports.pinned();
+  if (spec.supports.roller) held.push_back(*spec.supports.roller);
+  for (const auto& sp : spec.supports.springs) held.push_back(sp.angle);
+  for (double p : held)
+    if (ring::node_index(spec, p, options.n) == ring::node_index(spec, d.at, options.n))
+      throw ring::InputError("", "static.displacement.at",
+                             "the point at " + std::to_string(d.at) + " deg is a support (supports); drive another point");
+}
+
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
@@ -162,7 +197,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                   const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody statics", PlasticUse::taken);
-  ring::refuse_displacement(statics, "the multibody chain");
+  if (statics.displacement) check_drive(spec, options, statics);
   // The chain's loads hold the centrifugal force of a spinning spec (loading.hpp), but the
   // statics have no turning frame to report in yet.
   ring::refuse_rotation(spec, "the multibody statics");
@@ -190,12 +225,18 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
   // that, so refuse rather than guess.
-  const int rigid = ring::static_rigid_modes(spec, statics.loads);
+  // A driven point holds the ring as a pin does (as the scene reader counts it).
+  ring::RingSpec counted = spec;
+  if (statics.displacement) {
+    if (counted.supports.pin) counted.supports.pins.push_back(statics.displacement->at);
+    else counted.supports.pin = statics.displacement->at;
+  }
+  const int rigid = ring::static_rigid_modes(counted, statics.loads);
   if (spec.is_arch() && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the arch (ring.arc) is free to move rigidly (" +
                                 std::to_string(rigid) + " rigid motion(s)): pin or clamp its ends (supports.pin, "
                                 "supports.pins, supports.clamp)");
-  if (!spec.supports.pin && rigid > 0)
+  if (!counted.supports.pin && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
   if (rigid > 0)
     throw std::invalid_argument(
@@ -207,6 +248,8 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
                            const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the multibody chain");
   ring::refuse_rotation(spec, "the multibody modes under load (modes.preload)");
+  // The modes about a driven equilibrium would need the drive's rows in their pencil.
+  ring::refuse_displacement(statics, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
   if (spec.plastic)

@@ -32,11 +32,15 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 /// Nonlinear statics: a pin and a roller (else the ring turns freely about the pin), steps >= 1;
 /// the Timoshenko chain on the dense path only, and without ring.plastic (ring::InputError:
 /// its hinge springs are condensed with the shear, sections.hpp); the fibre law only on a
-/// section with a shape (ring::InputError, key ring.plastic.stress).
+/// section with a shape (ring::InputError, key ring.plastic.stress). static.displacement
+/// (statics.hpp): the driven point counts as a pin; it must be a hinge that is no support
+/// (ring::InputError, key static.displacement.at), with no loads and a supports.pin (key
+/// static.displacement: the free chain's drive is not measured yet).
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
 /// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"), a
-/// pinned Timoshenko chain, no ring.plastic (ring::InputError: an elastic tangent).
+/// pinned Timoshenko chain, no ring.plastic (ring::InputError: an elastic tangent), no
+/// static.displacement (ring::InputError: the pencil holds no driven rows).
 void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                            const ring::StaticOptions& statics);
 /// Forced response: ring.plastic (either law; the fibre law on a section with a shape) on the

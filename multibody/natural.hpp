@@ -8,6 +8,7 @@
 
 #include <cassert>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "multibody/bending.hpp"
@@ -187,7 +188,9 @@ class NewtonStop {
 /// The chain's static equilibrium in hinge positions for the continuation driver
 /// (statics_natural.cpp), with the terms of `spec` (attachments.hpp) and every load of
 /// `loads` (loading.hpp): one BandedKkt factorization per Newton iteration, O(n).
+/// `drive`: static.displacement on the last further pin, as detail::angle_equilibrium's.
 std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::RingSpec& spec,
-                                                              const ring::Loads& loads, double depth);
+                                                              const ring::Loads& loads, double depth,
+                                                              std::optional<Eigen::Vector2d> drive = std::nullopt);
 
 }  // namespace multibody::natural

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "multibody/chain.hpp"
 #include "multibody/natural.hpp"
@@ -14,7 +15,11 @@ namespace multibody::detail {
 
 /// The dense path: segment angles and multipliers (statics.cpp, AngleStatics), O(n^3) per
 /// Newton iteration. The O(n) path in hinge positions is natural::static_equilibrium.
+/// `drive` (static.displacement.value, m at load factor 1): the chain's last two constraint
+/// rows, the last further pin of `spec` (held_spec), move to s times it and their multipliers
+/// give the reaction (statics.hpp, "Displacement control"); `loads` must then be empty.
 std::unique_ptr<StaticEquilibrium> angle_equilibrium(const Chain& chain, const ring::RingSpec& spec,
-                                                     const ring::Loads& loads, double depth);
+                                                     const ring::Loads& loads, double depth,
+                                                     std::optional<Eigen::Vector2d> drive = std::nullopt);
 
 }  // namespace multibody::detail

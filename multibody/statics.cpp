@@ -66,15 +66,23 @@ std::optional<double> StaticEquilibrium::clearance(const paths::State& x) {
 
 std::optional<paths::Touch> StaticEquilibrium::accept(const paths::State& from, const paths::State& to) {
   const Eigen::Matrix2Xd p = hinges(to.z);
-  if (recording_ && path_.empty()) path_.push_back(path_point(from.s, hinges(from.z)));
+  if (recording_ && path_.empty()) path_.push_back(point(from));
   // The step converged: its trial plastic states become the committed ones (ring/plastic.hpp).
   bending_.commit(hinge_strains(to.z));
-  if (recording_) path_.push_back(path_point(to.s, p));
+  if (recording_) path_.push_back(point(to));
   const ClosestPair cp = closest_contact(p, chain_.l(), gap_, depth_, !chain_.arch());
   if (cp.distance >= depth_) return std::nullopt;
   std::ostringstream m;
   m << describe_contact(cp) << " (section depth " << depth_ << " m); the chain model does not include contact";
   return paths::Touch{1.0, m.str()};
+}
+
+ring::RingSpec held_spec(const ring::RingSpec& spec, const ring::StaticOptions& statics) {
+  ring::RingSpec held = spec;
+  // Appended last, so its rows are the last of the further pins' in both formulations
+  // (Attachments::pins, natural::Natural::pins), whatever holds hinge 0.
+  if (statics.displacement) held.supports.pins.push_back(statics.displacement->at);
+  return held;
 }
 
 }  // namespace detail
@@ -121,17 +129,22 @@ void DenseTangent::add_tangent(const Vector& q, const Vector& lambda, double s, 
 namespace {
 
 /// The dense path: unknowns z = (segment angles q, multipliers lambda). The bordered
-/// tangent [T sc G^T -Phi; sc G 0 0; w^T 0 ws] (T: detail::DenseTangent), with the
+/// tangent [T sc G^T -Phi; sc G 0 sc dg/ds; w^T 0 ws] (T: detail::DenseTangent), with the
 /// constraint rows and the multipliers scaled by sc = K / l (G on the scale of the
-/// springs), by dense LU: O(n^3).
+/// springs), by dense LU: O(n^3). dg/ds is -v on the driven rows (the last two) under
+/// static.displacement (statics.hpp), zero otherwise.
 class AngleStatics : public detail::StaticEquilibrium {
  public:
-  AngleStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
+  AngleStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth,
+               std::optional<Eigen::Vector2d> drive = std::nullopt)
       : StaticEquilibrium(chain, spec, depth),
         tangent_(chain, spec, loads, "static", &bending_),
         n_(tangent_.dofs()),
         c_(tangent_.rows()),
-        sc_(chain.K() / chain.l()) {}
+        sc_(chain.K() / chain.l()),
+        drive_(drive) {
+    if (drive_ && c_ < 2) throw std::logic_error("multibody: a driven point needs its two pin rows (held_spec)");
+  }
   Eigen::Index size() const override { return n_ + c_; }
   Eigen::Index arc_size() const override { return n_; }
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
@@ -140,12 +153,14 @@ class AngleStatics : public detail::StaticEquilibrium {
     const Vector phi = tangent_.loads().forces(q);
     r.resize(n_ + c_);
     r << tangent_.internal_forces(q) + ck.G.transpose() * lambda - x.s * phi, ck.g;
+    if (drive_) r.tail<2>() -= x.s * *drive_;  // the driven pin's target s v
     if (!r.allFinite()) return false;
     Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
     tangent_.add_tangent(q, lambda, x.s, ck, A.topLeftCorner(n_, n_));
     A.block(0, n_, n_, c_) = sc_ * ck.G.transpose();
     A.block(n_, 0, c_, n_) = sc_ * ck.G;
     A.col(n_ + c_).head(n_) = -phi;
+    if (drive_) A.col(n_ + c_).segment<2>(n_ + c_ - 2) = -sc_ * *drive_;
     A.row(n_ + c_).head(n_) = w.transpose();
     A(n_ + c_, n_ + c_) = ws;
     lu_.compute(A);
@@ -187,6 +202,10 @@ class AngleStatics : public detail::StaticEquilibrium {
     z.head(n_) = chain_.q0();
     return z;
   }
+  std::array<double, 2> reaction(const paths::Vector& z) const override {
+    if (!drive_) return {0.0, 0.0};
+    return {-z(n_ + c_ - 2), -z(n_ + c_ - 1)};
+  }
 
  private:
   Matrix tangent_at(const paths::State& x, const Chain::ConstraintKinematics& ck) const {
@@ -198,14 +217,16 @@ class AngleStatics : public detail::StaticEquilibrium {
   const detail::DenseTangent tangent_;
   const Eigen::Index n_, c_;
   const double sc_;
+  const std::optional<Eigen::Vector2d> drive_;  ///< static.displacement.value, m
   Eigen::PartialPivLU<Matrix> lu_;
 };
 
 }  // namespace
 
 std::unique_ptr<detail::StaticEquilibrium> detail::angle_equilibrium(const Chain& chain, const ring::RingSpec& spec,
-                                                                     const ring::Loads& loads, double depth) {
-  return std::make_unique<AngleStatics>(chain, spec, loads, depth);
+                                                                     const ring::Loads& loads, double depth,
+                                                                     std::optional<Eigen::Vector2d> drive) {
+  return std::make_unique<AngleStatics>(chain, spec, loads, depth, drive);
 }
 
 namespace {
@@ -362,13 +383,17 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   check_static(spec, options, statics);
   const std::optional<double> loaded =
       statics.loads.points.empty() ? std::nullopt : std::optional<double>(statics.loads.points.front().angle);
-  const Chain ch(spec, options, loaded);
+  // static.displacement: the driven point is one more pin (held_spec) whose target moves.
+  const ring::RingSpec held = detail::held_spec(spec, statics);
+  std::optional<Eigen::Vector2d> drive;
+  if (statics.displacement) drive = Eigen::Vector2d(statics.displacement->value[0], statics.displacement->value[1]);
+  const Chain ch(held, options, loaded);
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
   if (backend(options, spec, statics) == Backend::banded)
-    eq = natural::static_equilibrium(ch, spec, statics.loads, depth);
+    eq = natural::static_equilibrium(ch, held, statics.loads, depth, drive);
   else
-    eq = detail::angle_equilibrium(ch, spec, statics.loads, depth);
+    eq = detail::angle_equilibrium(ch, held, statics.loads, depth, drive);
   paths::Continuation policy;
   policy.steps = statics.steps;
   policy.history = statics.history;
@@ -387,7 +412,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   if (statics.path) {
     res.path = eq->path();
     res.branch_points = path.branch_points;
-    if (path.limit_state) res.limit_points.push_back(eq->path_point(path.limit, eq->hinges(path.limit_state->z)));
+    if (path.limit_state) res.limit_points.push_back(eq->point({path.limit_state->z, path.limit}));
     res.end = touched ? "contact: " + path.contact : statics.history.empty() ? "full load" : "end of the history";
     res.end_load = path.end_load;  // the touch, or the full load (a history: its last factor)
   }
@@ -403,6 +428,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   }
   res.dissipated = eq->dissipated();
   res.plastic_curvature = eq->plastic_curvature();
+  res.reaction = eq->reaction(path.state.z);
   res.node_x.assign(hp.row(0).begin(), hp.row(0).end());
   res.node_y.assign(hp.row(1).begin(), hp.row(1).end());
   return res;

@@ -21,8 +21,23 @@
 // Its frequencies under load restore gamma about the equilibrium: the stiffness
 // [T - K_c + A, A; A, A + S] and the mass [M + J, J; J, J] (A, S, J as in sections.hpp;
 // statics.cpp).
+//
+// ## Displacement control (static.displacement)
+// No loads act; the driven hinge h is held as a pin whose target moves with the load factor,
+// the spec's last further pin (detail::held_spec, attachments.hpp) with the rows
+//
+//   g_d(z, s) = u_h(z) - s v = 0,   v = static.displacement.value (m at s = 1),
+//
+// so dR/ds is -v on these two rows and zero on the rest (Phi = 0): the bordered matrix's load
+// column of both formulations (scaled as their constraint rows are). Their multipliers are the
+// pin's force on the chain: the residual's G^T lambda balances the springs, so the force the
+// rig applies on the ring at h is -lambda_d (StaticEquilibrium::reaction; N, x and y). The
+// continuation driver varies s as it varies a load factor (history legs, unloading, negative
+// s), the arc length measured on the same unknowns; the driven point moves monotonically with
+// s, so a falling reaction (a plastic mechanism, a snap) is no limit point of the path.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -81,6 +96,12 @@ class DenseTangent {
   const Eigen::Index n_, c_;
 };
 
+/// `spec` with the driven point of `statics` (static.displacement, if any) as its last further
+/// pin (supports.pins): the chain, its terms and both formulations then hold it with two rows,
+/// the last constraint rows, which a formulation given the drive's value moves with s (file
+/// comment). `spec` itself when the path is driven by loads. O(supports).
+ring::RingSpec held_spec(const ring::RingSpec& spec, const ring::StaticOptions& statics);
+
 /// The chain's static equilibrium in one backend's unknowns, for the continuation driver;
 /// the self-contact check (the end of the path) and the hinges' bending law (bending.hpp:
 /// elastic, or ring.plastic's, committed at every accepted equilibrium) are common to both.
@@ -94,6 +115,19 @@ class StaticEquilibrium : public paths::Equilibrium {
   /// The change of every hinge's turning angle from rest for the unknowns z (n, rad): the
   /// strains of bending.hpp.
   virtual Eigen::VectorXd hinge_strains(const paths::Vector& z) const = 0;
+  /// static.displacement: the force the rig applies on the ring at the driven hinge for the
+  /// unknowns z, minus the driven rows' multipliers (N, x and y; file comment). {0, 0} when
+  /// the path is driven by loads.
+  virtual std::array<double, 2> reaction(const paths::Vector& z) const {
+    (void)z;
+    return {0.0, 0.0};
+  }
+  /// The path point of the equilibrium x: path_point at its hinges, with its reaction.
+  ring::PathPoint point(const paths::State& x) const {
+    ring::PathPoint pt = path_point(x.s, hinges(x.z));
+    pt.reaction = reaction(x.z);
+    return pt;
+  }
   /// Commits the hinges' plastic states at `to` (bending.hpp), records it, checks contact.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override;
   /// ring.plastic: the plastic work of the accepted path so far (J), and the largest plastic
@@ -128,7 +162,9 @@ class StaticEquilibrium : public paths::Equilibrium {
 
 }  // namespace detail
 
-/// Static equilibrium under `statics.loads` at full load.
+/// Static equilibrium under `statics.loads` at full load, or with the point of
+/// `statics.displacement` driven to its value (file comment; `reaction` at every path point,
+/// limit point and the end).
 /// Returns the displacements of the recorded points (ring-centred frame, m), the
 /// number of accepted load steps, the total Newton iterations, and every hinge's
 /// deformed position. Cost: O(n^3) per Newton iteration on the dense path, O(n) on the

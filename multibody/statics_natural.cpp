@@ -5,6 +5,10 @@
 // p_n = p_0 for the loads' closing hinge): every block couples a hinge with itself or its
 // neighbours, inside the springs' band.
 
+#include <array>
+#include <optional>
+#include <stdexcept>
+
 #include "multibody/attachments.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/loading.hpp"
@@ -20,10 +24,12 @@ namespace {
 /// per factorization, b = J^-1 c: y = a - y_s b with a = J^-1 rhs and
 /// y_s = (rhs_s - w . a) / (ws - w . b). J is singular only at the limit point itself,
 /// which the arc steps land on with probability zero; their Newton corrects the round-off
-/// that its near-singularity brings.
+/// that its near-singularity brings. Under static.displacement (statics.hpp) the last further
+/// pin's rows read x_h - X_h - s v, so c is -v on them (times kappa, as the rows are scaled).
 class PositionStatics : public detail::StaticEquilibrium {
  public:
-  PositionStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth)
+  PositionStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth,
+                  std::optional<Eigen::Vector2d> drive)
       : StaticEquilibrium(chain, spec, depth),
         terms_(chain, spec),
         loads_(chain, spec, loads, "static"),
@@ -32,7 +38,10 @@ class PositionStatics : public detail::StaticEquilibrium {
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),
         kkt_(c_),
-        stop_(c_.radius()) {}
+        stop_(c_.radius()),
+        drive_(drive) {
+    if (drive_ && c_.pins.empty()) throw std::logic_error("multibody: a driven point needs its pin rows (held_spec)");
+  }
   Eigen::Index size() const override { return S_; }
   Eigen::Index arc_size() const override { return N_; }
 
@@ -60,7 +69,8 @@ class PositionStatics : public detail::StaticEquilibrium {
     add_constraint_jacobian(c_, x, N_, true, kappa_, kkt_, &lambda, &rx);
     add_constraint_jacobian(c_, x, N_, false, kappa_, kkt_, nullptr, nullptr);
     r.resize(S_);
-    r << rx, constraints(c_, x);
+    r << rx, gaps(x, s.s);
+    if (drive_) b_.tail<2>() = -kappa_ * *drive_;  // the driven pin's rows are the last
     if (!r.allFinite() || !kkt_.factor()) return false;
     Vec scratch;
     kkt_.solve(b_, scratch);
@@ -83,7 +93,7 @@ class PositionStatics : public detail::StaticEquilibrium {
   double move(const paths::Vector& dz) const override { return turns_a_link_by(c_, dz.head(N_)) / detail::kBasin; }
   bool converged(const paths::State& s, const paths::Vector& dz, int iteration) override {
     if (iteration == 1) stop_ = NewtonStop(c_.radius());
-    return stop_.converged(dz.head(N_).cwiseAbs().maxCoeff(), constraints(c_, s.z.head(N_)).cwiseAbs().maxCoeff());
+    return stop_.converged(dz.head(N_).cwiseAbs().maxCoeff(), gaps(s.z.head(N_), s.s).cwiseAbs().maxCoeff());
   }
   Eigen::Matrix2Xd hinges(const paths::Vector& z) const override {
     return Eigen::Map<const Eigen::Matrix2Xd>(z.data(), 2, c_.n);
@@ -94,8 +104,19 @@ class PositionStatics : public detail::StaticEquilibrium {
     z.head(N_) = natural::rest(chain_);
     return z;
   }
+  std::array<double, 2> reaction(const paths::Vector& z) const override {
+    if (!drive_) return {0.0, 0.0};
+    return {-z(S_ - 2), -z(S_ - 1)};
+  }
 
  private:
+  /// The constraints at x and load factor s: the driven pin's rows from its target s v.
+  Vec gaps(const Vec& x, double s) const {
+    Vec g = constraints(c_, x);
+    if (drive_) g.tail<2>() -= s * *drive_;
+    return g;
+  }
+
   const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
   const detail::Loading loads_;      ///< point loads, pressure, gravity
   const Natural c_;
@@ -105,13 +126,15 @@ class PositionStatics : public detail::StaticEquilibrium {
   NewtonStop stop_;
   Vec b_, w_;  ///< J^-1 dR/ds (scaled unknowns) and the border row of the last factorization
   double ws_ = 0.0;
+  const std::optional<Eigen::Vector2d> drive_;  ///< static.displacement.value, m
 };
 
 }  // namespace
 
 std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::RingSpec& spec,
-                                                              const ring::Loads& loads, double depth) {
-  return std::make_unique<PositionStatics>(chain, spec, loads, depth);
+                                                              const ring::Loads& loads, double depth,
+                                                              std::optional<Eigen::Vector2d> drive) {
+  return std::make_unique<PositionStatics>(chain, spec, loads, depth, drive);
 }
 
 }  // namespace multibody::natural
