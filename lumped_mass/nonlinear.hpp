@@ -156,6 +156,7 @@ struct StaticState {
   double plastic_curvature = 0.0;  ///< the largest |plastic hinge rotation| / l at the end, 1/m
   double work = 0.0;               ///< the loads' work along the path (StaticDetail), J
   double stored = 0.0;             ///< the elastic energy at the end (StaticDetail), J
+  std::array<double, 2> reaction{0.0, 0.0};  ///< static.displacement: the rig's force at the end, N
 };
 
 /// Follows the chain's static equilibrium under `loads` (chain.hpp, loads.hpp) from rest to
