@@ -219,7 +219,8 @@ void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o
   const int node = node_of(d.at, spec.anchor(), o.n, key + ".at");
   auto same = [&](double a) { return node_of(a, spec.anchor(), o.n, "supports") == node; };
   for (double p : spec.supports.pinned())
-    if (same(p)) refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is pinned (supports); drive another point");
+    if (same(p))
+      refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is pinned (supports); drive another point");
   if (spec.supports.roller && same(*spec.supports.roller))
     refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is supports.roller; drive another point");
 }

@@ -28,14 +28,15 @@ double EI() { return kE * kPi * std::pow(kDiameter, 4) / 64.0; }
 /// driving 90 deg by [0, -closing] m, recorded at 90 deg.
 std::string driven_scene(double closing, const std::string& supports, const std::string& extra, bool path) {
   const std::string dir = ringtest::temp_dir(), file = dir + "/driven-pinch.toml";
-  ringtest::write(file, "title = \"The driven pinch, lumped\"\n"
-                        "[ring]\nradius = 10.0\nE = 2.1e11\nrho = 7.8e3\n"
-                        "section = { shape = \"circle\", diameter = 0.12 }\n" + extra +
-                        "[supports]\n" + supports +
-                        "[lumped]\nn = 64\n"
-                        "[static]\nsolvers = [\"lumped\"]\nrecord = [90.0]\n"
-                        "displacement = { at = 90.0, value = [0.0, " + std::to_string(-closing) + "] }\n" +
-                        (path ? "path = true\n" : ""));
+  ringtest::write(file,
+                  "title = \"The driven pinch, lumped\"\n"
+                  "[ring]\nradius = 10.0\nE = 2.1e11\nrho = 7.8e3\n"
+                  "section = { shape = \"circle\", diameter = 0.12 }\n" +
+                      extra + "[supports]\n" + supports +
+                      "[lumped]\nn = 64\n"
+                      "[static]\nsolvers = [\"lumped\"]\nrecord = [90.0]\n"
+                      "displacement = { at = 90.0, value = [0.0, " +
+                      std::to_string(-closing) + "] }\n" + (path ? "path = true\n" : ""));
   return file;
 }
 

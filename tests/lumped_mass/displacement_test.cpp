@@ -111,6 +111,9 @@ TEST(DrivenChain, AgreesWithTheLoadControlledPinch) {
                 c / o.elastic_closing(1.0), back);
     EXPECT_NEAR(back, c, 1e-9 * c);
     EXPECT_GT(std::abs(P * o.elastic_closing(1.0) / c - 1.0), 1e-2) << "the test should be nonlinear";
+    // No loads act: the ground (the pin's multipliers) balances the rig, to the Newton tolerance.
+    EXPECT_NEAR(d.ground_force[0], -d.result.reaction[0], 1e-9 * P);
+    EXPECT_NEAR(d.ground_force[1], -d.result.reaction[1], 1e-9 * P);
   }
   {
     const double c = o.closing(3.5 * o.Mp / o.R);
@@ -168,10 +171,11 @@ TEST(DrivenPlasticChain, PlateauAndMechanismLoad) {
         EXPECT_LE(std::abs(e_ring), ring_bound) << "n = " << n << ", c = " << c;
         EXPECT_LT(std::abs(p.reaction[0]), 1e-6 * P) << "n = " << n << ", c = " << c << ": symmetric";
       }
-    std::printf("[ driven ] plastic chain n = %2d: %d points past collapse, |P / P_mech,n - 1| <= %.3e (bound %.3e), "
-                "|P / P_mech - 1| <= %.3e (bound %.3e); at c = R: P = %.9f P_c (mechanism %.9f)\n",
-                n, checked, worst, own, worst_ring, ring_bound, -large.result.reaction[1] / o.collapse(),
-                o.mechanism_load(o.R) / o.collapse());
+    std::printf(
+        "[ driven ] plastic chain n = %2d: %d points past collapse, |P / P_mech,n - 1| <= %.3e (bound %.3e), "
+        "|P / P_mech - 1| <= %.3e (bound %.3e); at c = R: P = %.9f P_c (mechanism %.9f)\n",
+        n, checked, worst, own, worst_ring, ring_bound, -large.result.reaction[1] / o.collapse(),
+        o.mechanism_load(o.R) / o.collapse());
     EXPECT_GE(checked, 10) << "n = " << n;
     EXPECT_EQ(large.result.end, "full load");
     EXPECT_NEAR(-large.result.path.back().displacements[0].uy, o.R, 1e-12 * o.R);
@@ -237,16 +241,18 @@ TEST(DrivenPlasticChain, UnloadingLeavesTheResidualClosing) {
     EXPECT_GT(pts.back().reaction[1], 0.0) << "n = " << n << ": at c = 0 the permanently closed ring is pulled open";
     e_res.push_back(std::abs(residual / o.residual_closing(Ps) - 1.0));
     e_dis.push_back(std::abs(d.result.dissipated / o.dissipated(Ps) - 1.0));
-    std::printf("[ driven ] plastic chain n = %3d: peak reaction %.6e N (oracle %.6e), residual closing %.9e m "
-                "(oracle %.9e), dissipated %.9e J (oracle %.9e), reaction at c = 0: %.4e N\n",
-                n, -pts[peak].reaction[1], Ps, residual, o.residual_closing(Ps), d.result.dissipated, o.dissipated(Ps),
-                -pts.back().reaction[1]);
+    std::printf(
+        "[ driven ] plastic chain n = %3d: peak reaction %.6e N (oracle %.6e), residual closing %.9e m "
+        "(oracle %.9e), dissipated %.9e J (oracle %.9e), reaction at c = 0: %.4e N\n",
+        n, -pts[peak].reaction[1], Ps, residual, o.residual_closing(Ps), d.result.dissipated, o.dissipated(Ps),
+        -pts.back().reaction[1]);
   }
-  for (const auto& [what, e, ceiling] : {std::tuple{"residual closing", &e_res, 8e-3}, std::tuple{"dissipated", &e_dis, 8e-3}}) {
+  for (const auto& [what, e, ceiling] :
+       {std::tuple{"residual closing", &e_res, 8e-3}, std::tuple{"dissipated", &e_dis, 8e-3}}) {
     const ringtest::Samples s = ringtest::in_n(ns, *e);
     const ringtest::Order f = ringtest::fit_order(s);
-    std::printf("[ driven ] plastic %s: fitted order %.3f +- %.3f, finest error %.3e\n", what, f.order, f.standard_error,
-                f.finest_error);
+    std::printf("[ driven ] plastic %s: fitted order %.3f +- %.3f, finest error %.3e\n", what, f.order,
+                f.standard_error, f.finest_error);
     EXPECT_TRUE(ringtest::OrderNear(s, 2.0, 0.25, ceiling)) << what;
   }
 }
@@ -277,9 +283,10 @@ TEST(DrivenPlasticChain, WorkIsStoredPlusDissipated) {
   }
   const double UD = d.stored + d.result.dissipated;
   const double bound = 1.1 * 5.45 * o.EI / std::pow(o.R, 3) * du * du / 8.0 + 1e-9 * W;
-  std::printf("[ driven ] plastic chain energy: W %.12e J (solver %.12e), U %.6e + D %.6e = %.12e, defect %.3e "
-              "(bound %.3e, largest closing step %.3e m)\n",
-              W, d.work, d.stored, d.result.dissipated, UD, W - UD, bound, du);
+  std::printf(
+      "[ driven ] plastic chain energy: W %.12e J (solver %.12e), U %.6e + D %.6e = %.12e, defect %.3e "
+      "(bound %.3e, largest closing step %.3e m)\n",
+      W, d.work, d.stored, d.result.dissipated, UD, W - UD, bound, du);
   EXPECT_GT(d.stored, 0.0) << "the residual stresses of the permanently closed ring held at c = 0";
   EXPECT_LE(std::abs(W - UD), bound);
   EXPECT_NEAR(d.work, W, 1e-12 * W);
@@ -310,8 +317,8 @@ TEST(DrivenFrames, ElasticReactionConvergesToThePinchingForce) {
 // The frames (elastic; ring.plastic is the chain's only, checks.cpp): the driven pinch at
 // c = 0.1 R against each frame's own load-controlled pinch under the driven reaction, to the
 // Newton tolerance (1e-12 R in the positions: bound 1e-9 c, as the chain's); reaction[0] = 0 by
-// symmetry to the same tolerance; and the rig's work equals the stored energy up to the
-// trapezoidal rule's O(ds^2) on the path's curvature (fitted over static.steps = 10 .. 80, as
+// symmetry and the ground's force = -reaction, both to the same tolerance; and the rig's work equals the stored energy
+// up to the trapezoidal rule's O(ds^2) on the path's curvature (fitted over static.steps = 10 .. 80, as
 // plastic_test.cpp's FrameEnergy; tolerance 0.1).
 TEST(DrivenFrames, AgreeWithTheirLoadControlledPinch) {
   const ringtest::PinchedPlasticRing o = oracle();
@@ -322,6 +329,7 @@ TEST(DrivenFrames, AgreeWithTheirLoadControlledPinch) {
     std::printf("[ driven ] %s: reaction (%.3e, %.12e) N, loaded closing %.12e m (driven %.12e)\n",
                 ring::to_string(v).c_str(), d.result.reaction[0], -P, back, c);
     EXPECT_NEAR(back, c, 1e-9 * c) << ring::to_string(v);
+    EXPECT_NEAR(d.ground_force[1], P, 1e-9 * P) << ring::to_string(v) << ": the ground balances the rig";
     EXPECT_LT(std::abs(d.result.reaction[0]), 1e-9 * P) << ring::to_string(v);
     const std::vector<int> steps{10, 20, 40, 80};
     std::vector<double> defect;
