@@ -42,6 +42,30 @@ Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
   return c;
 }
 
+Sparse with_point_rows(const Sparse& S, int dof) {
+  Triplets t;
+  for (int col = 0; col < S.outerSize(); ++col)
+    for (Sparse::InnerIterator it(S, col); it; ++it) t.emplace_back(static_cast<int>(it.row()), col, it.value());
+  const int r = static_cast<int>(S.rows());
+  t.emplace_back(r, dof, 1.0);
+  t.emplace_back(r + 1, dof + 1, 1.0);
+  Sparse out(r + 2, S.cols());
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+void drive(Chain& c, int hinge, const Vec2& value) {
+  c.S = with_point_rows(c.S, 2 * hinge);
+  c.driven = hinge;
+  c.drive = value;
+}
+
+Vec constraint_rate(const Chain& c) {
+  Vec r = Vec::Zero(c.rows());
+  if (c.driven >= 0) r.tail(2) = -c.drive;
+  return r;
+}
+
 Turn turn(const Chain& c, const Vec& x, int j, bool with_hessian) {
   const Vec2 a = c.at(x, j) - c.at(x, j - 1), b = c.at(x, j + 1) - c.at(x, j);
   Turn t;

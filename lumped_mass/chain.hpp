@@ -41,6 +41,11 @@ struct Chain {
   /// The hinge springs' law on the turning angle minus its rest value (bending.hpp): k e, or
   /// ring.plastic's from the committed states (the statics commit their own copy's).
   Bending bending;
+  /// static.displacement (drive()): the driven hinge, -1 without one. Its two rows are S's
+  /// last, held at S (x - rest) = s `drive` (the load factor times the driven displacement):
+  /// a pin whose target moves; their multipliers are minus the rig's force on the ring.
+  int driven = -1;
+  Eigen::Vector2d drive{0.0, 0.0};
   /// The links: n on a ring, n - 1 on an arch (link j joins node j to j + 1).
   int links() const { return open ? n - 1 : n; }
   /// Whether hinge j has a spring (bending law): every node of a ring, an arch's interior ones.
@@ -61,6 +66,20 @@ struct Chain {
 
 /// The chain of `spec` with n = o.n (the caller has run the checks of checks.hpp).
 Chain make_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o);
+
+/// `S` with two rows appended that hold the translations of the node whose x unknown is
+/// `dof` (its y next to it): the driven point's rows (static.displacement), shared by the
+/// chain and the frames. O(nonzeros of S).
+Eigen::SparseMatrix<double> with_point_rows(const Eigen::SparseMatrix<double>& S, int dof);
+
+/// Drives hinge `hinge` of c (static.displacement at load factor 1: `value`, m): appends its
+/// rows to c.S (with_point_rows) and sets c.driven, c.drive. The caller has checked the hinge
+/// (a node on no support: checks.cpp). O(n).
+void drive(Chain& c, int hinge, const Eigen::Vector2d& value);
+
+/// d g / d s, the constraint rows' change per unit load factor: -drive on the driven rows
+/// (the last two), 0 elsewhere (empty-driven: all zero). rows() values.
+Eigen::VectorXd constraint_rate(const Chain& c);
 
 /// Turning angle at hinge j and its gradient with respect to (x_{j-1}, x_j, x_{j+1}).
 struct Turn {
@@ -118,7 +137,8 @@ Springs tangent(const Chain& c, const ChainLoads& loads, const Eigen::VectorXd& 
 /// (an arch: 0 at its ends, which have no spring).
 std::vector<double> bending_strains(const Chain& c, const Eigen::VectorXd& x);
 
-/// Constraint values: links (|d|^2 - l^2) / (2 l), then the supports (m).
+/// Constraint values: links (|d|^2 - l^2) / (2 l), then the supports (m); a driven point's rows
+/// S (x - rest) without the target (the statics add s constraint_rate(c)).
 Eigen::VectorXd constraints(const Chain& c, const Eigen::VectorXd& x);
 
 /// The constraint Jacobian G(x) as triplets at (row_offset + row, column), times `scale`

@@ -193,6 +193,38 @@ void check_spin(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
                                 std::to_string(max_n));
 }
 
+/// static.displacement (ring/analysis.hpp) on a closed ring: a node of the model on no support,
+/// finite, with no loads beside it (the scene reader's rules, again for callers of the library). The driven
+/// point becomes two constraint rows (chain.hpp, drive(); the frames' the same), so it must not
+/// coincide with a pinned point or the roller, whose rows would repeat its own (a singular KKT
+/// matrix). ring::InputError naming the key.
+void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::StaticOptions& statics) {
+  const ring::StaticOptions::Displacement& d = *statics.displacement;
+  const std::string key = "static.displacement";
+  auto refuse = [&](const std::string& k, const std::string& why) { throw ring::InputError("", k, "lumped: " + why); };
+  if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())
+    refuse(key, "static.displacement drives the path, and loads would be scaled with it: give the one or the other");
+  if (!std::isfinite(d.value[0]) || !std::isfinite(d.value[1]) || !(std::hypot(d.value[0], d.value[1]) > 0.0))
+    refuse(key + ".value", "static.displacement.value (= [" + std::to_string(d.value[0]) + ", " +
+                               std::to_string(d.value[1]) + "] m) must be finite and not zero");
+  // An arch would take the same rows (its supports are rows too), but nothing measures a driven
+  // arch yet: the ring's tests (pinch, plateau, mechanism) have no arch counterpart here.
+  if (spec.is_arch())
+    refuse(key, "the lumped chain has no displacement control on an arch (ring.arc) yet (no oracle measures it); "
+                "drive a closed ring, or load the arch (static.at/force, static.path)");
+  if (!std::isfinite(d.at) || !ring::on_node(d.at, spec.anchor(), o.n))
+    refuse(key + ".at", "static.displacement.at (= " + std::to_string(d.at) + " deg) is not a node of the n = " +
+                            std::to_string(o.n) + " model (valid: anchor " + std::to_string(spec.anchor()) +
+                            " deg + 360 k / n)");
+  const int node = node_of(d.at, spec.anchor(), o.n, key + ".at");
+  auto same = [&](double a) { return node_of(a, spec.anchor(), o.n, "supports") == node; };
+  for (double p : spec.supports.pinned())
+    if (same(p))
+      refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is pinned (supports); drive another point");
+  if (spec.supports.roller && same(*spec.supports.roller))
+    refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is supports.roller; drive another point");
+}
+
 /// What the chain does not take on an arch (ring.arc) yet: ring::InputError naming ring.arc.
 void refuse_arch_here(const ring::RingSpec& spec, const std::string& who) {
   if (spec.is_arch())
@@ -262,9 +294,15 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the lumped-mass model");
   check_chain(spec, options, "statics");
-  ring::refuse_displacement(statics, "the lumped-mass model");
+  if (statics.displacement) check_displacement(spec, options, statics);
   check_loads(spec, options, statics.loads, "static");
-  if (ring::static_rigid_modes(spec, statics.loads) > 0)
+  // A driven point holds the ring as a pin does (the scene reader's rule).
+  ring::RingSpec held = spec;
+  if (statics.displacement) {
+    if (held.supports.pin) held.supports.pins.push_back(statics.displacement->at);
+    else held.supports.pin = statics.displacement->at;
+  }
+  if (ring::static_rigid_modes(held, statics.loads) > 0)
     throw std::invalid_argument(
         "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs, "
         "a foundation or gravity from which the ring hangs, to keep it from turning about the pin");
@@ -279,6 +317,8 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions
                            const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the lumped-mass model");
   refuse_arch_here(spec, "the lumped modes under load (modes.preload)");
+  // The modes about a driven state would need the driven point's rows in the eigenproblem.
+  ring::refuse_displacement(statics, "the lumped modes under load (modes.preload)");
   check_plastic(spec, options, "modes under load (modes.preload)");
   if (options.variant == ring::LumpedOptions::Variant::frame)
     throw std::invalid_argument("lumped: modes.preload = \"static\": lumped.variant = \"frame\" lumps no rotary "

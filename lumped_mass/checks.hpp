@@ -42,6 +42,10 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 /// node (none at the pin), a pin (or springs / a foundation that hold every rigid motion),
 /// supports and terms that leave no rigid motion (RingSpec::rigid_modes() == 0), finite
 /// pressure and gravity, static.steps >= 1.
+/// static.displacement (the chain and the frames on a closed ring): no loads beside it, a finite
+/// non-zero value, the driven point a node on no pinned point or roller (ring::InputError naming
+/// static.displacement or static.displacement.at; an arch is refused naming
+/// static.displacement), and it counts as a pin in the rigid-mode rule.
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
 /// Linear buckling (buckling.hpp): every variant, as statics for the ring and the loads (named
 /// buckling.*), at least one load,

@@ -72,6 +72,10 @@ struct Frame {
   std::optional<Terms> terms;   ///< springs, the foundation, point masses (terms.hpp)
   Chain geometry;               ///< n, l, depth, circumradius, anchor: the contact check's view
   double scale = 0.0;           ///< EI / l^3: the constraint rows' scaling in the KKT systems
+  /// static.displacement: the driven node (-1: none), whose two rows are S's last (the chain's
+  /// with_point_rows), held at S (q - rest) = s `drive` (m at load factor 1).
+  int driven = -1;
+  Eigen::Vector2d drive{0.0, 0.0};
 
   /// The node positions (2n) of q.
   Eigen::VectorXd positions(const Eigen::VectorXd& q) const;
@@ -114,6 +118,7 @@ class FrameLoads {
 /// the path and the elastic energy at the end (J).
 struct FramePathEnergy {
   double dissipated = 0.0, plastic_curvature = 0.0, work = 0.0, stored = 0.0;
+  std::array<double, 2> reaction{0.0, 0.0};  ///< static.displacement: the rig's force at the end, N
 };
 
 /// The frame's equilibrium path from rest to the full load (or through statics.history) (the continuation driver on

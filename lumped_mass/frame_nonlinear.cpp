@@ -73,7 +73,10 @@ class FrameStatics : public paths::Equilibrium {
         L_(loads),
         N_(3 * f.n),
         S_(3 * f.n + static_cast<int>(f.S.rows())),
-        radius_(radius) {}
+        radius_(radius),
+        rate_(Vec::Zero(f.S.rows())) {
+    if (f.driven >= 0) rate_.tail(2) = -f.drive;
+  }
   FrameStatics(const FrameStatics&) = delete;  // f_ may refer to own_
   FrameStatics& operator=(const FrameStatics&) = delete;
   Eigen::Index size() const override { return S_; }
@@ -86,9 +89,12 @@ class FrameStatics : public paths::Equilibrium {
     const Vec gP = L_.gradient(q);
     r.resize(S_);
     r.head(N_) = sp.grad + f_.S.transpose() * mu + s.s * gP;
-    r.tail(S_ - N_) = f_.scale * (f_.S * (q - f_.rest));
+    // A driven point (static.displacement): its rows S (q - rest) - s drive; rate_ = their
+    // change with s, the load column's constraint part (no loads act then: gP = 0).
+    r.tail(S_ - N_) = f_.scale * (f_.S * (q - f_.rest) + s.s * rate_);
     Vec b = Vec::Zero(S_), wz = Vec::Zero(S_);
     b.head(N_) = gP;
+    b.tail(S_ - N_) = f_.scale * rate_;
     wz.head(N_) = w.head(N_);
     return factor_bordered(std::move(sp.hess), S_, b, wz, ws, lu_) && r.allFinite();
   }
@@ -121,6 +127,10 @@ class FrameStatics : public paths::Equilibrium {
   /// trapezoidal rule, as the chain's statics), then the self-contact check.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
     work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
+    if (f_.driven >= 0) {  // the rig's work, the trapezoidal rule (the chain's statics)
+      const std::array<double, 2> a = reaction(from.z), b = reaction(to.z);
+      work_ += 0.5 * (to.s - from.s) * ((a[0] + b[0]) * f_.drive.x() + (a[1] + b[1]) * f_.drive.y());
+    }
     if (own_) own_->bending.commit(bending_strains(f_, to.z.head(N_)));
     const Contact k = closest_nonadjacent(f_.geometry, f_.positions(to.z.head(N_)));
     if (k.distance >= f_.geometry.depth) return std::nullopt;
@@ -137,6 +147,12 @@ class FrameStatics : public paths::Equilibrium {
     e.stored = frame_energy(f_, q, 0.0).energy;
     return e;
   }
+  /// The force the rig applies on the frame at the driven node, N: minus its rows'
+  /// multipliers (S's last two). 0 without a driven point.
+  std::array<double, 2> reaction(const paths::Vector& z) const {
+    if (f_.driven < 0) return {0.0, 0.0};
+    return {-f_.scale * z[S_ - 2], -f_.scale * z[S_ - 1]};
+  }
 
  private:
   std::optional<Frame> own_;  ///< ring.plastic: a copy, whose bending states are this path's
@@ -145,7 +161,8 @@ class FrameStatics : public paths::Equilibrium {
   const int N_, S_;
   const double radius_;
   double last_step_ = INFINITY;
-  double work_ = 0.0;  ///< the loads' work along the accepted path, J
+  double work_ = 0.0;  ///< the loads' work along the accepted path, and the rig's, J
+  Vec rate_;           ///< d(S (q - rest) - target) / ds: -drive on a driven point's rows, else 0
   LU lu_;
 };
 
@@ -169,14 +186,23 @@ paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, 
   paths::Trace path = paths::follow(eq, rest, policy);
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError(who + ": " + paths::failure_message(path, policy));
-  if (energy) *energy = eq.energy(path.state.z.head(N));
+  if (energy) {
+    *energy = eq.energy(path.state.z.head(N));
+    energy->reaction = eq.reaction(path.state.z);
+  }
   return path;
 }
 
 StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                           const ring::StaticOptions& statics) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Frame f = make_frame(spec, options);
+  Frame f = make_frame(spec, options);
+  const Sparse supports = f.S;  // the ground's rows (ground_force), without a driven point's
+  if (statics.displacement) {
+    f.driven = node_of(statics.displacement->at, f.geometry.anchor_deg, f.n, "static.displacement.at");
+    f.drive = Vec2(statics.displacement->value[0], statics.displacement->value[1]);
+    f.S = with_point_rows(f.S, 3 * f.driven);
+  }
   const FrameLoads loads(f, spec, statics.loads, "static");
   const auto rec = record_nodes(f, statics.record, "static.record");
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
@@ -200,7 +226,8 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
     out.node_x.push_back(q[3 * j]);
     out.node_y.push_back(q[3 * j + 1]);
   }
-  detail.ground_force = ground_force(f.S, mu, *f.terms, q - f.rest, 3);
+  detail.ground_force = ground_force(supports, mu.head(supports.rows()), *f.terms, q - f.rest, 3);
+  out.reaction = energy.reaction;
   out.solver = "lumped";
   out.unknowns = N + R;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

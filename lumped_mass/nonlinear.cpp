@@ -164,9 +164,13 @@ class ChainStatics : public paths::Equilibrium {
     GT.setFromTriplets(gt.begin(), gt.end());
     r.resize(S_);
     const Vec gP = L_.gradient(x);
-    r << sp.grad + GT * (lambda * scale_) + s.s * gP, scale_ * constraints(c_, x);
+    // A driven point (static.displacement): its rows S (x - rest) - s drive, whose change with
+    // s is the load column's constraint part (constraint_rate); no loads act then (gP = 0).
+    const Vec rate = constraint_rate(c_);
+    r << sp.grad + GT * (lambda * scale_) + s.s * gP, scale_ * (constraints(c_, x) + s.s * rate);
     Vec b = Vec::Zero(S_), wz = Vec::Zero(S_);
     b.head(N_) = gP;
+    b.tail(S_ - N_) = scale_ * rate;
     wz.head(N_) = w.head(N_);
     return factor_bordered(std::move(t), S_, b, wz, ws, lu_) && r.allFinite();
   }
@@ -203,12 +207,18 @@ class ChainStatics : public paths::Equilibrium {
   /// Commits the hinges' bending states at `to` and adds the step's work of the loads, then
   /// records `to` (and, first, `from`: rest) when recording, then the self-contact check.
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
-    if (recording_ && path_.empty()) path_.push_back(path_point(from.s, from.z.head(N_)));
+    if (recording_ && path_.empty()) path_.push_back(path_point(from.s, from.z));
     // The work of the loads s P: the trapezoidal rule over the step, -(s_a + s_b) / 2 (P(x_b) -
     // P(x_a)), exact for a path linear in s; O(ds^2) otherwise (the energy identity's quadrature).
     work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
+    // A driven point: the rig's work, the trapezoidal rule on reaction . d(displacement), the
+    // displacement s drive linear in s (exact where the reaction is linear in s).
+    if (c_.driven >= 0) {
+      const std::array<double, 2> a = reaction(from.z), b = reaction(to.z);
+      work_ += 0.5 * (to.s - from.s) * ((a[0] + b[0]) * c_.drive.x() + (a[1] + b[1]) * c_.drive.y());
+    }
     if (own_) own_->bending.commit(bending_strains(c_, to.z.head(N_)));
-    if (recording_) path_.push_back(path_point(to.s, to.z.head(N_)));
+    if (recording_) path_.push_back(path_point(to.s, to.z));
     const Contact k = closest_nonadjacent(c_, to.z.head(N_));
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
@@ -242,7 +252,14 @@ class ChainStatics : public paths::Equilibrium {
   /// The recorded path, rest first.
   const std::vector<ring::PathPoint>& path() const { return path_; }
   /// The path point of an equilibrium (the located limit point), at the recorded hinges.
-  ring::PathPoint point_of(const paths::State& x) const { return path_point(x.s, x.z.head(N_)); }
+  ring::PathPoint point_of(const paths::State& x) const { return path_point(x.s, x.z); }
+  /// The force the rig applies on the ring at the driven point (static.displacement), N:
+  /// minus the multipliers of its rows, S's last two (the residual's G^T lambda is the force the
+  /// constraint needs from the ring). 0 without a driven point.
+  std::array<double, 2> reaction(const paths::Vector& z) const {
+    if (c_.driven < 0) return {0.0, 0.0};
+    return {-scale_ * z[S_ - 2], -scale_ * z[S_ - 1]};
+  }
   /// The inertia of the tangent on the constraints' tangent space (stability.hpp): dense
   /// O(n^3) up to n = 200, O(n) frontal LDL^T of the KKT matrix up to n = 10^4, none above.
   std::optional<int> unstable_directions(const paths::State& s) override {
@@ -263,13 +280,15 @@ class ChainStatics : public paths::Equilibrium {
   bool recording_ = false;
   std::vector<ring::PathPoint> path_;
 
-  /// The path point of the hinge positions x at load factor s: the recorded hinges'
+  /// The path point of the unknowns z = (x, lambda) at load factor s: the recorded hinges'
   /// displacements and the ovalisation (largest - smallest distance between opposite
   /// hinges k and k + n/2) / rho, rho the circumradius: the multibody chain's definition
   /// (multibody/statics.cpp, StaticEquilibrium::path_point).
-  ring::PathPoint path_point(double s, const Vec& x) const {
+  ring::PathPoint path_point(double s, const Vec& z) const {
+    const Vec x = z.head(N_);
     ring::PathPoint pt;
     pt.load_factor = s;
+    pt.reaction = reaction(z);
     for (int k : record_) {
       const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
       pt.displacements.push_back({ring::wrap_degrees(c_.anchor_deg + c_.step_deg * k), u.x(), u.y()});
@@ -309,6 +328,15 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   paths::Continuation policy;
   policy.steps = statics.steps;
   policy.history = statics.history;
+  // A driven plastic chain: arc-length continuation from rest. Load stepping starts each
+  // Newton solve at the last equilibrium with only the driven rows moved, and its first
+  // iterate spreads the step over the hinges elastically; on the collapse plateau that
+  // yields the neighbours of the mechanism's hinges as well, and a perfectly plastic hinge's
+  // zero tangent then makes a mechanism of the iterate (a correction of 0.16 m on the paper
+  // ring at n = 32, measured): the increments were cut to a closing of ~3e-6 R, thousands of
+  // steps to a closing of R. The arc's predictor follows the path's tangent, which on the
+  // plateau is the mechanism's own motion: a few dozen steps (measured).
+  policy.from_start = c.driven >= 0 && c.bending.plastic();
   if (record) {
     policy.branch_switch = true;
     policy.branch_side = statics.branch_side;
@@ -326,6 +354,7 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   st.dissipated = eq.bending().dissipated();
   st.plastic_curvature = eq.bending().plastic_curvature();
   st.work = eq.work();
+  st.reaction = eq.reaction(st.trace.state.z);
   st.stored = eq.bending().stored(bending_strains(c, st.x)) + c.terms->energy(st.x - c.rest);
   return st;
 }
@@ -337,7 +366,11 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   const auto t0 = std::chrono::steady_clock::now();
   check_static(spec, options, statics);
   if (options.variant != ring::LumpedOptions::Variant::chain) return frame_static(spec, options, statics);
-  const Chain c = make_chain(spec, options);
+  Chain c = make_chain(spec, options);
+  const Sparse supports = c.S;  // the ground's rows (ground_force), without a driven point's
+  if (statics.displacement)
+    drive(c, c.hinge(statics.displacement->at),
+          Vec2(statics.displacement->value[0], statics.displacement->value[1]));
   const auto at = load_hinges(c, spec, statics.loads, "static");
   const auto rec = record_hinges(c, spec, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
@@ -371,7 +404,8 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
     out.node_x.push_back(x[2 * j]);
     out.node_y.push_back(x[2 * j + 1]);
   }
-  detail.ground_force = ground_force(c.S, st.lambda.tail(c.S.rows()), *c.terms, x - c.rest, 2);
+  detail.ground_force = ground_force(supports, st.lambda.segment(c.links(), supports.rows()), *c.terms, x - c.rest, 2);
+  out.reaction = st.reaction;
   out.solver = "lumped";
   out.unknowns = N + R;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

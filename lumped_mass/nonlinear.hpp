@@ -43,6 +43,15 @@
 // within the step (ChainStatics::clearance), and a bifurcation is passed by branch switching
 // up to n = 200 (the dense least stable direction).
 //
+// ## Displacement control (static.displacement)
+// No loads; the driven hinge's two rows S_d (x - rest) - s value = 0 join the support rows
+// (chain.hpp, drive()), so the load column dR/ds of the bordered matrix is -value there, and
+// the stability count and branch switching hold the point as a pin. The rig's force on the
+// ring (PathPoint::reaction, StaticResult::reaction) is minus those rows' multipliers; its work
+// (trapezoidal rule over the accepted steps) is StaticDetail::work. A driven plastic chain is
+// followed by arc length from rest (nonlinear.cpp, follow_statics, says why). The frames the
+// same on their rows (frame_nonlinear.cpp).
+//
 // ## ring.plastic in the statics (bending.hpp)
 // The hinge springs' law is ring.plastic's resultant law on the hinge rotation (stiffness EI/l,
 // yield Mp, the scene's hardening and rule), its potential in V from the committed states.
@@ -116,9 +125,10 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 /// solve_static's result and what the ground exerts on the ring at the equilibrium: the
 /// supports' reactions (the multipliers of their rows) and the forces of the elastic supports
 /// and the foundation, summed, N (x, y). At equilibrium it balances the loads' resultant
-/// (the weight under gravity alone).
-/// `work`: the loads' work along the path (the trapezoidal rule over the accepted steps:
-/// exact for a path linear in the load factor, O(steps^-2) otherwise), J; `stored`: the elastic
+/// (the weight under gravity alone; under static.displacement, minus the reaction).
+/// `work`: the loads' work along the path (static.displacement: the rig's), the trapezoidal
+/// rule over the accepted steps (exact for a path linear in the load factor, O(steps^-2)
+/// otherwise), J; `stored`: the elastic
 /// energy at the end (the bending law's and the terms'; the frames' axial and shear too), J.
 /// The energy identity: work = stored + result.dissipated.
 /// `limit`: the path's first limit point (the first maximum of the load factor, located by the
@@ -156,6 +166,7 @@ struct StaticState {
   double plastic_curvature = 0.0;  ///< the largest |plastic hinge rotation| / l at the end, 1/m
   double work = 0.0;               ///< the loads' work along the path (StaticDetail), J
   double stored = 0.0;             ///< the elastic energy at the end (StaticDetail), J
+  std::array<double, 2> reaction{0.0, 0.0};  ///< static.displacement: the rig's force at the end, N
 };
 
 /// Follows the chain's static equilibrium under `loads` (chain.hpp, loads.hpp) from rest to
