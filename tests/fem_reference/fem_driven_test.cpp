@@ -119,10 +119,11 @@ TEST(FemDriven, AgreesWithTheLoadControlledPinch) {
     ring::StaticOptions by_drive = ringtest::driven_pinch(c, {}, by_load.steps);
     by_drive.path = false;
     const ring::StaticResult d = fem::solve_static(ringtest::driven_plastic_ring(mp), fem_options(16), by_drive);
-    std::printf("%s: P = %.12e N, c = %.6e m, reaction (%.3e, %.12e) N: %.3e; u(0) (%.12e, %.12e) against (%.12e, "
-                "%.12e) m\n",
-                which, P, c, d.reaction[0], d.reaction[1], ringtest::rel(pinching(d.reaction), P), d.displacements[1].ux,
-                d.displacements[1].uy, l.displacements[1].ux, l.displacements[1].uy);
+    std::printf(
+        "%s: P = %.12e N, c = %.6e m, reaction (%.3e, %.12e) N: %.3e; u(0) (%.12e, %.12e) against (%.12e, "
+        "%.12e) m\n",
+        which, P, c, d.reaction[0], d.reaction[1], ringtest::rel(pinching(d.reaction), P), d.displacements[1].ux,
+        d.displacements[1].uy, l.displacements[1].ux, l.displacements[1].uy);
     const double tol = mp ? 1e-7 : 1e-8;
     EXPECT_TRUE(ringtest::IsClose(pinching(d.reaction), P, tol)) << which;
     EXPECT_NEAR(d.reaction[0], 0.0, tol * P) << which;  // the roller's reaction: 0 by symmetry
@@ -230,10 +231,11 @@ TEST(FemDriven, UnloadingLeavesTheResidualClosing) {
       residual = closing_at(a) + (closing_at(b) - closing_at(a)) * fa / (fa - fb);  // linear: elastic unloading
   }
   const auto& end = p.points.back();
-  std::printf("peak %.9e N (%.3e), residual closing %.9e m (%.3e), dissipated %.9e J (%.3e); end: reaction %.6e N, "
-              "stored %.6e J\n",
-              peak, ringtest::rel(peak, P), residual, ringtest::rel(residual, o.residual_closing(P)), end.dissipated,
-              ringtest::rel(end.dissipated, o.dissipated(P)), pinching(end.reaction), end.stored);
+  std::printf(
+      "peak %.9e N (%.3e), residual closing %.9e m (%.3e), dissipated %.9e J (%.3e); end: reaction %.6e N, "
+      "stored %.6e J\n",
+      peak, ringtest::rel(peak, P), residual, ringtest::rel(residual, o.residual_closing(P)), end.dissipated,
+      ringtest::rel(end.dissipated, o.dissipated(P)), pinching(end.reaction), end.stored);
   // fem_plastic_test measures the load-controlled pinch at 16 cells: the closing 3.5e-4 (mesh)
   // and 1.4e-4 (geometry) off, residual closing 5.2e-4 and 2.2e-4, plastic work 4.9e-4 and
   // 2.2e-4. Driven by the closed form's closing, the force errs by the closing's error times
@@ -250,7 +252,8 @@ TEST(FemDriven, UnloadingLeavesTheResidualClosing) {
   // O(dc^2 jump): second order in the steps over the path's O(c^2) work.
   std::vector<double> gap;
   for (int steps : {20, 40}) {
-    const fem::StaticPath q = steps == 20 ? p : traced(spec, fem_options(16), ringtest::driven_pinch(peak_c, {1.0, 0.0}, steps));
+    const fem::StaticPath q =
+        steps == 20 ? p : traced(spec, fem_options(16), ringtest::driven_pinch(peak_c, {1.0, 0.0}, steps));
     const auto& last = q.points.back();
     const double work = rig_work(q);
     gap.push_back(ringtest::rel(last.stored + last.dissipated, work));
@@ -262,7 +265,6 @@ TEST(FemDriven, UnloadingLeavesTheResidualClosing) {
   EXPECT_LT(gap[0], 2e-3);
   EXPECT_LT(gap[1], gap[0] / 3.0);
 }
-
 
 // The Reissner (Timoshenko) beam takes the same driven point (its vertex's u and w): against
 // its own load-controlled ring on the roller, as AgreesWithTheLoadControlledPinch.
@@ -308,7 +310,8 @@ TEST(FemDriven, TheInextensibleExtrapolationAndTheReferenceTakeTheReaction) {
   reference.tolerance = 1e-7;
   const ring::StaticResult b = fem::solve_static(spec, reference, st);
   std::printf("inextensible: %.12e N (%.3e); reference: %.12e N (%.3e)\n", pinching(a.reaction),
-              ringtest::rel(pinching(a.reaction), exact), pinching(b.reaction), ringtest::rel(pinching(b.reaction), exact));
+              ringtest::rel(pinching(a.reaction), exact), pinching(b.reaction),
+              ringtest::rel(pinching(b.reaction), exact));
   // Measured 9.8e-6: c / R = 1e-5 (geometry) and 32 cubic cells' 1.7e-5 (mesh); bound 5e-5.
   EXPECT_TRUE(ringtest::IsClose(pinching(a.reaction), exact, 5e-5));
   // Measured 5.52e-5, the extensible limit's 5.515e-5 (ElasticReactionConvergesToTheClosedForm's
@@ -341,7 +344,6 @@ TEST(FemDriven, RefusesByTheKey) {
   EXPECT_EQ(refused(spec, st), "");
 }
 
-
 /// The driven ring with the fibre law (ring.plastic.stress) instead of the resultant: sigma_y
 /// such that the fully plastic moment sigma_y Z (Z = d^3 / 6, the solid circle) is
 /// 1e-4 EI / R, hardening 0 (fem_plastic_test's fibre ring): P_c = 4 sigma_y Z / R.
@@ -372,10 +374,11 @@ TEST(FemDriven, TheFibreLawAgreesWithItsLoadControlledPinch) {
   ring::StaticOptions by_drive = ringtest::driven_pinch(c, {}, by_load.steps);
   by_drive.path = false;
   const ring::StaticResult d = fem::solve_static(driven, fem_options(16), by_drive);
-  std::printf("fibre: c = %.12e m, P = %.12e N, reaction (%.3e, %.12e) N: %.3e; u(0) %.3e %.3e of c; plastic work %.3e\n", c, P,
-              d.reaction[0], d.reaction[1], ringtest::rel(pinching(d.reaction), P),
-              (d.displacements[1].ux - l.displacements[1].ux) / c, (d.displacements[1].uy - l.displacements[1].uy) / c,
-              ringtest::rel(d.dissipated, l.dissipated));
+  std::printf(
+      "fibre: c = %.12e m, P = %.12e N, reaction (%.3e, %.12e) N: %.3e; u(0) %.3e %.3e of c; plastic work %.3e\n", c, P,
+      d.reaction[0], d.reaction[1], ringtest::rel(pinching(d.reaction), P),
+      (d.displacements[1].ux - l.displacements[1].ux) / c, (d.displacements[1].uy - l.displacements[1].uy) / c,
+      ringtest::rel(d.dissipated, l.dissipated));
   // Each incremental path depends on its steps at the fibre law's many kinks (64 fibres and
   // the vertex hinges, whose strain mixes the neighbouring moments): the load case's closing
   // moves by 1.3e-5 from 40 to 80 steps, the driven reaction at one closing by 5.8e-6 from 80
