@@ -156,8 +156,10 @@ double rig_work(const fem::StaticPath& p) {
 // the path approaches the mechanism from above (measured 1.4e-5 above at 0.01 R, 6e-6 at 0.5 R;
 // the bound's room is 5.6e-5 and 3.0e-5). Two runs: to 5 c_col in 20 steps (the plateau,
 // degree 3), and to 0.5 R in 25 (the mechanism, degree 5: at degree 3 the plastic kernel's
-// Newton stalls past ~20 c_col, 2.2e-3 R at 16 cells and 1.9e-3 R at 32, with load and arc
-// steps alike; degrees 4 to 6 run to 1 R, measured). The energy identity holds on both.
+// Newton stalls past collapse where the steps take it, 2.2e-3 R at 16 cells in steps of
+// 5e-4 R, 1.3e-2 R in steps of 1e-2 R, as the load-controlled ring on the roller does under
+// arc-length past its limit (1.3e-2 R); degrees 4 to 6 run to 1 R, the load-controlled
+// degree 5 to contact at P_c / sqrt(2); measured). The energy identity holds on both.
 TEST(FemDriven, PlasticPlateauAndTheMechanism) {
   const ring::RingSpec spec = ringtest::driven_plastic_ring(1e-4);
   const ringtest::PinchedPlasticRing o = oracle(spec);
