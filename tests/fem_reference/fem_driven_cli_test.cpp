@@ -46,9 +46,9 @@ TEST(FemDrivenCli, ReactionMeetsThePinchClosedForm) {
   ASSERT_EQ(r.code, 0) << r.err << r.out;
   const std::array<double, 2> reaction = pair_after(r.out, "\"reaction\"");
   const double P = c / o.elastic_closing(1.0);
-  // FemDriven measures 32 cubic elements within ~2e-4 of the closed form (the extensible beam's
-  // (d/R)^2 share and the discretization); 1e-3 is that test's bound.
-  EXPECT_NEAR(-reaction[1] / P, 1.0, 1e-3) << r.out;
+  // 32 cubic elements: 3.8e-5 from the closed form (FemDriven: the membrane's share 4.5e-5, the
+  // geometric c / R = 1e-5, the mesh's 1.7e-5 of the other sign); bound 1e-4 as FemDriven's.
+  EXPECT_NEAR(-reaction[1] / P, 1.0, 1e-4) << r.out;
   EXPECT_NEAR(reaction[0] / P, 0.0, 1e-6) << r.out;  // symmetric about the vertical diameter
 }
 

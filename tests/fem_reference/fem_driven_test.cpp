@@ -87,9 +87,15 @@ TEST(FemDriven, ElasticReactionConvergesToTheClosedForm) {
   const ringtest::Order fit = ringtest::fit_order(ringtest::in_n(ns, errors));
   std::printf("fitted order %.3f +- %.3f, finest error %.3e; n = 128 against the closed form %.12e: %.3e\n", fit.order,
               fit.standard_error, fit.finest_error, exact, ringtest::rel(pinching(finest), exact));
+  // Measured 3.945 +- 0.015 (two-point orders 3.9 to 4.0), finest 1.7e-5: the tolerance 0.2 on
+  // the order as fem_plastic_test's, ceiling 1e-4 at 32 cells.
   EXPECT_TRUE(ringtest::OrderNear(ringtest::in_n(ns, errors), 4.0, 0.2, 1e-4));
-  EXPECT_TRUE(ringtest::IsClose(pinching(finest), exact, 1e-3));
-  EXPECT_NEAR(finest[0], 0.0, 1e-9 * exact);
+  // Measured 5.5e-5: the membrane's share of the extensible beam's compliance, 4.5e-5 = 5 I /
+  // (A R^2) (the difference to the inextensible extrapolation,
+  // TheInextensibleExtrapolationAndTheReferenceTakeTheReaction), and the geometric c / R = 1e-5;
+  // bound 1e-4.
+  EXPECT_TRUE(ringtest::IsClose(pinching(finest), exact, 1e-4));
+  EXPECT_NEAR(finest[0], 0.0, 1e-9 * exact);  // symmetric about the vertical diameter: round-off
 }
 
 // The same equilibrium two ways: the ring pinned at 270 deg with a roller at 90 deg (moving
