@@ -249,16 +249,48 @@ void check_modes(const ring::RingSpec& spec, const ring::FemOptions& o) {
   }
 }
 
+/// static.displacement (static_path.cpp, "the driven point"): a vertex of the beam that no
+/// support holds, a finite displacement, no loads with it (they would be scaled with the
+/// displacement). The scene reader checks the same; this guards the library's callers.
+static void check_displacement(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  if (!st.displacement) return;
+  const ring::StaticOptions::Displacement& d = *st.displacement;
+  const std::string key = "static.displacement";
+  auto refuse = [&](const std::string& sub, const std::string& why) {
+    throw ring::InputError("", key + sub, "fem: " + why);
+  };
+  if (!std::isfinite(d.at) || !ring::on_node(spec, d.at, o.elements))
+    refuse(".at", "the driven point (=" + std::to_string(d.at) + ") must fall on an FE vertex: " + vertex_rule(spec));
+  if (!std::isfinite(d.value[0]) || !std::isfinite(d.value[1]) || std::hypot(d.value[0], d.value[1]) == 0.0)
+    refuse(".value", "the displacement must be finite and not zero");
+  const int at = ring::node_index(spec, d.at, o.elements);
+  std::vector<double> held = spec.supports.pinned();
+  if (spec.supports.roller) held.push_back(*spec.supports.roller);
+  for (const ring::Spring& k : spec.supports.springs) held.push_back(k.angle);
+  for (double a : held)
+    if (ring::node_index(spec, a, o.elements) == at)
+      refuse(".at", "the driven point (=" + std::to_string(d.at) +
+                        " deg) has a support (pin, roller or spring) on its vertex; drive another point");
+  if (!st.loads.points.empty() || st.loads.pressure.any() || st.loads.has_gravity())
+    refuse("", "static.displacement drives the path, and loads would be scaled with it: give the one or the other");
+}
+
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the fem beam");
   check_nonlinear(spec, o, st.loads, st.record, "static");
-  ring::refuse_displacement(st, "the fem beam");
+  check_displacement(spec, o, st);
   if (spec.is_arch() && spec.plastic)
     throw ring::InputError("", "ring.arc", "fem: the plastic statics take no arch yet (remove ring.plastic)");
   check_plastic(spec, "statics");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
-  need(ring::static_rigid_modes(spec, st.loads) == 0,
+  // A driven point holds the ring as a pin does (its two multipliers, static_path.cpp).
+  ring::RingSpec held = spec;
+  if (st.displacement) {
+    if (held.supports.pin) held.supports.pins.push_back(st.displacement->at);
+    else held.supports.pin = st.displacement->at;
+  }
+  need(ring::static_rigid_modes(held, st.loads) == 0,
        "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
   // static.path follows one discretization's path to its end (contact as a result): the

@@ -58,6 +58,7 @@ StaticSolve static_at(const ring::RingSpec& spec, const ring::FemOptions& o, Set
     b.node_y[i] = extrapolate(a.node_y[i], b.node_y[i]);
   }
   b.dissipated = extrapolate(a.dissipated, b.dissipated);
+  for (int c = 0; c < 2; ++c) b.reaction[c] = extrapolate(a.reaction[c], b.reaction[c]);
   b.plastic_curvature = extrapolate(a.plastic_curvature, b.plastic_curvature);
   return b;
 }
@@ -82,6 +83,7 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   r.node_y = std::move(sol.node_y);
   r.dissipated = sol.dissipated;
   r.plastic_curvature = sol.plastic_curvature;
+  r.reaction = sol.reaction;
   if (st.path) {
     const bool touched = sol.trace.end == paths::Trace::End::contact;
     r.path = std::move(sol.points);
@@ -110,7 +112,11 @@ ring::StaticResult statics(const ring::RingSpec& spec, const ring::FemOptions& o
   int refinements = 0;
   if (o.reference) {
     sol = refine_until(setup, o.tolerance, solve,
-                       [](const StaticSolve& a, const StaticSolve& b) { return largest_change(a.record, b.record); },
+                       [](const StaticSolve& a, const StaticSolve& b) {
+                         // A driven path's result is its reaction as much as its record.
+                         return std::max(largest_change(a.record, b.record),
+                                         largest_change({a.reaction}, {b.reaction}));
+                       },
                        estimate, refinements, "static");
   } else {
     sol = solve(setup);

@@ -131,6 +131,16 @@
 // result with static.path; no return within 2000 arc steps, a stalled continuation); past
 // a limit point the message reads "past a limit point at load factor L, the equilibrium
 // path (arc-length continuation) ..." (every solver's wording: the driver's).
+// Displacement control (static.displacement; no loads with it): the vertex at `at` is held
+// at s times `value` by two Lagrange multipliers lambda on its Cartesian displacement G q
+// (G^T f = BeamModel::vertex_force(k, f)): R = (grad V - G^T lambda, s v - G q), the bordered
+// matrix's load column dR/ds = (0, v), lambda the force on the ring there (the result's and
+// every path point's `reaction`); the arc measures q only, and the inertia and the critical
+// direction are taken with the vertex's u and w held (the constraints' tangent space).
+// Either beam, ring.plastic (its laws), static.path and static.history, fem.extensible = false
+// and fem.reference (without static.path; the reference also watches the reaction).
+// static_path.cpp (BeamEquilibrium) says why multipliers and not an inhomogeneous constraint.
+// Measured: tests/fem_reference/fem_driven_test.cpp (README, "Displacement control").
 // Self-contact, after every accepted step: the deformed centreline, sampled at most
 // depth/2 apart, as a closed polygon; two edges whose nearest ends are at least 2 depths
 // apart along the ring and closer than the section depth (or crossing) have touched.
@@ -216,8 +226,8 @@
 // (step_too_small): there is no halving, and the reference refines dt itself.
 //
 // ## Converged references (fem.reference = true)
-// Statics: the degree is raised (then cells split) until the recorded displacements
-// change by less than fem.tolerance relative to the largest. Response: the degree is
+// Statics: the degree is raised (then cells split) until the recorded displacements (and a
+// driven point's reaction) change by less than fem.tolerance relative to the largest. Response: the degree is
 // raised and dt halved together until the peak |u| of every recorded point changes by
 // less than fem.response_tolerance relative to the largest peak; error_estimate is the
 // last change.
@@ -277,6 +287,11 @@ struct StaticPath {
     double stored = 0.0;
     double load = 0.0;
     double dissipated = 0.0;
+    /// static.displacement: the force on the ring at the driven point, N, x and y (the
+    /// multipliers of its two constraints; 0 without). The path's point is then the driven
+    /// point, and stored is filled with or without ring.plastic, so that the rig's work
+    /// int reaction . d(displacement) can be set against stored + dissipated.
+    std::array<double, 2> reaction{0, 0};
   };
   std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)
   /// The first maximum of the load factor along the path (a limit point), located to

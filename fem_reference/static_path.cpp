@@ -2,9 +2,11 @@
 // the method is documented in nonlinear.hpp, "Statics").
 #include "fem_reference/static_path.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 #include "fem_reference/beam_potential.hpp"
 #include "fem_reference/newton.hpp"
@@ -39,9 +41,10 @@ std::string number(double x, int digits = 9) {
   return o.str();
 }
 
-/// The path's point: the first point load's vertex, else the first record point's, else
-/// vertex 0 (the pin, or 0 deg).
+/// The path's point: the driven point, else the first point load's vertex, else the first
+/// record point's, else vertex 0 (the pin, or 0 deg).
 double path_point(const ring::StaticOptions& st) {
+  if (st.displacement) return st.displacement->at;
   if (!st.loads.points.empty()) return st.loads.points.front().angle;
   if (!st.record.empty()) return st.record.front();
   return 0.0;
@@ -56,10 +59,25 @@ double path_point(const ring::StaticOptions& st) {
 /// ring.plastic: it holds the committed plastic state of every bending point of the beam
 /// (plastic_points.hpp); every trial (linearize, tangent) is evaluated from them, and
 /// accept() commits them at the accepted equilibrium, adding the step's plastic work.
+///
+/// The driven point (static.displacement, no loads): the vertex k's Cartesian displacement
+/// G q = s v (G: 2 x N, whose transposed rows are BeamModel::vertex_force(k, e_x), (k, e_y):
+/// the force's virtual work f . U_k = (G^T f) . q) is held by two Lagrange multipliers
+/// lambda, the unknowns after q (arc_size() = N: the arc measures q only):
+///   R_q = grad V(q) - G^T lambda = 0,   R_lambda = s v - G q = 0,
+///   dR/ds = (0, v)  (the load column of the bordered matrix: the prescribed values),
+/// and lambda is the force the rig applies to the ring there (PathPoint::reaction).
+/// Multipliers rather than the supports' way (AffineConstraints eliminated from the reduced
+/// numbering): an inhomogeneous line would need s inside the model's expand(), which every
+/// term of both beams calls; the multipliers leave the models as they are, and the bordered
+/// matrix [K -G^T dR/ds; -G 0 v; w^T 0 ws] stays regular (G has full rank on the vertex's
+/// two free unknowns u, w). The constraints' tangent space is then q with those two unknowns
+/// zero, on which the inertia and the critical direction are taken.
 class BeamEquilibrium : public paths::Equilibrium {
  public:
   BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st, StaticSolve& out);
-  Eigen::Index size() const override { return N_; }
+  Eigen::Index size() const override { return N_ + M_; }
+  Eigen::Index arc_size() const override { return N_; }
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override;
   bool solve(paths::Vector& y) override;
   /// Lengths (BeamModel::lengths: a rotation psi counts as R psi).
@@ -98,14 +116,23 @@ class BeamEquilibrium : public paths::Equilibrium {
     out_.points.push_back(point_at(0.0, model_.expand(q_)));
   }
   /// The path point of an equilibrium (the located limit point).
-  ring::PathPoint point_of(const paths::State& x) const { return point_at(x.s, full(x.z)); }
+  ring::PathPoint point_of(const paths::State& x) const {
+    ring::PathPoint pt = point_at(x.s, full(x.z));
+    pt.reaction = reaction(x.z);
+    return pt;
+  }
   /// The record and the deformed vertices at the end of a path that reached the full load
   /// (or, static.path, at its touching equilibrium).
   void finish(const paths::Vector& z);
 
  private:
-  /// The tangent K - s hess Phi at x on the free unknowns, symmetrized.
+  /// The tangent K - s hess Phi at x on the free unknowns, symmetrized; with a driven point
+  /// on kept_ only (the constraints' tangent space).
   Eigen::SparseMatrix<double> tangent(const paths::State& x);
+  /// The driven point's multipliers in z: the force on the ring there (0 without).
+  std::array<double, 2> reaction(const paths::Vector& z) const {
+    return M_ ? std::array<double, 2>{z(N_), z(N_ + 1)} : std::array<double, 2>{0.0, 0.0};
+  }
   /// The path point of the full DoF vector q at load factor s: the displacements of the
   /// record vertices; the ovalisation (largest - smallest distance between opposite
   /// vertices k and k + cells / 2; with an odd count of cells the nearest to opposite, as
@@ -124,7 +151,13 @@ class BeamEquilibrium : public paths::Equilibrium {
   const std::unique_ptr<BeamModel> built_;
   const BeamModel& model_;
   const unsigned int N_;
+  const unsigned int M_;  ///< multipliers: 2 with a driven point, else 0
   const unsigned int loaded_;
+  /// The driven point: the rows of G as (unknown, value) pairs, the prescribed v at s = 1,
+  /// and the unknowns kept on the constraints' tangent space (all N without one).
+  std::array<std::vector<std::pair<unsigned int, double>>, 2> G_;
+  std::array<double, 2> v_{0.0, 0.0};
+  std::vector<unsigned int> kept_;
   const BeamPotential potential_;
   const std::optional<PlasticLaw>& law_;  ///< ring.plastic's, or nullopt
   std::vector<ring::PlasticState> plastic_;      ///< committed, per bending point
@@ -152,6 +185,7 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
       built_(make_beam(spec, setup)),
       model_(*built_),
       N_(model_.n_free()),
+      M_(st.displacement ? 2 : 0),
       loaded_(model_.vertex_of(path_point(st))),
       potential_(model_, st.loads),
       law_(potential_.plastic_law()),
@@ -166,11 +200,35 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
   const double cell_arc = spec.opening() * spec.radius / model_.cells();
   per_cell_ = std::max(2u, static_cast<unsigned int>(std::ceil(cell_arc / (0.5 * depth_))));
   min_gap_ = 1 + static_cast<int>(std::ceil(2.0 * depth_ / (cell_arc / per_cell_)));
-  DynamicSparsityPattern dsp(N_ + 1, N_ + 1);
+  std::vector<bool> held(N_, false);
+  if (st.displacement) {
+    v_ = st.displacement->value;
+    for (unsigned int c = 0; c < 2; ++c) {
+      const Vector<double> g = model_.vertex_force(loaded_, {c == 0 ? 1.0 : 0.0, c == 1 ? 1.0 : 0.0});
+      for (unsigned int i = 0; i < N_; ++i)
+        if (g[i] != 0.0) {
+          G_[c].emplace_back(i, g[i]);
+          held[i] = true;
+        }
+    }
+    // The vertex's u and w are free unknowns of their own (check_static keeps supports off
+    // it), so G is a rotation on those two: its kernel is q with them zero.
+    if (std::count(held.begin(), held.end(), true) != 2)
+      throw std::logic_error("fem statics: the driven vertex does not have two free unknowns of its own");
+  }
+  for (unsigned int i = 0; i < N_; ++i)
+    if (!held[i]) kept_.push_back(i);
+  const unsigned int L = N_ + M_;  // the bordered matrix's last row and column
+  DynamicSparsityPattern dsp(L + 1, L + 1);
   for (auto e = model_.sparsity().begin(); e != model_.sparsity().end(); ++e) dsp.add(e->row(), e->column());
-  for (unsigned int i = 0; i <= N_; ++i) {
-    dsp.add(i, N_);
-    dsp.add(N_, i);
+  for (unsigned int c = 0; c < M_; ++c)
+    for (const auto& [i, g] : G_[c]) {
+      dsp.add(i, N_ + c);
+      dsp.add(N_ + c, i);
+    }
+  for (unsigned int i = 0; i <= L; ++i) {
+    dsp.add(i, L);
+    dsp.add(L, i);
   }
   pattern_.copy_from(dsp);
   B_.reinit(pattern_);
@@ -183,13 +241,27 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
 bool BeamEquilibrium::linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) {
   for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
   potential_.evaluate(q_, x.s, &r_, &B_, &F_, committed());  // K in the top-left block, border zeroed
+  const unsigned int L = N_ + M_;
   for (unsigned int i = 0; i < N_; ++i) {
-    B_.set(i, N_, -F_[i]);
-    B_.set(N_, i, w(i));
+    B_.set(i, L, -F_[i]);
+    B_.set(L, i, w(i));
   }
-  B_.set(N_, N_, ws);
-  r.resize(N_);
+  B_.set(L, L, ws);
+  r.resize(L);
   for (unsigned int i = 0; i < N_; ++i) r(i) = r_[i];
+  // The driven point (class comment): -G^T lambda in R_q, s v - G q, and their columns.
+  for (unsigned int c = 0; c < M_; ++c) {
+    const double lambda = x.z(N_ + c);
+    double Gq = 0.0;
+    for (const auto& [i, g] : G_[c]) {
+      r(i) -= g * lambda;
+      Gq += g * x.z(i);
+      B_.set(i, N_ + c, -g);
+      B_.set(N_ + c, i, -g);
+    }
+    r(N_ + c) = x.s * v_[c] - Gq;
+    B_.set(N_ + c, L, v_[c]);
+  }
   if (!r.allFinite()) return false;
   try {
     lu_.initialize(B_);
@@ -200,35 +272,41 @@ bool BeamEquilibrium::linearize(const paths::State& x, const paths::Vector& w, d
 }
 
 bool BeamEquilibrium::solve(paths::Vector& y) {
-  y_.reinit(N_ + 1);
-  for (unsigned int i = 0; i <= N_; ++i) y_[i] = y(i);
+  const unsigned int L = N_ + M_;
+  y_.reinit(L + 1);
+  for (unsigned int i = 0; i <= L; ++i) y_[i] = y(i);
   lu_.solve(y_);
-  for (unsigned int i = 0; i <= N_; ++i) y(i) = y_[i];
+  for (unsigned int i = 0; i <= L; ++i) y(i) = y_[i];
   return y.allFinite();
 }
 
 std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const paths::State& to) {
   const Vector<double> q = full(to.z);
   StaticPath::Point at_path{to.s, model_.vertex_displacement(q, loaded_)};
+  at_path.reaction = reaction(to.z);
+  for (unsigned int i = 0; i < N_; ++i) q_[i] = to.z(i);
   if (law_) {
     // Commit before anything else: a touch ends the path at this equilibrium too.
-    for (unsigned int i = 0; i < N_; ++i) q_[i] = to.z(i);
     const std::vector<BendingPoint> bp = model_.bending_points(q_, Plasticity{*law_, plastic_});
     const Committed step = commit(*law_, bp, plastic_);
     dissipated_ += step.dissipated;
     plastic_curvature_ = step.largest_plastic;
     out_.dissipated = dissipated_;
     out_.plastic_curvature = plastic_curvature_;
-    const BeamPotential::Value v = potential_.evaluate(q_, 0.0, nullptr, nullptr, nullptr, &plastic_);
+    at_path.dissipated = dissipated_;
+  }
+  if (law_ || M_) {
+    // The energies at the committed state (a driven path's rig work is set against them).
+    const BeamPotential::Value v = potential_.evaluate(q_, 0.0, nullptr, nullptr, nullptr, committed());
     at_path.stored = v.stored;
     at_path.load = v.load;
-    at_path.dissipated = dissipated_;
   }
   out_.path.push_back(at_path);
   if (recording_) {
     out_.points.push_back(point_at(to.s, q));
     out_.points.back().dissipated = dissipated_;
     out_.points.back().plastic_curvature = plastic_curvature_;
+    out_.points.back().reaction = at_path.reaction;
   }
   std::vector<Point2> next = model_.centreline(q, per_cell_);
   // The deformed centreline moves between the two equilibria; checking only the ends
@@ -266,10 +344,15 @@ Eigen::SparseMatrix<double> BeamEquilibrium::tangent(const paths::State& x) {
   for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
   SparseMatrix<double> T(pattern_);
   potential_.evaluate(q_, x.s, nullptr, &T, nullptr, committed());
+  // kept_'s position of each unknown (-1: a driven one, off the constraints' tangent space).
+  std::vector<int> at(N_, -1);
+  for (unsigned int k = 0; k < kept_.size(); ++k) at[kept_[k]] = static_cast<int>(k);
   std::vector<Eigen::Triplet<double>> t;
   for (auto e = T.begin(); e != T.end(); ++e)
-    if (e->row() < N_ && e->column() < N_ && e->value() != 0.0) t.emplace_back(e->row(), e->column(), e->value());
-  Eigen::SparseMatrix<double> K(N_, N_);
+    if (e->row() < N_ && e->column() < N_ && e->value() != 0.0 && at[e->row()] >= 0 && at[e->column()] >= 0)
+      t.emplace_back(at[e->row()], at[e->column()], e->value());
+  const Eigen::Index n = static_cast<Eigen::Index>(kept_.size());
+  Eigen::SparseMatrix<double> K(n, n);
   K.setFromTriplets(t.begin(), t.end());
   K = (0.5 * (K + Eigen::SparseMatrix<double>(K.transpose()))).eval();
   return K;
@@ -277,16 +360,21 @@ Eigen::SparseMatrix<double> BeamEquilibrium::tangent(const paths::State& x) {
 
 std::optional<int> BeamEquilibrium::unstable_directions(const paths::State& x) {
   const Eigen::SparseMatrix<double> K = tangent(x);
-  std::vector<std::vector<int>> groups(N_);
-  for (unsigned int i = 0; i < N_; ++i) groups[i] = {static_cast<int>(i)};
+  const Eigen::Index n = K.rows();
+  std::vector<std::vector<int>> groups(n);
+  for (Eigen::Index i = 0; i < n; ++i) groups[i] = {static_cast<int>(i)};
   if (const auto in = modal::frontal_inertia(K, groups, {}); in && in->zero == 0) return static_cast<int>(in->negative);
   if (N_ > kDenseInertiaLimit) return std::nullopt;
-  return modal::unstable_directions(Eigen::MatrixXd(K), Eigen::MatrixXd(0, N_));
+  return modal::unstable_directions(Eigen::MatrixXd(K), Eigen::MatrixXd(0, n));
 }
 
 std::optional<paths::Vector> BeamEquilibrium::critical_direction(const paths::State& x) {
   if (N_ > kDenseInertiaLimit) return std::nullopt;
-  return modal::least_stable(Eigen::MatrixXd(tangent(x)), Eigen::MatrixXd(0, N_)).direction;
+  const Eigen::MatrixXd K(tangent(x));
+  const Eigen::VectorXd d = modal::least_stable(K, Eigen::MatrixXd(0, K.rows())).direction;
+  paths::Vector out = paths::Vector::Zero(N_ + M_);  // the driven unknowns and multipliers: 0
+  for (std::size_t k = 0; k < kept_.size(); ++k) out(kept_[k]) = d(static_cast<Eigen::Index>(k));
+  return out;
 }
 
 ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) const {
@@ -322,6 +410,7 @@ ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) con
 
 void BeamEquilibrium::finish(const paths::Vector& z) {
   const Vector<double> q = full(z);
+  out_.reaction = reaction(z);
   for (double a : st_.record) out_.record.push_back(model_.vertex_displacement(q, model_.vertex_of(a)));
   for (unsigned int k = 0; k < model_.vertices(); ++k) {
     const auto X = model_.vertex_position(k);

@@ -28,6 +28,8 @@ struct StaticSolve {
   /// curvature| (1/m) of the beam's bending points (plastic_points.hpp); 0 without.
   double dissipated = 0.0;
   double plastic_curvature = 0.0;
+  /// static.displacement, at the path's end: the force on the ring at the driven point (N).
+  std::array<double, 2> reaction{0.0, 0.0};
 };
 
 /// Traces the path of `st` with the discretization `setup` (no throw on a failed path:
