@@ -193,7 +193,7 @@ void check_spin(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
                                 std::to_string(max_n));
 }
 
-/// static.displacement (ring/analysis.hpp) on a closed ring: a node of the model on no support,
+/// static.displacement (ring/analysis.hpp) on a closed ring or an arch: a node of the model on no support,
 /// finite, with no loads beside it (the scene reader's rules, again for callers of the library). The driven
 /// point becomes two constraint rows (chain.hpp, drive(); the frames' the same), so it must not
 /// coincide with a pinned point or the roller, whose rows would repeat its own (a singular KKT
@@ -207,11 +207,19 @@ void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o
   if (!std::isfinite(d.value[0]) || !std::isfinite(d.value[1]) || !(std::hypot(d.value[0], d.value[1]) > 0.0))
     refuse(key + ".value", "static.displacement.value (= [" + std::to_string(d.value[0]) + ", " +
                                std::to_string(d.value[1]) + "] m) must be finite and not zero");
-  // An arch would take the same rows (its supports are rows too), but nothing measures a driven
-  // arch yet: the ring's tests (pinch, plateau, mechanism) have no arch counterpart here.
-  if (spec.is_arch())
-    refuse(key, "the lumped chain has no displacement control on an arch (ring.arc) yet (no oracle measures it); "
-                "drive a closed ring, or load the arch (static.at/force, static.path)");
+  // An arch (ring.arc): the open chain's node (node_at: from + span k / n), its supports rows
+  // as the ring's are; what the arch refuses (the frames, a roller) check_modes has refused.
+  if (spec.is_arch()) {
+    const int node = std::isfinite(d.at) ? ring::node_index(spec, d.at, o.n) : -1;
+    if (node < 0)
+      refuse(key + ".at", "static.displacement.at (= " + std::to_string(d.at) + " deg) is not a node of the n = " +
+                              std::to_string(o.n) + " model of the arch (ring.arc = [" + std::to_string(spec.arc->from) +
+                              ", " + std::to_string(spec.arc->to) + "]; valid: from + span k / n, k = 0..n)");
+    for (double p : spec.supports.pinned())
+      if (node_at(spec, p, o.n, "supports") == node)
+        refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is pinned (supports); drive another point");
+    return;
+  }
   if (!std::isfinite(d.at) || !ring::on_node(d.at, spec.anchor(), o.n))
     refuse(key + ".at", "static.displacement.at (= " + std::to_string(d.at) + " deg) is not a node of the n = " +
                             std::to_string(o.n) + " model (valid: anchor " + std::to_string(spec.anchor()) +

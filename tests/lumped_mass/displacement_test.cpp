@@ -345,7 +345,7 @@ TEST(DrivenFrames, AgreeWithTheirLoadControlledPinch) {
 }
 
 // What the lumped models refuse with static.displacement, by key (ring::InputError, exit 2):
-// an arch (no oracle measures a driven arch yet), loads beside it, a driven point on a support
+// on an arch what the arch refuses anyway (the frames) and its pinned ends, loads beside it, a driven point on a support
 // (its rows would repeat the support's), and the modes under load about a driven state. The
 // frames' static.path is the frames' general refusal (checks.cpp), not this key's.
 TEST(DrivenRefusals, NameTheKey) {
@@ -363,7 +363,17 @@ TEST(DrivenRefusals, NameTheKey) {
     arch.arc = ring::Arc{0.0, 180.0};
     arch.supports.pin = 0.0;
     arch.supports.pins = {180.0};
-    refused([&] { lumped::solve_static(arch, o, ringtest::driven_pinch(1e-3)); }, "an arch", "static.displacement");
+    // The chain drives an arch (driven_arch_test.cpp); what the arch refuses already it still
+    // refuses under the drive (the frames, by ring.arc), and a driven pinned end or a point off
+    // the arch's nodes by static.displacement.at.
+    refused([&] { lumped::solve_static(arch, lumptest::options(32, Variant::frame), ringtest::driven_pinch(1e-3)); },
+            "a driven arch on the frame", "ring.arc");
+    ring::StaticOptions at_end = ringtest::driven_pinch(1e-3);
+    at_end.displacement->at = 180.0;
+    refused([&] { lumped::solve_static(arch, o, at_end); }, "the arch's pinned end", "static.displacement.at");
+    ring::StaticOptions off_arch = ringtest::driven_pinch(1e-3);
+    off_arch.displacement->at = 270.0;
+    refused([&] { lumped::solve_static(arch, o, off_arch); }, "a point off the arch", "static.displacement.at");
   }
   const ring::RingSpec spec = ringtest::driven_plastic_ring(std::nullopt);
   ring::StaticOptions loaded = ringtest::driven_pinch(1e-3);
