@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -54,10 +55,29 @@ TEST(DrivenCli, TheReactionIsTheClosedFormPinch) {
   EXPECT_NEAR(j["reaction"][0].get<double>(), 0.0, 1e-9 * exact);
 }
 
-// The chain holds a driven point on a ring with a pin (the chain's hinge 0) only; a ring held
-// by a foundation and the driven point alone is refused by the key.
-TEST(DrivenCli, ADrivenFreeRingIsRefusedByKey) {
-  const auto r = ringvib("static " + scene("free.toml", "", "[foundation]\nradial = 500.0\ntangential = 300.0\n") +
+// The free ring on a foundation (k_r = 500, k_t = 300 N/m^2: every rigid motion held without
+// a pin), its point at 90 driven: the multibody chain's reaction against the lumped chain's on
+// the same scene (n = 128 both), another implementation of the hinged chain (Cartesian hinges,
+// the foundation on the hinges' displacements: lumped_mass/terms.hpp) with the drive as its
+// own constraint rows: they agree to the Newton tolerance, 3.4e-12 measured, bound 1e-8. A ring held by a radial foundation and the driven point alone is refused by the key.
+TEST(DrivenCli, ADrivenFreeRingOnAFoundationAgreesWithTheLumpedChain) {
+  const std::string file =
+      scene("free.toml", "", "[foundation]\nradial = 500.0\ntangential = 300.0\n[lumped]\nn = 128\n");
+  double reaction[2][2];
+  const char* solvers[2] = {"multibody", "lumped"};
+  for (int k = 0; k < 2; ++k) {
+    const auto r = ringvib("static " + file + " --solver " + solvers[k] + " --json");
+    ASSERT_EQ(r.code, 0) << solvers[k] << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    reaction[k][0] = j["reaction"][0].get<double>();
+    reaction[k][1] = j["reaction"][1].get<double>();
+  }
+  std::printf("[ free driven cli ] multibody %.12e, lumped %.12e N: %.3e\n", reaction[0][1], reaction[1][1],
+              reaction[1][1] / reaction[0][1] - 1.0);
+  ASSERT_LT(reaction[0][1], 0.0);
+  EXPECT_NEAR(reaction[1][1] / reaction[0][1], 1.0, 1e-8);
+  EXPECT_NEAR(reaction[0][0], 0.0, 1e-9 * std::abs(reaction[0][1]));
+  const auto r = ringvib("static " + scene("radial.toml", "", "[foundation]\nradial = 500.0\n") +
                          " --solver multibody --json");
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("static.displacement"), std::string::npos) << r.err;
