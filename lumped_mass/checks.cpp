@@ -193,9 +193,9 @@ void check_spin(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
                                 std::to_string(max_n));
 }
 
-/// static.displacement (ring/analysis.hpp) on a closed ring or an arch: a node of the model on no support,
-/// finite, with no loads beside it (the scene reader's rules, again for callers of the library). The driven
-/// point becomes two constraint rows (chain.hpp, drive(); the frames' the same), so it must not
+/// static.displacement (ring/analysis.hpp) on a closed ring or an arch: a node of the model on no
+/// support, finite, with no loads beside it (the scene reader's rules, again for callers of the
+/// library). The driven point becomes two constraint rows (chain.hpp, drive(); the frames' the same), so it must not
 /// coincide with a pinned point or the roller, whose rows would repeat its own (a singular KKT
 /// matrix). ring::InputError naming the key.
 void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::StaticOptions& statics) {
@@ -213,8 +213,9 @@ void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o
     const int node = std::isfinite(d.at) ? ring::node_index(spec, d.at, o.n) : -1;
     if (node < 0)
       refuse(key + ".at", "static.displacement.at (= " + std::to_string(d.at) + " deg) is not a node of the n = " +
-                              std::to_string(o.n) + " model of the arch (ring.arc = [" + std::to_string(spec.arc->from) +
-                              ", " + std::to_string(spec.arc->to) + "]; valid: from + span k / n, k = 0..n)");
+                              std::to_string(o.n) + " model of the arch (ring.arc = [" +
+                              std::to_string(spec.arc->from) + ", " + std::to_string(spec.arc->to) +
+                              "]; valid: from + span k / n, k = 0..n)");
     for (double p : spec.supports.pinned())
       if (node_at(spec, p, o.n, "supports") == node)
         refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is pinned (supports); drive another point");

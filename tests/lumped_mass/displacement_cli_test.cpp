@@ -34,8 +34,7 @@ std::string driven_scene(double closing, const std::string& supports, const std:
                   "title = \"The driven pinch, lumped\"\n"
                   "[ring]\nradius = 10.0\nE = 2.1e11\nrho = 7.8e3\n"
                   "section = { shape = \"circle\", diameter = 0.12 }\n" +
-                      extra + "[supports]\n" + supports +
-                      "[lumped]\nn = 64\n" + more +
+                      extra + "[supports]\n" + supports + "[lumped]\nn = 64\n" + more +
                       "[static]\nsolvers = [\"lumped\"]\nrecord = [90.0]\n"
                       "displacement = { at = 90.0, value = [0.0, " +
                       std::to_string(-closing) + "] }\n" + (path ? "path = true\n" : "") + also);
@@ -78,7 +77,8 @@ TEST(LumpedDisplacementCli, ADrivenArchAgreesWithTheMultibodyChain) {
     ASSERT_EQ(r.code, 0) << solvers[k] << ": " << r.err;
     reaction[k] = nlohmann::json::parse(r.out).at("reaction").get<Pair>();
   }
-  ::testing::Test::RecordProperty("lumped_over_multibody_minus_1", std::to_string(reaction[0][1] / reaction[1][1] - 1.0));
+  ::testing::Test::RecordProperty("lumped_over_multibody_minus_1",
+                                  std::to_string(reaction[0][1] / reaction[1][1] - 1.0));
   ASSERT_LT(reaction[1][1], 0.0);
   EXPECT_NEAR(reaction[0][1] / reaction[1][1], 1.0, 1e-8);
   EXPECT_LT(std::abs(reaction[0][0]), 1e-8 * std::abs(reaction[0][1]));

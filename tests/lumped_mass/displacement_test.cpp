@@ -344,10 +344,10 @@ TEST(DrivenFrames, AgreeWithTheirLoadControlledPinch) {
   }
 }
 
-// What the lumped models refuse with static.displacement, by key (ring::InputError, exit 2):
-// on an arch what the arch refuses anyway (the frames) and its pinned ends, loads beside it, a driven point on a support
-// (its rows would repeat the support's), and the modes under load about a driven state. The
-// frames' static.path is the frames' general refusal (checks.cpp), not this key's.
+// What the lumped models refuse with static.displacement, by key (ring::InputError, exit 2): on an
+// arch what the arch refuses anyway (the frames) and its pinned ends, loads beside it, a driven
+// point on a support (its rows would repeat the support's), and the modes under load about a driven
+// state. The frames' static.path is the frames' general refusal (checks.cpp), not this key's.
 TEST(DrivenRefusals, NameTheKey) {
   auto refused = [](const std::function<void()>& run, const std::string& what, const std::string& key) {
     try {

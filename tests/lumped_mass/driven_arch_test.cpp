@@ -10,8 +10,8 @@
 // against the two-hinged arch's limit analysis, 8 Mp / R (derived below).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <vector>
@@ -97,9 +97,10 @@ TEST(DrivenArch, PlasticAgreesWithTheLoadControlledPath) {
   const lumped::StaticDetail d = driven(spec, 0.0, -c);
   const double P = -d.result.reaction[1];
   const ring::StaticResult byload = loaded(spec, P);
-  std::printf("[ driven arch ] plastic crown %.6e m: reaction %.12e N (%.4f Mp / R), dissipated %.3e J, loaded crown "
-              "%.12e m\n",
-              c, P, P * spec.radius / spec.plastic->moment, d.result.dissipated, byload.displacements.at(0).uy);
+  std::printf(
+      "[ driven arch ] plastic crown %.6e m: reaction %.12e N (%.4f Mp / R), dissipated %.3e J, loaded crown "
+      "%.12e m\n",
+      c, P, P * spec.radius / spec.plastic->moment, d.result.dissipated, byload.displacements.at(0).uy);
   EXPECT_GT(d.result.dissipated, 0.0);
   EXPECT_NEAR(byload.displacements.at(0).uy, -c, 1e-6 * c);
   EXPECT_NEAR(byload.displacements.at(0).ux, 0.0, 1e-6 * c);
@@ -131,10 +132,10 @@ TEST(DrivenArch, PlasticPeakIsTheTwoHingedArchsCollapseLoad) {
   double peak = 0.0;
   for (const ring::PathPoint& p : d.result.path) peak = std::max(peak, -p.reaction[1]);
   const double last = -d.result.reaction[1];
-  std::printf("[ driven arch ] plastic peak %.9e N = %.6f Mp / R (8: limit analysis), at 0.01 R %.6f Mp / R, "
-              "dissipated %.3e J\n",
-              peak, peak * spec.radius / spec.plastic->moment, last * spec.radius / spec.plastic->moment,
-              d.result.dissipated);
+  std::printf(
+      "[ driven arch ] plastic peak %.9e N = %.6f Mp / R (8: limit analysis), at 0.01 R %.6f Mp / R, "
+      "dissipated %.3e J\n",
+      peak, peak * spec.radius / spec.plastic->moment, last * spec.radius / spec.plastic->moment, d.result.dissipated);
   EXPECT_NEAR(peak / Pc, 1.0, 1e-3);
   EXPECT_LT(last, peak);  // the mechanism's geometry softens it past the peak
   EXPECT_GT(d.result.dissipated, 0.0);
@@ -153,8 +154,8 @@ TEST(DrivenArch, PlasticPeakIsTheTwoHingedArchsCollapseLoad) {
   double bound = 0.0;
   for (std::size_t i = 0; i < du.size(); ++i) {
     const double before = slope[i > 0 ? i - 1 : 0], after = slope[std::min(i + 1, du.size() - 1)];
-    bound += du[i] * du[i] / 8.0 * std::max({std::abs(after - before), std::abs(slope[i] - before),
-                                             std::abs(after - slope[i])});
+    bound += du[i] * du[i] / 8.0 *
+             std::max({std::abs(after - before), std::abs(slope[i] - before), std::abs(after - slope[i])});
   }
   const double defect = d.work - d.stored - d.result.dissipated;
   std::printf("[ driven arch ] work %.9e J, stored + dissipated %.9e J: defect %.3e J, bound %.3e J\n", d.work,

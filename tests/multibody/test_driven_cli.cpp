@@ -55,11 +55,12 @@ TEST(DrivenCli, TheReactionIsTheClosedFormPinch) {
   EXPECT_NEAR(j["reaction"][0].get<double>(), 0.0, 1e-9 * exact);
 }
 
-// The free ring on a foundation (k_r = 500, k_t = 300 N/m^2: every rigid motion held without
-// a pin), its point at 90 driven: the multibody chain's reaction against the lumped chain's on
-// the same scene (n = 128 both), another implementation of the hinged chain (Cartesian hinges,
-// the foundation on the hinges' displacements: lumped_mass/terms.hpp) with the drive as its
-// own constraint rows: they agree to the Newton tolerance, 3.4e-12 measured, bound 1e-8. A ring held by a radial foundation and the driven point alone is refused by the key.
+// The free ring on a foundation (k_r = 500, k_t = 300 N/m^2: every rigid motion held without a
+// pin), its point at 90 driven: the multibody chain's reaction against the lumped chain's on the
+// same scene (n = 128 both), another implementation of the hinged chain (Cartesian hinges, the
+// foundation on the hinges' displacements: lumped_mass/terms.hpp) with the drive as its own
+// constraint rows: they agree to the Newton tolerance, 3.4e-12 measured, bound 1e-8. A ring held by
+// a radial foundation and the driven point alone is refused by the key.
 TEST(DrivenCli, ADrivenFreeRingOnAFoundationAgreesWithTheLumpedChain) {
   const std::string file =
       scene("free.toml", "", "[foundation]\nradial = 500.0\ntangential = 300.0\n[lumped]\nn = 128\n");

@@ -348,15 +348,15 @@ TEST(DrivenStatics, TheRigsWorkIsStoredPlusDissipated) {
 
 // ---- a ring without supports.pin ----
 
-// The free ring on a Winkler foundation (mbtest::on_foundation: k_r = 500, k_t = 300 N/m^2,
-// ~2.3 EI/R^4: every rigid motion held), no supports: the free chain's base unknowns (x_0, y_0)
-// carry the drive's rows as a further pin's. The point at 90 deg loaded by (0, -P) against the
-// point driven to where that load took it; P R^2 / EI = 1: the point travels 0.12 R (measured),
-// well into the nonlinear range. A radial foundation alone is refused (checks.cpp): there the
-// load-controlled path buckles into the turning about the centre at once. As the arch's above: reaction (0, -P) to 1e-8 of P (Newton's 1e-12 rad on the
-// angles through the tangent's condition), the x reaction zero by the symmetry about the
-// vertical (n = 32: a hinge at 90 and at 270), the point at 0 deg, which neither path
-// prescribes, to 1e-8 of the travel; both formulations (angles, hinge positions).
+// The free ring on a Winkler foundation (mbtest::on_foundation: k_r = 500, k_t = 300 N/m^2, ~2.3
+// EI/R^4: every rigid motion held), no supports: the free chain's base unknowns (x_0, y_0) carry
+// the drive's rows as a further pin's. The point at 90 deg loaded by (0, -P) against the point
+// driven to where that load took it; P R^2 / EI = 1: the point travels 0.12 R (measured), well into
+// the nonlinear range. A radial foundation alone is refused (checks.cpp): there the load-controlled
+// path buckles into the turning about the centre at once. As the arch's above: reaction (0, -P) to
+// 1e-8 of P (Newton's 1e-12 rad on the angles through the tangent's condition), the x reaction zero
+// by the symmetry about the vertical (n = 32: a hinge at 90 and at 270), the point at 0 deg, which
+// neither path prescribes, to 1e-8 of the travel; both formulations (angles, hinge positions).
 TEST(DrivenStatics, AFreeRingOnAFoundationAgreesWithItsLoadControlledPath) {
   for (Method method : {Method::dense, Method::sparse}) {
     const ring::RingSpec spec = mbtest::on_foundation();
