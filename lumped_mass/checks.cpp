@@ -195,9 +195,9 @@ void check_spin(const ring::RingSpec& spec, const ring::LumpedOptions& o) {
 
 /// static.displacement (ring/analysis.hpp) on a closed ring or an arch: a node of the model on no
 /// support, finite, with no loads beside it (the scene reader's rules, again for callers of the
-/// library). The driven point becomes two constraint rows (chain.hpp, drive(); the frames' the same), so it must not
-/// coincide with a pinned point or the roller, whose rows would repeat its own (a singular KKT
-/// matrix). ring::InputError naming the key.
+/// library). The driven point becomes two constraint rows (chain.hpp, drive(); the frames' the
+/// same), so it must not coincide with a pinned point or the roller, whose rows would repeat its
+/// own (a singular KKT matrix). ring::InputError naming the key.
 void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::StaticOptions& statics) {
   const ring::StaticOptions::Displacement& d = *statics.displacement;
   const std::string key = "static.displacement";
