@@ -258,9 +258,15 @@ NonlinearTable static_table(const std::string& title, const std::vector<ring::St
       for (const auto& p : r.path) m = std::max(m, std::hypot(p.reaction[0], p.reaction[1]));
       return m;
     };
+    // A component below 1e-9 of the peak is round-off (a drive along an axis): 0, so that the
+    // table says n/a rather than compare two round-offs.
+    const auto component = [peak](int i) {
+      return [peak, i](const ring::StaticResult& r) {
+        return std::abs(r.reaction[i]) <= 1e-9 * peak(r) ? 0.0 : r.reaction[i];
+      };
+    };
     using Quantity = std::pair<const char*, std::function<double(const ring::StaticResult&)>>;
-    const std::vector<Quantity> quantities = {{"reaction_x", [](const ring::StaticResult& r) { return r.reaction[0]; }},
-                                              {"reaction_y", [](const ring::StaticResult& r) { return r.reaction[1]; }},
+    const std::vector<Quantity> quantities = {{"reaction_x", component(0)}, {"reaction_y", component(1)},
                                               {"peak_reaction", peak}};
     for (const auto& [name, value] : quantities) {
       NonlinearRow row{NonlinearRow::kWholeRing, name, {}, {}, std::nullopt, {}};
