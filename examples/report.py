@@ -9,7 +9,7 @@ error in percent, and the largest error of each solver in one summary line.
     PYTHONPATH=build/python python3 examples/report.py [--scene scenes/paper1990.toml]
         [--modes 1-23] [--out report.md] [--csv report.csv]
 
-The table's rows are those of `ringvib table SCENE --json` (modes paired by MAC with the first
+The table's rows are those of `ringvib table SCENE --format json` (modes paired by MAC with the first
 column; `<solver>_error_pct` against the reference, which the scene asks for with
 fem.reference = true).
 """

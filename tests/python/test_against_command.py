@@ -173,6 +173,21 @@ def test_static_path_equals_the_commands_json():
             assert row["ux_" + name] == d["ux"] and row["uy_" + name] == d["uy"]
 
 
+def test_driven_static_reaction_equals_the_commands_json():
+    # static.displacement: the reaction at the end and along the path, as the command's JSON has
+    # them (crushed-ring.toml, the lumped chain at n = 40); a loaded path has none.
+    values = {"lumped.n": 40}
+    s = ringvib.Scene.load(scene_path("crushed-ring.toml"), set=values)
+    r = ringvib.static(s, "lumped")
+    j = ringvib_json("static", scene_path("crushed-ring.toml"), "--solver", "lumped", "--json", *sets({"lumped.n": "40"}))
+    assert r.reaction == tuple(j["reaction"])
+    assert r.path.dtype.names[-2:] == ("reaction_x", "reaction_y")
+    assert len(r.path) == len(j["path"])
+    for row, p in zip(r.path, j["path"]):
+        assert (row["reaction_x"], row["reaction_y"]) == tuple(p["reaction"])
+    assert ringvib.static(ringvib.Scene.load(scene_path("paper1990-static.toml")), "lumped").reaction is None
+
+
 def test_static_limit_points_equal_the_commands_json():
     # The deep arch's path passes its limit point: the module's limit_points are the JSON's.
     values = {"multibody.n": 20}

@@ -1,7 +1,7 @@
 """The examples (examples/, one per user group) run as documented and measure what their oracle
 says: the method study's chain converges at second order against the FE reference; the gyroscope
 maker's trim cancels the split in every solver; the report and the CI gate reproduce the command's
-own table (`ringvib table --json`).
+own table (`ringvib table --format json`).
 """
 import csv
 import json
@@ -54,9 +54,9 @@ def test_gyroscope_trim_example(tmp_path):
 
 
 def command_table(scene):
-    """The rows of `ringvib table SCENE --json`: the command's own numbers, the oracle of the
+    """The rows of `ringvib table SCENE --format json`: the command's own numbers, the oracle of the
     report and gate examples (which go through the module)."""
-    run = subprocess.run([COMMAND, "table", str(scene), "--json"], capture_output=True, text=True, timeout=600)
+    run = subprocess.run([COMMAND, "table", str(scene), "--format", "json"], capture_output=True, text=True, timeout=600)
     assert run.returncode == 0, run.stderr
     return json.loads(run.stdout)["rows"]
 
