@@ -54,7 +54,8 @@ class Runner:
         self.repeat = repeat
 
     def json(self, args: Sequence[str]) -> Any:
-        run = subprocess.run([self.ringvib, *args, "--json"], capture_output=True, text=True, cwd=ROOT)
+        flag = ["--format", "json"] if args[0] == "table" else ["--json"]
+        run = subprocess.run([self.ringvib, *args, *flag], capture_output=True, text=True, cwd=ROOT)
         if run.returncode != 0:
             raise SystemExit(f"ringvib {' '.join(args)}: exit {run.returncode}\n{run.stderr}")
         return json.loads(run.stdout)
@@ -66,7 +67,7 @@ class Runner:
 
 
 def command(args: Sequence[str]) -> str:
-    return "`ringvib " + " ".join(args) + " --json`"
+    return "`ringvib " + " ".join(args) + (" --format json`" if args[0] == "table" else " --json`")
 
 
 def paper_table(r: Runner) -> List[str]:
@@ -87,11 +88,12 @@ def paper_table(r: Runner) -> List[str]:
 
 def chain_timings(r: Runner, sizes: Sequence[int]) -> List[str]:
     out = ["### The multibody chain's 23 modes against its size", "",
-           f"Command: `ringvib modes scenes/paper1990-multibody.toml --set multibody.n=N --json`, the",
-           f"solver's own wall time (`seconds`), median of {r.repeat} runs.", "",
+           "Command: `ringvib modes scenes/paper1990-multibody.toml --solver multibody --set multibody.n=N --json`,",
+           f"the solver's own wall time (`seconds`), median of {r.repeat} runs.", "",
            "| n | unknowns | seconds | lowest frequency (rad/s) |", "|---|---|---|---|"]
     for n in sizes:
-        result, seconds = r.timed(["modes", "scenes/paper1990-multibody.toml", "--set", f"multibody.n={n}"])
+        result, seconds = r.timed(["modes", "scenes/paper1990-multibody.toml", "--solver", "multibody", "--set",
+                                   f"multibody.n={n}"])
         omega = [w for w in result["omega"] if w > 1e-6]
         out.append(f"| {n} | {result.get('unknowns', '')} | {seconds:.3g} | {omega[0]:.6f} |")
     return out
@@ -104,7 +106,7 @@ def convergence(r: Runner) -> List[str]:
         run = subprocess.run([r.ringvib, *args], capture_output=True, text=True, cwd=ROOT)
         if run.returncode != 0:
             raise SystemExit(f"ringvib {' '.join(args)}: exit {run.returncode}\n{run.stderr}")
-        lines = [line for line in run.stdout.splitlines() if line.strip()]
+        lines = [line for line in run.stdout.splitlines() if line.strip() and not line.startswith("wrote ")]
     out = ["### Convergence of every solver on the paper's ring", "",
            "Command: `ringvib converge scenes/paper1990.toml --out DIR` (its printed summary, as printed).", "",
            "```"]
@@ -129,6 +131,11 @@ def without_timings(text: str) -> str:
         cells = line.split("|")
         if len(cells) == 6 and cells[1].strip().isdigit():
             cells[3] = " - "
+        words = line.split()
+        if len(words) == 4 and words[0].isdigit():  # a row of `converge`'s summary: its seconds
+            words[3] = "-"
+            line = " ".join(words)
+            cells = [line]
         out.append("|".join(cells))
     return "\n".join(out)
 
