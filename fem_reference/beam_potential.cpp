@@ -94,7 +94,7 @@ Scalar centrifugal(const Y& y, double c, double R) {
 
 }  // namespace
 
-BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
+BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads, bool statics)
     : model_(model), loads_(loads), rhoA_(model.spec_.rhoA()), constant_load_(model.n_free()) {
   const ring::RingSpec& spec = model.spec_;
   for (const ring::PointLoad& p : loads.points)
@@ -127,7 +127,10 @@ BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads)
       spinning_masses_.push_back({{d[0], d[1]}, {std::cos(a), std::sin(a)}, c});
     }
   distributed_ = spec.foundation.any() || loads.pressure.any() || loads.has_gravity() || spec.rotation.spinning();
-  if (spec.plastic) law_.emplace(::fem::detail::plastic_law(spec, *spec.plastic));
+  if (spec.plastic) {
+    law_.emplace(::fem::detail::plastic_law(spec, *spec.plastic));
+    law_->elastic_symmetry = statics && spec.plastic->law == ring::Plastic::Law::resultant;
+  }
 }
 
 BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, Vector<double>* residual,

@@ -33,7 +33,9 @@ namespace fem::detail {
 class BeamPotential {
  public:
   /// `model` and `loads` must outlive the object; every point on a vertex (check_nonlinear).
-  BeamPotential(const BeamModel& model, const ring::Loads& loads);
+  /// `statics`: ring.plastic's resultant law takes the vertices' continuous force
+  /// (PlasticLaw::elastic_symmetry, ring_beam.cpp), as the statics do.
+  BeamPotential(const BeamModel& model, const ring::Loads& loads, bool statics = false);
 
   struct Value {
     double stored = 0.0;  ///< V(q), J

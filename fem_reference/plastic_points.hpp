@@ -90,6 +90,12 @@ struct BendingPoint {
 struct PlasticLaw {
   ring::Plastic plastic;
   ring::SectionLaw section;
+  /// The vertex force's symmetry term with the elastic moment's variation (ring_beam.cpp:
+  /// continuous where a cell end yields, but no potential's gradient there). Set by the
+  /// statics with the resultant law, whose ends' single tangent drop stalled their Newton;
+  /// the response (BeamStepper, whose energy identity needs the potential, and whose steps
+  /// are held by the inertia) and the fibre law (64 small drops) keep the potential's.
+  bool elastic_symmetry = false;
   /// The plastic states of a model with `points` bending points and `vertices` vertices:
   /// section.states() per bending point, then one per vertex hinge.
   std::size_t states(std::size_t points, std::size_t vertices) const {

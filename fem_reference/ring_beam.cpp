@@ -201,21 +201,51 @@ double RingModel::beam_energy(const Vector<double>& q, Vector<double>* gradient,
       // {M} + P J the moment the vertex passes on: the vertex is a hinge of stiffness P whose
       // moment the law caps (plastic_points.hpp), E_v = W_P(e) - {M}^2 / (2 P), W_P the
       // incremental potential of the law with stiffness P from the hinge's committed state.
-      // With F = W_P'(e), T = W_P''(e) and g = dJ + dM / P: dE_v = F g - {M} / P dM,
-      // d2E_v = T g g^T - dM dM^T / P + F d2J + (F - {M}) / P d2M (elastic: F = {M} + P J).
+      // With F = W_P'(e): dE_v = F dJ + j dM, j = (F - {M}) / P (J while the hinge is
+      // elastic). That gradient is not continuous: dM = mL dk_L + mR dk_R carries the ends'
+      // tangents, which drop from EI to 0 (perfectly plastic) as an end yields, so the force
+      // jumps by j EI / 2 dk wherever an end yields under a vertex whose moment F is not the
+      // ends' {M}. A committed end sits on its yield edge, so every equilibrium past it is on
+      // that jump: Newton from it met a residual of O(j EI / h) whatever the step (the cubic
+      // pinched ring past collapse: |r| = 4.97 for steps down to 1e-11 of the drive, stalled;
+      // fem_driven_test, TheCubicBeamPassesCollapse). So the symmetry term j dM takes the
+      // elastic moment's variation dMe = EI/(2R) (dk_L + dk_R), as nonsymmetric interior
+      // penalty methods for plasticity take the elastic operator in their adjoint term: the
+      // force F dJ + j dMe is continuous (F and {M} are), still the elastic beam's exactly
+      // while no end yields, and consistent (j = 0 for the smooth solution); the moments it
+      // passes, F at the vertex and the law's at the points, are those of the potential. Its
+      // tangent, nonsymmetric where an end yields (the bordered matrix is factored by LU; the
+      // inertia reads the symmetric part):
+      // d(F dJ + j dMe) = T ge g^T - dMe dM^T / P + F d2J + j d2Me, g = dJ + dM / P,
+      // ge = dJ + dMe / P (elastic: the Hessian of E_v). `energy` keeps E_v: the beam's stored
+      // energy, with which the rig's work balances to the measured bounds (fem_driven_test).
       const ring::BilinearLaw::Point h = hinge->at(plastic->committed[hinge_base + v], J + M / P);
       energy += h.potential - 0.5 * M * M / P;
-      std::array<double, 8> g{};
-      for (int a = 0; a < 8; ++a) g[a] = dJ[a] + dM[a] / P;
+      // Only where PlasticLaw::elastic_symmetry says (the statics, resultant law): the fibre
+      // law's tangent falls fibre by fibre (64 small jumps of the force, which Newton passes;
+      // the elastic variation changed FemFibre's measured orders), and the response's energy
+      // identity (fem_plastic_response_test) and the kernel's check that the force is the
+      // potential's gradient (fem_plastic_kernel_test) need the potential's.
+      const bool elastic_symmetry = plastic->law.elastic_symmetry;
+      const double me = elastic_symmetry ? m : 0.0;  // dMe's coefficient, or the law's below
+      std::array<double, 8> g{}, ge{}, dMe{};
+      for (int a = 0; a < 4; ++a) {
+        dMe[a] = elastic_symmetry ? me * kl.d[a] : dM[a];
+        dMe[4 + a] = elastic_symmetry ? me * kr.d[a] : dM[4 + a];
+      }
       for (int a = 0; a < 8; ++a) {
-        dE[a] = h.force * g[a] - M / P * dM[a];
-        for (int c = 0; c < 8; ++c) H[a][c] = h.tangent * g[a] * g[c] - dM[a] * dM[c] / P;
+        g[a] = dJ[a] + dM[a] / P;
+        ge[a] = dJ[a] + dMe[a] / P;
       }
       const double j = (h.force - M) / P;  // J when elastic
+      for (int a = 0; a < 8; ++a) {
+        dE[a] = h.force * dJ[a] + j * dMe[a];
+        for (int c = 0; c < 8; ++c) H[a][c] = h.tangent * ge[a] * g[c] - dMe[a] * dM[c] / P;
+      }
       for (int a = 0; a < 4; ++a)
         for (int c = 0; c < 4; ++c) {
-          H[a][c] += j * mL * kl.dd[a][c] - h.force * pl.dd[a][c];
-          H[4 + a][4 + c] += j * mR * kr.dd[a][c] + h.force * pr.dd[a][c];
+          H[a][c] += j * (elastic_symmetry ? me : mL) * kl.dd[a][c] - h.force * pl.dd[a][c];
+          H[4 + a][4 + c] += j * (elastic_symmetry ? me : mR) * kr.dd[a][c] + h.force * pr.dd[a][c];
         }
     } else {
       energy += M * J + 0.5 * P * J * J;
