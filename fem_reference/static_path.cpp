@@ -432,7 +432,7 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   // A driven plastic beam: arc length from rest, as the chains do (load stepping's first
   // iterate on the collapse plateau yields more points than the mechanism's and the increments
   // halve: 5713 equilibria on scenes/crushed-ring.toml at 40 cells of degree 5).
-  options.from_start = st.displacement.has_value() && spec.plastic.has_value();
+  options.from_start = continuation.from_start || (st.displacement.has_value() && spec.plastic.has_value());
   if (st.path) {
     options.branch_switch = true;
     options.branch_side = st.branch_side;

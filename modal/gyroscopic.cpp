@@ -25,6 +25,17 @@ double relative_residual(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, con
   return scale > 0.0 ? r / scale : r;
 }
 
+/// Stores mode k (frequency w, shape x normalized here) and raises out.max_residual by its
+/// residual (a NaN residual sticks).
+void store(GyroscopicModes& out, int k, double w, Eigen::VectorXcd x, const Eigen::MatrixXd& K,
+           const Eigen::MatrixXd& M, const Eigen::MatrixXd& G) {
+  x /= x.norm();
+  out.omega(k) = w;
+  out.vectors.col(k) = x;
+  const double rel = relative_residual(K, M, G, x, w);
+  out.max_residual = std::isnan(rel) || rel > out.max_residual ? rel : out.max_residual;
+}
+
 /// K not positive definite: past a divergence speed the Coriolis coupling may still hold the ring
 /// (gyroscopic stabilization; Thomson–Tait: possible only where K has an even number of negative
 /// eigenvalues). The Hermitian form needs A = diag(K, M) definite, so the general eigenproblem of
@@ -63,15 +74,7 @@ GyroscopicModes gyroscopically_stable_modes(const std::string& solver, const Eig
   GyroscopicModes out;
   out.omega.resize(count);
   out.vectors.resize(n, count);
-  for (int k = 0; k < count; ++k) {
-    const auto [w, j] = positive[k];
-    Eigen::VectorXcd x = eig.eigenvectors().col(j).head(n);
-    x /= x.norm();
-    out.omega(k) = w;
-    out.vectors.col(k) = x;
-    const double rel = relative_residual(K, M, G, x, w);
-    out.max_residual = std::isnan(rel) || rel > out.max_residual ? rel : out.max_residual;
-  }
+  for (int k = 0; k < count; ++k) store(out, k, positive[k].first, eig.eigenvectors().col(positive[k].second).head(n), K, M, G);
   return out;
 }
 
@@ -124,11 +127,7 @@ GyroscopicModes gyroscopic_modes(const std::string& solver, const Eigen::MatrixX
     Eigen::VectorXcd x(n);  // Lk^T x = top, real triangle, complex right-hand side
     x.real() = Lk.transpose().triangularView<Eigen::Upper>().solve(Eigen::VectorXd(top.real()));
     x.imag() = Lk.transpose().triangularView<Eigen::Upper>().solve(Eigen::VectorXd(top.imag()));
-    x /= x.norm();
-    out.omega(k) = w;
-    out.vectors.col(k) = x;
-    const double rel = relative_residual(K, M, G, x, w);
-    out.max_residual = std::isnan(rel) || rel > out.max_residual ? rel : out.max_residual;
+    store(out, k, w, x, K, M, G);
   }
   return out;
 }

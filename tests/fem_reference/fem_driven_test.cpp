@@ -21,6 +21,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fem_reference/nonlinear.hpp"
@@ -98,6 +99,23 @@ TEST(FemDriven, ElasticReactionConvergesToTheClosedForm) {
   EXPECT_NEAR(finest[0], 0.0, 1e-9 * exact);  // symmetric about the vertical diameter: round-off
 }
 
+/// The same beam (16 cubic cells) two ways: on a roller at 90 deg under P at 90 deg (load
+/// control), and driven there by the closing that load made (the roller's place taken by the
+/// drive); 20 steps each, no path. Returns {loaded, driven}.
+std::pair<ring::StaticResult, ring::StaticResult> loaded_and_driven(const ring::RingSpec& driven, double P) {
+  ring::RingSpec on_roller = driven;
+  on_roller.supports.roller = 90.0;
+  ring::StaticOptions by_load;
+  by_load.loads.points = {{90.0, {0.0, -P}}};
+  by_load.record = {90.0, 0.0};
+  by_load.steps = 20;
+  ring::StaticResult l = fem::solve_static(on_roller, fem_options(16), by_load);
+  ring::StaticOptions by_drive = ringtest::driven_pinch(-l.displacements[0].uy, {}, by_load.steps);
+  by_drive.path = false;
+  ring::StaticResult d = fem::solve_static(driven, fem_options(16), by_drive);
+  return {std::move(l), std::move(d)};
+}
+
 // The same equilibrium two ways: the ring pinned at 270 deg with a roller at 90 deg (moving
 // along the vertical diameter: ux(90) = 0 eliminated from the unknowns) under the load (0, -P)
 // at 90, and the ring pinned at 270 with 90 driven to the load case's displacement there (two
@@ -112,19 +130,11 @@ TEST(FemDriven, ElasticReactionConvergesToTheClosedForm) {
 TEST(FemDriven, AgreesWithTheLoadControlledPinch) {
   for (const std::optional<double> mp : {std::optional<double>{}, std::optional<double>{1e-4}}) {
     const char* which = mp ? "plastic" : "elastic";
-    ring::RingSpec on_roller = ringtest::driven_plastic_ring(mp);
-    on_roller.supports.roller = 90.0;
-    const double R = on_roller.radius;
-    const double P = mp ? 3.5 * on_roller.plastic->moment / R : 3.5e-4 * on_roller.EI() / (R * R);
-    ring::StaticOptions by_load;
-    by_load.loads.points = {{90.0, {0.0, -P}}};
-    by_load.record = {90.0, 0.0};
-    by_load.steps = 20;
-    const ring::StaticResult l = fem::solve_static(on_roller, fem_options(16), by_load);
+    const ring::RingSpec driven = ringtest::driven_plastic_ring(mp);
+    const double R = driven.radius;
+    const double P = mp ? 3.5 * driven.plastic->moment / R : 3.5e-4 * driven.EI() / (R * R);
+    const auto [l, d] = loaded_and_driven(driven, P);
     const double c = -l.displacements[0].uy;
-    ring::StaticOptions by_drive = ringtest::driven_pinch(c, {}, by_load.steps);
-    by_drive.path = false;
-    const ring::StaticResult d = fem::solve_static(ringtest::driven_plastic_ring(mp), fem_options(16), by_drive);
     std::printf(
         "%s: P = %.12e N, c = %.6e m, reaction (%.3e, %.12e) N: %.3e; u(0) (%.12e, %.12e) against (%.12e, "
         "%.12e) m\n",
@@ -367,19 +377,10 @@ ring::RingSpec driven_fibre_ring() {
 // identity along the way.
 TEST(FemDriven, TheFibreLawAgreesWithItsLoadControlledPinch) {
   const ring::RingSpec driven = driven_fibre_ring();
-  ring::RingSpec on_roller = driven;
-  on_roller.supports.roller = 90.0;
   const ringtest::FibrePinchedRing closed(driven);
   const double Pc = closed.collapse(), P = 0.9 * Pc;
-  ring::StaticOptions by_load;
-  by_load.loads.points = {{90.0, {0.0, -P}}};
-  by_load.record = {90.0, 0.0};
-  by_load.steps = 20;
-  const ring::StaticResult l = fem::solve_static(on_roller, fem_options(16), by_load);
+  const auto [l, d] = loaded_and_driven(driven, P);
   const double c = -l.displacements[0].uy;
-  ring::StaticOptions by_drive = ringtest::driven_pinch(c, {}, by_load.steps);
-  by_drive.path = false;
-  const ring::StaticResult d = fem::solve_static(driven, fem_options(16), by_drive);
   std::printf(
       "fibre: c = %.12e m, P = %.12e N, reaction (%.3e, %.12e) N: %.3e; u(0) %.3e %.3e of c; plastic work %.3e\n", c, P,
       d.reaction[0], d.reaction[1], ringtest::rel(pinching(d.reaction), P),
