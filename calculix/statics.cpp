@@ -38,6 +38,7 @@ int newton_iterations(const std::string& sta) {
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the calculix statics");
+  ring::refuse_plates(st, "calculix");
   // static.displacement is the driven node's *BOUNDARY (static_deck); the resultant law stays
   // refused by the deck (ring.plastic.moment), with loads or driven.
   // An arch takes point loads (held to the elastica of DaDeppo & Schmidt's deep arch,

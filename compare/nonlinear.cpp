@@ -157,7 +157,8 @@ std::string units_note(const NonlinearTable& t) {
                    (plastic ? "; u_end: |u| at the end (m); dissipated: plastic work (J)" : "")
              : "ux, uy: displacement (m, ring-centred frame); u: its magnitude; dissipated: plastic work (J); "
                "limit_load: the load factor at the path's first limit point; reaction_x, reaction_y: the force at the "
-               "driven point at the end (N); peak_reaction: its largest magnitude along the path (N)";
+               "driven point at the end (N; with [plates], of the plate at plates.axis); peak_reaction: its largest magnitude "
+               "along the path (N); contact_length, contact_length_opposite: on each plate at the end (m)";
 }
 
 }  // namespace
@@ -266,8 +267,13 @@ NonlinearTable static_table(const std::string& title, const std::vector<ring::St
       };
     };
     using Quantity = std::pair<const char*, std::function<double(const ring::StaticResult&)>>;
-    const std::vector<Quantity> quantities = {{"reaction_x", component(0)}, {"reaction_y", component(1)},
-                                              {"peak_reaction", peak}};
+    std::vector<Quantity> quantities = {{"reaction_x", component(0)}, {"reaction_y", component(1)}, {"peak_reaction", peak}};
+    // [plates]: the contact length on each plate at the end (m).
+    const auto plates = [](const ring::StaticResult& r) { return r.plates; };
+    if (std::any_of(results.begin(), results.end(), plates) || (reference && plates(*reference))) {
+      quantities.push_back({"contact_length", [](const ring::StaticResult& r) { return r.contact_length[0]; }});
+      quantities.push_back({"contact_length_opposite", [](const ring::StaticResult& r) { return r.contact_length[1]; }});
+    }
     for (const auto& [name, value] : quantities) {
       NonlinearRow row{NonlinearRow::kWholeRing, name, {}, {}, std::nullopt, {}};
       for (const auto& r : results) row.value.push_back(value(r));

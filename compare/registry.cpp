@@ -454,7 +454,8 @@ SolverEntry wrapped(SolverEntry e) {
     auto statics = e.statics;
     e.statics = [statics](const ring::Scene& s) {
       ring::StaticResult r = statics(s);
-      r.driven = s.statics && s.statics->displacement;
+      r.driven = s.statics && s.statics->driven();
+      r.plates = s.statics && s.statics->plates;
       return r;
     };
   }
@@ -571,6 +572,13 @@ void require_finite(const ring::BucklingResult& r) {
   finite_shapes(r.solver, r.shapes, "buckling mode");
 }
 
+/// The driven path's values in require_finite's order: reaction x, y, contact lengths.
+std::string driven_value_name(std::size_t i) {
+  static const char* names[] = {"the reaction's x", "the reaction's y", "the contact length on the plate at plates.axis",
+                                "the contact length on the opposite plate"};
+  return names[i];
+}
+
 void require_finite(const ring::StaticResult& r) {
   finite_points(r.solver, r.displacements, "");
   finite_values(r.solver, r.node_x, [](std::size_t i) { return "x of node " + std::to_string(i + 1); });
@@ -584,11 +592,10 @@ void require_finite(const ring::StaticResult& r) {
     finite_points(r.solver, p.displacements, at);
     finite_values(r.solver, p.node_x, [&](std::size_t i) { return "x of node " + std::to_string(i + 1) + at; });
     finite_values(r.solver, p.node_y, [&](std::size_t i) { return "y of node " + std::to_string(i + 1) + at; });
-    finite_values(r.solver, {p.reaction[0], p.reaction[1]},
-                  [&](std::size_t i) { return (i ? "the reaction's y" : "the reaction's x") + at; });
+    finite_values(r.solver, {p.reaction[0], p.reaction[1], p.contact_length[0], p.contact_length[1]},
+                  [&](std::size_t i) { return driven_value_name(i) + at; });
   }
-  finite_values(r.solver, {r.reaction[0], r.reaction[1]},
-                [](std::size_t i) { return std::string(i ? "the reaction's y" : "the reaction's x"); });
+  finite_values(r.solver, {r.reaction[0], r.reaction[1], r.contact_length[0], r.contact_length[1]}, driven_value_name);
 }
 
 void require_finite(const ring::TimeHistory& r) {

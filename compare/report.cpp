@@ -214,6 +214,10 @@ void write_report(const std::string& dir, const RunReport& r) {
       }
       std::optional<std::array<double, 2>> drive;
       if (s.statics->displacement) drive = s.statics->displacement->value;
+      // The plate at plates.axis moves along -d_0 (ring/analysis.hpp, PlatePair): its force
+      // along that is the crushing force, against the plates' approach.
+      if (const auto& pl = s.statics->plates)
+        drive = {-pl->travel * std::cos(pl->axis * M_PI / 180.0), -pl->travel * std::sin(pl->axis * M_PI / 180.0)};
       plot_static_paths(dir, all, s.ring, drive);
       files.push_back("static_path.png");
       md << "\n![equilibrium paths](static_path.png)\n\n";

@@ -64,6 +64,7 @@ std::string static_json(const ring::StaticResult& r) {
     for (const auto& p : r.limit_points) {
       j["limit_points"].push_back({{"load_factor", p.load_factor}, {"displacements", displacements_json(p.displacements)}});
       if (r.driven) j["limit_points"].back()["reaction"] = p.reaction;
+      if (r.plates) j["limit_points"].back()["contact_length"] = p.contact_length;
     }
     j["path_points"] = r.path.size();
     // Every accepted equilibrium: the load factor, the recorded points' displacements and,
@@ -76,12 +77,15 @@ std::string static_json(const ring::StaticResult& r) {
                            {"dissipated", p.dissipated},
                            {"plastic_curvature", p.plastic_curvature}});
       if (r.driven) j["path"].back()["reaction"] = p.reaction;
+      if (r.plates) j["path"].back()["contact_length"] = p.contact_length;
     }
   }
   j["dissipated"] = r.dissipated;
   j["plastic_curvature"] = r.plastic_curvature;
-  // static.displacement: the force [Fx, Fy] (N) the ring needs at the driven point.
+  // static.displacement: the force [Fx, Fy] (N) the ring needs at the driven point; [plates]:
+  // the force of the plate at plates.axis, and the contact length on each plate (m).
   if (r.driven) j["reaction"] = r.reaction;
+  if (r.plates) j["contact_length"] = r.contact_length;
   return j.dump(2) + "\n";
 }
 
@@ -95,7 +99,11 @@ std::string static_text(const ring::StaticResult& r) {
   }
   s << "   angle deg        ux m        uy m\n";
   for (const auto& d : r.displacements) s << fmt::format("  {:10.4g}  {:10.4e}  {:10.4e}\n", d.angle, d.ux, d.uy);
-  if (r.driven) s << fmt::format("reaction at the driven point: Fx {:.6e} N, Fy {:.6e} N\n", r.reaction[0], r.reaction[1]);
+  if (r.plates)
+    s << fmt::format("force of the plate at plates.axis: Fx {:.6e} N, Fy {:.6e} N; contact lengths {:.6e} m, {:.6e} m\n",
+                     r.reaction[0], r.reaction[1], r.contact_length[0], r.contact_length[1]);
+  else if (r.driven)
+    s << fmt::format("reaction at the driven point: Fx {:.6e} N, Fy {:.6e} N\n", r.reaction[0], r.reaction[1]);
   return s.str();
 }
 
@@ -117,7 +125,8 @@ std::string static_path_csv(const ring::StaticResult& r) {
   s << "load_factor,ovalisation";
   if (!r.path.empty())
     for (const auto& d : r.path.front().displacements) s << ",ux_" << deg_label(d.angle) << ",uy_" << deg_label(d.angle);
-  s << ",dissipated,plastic_curvature" << (r.driven ? ",reaction_x,reaction_y" : "") << "\n";
+  s << ",dissipated,plastic_curvature" << (r.driven ? ",reaction_x,reaction_y" : "")
+    << (r.plates ? ",contact_length,contact_length_opposite" : "") << "\n";
   for (const auto& p : r.path) {
     s << p.load_factor << "," << p.ovalisation;
     for (const auto& d : p.displacements) s << "," << d.ux << "," << d.uy;
@@ -127,6 +136,7 @@ std::string static_path_csv(const ring::StaticResult& r) {
       if (std::isfinite(v)) s << v;
     }
     if (r.driven) s << "," << p.reaction[0] << "," << p.reaction[1];
+    if (r.plates) s << "," << p.contact_length[0] << "," << p.contact_length[1];
     s << "\n";
   }
   return s.str();
@@ -148,8 +158,12 @@ void plot_driven_paths(const std::string& dir, const std::string& name, const st
     }
     if (!x.x.empty()) series.push_back(x);
   }
-  plot_series(dir, name, "Driven path: the force at the driven point against its travel",
-              "travel of the driven point along static.displacement.value (m)", "reaction along it (N)", series);
+  if (!results.empty() && results.front().plates)
+    plot_series(dir, name, "Crushed between plates: the force on a plate against the plates' approach",
+                "approach of the plates (m)", "force on each plate (N)", series);
+  else
+    plot_series(dir, name, "Driven path: the force at the driven point against its travel",
+                "travel of the driven point along static.displacement.value (m)", "reaction along it (N)", series);
 }
 
 }  // namespace

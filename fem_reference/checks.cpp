@@ -285,12 +285,8 @@ void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const r
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
   // A driven point holds the ring as a pin does (its two multipliers, static_path.cpp).
-  ring::RingSpec held = spec;
-  if (st.displacement) {
-    if (held.supports.pin) held.supports.pins.push_back(st.displacement->at);
-    else held.supports.pin = st.displacement->at;
-  }
-  need(ring::static_rigid_modes(held, st.loads) == 0,
+  ring::refuse_plates(st, "the fem beam");
+  need(ring::static_rigid_modes(spec, st) == 0,
        "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");
   // static.path follows one discretization's path to its end (contact as a result): the

@@ -40,8 +40,9 @@ struct Plugin {
 /// modes_under_load, 5 ResponseOptions::progress (a std::function, called inside the plug-in;
 /// safe because both sides share one compiler and standard library, as for std::string), 6
 /// RingSpec::rotation and ModalResult's waves, frame and spin_pairs (a spinning ring), 7
-/// StaticOptions::displacement and the reactions of StaticResult and PathPoint.
-constexpr int kAbiVersion = 7;
+/// StaticOptions::displacement and the reactions of StaticResult and PathPoint, 8
+/// StaticOptions::plates and the contact lengths of StaticResult and PathPoint.
+constexpr int kAbiVersion = 8;
 
 }  // namespace fem
 

@@ -305,13 +305,9 @@ void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options
   check_chain(spec, options, "statics");
   if (statics.displacement) check_displacement(spec, options, statics);
   check_loads(spec, options, statics.loads, "static");
+  ring::refuse_plates(statics, "the lumped-mass model");
   // A driven point holds the ring as a pin does (the scene reader's rule).
-  ring::RingSpec held = spec;
-  if (statics.displacement) {
-    if (held.supports.pin) held.supports.pins.push_back(statics.displacement->at);
-    else held.supports.pin = statics.displacement->at;
-  }
-  if (ring::static_rigid_modes(held, statics.loads) > 0)
+  if (ring::static_rigid_modes(spec, statics) > 0)
     throw std::invalid_argument(
         "lumped statics: needs a roller as well as the pin (supports.roller), or further pins, a clamp, springs, "
         "a foundation or gravity from which the ring hangs, to keep it from turning about the pin");
@@ -328,6 +324,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::LumpedOptions
   refuse_arch_here(spec, "the lumped modes under load (modes.preload)");
   // The modes about a driven state would need the driven point's rows in the eigenproblem.
   ring::refuse_displacement(statics, "the lumped modes under load (modes.preload)");
+  ring::refuse_plates(statics, "the lumped modes under load (modes.preload)");
   check_plastic(spec, options, "modes under load (modes.preload)");
   if (options.variant == ring::LumpedOptions::Variant::frame)
     throw std::invalid_argument("lumped: modes.preload = \"static\": lumped.variant = \"frame\" lumps no rotary "

@@ -205,6 +205,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody statics", PlasticUse::taken);
   if (statics.displacement) check_drive(spec, options, statics);
+  ring::refuse_plates(statics, "the multibody chain");
   // The chain's loads hold the centrifugal force of a spinning spec (loading.hpp), but the
   // statics have no turning frame to report in yet.
   ring::refuse_rotation(spec, "the multibody statics");
@@ -232,18 +233,13 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   // A rigid motion the supports leave makes K singular in it: the dead load then turns the
   // ring until it hangs along its line of action. The tangent stays regular only away from
   // that, so refuse rather than guess.
-  // A driven point holds the ring as a pin does (as the scene reader counts it).
-  ring::RingSpec counted = spec;
-  if (statics.displacement) {
-    if (counted.supports.pin) counted.supports.pins.push_back(statics.displacement->at);
-    else counted.supports.pin = statics.displacement->at;
-  }
-  const int rigid = ring::static_rigid_modes(counted, statics.loads);
+  // A driven point holds the ring as a pin does (the scene reader's rule).
+  const int rigid = ring::static_rigid_modes(spec, statics);
   if (spec.is_arch() && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the arch (ring.arc) is free to move rigidly (" +
                                 std::to_string(rigid) + " rigid motion(s)): pin or clamp its ends (supports.pin, "
                                 "supports.pins, supports.clamp)");
-  if (!counted.supports.pin && rigid > 0)
+  if (!spec.supports.pin && !statics.displacement && rigid > 0)
     throw std::invalid_argument("multibody::solve_static: the ring needs a pin (supports.pin)");
   if (rigid > 0)
     throw std::invalid_argument(
@@ -257,6 +253,7 @@ void check_preloaded_modes(const ring::RingSpec& spec, const ring::MultibodyOpti
   ring::refuse_rotation(spec, "the multibody modes under load (modes.preload)");
   // The modes about a driven equilibrium would need the drive's rows in their pencil.
   ring::refuse_displacement(statics, "the multibody modes under load (modes.preload)");
+  ring::refuse_plates(statics, "the multibody modes under load (modes.preload)");
   check_modes(spec, options);
   check_static(spec, options, statics);
   if (spec.plastic)

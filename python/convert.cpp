@@ -196,7 +196,7 @@ Static to_python(const ring::StaticResult& r) {
   // the recorded points' displacements alone.
   auto table = [&r](const std::vector<ring::PathPoint>& path, bool whole) {
     const std::size_t n = path.size(), points = path.front().displacements.size();
-    std::vector<double> load(n), oval(n), dissipated(n), plastic(n), rx(n), ry(n);
+    std::vector<double> load(n), oval(n), dissipated(n), plastic(n), rx(n), ry(n), c0(n), c1(n);
     std::vector<std::vector<double>> ux(points, std::vector<double>(n)), uy = ux;
     for (std::size_t k = 0; k < n; ++k) {
       const ring::PathPoint& p = path[k];
@@ -206,6 +206,8 @@ Static to_python(const ring::StaticResult& r) {
       plastic[k] = p.plastic_curvature;
       rx[k] = p.reaction[0];
       ry[k] = p.reaction[1];
+      c0[k] = p.contact_length[0];
+      c1[k] = p.contact_length[1];
       for (std::size_t i = 0; i < points && i < p.displacements.size(); ++i) {
         ux[i][k] = p.displacements[i].ux;
         uy[i][k] = p.displacements[i].uy;
@@ -237,6 +239,12 @@ Static to_python(const ring::StaticResult& r) {
       c.order.push_back("reaction_y");
       c.real.push_back({"reaction_y", &ry});
     }
+    if (r.plates) {
+      c.order.push_back("contact_length");
+      c.real.push_back({"contact_length", &c0});
+      c.order.push_back("contact_length_opposite");
+      c.real.push_back({"contact_length_opposite", &c1});
+    }
     return structured(n, c);
   };
   if (!r.path.empty()) o.path = table(r.path, true);
@@ -247,6 +255,7 @@ Static to_python(const ring::StaticResult& r) {
   o.dissipated = r.dissipated;
   o.plastic_curvature = r.plastic_curvature;
   o.reaction = r.driven ? py::object(py::make_tuple(r.reaction[0], r.reaction[1])) : py::none();
+  o.contact_length = r.plates ? py::object(py::make_tuple(r.contact_length[0], r.contact_length[1])) : py::none();
   o.unknowns = r.unknowns;
   o.steps = r.steps;
   o.newton_iterations = r.newton_iterations;

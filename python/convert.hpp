@@ -49,6 +49,7 @@ struct Static {
   py::object branch_points;
   py::object limit_points;  ///< structured ndarray: load_factor, ux_<deg>, uy_<deg> (None without one)
   py::object reaction;      ///< static.displacement: (Fx, Fy) at the driven point, N (None otherwise)
+  py::object contact_length;  ///< [plates]: (on the plate at plates.axis, on the other), m (None otherwise)
   std::string end;
   double end_load = 1.0, dissipated = 0.0, plastic_curvature = 0.0;
   long long unknowns = 0;

@@ -363,7 +363,8 @@ PYBIND11_MODULE(ringvib, m) {
                     "static.path or static.history: every accepted equilibrium from rest, a structured ndarray\n"
                     "with the columns of static_path_<solver>.csv: load_factor, ovalisation, ux_<deg>, uy_<deg>\n"
                     "per recorded point (m), dissipated (J), plastic_curvature (1/m), and with\n"
-                    "static.displacement reaction_x, reaction_y (N). None without a path.")
+                    "static.displacement or [plates] reaction_x, reaction_y (N), and with [plates]\n"
+                    "contact_length, contact_length_opposite (m). None without a path.")
       .def_readonly("branch_points", &Static::branch_points, "Load factors where the path switched onto a branch.")
       .def_readonly("limit_points", &Static::limit_points,
                     "static.path: the located limit points (maxima of the load factor along the path), a\n"
@@ -375,8 +376,11 @@ PYBIND11_MODULE(ringvib, m) {
       .def_readonly("plastic_curvature", &Static::plastic_curvature,
                     "ring.plastic: the largest plastic curvature left in the ring, 1/m.")
       .def_readonly("reaction", &Static::reaction,
-                    "static.displacement: the force (Fx, Fy) the ring needs at the driven point at the end, N.\n"
-                    "None when loads drive the path.")
+                    "static.displacement: the force (Fx, Fy) the ring needs at the driven point at the end, N;\n"
+                    "[plates]: the force of the plate at plates.axis on the ring. None when loads drive the path.")
+      .def_readonly("contact_length", &Static::contact_length,
+                    "[plates]: the contact length (on the plate at plates.axis, on the other) at the end, m.\n"
+                    "None without plates.")
       .def_readonly("unknowns", &Static::unknowns, "Size of the nonlinear system.")
       .def_readonly("steps", &Static::steps, "Load steps (or arc-length steps) taken.")
       .def_readonly("newton_iterations", &Static::newton_iterations)

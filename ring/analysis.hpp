@@ -70,7 +70,80 @@ struct StaticOptions {
     std::array<double, 2> value{0, 0};  ///< m, x and y, at load factor 1
   };
   std::optional<Displacement> displacement;
+  /// [plates]: the path is driven by two rigid, frictionless flat plates instead of loads (a
+  /// tube crushed between plates, DeRuntz & Hodge 1963). The plates are normal to the
+  /// diameter at `axis` and touch the ring's outer surface at rest, at the points `axis` and
+  /// `axis` + 180; each moves towards the centre by s travel / 2 (s the load factor, through
+  /// the history), so that they approach each other by s travel and the ring's centre stays.
+  /// See PlatePair for the contact law every solver uses. No loads act with them, and the
+  /// ring has no supports: the plates hold it along the axis, and the two points of first
+  /// contact keep their position along the plates (one constraint row each: the ring's
+  /// sliding and turning between frictionless plates, which the symmetric crushing leaves
+  /// unloaded; their multipliers stay ~0). Both points are nodes of every model.
+  struct Plates {
+    double axis = 90.0;      ///< degrees: the plates' normal, and the first contact point
+    double travel = 0.0;     ///< m, the plates' approach at load factor 1, in (0, 2 R)
+    double stiffness = 0.0;  ///< N/m^2: the penalty per metre of ring (PlatePair)
+  };
+  std::optional<Plates> plates;
+  /// The path is driven (static.displacement or [plates]): the load factor is the fraction of
+  /// the prescribed motion, and the reaction (PathPoint::reaction) is the result.
+  bool driven() const { return displacement.has_value() || plates.has_value(); }
 };
+
+/// The contact law of [plates], one for every solver. Frictionless plate p (0: the plate at
+/// `axis`, 1: the one at `axis` + 180) is a half-plane whose boundary lies R - s travel / 2
+/// from the ring's centre along its normal d_p (d_0 = (cos axis, sin axis), d_1 = -d_0). The
+/// ring's outer surface at a point x of the centroid line (ring-centred, m) is taken as
+/// x + (h / 2) d_p, the section lying flat on the plate, so the half thickness cancels and
+/// the gap is
+///
+///   g_p(x, s) = R - s travel / 2 - d_p . x    (m; 0 at the contact points at rest).
+///
+/// The plate presses the ring with k <-g>, N per metre of centroid line, along -d_p (a
+/// penalty: the energy 1/2 k <-g>^2 per metre, integrated by each solver's rule for its
+/// foundation). k defaults to E A^2 / (12 I), which is E b / h for a b x h rectangle: the
+/// wall's own stiffness through its thickness, so that the plate sinks into the wall by about
+/// what the wall itself would be squeezed, F / (k l) over a contact length l, a few 1e-5 R
+/// at a crushing load (rigid plates are the limit k -> infinity). The tangent stiffness is k
+/// where in_contact(g) (g <= 1e-12 R, which holds the two touching points at rest, so that
+/// the first tangent is regular along the axis), else 0.
+struct PlatePair {
+  double R = 1.0;
+  double travel = 0.0;
+  double k = 0.0;
+  std::array<double, 2> d{0.0, 1.0};  ///< d_0, the unit normal of the plate at `axis`
+
+  PlatePair(const RingSpec& spec, const StaticOptions::Plates& plates);
+  /// g_p at (x, y), load factor s; m.
+  double gap(int plate, double x, double y, double s) const {
+    const double along = d[0] * x + d[1] * y;
+    return R - 0.5 * s * travel - (plate == 0 ? along : -along);
+  }
+  bool in_contact(double g) const { return g <= 1e-12 * R; }
+  /// The pressure k <-g>, N/m; 0 out of contact.
+  double pressure(double g) const { return g < 0.0 ? -k * g : 0.0; }
+  /// The penalty energy per metre, 1/2 k <-g>^2, J/m.
+  double energy(double g) const { return g < 0.0 ? 0.5 * k * g * g : 0.0; }
+  /// The gaps of both plates at every point of a closed ring's centroid line, and the
+  /// contact length on each: the arc length (along the chords between consecutive points)
+  /// from the first to the last point in contact on the half of the ring that faces the
+  /// plate, each end extended to where the gap, linear between two points, crosses zero.
+  /// This is the extent of the contact, the length of DeRuntz & Hodge's flat part (a plate
+  /// may touch an elastic wall at the ends of that part only, the middle lifting by far less
+  /// than the penalty's sinking). (x[i], y[i]): deformed points in order around the ring,
+  /// m, at least 4. O(points).
+  std::array<double, 2> contact_lengths(const std::vector<double>& x, const std::vector<double>& y, double s) const;
+};
+
+/// The rigid motions that `statics` leaves free (a static analysis needs 0):
+/// static_rigid_modes(spec, statics.loads), with a driven point (static.displacement)
+/// counted as a pin, and none with [plates] (the plates and the two points of first contact
+/// hold the free ring).
+int static_rigid_modes(const RingSpec& spec, const StaticOptions& statics);
+
+/// Refuses [plates] (exit 2 naming the key) for `who`, a solver that has no plates yet.
+void refuse_plates(const StaticOptions& statics, const std::string& who);
 
 /// Refuses static.displacement (exit 2 naming the key) for `who`, a solver that has no
 /// displacement control: "<who> has no displacement control (static.displacement) yet".

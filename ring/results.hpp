@@ -137,6 +137,10 @@ struct PathPoint {
   /// and y (the force the rig applies to the ring; a pinch downwards has reaction[1] < 0).
   /// 0 without displacement control.
   std::array<double, 2> reaction{0.0, 0.0};
+  /// [plates]: the contact length on each plate (the one at plates.axis, then the opposite
+  /// one), m (ring::PlatePair::contact_lengths); `reaction` is then the force of the plate at
+  /// plates.axis on the ring, N, x and y (along -d_0). 0 without plates.
+  std::array<double, 2> contact_length{0.0, 0.0};
 };
 
 /// The most nodes a PathPoint keeps of its deformed ring: a figure's resolution, and the
@@ -173,9 +177,13 @@ struct StaticResult {
   double plastic_curvature = 0.0;
   /// static.displacement, at the end: as PathPoint's (N, x and y).
   std::array<double, 2> reaction{0.0, 0.0};
-  /// The path was driven by static.displacement (the registry sets it from the scene): the
-  /// load factor is the fraction of the prescribed displacement, `reaction` the result.
+  /// [plates], at the end: as PathPoint's (m).
+  std::array<double, 2> contact_length{0.0, 0.0};
+  /// The path was driven by static.displacement or [plates] (the registry sets it from the
+  /// scene): the load factor is the fraction of the prescribed motion, `reaction` the result.
   bool driven = false;
+  /// The drive was [plates] (the registry sets it): contact_length is a result.
+  bool plates = false;
 };
 
 /// Time history of a forced response; one entry per accepted step (t = 0 first).

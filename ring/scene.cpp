@@ -145,6 +145,31 @@ StaticOptions::Displacement read_displacement(const Reader& r, const toml::table
   return d;
 }
 
+/// [plates] axis = DEG, travel = METRES, stiffness = N/m^2: the plates that drive [static]
+/// (ring/analysis.hpp, StaticOptions::Plates and PlatePair).
+StaticOptions::Plates read_plates(const Reader& r, const toml::table& t, const RingSpec& ring) {
+  const std::string name = "plates";
+  r.known_keys(t, name, {"axis", "travel", "stiffness"});
+  if (!t.contains("travel"))
+    r.fail(name + ".travel", &t, "missing: the plates' approach in m at load factor 1 (they crush the ring by it)");
+  StaticOptions::Plates p;
+  p.axis = wrap_degrees(r.number(t, name, "axis", 90.0, -360.0, 360.0));
+  // Two plates an approach of 2 R apart have flattened the ring (its wall is not modelled
+  // through its thickness): the approach stays below the diameter.
+  const double diameter = 2.0 * ring.radius;
+  p.travel = r.number(t, name, "travel", 0.0, 0.0, diameter);
+  if (!(p.travel > 0.0) || !(p.travel < diameter))
+    r.fail(name + ".travel", t.get("travel"),
+           "expected an approach in (0, " + fmt_num(diameter) + ") m (below the diameter), got " + fmt_num(p.travel));
+  // E A^2 / (12 I): E b / h for a b x h rectangle, the wall's own stiffness through its depth.
+  const double wall = ring.E * ring.A() * ring.A() / (12.0 * ring.I());
+  p.stiffness = r.number(t, name, "stiffness", wall, 0.0, 1e6 * wall);
+  if (!(p.stiffness > 0.0))
+    r.fail(name + ".stiffness", t.get("stiffness"), "expected a penalty stiffness > 0 N/m^2 (default E A^2 / (12 I) = " +
+                                                        fmt_num(wall) + ")");
+  return p;
+}
+
 /// The loads of [static] or [response]: point loads (`loads = [{at, force}, ...]`, or the
 /// one-load shorthand `at`/`force`), `pressure = {value, kind}` and `gravity = [gx, gy]`;
 /// at least one of them.
@@ -461,6 +486,10 @@ void check_nodes(const Reader& r, const Scene& s, const toml::table& root, const
       points.push_back({point_load_key("static", s.statics->loads, i), s.statics->loads.points[i].angle});
     for (double a : s.statics->record) points.push_back({"static.record", a});
     if (s.statics->displacement) points.push_back({"static.displacement.at", s.statics->displacement->at});
+    if (const auto& pl = s.statics->plates) {
+      points.push_back({"plates.axis", pl->axis});
+      points.push_back({"plates.axis", wrap_degrees(pl->axis + 180.0)});
+    }
   }
   if (s.buckling)
     for (std::size_t i = 0; i < s.buckling->loads.points.size(); ++i)
@@ -638,7 +667,7 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   Scene s;
   s.reference_solver = schema.reference_solver;
   std::vector<std::string> sections = {"title", "ring", "supports", "masses", "foundation", "rotation"};
-  const std::vector<std::string> analyses = {"modes", "table", "gates", "response", "static", "buckling"};
+  const std::vector<std::string> analyses = {"modes", "table", "gates", "response", "static", "buckling", "plates"};
   for (const auto& m : schema.solvers) {
     if (std::find(sections.begin(), sections.end(), m.name) != sections.end() ||
         std::find(analyses.begin(), analyses.end(), m.name) != analyses.end())
@@ -787,7 +816,21 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     r.known_keys(*t, sec, {"solvers", "reference", "at", "force", "loads", "pressure", "gravity", "steps", "record", "path", "branch",
                            "history", "displacement"});
     StaticOptions o;
-    if (const toml::table* dt = r.table(*t, sec, "displacement")) {
+    const toml::table* plates = r.table(root, "", "plates");
+    if (plates) {
+      o.plates = read_plates(r, *plates, s.ring);
+      for (const char* key : {"at", "force", "loads", "pressure", "gravity"})
+        if (t->contains(key))
+          r.fail(sec + "." + key, t->get(key), "[plates] drive the path, and loads would be scaled with them: give the one or the other");
+      if (t->contains("displacement"))
+        r.fail("static.displacement", t->get("displacement"), "[plates] drive the path already: give the one or the other");
+      if (s.ring.arc) r.fail("plates", plates, "crush a closed ring: an arch (ring.arc) between plates is not implemented");
+      const auto& sup = s.ring.supports;
+      if (sup.pin || sup.roller || !sup.pins.empty() || sup.clamp)
+        r.fail("plates", plates,
+               "the plates hold the ring themselves (along their axis, and at the two points of first contact along "
+               "them): remove supports.pin, .roller, .pins and .clamp");
+    } else if (const toml::table* dt = r.table(*t, sec, "displacement")) {
       o.displacement = read_displacement(r, *dt, s.ring);
       for (const char* key : {"at", "force", "loads", "pressure", "gravity"})
         if (t->contains(key))
@@ -797,13 +840,9 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
       o.loads = read_loads(r, *t, sec);
     }
     // A dead load has an equilibrium only when nothing is left to move rigidly (gravity may
-    // hold the rotation of a ring that hangs from its pin); a driven point holds as a pin does.
-    RingSpec held = s.ring;
-    if (o.displacement) {
-      if (held.supports.pin) held.supports.pins.push_back(o.displacement->at);
-      else held.supports.pin = o.displacement->at;
-    }
-    if (const int rigid = static_rigid_modes(held, o.loads); rigid > 0)
+    // hold the rotation of a ring that hangs from its pin); a driven point holds as a pin
+    // does, and plates hold a free ring.
+    if (const int rigid = static_rigid_modes(s.ring, o); rigid > 0)
       r.fail(s.ring.supports.pin ? "supports.roller" : "supports.pin", &root,
              s.ring.supports.pin
                  ? "a static analysis needs a roller as well as the pin (or a second pin, a clamp, springs, a "
@@ -836,8 +875,8 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
     const bool own = t->contains("at") || t->contains("force") || t->contains("loads") || t->contains("pressure") ||
                      t->contains("gravity");
     if (own) o.loads = read_loads(r, *t, sec);
-    else if (s.statics && s.statics->displacement)
-      r.fail("buckling.loads", t, "has no load: [static] drives a displacement (static.displacement), not loads; give "
+    else if (s.statics && s.statics->driven())
+      r.fail("buckling.loads", t, "has no load: [static] is driven (static.displacement or [plates]), not loaded; give "
                                   "buckling.loads, .at/.force, .pressure or .gravity");
     else if (s.statics) o.loads = s.statics->loads;
     else r.fail("buckling.loads", t, "has no load: give buckling.loads, .at/.force, .pressure or .gravity, or a [static] "
@@ -869,11 +908,13 @@ Scene build(const toml::table& root, const Reader& r, const SceneSchema& schema)
   }
 
   if (const toml::table* t = r.table(root, "", "rotation")) read_rotation(r, *t, s);
+  if (root.get("plates") && !s.statics)
+    r.fail("plates", root.get("plates"), "[plates] drive a static path: the scene needs a [static] section");
 
-  if (s.modes.preload_static && s.statics && s.statics->displacement)
+  if (s.modes.preload_static && s.statics && s.statics->driven())
     r.fail("modes.preload", root.at_path("modes.preload").node(),
-           "\"static\" takes the loads of [static], and its path is driven by static.displacement: the modes about a "
-           "driven state are not implemented");
+           "\"static\" takes the loads of [static], and its path is driven (static.displacement or [plates]): the "
+           "modes about a driven state are not implemented");
   if (s.modes.preload_static && !s.statics)
     r.fail("modes.preload", root.at_path("modes.preload").node(),
            "\"static\" takes the equilibrium of [static], and the scene has no [static] section");

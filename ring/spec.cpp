@@ -289,6 +289,53 @@ void refuse_displacement(const StaticOptions& statics, const std::string& who) {
                      who + " has no displacement control (static.displacement) yet: drive the path by loads");
 }
 
+int static_rigid_modes(const RingSpec& spec, const StaticOptions& statics) {
+  if (statics.plates) return 0;
+  if (!statics.displacement) return static_rigid_modes(spec, statics.loads);
+  RingSpec held = spec;
+  if (held.supports.pin) held.supports.pins.push_back(statics.displacement->at);
+  else held.supports.pin = statics.displacement->at;
+  return static_rigid_modes(held, statics.loads);
+}
+
+void refuse_plates(const StaticOptions& statics, const std::string& who) {
+  if (statics.plates) throw InputError("", "plates", who + " has no rigid plates ([plates]) yet: drive the path by static.displacement");
+}
+
+PlatePair::PlatePair(const RingSpec& spec, const StaticOptions::Plates& plates)
+    : R(spec.radius), travel(plates.travel), k(plates.stiffness),
+      d{std::cos(plates.axis * M_PI / 180.0), std::sin(plates.axis * M_PI / 180.0)} {}
+
+std::array<double, 2> PlatePair::contact_lengths(const std::vector<double>& x, const std::vector<double>& y, double s) const {
+  const int n = static_cast<int>(x.size());
+  if (n < 4 || static_cast<int>(y.size()) != n) throw std::invalid_argument("PlatePair::contact_lengths: needs at least 4 points, x and y alike");
+  std::array<double, 2> lengths{0.0, 0.0};
+  const auto at = [n](int i) { return ((i % n) + n) % n; };
+  const auto chord = [&](int i, int j) { return std::hypot(x[at(j)] - x[at(i)], y[at(j)] - y[at(i)]); };
+  for (int p = 0; p < 2; ++p) {
+    const double sign = p == 0 ? 1.0 : -1.0;
+    const auto facing = [&](int i) { return sign * (d[0] * x[at(i)] + d[1] * y[at(i)]); };
+    const auto g = [&](int i) { return gap(p, x[at(i)], y[at(i)], s); };
+    int c = 0;
+    for (int i = 1; i < n; ++i)
+      if (facing(i) > facing(c)) c = i;
+    if (g(c) > 0.0) continue;
+    // The furthest point in contact on each side of c within the facing half, and the part
+    // of the next chord up to the gap's zero.
+    double length = 0.0;
+    for (int dir : {1, -1}) {
+      int last = c;
+      for (int step = 1; step < n / 2 && facing(c + dir * step) > 0.0; ++step)
+        if (g(c + dir * step) <= 0.0) last = c + dir * step;
+      for (int i = c; i != last; i += dir) length += chord(i, i + dir);
+      const double g0 = g(last), g1 = g(last + dir);
+      if (g1 > 0.0) length += chord(last, last + dir) * (-g0 / (g1 - g0));
+    }
+    lengths[p] = length;
+  }
+  return lengths;
+}
+
 void refuse_rotation(const RingSpec& spec, const std::string& who) {
   if (spec.rotation.spinning()) throw std::invalid_argument(who + " does not take a spinning ring (rotation.speed) yet");
 }

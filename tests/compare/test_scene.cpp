@@ -451,6 +451,47 @@ TEST(SceneDisplacement, AnalysesThatTakeTheStaticLoadsAreRefused) {
   expect_rejected(kDriven + "[buckling]\ncount = 2\n", "buckling.loads", "static.displacement");
   expect_rejected(replace(kDriven, "[modes]", "[modes]\npreload = \"static\""), "modes.preload", "driven");
 }
+// [plates] (ring/analysis.hpp, StaticOptions::Plates): the paper's ring (R = 10 m, a section
+// of area A and inertia I) with no supports, crushed along the vertical by 2 m.
+const std::string kPlates = replace(kPaper, "pin = 180.0", "") + "[plates]\naxis = 90.0\ntravel = 2.0\n[static]\n";
+TEST(ScenePlates, ReadsThePlatesAndTheirDefaultStiffnessAndHoldsTheFreeRing) {
+  const ring::Scene s = cmp::parse_scene(kPlates, "p.toml", {});
+  ASSERT_TRUE(s.statics.has_value() && s.statics->plates.has_value());
+  EXPECT_TRUE(s.statics->driven());
+  EXPECT_DOUBLE_EQ(s.statics->plates->axis, 90.0);
+  EXPECT_DOUBLE_EQ(s.statics->plates->travel, 2.0);
+  // The wall's stiffness through its depth: E A^2 / (12 I), E b / h for a rectangle.
+  EXPECT_NEAR(s.statics->plates->stiffness, s.ring.E * s.ring.A() * s.ring.A() / (12.0 * s.ring.I()),
+              1e-12 * s.statics->plates->stiffness);
+  EXPECT_EQ(ring::static_rigid_modes(s.ring, *s.statics), 0);
+  EXPECT_GT(s.ring.rigid_modes(), 0);  // the ring itself is free: the plates hold it
+  EXPECT_DOUBLE_EQ(cmp::parse_scene(replace(kPlates, "travel = 2.0", "travel = 2.0\nstiffness = 5.0e6"), "p.toml", {})
+                       .statics->plates->stiffness,
+                   5.0e6);
+}
+TEST(ScenePlates, HostileValuesAreRefusedNamingTheKey) {
+  const auto with = [](const std::string& t) { return replace(kPlates, "travel = 2.0", t); };
+  expect_rejected(with(""), "plates.travel", "missing");
+  for (const char* bad : {"travel = 0.0", "travel = -1.0", "travel = 20.0", "travel = 1e300", "travel = nan", "travel = inf"})
+    expect_rejected(with(bad), "plates.travel");
+  expect_rejected(with("travel = 2.0\nstiffness = 0.0"), "plates.stiffness");
+  expect_rejected(with("travel = 2.0\nstiffness = -1.0"), "plates.stiffness");
+  expect_rejected(with("travel = 2.0\nstiffness = nan"), "plates.stiffness");
+  expect_rejected(with("travel = 2.0\ngap = 1.0"), "plates.gap");
+  expect_rejected(replace(kPlates, "axis = 90.0", "axis = nan"), "plates.axis");
+  // the two contact points are nodes of every model (multibody.n = 40: every 9 degrees)
+  expect_rejected(replace(kPlates, "axis = 90.0", "axis = 95.0"), "plates.axis", "not a node");
+  // the plates drive: no loads, no driven point, no supports, a closed ring, a [static]
+  expect_rejected(kPlates + "at = 0.0\nforce = [1.0, 0.0]\n", "static.at", "one or the other");
+  expect_rejected(kPlates + "displacement = { at = 0.0, value = [-0.5, 0.0] }\n", "static.displacement", "already");
+  expect_rejected(replace(kPlates, "[plates]", "[supports.more]\n[plates]"), "supports.more");
+  expect_rejected(kPaper + "[plates]\ntravel = 2.0\n[static]\n", "plates", "supports.pin");
+  expect_rejected(replace(kPlates, "[static]\n", ""), "plates", "[static]");
+}
+TEST(ScenePlates, AnalysesThatTakeTheStaticLoadsAreRefused) {
+  expect_rejected(kPlates + "[buckling]\ncount = 2\n", "buckling.loads", "[plates]");
+  expect_rejected(replace(kPlates, "[modes]", "[modes]\npreload = \"static\""), "modes.preload", "driven");
+}
 TEST(SceneReject, StaticsWithoutRoller) {
   expect_rejected(kPaper + "[static]\nat = 0.0\nforce = [-1.0, 0.0]\n", "supports.roller", "turn about the pin");
 }
