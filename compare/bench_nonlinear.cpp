@@ -38,15 +38,35 @@ double measured_point(const ring::Loads& loads, const std::vector<double>& recor
   return loads.points.empty() ? record.front() : loads.points.front().angle;
 }
 
-/// What a load-factor analysis measures (buckling, the path to contact).
+/// What a path's bench measures (PathMeasure's analyses and buckling), in words.
 std::string what_is_measured(const std::string& analysis) {
-  return analysis == "buckling" ? "first critical load factor" : "load factor at which the ring touches itself";
+  if (analysis == "buckling") return "first critical load factor";
+  if (analysis == "peak_force") return "peak force along the driven path (N)";
+  if (analysis == "path_end") return "|u| at the end of the path (m)";
+  return "load factor at which the ring touches itself";
 }
 
-/// The path to contact of `e` on `s`: its touch's load factor and the solver's time; a path
+/// What bench measures on a static path, by what drives it: a driven path (static.displacement,
+/// [plates]) its peak force (a crushing test's peak load, N), a plastic ring under loads the
+/// measured point's |u| at the path's end (the residual displacement where the history ends
+/// unloaded), and an elastic path under loads the load factor at which it touches itself.
+std::string path_measure(const ring::Scene& s) {
+  if (s.statics->driven()) return "peak_force";
+  if (s.ring.plastic) return "path_end";
+  return "contact";
+}
+
+/// `e`'s path on `s`, measured as path_measure says, and the solver's time; a path to contact
 /// that reaches the full load has no contact to measure.
-std::pair<double, double> contact_load(const SolverEntry& e, const ring::Scene& s) {
+std::pair<double, double> path_value(const SolverEntry& e, const ring::Scene& s, double angle) {
   const ring::StaticResult r = e.statics(s);
+  const std::string measure = path_measure(s);
+  if (measure == "peak_force") {
+    double peak = std::hypot(r.reaction[0], r.reaction[1]);
+    for (const auto& p : r.path) peak = std::max(peak, std::hypot(p.reaction[0], p.reaction[1]));
+    return {peak, r.seconds};
+  }
+  if (measure == "path_end") return {loaded_value(r, angle), r.seconds};
   if (r.end.rfind("contact", 0) != 0)
     throw ring::InputError(s.file, "static.path",
                            "bench measures the load at which the path touches, and " + e.name + " at " + e.size_name +
@@ -69,6 +89,8 @@ bool nodes_fit(const ring::Scene& s, int n) {
   }
   if (s.statics) {
     points.insert(points.end(), s.statics->record.begin(), s.statics->record.end());
+    if (s.statics->displacement) points.push_back(s.statics->displacement->at);
+    if (s.statics->plates) points.push_back(s.statics->plates->axis), points.push_back(s.statics->plates->axis + 180.0);
   }
   for (double a : points)
     if (!ring::on_node(a, anchor, n)) return false;
@@ -180,7 +202,7 @@ void check_bench_nonlinear(const ring::Scene& scene) {
   if (scene.statics && scene.statics->path && !ref.statics)
     throw ring::InputError(scene.file, "static.path", "bench needs the reference solver's path, and the " + ref.name +
                                                           " solver has no statics in this build");
-  else if (scene.statics && !scene.statics->path)
+  else if (scene.statics && (!scene.statics->path || path_measure(scene) == "path_end"))
     check("static", bool(ref.statics), "statics", scene.statics->loads, scene.statics->record);
 }
 
@@ -201,20 +223,22 @@ std::vector<NonlinearBench> bench_nonlinear(const ring::Scene& scene, std::ostre
         100.0 * scene.fem.response_tolerance, progress));
   }
   if (scene.statics && scene.statics->path) {
-    // The path to contact: the reference solver's own path at twice and four times the
+    // A path (path_measure): the reference solver's own path at twice and four times the
     // scene's size (no converged reference follows a path: fem.reference refuses it), the
     // finer the reference, their difference its error estimate and the sweep's floor.
     const SolverEntry& ref = solver(scene.reference_solver);
+    const std::string measure = path_measure(scene);
+    const double at = measure == "path_end" ? measured_point(scene.statics->loads, scene.statics->record) : NAN;
     double floor_pct = 0.0;
     NonlinearBench b = sweep(
-        scene, "contact", NAN, scene.static_request.solvers,
+        scene, measure, at, scene.static_request.solvers,
         [&](const ring::Scene& s, const SolverEntry* e) {
-          if (e) return contact_load(*e, s);
+          if (e) return path_value(*e, s, at);
           ring::Scene coarse = s, fine = s;
           ref.set_size(coarse, 2 * ref.size(s));
           ref.set_size(fine, 4 * ref.size(s));
-          const auto [v2, t2] = contact_load(ref, coarse);
-          const auto [v4, t4] = contact_load(ref, fine);
+          const auto [v2, t2] = path_value(ref, coarse, at);
+          const auto [v4, t4] = path_value(ref, fine, at);
           floor_pct = 100.0 * std::abs(v4 - v2) / v4;
           return std::pair<double, double>{v4, t2 + t4};
         },
@@ -251,9 +275,11 @@ std::string bench_nonlinear_text(const NonlinearBench& b) {
     s << "Run time against the error of the first critical load factor, linear buckling, against the converged "
          "reference "
       << sig4(b.reference_value) << " (computed in " << fmt_seconds(b.reference_seconds) << ")\n";
-  else if (b.analysis == "contact")
-    s << "Run time against the error of the load factor at which the ring touches itself (the path to contact), "
-         "against "
+  else if (b.analysis == "contact" || b.analysis == "peak_force" || b.analysis == "path_end")
+    s << "Run time against the error of the "
+      << (b.analysis == "path_end" ? "recorded point's (" + sig4(b.loaded_point) + " deg) " : std::string())
+      << what_is_measured(b.analysis)
+      << (b.analysis == "contact" ? " (the path to contact)" : "") << ", against "
       << fmt::format("{:.7g}", b.reference_value) << " from " << b.reference_note << ", computed in "
       << fmt_seconds(b.reference_seconds) << "\n";
   else
@@ -323,6 +349,8 @@ void write_bench_nonlinear(const std::string& dir, const NonlinearBench& b) {
   plot_pareto(dir, name,
               b.analysis == "buckling"  ? "Run time against the error of the first critical load (lower left is better)"
               : b.analysis == "contact" ? "Run time against the error of the contact load (lower left is better)"
+              : b.analysis == "peak_force" ? "Run time against the error of the peak force (lower left is better)"
+              : b.analysis == "path_end"   ? "Run time against the error of |u| at the path's end (lower left is better)"
                                         : "Run time against the error of the loaded point (" + b.analysis +
                                               ", lower left is better)",
               "|error| against the reference (%)", b.study);
