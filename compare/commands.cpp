@@ -59,10 +59,7 @@ class Progress {
 ring::Scene load(const CommonArgs& a, ring::NonlinearRequest ring::Scene::*only = nullptr,
                  const std::string& solver = "") {
   ring::Scene s = load_scene(a.scene, a.set);
-  if (only && !solver.empty()) {
-    (s.*only).solvers = {solver};
-    (s.*only).reference = false;
-  }
+  if (only) s = narrowed(std::move(s), only, solver);
   check_runnable(s, a.max_memory_gib, a.force);
   for (const auto& w : s.warnings) std::cerr << "ringvib: warning: " << a.scene << ": " << w << "\n";
   return s;
@@ -95,13 +92,6 @@ std::string format_nonlinear(const NonlinearTable& t, const std::string& format)
   return format_text(t);
 }
 
-/// The solver a single-solver output is for: --solver, or the only one the scene lists.
-std::optional<std::string> single_solver(const std::string& option, const ring::NonlinearRequest& q) {
-  if (!option.empty()) return option;
-  if (q.solvers.size() == 1 && !q.reference) return q.solvers.front();
-  return std::nullopt;
-}
-
 /// The names each command may write into its output folder (Outputs::folder checks that
 /// none of them is taken by a folder, a symlink or a device before anything is computed).
 const std::vector<std::string> kRunNames = {"report", "table", "modes_", "shapes_", "mode_shapes", "difference",
@@ -120,25 +110,87 @@ void require_modes(const ring::Scene& s, const std::string& command) {
 
 }  // namespace
 
+ring::Scene narrowed(ring::Scene s, ring::NonlinearRequest ring::Scene::*request, const std::string& solver) {
+  if (!solver.empty()) {
+    (s.*request).solvers = {solver};
+    (s.*request).reference = false;
+  }
+  return s;
+}
+
+std::optional<std::string> single_solver(const std::string& option, const ring::NonlinearRequest& q) {
+  if (!option.empty()) return option;
+  if (q.solvers.size() == 1 && !q.reference) return q.solvers.front();
+  return std::nullopt;
+}
+
+void require_section(const ring::Scene& s, const std::string& section) {
+  const bool has = section == "static" ? s.statics.has_value() : section == "response" ? s.response.has_value()
+                                                                                       : s.buckling.has_value();
+  if (!has) throw ring::InputError(s.file, section, "the scene has no [" + section + "] section");
+}
+
+ring::ModalResult run_modes(const ring::Scene& s, const std::string& solver, std::optional<int> count,
+                            const std::string& count_key) {
+  const SolverEntry& entry = cmp::solver(solver);
+  const int k = count.value_or(s.modes.count);
+  if (count && *count < 1) throw ring::InputError(s.file, count_key, "expected at least 1 mode");
+  // The count is checked against the model like modes.count (gates do not apply here).
+  if (count && k > entry.elastic_modes(s))
+    throw ring::InputError(s.file, count_key, std::to_string(k) + " modes asked, but the " + solver +
+                                                  " model has only " + std::to_string(entry.elastic_modes(s)) +
+                                                  " elastic modes");
+  check_modes_of(s, entry);  // a solver the scene does not list has not been checked by the reader
+  return entry.modes(s, k);
+}
+
+Table run_table(const ring::Scene& s, bool paper, std::ostream* progress) {
+  require_modes(s, "table");
+  return make_table(s, compute_modal(s, progress), paper);
+}
+
+ring::StaticResult run_static(const ring::Scene& s, const std::string& solver, std::ostream* progress) {
+  require_section(s, "static");
+  return run_nonlinear(s, solver, progress).statics.front();
+}
+
+ring::TimeHistory run_response(const ring::Scene& s, const std::string& solver, std::ostream* progress) {
+  require_section(s, "response");
+  return run_nonlinear(s, solver, progress).histories.front();
+}
+
+ring::BucklingResult run_buckling_of(const ring::Scene& s, const std::string& solver, std::ostream* progress) {
+  require_section(s, "buckling");
+  return run_buckling(s, solver, progress).results.front();
+}
+
+NonlinearTable static_comparison(const ring::Scene& s, const NonlinearRun& r) {
+  require_section(s, "static");
+  return static_table(s.title, r.statics, r.static_reference ? &*r.static_reference : nullptr);
+}
+
+NonlinearTable response_comparison(const ring::Scene& s, const NonlinearRun& r) {
+  require_section(s, "response");
+  return response_table(s.title, r.histories, r.history_reference ? &*r.history_reference : nullptr);
+}
+
+Table buckling_comparison(const ring::Scene& s, std::ostream* progress) {
+  require_section(s, "buckling");
+  return buckling_table(s, run_buckling(s, "", progress));
+}
+
 int cmd_modes(const CommonArgs& a, const std::string& solver, std::optional<int> count, bool json,
               const std::string& vtu_dir) {
   const ring::Scene s = load(a);
   Outputs files;
   if (!vtu_dir.empty()) files.folder(vtu_dir, "--vtu", kVtuNames);
-  const int k = count.value_or(s.modes.count);
   const SolverEntry& entry = cmp::solver(solver);
   if (!vtu_dir.empty() && !entry.write_vtu)
     throw ring::InputError(a.scene, "--vtu", "VTU output is for the FE solver (--solver " + s.reference_solver + ")");
-  // --count is checked against the model like modes.count (gates do not apply here).
-  if (count && k > entry.elastic_modes(s))
-    throw ring::InputError(a.scene, "--count", std::to_string(k) + " modes asked, but the " + solver +
-                                                   " model has only " + std::to_string(entry.elastic_modes(s)) +
-                                                   " elastic modes");
-  check_modes_of(s, entry);  // a solver the scene does not list has not been checked by load()
   files.open();
-  const ring::ModalResult m = entry.modes(s, k);
+  const ring::ModalResult m = run_modes(s, solver, count, "--count");
   if (!vtu_dir.empty()) {
-    entry.write_vtu(s, k, files.stage());
+    entry.write_vtu(s, count.value_or(s.modes.count), files.stage());
     files.publish();
   }
   std::cout << (json ? modal_json(m, false) : modes_text(m));
@@ -149,7 +201,7 @@ int cmd_table(const CommonArgs& a, bool paper, const std::string& format) {
   const ring::Scene s = load(a);
   require_modes(s, "table");
   const Progress p(a.quiet);
-  const Table t = make_table(s, compute_modal(s, p.stream()), paper);
+  const Table t = run_table(s, paper, p.stream());
   if (format == "md") std::cout << format_markdown(t);
   else if (format == "csv") std::cout << format_csv(t);
   else if (format == "json") std::cout << format_json(t);
@@ -232,7 +284,7 @@ int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& 
 
 int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& solver, const std::string& format) {
   ring::Scene s = load(a, &ring::Scene::response_request, solver);
-  if (!s.response) throw ring::InputError(a.scene, "response", "the scene has no [response] section");
+  require_section(s, "response");
   // --csv - is standard output, as without --csv.
   const bool to_file = !csv.empty() && csv != "-";
   Outputs files;
@@ -245,12 +297,11 @@ int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& 
       throw ring::InputError(a.scene, "--csv", "the scene runs several solvers (response.solvers); pick one with "
                                                "--solver NAME, or write every history with run --out DIR");
     const NonlinearRun r = run_nonlinear(s, "", progress);
-    std::cout << format_nonlinear(response_table(s.title, r.histories, r.history_reference ? &*r.history_reference : nullptr),
-                                  format);
+    std::cout << format_nonlinear(response_comparison(s, r), format);
     return 0;
   }
   files.open();
-  const ring::TimeHistory h = run_nonlinear(s, *one, progress).histories.front();
+  const ring::TimeHistory h = run_response(s, *one, progress);
   if (!to_file) {
     std::cout << history_csv(h);
     return 0;
@@ -262,25 +313,25 @@ int cmd_respond(const CommonArgs& a, const std::string& csv, const std::string& 
 
 int cmd_static(const CommonArgs& a, bool json, const std::string& solver, const std::string& format) {
   const ring::Scene s = load(a, &ring::Scene::static_request, solver);
-  if (!s.statics) throw ring::InputError(a.scene, "static", "the scene has no [static] section");
+  require_section(s, "static");
   const Progress p(a.quiet);
   std::ostream* progress = p.stream();
   const auto one = single_solver(solver, s.static_request);
   if (!one) {
     const NonlinearRun r = run_nonlinear(s, "", progress);
-    const NonlinearTable t = static_table(s.title, r.statics, r.static_reference ? &*r.static_reference : nullptr);
+    const NonlinearTable t = static_comparison(s, r);
     std::cout << format_nonlinear(t, json ? "json" : format);
     if (!json && format == "text") std::cout << path_summary(r.statics);
     return 0;
   }
-  const ring::StaticResult r = run_nonlinear(s, *one, progress).statics.front();
+  const ring::StaticResult r = run_static(s, *one, progress);
   std::cout << (json ? static_json(r) : static_text(r));
   return 0;
 }
 
 int cmd_buckling(const CommonArgs& a, bool json, const std::string& solver, const std::string& format) {
   const ring::Scene s = load(a, &ring::Scene::buckling_request, solver);
-  if (!s.buckling) throw ring::InputError(a.scene, "buckling", "the scene has no [buckling] section");
+  require_section(s, "buckling");
   const Progress p(a.quiet);
   const auto one = single_solver(solver, s.buckling_request);
   const BucklingRun r = run_buckling(s, one.value_or(""), p.stream());

@@ -12,6 +12,9 @@
 #include "compare/bench.hpp"
 #include "compare/bench_nonlinear.hpp"
 #include "compare/converge.hpp"
+#include "compare/nonlinear.hpp"
+#include "compare/table.hpp"
+#include "ring/results.hpp"
 #include "ring/scene.hpp"
 
 namespace cmp {
@@ -23,6 +26,37 @@ struct CommonArgs {
   double max_memory_gib = 8.0;   ///< --max-memory: the cost guard's budget
   bool force = false;            ///< --force: skip the cost guard
 };
+
+// ---- What the commands compute, shared with the Python module (python/module.cpp) ----
+// Each checks the scene as its command does (after the scene reader and the cost guard) and
+// returns the result that the command prints and the module converts: one place for the
+// rules, so the two cannot drift apart.
+
+/// The scene a nonlinear command runs for `solver` (`--solver NAME`): that solver alone and
+/// no reference, so that the checks and the cost guard see only it (a solver the command
+/// does not run cannot refuse the scene). Empty `solver`: the scene as it is.
+ring::Scene narrowed(ring::Scene s, ring::NonlinearRequest ring::Scene::*request, const std::string& solver);
+/// The solver a single-solver result is for: `option`, or the only one the request lists
+/// without a reference; nothing when it compares several.
+std::optional<std::string> single_solver(const std::string& option, const ring::NonlinearRequest& q);
+/// `ringvib modes`: the `count` (default modes.count) lowest elastic modes of `solver`, its
+/// checks run even where the scene does not list it; `count_key` names the count in errors.
+ring::ModalResult run_modes(const ring::Scene& s, const std::string& solver, std::optional<int> count,
+                            const std::string& count_key);
+/// `ringvib table`: the modal comparison table (InputError when the scene asks for no modes).
+Table run_table(const ring::Scene& s, bool paper, std::ostream* progress);
+/// `ringvib static|respond|buckling` with one solver (`solver` as single_solver names it):
+/// its result, the scene's section required. `s` is already narrowed.
+ring::StaticResult run_static(const ring::Scene& s, const std::string& solver, std::ostream* progress);
+ring::TimeHistory run_response(const ring::Scene& s, const std::string& solver, std::ostream* progress);
+ring::BucklingResult run_buckling_of(const ring::Scene& s, const std::string& solver, std::ostream* progress);
+/// The comparison tables `ringvib static|respond` print for the solvers of a run, and the
+/// buckling table `ringvib buckling` prints (the scene's section required).
+NonlinearTable static_comparison(const ring::Scene& s, const NonlinearRun& r);
+NonlinearTable response_comparison(const ring::Scene& s, const NonlinearRun& r);
+Table buckling_comparison(const ring::Scene& s, std::ostream* progress);
+/// The section a command needs: InputError "the scene has no [section] section" otherwise.
+void require_section(const ring::Scene& s, const std::string& section);
 
 int cmd_run(const CommonArgs& a, const std::string& out_dir, const std::string& junit, bool paper);
 int cmd_table(const CommonArgs& a, bool paper, const std::string& format);

@@ -47,21 +47,11 @@ struct Scene {
   }
 };
 
-/// The scene narrowed to `solver` for one nonlinear analysis, as `ringvib static|respond
-/// --solver NAME` narrows it (compare/commands.cpp): that solver alone and no reference.
-ring::Scene narrowed(ring::Scene s, ring::NonlinearRequest ring::Scene::*request, const std::string& solver) {
-  if (!solver.empty()) {
-    (s.*request).solvers = {solver};
-    (s.*request).reference = false;
-  }
-  return s;
-}
-
-/// The one solver a single-solver result is for: `solver`, or the only one the scene lists.
+/// The one solver a single-solver result is for (cmp::single_solver, as the commands pick
+/// it); where the scene compares several, the function that compares them is named instead.
 std::string single(const ring::Scene& s, const ring::NonlinearRequest& q, const std::string& solver,
                    const std::string& key, const std::string& table_function) {
-  if (!solver.empty()) return solver;
-  if (q.solvers.size() == 1 && !q.reference) return q.solvers.front();
+  if (const auto one = cmp::single_solver(solver, q)) return *one;
   throw ring::InputError(s.file, key,
                          "the scene runs several solvers (or a reference); name one with solver=NAME, or "
                          "compare them with ringvib." +
@@ -437,14 +427,7 @@ PYBIND11_MODULE(ringvib, m) {
         const ring::ModalResult r = released([&] {
           return input_checked(s.scene, [&] {
             cmp::check_runnable(s.scene, max_memory_gib, force);
-            const cmp::SolverEntry& e = cmp::solver(solver);
-            const int k = count.value_or(s.scene.modes.count);
-            if (count && *count < 1) throw ring::InputError(s.scene.file, "count", "expected at least 1 mode");
-            if (count && k > e.elastic_modes(s.scene))
-              throw ring::InputError(s.scene.file, "count",
-                                     std::to_string(k) + " modes asked, but the " + solver + " model has only " +
-                                         std::to_string(e.elastic_modes(s.scene)) + " elastic modes");
-            return e.modes(s.scene, k);
+            return cmp::run_modes(s.scene, solver, count, "count");
           });
         });
         return to_python(r);
@@ -463,11 +446,7 @@ PYBIND11_MODULE(ringvib, m) {
         const std::string json = released([&] {
           return input_checked(s.scene, [&] {
             cmp::check_runnable(s.scene, max_memory_gib, force);
-            if (!cmp::modal(s.scene))
-              throw ring::InputError(s.scene.file, "modes",
-                                     "`table` compares natural frequencies, and the scene asks for none (add a "
-                                     "[modes] or [table] section, or a solver section without [response]/[static])");
-            return cmp::format_json(cmp::make_table(s.scene, cmp::compute_modal(s.scene, nullptr), paper));
+            return cmp::format_json(cmp::run_table(s.scene, paper, nullptr));
           });
         });
         return json_rows(json);
@@ -486,12 +465,11 @@ PYBIND11_MODULE(ringvib, m) {
       "static",
       [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
         const ring::StaticResult r = released([&] {
-          const ring::Scene n = narrowed(s.scene, &ring::Scene::static_request, solver);
+          const ring::Scene n = cmp::narrowed(s.scene, &ring::Scene::static_request, solver);
           return input_checked(n, [&] {
             cmp::check_runnable(n, max_memory_gib, force);
-            if (!n.statics) throw ring::InputError(n.file, "static", "the scene has no [static] section");
-            const std::string one = single(n, n.static_request, solver, "static.solvers", "static_table");
-            return cmp::run_nonlinear(n, one, nullptr).statics.front();
+            cmp::require_section(n, "static");
+            return cmp::run_static(n, single(n, n.static_request, solver, "static.solvers", "static_table"), nullptr);
           });
         });
         return to_python(r);
@@ -508,13 +486,13 @@ PYBIND11_MODULE(ringvib, m) {
       "respond",
       [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
         const ring::TimeHistory h = released([&] {
-          const ring::Scene n = narrowed(s.scene, &ring::Scene::response_request, solver);
+          const ring::Scene n = cmp::narrowed(s.scene, &ring::Scene::response_request, solver);
           return input_checked(n, [&] {
             cmp::check_runnable(n, max_memory_gib, force);
-            if (!n.response) throw ring::InputError(n.file, "response", "the scene has no [response] section");
+            cmp::require_section(n, "response");
             const std::string one = single(n, n.response_request, solver, "response.solvers", "response_table");
             try {
-              return cmp::run_nonlinear(n, one, nullptr).histories.front();
+              return cmp::run_response(n, one, nullptr);
             } catch (const ring::IntegrationFailure& e) {
               // The partial history names its solver, as a finished one does.
               ring::TimeHistory partial = e.partial();
@@ -538,12 +516,12 @@ PYBIND11_MODULE(ringvib, m) {
       "buckling",
       [](const Scene& s, const std::string& solver, double max_memory_gib, bool force) {
         const ring::BucklingResult r = released([&] {
-          const ring::Scene n = narrowed(s.scene, &ring::Scene::buckling_request, solver);
+          const ring::Scene n = cmp::narrowed(s.scene, &ring::Scene::buckling_request, solver);
           return input_checked(n, [&] {
             cmp::check_runnable(n, max_memory_gib, force);
-            if (!n.buckling) throw ring::InputError(n.file, "buckling", "the scene has no [buckling] section");
-            const std::string one = single(n, n.buckling_request, solver, "buckling.solvers", "buckling_table");
-            return cmp::run_buckling(n, one, nullptr).results.front();
+            cmp::require_section(n, "buckling");
+            return cmp::run_buckling_of(n, single(n, n.buckling_request, solver, "buckling.solvers", "buckling_table"),
+                                        nullptr);
           });
         });
         // The shapes as the modes carry them (cmp::as_modal: the factors in omega's place).
@@ -573,8 +551,7 @@ PYBIND11_MODULE(ringvib, m) {
         const std::string json = released([&] {
           return input_checked(s.scene, [&] {
             cmp::check_runnable(s.scene, max_memory_gib, force);
-            if (!s.scene.buckling) throw ring::InputError(s.scene.file, "buckling", "the scene has no [buckling] section");
-            return cmp::format_json(cmp::buckling_table(s.scene, cmp::run_buckling(s.scene, "", nullptr)));
+            return cmp::format_json(cmp::buckling_comparison(s.scene, nullptr));
           });
         });
         return json_rows(json);
@@ -761,15 +738,9 @@ PYBIND11_MODULE(ringvib, m) {
       const std::string json = released([&] {
         return input_checked(s.scene, [&] {
           cmp::check_runnable(s.scene, max_memory_gib, force);
-          if (response ? !s.scene.response : !s.scene.statics)
-            throw ring::InputError(
-                s.scene.file, response ? "response" : "static",
-                response ? "the scene has no [response] section" : "the scene has no [static] section");
+          cmp::require_section(s.scene, response ? "response" : "static");
           const cmp::NonlinearRun r = cmp::run_nonlinear(s.scene, "", nullptr);
-          return response ? cmp::format_json(cmp::response_table(s.scene.title, r.histories,
-                                                                 r.history_reference ? &*r.history_reference : nullptr))
-                          : cmp::format_json(cmp::static_table(s.scene.title, r.statics,
-                                                               r.static_reference ? &*r.static_reference : nullptr));
+          return cmp::format_json(response ? cmp::response_comparison(s.scene, r) : cmp::static_comparison(s.scene, r));
         });
       });
       return json_rows(json);
