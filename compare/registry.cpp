@@ -34,13 +34,16 @@
 namespace cmp {
 namespace {
 
-/// A solver's std::invalid_argument ("can never work") is an input error (exit 2).
+/// A solver's std::invalid_argument ("can never work") is an input error (exit 2) under
+/// `name`; a message that already starts with "name: " keeps it once ("lumped: lumped:
+/// masses[1] ..." read twice the same word).
 template <class F>
 auto as_input_error(const ring::Scene& s, const std::string& name, F&& f) -> decltype(f()) {
   try {
     return f();
   } catch (const std::invalid_argument& e) {
-    throw ring::InputError(s.file, name, e.what());
+    const std::string what = e.what(), prefix = name + ": ";
+    throw ring::InputError(s.file, name, what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
   }
 }
 
