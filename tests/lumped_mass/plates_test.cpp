@@ -16,10 +16,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <string>
 #include <optional>
 #include <vector>
 
 #include "common.hpp"
+#include "lumped_mass/checks.hpp"
 #include "lumped_mass/nonlinear.hpp"
 #include "ring/analysis.hpp"
 #include "ring/errors.hpp"
@@ -289,6 +292,49 @@ TEST(PlatesPlasticChain, UnloadingIsElastic) {
   EXPECT_EQ(d.result.dissipated, pts[peak].dissipated);
   EXPECT_NEAR(pts.back().load_factor, 0.9, 1e-12);
   EXPECT_EQ(d.result.end, "end of the history");
+}
+
+// What the chain does not take with plates is refused by key for the library's callers (the
+// scene reader refuses most of it first): the frames, supports, loads, a drive beside them,
+// first-contact points off the nodes, a travel outside (0, 2 R), a stiffness not > 0, and the
+// modes under load about a crushed state.
+TEST(PlatesRefusals, NameTheKey) {
+  auto refused = [](const std::function<void()>& run, const std::string& what, const std::string& key) {
+    try {
+      run();
+      ADD_FAILURE() << what << " was not refused";
+    } catch (const ring::InputError& e) {
+      EXPECT_EQ(e.key(), key) << what << ": " << e.what();
+    }
+  };
+  const ring::RingSpec spec = free_ring(std::nullopt);
+  const double k = wall(spec);
+  const ring::LumpedOptions o = lumptest::options(32, kChain);
+  refused([&] { lumped::solve_static(spec, lumptest::options(32, ring::LumpedOptions::Variant::frame), plates(1.0, k)); },
+          "plates on the frame", "plates");
+  refused([&] { lumped::solve_static(spec, lumptest::options(32, ring::LumpedOptions::Variant::timoshenko_frame),
+                                     plates(1.0, k, {}, 20, false)); },
+          "plates on the Timoshenko frame", "plates");
+  refused([&] { lumped::solve_static(ringtest::driven_plastic_ring(std::nullopt), o, plates(1.0, k)); },
+          "plates on a pinned ring", "plates");
+  ring::StaticOptions loaded = plates(1.0, k);
+  loaded.loads.points = {{0.0, {1.0, 0.0}}};
+  refused([&] { lumped::solve_static(spec, o, loaded); }, "plates beside a load", "plates");
+  ring::StaticOptions driven = plates(1.0, k);
+  driven.displacement = ring::StaticOptions::Displacement{0.0, {1e-3, 0.0}};
+  refused([&] { lumped::solve_static(spec, o, driven); }, "plates beside a drive", "plates");
+  ring::StaticOptions off = plates(1.0, k);
+  off.plates->axis = 5.0;
+  refused([&] { lumped::solve_static(spec, o, off); }, "first contact off the nodes", "plates.axis");
+  for (double t : {0.0, -1.0, 2.0 * spec.radius, std::nan("")}) {
+    ring::StaticOptions bad = plates(t, k);
+    refused([&] { lumped::solve_static(spec, o, bad); }, "travel " + std::to_string(t), "plates.travel");
+  }
+  refused([&] { lumped::check_preloaded_modes(spec, o, plates(1.0, k)); }, "modes under a crushing", "plates");
+  for (double kk : {0.0, -1.0, HUGE_VAL}) {
+    ring::StaticOptions bad = plates(1.0, kk);
+    refused([&] { lumped::solve_static(spec, o, bad); }, "stiffness " + std::to_string(kk), "plates.stiffness");
+  }
 }
 
 }  // namespace
