@@ -236,24 +236,21 @@ void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o
     refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is supports.roller; drive another point");
 }
 
-/// [plates] (ring/analysis.hpp, chain.hpp's hold_plates): the chain on a closed ring, no loads,
-/// no static.displacement, no supports (pin, roller, pins, clamp), both points of first contact
+/// [plates] (ring/analysis.hpp, chain.hpp's hold_plates): a closed ring, no loads, no
+/// static.displacement, no supports (pin, roller, pins, clamp), both points of first contact
 /// nodes, a finite travel in (0, 2 R) and a finite stiffness > 0 (the scene reader's rules,
 /// again for callers of the library). ring::InputError naming the key.
 ///
-/// The frames refuse them. The chain's penalty and rows map onto the frames' translations
-/// directly, and were tried: the force at an approach of 1e-3 R was each frame's own driven pinch
-/// to 1.3e-6, but at 1e-5 R the Timoshenko frame's came out equal to the frame's to every digit
-/// (n = 64), where their driven pinches differ by 1.4e-4 (its shear): not understood yet, so not
-/// offered. The frames' statics have no static.path either, along which the crushing reports its
-/// contact lengths.
+/// The frames take them elastic and at the end of the path (their statics have neither
+/// ring.plastic nor static.path: check_plastic and the static.path refusal here), on their node
+/// translations (frame_nonlinear.cpp).
 void check_plates(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::StaticOptions& statics) {
   const ring::StaticOptions::Plates& p = *statics.plates;
   auto refuse = [&](const std::string& k, const std::string& why) { throw ring::InputError("", k, "lumped: " + why); };
-  if (o.variant != ring::LumpedOptions::Variant::chain)
-    refuse("plates", "lumped.variant = \"" + ring::to_string(o.variant) +
-                         "\" has no rigid plates ([plates]) yet: only the chain lumps their penalty at its nodes; "
-                         "use lumped.variant = \"chain\"");
+  if (o.variant != ring::LumpedOptions::Variant::chain && statics.path)
+    refuse("static.path", "[plates] on lumped.variant = \"" + ring::to_string(o.variant) +
+                              "\": the frames' statics have no static.path (the path with its contact lengths at every "
+                              "point); give static.path = false (the crushing's end) or use lumped.variant = \"chain\"");
   if (spec.is_arch()) refuse("plates", "[plates] crush a closed ring: an arch (ring.arc) between plates is not offered");
   if (statics.displacement) refuse("plates", "[plates] drive the path already: remove static.displacement");
   if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())

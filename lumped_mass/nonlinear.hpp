@@ -67,7 +67,8 @@
 // load stepping that hands over to the arc, elastic and plastic (nonlinear.cpp, follow_statics,
 // says why not from rest by arc as a driven point); the reaction is the force of the plate at
 // plates.axis on the ring, the plates' work their pressure times their advance (trapezoidal
-// rule), and the stored energy counts the penalty's. The frames refuse [plates] (checks.hpp).
+// rule), and the stored energy counts the penalty's. The frames (elastic, without static.path)
+// take the same penalty and rows on their translations (frame_nonlinear.cpp).
 //
 // ## ring.plastic in the statics (bending.hpp)
 // The hinge springs' law is ring.plastic's resultant law on the hinge rotation (stiffness EI/l,

@@ -67,8 +67,9 @@ TEST(LumpedPlatesCli, ForceAndContactLengthInTheJson) {
   EXPECT_EQ(path.front().at("contact_length").get<Pair>(), Pair{});
 }
 
-// The frames have no plates: exit 2 naming the key `plates`, saying which variant takes them.
-TEST(LumpedPlatesCli, TheFramesRefuseThePlates) {
+// The frames' statics take plates at the end of the path only: static.path = true with them is
+// refused, exit 2, naming [plates] and saying which variant takes both.
+TEST(LumpedPlatesCli, TheFramesRefuseThePlatesAlongAPath) {
   const auto r = ringvib("static " + plates_scene("frame") + " --solver lumped -q");
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("plates"), std::string::npos) << r.err;
