@@ -66,6 +66,90 @@ Vec constraint_rate(const Chain& c) {
   return r;
 }
 
+void hold_plates(Chain& c, const ring::RingSpec& spec, const ring::StaticOptions::Plates& plates) {
+  c.plates.emplace(spec, plates);
+  c.plate_nodes = {c.hinge(plates.axis), c.hinge(plates.axis + 180.0)};
+  // The no-slide rows, roller-like: e . (x_k - X_k) = 0, e = (-sin axis, cos axis).
+  const Vec2 e(-c.plates->d[1], c.plates->d[0]);
+  Triplets t;
+  for (int col = 0; col < c.S.outerSize(); ++col)
+    for (Sparse::InnerIterator it(c.S, col); it; ++it) t.emplace_back(static_cast<int>(it.row()), col, it.value());
+  const int r = static_cast<int>(c.S.rows());
+  for (int p = 0; p < 2; ++p) {
+    t.emplace_back(r + p, 2 * c.plate_nodes[p], e.x());
+    t.emplace_back(r + p, 2 * c.plate_nodes[p] + 1, e.y());
+  }
+  // The centre row d_0 . (u_a + u_b) = 0: the midpoint of the two points stays on the plates'
+  // midline. While the ring touches both plates their penalty holds it there (the multiplier
+  // ~0 by symmetry), but a ring that has sprung back clear of them on unloading is free
+  // along d_0, and the tangent would be singular.
+  for (int p = 0; p < 2; ++p) {
+    t.emplace_back(r + 2, 2 * c.plate_nodes[p], c.plates->d[0]);
+    t.emplace_back(r + 2, 2 * c.plate_nodes[p] + 1, c.plates->d[1]);
+  }
+  Sparse S(r + 3, 2 * c.n);
+  S.setFromTriplets(t.begin(), t.end());
+  c.S = S;
+}
+
+Vec2 plate_point(const Chain& c, const Vec& x, int j) {
+  return c.at(x, j) - (1.0 - c.plates->R / c.rho) * c.at(c.rest, j);
+}
+
+void add_plates(const Chain& c, const Vec& x, double s, double hess_scale, Springs& out) {
+  if (!c.plates) return;
+  const ring::PlatePair& pp = *c.plates;
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 p = plate_point(c, x, j);
+    for (int plate = 0; plate < 2; ++plate) {
+      const double sign = plate == 0 ? 1.0 : -1.0;
+      const Vec2 d(sign * pp.d[0], sign * pp.d[1]);
+      const double g = pp.gap(plate, p.x(), p.y(), s);
+      out.energy += c.l * pp.energy(g);
+      out.grad.segment<2>(2 * j) += c.l * pp.pressure(g) * d;
+      if (hess_scale != 0.0 && pp.in_contact(g))
+        for (int a = 0; a < 2; ++a)
+          for (int b = 0; b < 2; ++b) out.hess.emplace_back(2 * j + a, 2 * j + b, hess_scale * c.l * pp.k * d[a] * d[b]);
+    }
+  }
+}
+
+Vec plate_rate(const Chain& c, const Vec& x, double s) {
+  Vec r = Vec::Zero(2 * c.n);
+  if (!c.plates) return r;
+  const ring::PlatePair& pp = *c.plates;
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 p = plate_point(c, x, j);
+    for (int plate = 0; plate < 2; ++plate) {
+      const double sign = plate == 0 ? 1.0 : -1.0;
+      if (pp.in_contact(pp.gap(plate, p.x(), p.y(), s)))
+        r.segment<2>(2 * j) += c.l * pp.k * 0.5 * pp.travel * Vec2(sign * pp.d[0], sign * pp.d[1]);
+    }
+  }
+  return r;
+}
+
+std::array<double, 2> plate_loads(const Chain& c, const Vec& x, double s) {
+  std::array<double, 2> f{0.0, 0.0};
+  if (!c.plates) return f;
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 p = plate_point(c, x, j);
+    for (int plate = 0; plate < 2; ++plate) f[plate] += c.l * c.plates->pressure(c.plates->gap(plate, p.x(), p.y(), s));
+  }
+  return f;
+}
+
+std::array<double, 2> plate_contact_lengths(const Chain& c, const Vec& x, double s) {
+  if (!c.plates) return {0.0, 0.0};
+  std::vector<double> px(c.n), py(c.n);
+  for (int j = 0; j < c.n; ++j) {
+    const Vec2 p = plate_point(c, x, j);
+    px[j] = p.x();
+    py[j] = p.y();
+  }
+  return c.plates->contact_lengths(px, py, s);
+}
+
 Turn turn(const Chain& c, const Vec& x, int j, bool with_hessian) {
   const Vec2 a = c.at(x, j) - c.at(x, j - 1), b = c.at(x, j + 1) - c.at(x, j);
   Turn t;
@@ -188,6 +272,14 @@ Vec relaxed_rotations(const Chain& c, const Vec& x) {
 Springs tangent(const Chain& c, const ChainLoads& loads, const Vec& q, const Vec& lambda, double s, double scale,
                 bool hinges) {
   Springs t = springs(c, q, scale, hinges);
+  if (c.plates) {  // the statics' only (their q is x); s moves the plates
+    Springs p;
+    p.grad = Vec::Zero(2 * c.n);
+    add_plates(c, q.head(2 * c.n), s, scale, p);
+    t.energy += p.energy;
+    t.grad.head(2 * c.n) += p.grad;
+    t.hess.insert(t.hess.end(), p.hess.begin(), p.hess.end());
+  }
   constraint_hessian(c, lambda, scale, t.hess);
   loads.add_hessian(q.head(2 * c.n), scale * s, t.hess);
   return t;

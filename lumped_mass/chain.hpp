@@ -23,9 +23,17 @@
 #include "lumped_mass/bending.hpp"
 #include "lumped_mass/loads.hpp"
 #include "lumped_mass/terms.hpp"
+#include "ring/analysis.hpp"
 #include "ring/spec.hpp"
 
 namespace lumped {
+
+/// The elastic energy V, its gradient and (scaled) Hessian.
+struct Springs {
+  double energy = 0.0;
+  Eigen::VectorXd grad;
+  Triplets hess;
+};
 
 /// The chain's fixed data: geometry, stiffness, mass, supports and the spec's terms.
 struct Chain {
@@ -46,6 +54,11 @@ struct Chain {
   /// a pin whose target moves; their multipliers are minus the rig's force on the ring.
   int driven = -1;
   Eigen::Vector2d drive{0.0, 0.0};
+  /// [plates] (hold_plates()): the contact law, and the nodes at plates.axis and axis + 180,
+  /// whose no-slide rows e . (x - rest) = 0 (e the plates' direction) and the centre row
+  /// d_0 . (u_a + u_b) = 0 are S's last three.
+  std::optional<ring::PlatePair> plates;
+  std::array<int, 2> plate_nodes{-1, -1};
   /// The links: n on a ring, n - 1 on an arch (link j joins node j to j + 1).
   int links() const { return open ? n - 1 : n; }
   /// Whether hinge j has a spring (bending law): every node of a ring, an arch's interior ones.
@@ -81,6 +94,36 @@ void drive(Chain& c, int hinge, const Eigen::Vector2d& value);
 /// (the last two), 0 elsewhere (empty-driven: all zero). rows() values.
 Eigen::VectorXd constraint_rate(const Chain& c);
 
+/// [plates] (ring/analysis.hpp) on a closed chain, the way the chain lumps the Winkler foundation
+/// (terms.hpp): at every node, for the ring length l it stands for, the penalty
+/// l PlatePair::energy(g_p) of each plate p, g_p at the node's deformed place on the centroid
+/// line, which is the ring's point at rest (radius R, the node's polar angle) moved by the
+/// node's displacement: p_j = x_j - (1 - R / rho) X_j (X_j the node's rest position on the
+/// n-gon of circumradius rho > R). The n-gon's vertices lie R pi^2 / (6 n^2) outside the ring
+/// (4e-4 R at n = 64), so the gap at the vertex itself would press the ring at rest; measured
+/// from the ring's point, it is 0 at the two points of first contact at rest, as the law has
+/// it, and the foundation's displacements are the same ones. hold_plates() appends the two
+/// no-slide rows and the centre row to c.S (the caller has checked: a closed ring, no supports,
+/// both points nodes). The centre row keeps the midpoint of the two points on the plates'
+/// midline: the penalty holds that while the ring touches both plates (its multiplier ~0 by
+/// symmetry), but a ring that springs back clear of them on unloading would be free along d_0.
+/// O(n).
+void hold_plates(Chain& c, const ring::RingSpec& spec, const ring::StaticOptions::Plates& plates);
+/// p_j above, m. O(1).
+Eigen::Vector2d plate_point(const Chain& c, const Eigen::VectorXd& x, int j);
+/// The plates' penalty at hinge positions x and load factor s added to `s_out`: its energy, its
+/// gradient (l k <-g_p> d_p at node j) and, scaled by hess_scale if not zero, its tangent
+/// l k d_p d_p^T where in_contact(g_p). Nothing without c.plates. O(n).
+void add_plates(const Chain& c, const Eigen::VectorXd& x, double s, double hess_scale, Springs& s_out);
+/// d(grad of the penalty)/ds at x, s: -l k (d g_p / ds) d_p = l k (travel / 2) d_p where
+/// in_contact(g_p) (the tangent's rule, so that the load column is not 0 at rest); 2n values,
+/// zero without plates. The bordered system's load column. O(n).
+Eigen::VectorXd plate_rate(const Chain& c, const Eigen::VectorXd& x, double s);
+/// The total pressure of each plate on the ring, sum_j l k <-g_p>, N (plate 0: at plates.axis). O(n).
+std::array<double, 2> plate_loads(const Chain& c, const Eigen::VectorXd& x, double s);
+/// PlatePair::contact_lengths at the nodes' points p_j in order around the ring, m. O(n).
+std::array<double, 2> plate_contact_lengths(const Chain& c, const Eigen::VectorXd& x, double s);
+
 /// Turning angle at hinge j and its gradient with respect to (x_{j-1}, x_j, x_{j+1}).
 struct Turn {
   double theta = 0.0;
@@ -92,12 +135,6 @@ Turn turn(const Chain& c, const Eigen::VectorXd& x, int j, bool with_hessian);
 /// Global DoF of local index i (0..5) of the three hinges around j.
 int dof(const Chain& c, int j, int i);
 
-/// The elastic energy V, its gradient and (scaled) Hessian.
-struct Springs {
-  double energy = 0.0;
-  Eigen::VectorXd grad;
-  Triplets hess;
-};
 /// V, grad V and (scaled by `hess_scale`, if not zero) Hess V: the hinge springs (their
 /// law c.bending's: V counts its incremental potential from the committed states) and the
 /// spec's stiffness terms (terms.hpp: springs, the clamp, the foundation). q: the 2n hinge
@@ -127,6 +164,8 @@ std::array<double, 2> ground_force(const Eigen::SparseMatrix<double>& S, const E
 /// The tangent stiffness of the chain's equilibrium grad V(x) + G(x)^T lambda + s grad P(x)
 /// on the hinge positions (or on q = (x, chi), as springs() takes it), times `scale`:
 ///   scale (Hess V(x) + sum_j lambda_j Hess c_j + s Hess P(x)),
+/// with [plates] (c.plates) the plates' penalty at load factor s in V (add_plates: energy,
+/// gradient and tangent),
 /// with V, grad V (unscaled) as springs() gives them; `tangent.hess` holds the sum as
 /// triplets of the 2n x 2n block (springs and terms, then the links, then the load
 /// stiffness). Every analysis of the chain takes its tangent from here.

@@ -130,7 +130,9 @@ void check_plastic(const ring::RingSpec& spec, const ring::LumpedOptions& o, con
 
 /// What every nonlinear analysis of the chain (and its linear buckling) needs; `what` is
 /// "statics", "response" or "buckling".
-void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what) {
+/// `held`: [plates] hold the free ring (the statics; no pin needed).
+void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const std::string& what,
+                 bool held = false) {
   auto need = [&](bool ok, const std::string& msg) {
     if (!ok) throw std::invalid_argument("lumped " + what + ": " + msg);
   };
@@ -159,7 +161,7 @@ void check_chain(const ring::RingSpec& spec, const ring::LumpedOptions& o, const
     need(std::abs(std::remainder(*spec.supports.roller - *spec.supports.pin, 360.0)) > 1e-9,
          "supports.roller must differ from the pin");
   }
-  need(spec.supports.pin.has_value() || spec.rigid_modes() == 0,
+  need(held || spec.supports.pin.has_value() || spec.rigid_modes() == 0,
        "needs a pin (supports.pin), or springs or a foundation that hold every rigid motion: a free ring under "
        "a dead load has no equilibrium");
 }
@@ -234,6 +236,40 @@ void check_displacement(const ring::RingSpec& spec, const ring::LumpedOptions& o
     refuse(key + ".at", "the point at " + std::to_string(d.at) + " deg is supports.roller; drive another point");
 }
 
+/// [plates] (ring/analysis.hpp, chain.hpp's hold_plates): a closed ring, no loads, no
+/// static.displacement, no supports (pin, roller, pins, clamp), both points of first contact
+/// nodes, a finite travel in (0, 2 R) and a finite stiffness > 0 (the scene reader's rules,
+/// again for callers of the library). ring::InputError naming the key.
+///
+/// The frames take them elastic and at the end of the path (their statics have neither
+/// ring.plastic nor static.path: check_plastic and the static.path refusal here), on their node
+/// translations (frame_nonlinear.cpp).
+void check_plates(const ring::RingSpec& spec, const ring::LumpedOptions& o, const ring::StaticOptions& statics) {
+  const ring::StaticOptions::Plates& p = *statics.plates;
+  auto refuse = [&](const std::string& k, const std::string& why) { throw ring::InputError("", k, "lumped: " + why); };
+  if (o.variant != ring::LumpedOptions::Variant::chain && statics.path)
+    refuse("static.path", "[plates] on lumped.variant = \"" + ring::to_string(o.variant) +
+                              "\": the frames' statics have no static.path (the path with its contact lengths at every "
+                              "point); give static.path = false (the crushing's end) or use lumped.variant = \"chain\"");
+  if (spec.is_arch()) refuse("plates", "[plates] crush a closed ring: an arch (ring.arc) between plates is not offered");
+  if (statics.displacement) refuse("plates", "[plates] drive the path already: remove static.displacement");
+  if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())
+    refuse("plates", "[plates] drive the path, and loads would be scaled with them: give the one or the other");
+  const ring::Supports& sup = spec.supports;
+  if (sup.pin || sup.roller || !sup.pins.empty() || sup.clamp)
+    refuse("plates", "the plates hold the ring themselves: remove supports.pin, .roller, .pins and .clamp");
+  for (double a : {p.axis, p.axis + 180.0})
+    if (!std::isfinite(a) || !ring::on_node(a, spec.anchor(), o.n))
+      refuse("plates.axis", "the plates touch the ring at " + std::to_string(a) + " deg, which is not a node of the n = " +
+                                std::to_string(o.n) + " chain (valid: anchor " + std::to_string(spec.anchor()) +
+                                " deg + 360 k / n, with lumped.n even)");
+  if (!std::isfinite(p.travel) || !(p.travel > 0.0) || !(p.travel < 2.0 * spec.radius))
+    refuse("plates.travel", "plates.travel (= " + std::to_string(p.travel) + " m) must be in (0, 2 R = " +
+                                std::to_string(2.0 * spec.radius) + ")");
+  if (!std::isfinite(p.stiffness) || !(p.stiffness > 0.0))
+    refuse("plates.stiffness", "plates.stiffness (= " + std::to_string(p.stiffness) + " N/m^2) must be finite and > 0");
+}
+
 /// What the chain does not take on an arch (ring.arc) yet: ring::InputError naming ring.arc.
 void refuse_arch_here(const ring::RingSpec& spec, const std::string& who) {
   if (spec.is_arch())
@@ -302,10 +338,10 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics) {
   ring::refuse_variations(spec, "the lumped-mass model");
-  check_chain(spec, options, "statics");
+  if (statics.plates) check_plates(spec, options, statics);
+  check_chain(spec, options, "statics", statics.plates.has_value());
   if (statics.displacement) check_displacement(spec, options, statics);
   check_loads(spec, options, statics.loads, "static");
-  ring::refuse_plates(statics, "the lumped-mass model");
   // A driven point holds the ring as a pin does (the scene reader's rule).
   if (ring::static_rigid_modes(spec, statics) > 0)
     throw std::invalid_argument(

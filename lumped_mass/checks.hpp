@@ -46,6 +46,9 @@ void check_modes(const ring::RingSpec& spec, const ring::LumpedOptions& options)
 /// non-zero value, the driven point a node on no pinned point or roller (ring::InputError naming
 /// static.displacement or static.displacement.at; an arch is refused naming
 /// static.displacement), and it counts as a pin in the rigid-mode rule.
+/// [plates]: a closed ring without loads, static.displacement or supports (pin, roller, pins,
+/// clamp), both points of first contact nodes, travel in (0, 2 R), stiffness > 0; the frames
+/// elastic and without static.path (ring::InputError naming plates, the key or static.path).
 void check_static(const ring::RingSpec& spec, const ring::LumpedOptions& options, const ring::StaticOptions& statics);
 /// Linear buckling (buckling.hpp): every variant, as statics for the ring and the loads (named
 /// buckling.*), at least one load,

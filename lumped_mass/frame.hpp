@@ -119,6 +119,7 @@ class FrameLoads {
 struct FramePathEnergy {
   double dissipated = 0.0, plastic_curvature = 0.0, work = 0.0, stored = 0.0;
   std::array<double, 2> reaction{0.0, 0.0};  ///< static.displacement: the rig's force at the end, N
+  std::array<double, 2> contact_length{0.0, 0.0};  ///< [plates]: at the end, m
 };
 
 /// The frame's equilibrium path from rest to the full load (or through statics.history) (the continuation driver on

@@ -56,6 +56,20 @@ double correction_size(const Frame& f, const Vec& dq, double radius) {
   return m;
 }
 
+/// [plates] on the frame: the chain's penalty (chain.hpp, add_plates) on the node positions,
+/// f.geometry the chain's view of them (its plates, l, rho and rest), mapped to q (3 per node,
+/// the translations first). Nothing without plates. O(n).
+void add_frame_plates(const Frame& f, const Vec& q, double s, double hess_scale, Springs& out) {
+  if (!f.geometry.plates) return;
+  Springs p;
+  p.grad = Vec::Zero(2 * f.n);
+  add_plates(f.geometry, f.positions(q), s, hess_scale, p);
+  out.energy += p.energy;
+  for (int j = 0; j < f.n; ++j) out.grad.segment<2>(3 * j) += p.grad.segment<2>(2 * j);
+  for (const auto& t : p.hess)
+    out.hess.emplace_back(3 * (t.row() / 2) + t.row() % 2, 3 * (t.col() / 2) + t.col() % 2, t.value());
+}
+
 /// The frame's equilibrium grad V(q) + S^T mu + s grad P(q) = 0, S (q - rest) = 0, for the
 /// continuation driver. Unknowns z = (q, mu), mu in units of the frame's scale EI / l^3 (the
 /// rows balanced against the stiffness for the LU's pivoting), the bordered KKT matrix by
@@ -72,7 +86,8 @@ class FrameStatics : public paths::Equilibrium {
         f_(own_ ? *own_ : f),
         L_(loads),
         N_(3 * f.n),
-        S_(3 * f.n + static_cast<int>(f.S.rows())),
+        E_(f.geometry.plates ? 1 : 0),
+        S_(3 * f.n + E_ + static_cast<int>(f.S.rows())),
         radius_(radius),
         rate_(Vec::Zero(f.S.rows())) {
     if (f.driven >= 0) rate_.tail(2) = -f.drive;
@@ -80,22 +95,33 @@ class FrameStatics : public paths::Equilibrium {
   FrameStatics(const FrameStatics&) = delete;  // f_ may refer to own_
   FrameStatics& operator=(const FrameStatics&) = delete;
   Eigen::Index size() const override { return S_; }
-  Eigen::Index arc_size() const override { return N_; }
+  /// q, and with [plates] their advance a (the chain's statics say why).
+  Eigen::Index arc_size() const override { return N_ + E_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
-    const Vec q = s.z.head(N_), mu = s.z.tail(S_ - N_) * f_.scale;
+    const Vec q = s.z.head(N_), mu = multipliers(s.z) * f_.scale;
+    const int M = N_ + E_;  // the first multiplier's row
     Springs sp = frame_energy(f_, q, 1.0);
+    add_frame_plates(f_, q, s.s, 1.0, sp);
     L_.add_hessian(q, s.s, sp.hess);
-    support_triplets(f_, N_, f_.scale, sp.hess);
+    support_triplets(f_, M, f_.scale, sp.hess);
     const Vec gP = L_.gradient(q);
     r.resize(S_);
     r.head(N_) = sp.grad + f_.S.transpose() * mu + s.s * gP;
     // A driven point (static.displacement): its rows S (q - rest) - s drive; rate_ = their
     // change with s, the load column's constraint part (no loads act then: gP = 0).
-    r.tail(S_ - N_) = f_.scale * (f_.S * (q - f_.rest) + s.s * rate_);
+    r.tail(S_ - M) = f_.scale * (f_.S * (q - f_.rest) + s.s * rate_);
     Vec b = Vec::Zero(S_), wz = Vec::Zero(S_);
     b.head(N_) = gP;
-    b.tail(S_ - N_) = f_.scale * rate_;
-    wz.head(N_) = w.head(N_);
+    b.tail(S_ - M) = f_.scale * rate_;
+    if (f_.geometry.plates) {  // the chain's load column and advance row (nonlinear.cpp)
+      const Vec rate = plate_rate(f_.geometry, f_.positions(q), s.s);
+      for (int j = 0; j < f_.n; ++j) b.segment<2>(3 * j) += rate.segment<2>(2 * j);
+      const double half = 0.5 * f_.geometry.plates->travel;
+      r[N_] = f_.scale * (s.z[N_] - s.s * half);
+      sp.hess.emplace_back(N_, N_, f_.scale);
+      b[N_] = -f_.scale * half;
+    }
+    wz.head(M) = w.head(M);
     return factor_bordered(std::move(sp.hess), S_, b, wz, ws, lu_) && r.allFinite();
   }
   bool solve(paths::Vector& y) override {
@@ -118,6 +144,7 @@ class FrameStatics : public paths::Equilibrium {
   std::optional<int> unstable_directions(const paths::State& s) override {
     if (N_ > kDenseInertiaUnknowns) return std::nullopt;
     Springs sp = frame_energy(f_, s.z.head(N_), 1.0);
+    add_frame_plates(f_, s.z.head(N_), s.s, 1.0, sp);
     L_.add_hessian(s.z.head(N_), s.s, sp.hess);
     Sparse T(N_, N_);
     T.setFromTriplets(sp.hess.begin(), sp.hess.end());
@@ -128,8 +155,13 @@ class FrameStatics : public paths::Equilibrium {
   std::optional<paths::Touch> accept(const paths::State& from, const paths::State& to) override {
     work_ -= 0.5 * (from.s + to.s) * (L_.potential(to.z.head(N_)) - L_.potential(from.z.head(N_)));
     if (f_.driven >= 0) {  // the rig's work, the trapezoidal rule (the chain's statics)
-      const std::array<double, 2> a = reaction(from.z), b = reaction(to.z);
+      const std::array<double, 2> a = reaction(from.z, from.s), b = reaction(to.z, to.s);
       work_ += 0.5 * (to.s - from.s) * ((a[0] + b[0]) * f_.drive.x() + (a[1] + b[1]) * f_.drive.y());
+    }
+    if (f_.geometry.plates) {  // the plates' work (the chain's statics)
+      const std::array<double, 2> a = plate_loads(f_.geometry, f_.positions(from.z.head(N_)), from.s),
+                                  b = plate_loads(f_.geometry, f_.positions(to.z.head(N_)), to.s);
+      work_ += 0.5 * (to.s - from.s) * 0.5 * f_.geometry.plates->travel * (a[0] + a[1] + b[0] + b[1]);
     }
     if (own_) own_->bending.commit(bending_strains(f_, to.z.head(N_)));
     const Contact k = closest_nonadjacent(f_.geometry, f_.positions(to.z.head(N_)));
@@ -137,19 +169,29 @@ class FrameStatics : public paths::Equilibrium {
     return paths::Touch{1.0, contact_where(f_.geometry, k) + "; the frame model does not include contact"};
   }
 
-  /// The path's energies so far, the elastic energy at q.
-  FramePathEnergy energy(const Vec& q) const {
+  /// The multipliers of z (the support rows), in units of f_.scale.
+  Vec multipliers(const paths::Vector& z) const { return z.tail(S_ - N_ - E_); }
+  /// The path's energies so far, the elastic energy at q (and the plates' penalty at s).
+  FramePathEnergy energy(const Vec& q, double s) const {
     FramePathEnergy e;
     e.dissipated = f_.bending.dissipated();
     e.plastic_curvature = f_.bending.plastic_curvature();
     e.work = work_;
     // The incremental potential at the committed states' own strains is the stored energy.
-    e.stored = frame_energy(f_, q, 0.0).energy;
+    Springs sp = frame_energy(f_, q, 0.0);
+    add_frame_plates(f_, q, s, 0.0, sp);
+    e.stored = sp.energy;
+    if (f_.geometry.plates) e.contact_length = plate_contact_lengths(f_.geometry, f_.positions(q), s);
     return e;
   }
   /// The force the rig applies on the frame at the driven node, N: minus its rows'
-  /// multipliers (S's last two). 0 without a driven point.
-  std::array<double, 2> reaction(const paths::Vector& z) const {
+  /// multipliers (S's last two); [plates]: the force of the plate at plates.axis on the ring.
+  /// 0 without either.
+  std::array<double, 2> reaction(const paths::Vector& z, double s) const {
+    if (f_.geometry.plates) {
+      const double F = plate_loads(f_.geometry, f_.positions(z.head(N_)), s)[0];
+      return {-F * f_.geometry.plates->d[0], -F * f_.geometry.plates->d[1]};
+    }
     if (f_.driven < 0) return {0.0, 0.0};
     return {-f_.scale * z[S_ - 2], -f_.scale * z[S_ - 1]};
   }
@@ -158,7 +200,7 @@ class FrameStatics : public paths::Equilibrium {
   std::optional<Frame> own_;  ///< ring.plastic: a copy, whose bending states are this path's
   const Frame& f_;            ///< own_, or the caller's elastic frame
   const FrameLoads& L_;
-  const int N_, S_;
+  const int N_, E_, S_;  ///< q; 1 with [plates] (their advance), else 0; all unknowns
   const double radius_;
   double last_step_ = INFINITY;
   double work_ = 0.0;  ///< the loads' work along the accepted path, and the rig's, J
@@ -178,7 +220,7 @@ paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, 
                         const std::string& who, FramePathEnergy* energy) {
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
   FrameStatics eq(f, loads, radius);
-  paths::State rest{paths::Vector::Zero(N + R), 0.0};
+  paths::State rest{paths::Vector::Zero(eq.size()), 0.0};
   rest.z.head(N) = f.rest;
   paths::Continuation policy;
   policy.steps = statics.steps;
@@ -187,11 +229,37 @@ paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, 
   if (path.end != paths::Trace::End::reached)
     throw ring::NumericalError(who + ": " + paths::failure_message(path, policy));
   if (energy) {
-    *energy = eq.energy(path.state.z.head(N));
-    energy->reaction = eq.reaction(path.state.z);
+    *energy = eq.energy(path.state.z.head(N), path.state.s);
+    energy->reaction = eq.reaction(path.state.z, path.state.s);
   }
   return path;
 }
+
+namespace {
+
+/// [plates] on the frame: the plates on f.geometry (the chain's view of its nodes) and the
+/// chain's three rows on q's translations (chain.hpp, hold_plates), appended to f.S.
+void hold_frame_plates(Frame& f, const ring::RingSpec& spec, const ring::StaticOptions::Plates& plates) {
+  f.geometry.plates.emplace(spec, plates);
+  const std::array<int, 2> nodes{node_of(plates.axis, f.geometry.anchor_deg, f.n, "plates.axis"),
+                                 node_of(plates.axis + 180.0, f.geometry.anchor_deg, f.n, "plates.axis")};
+  f.geometry.plate_nodes = nodes;
+  const std::array<double, 2> d = f.geometry.plates->d, e{-d[1], d[0]};
+  Triplets t;
+  for (int col = 0; col < f.S.outerSize(); ++col)
+    for (Sparse::InnerIterator it(f.S, col); it; ++it) t.emplace_back(static_cast<int>(it.row()), col, it.value());
+  const int r = static_cast<int>(f.S.rows());
+  for (int p = 0; p < 2; ++p)
+    for (int i = 0; i < 2; ++i) {
+      t.emplace_back(r + p, 3 * nodes[p] + i, e[i]);
+      t.emplace_back(r + 2, 3 * nodes[p] + i, d[i]);
+    }
+  Sparse S(r + 3, f.S.cols());
+  S.setFromTriplets(t.begin(), t.end());
+  f.S = S;
+}
+
+}  // namespace
 
 StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions& options,
                           const ring::StaticOptions& statics) {
@@ -203,6 +271,7 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
     f.drive = Vec2(statics.displacement->value[0], statics.displacement->value[1]);
     f.S = with_point_rows(f.S, 3 * f.driven);
   }
+  if (statics.plates) hold_frame_plates(f, spec, *statics.plates);
   const FrameLoads loads(f, spec, statics.loads, "static");
   const auto rec = record_nodes(f, statics.record, "static.record");
   const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
@@ -228,8 +297,14 @@ StaticDetail frame_static(const ring::RingSpec& spec, const ring::LumpedOptions&
   }
   detail.ground_force = ground_force(supports, mu.head(supports.rows()), *f.terms, q - f.rest, 3);
   out.reaction = energy.reaction;
+  out.contact_length = energy.contact_length;
+  if (statics.plates) {  // the chain's three rows, S's last
+    detail.no_slide = {mu[R - 3], mu[R - 2]};
+    detail.centre = mu[R - 1];
+    detail.plate_loads = plate_loads(f.geometry, f.positions(q), path.state.s);
+  }
   out.solver = "lumped";
-  out.unknowns = N + R;
+  out.unknowns = N + R + (statics.plates ? 1 : 0);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return detail;
 }

@@ -144,34 +144,50 @@ class ChainStatics : public paths::Equilibrium {
         c_(own_ ? *own_ : c),
         L_(loads),
         N_(2 * c.n),
-        S_(2 * c.n + c.rows()),
+        E_(c.plates ? 1 : 0),
+        S_(2 * c.n + E_ + c.rows()),
         scale_(scale),
         radius_(radius),
         route_(route) {}
   ChainStatics(const ChainStatics&) = delete;  // c_ may refer to own_
   ChainStatics& operator=(const ChainStatics&) = delete;
   Eigen::Index size() const override { return S_; }
-  Eigen::Index arc_size() const override { return N_; }
+  /// The positions, and with [plates] their advance a (below): a ring that has sprung back clear
+  /// of the plates on unloading stands still while s falls, and an arc measured on the positions
+  /// alone could not step on.
+  Eigen::Index arc_size() const override { return N_ + E_; }
   bool linearize(const paths::State& s, const paths::Vector& w, double ws, paths::Vector& r) override {
-    const Vec x = s.z.head(N_), lambda = s.z.tail(S_ - N_);
+    const Vec x = s.z.head(N_), lambda = multipliers(s.z);
     const Springs sp = tangent(c_, L_, x, lambda * scale_, s.s, 1.0);
     Triplets t = sp.hess;
-    jacobian(c_, x, N_, scale_, true, t);
-    jacobian(c_, x, N_, scale_, false, t);
+    const int M = N_ + E_;  // the first multiplier's row
+    jacobian(c_, x, M, scale_, true, t);
+    jacobian(c_, x, M, scale_, false, t);
     Triplets gt;
     jacobian(c_, x, 0, 1.0, true, gt);
-    Sparse GT(N_, S_ - N_);
+    Sparse GT(N_, S_ - M);
     GT.setFromTriplets(gt.begin(), gt.end());
     r.resize(S_);
     const Vec gP = L_.gradient(x);
     // A driven point (static.displacement): its rows S (x - rest) - s drive, whose change with
     // s is the load column's constraint part (constraint_rate); no loads act then (gP = 0).
     const Vec rate = constraint_rate(c_);
-    r << sp.grad + GT * (lambda * scale_) + s.s * gP, scale_ * (constraints(c_, x) + s.s * rate);
+    r.head(N_) = sp.grad + GT * (lambda * scale_) + s.s * gP;
+    r.tail(S_ - M) = scale_ * (constraints(c_, x) + s.s * rate);
     Vec b = Vec::Zero(S_), wz = Vec::Zero(S_);
     b.head(N_) = gP;
-    b.tail(S_ - N_) = scale_ * rate;
-    wz.head(N_) = w.head(N_);
+    b.tail(S_ - M) = scale_ * rate;
+    if (c_.plates) {
+      // Their penalty is in sp (tangent()), its change with s in the load column; and the
+      // plates' advance a = s travel / 2 is an unknown of its own (row N_: scale (a - s travel / 2)),
+      // which the arc measures with the positions.
+      b.head(N_) += plate_rate(c_, x, s.s);
+      const double half = 0.5 * c_.plates->travel;
+      r[N_] = scale_ * (s.z[N_] - s.s * half);
+      t.emplace_back(N_, N_, scale_);
+      b[N_] = -scale_ * half;
+    }
+    wz.head(M) = w.head(M);
     return factor_bordered(std::move(t), S_, b, wz, ws, lu_) && r.allFinite();
   }
   bool solve(paths::Vector& y) override {
@@ -214,8 +230,14 @@ class ChainStatics : public paths::Equilibrium {
     // A driven point: the rig's work, the trapezoidal rule on reaction . d(displacement), the
     // displacement s drive linear in s (exact where the reaction is linear in s).
     if (c_.driven >= 0) {
-      const std::array<double, 2> a = reaction(from.z), b = reaction(to.z);
+      const std::array<double, 2> a = reaction(from.z, from.s), b = reaction(to.z, to.s);
       work_ += 0.5 * (to.s - from.s) * ((a[0] + b[0]) * c_.drive.x() + (a[1] + b[1]) * c_.drive.y());
+    }
+    // [plates]: each plate's work, its total pressure times its own advance s travel / 2, by
+    // the same trapezoidal rule.
+    if (c_.plates) {
+      const std::array<double, 2> a = plate_loads(c_, from.z.head(N_), from.s), b = plate_loads(c_, to.z.head(N_), to.s);
+      work_ += 0.5 * (to.s - from.s) * 0.5 * c_.plates->travel * (a[0] + a[1] + b[0] + b[1]);
     }
     if (own_) own_->bending.commit(bending_strains(c_, to.z.head(N_)));
     if (recording_) path_.push_back(path_point(to.s, to.z));
@@ -223,6 +245,8 @@ class ChainStatics : public paths::Equilibrium {
     if (k.distance >= c_.depth) return std::nullopt;
     return paths::Touch{1.0, contact_where(c_, k) + "; the chain model does not include contact"};
   }
+  /// The multipliers of z (links, then the support rows), in units of scale_.
+  Vec multipliers(const paths::Vector& z) const { return z.tail(S_ - N_ - E_); }
   /// The bending law with the committed states (bending.hpp).
   const Bending& bending() const { return c_.bending; }
   /// The work of the loads along the accepted path so far, J.
@@ -238,7 +262,7 @@ class ChainStatics : public paths::Equilibrium {
   /// the path ends at the bifurcation).
   std::optional<paths::Vector> critical_direction(const paths::State& s) override {
     const std::optional<Vec> d =
-        least_stable_direction(c_, L_, s.z.head(N_), s.z.tail(S_ - N_) * scale_, s.s, route_);
+        least_stable_direction(c_, L_, s.z.head(N_), multipliers(s.z) * scale_, s.s, route_);
     if (!d) return std::nullopt;
     paths::Vector dz = paths::Vector::Zero(S_);
     dz.head(N_) = *d;
@@ -255,22 +279,27 @@ class ChainStatics : public paths::Equilibrium {
   ring::PathPoint point_of(const paths::State& x) const { return path_point(x.s, x.z); }
   /// The force the rig applies on the ring at the driven point (static.displacement), N:
   /// minus the multipliers of its rows, S's last two (the residual's G^T lambda is the force the
-  /// constraint needs from the ring). 0 without a driven point.
-  std::array<double, 2> reaction(const paths::Vector& z) const {
+  /// constraint needs from the ring). [plates]: the force of the plate at plates.axis on the
+  /// ring, its total pressure along -d_0. 0 without either.
+  std::array<double, 2> reaction(const paths::Vector& z, double s) const {
+    if (c_.plates) {
+      const double f = plate_loads(c_, z.head(N_), s)[0];
+      return {-f * c_.plates->d[0], -f * c_.plates->d[1]};
+    }
     if (c_.driven < 0) return {0.0, 0.0};
     return {-scale_ * z[S_ - 2], -scale_ * z[S_ - 1]};
   }
   /// The inertia of the tangent on the constraints' tangent space (stability.hpp): dense
   /// O(n^3) up to n = 200, O(n) frontal LDL^T of the KKT matrix up to n = 10^4, none above.
   std::optional<int> unstable_directions(const paths::State& s) override {
-    return lumped::unstable_directions(c_, L_, s.z.head(N_), s.z.tail(S_ - N_) * scale_, s.s, scale_, route_);
+    return lumped::unstable_directions(c_, L_, s.z.head(N_), multipliers(s.z) * scale_, s.s, scale_, route_);
   }
 
  private:
   std::optional<Chain> own_;  ///< ring.plastic: a copy, whose bending states are this path's
   const Chain& c_;            ///< own_, or the caller's elastic chain
   const ChainLoads& L_;
-  const int N_, S_;
+  const int N_, E_, S_;  ///< positions; 1 with [plates] (their advance a), else 0; all unknowns
   const double scale_, radius_;
   const InertiaRoute route_;
   double work_ = 0.0;  ///< the loads' work along the accepted path, J
@@ -288,7 +317,8 @@ class ChainStatics : public paths::Equilibrium {
     const Vec x = z.head(N_);
     ring::PathPoint pt;
     pt.load_factor = s;
-    pt.reaction = reaction(z);
+    pt.reaction = reaction(z, s);
+    pt.contact_length = plate_contact_lengths(c_, x, s);
     for (int k : record_) {
       const Vec2 u = c_.at(x, k) - c_.at(c_.rest, k);
       pt.displacements.push_back({ring::wrap_degrees(c_.anchor_deg + c_.step_deg * k), u.x(), u.y()});
@@ -321,7 +351,7 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   const int N = 2 * c.n, R = c.rows();
   const double scale = spec.EI() / (c.l * c.l * c.l);
   ChainStatics eq(c, loads, scale, spec.radius, route);
-  paths::State rest{paths::Vector::Zero(N + R), 0.0};
+  paths::State rest{paths::Vector::Zero(eq.size()), 0.0};
   rest.z.head(N) = c.rest;
   // static.path: the path through bifurcations (branch switching) to the touch, which is a
   // result; every other early end still fails.
@@ -336,6 +366,12 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   // ring at n = 32, measured): the increments were cut to a closing of ~3e-6 R, thousands of
   // steps to a closing of R. The arc's predictor follows the path's tangent, which on the
   // plateau is the mechanism's own motion: a few dozen steps (measured).
+  // [plates] do not: their penalty moves the ring through its contact points softly, and load
+  // stepping hands over to the arc within a few steps (the same loading path: the force at an
+  // approach of R agreed to 4e-5 with the arc from rest, 178 steps against 185 at n = 64,
+  // measured). From rest by arc length, the unloading leg of a history [1, 0.9] stalled where
+  // the ring springs back clear of the plates (at 0.9999, measured): many nodes leave the
+  // plates at once there, and load stepping passes that in one step.
   policy.from_start = c.driven >= 0 && c.bending.plastic();
   if (record) {
     policy.branch_switch = true;
@@ -354,8 +390,16 @@ StaticState follow_statics(const Chain& c, const ChainLoads& loads, const ring::
   st.dissipated = eq.bending().dissipated();
   st.plastic_curvature = eq.bending().plastic_curvature();
   st.work = eq.work();
-  st.reaction = eq.reaction(st.trace.state.z);
+  const double s_end = st.trace.state.s;
+  st.reaction = eq.reaction(st.trace.state.z, s_end);
   st.stored = eq.bending().stored(bending_strains(c, st.x)) + c.terms->energy(st.x - c.rest);
+  if (c.plates) {
+    Springs p;
+    p.grad = Vec::Zero(N);
+    add_plates(c, st.x, s_end, 0.0, p);
+    st.stored += p.energy;
+    st.contact_length = plate_contact_lengths(c, st.x, s_end);
+  }
   return st;
 }
 
@@ -371,6 +415,7 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   if (statics.displacement)
     drive(c, c.hinge(statics.displacement->at),
           Vec2(statics.displacement->value[0], statics.displacement->value[1]));
+  if (statics.plates) hold_plates(c, spec, *statics.plates);
   const auto at = load_hinges(c, spec, statics.loads, "static");
   const auto rec = record_hinges(c, spec, statics.record, "static.record");
   const int N = 2 * c.n, R = c.rows();
@@ -406,8 +451,14 @@ StaticDetail solve_static_detail(const ring::RingSpec& spec, const ring::LumpedO
   }
   detail.ground_force = ground_force(supports, st.lambda.segment(c.links(), supports.rows()), *c.terms, x - c.rest, 2);
   out.reaction = st.reaction;
+  out.contact_length = st.contact_length;
+  if (statics.plates) {  // the no-slide rows' and the centre row's multipliers, S's last three
+    detail.no_slide = {st.lambda[c.rows() - 3], st.lambda[c.rows() - 2]};
+    detail.centre = st.lambda[c.rows() - 1];
+    detail.plate_loads = plate_loads(c, x, path.state.s);
+  }
   out.solver = "lumped";
-  out.unknowns = N + R;
+  out.unknowns = N + R + (c.plates ? 1 : 0);  // [plates]: their advance (ChainStatics)
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return detail;
 }

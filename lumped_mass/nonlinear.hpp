@@ -52,6 +52,24 @@
 // followed by arc length from rest (nonlinear.cpp, follow_statics, says why). The frames the
 // same on their rows (frame_nonlinear.cpp).
 //
+// ## Rigid plates ([plates], ring::PlatePair)
+// No loads and no supports: the plates' penalty is lumped at the nodes as the Winkler foundation
+// is (each node for its ring length l), with the gap at the node's place on the centroid line
+// (chain.hpp, hold_plates: the ring's point at rest moved by the node's displacement), in the
+// energy, the gradient and the tangent (tangent(): l k d_p d_p^T where in_contact), and its
+// change with s, l k (travel / 2) d_p, in the load column. The two points of first contact keep
+// their place along the plates by one roller-like row each, e . (x - rest) = 0, and their
+// midpoint stays on the plates' midline, d_0 . (u_a + u_b) = 0 (S's last three;
+// StaticDetail::no_slide and ::centre their multipliers, ~0 by symmetry): without that row a
+// ring that springs back clear of both plates on unloading (static.history) is free along d_0.
+// The plates' advance a = s travel / 2 is one more unknown, measured by the arc with the
+// positions, so that the arc can step on while such a ring stands still. The path is followed by
+// load stepping that hands over to the arc, elastic and plastic (nonlinear.cpp, follow_statics,
+// says why not from rest by arc as a driven point); the reaction is the force of the plate at
+// plates.axis on the ring, the plates' work their pressure times their advance (trapezoidal
+// rule), and the stored energy counts the penalty's. The frames (elastic, without static.path)
+// take the same penalty and rows on their translations (frame_nonlinear.cpp).
+//
 // ## ring.plastic in the statics (bending.hpp)
 // The hinge springs' law is ring.plastic's resultant law on the hinge rotation (stiffness EI/l,
 // yield Mp, the scene's hardening and rule), its potential in V from the committed states.
@@ -126,10 +144,12 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::LumpedOp
 /// supports' reactions (the multipliers of their rows) and the forces of the elastic supports
 /// and the foundation, summed, N (x, y). At equilibrium it balances the loads' resultant
 /// (the weight under gravity alone; under static.displacement, minus the reaction).
-/// `work`: the loads' work along the path (static.displacement: the rig's), the trapezoidal
+/// `work`: the loads' work along the path (static.displacement: the rig's; [plates]: the
+/// plates'), the trapezoidal
 /// rule over the accepted steps (exact for a path linear in the load factor, O(steps^-2)
 /// otherwise), J; `stored`: the elastic
-/// energy at the end (the bending law's and the terms'; the frames' axial and shear too), J.
+/// energy at the end (the bending law's and the terms'; the frames' axial and shear too; the
+/// plates' penalty), J.
 /// The energy identity: work = stored + result.dissipated.
 /// `limit`: the path's first limit point (the first maximum of the load factor, located by the
 /// continuation driver to 1e-6 of its arc step), NaN when the path met none.
@@ -138,6 +158,12 @@ struct StaticDetail {
   std::array<double, 2> ground_force{0.0, 0.0};
   double work = 0.0, stored = 0.0;
   double limit = std::numeric_limits<double>::quiet_NaN();
+  /// [plates]: the multipliers of the two no-slide rows (at plates.axis, then opposite), N (the
+  /// force along the plates that holds each point; ~0 under a symmetric crushing), and the
+  /// total pressure of each plate on the ring, N; `centre`: the centre row's multiplier (the
+  /// force along d_0 that keeps the two points' midpoint on the plates' midline; ~0), N.
+  std::array<double, 2> no_slide{0.0, 0.0}, plate_loads{0.0, 0.0};
+  double centre = 0.0;
 };
 /// How the statics count an equilibrium's unstable directions for the continuation
 /// driver's bifurcation test (stability.hpp): automatic (dense up to n = 200, an O(n)
@@ -167,6 +193,7 @@ struct StaticState {
   double work = 0.0;               ///< the loads' work along the path (StaticDetail), J
   double stored = 0.0;             ///< the elastic energy at the end (StaticDetail), J
   std::array<double, 2> reaction{0.0, 0.0};  ///< static.displacement: the rig's force at the end, N
+  std::array<double, 2> contact_length{0.0, 0.0};  ///< [plates]: at the end, m
 };
 
 /// Follows the chain's static equilibrium under `loads` (chain.hpp, loads.hpp) from rest to
