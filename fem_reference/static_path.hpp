@@ -30,6 +30,9 @@ struct StaticSolve {
   double plastic_curvature = 0.0;
   /// static.displacement, at the path's end: the force on the ring at the driven point (N).
   std::array<double, 2> reaction{0.0, 0.0};
+  /// [plates], at the path's end: the contact length on each plate (m); reaction is then
+  /// the force of the plate at plates.axis (N).
+  std::array<double, 2> contact_length{0.0, 0.0};
 };
 
 /// Traces the path of `st` with the discretization `setup` (no throw on a failed path:
