@@ -140,6 +140,11 @@
 // Either beam, ring.plastic (its laws), static.path and static.history, fem.extensible = false
 // and fem.reference (without static.path; the reference also watches the reaction).
 // static_path.cpp (BeamEquilibrium) says why multipliers and not an inhomogeneous constraint.
+// Rigid plates ([plates]; no loads, no supports): the penalty of ring::PlatePair is a term of
+// the potential (BeamPotential: energy, pressure, tangent, dR/ds), and the two points of first
+// contact keep their place along the plates by the same two multipliers (v = 0); the reaction
+// is the force of the plate at plates.axis. Measured: tests/fem_reference/fem_plates_test.cpp
+// (README, "Rigid plates"), which also says what is refused.
 // Measured: tests/fem_reference/fem_driven_test.cpp (README, "Displacement control").
 // Self-contact, after every accepted step: the deformed centreline, sampled at most
 // depth/2 apart, as a closed polygon; two edges whose nearest ends are at least 2 depths
