@@ -300,15 +300,6 @@ static void check_plates(const ring::RingSpec& spec, const ring::FemOptions& o, 
   if (st.displacement) refuse("", "the plates drive the path: remove static.displacement");
   if (spec.supports.pin || spec.supports.roller || !spec.supports.pins.empty() || spec.supports.clamp)
     refuse("", "the plates hold the ring (and its two no-slide rows): remove the pin, roller, pins and clamp");
-  if (spec.plastic)
-    for (std::size_t k = 0; k < st.history.size(); ++k)
-      if (st.history[k] < (k ? st.history[k - 1] : 0.0))
-        throw ring::InputError("", "static.history",
-                               "fem: backing the plates off a plastic ring (a falling static.history, here " +
-                                   std::to_string(st.history[k]) + " after " +
-                                   std::to_string(k ? st.history[k - 1] : 0.0) +
-                                   ") is not offered yet: its path stalls once the force has fallen by about half "
-                                   "(fem_reference/README.md, \"Rigid plates\"); load on in rising legs");
   if (!o.extensible)
     refuse("", "fem.extensible = false (the extrapolation from two paths) is not offered with the plates: its contact "
                "lengths, extents on sampled points, are not smooth in 1/EA; use fem.extensible = true");

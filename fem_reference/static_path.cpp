@@ -359,6 +359,9 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
     if (st_.plates) {
       at_path.reaction = v.plate_forces[0];
       at_path.opposite = v.plate_forces[1];
+      const bool off = at_path.reaction == std::array<double, 2>{0.0, 0.0} ||
+                       at_path.opposite == std::array<double, 2>{0.0, 0.0};
+      out_.left_plates = off ? to.s : std::numeric_limits<double>::quiet_NaN();
     }
   }
   out_.path.push_back(at_path);
@@ -508,7 +511,12 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
 }
 
 std::string failure_message(const StaticSolve& s, const ContinuationOptions& continuation) {
-  return "fem statics: " + paths::failure_message(s.trace, continuation);
+  std::string why = "fem statics: " + paths::failure_message(s.trace, continuation);
+  if (!std::isnan(s.left_plates))
+    why += "; the ring had left a plate at load factor " + number(s.left_plates) +
+           " (the plates backed off past its springback, and a ring off a plate has no equilibrium position "
+           "along the plates' normal): end the history before the force falls to 0";
+  return why;
 }
 
 }  // namespace fem::detail
