@@ -2,7 +2,8 @@
 // --json` on the paper's ring between plates at 90 and 270 deg approaching by c = 1e-3 R, the
 // JSON's "reaction" against the pinch's closed form P = c / ((pi/4 - 2/pi) R^3 / EI)
 // (tests/support/plastic_ring.hpp) and its "contact_length" against the point contact it should be;
-// what the beam does not offer with plates (fem.reference) refused with exit 2 naming plates.
+// static.path = true carrying them at every path point; what the beam does not offer with plates
+// (fem.reference) refused with exit 2 naming plates.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,4 +66,22 @@ TEST(FemPlatesCli, TheReferenceRefinementIsRefusedByTheKey) {
       ringtest::ringvib("static " + write_scene(plates_scene(1e-2, "reference = true\n")) + " --solver fem --json");
   EXPECT_EQ(r.code, 2) << r.err << r.out;
   EXPECT_NE(r.err.find("plates"), std::string::npos) << r.err;
+}
+
+// static.path = true: every path point carries its contact lengths and force (4 load steps and
+// rest: 5 points), and the last point's force is the result's.
+TEST(FemPlatesCli, ThePathCarriesTheContactLengths) {
+  const double c = 1e-2;
+  const ringtest::Run r =
+      ringtest::ringvib("static " + write_scene(plates_scene(c)) + " --solver fem --json --set static.path=true");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  int lengths = 0;
+  for (auto at = r.out.find("\"contact_length\""); at != std::string::npos; at = r.out.find("\"contact_length\"", at + 1))
+    ++lengths;
+  EXPECT_GE(lengths, 6) << r.out;  // the result's and the path's five
+  const std::string last_point = r.out.substr(r.out.rfind("\"load_factor\""));
+  const std::array<double, 2> at_end = pair_after(last_point, "\"reaction\"");
+  const std::array<double, 2> result = pair_after(r.out.substr(r.out.rfind("\"reaction\"")), "\"reaction\"");
+  EXPECT_LT(at_end[1], 0.0) << r.out;  // the upper plate pushes down
+  EXPECT_NEAR(at_end[1], result[1], 1e-9 * std::abs(result[1])) << r.out;
 }
