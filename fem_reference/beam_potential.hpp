@@ -36,7 +36,8 @@ namespace fem::detail {
 ///    but by a composite Gauss-Lobatto rule, kPlateSubcells pieces of each cell with
 ///    kPlateLobatto points each: its points include every vertex (the two points of first
 ///    contact are vertices, so that the tangent at rest holds the ring along the axis), and
-///    the kink's quadrature error falls as (h / kPlateSubcells)^2.
+///    the force and extent of a growing flat contact err at first order in the points'
+///    spacing h / (2 kPlateSubcells) (measured; fem_reference/README.md, "Rigid plates").
 /// Pins, roller and clamp are the model's constraints (exact at any displacement).
 /// ring.plastic: the beam's bending is the plastic law's incremental potential from the
 /// committed states that the caller passes in (plastic_points.hpp); V is then the

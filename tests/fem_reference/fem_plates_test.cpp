@@ -167,17 +167,17 @@ TEST(FemPlates, AgreeWithTheDrivenPinch) {
 
 // The elastic–perfectly plastic ring (resultant law, Mp = 1e-4 EI / R) crushed to an approach of
 // R / 2 (16 cells of degree 5, the degree FemDriven's mechanism takes; 25 steps, arc length from
-// rest), against DeRuntz & Hodge's rigid–plastic crushing. The FE's travelling hinge is not
-// smooth: the resultant law's hinges sit at the bending points and the vertices, so the hinge at
-// the end of the flat part jumps from one to the next, and the force swings about the
-// rigid–plastic curve as it does (a stiff spring engages as the next point reaches the plate,
-// then the arc beyond it yields). Measured from c = 0.1 R on: |P / P_DH - 1| <= 1.3e-2 (the
-// elastic offset, of order Mp R / EI = 1e-4, is far smaller), the contact's extent within
-// 0.244 m of 2 R asin(c / 2R) (it grows in steps as the hinge jumps, the bending points of a
-// quintic cell lying ~0.8 m apart here); bounds 2e-2 and 0.4 m (0.04 R). The energy identity: the plates' work, the
-// trapezoid of |F| d(s travel), against the stored energy (bending and penalty) and the plastic
-// work, measured 1.2e-5; bound 1e-4 (the trapezoid across the force's jumps). The no-slide
-// multipliers stay at round-off (measured < 2e-10 N of ~9 N).
+// rest), against DeRuntz & Hodge's rigid–plastic crushing. The contact does not spread smoothly:
+// the penalty acts at the plates' rule points only (beam_potential.hpp: 17 per cell, 0.245 m
+// apart here), so as the flat part grows a stiff spring engages at each next point that reaches
+// the plate, and the force swings about the rigid–plastic curve between them. Measured from
+// c = 0.1 R on: |P / P_DH - 1| <= 1.28e-2 (the elastic offset, of order Mp R / EI = 1e-4, is far
+// smaller), the contact's extent within 0.244 m of 2 R asin(c / 2R), one rule spacing; both
+// first order in that spacing (measured with 2, 4, 8, 16 pieces per cell: 5.3e-2, 2.6e-2,
+// 1.28e-2, 6.4e-3 and 0.96, 0.48, 0.24, 0.12 m); bounds 2e-2 and 0.4 m (0.04 R). The energy
+// identity: the plates' work, the trapezoid of |F| d(s travel), against the stored energy
+// (bending and penalty) and the plastic work, measured 1.2e-5; bound 1e-4 (the trapezoid across
+// the force's swings). The no-slide multipliers stay at round-off (measured 2e-11 of P).
 TEST(FemPlates, PlasticCrushingMeetsDeRuntzAndHodge) {
   const ring::RingSpec spec = free_plastic_ring(1e-4);
   const ringtest::PinchedPlasticRing o = oracle(spec);
