@@ -11,6 +11,15 @@
 namespace fem::detail {
 namespace {
 
+/// The plates' composite Gauss-Lobatto rule (beam_potential.hpp): pieces per cell, and
+/// points per piece (3: Simpson's, exact for the smooth parts' cubics; the kink limits the
+/// order anyway). A growing flat contact meets the plates point by point: its force and extent
+/// err at first order in the points' spacing (measured: 1.3e-2 and one spacing at 8 pieces,
+/// half at 16); more pieces shrink the vertex's weight and so raise the sinking of a point
+/// contact. fem_reference/README.md, "Rigid plates", has the measurements.
+constexpr unsigned int kPlateSubcells = 8;
+constexpr unsigned int kPlateLobatto = 3;
+
 using Y = Vec4;  // (x_t, x_n, a_t, a_n)
 
 void add(Scalar& to, const Scalar& term, double factor = 1.0) {
@@ -94,9 +103,36 @@ Scalar centrifugal(const Y& y, double c, double R) {
 
 }  // namespace
 
-BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads, bool statics)
+BeamPotential::BeamPotential(const BeamModel& model, const ring::Loads& loads, bool statics,
+                             const ring::StaticOptions::Plates* plates)
     : model_(model), loads_(loads), rhoA_(model.spec_.rhoA()), constant_load_(model.n_free()) {
   const ring::RingSpec& spec = model.spec_;
+  if (plates) {
+    plates_.emplace(spec, *plates);
+    // The pieces' Lobatto points, shared ends merged (xi ascending in [0, 1]); the weights
+    // times the cell's rest length, the sum of the Gauss rule's ds0.
+    double cell_length = 0.0;
+    for (double ds : model.load_rule_.ds) cell_length += ds;
+    const QGaussLobatto<1> lobatto(kPlateLobatto);
+    for (unsigned int piece = 0; piece < kPlateSubcells; ++piece)
+      for (unsigned int j = 0; j < lobatto.size(); ++j) {
+        const double xi = (piece + lobatto.point(j)[0]) / kPlateSubcells;
+        const double ds = lobatto.weight(j) * cell_length / kPlateSubcells;
+        if (j == 0 && piece > 0) {
+          plate_rule_.ds.back() += ds;
+          continue;
+        }
+        plate_rule_.xi.push_back(xi);
+        plate_rule_.ds.push_back(ds);
+      }
+    const FESystem<1>& fe = model.fe();
+    for (double xi : plate_rule_.xi)
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
+        const unsigned int c = fe.system_to_component_index(i).first;
+        const double v = fe.shape_value(i, Point<1>(xi));
+        plate_rule_.row.push_back({c == 0 ? v : 0.0, c == 1 ? v : 0.0});  // u along t0, w along n0
+      }
+  }
   for (const ring::PointLoad& p : loads.points)
     constant_load_ += model.vertex_force(model.vertex_of(p.angle), p.force);
   if (loads.has_gravity())
@@ -262,7 +298,75 @@ BeamPotential::Value BeamPotential::evaluate(const Vector<double>& q, double s, 
 
   // Rotational springs: kr/2 theta^2 on the vertex's rotation (the model's, exact).
   for (const auto& [v, kr] : rotations_) out.stored += m.rotation_spring(v, kr, full, residual, tangent);
+  if (plates_) add_plates(full, s, out, residual, tangent, load);
   return out;
+}
+
+void BeamPotential::add_plates(const Vector<double>& full, double s, Value& out, Vector<double>* residual,
+                               SparseMatrix<double>* tangent, Vector<double>* load) const {
+  const BeamModel& m = model_;
+  const ring::PlatePair& plates = *plates_;
+  const double R = m.spec_.radius;
+  const unsigned int dpc = m.fe().n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(dpc);
+  std::vector<double> x(dpc), fr(dpc), fl(dpc), phi(dpc);
+  FullMatrix<double> k(dpc, dpc);
+  for (unsigned int cell = 0; cell < m.cells(); ++cell) {
+    m.cells_[cell]->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dpc; ++i) x[i] = full[dofs[i]];
+    bool touched = false;
+    std::fill(fr.begin(), fr.end(), 0.0);
+    std::fill(fl.begin(), fl.end(), 0.0);
+    k = 0;
+    for (unsigned int qp = 0; qp < plate_rule_.xi.size(); ++qp) {
+      const std::array<double, 2>* row = &plate_rule_.row[qp * dpc];
+      double u = 0.0, w = 0.0;  // x_t = u, x_n = R + w
+      for (unsigned int i = 0; i < dpc; ++i) {
+        u += x[i] * row[i][0];
+        w += x[i] * row[i][1];
+      }
+      const double theta = m.theta0_ + (cell + plate_rule_.xi[qp]) * m.h_;
+      const double c = std::cos(theta), sn = std::sin(theta);
+      // PlatePair::gap(p, x, s) = R - s travel / 2 - (+-d_0) . x, written without its
+      // cancellation: with delta = theta - axis, d_0 . n0 = cos delta, d_0 . t0 = -sin delta,
+      //   g_0 = 2 R sin^2(delta / 2) - w cos delta + u sin delta - s travel / 2,
+      //   g_1 = 2 R cos^2(delta / 2) + w cos delta - u sin delta - s travel / 2.
+      // R - d_0 . x in doubles keeps only eps R ~ 2e-15 m of a gap whose negative part, the
+      // plates' sinking, is ~1e-11 m under a stiff penalty (1e3 x the default on the paper's
+      // ring at c = 1e-3 R): the force came in quanta of k ds eps R = 4.5e-4 of itself.
+      const double delta = theta - std::atan2(plates.d[1], plates.d[0]);
+      const double cd = std::cos(delta), sd = std::sin(delta);
+      const double half = 0.5 * s * plates.travel, sh = std::sin(0.5 * delta), ch = std::cos(0.5 * delta);
+      const double ds = plate_rule_.ds[qp];
+      for (int p = 0; p < 2; ++p) {
+        const double g = p == 0 ? 2.0 * R * sh * sh - w * cd + u * sd - half : 2.0 * R * ch * ch + w * cd - u * sd - half;
+        if (!plates.in_contact(g)) continue;
+        touched = true;
+        // e = +-d_0 in (t0, n0): dg/d(x_t, x_n) = -e.
+        const double sign = p == 0 ? 1.0 : -1.0;
+        const double et = sign * (-plates.d[0] * sn + plates.d[1] * c), en = sign * (plates.d[0] * c + plates.d[1] * sn);
+        const double pressure = plates.pressure(g);
+        out.stored += ds * plates.energy(g);
+        out.plate_forces[p][0] -= ds * pressure * sign * plates.d[0];
+        out.plate_forces[p][1] -= ds * pressure * sign * plates.d[1];
+        for (unsigned int i = 0; i < dpc; ++i) phi[i] = et * row[i][0] + en * row[i][1];
+        for (unsigned int i = 0; i < dpc; ++i) {
+          fr[i] += ds * pressure * phi[i];
+          fl[i] -= ds * plates.k * 0.5 * plates.travel * phi[i];  // -dR/ds: the gap falls by travel / 2
+          if (tangent)
+            for (unsigned int j = 0; j < dpc; ++j) k(j, i) += ds * plates.k * phi[j] * phi[i];
+        }
+      }
+    }
+    if (!touched) continue;
+    auto scatter = [&](const std::vector<double>& local, Vector<double>& global) {
+      for (unsigned int i = 0; i < dpc; ++i)
+        for (const auto& [f, w] : m.expansion_[dofs[i]]) global[f] += w * local[i];
+    };
+    if (residual) scatter(fr, *residual);
+    if (load) scatter(fl, *load);
+    if (tangent) m.add_local(k, dofs, *tangent);
+  }
 }
 
 void BeamPotential::coriolis(SparseMatrix<double>& G) const {

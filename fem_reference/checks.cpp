@@ -275,17 +275,51 @@ static void check_displacement(const ring::RingSpec& spec, const ring::FemOption
     refuse("", "static.displacement drives the path, and loads would be scaled with it: give the one or the other");
 }
 
+/// [plates] (static_path.cpp, BeamPotential): the closed ring on the curved geometry, both
+/// points of first contact on vertices, no loads and no supports, a finite approach and a
+/// positive stiffness. The scene reader checks the same; this guards the library's callers.
+/// Refused: the inextensible extrapolation and the reference refinement (their results are
+/// combinations of paths whose contact lengths are not a smooth function of EA or of the mesh:
+/// the extent jumps by the quadrature and sample spacing; untested, so refused).
+static void check_plates(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
+  if (!st.plates) return;
+  const ring::StaticOptions::Plates& p = *st.plates;
+  auto refuse = [](const std::string& sub, const std::string& why) { throw ring::InputError("", "plates" + sub, "fem: " + why); };
+  if (spec.is_arch()) refuse("", "the plates crush a closed ring (remove ring.arc)");
+  if (o.geometry != ring::FemOptions::Geometry::curved)
+    refuse("", "the plates' penalty is integrated on the curved geometry (fem.geometry = \"curved\")");
+  if (!std::isfinite(p.axis) || !ring::on_node(spec, p.axis, o.elements) || !ring::on_node(spec, p.axis + 180.0, o.elements))
+    refuse(".axis", "the points of first contact (=" + std::to_string(p.axis) + " and " + std::to_string(p.axis + 180.0) +
+                        " deg) must fall on FE vertices: " + vertex_rule(spec) + " (an even fem.elements)");
+  if (!(std::isfinite(p.travel) && p.travel > 0.0 && p.travel < 2.0 * spec.radius))
+    refuse(".travel", "the plates' approach (=" + std::to_string(p.travel) + " m) must lie in (0, 2 R)");
+  if (!(std::isfinite(p.stiffness) && p.stiffness > 0.0))
+    refuse(".stiffness", "the penalty (=" + std::to_string(p.stiffness) + " N/m^2) must be positive and finite");
+  if (!st.loads.points.empty() || st.loads.pressure.any() || st.loads.has_gravity())
+    refuse("", "the plates drive the path, and loads would be scaled with them: give the one or the other");
+  if (st.displacement) refuse("", "the plates drive the path: remove static.displacement");
+  if (spec.supports.pin || spec.supports.roller || !spec.supports.pins.empty() || spec.supports.clamp)
+    refuse("", "the plates hold the ring (and its two no-slide rows): remove the pin, roller, pins and clamp");
+  if (!o.extensible)
+    refuse("", "fem.extensible = false (the extrapolation from two paths) is not offered with the plates: its contact "
+               "lengths, extents on sampled points, are not smooth in 1/EA; use fem.extensible = true");
+  if (o.reference)
+    refuse("", "fem.reference = true is not offered with the plates (untested: the contact's extent moves between "
+               "the quadrature points as the mesh refines); choose fem.elements and fem.degree");
+}
+
 void check_static(const ring::RingSpec& spec, const ring::FemOptions& o, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the fem beam");
   check_nonlinear(spec, o, st.loads, st.record, "static");
   check_displacement(spec, o, st);
+  check_plates(spec, o, st);
   if (spec.is_arch() && spec.plastic)
     throw ring::InputError("", "ring.arc", "fem: the plastic statics take no arch yet (remove ring.plastic)");
   check_plastic(spec, "statics");
   // An equilibrium from rest needs a regular tangent there: nothing of the ring may move
   // freely, unless gravity holds a ring that hangs from its pin (ring::static_rigid_modes).
-  // A driven point holds the ring as a pin does (its two multipliers, static_path.cpp).
-  ring::refuse_plates(st, "the fem beam");
+  // A driven point holds the ring as a pin does (its two multipliers, static_path.cpp); the
+  // plates hold it along their normal, and their no-slide rows along them and its turning.
   need(ring::static_rigid_modes(spec, st) == 0,
        "statics need supports that hold every rigid motion (" + std::to_string(spec.rigid_modes()) +
            " left free): a pin and supports.roller, supports.pins, supports.clamp, supports.springs or a foundation");

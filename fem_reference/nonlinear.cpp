@@ -84,6 +84,7 @@ ring::StaticResult to_result(StaticSolve sol, const ring::StaticOptions& st) {
   r.dissipated = sol.dissipated;
   r.plastic_curvature = sol.plastic_curvature;
   r.reaction = sol.reaction;
+  r.contact_length = sol.contact_length;
   if (st.path) {
     const bool touched = sol.trace.end == paths::Trace::End::contact;
     r.path = std::move(sol.points);

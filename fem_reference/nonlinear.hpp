@@ -140,6 +140,11 @@
 // Either beam, ring.plastic (its laws), static.path and static.history, fem.extensible = false
 // and fem.reference (without static.path; the reference also watches the reaction).
 // static_path.cpp (BeamEquilibrium) says why multipliers and not an inhomogeneous constraint.
+// Rigid plates ([plates]; no loads, no supports): the penalty of ring::PlatePair is a term of
+// the potential (BeamPotential: energy, pressure, tangent, dR/ds), and the two points of first
+// contact keep their place along the plates by the same two multipliers (v = 0); the reaction
+// is the force of the plate at plates.axis. Measured: tests/fem_reference/fem_plates_test.cpp
+// (README, "Rigid plates"), which also says what is refused.
 // Measured: tests/fem_reference/fem_driven_test.cpp (README, "Displacement control").
 // Self-contact, after every accepted step: the deformed centreline, sampled at most
 // depth/2 apart, as a closed polygon; two edges whose nearest ends are at least 2 depths
@@ -292,6 +297,14 @@ struct StaticPath {
     /// point, and stored is filled with or without ring.plastic, so that the rig's work
     /// int reaction . d(displacement) can be set against stored + dissipated.
     std::array<double, 2> reaction{0, 0};
+    /// [plates]: `reaction` is the force of the plate at plates.axis on the ring (N, x and y),
+    /// the path's point the vertex at plates.axis, `stored` includes the plates' penalty,
+    /// contact_length the contact's extent on each plate (m, ring::PlatePair), and no_slide the
+    /// multipliers of the two no-slide rows (N along the plates: the friction the ring would
+    /// need at the two points of first contact, ~0 by symmetry).
+    std::array<double, 2> contact_length{0, 0};
+    std::array<double, 2> no_slide{0, 0};
+    std::array<double, 2> opposite{0, 0};  ///< [plates]: the opposite plate's force, N
   };
   std::vector<Point> points;  ///< every accepted equilibrium (load steps, then arc steps)
   /// The first maximum of the load factor along the path (a limit point), located to

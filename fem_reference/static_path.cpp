@@ -35,6 +35,11 @@ constexpr double kMaxArcMove = 0.1;
 /// is detected).
 constexpr unsigned int kDenseInertiaLimit = 1500;
 
+/// [plates]' contact length: centroid-line points per cell (PlatePair::contact_lengths
+/// interpolates the gap's zero between two of them, so the ends of the contact are found to
+/// within the chord's sag and the gap's curvature over 1/32 of a cell).
+constexpr unsigned int kContactPerCell = 32;
+
 std::string number(double x, int digits = 9) {
   std::ostringstream o;
   o << std::setprecision(digits) << x;
@@ -45,6 +50,7 @@ std::string number(double x, int digits = 9) {
 /// record point's, else vertex 0 (the pin, or 0 deg).
 double path_point(const ring::StaticOptions& st) {
   if (st.displacement) return st.displacement->at;
+  if (st.plates) return st.plates->axis;
   if (!st.loads.points.empty()) return st.loads.points.front().angle;
   if (!st.record.empty()) return st.record.front();
   return 0.0;
@@ -73,6 +79,16 @@ double path_point(const ring::StaticOptions& st) {
 /// matrix [K -G^T dR/ds; -G 0 v; w^T 0 ws] stays regular (G has full rank on the vertex's
 /// two free unknowns u, w). The constraints' tangent space is then q with those two unknowns
 /// zero, on which the inertia and the critical direction are taken.
+///
+/// [plates] (no loads, no supports): the plates' penalty is a term of the potential
+/// (BeamPotential: its energy, pressure, tangent and dR/ds = -F), and the two points of first
+/// contact keep their place along the plates, e . U = 0 at the vertices at axis and
+/// axis + 180 (e = (-sin axis, cos axis)), by the same two multipliers with v = 0: there e is
+/// the vertex's own tangent t0 (or -t0), so each row holds one unknown, the vertex's u (G's
+/// entries below 1e-12 of the largest, the rounding of cos and sin, are dropped so that the
+/// constraints' tangent space stays q with those two unknowns zero). Their multipliers
+/// (StaticPath::Point::no_slide) are the plates' friction that the ring would need: ~0 by
+/// the crushing's symmetry. The reaction is the force of plate 0 (BeamPotential::Value).
 class BeamEquilibrium : public paths::Equilibrium {
  public:
   BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup, const ring::StaticOptions& st, StaticSolve& out);
@@ -116,22 +132,43 @@ class BeamEquilibrium : public paths::Equilibrium {
     out_.points.push_back(point_at(0.0, model_.expand(q_)));
   }
   /// The path point of an equilibrium (the located limit point).
-  ring::PathPoint point_of(const paths::State& x) const {
+  ring::PathPoint point_of(const paths::State& x) {
     ring::PathPoint pt = point_at(x.s, full(x.z));
-    pt.reaction = reaction(x.z);
+    pt.reaction = reaction(x);
+    pt.contact_length = contact_length(x);
     return pt;
   }
   /// The record and the deformed vertices at the end of a path that reached the full load
   /// (or, static.path, at its touching equilibrium).
-  void finish(const paths::Vector& z);
+  void finish(const paths::State& x);
 
  private:
   /// The tangent K - s hess Phi at x on the free unknowns, symmetrized; with a driven point
   /// on kept_ only (the constraints' tangent space).
   Eigen::SparseMatrix<double> tangent(const paths::State& x);
-  /// The driven point's multipliers in z: the force on the ring there (0 without).
-  std::array<double, 2> reaction(const paths::Vector& z) const {
+  /// The driven point's multipliers in z: the force on the ring there; [plates]: the force
+  /// of the plate at plates.axis on the ring (BeamPotential::Value::plate_force); 0 without.
+  std::array<double, 2> reaction(const paths::State& x) {
+    if (st_.plates) {
+      for (unsigned int i = 0; i < N_; ++i) q_[i] = x.z(i);
+      return potential_.evaluate(q_, x.s, nullptr, nullptr, nullptr, committed()).plate_forces[0];
+    }
+    return multipliers(x.z);
+  }
+  std::array<double, 2> multipliers(const paths::Vector& z) const {
     return M_ ? std::array<double, 2>{z(N_), z(N_ + 1)} : std::array<double, 2>{0.0, 0.0};
+  }
+  /// [plates]: ring::PlatePair::contact_lengths of the deformed centroid line sampled at
+  /// kContactPerCell points per cell in order around the ring; 0 without plates.
+  std::array<double, 2> contact_length(const paths::State& x) const {
+    if (!st_.plates) return {0.0, 0.0};
+    const std::vector<Point2> line = model_.centreline(full(x.z), kContactPerCell);
+    std::vector<double> X(line.size()), Y(line.size());
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      X[k] = line[k][0];
+      Y[k] = line[k][1];
+    }
+    return potential_.plates()->contact_lengths(X, Y, x.s);
   }
   /// The path point of the full DoF vector q at load factor s: the displacements of the
   /// record vertices; the ovalisation (largest - smallest distance between opposite
@@ -185,9 +222,9 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
       built_(make_beam(spec, setup)),
       model_(*built_),
       N_(model_.n_free()),
-      M_(st.displacement ? 2 : 0),
+      M_(st.displacement || st.plates ? 2 : 0),
       loaded_(model_.vertex_of(path_point(st))),
-      potential_(model_, st.loads, true),
+      potential_(model_, st.loads, true, st.plates ? &*st.plates : nullptr),
       law_(potential_.plastic_law()),
       radius_(spec.radius),
       depth_(spec.section.depth()),
@@ -215,6 +252,22 @@ BeamEquilibrium::BeamEquilibrium(const ring::RingSpec& spec, const Setup& setup,
     // it), so G is a rotation on those two: its kernel is q with them zero.
     if (std::count(held.begin(), held.end(), true) != 2)
       throw std::logic_error("fem statics: the driven vertex does not have two free unknowns of its own");
+  }
+  if (st.plates) {
+    // The no-slide rows (class comment): e . U at the vertices at axis and axis + 180.
+    const double a = st.plates->axis * M_PI / 180.0;
+    const std::array<double, 2> e{-std::sin(a), std::cos(a)};
+    for (unsigned int c = 0; c < 2; ++c) {
+      const Vector<double> g = model_.vertex_force(model_.vertex_of(st.plates->axis + 180.0 * c), e);
+      const double largest = g.linfty_norm();
+      for (unsigned int i = 0; i < N_; ++i)
+        if (std::abs(g[i]) > 1e-12 * largest) {
+          G_[c].emplace_back(i, g[i]);
+          held[i] = true;
+        }
+    }
+    if (std::count(held.begin(), held.end(), true) != 2)
+      throw std::logic_error("fem statics: the plates' no-slide rows do not hold one free unknown each");
   }
   for (unsigned int i = 0; i < N_; ++i)
     if (!held[i]) kept_.push_back(i);
@@ -283,7 +336,9 @@ bool BeamEquilibrium::solve(paths::Vector& y) {
 std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const paths::State& to) {
   const Vector<double> q = full(to.z);
   StaticPath::Point at_path{to.s, model_.vertex_displacement(q, loaded_)};
-  at_path.reaction = reaction(to.z);
+  at_path.reaction = multipliers(to.z);
+  if (st_.plates) at_path.no_slide = multipliers(to.z);
+  at_path.contact_length = contact_length(to);
   for (unsigned int i = 0; i < N_; ++i) q_[i] = to.z(i);
   if (law_) {
     // Commit before anything else: a touch ends the path at this equilibrium too.
@@ -297,9 +352,17 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
   }
   if (law_ || M_) {
     // The energies at the committed state (a driven path's rig work is set against them).
-    const BeamPotential::Value v = potential_.evaluate(q_, 0.0, nullptr, nullptr, nullptr, committed());
+    // V and Phi do not depend on s; the plates' penalty does (its gap).
+    const BeamPotential::Value v = potential_.evaluate(q_, to.s, nullptr, nullptr, nullptr, committed());
     at_path.stored = v.stored;
     at_path.load = v.load;
+    if (st_.plates) {
+      at_path.reaction = v.plate_forces[0];
+      at_path.opposite = v.plate_forces[1];
+      const bool off = at_path.reaction == std::array<double, 2>{0.0, 0.0} ||
+                       at_path.opposite == std::array<double, 2>{0.0, 0.0};
+      out_.left_plates = off ? to.s : std::numeric_limits<double>::quiet_NaN();
+    }
   }
   out_.path.push_back(at_path);
   if (recording_) {
@@ -307,6 +370,7 @@ std::optional<paths::Touch> BeamEquilibrium::accept(const paths::State&, const p
     out_.points.back().dissipated = dissipated_;
     out_.points.back().plastic_curvature = plastic_curvature_;
     out_.points.back().reaction = at_path.reaction;
+    out_.points.back().contact_length = at_path.contact_length;
   }
   std::vector<Point2> next = model_.centreline(q, per_cell_);
   // The deformed centreline moves between the two equilibria; checking only the ends
@@ -408,9 +472,11 @@ ring::PathPoint BeamEquilibrium::point_at(double s, const Vector<double>& q) con
   return pt;
 }
 
-void BeamEquilibrium::finish(const paths::Vector& z) {
+void BeamEquilibrium::finish(const paths::State& x) {
+  const paths::Vector& z = x.z;
   const Vector<double> q = full(z);
-  out_.reaction = reaction(z);
+  out_.reaction = reaction(x);
+  out_.contact_length = contact_length(x);
   for (double a : st_.record) out_.record.push_back(model_.vertex_displacement(q, model_.vertex_of(a)));
   for (unsigned int k = 0; k < model_.vertices(); ++k) {
     const auto X = model_.vertex_position(k);
@@ -432,20 +498,25 @@ StaticSolve trace_path(const ring::RingSpec& spec, const Setup& setup, const rin
   // A driven plastic beam: arc length from rest, as the chains do (load stepping's first
   // iterate on the collapse plateau yields more points than the mechanism's and the increments
   // halve: 5713 equilibria on scenes/crushed-ring.toml at 40 cells of degree 5).
-  options.from_start = continuation.from_start || (st.displacement.has_value() && spec.plastic.has_value());
+  options.from_start = continuation.from_start || (st.driven() && spec.plastic.has_value());
   if (st.path) {
     options.branch_switch = true;
     options.branch_side = st.branch_side;
     beam.record_path();
   }
   out.trace = paths::follow(beam, {paths::Vector::Zero(beam.size()), 0.0}, options);
-  if (out.reached() || (st.path && out.trace.end == paths::Trace::End::contact)) beam.finish(out.trace.state.z);
+  if (out.reached() || (st.path && out.trace.end == paths::Trace::End::contact)) beam.finish(out.trace.state);
   if (st.path && out.trace.limit_state) out.limits.push_back(beam.point_of(*out.trace.limit_state));
   return out;
 }
 
 std::string failure_message(const StaticSolve& s, const ContinuationOptions& continuation) {
-  return "fem statics: " + paths::failure_message(s.trace, continuation);
+  std::string why = "fem statics: " + paths::failure_message(s.trace, continuation);
+  if (!std::isnan(s.left_plates))
+    why += "; the ring had left a plate at load factor " + number(s.left_plates) +
+           " (the plates backed off past its springback, and a ring off a plate has no equilibrium position "
+           "along the plates' normal): end the history before the force falls to 0";
+  return why;
 }
 
 }  // namespace fem::detail

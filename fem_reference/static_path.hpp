@@ -5,6 +5,8 @@
 // nonlinear.cpp drives it (the inextensible extrapolation, the reference refinement).
 #pragma once
 
+#include <limits>
+
 #include "fem_reference/nonlinear.hpp"
 #include "fem_reference/ring_model.hpp"
 #include "paths/continuation.hpp"
@@ -30,6 +32,13 @@ struct StaticSolve {
   double plastic_curvature = 0.0;
   /// static.displacement, at the path's end: the force on the ring at the driven point (N).
   std::array<double, 2> reaction{0.0, 0.0};
+  /// [plates], at the path's end: the contact length on each plate (m); reaction is then
+  /// the force of the plate at plates.axis (N).
+  std::array<double, 2> contact_length{0.0, 0.0};
+  /// [plates]: the load factor of the last accepted equilibrium at which neither plate
+  /// pressed the ring (backed off past its springback: no equilibrium position along their
+  /// normal beyond it), else NaN; failure_message says so.
+  double left_plates = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Traces the path of `st` with the discretization `setup` (no throw on a failed path:
