@@ -191,8 +191,10 @@ constexpr double kPlateWindow = 1e-15;
 
 /// Refuses [plates] the deck cannot write (ring::InputError naming the key): an arch
 /// (ring.arc), loads or supports beside them (the scene reader's rules, for the library's
-/// callers), an element other than B32R (calculix.element: the only one validated), the
-/// nodes at axis and axis + 180 not nodes of the model (plates.axis).
+/// callers), an element other than B32R (calculix.element: the only one validated), a
+/// history leg that draws the plates back (static.history: ccx's first iteration of a return
+/// finds the springs open and the ring free along the axis), the nodes at axis and axis + 180
+/// not nodes of the model (plates.axis).
 void check_plates(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st);
 
 /// The deck of the forced response: *STEP, NLGEOM with *DYNAMIC, DIRECT, ALPHA = 0

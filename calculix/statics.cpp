@@ -108,15 +108,25 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
   std::optional<ring::PlatePair> pair;
   if (st.plates) pair.emplace(spec, *st.plates);
   // The contact lengths on the deformed beam nodes in order around the ring (every node, not
-  // the path's strided shape).
+  // the path's strided shape). ccx prints the displacements with 7 significant digits, and a
+  // touching node's gap is the penalty's sinking, -F / (k w) (~1e-10 m): below the print's
+  // resolution, so that read back it comes out either side of 0 (measured: a crushed ring's
+  // contact length 0 at half its increments). A gap within the print's rounding, 1e-6 of the
+  // largest displacement (twice the rounding of 7 digits), counts as touching: the plates'
+  // position shifted by it, the load factor s + 2 tol / travel in PlatePair::contact_lengths.
+  // It lengthens a contact by sqrt(2 tol R) or less at each end (the ring curving away from
+  // the plate), ~1e-2 m at a travel of R on R = 10 m.
   auto contact = [&](const std::vector<double>& ux, const std::vector<double>& uy, double s) {
     std::vector<double> x(nodes), y(nodes);
+    double largest = 0.0;
     for (int k = 0; k < nodes; ++k) {
       const double t = deck.node_angles[k] * M_PI / 180.0;
       x[k] = spec.radius * std::cos(t) + ux[k];
       y[k] = spec.radius * std::sin(t) + uy[k];
+      largest = std::max(largest, std::hypot(ux[k], uy[k]));
     }
-    return pair->contact_lengths(x, y, s);
+    const double tol = 1e-6 * largest;
+    return pair->contact_lengths(x, y, s + 2.0 * tol / pair->travel);
   };
   ring::StaticResult r;
   r.solver = "calculix";
