@@ -330,4 +330,62 @@ TEST(CalculixPlates, ARisingHistoryEndsWhereOneStepEndsAndAReturnIsRefused) {
   }
 }
 
+// The deck (no ccx needed): a spring and a plate node for every beam node facing a plate (all
+// but the two at axis +- 90), the first contact nodes' window, the no-slide rows; and the
+// refusals by key.
+TEST(CalculixPlates, TheDeckHasASpringPerFacingNodeAndRefusesWhatItCannotWrite) {
+  const ring::RingSpec spec = ringtest::free_ring();
+  const calculix::Deck d = calculix::static_deck(spec, b32r(10), plates(spec, 1.0, 2));
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = d.text.find(what); at != std::string::npos; at = d.text.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("TYPE=SPRINGA"), 18u) << "20 nodes less the two at 0 and 180 deg";
+  EXPECT_EQ(count(", NONLINEAR"), 18u);
+  EXPECT_EQ(count("*TRANSFORM, NSET=NPLATES"), 1u);
+  EXPECT_EQ(count("NPLATE0, 2, 2, "), 1u);
+  EXPECT_EQ(count("*NODE PRINT, NSET=NPLATE0, TOTALS=ONLY"), 1u);
+  // The two first-contact nodes' windows (two rows above the kink at 0).
+  EXPECT_EQ(count("\n0.0, 0.0\n"), 2u);
+  auto refused = [&](const ring::RingSpec& s, const ring::CalculixOptions& o, const std::string& key) {
+    try {
+      calculix::static_deck(s, o, plates(s, 1.0, 2));
+      ADD_FAILURE() << "not refused: " << key;
+    } catch (const ring::InputError& e) {
+      EXPECT_EQ(e.key(), key);
+    }
+  };
+  ring::CalculixOptions b31 = b32r(10);
+  b31.element = ring::CalculixOptions::Element::b31;
+  refused(spec, b31, "calculix.element");
+  refused(ringtest::pinned_ring(270.0), b32r(10), "plates");
+  ring::RingSpec off = spec;
+  off.free_anchor = 5.0;  // no node at 90 deg
+  refused(off, b32r(10), "plates.axis");
+}
+
+// Measuring (by hand: --gtest_also_run_disabled_tests): the fibre tube crushed to c = R at 20
+// and 40 elements, the numbers of calculix/README.md ("Rigid plates"). 30 s and 170 s.
+TEST(CalculixPlates, DISABLED_FibreTubeCrushedToTheRadius) {
+  REQUIRE_CCX();
+  const ring::RingSpec spec = fibre_tube(1e-2);
+  const double R = spec.radius, Mp = plastic_moment(spec), travel = R;
+  const ringtest::PinchedPlasticRing oracle{R, spec.EI(), Mp};
+  for (int n : {20, 40}) {
+    const ring::StaticResult r = calculix::solve_static(spec, as_given(n), plates(spec, travel, 50));
+    double work = 0.0, c0 = 0.0, f0 = 0.0;
+    for (const auto& p : r.path) {
+      const double c = p.load_factor * travel, F = -p.reaction[1];
+      work += (F + f0) * 0.5 * (c - c0);
+      c0 = c;
+      f0 = F;
+      if (c > 0.0)
+        std::printf("  %d  c/R %.3f  F/plates_load %.4f  work/8Mp asin %.4f  contact %.3f (DH %.3f)  top %.4f\n", n,
+                    c / R, F / oracle.plates_load(c), work / (8.0 * Mp * std::asin(c / (2.0 * R))),
+                    p.contact_length[0], oracle.plates_contact_length(c), p.displacements[0].uy);
+    }
+  }
+}
+
 }  // namespace
