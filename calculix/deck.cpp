@@ -798,19 +798,20 @@ void check_plates(const ring::RingSpec& spec, const ring::CalculixOptions& o, co
     throw ring::InputError("", "calculix.element",
                            "[plates] are validated with B32R only (calculix/README.md, \"Rigid plates\"); B31 and B32 "
                            "differ in their plastic section laws and B32 locks: use calculix.element = \"B32R\"");
-  // A leg that draws the plates back: ccx's first iteration of each increment finds the
-  // touching springs at the retreated plates' position, open, so the ring has no stiffness
-  // along the axis and the iteration diverges (measured: a tube crushed to c = 0.03 m and
-  // drawn back by a tenth, "too many cutbacks" in the first increment of the return, where
-  // the same deck continued forward converges in 2-3 iterations per increment).
+  // A leg that draws the plates back: ccx evaluates the first iteration of an increment with
+  // the plates already moved, so their touching springs are open (any retreat exceeds the
+  // penalty's sinking), the ring springs back elastically in the next iteration deep into the
+  // plates, and Newton alternates until "too many cutbacks" (measured: a tube crushed to
+  // c = 0.03 m and drawn back by a tenth fails in the return's first increment, where the same
+  // deck continued forward converges in 2-3 iterations per increment; calculix/README.md).
   for (std::size_t k = 0; k < st.history.size(); ++k)
     if (st.history[k] < (k == 0 ? 0.0 : st.history[k - 1]))
       throw ring::InputError("", "static.history",
                              "leg " + std::to_string(k + 1) + " draws the plates back (" + number(st.history[k]) +
                                  " after " + number(k == 0 ? 0.0 : st.history[k - 1]) +
                                  "): the calculix column's plates ([plates]) take a rising history only (ccx's "
-                                 "first iteration of a return finds the ring's springs open and the ring free along "
-                                 "the plates' axis; calculix/README.md, \"Rigid plates\")");
+                                 "first iteration of a return finds the springs open, and its Newton alternates "
+                                 "between open and deep contact; calculix/README.md, \"Rigid plates\")");
   const std::vector<double> angles = ring::node_angles(spec, pieces(o));
   for (double a : {st.plates->axis, st.plates->axis + 180.0})
     if (node_at(angles, a) < 0)

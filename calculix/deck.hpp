@@ -193,7 +193,7 @@ constexpr double kPlateWindow = 1e-15;
 /// (ring.arc), loads or supports beside them (the scene reader's rules, for the library's
 /// callers), an element other than B32R (calculix.element: the only one validated), a
 /// history leg that draws the plates back (static.history: ccx's first iteration of a return
-/// finds the springs open and the ring free along the axis), the nodes at axis and axis + 180
+/// finds the springs open, and its Newton alternates between open and deep contact), the nodes at axis and axis + 180
 /// not nodes of the model (plates.axis).
 void check_plates(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st);
 
