@@ -243,7 +243,8 @@ DatStatic read_static_dat(const std::string& text, int nodes, const std::string&
   auto fail = [&](int line, const std::string& what) {
     throw ring::NumericalError("calculix: " + name + ", line " + std::to_string(line) + ": " + what);
   };
-  enum class Block { none, displacements, forces };
+  enum class Block { none, displacements, forces, total };
+  int plate = 0;  // the plate of a total block
   Block block = Block::none;
   int line_no = 0, seen = 0;
   std::vector<bool> have;
@@ -252,6 +253,7 @@ DatStatic read_static_dat(const std::string& text, int nodes, const std::string&
       fail(line, "displacements of " + std::to_string(seen) + " of " + std::to_string(nodes) + " nodes");
     if (block == Block::forces && seen != 1)
       fail(line, "a forces block of " + std::to_string(seen) + " nodes (one, the driven node, expected)");
+    if (block == Block::total && seen != 1) fail(line, "a total force block without its row (fx, fy, fz)");
   };
   for (std::string line; std::getline(in, line);) {
     ++line_no;
@@ -275,6 +277,26 @@ DatStatic read_static_dat(const std::string& text, int nodes, const std::string&
         block = Block::forces;
       }
       seen = 0;
+      continue;
+    }
+    if (line.find("total force (fx,fy,fz) for set NPLATE") != std::string::npos) {
+      close(line_no);
+      double t = 0.0;
+      if (w.empty() || !to_double(w.back(), t)) fail(line_no, "expected the time at the end of the line");
+      const std::size_t at = line.find("NPLATE") + 6;
+      plate = at < line.size() && line[at] == '1' ? 1 : 0;
+      if (out.all.empty() || out.all.back().time != t || !std::isnan(out.all.back().plates[plate][0]))
+        fail(line_no, "a plate's total force without its increment's displacements before it");
+      block = Block::total;
+      seen = 0;
+      continue;
+    }
+    if (block == Block::total && w.size() == 3) {
+      double x, y, z;
+      if (!to_double(w[0], x) || !to_double(w[1], y) || !to_double(w[2], z) || seen > 0)
+        fail(line_no, "expected one row: fx, fy, fz");
+      out.all.back().plates[plate] = {x, y};
+      ++seen;
       continue;
     }
     long node = 0;

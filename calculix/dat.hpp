@@ -47,7 +47,8 @@ std::vector<double> read_real_eigenvalues(const std::string& text, const std::st
 
 /// A static step's .dat (*NODE PRINT U of every node after every increment: "displacements
 /// (vx,vy,vz) for set NALL and time t"; with displacement control also *NODE PRINT RF of the
-/// driven node: "forces (fx,fy,fz) for set NDRIVE and time t", after the displacements).
+/// driven node: "forces (fx,fy,fz) for set NDRIVE and time t", after the displacements; with
+/// [plates] the totals of the plate node sets after them).
 struct DatStatic {
   /// One converged increment. `time` is ccx's total time: with steps of period 1, the
   /// step's number minus 1 plus its fraction done.
@@ -56,6 +57,9 @@ struct DatStatic {
     std::vector<double> ux, uy;  ///< [node - 1], m
     /// The one node's reaction force of the forces block (N; NaN without one).
     std::array<double, 2> force{NAN, NAN};
+    /// [plates]: the total RF of the plate nodes of NPLATE0 and NPLATE1 ("total force
+    /// (fx,fy,fz) for set NPLATEp and time t", *NODE PRINT, TOTALS=ONLY), N; NaN without.
+    std::array<std::array<double, 2>, 2> plates{{{NAN, NAN}, {NAN, NAN}}};
   };
   double time = 0.0;           ///< the total time of the last block
   int increments = 0;          ///< blocks printed: the converged increments

@@ -1,5 +1,6 @@
 #include "calculix/deck.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -419,6 +420,7 @@ Deck model_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, cons
   }
 
   d.text = s.str();
+  d.last_element = element;
   return d;
 }
 
@@ -782,9 +784,125 @@ void check_response_deck(const ring::ResponseOptions& rs) {
     throw ring::InputError("", "response.hinge_damping", "the calculix deck writes no damping");
 }
 
+void check_plates(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st) {
+  if (!st.plates) return;
+  if (spec.arc)
+    throw ring::InputError("", "plates", "crush a closed ring: an arch (ring.arc) between plates is not implemented");
+  if (!st.loads.points.empty() || st.loads.pressure.any() || st.loads.has_gravity() || st.displacement)
+    throw ring::InputError("", "plates",
+                           "[plates] drive the path: no loads (static.*) and no static.displacement beside them");
+  if (spec.supports.pin || spec.supports.roller || spec.supports.clamp || !spec.supports.pins.empty())
+    throw ring::InputError("", "plates",
+                           "the plates hold the ring themselves: no pin, roller, pins or clamp beside them");
+  if (o.element != ring::CalculixOptions::Element::b32r)
+    throw ring::InputError("", "calculix.element",
+                           "[plates] are validated with B32R only (calculix/README.md, \"Rigid plates\"); B31 and B32 "
+                           "differ in their plastic section laws and B32 locks: use calculix.element = \"B32R\"");
+  // A leg that draws the plates back: ccx evaluates the first iteration of an increment with
+  // the plates already moved, so their touching springs are open (any retreat exceeds the
+  // penalty's sinking), the ring springs back elastically in the next iteration deep into the
+  // plates, and Newton alternates until "too many cutbacks" (measured: a tube crushed to
+  // c = 0.03 m and drawn back by a tenth fails in the return's first increment, where the same
+  // deck continued forward converges in 2-3 iterations per increment; calculix/README.md).
+  for (std::size_t k = 0; k < st.history.size(); ++k)
+    if (st.history[k] < (k == 0 ? 0.0 : st.history[k - 1]))
+      throw ring::InputError("", "static.history",
+                             "leg " + std::to_string(k + 1) + " draws the plates back (" + number(st.history[k]) +
+                                 " after " + number(k == 0 ? 0.0 : st.history[k - 1]) +
+                                 "): the calculix column's plates ([plates]) take a rising history only (ccx's "
+                                 "first iteration of a return finds the springs open, and its Newton alternates "
+                                 "between open and deep contact; calculix/README.md, \"Rigid plates\")");
+  const std::vector<double> angles = ring::node_angles(spec, pieces(o));
+  for (double a : {st.plates->axis, st.plates->axis + 180.0})
+    if (node_at(angles, a) < 0)
+      throw ring::InputError("", "plates.axis",
+                             "angle " + number(ring::wrap_degrees(a)) + " is not a node of the calculix model (" +
+                                 std::to_string(pieces(o)) + " nodes from " + number(spec.anchor()) + " degrees)");
+}
+
+std::string plates_block(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
+                         Deck& d) {
+  check_plates(spec, o, st);
+  const ring::PlatePair pair(spec, *st.plates);
+  const double axis = st.plates->axis, R = spec.radius;
+  const std::array<double, 2> dv = pair.d, ev{-pair.d[1], pair.d[0]};
+  const double length = kPlateSpringLength * R, window = kPlateWindow * R, range = 4.0 * R;
+  const std::vector<double> shares = node_shares(spec, o);
+  const int nodes = static_cast<int>(d.node_angles.size());
+  const int first = node_at(d.node_angles, axis), opposite = node_at(d.node_angles, axis + 180.0);
+  std::ostringstream s, springs, ties;
+  s << "** Rigid frictionless plates ([plates]): normal d_0 = (" << number(dv[0]) << ", " << number(dv[1])
+    << "), travel " << number(st.plates->travel) << " m at load factor 1,\n"
+    << "** penalty k = " << number(pair.k) << " N/m^2 per metre of ring (ring::PlatePair). Every beam node facing "
+    << "plate p has\n** a plate node " << number(length)
+    << " m beyond the plate's line along d_p (d_1 = -d_0) and a SPRINGA to it whose force is\n"
+    << "** 0 while the gap g is open and k w g beyond (w the node's share of the ring: L/3 end, 2L/3 middle).\n"
+    << "** The plate nodes' local axes (*TRANSFORM): 1 = e = (" << number(ev[0]) << ", " << number(ev[1])
+    << ") along the plates, 2 = d_0.\n";
+  int plate_node = nodes, element = d.last_element;
+  std::array<std::ostringstream, 2> sets;
+  for (int k = 0; k < nodes; ++k) {
+    const double t = d.node_angles[k] * kPi / 180.0, facing = std::cos((d.node_angles[k] - axis) * kPi / 180.0);
+    if (std::abs(facing) < 1e-9) continue;  // at axis +- 90: can touch neither plate
+    const int p = facing > 0.0 ? 0 : 1;
+    const double sign = p == 0 ? 1.0 : -1.0;
+    const double x = R * std::cos(t), y = R * std::sin(t);
+    const double g0 = pair.gap(p, x, y, 0.0);  // R (1 - |cos(theta - axis)|)
+    const double beyond = g0 + length;          // along d_p from the beam node to the plate node
+    const int node = ++plate_node;
+    sets[p] << node << ", " << number(x + sign * beyond * dv[0]) << ", " << number(y + sign * beyond * dv[1]) << ", 0.0\n";
+    const double kw = pair.k * shares[k];
+    const std::string set = "EPLATE" + std::to_string(k + 1);
+    springs << "*ELEMENT, TYPE=SPRINGA, ELSET=" << set << "\n" << ++element << ", " << k + 1 << ", " << node << "\n"
+            << "*SPRING, ELSET=" << set << ", NONLINEAR\n\n";
+    // Rows (force, elongation), elongation = g - g0: the penalty below the kink at g = 0, 0 above.
+    springs << number(-kw * range) << ", " << number(-g0 - range) << "\n";
+    if (k == first || k == opposite)
+      springs << "0.0, 0.0\n" << number(kw * window) << ", " << number(window) << "\n0.0, " << number(2.0 * window)
+              << "\n";
+    else
+      springs << "0.0, " << number(-g0) << "\n";
+    springs << "0.0, " << number(range) << "\n";
+    if (k == first || k == opposite)
+      ties << "*BOUNDARY\n" << node << ", 1, 1\n";
+    else {
+      ties << "*EQUATION\n" << (1 + (std::abs(ev[0]) > 1e-12) + (std::abs(ev[1]) > 1e-12)) << "\n" << node << ", 1, 1.0";
+      if (std::abs(ev[0]) > 1e-12) ties << ", " << k + 1 << ", 1, " << number(-ev[0]);
+      if (std::abs(ev[1]) > 1e-12) ties << ", " << k + 1 << ", 2, " << number(-ev[1]);
+      ties << "\n";
+    }
+  }
+  for (int p = 0; p < 2; ++p) s << "*NODE, NSET=NPLATE" << p << "\n" << sets[p].str();
+  s << "*NSET, NSET=NPLATES\nNPLATE0, NPLATE1\n*TRANSFORM, NSET=NPLATES, TYPE=R\n"
+    << number(ev[0]) << ", " << number(ev[1]) << ", 0.0, " << number(dv[0]) << ", " << number(dv[1]) << ", 0.0\n"
+    << "** The plate nodes stay in the plane.\n*BOUNDARY\nNPLATES, 3, 3\n"
+    << "** Each plate node follows its beam node along e (e . u of the beam node; the two nodes of first\n"
+    << "** contact hold e . u = 0 themselves), so that its spring stays along d_p: no friction.\n"
+    << ties.str()
+    << "** The springs: rows force (N), elongation (m) = g - g_0 (g_0 the node's gap at rest).\n" << springs.str();
+  // The two points of first contact keep their place along the plates: e . u = 0.
+  s << "** No slide: the beam nodes at " << number(axis) << " and " << number(ring::wrap_degrees(axis + 180.0))
+    << " degrees (" << first + 1 << ", " << opposite + 1 << ") do not move along e.\n";
+  for (int k : {first, opposite}) {
+    if (std::abs(ev[0]) < 1e-12 || std::abs(ev[1]) < 1e-12) {
+      const int dof = std::abs(ev[0]) < 1e-12 ? 2 : 1;
+      s << "*BOUNDARY\n" << k + 1 << ", " << dof << ", " << dof << "\n";
+    } else {
+      const bool x_first = std::abs(ev[0]) >= std::abs(ev[1]);
+      s << "*EQUATION\n2\n" << k + 1 << ", " << (x_first ? 1 : 2) << ", " << number(x_first ? ev[0] : ev[1]) << ", "
+        << k + 1 << ", " << (x_first ? 2 : 1) << ", " << number(x_first ? ev[1] : ev[0]) << "\n";
+    }
+  }
+  d.last_element = element;
+  return s.str();
+}
+
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, const ring::StaticOptions& st,
                  const std::string& title) {
-  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads));
+  // Plates hang springs on the beam nodes as the elastic supports do: the section made rigid
+  // across its width as for them (model_deck).
+  Deck d = model_deck(spec, o, title, "Nonlinear statics", false, nodal_loads(spec, st.loads) || st.plates.has_value());
+  if (st.plates) d.text += plates_block(spec, o, st, d);
   // A history: one *STEP per leg, every load (and the driven displacement) times the amplitude
   // LOAD in total time (leg k runs from total time k - 1 to k, from the factor s_{k-1} to s_k),
   // so that a factor of 0 unloads (a load merely left out of a later step would stay on).
@@ -824,10 +942,21 @@ Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& o, con
         << (history ? " (amplitude LOAD).\n*BOUNDARY, AMPLITUDE=LOAD\n" : " (ramped over the step).\n*BOUNDARY\n")
         << driven + 1 << ", 1, 1, " << number(v[0]) << "\n" << driven + 1 << ", 2, 2, " << number(v[1]) << "\n";
     }
+    if (st.plates) {
+      // The plate nodes' local 2 is d_0: plate 0 moves by -s travel / 2 along it, plate 1 by +.
+      const double half = 0.5 * st.plates->travel;
+      s << "** The plates move towards the centre by s travel / 2 each, s the load factor"
+        << (history ? " (amplitude LOAD).\n*BOUNDARY, AMPLITUDE=LOAD\n" : " (ramped over the step).\n*BOUNDARY\n")
+        << "NPLATE0, 2, 2, " << number(-half) << "\nNPLATE1, 2, 2, " << number(half) << "\n";
+    }
     s << "** Displacements of the beam nodes after every increment, to the .dat file"
-      << (st.displacement ? "; the driven node's reaction after them.\n" : ".\n")
+      << (st.displacement ? "; the driven node's reaction after them.\n"
+                          : st.plates ? "; the plates' total forces after them\n** (the force each plate's springs "
+                                        "put on the ring).\n"
+                                      : ".\n")
       << "*NODE PRINT, NSET=NALL\nU\n";
     if (st.displacement) s << "*NODE PRINT, NSET=NDRIVE\nRF\n";
+    if (st.plates) s << "*NODE PRINT, NSET=NPLATE0, TOTALS=ONLY\nRF\n*NODE PRINT, NSET=NPLATE1, TOTALS=ONLY\nRF\n";
     s << "*END STEP\n";
   }
   d.text += s.str();

@@ -66,6 +66,7 @@ struct Deck {
   std::vector<double> node_angles;  ///< degrees, node k + 1 at node_angles[k]
   double anchor = 0.0;              ///< degrees: the angle of node 1
   double width = 0.0, height = 0.0; ///< m: the section written (height radial; circle: both the diameter)
+  int last_element = 0;             ///< the highest element number written (the next terms number on)
 };
 
 /// Whether the analysis has inertia: a point mass's rotary inertia, which ccx cannot
@@ -149,10 +150,52 @@ void check_spin(const ring::RingSpec& spec, const ring::CalculixOptions& options
 /// static.displacement: the driven node (set NDRIVE) held by *BOUNDARY at the value for load
 /// factor 1, its RF printed after the displacements. static.history: one such *STEP per leg
 /// (period 1 each), the loads and the boundary with AMPLITUDE=LOAD, an amplitude in total time
-/// through (k, s_k). Throws ring::InputError for a load or a driven point off the nodes
-/// (static.displacement.at) or a load ccx cannot express. O(elements + legs).
+/// through (k, s_k). [plates]: plates_block's springs, the plate nodes (sets NPLATE0,
+/// NPLATE1) moved along the plates' normal by s travel / 2 as the driven node is, their RF
+/// totals printed after the displacements. Throws ring::InputError for a load or a driven
+/// point off the nodes (static.displacement.at), a load ccx cannot express, or plates it
+/// cannot write (check_plates). O(elements + legs).
 Deck static_deck(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& step,
                  const std::string& title = "");
+
+/// [plates] as ccx elements (ring::PlatePair's law, integrated as the foundation is: at the
+/// beam nodes, each for its share of the ring, L/3 at an element's end node and 2L/3 at its
+/// middle node). For every beam node on the half of the ring facing plate p (cos(theta -
+/// axis) > 0 for p = 0, < 0 for p = 1; the nodes at axis +- 90 can touch neither) an extra
+/// "plate" node lies kPlateSpringLength beyond the plate's line along d_p, and a SPRINGA
+/// element joins it to the beam node. The plate nodes carry a rectangular *TRANSFORM with
+/// local 1 = e (the plates' direction) and local 2 = d_0; local 2 is driven by -+ s travel / 2
+/// (the step's boundary, static_deck), local 1 is tied to the beam node's e . u by an
+/// *EQUATION (a one-term boundary at the two nodes of first contact, whose e . u is held
+/// anyway), so that each spring stays along d_p: the plates are frictionless. Its length is
+/// then kPlateSpringLength + g, g = PlatePair::gap at the beam node (ccx prints the beam node
+/// as the mean of the expanded section, the centroid line), and its nonlinear force–elongation
+/// table (*SPRING, NONLINEAR) is 0 while the gap is open and k w g beyond (k w: the penalty
+/// times the node's share; elongation = g - g_0, g_0 = R (1 - |cos(theta - axis)|) the rest
+/// gap). ccx takes the tangent of a table at one of its rows from the segment above it, so the
+/// two nodes of first contact (g_0 = 0, touching at rest) have the stiff slope over a window of
+/// kPlateWindow above 0 (the ring would be free along the axis in the first iteration
+/// otherwise; the window's tension, at most k w kPlateWindow, acts only with the gap inside
+/// it). The no-slide rows: e . u = 0 at the nodes at axis and axis + 180 (*BOUNDARY of one
+/// displacement when e is along x or y, else a two-term *EQUATION). The string is the model
+/// part (before the steps).
+std::string plates_block(const ring::RingSpec& spec, const ring::CalculixOptions& options,
+                         const ring::StaticOptions& st, Deck& deck);
+
+/// A plate node's distance beyond its plate's line, times R (the springs' length at contact); it
+/// needs only to exceed the penalty's sinking, and is short so that the elongation, a
+/// difference of lengths, keeps its digits.
+constexpr double kPlateSpringLength = 0.1;
+/// Times R: the window of the stiff slope above a touching node's kink (plates_block).
+constexpr double kPlateWindow = 1e-15;
+
+/// Refuses [plates] the deck cannot write (ring::InputError naming the key): an arch
+/// (ring.arc), loads or supports beside them (the scene reader's rules, for the library's
+/// callers), an element other than B32R (calculix.element: the only one validated), a
+/// history leg that draws the plates back (static.history: ccx's first iteration of a return
+/// finds the springs open, and its Newton alternates between open and deep contact), the nodes at axis and axis + 180
+/// not nodes of the model (plates.axis).
+void check_plates(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st);
 
 /// The deck of the forced response: *STEP, NLGEOM with *DYNAMIC, DIRECT, ALPHA = 0
 /// (Newmark's average acceleration, fixed dt to t_end), every load times the history as an

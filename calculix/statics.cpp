@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -38,7 +39,8 @@ int newton_iterations(const std::string& sta) {
 
 void check_static(const ring::RingSpec& spec, const ring::CalculixOptions& options, const ring::StaticOptions& st) {
   ring::refuse_variations(spec, "the calculix statics");
-  ring::refuse_plates(st, "calculix");
+  // [plates]: the deck's springs (plates_block); what it cannot write is refused there
+  // (check_plates: an arch, loads or supports beside them, an element other than B32R).
   // static.displacement is the driven node's *BOUNDARY (static_deck); the resultant law stays
   // refused by the deck (ring.plastic.moment), with loads or driven.
   // An arch takes point loads (held to the elastica of DaDeppo & Schmidt's deep arch,
@@ -98,6 +100,34 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
       if (std::isnan(inc.force[0]))
         throw ring::NumericalError("calculix: ccx printed no reaction of the driven node at total time " +
                                    std::to_string(inc.time) + " (*NODE PRINT RF)");
+  if (st.plates)
+    for (const auto& inc : dat.all)
+      if (std::isnan(inc.plates[0][0]) || std::isnan(inc.plates[1][0]))
+        throw ring::NumericalError("calculix: ccx printed no total force of the plates at total time " +
+                                   std::to_string(inc.time) + " (*NODE PRINT, TOTALS=ONLY RF)");
+  std::optional<ring::PlatePair> pair;
+  if (st.plates) pair.emplace(spec, *st.plates);
+  // The contact lengths on the deformed beam nodes in order around the ring (every node, not
+  // the path's strided shape). ccx prints the displacements with 7 significant digits, and a
+  // touching node's gap is the penalty's sinking, -F / (k w) (~1e-10 m): below the print's
+  // resolution, so that read back it comes out either side of 0 (measured: a crushed ring's
+  // contact length 0 at half its increments). A gap within the print's rounding, 1e-6 of the
+  // largest displacement (twice the rounding of 7 digits), counts as touching: the plates'
+  // position shifted by it, the load factor s + 2 tol / travel in PlatePair::contact_lengths.
+  // It lengthens a contact by sqrt(2 tol R) or less at each end (the ring curving away from
+  // the plate), ~1e-2 m at a travel of R on R = 10 m.
+  auto contact = [&](const std::vector<double>& ux, const std::vector<double>& uy, double s) {
+    std::vector<double> x(nodes), y(nodes);
+    double largest = 0.0;
+    for (int k = 0; k < nodes; ++k) {
+      const double t = deck.node_angles[k] * M_PI / 180.0;
+      x[k] = spec.radius * std::cos(t) + ux[k];
+      y[k] = spec.radius * std::sin(t) + uy[k];
+      largest = std::max(largest, std::hypot(ux[k], uy[k]));
+    }
+    const double tol = 1e-6 * largest;
+    return pair->contact_lengths(x, y, s + 2.0 * tol / pair->travel);
+  };
   ring::StaticResult r;
   r.solver = "calculix";
   r.unknowns = equation_count(out.log);
@@ -133,12 +163,20 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
       p.ovalisation = (most - least) / spec.radius;
     }
     if (st.displacement) p.reaction = inc.force;
+    // The force of plate 0 on the ring: the total RF of its plate nodes, the force its
+    // boundary puts on them, which their springs pass on to the ring whole (a plate node has
+    // no other load; its tie along e carries ~0, the springs lying along d_p).
+    if (st.plates) {
+      p.reaction = inc.plates[0];
+      p.contact_length = contact(inc.ux, inc.uy, p.load_factor);
+    }
     if (spec.plastic) p.dissipated = p.plastic_curvature = std::nan("");
     return p;
   };
   const ring::PathPoint last = point(dat.all.back());
   r.displacements = last.displacements;
   r.reaction = last.reaction;
+  r.contact_length = last.contact_length;
   for (int k = 0; k < nodes; ++k) {
     const double t = deck.node_angles[k] * M_PI / 180.0;
     r.node_x.push_back(spec.radius * std::cos(t) + dat.ux[k]);
@@ -158,6 +196,7 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Calculix
       rest.node_y.push_back(spec.radius * std::sin(t));
     }
     if (spec.plastic) rest.dissipated = rest.plastic_curvature = std::nan("");
+    if (st.plates) rest.contact_length = contact(std::vector<double>(nodes, 0.0), std::vector<double>(nodes, 0.0), 0.0);
     r.path.push_back(rest);
     for (const auto& inc : dat.all) r.path.push_back(point(inc));
     r.end = st.history.empty() ? "full load" : "end of the history";

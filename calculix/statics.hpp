@@ -9,6 +9,10 @@
 // rig applies to the ring: ccx holds the mean displacement of the expanded section by MPCs,
 // and the node's RF is the whole force through them (the driven pinch converges to the thick
 // ring's closed form, tests/calculix/calculix_driven_test.cpp).
+// Rigid plates ([plates]): ring::PlatePair's penalty as nonlinear springs from the beam nodes
+// to plate nodes driven along the plates' normal (deck.hpp, plates_block); the reaction is plate
+// 0's nodes' total RF, the contact lengths PlatePair::contact_lengths on the deformed beam
+// nodes (a gap within the .dat's 7-digit resolution counting as touching).
 // A history (static.history): one *STEP per leg, every load and the driven displacement times
 // an amplitude in total time whose rows are the legs' factors (a leg to 0 unloads); the
 // results at the last factor. static.path: every converged increment from rest as the path
