@@ -218,7 +218,7 @@ std::vector<int> record_nodes(const Frame& f, const std::vector<double>& record,
 
 paths::Trace frame_path(const Frame& f, const FrameLoads& loads, double radius, const ring::StaticOptions& statics,
                         const std::string& who, FramePathEnergy* energy) {
-  const int N = 3 * f.n, R = static_cast<int>(f.S.rows());
+  const int N = 3 * f.n;
   FrameStatics eq(f, loads, radius);
   paths::State rest{paths::Vector::Zero(eq.size()), 0.0};
   rest.z.head(N) = f.rest;
