@@ -158,7 +158,7 @@ void check_drive(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 /// [plates] (statics.hpp, plates.hpp): no loads, no drive and no supports act with them (the
 /// scene reader says so too; this holds for a library caller's options), the travel in
 /// (0, 2 R), a positive stiffness, both points of first contact hinges of the chain, a closed
-/// ring, and the dense path. O(supports).
+/// ring, and a history that only advances. Both formulations take them. O(supports).
 void check_plates(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
   const ring::StaticOptions::Plates& p = *statics.plates;
   if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())
@@ -200,15 +200,6 @@ void check_plates(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                                  "the axis within a Newton step");
     previous = h;
   }
-  // The O(n) path (hinge positions) holds its constraints as the links' and two-row pins' band
-  // (natural.hpp); the plates' one-row no-slide constraints and their penalty are not assembled
-  // there yet.
-  if (backend(options, spec, statics) == Backend::banded)
-    throw ring::InputError("", "plates",
-                           "the multibody chain's O(n) statics (hinge positions, multibody.method = \"sparse\", or "
-                           "\"auto\" from n = " + std::to_string(kSparseStaticsCrossover) +
-                               ") has no rigid plates yet: set multibody.method = \"dense\" (the angles, O(n^3) per "
-                               "Newton iteration)");
 }
 
 }  // namespace

@@ -28,13 +28,15 @@ double PlateContact::energy(const Eigen::Matrix2Xd& p, double s) const {
   return chain_.l() * e;
 }
 
-void PlateContact::add(const Vector& q, double s, Vector& grad, Eigen::Ref<Matrix>* hess, Vector& rate) const {
+void PlateContact::by_hinge(const Eigen::Matrix2Xd& p, double s, std::vector<Eigen::Vector2d>& f,
+                            std::vector<Eigen::Matrix2d>& B, std::vector<Eigen::Vector2d>& rate) const {
   const int n = chain_.n();
-  const Eigen::Matrix2Xd x = points(chain_.hinge_positions(q));
+  const Eigen::Matrix2Xd x = points(p);
   const Eigen::Vector2d d0(pair_.d[0], pair_.d[1]);
   const Eigen::Matrix2d dd = d0 * d0.transpose();
-  std::vector<Eigen::Vector2d> f(n, Eigen::Vector2d::Zero()), df(n, Eigen::Vector2d::Zero());
-  std::vector<Eigen::Matrix2d> B(n, Eigen::Matrix2d::Zero());
+  f.assign(n, Eigen::Vector2d::Zero());
+  rate.assign(n, Eigen::Vector2d::Zero());
+  B.assign(n, Eigen::Matrix2d::Zero());
   const double l = chain_.l();
   for (int k = 0; k < n; ++k)
     for (int plate = 0; plate < 2; ++plate) {
@@ -43,8 +45,14 @@ void PlateContact::add(const Vector& q, double s, Vector& grad, Eigen::Ref<Matri
       const Eigen::Vector2d dp = plate == 0 ? d0 : Eigen::Vector2d(-d0);
       f[k] += l * pair_.pressure(g) * dp;
       B[k] += l * pair_.k * dd;
-      df[k] += l * pair_.k * 0.5 * pair_.travel * dp;
+      rate[k] += l * pair_.k * 0.5 * pair_.travel * dp;
     }
+}
+
+void PlateContact::add(const Vector& q, double s, Vector& grad, Eigen::Ref<Matrix>* hess, Vector& rate) const {
+  std::vector<Eigen::Vector2d> f, df;
+  std::vector<Eigen::Matrix2d> B;
+  by_hinge(chain_.hinge_positions(q), s, f, B, df);
   add_hinge_term(chain_, q, f, &B, grad, hess);
   add_hinge_term(chain_, q, df, nullptr, rate, nullptr);
 }

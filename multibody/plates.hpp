@@ -51,6 +51,13 @@ class PlateContact {
   Eigen::Matrix2Xd points(const Eigen::Matrix2Xd& p) const;
   /// The penalty's energy E at the hinge positions p and load factor s, J. O(n).
   double energy(const Eigen::Matrix2Xd& p, double s) const;
+  /// The penalty by hinge at the hinge positions p and load factor s (file comment): its gradient
+  /// f_k in p_k, its Hessian B_k and its rate d f_k / ds, each resized to n. O(n).
+  void by_hinge(const Eigen::Matrix2Xd& p, double s, std::vector<Eigen::Vector2d>& f, std::vector<Eigen::Matrix2d>& B,
+                std::vector<Eigen::Vector2d>& rate) const;
+  /// The no-slide rows' hinges (at axis, at axis + 180) and the plates' direction e.
+  std::array<int, 2> slide_hinges() const { return {a_, b_}; }
+  const Eigen::Vector2d& direction() const { return e_; }
   /// Adds the penalty's gradient in the angles q at load factor s to `grad` (dofs), its Hessian to
   /// `*hess` (if not null; dofs x dofs) and its rate d grad / ds to `rate` (dofs). O(n), O(n^2).
   void add(const Vector& q, double s, Vector& grad, Eigen::Ref<Matrix>* hess, Vector& rate) const;

@@ -424,7 +424,8 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
   if (backend(options, spec, statics) == Backend::banded)
-    eq = natural::static_equilibrium(ch, held, statics.loads, depth, drive);
+    eq = natural::static_equilibrium(ch, held, statics.loads, depth, drive,
+                                     statics.plates ? &*statics.plates : nullptr);
   else
     eq = detail::angle_equilibrium(ch, held, statics.loads, depth, drive,
                                    statics.plates ? &*statics.plates : nullptr);

@@ -40,8 +40,10 @@
 // No loads and no supports act; the free chain is crushed between the two plates of
 // ring::PlatePair, a penalty lumped at the hinges as the Winkler foundation is, its load column
 // dR/ds the penalty's rate, with two roller-like rows that keep the points of first contact in
-// place along the plates. The path is followed as a driven one (a plastic path by arc length
-// from rest). The dense path (angles) only: check_static refuses [plates] on the O(n) path.
+// place along the plates. The path is followed by load steps (the arc from rest stalled at
+// small approaches; statics.cpp), and both formulations take them: the O(n) path adds the
+// penalty by hinge to its banded KKT and the no-slide rows as one-row constraints (natural.hpp,
+// Natural::slides).
 #pragma once
 
 #include <array>
