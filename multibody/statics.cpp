@@ -179,8 +179,7 @@ class AngleStatics : public detail::StaticEquilibrium {
     return y.allFinite();
   }
   double move(const paths::Vector& dz) const override { return dz.head(n_).cwiseAbs().maxCoeff() / detail::kBasin; }
-  bool converged(const paths::State&, const paths::Vector& dz, int iteration) override {
-    (void)iteration;
+  bool converged(const paths::State&, const paths::Vector& dz, int) override {
     return dz.head(n_).cwiseAbs().maxCoeff() <= 1e-12;
   }
   /// The tangent T at x (n x n) and the constraints there.
