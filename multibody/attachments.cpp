@@ -78,6 +78,18 @@ void add_mean_rotations(const Chain& chain, const std::vector<double>& w, Eigen:
 
 }  // namespace
 
+void add_hinge_term(const Chain& chain, const Vector& q, const std::vector<Eigen::Vector2d>& f,
+                    const std::vector<Eigen::Matrix2d>* B, Vector& grad, Eigen::Ref<Matrix>* hess) {
+  const int n = chain.n();
+  std::vector<Eigen::Vector2d> F(n + 1, Eigen::Vector2d::Zero());
+  for (int k = n - 1; k >= 0; --k) F[k] = F[k + 1] + f[k];
+  add_pulled_back(chain, q, F, grad);
+  if (!hess) return;
+  add_pull_back(chain, q, *B, *hess);
+  for (int j = 0; j < n; ++j)
+    (*hess)(j, j) -= chain.l() * (std::cos(q[j]) * F[j + 1].x() + std::sin(q[j]) * F[j + 1].y());
+}
+
 Attachments::Attachments(const Chain& chain, const ring::RingSpec& spec)
     : chain_(chain),
       stiff_(chain.hinges(), Eigen::Matrix2d::Zero()),

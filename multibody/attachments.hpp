@@ -167,6 +167,15 @@ class Attachments {
   bool has_mass_ = false;                      ///< a point mass
 };
 
+/// A term on the hinges given by hinge, pulled back to the angles of q (file comment, "Pull-back"):
+/// adds sum_k (d u_k/dq)^T f[k] to `grad` (dofs) and, if `hess` is not null, the Hessian of a
+/// term whose gradient in p_k is f[k] and whose Hessian in p_k is B[k] (2 x 2, none across
+/// hinges) to `*hess` (dofs x dofs): sum_k (d u_k/dq)^T B_k (d u_k/dq) plus the curvature of the
+/// positions, -delta_ij l e(phi_j) . F_{j+1}. `B` may be null when `hess` is. The plates'
+/// contact (plates.hpp) is such a term whose B_k changes along the path. O(n), O(n^2) with hess.
+void add_hinge_term(const Chain& chain, const Vector& q, const std::vector<Eigen::Vector2d>& f,
+                    const std::vector<Eigen::Matrix2d>* B, Vector& grad, Eigen::Ref<Matrix>* hess);
+
 /// The constraint rows held along a path: the chain's, and `terms`' further pins when given;
 /// their rate Gdot v = hess v.^2 (every row is a sum of single-angle sinusoids). O(n p).
 Chain::ConstraintKinematics constraint_kinematics(const Chain& chain, const Attachments* terms, const Vector& q);

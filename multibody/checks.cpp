@@ -155,6 +155,53 @@ void check_drive(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
                              "the point at " + std::to_string(d.at) + " deg is a support (supports); drive another point");
 }
 
+/// [plates] (statics.hpp, plates.hpp): no loads, no drive and no supports act with them (the
+/// scene reader says so too; this holds for a library caller's options), the travel in
+/// (0, 2 R), a positive stiffness, both points of first contact hinges of the chain, a closed
+/// ring, and a history that only advances. Both formulations take them. O(supports).
+void check_plates(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
+  const ring::StaticOptions::Plates& p = *statics.plates;
+  if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())
+    throw ring::InputError("", "plates",
+                           "drive the path, and the multibody chain would scale the loads of [static] with them: give the "
+                           "one or the other");
+  if (statics.displacement)
+    throw ring::InputError("", "plates", "drive the path, and so does static.displacement: give the one or the other");
+  if (spec.is_arch())
+    throw ring::InputError("", "plates", "crush a closed ring; the multibody arch (ring.arc) has no plates");
+  if (spec.supports.pin || spec.supports.roller || !spec.supports.pins.empty() || spec.supports.clamp)
+    throw ring::InputError("", "plates",
+                           "hold the ring themselves (with the two no-slide rows at the points of first contact); remove "
+                           "supports.pin, roller, pins and clamp (springs and a foundation may stay)");
+  if (!(p.travel > 0.0 && p.travel < 2.0 * spec.radius))
+    throw ring::InputError("", "plates.travel",
+                           "expected the plates' approach in (0, 2 R) = (0, " + std::to_string(2.0 * spec.radius) +
+                               ") m, got " + std::to_string(p.travel));
+  if (!(p.stiffness > 0.0) || !std::isfinite(p.stiffness))
+    throw ring::InputError("", "plates.stiffness",
+                           "expected a finite, positive penalty stiffness (N/m^2), got " + std::to_string(p.stiffness));
+  for (double a : {p.axis, p.axis + 180.0})
+    if (ring::node_index(spec, a, options.n) < 0)
+      throw ring::InputError("", "plates.axis",
+                             "the plates touch the ring at " + std::to_string(a) + " deg, which is not a hinge of the n = " +
+                                 std::to_string(options.n) + " chain (valid: the anchor " + std::to_string(spec.anchor()) +
+                                 " deg + 360 k / n)");
+  // Retreating plates: the free ring is held along the axis by the contact alone, and the first
+  // Newton iterate of a step that backs the plates off opens both gaps at once, leaving the ring
+  // free to slide along the axis (a singular tangent; measured: the path stalls at the first
+  // unloading step, n = 64, 5 collapse closings, history [1, 0.97]).
+  double previous = 0.0;
+  for (double h : statics.history) {
+    if (h < previous)
+      throw ring::InputError("", "plates",
+                             "the multibody chain's plates only advance: static.history must not decrease (got " +
+                                 std::to_string(h) + " after " + std::to_string(previous) +
+                                 "); backing them off opens both gaps at once and leaves the free ring unheld along "
+                                 "the axis within a Newton step");
+    previous = h;
+  }
+}
+
 }  // namespace
 
 void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& options) {
@@ -205,7 +252,7 @@ void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
   ring::refuse_variations(spec, "the multibody chain");
   check_arch(spec, options, "the multibody statics", PlasticUse::taken);
   if (statics.displacement) check_drive(spec, options, statics);
-  ring::refuse_plates(statics, "the multibody chain");
+  if (statics.plates) check_plates(spec, options, statics);
   // The chain's loads hold the centrifugal force of a spinning spec (loading.hpp), but the
   // statics have no turning frame to report in yet.
   ring::refuse_rotation(spec, "the multibody statics");

@@ -35,7 +35,10 @@ void check_modes(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 /// section with a shape (ring::InputError, key ring.plastic.stress). static.displacement
 /// (statics.hpp): the driven point counts as a pin; it must be a hinge that is no support
 /// (ring::InputError, key static.displacement.at), with no loads and a supports.pin (key
-/// static.displacement: the free chain's drive is not measured yet).
+/// static.displacement: the free chain's drive is not measured yet). [plates] (plates.hpp): no
+/// loads, drive or supports (pin, roller, pins, clamp) with them, travel in (0, 2 R), a positive
+/// stiffness, both contact points hinges, a closed ring, a static.history that never decreases
+/// (ring::InputError, key plates or plates.*).
 void check_static(const ring::RingSpec& spec, const ring::MultibodyOptions& options,
                   const ring::StaticOptions& statics);
 /// Modes under load: the statics' checks, the dense path (multibody.method != "sparse"), a

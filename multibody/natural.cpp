@@ -154,6 +154,8 @@ void constraints(const Natural& c, const Vec& x, Vec& g) {
   if (c.roller >= 0) g(c.roller_row()) = c.nu.dot(hinge(x, c.roller) - c.pin);
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     g.segment<2>(c.pins_row() + 2 * i) = hinge(x, c.pins[i]) - c.pinned_at[i];
+  for (std::size_t i = 0; i < c.slides.size(); ++i)
+    g(c.slides_row() + static_cast<int>(i)) = c.slide_dir[i].dot(hinge(x, c.slides[i]) - c.slide_at[i]);
 }
 
 /// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
@@ -182,6 +184,8 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
     for (int a = 0; a < 2; ++a) put(c.roller_row(), 2 * c.roller + a, c.nu(a));
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     for (int a = 0; a < 2; ++a) put(c.pins_row() + 2 * static_cast<int>(i) + a, 2 * c.pins[i] + a, 1.0);
+  for (std::size_t i = 0; i < c.slides.size(); ++i)
+    for (int a = 0; a < 2; ++a) put(c.slides_row() + static_cast<int>(i), 2 * c.slides[i] + a, c.slide_dir[i](a));
 }
 
 void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt) {
@@ -324,6 +328,7 @@ void kkt_pattern(const Natural& c, Visit visit) {
   if (c.roller >= 0) row(c.roller_row(), c.roller);
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     for (int a = 0; a < 2; ++a) row(c.pins_row() + 2 * static_cast<int>(i) + a, c.pins[i]);
+  for (std::size_t i = 0; i < c.slides.size(); ++i) row(c.slides_row() + static_cast<int>(i), c.slides[i]);
 }
 
 }  // namespace
@@ -343,7 +348,7 @@ BandedKkt::BandedKkt(const Natural& c) : perm_(Eigen::VectorXi::Constant(c.size(
   const int band = next;
   for (int k : {c.n - 1, 0}) put_hinge(k);
   perm_(N + c.n - 1) = next++;
-  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller, further pins
+  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller, further pins, slides
   band_ = detail::BorderedBand(band, c.size() - band, [&](auto mark) {
     kkt_pattern(c, [&](int i, int j) { mark(perm_[i], perm_[j]); });
   });

@@ -39,9 +39,14 @@ struct Natural {
   /// the roller's, from pins_row().
   std::vector<int> pins;
   std::vector<Eigen::Vector2d> pinned_at;
+  /// Hinges held on a line through their rest position (one row each, after the further pins'):
+  /// dir . (x_h - at) = 0. [plates]' no-slide rows (plates.hpp).
+  std::vector<int> slides;
+  std::vector<Eigen::Vector2d> slide_dir, slide_at;
   int roller_row() const { return n + (pinned ? 2 : 0); }
   int pins_row() const { return roller_row() + (roller >= 0 ? 1 : 0); }
-  int rows() const { return pins_row() + 2 * static_cast<int>(pins.size()); }
+  int slides_row() const { return pins_row() + 2 * static_cast<int>(pins.size()); }
+  int rows() const { return slides_row() + static_cast<int>(slides.size()); }
   int size() const { return 2 * n + rows(); }
   /// Radius of the hinges' circle, m (the scale of positions and their round-off).
   double radius() const;
@@ -83,7 +88,7 @@ double spring_energy(const Natural& c, const Vec& x);
 Vec mass_times(const Natural& c, const Vec& v);
 /// The same into `out` (resized; no allocation when it has the size).
 void mass_times(const Natural& c, const Vec& v, Vec& out);
-/// Constraint values (rows: links, pin x, pin y (if pinned), roller, further pins). O(n).
+/// Constraint values (rows: links, pin x, pin y (if pinned), roller, further pins, slides). O(n).
 Vec constraints(const Natural& c, const Vec& x);
 /// The same into `g` (resized; no allocation when it has the size).
 void constraints(const Natural& c, const Vec& x, Vec& g);
@@ -189,8 +194,10 @@ class NewtonStop {
 /// (statics_natural.cpp), with the terms of `spec` (attachments.hpp) and every load of
 /// `loads` (loading.hpp): one BandedKkt factorization per Newton iteration, O(n).
 /// `drive`: static.displacement on the last further pin, as detail::angle_equilibrium's.
+/// `plates`: [plates] (plates.hpp), the penalty by hinge and the no-slide rows after the pins'.
 std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::RingSpec& spec,
                                                               const ring::Loads& loads, double depth,
-                                                              std::optional<Eigen::Vector2d> drive = std::nullopt);
+                                                              std::optional<Eigen::Vector2d> drive = std::nullopt,
+                                                              const ring::StaticOptions::Plates* plates = nullptr);
 
 }  // namespace multibody::natural

@@ -18,8 +18,11 @@ namespace multibody::detail {
 /// `drive` (static.displacement.value, m at load factor 1): the chain's last two constraint
 /// rows, the last further pin of `spec` (held_spec), move to s times it and their multipliers
 /// give the reaction (statics.hpp, "Displacement control"); `loads` must then be empty.
+/// `plates` ([plates], plates.hpp): the plates crush the free chain of `spec` (no loads, no
+/// drive); reaction() is then zero and plates() the plates' force and contact lengths.
 std::unique_ptr<StaticEquilibrium> angle_equilibrium(const Chain& chain, const ring::RingSpec& spec,
                                                      const ring::Loads& loads, double depth,
-                                                     std::optional<Eigen::Vector2d> drive = std::nullopt);
+                                                     std::optional<Eigen::Vector2d> drive = std::nullopt,
+                                                     const ring::StaticOptions::Plates* plates = nullptr);
 
 }  // namespace multibody::detail

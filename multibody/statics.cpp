@@ -17,6 +17,7 @@
 #include "ring/errors.hpp"
 
 #include "multibody/natural.hpp"
+#include "multibody/plates.hpp"
 #include "multibody/dynamics_model.hpp"
 #include "multibody/dynamics_sparse.hpp"
 #include "multibody/linear_model.hpp"
@@ -136,30 +137,35 @@ namespace {
 class AngleStatics : public detail::StaticEquilibrium {
  public:
   AngleStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth,
-               std::optional<Eigen::Vector2d> drive = std::nullopt)
+               std::optional<Eigen::Vector2d> drive = std::nullopt,
+               const ring::StaticOptions::Plates* plates = nullptr)
       : StaticEquilibrium(chain, spec, depth),
         tangent_(chain, spec, loads, "static", &bending_),
         n_(tangent_.dofs()),
-        c_(tangent_.rows()),
+        c_(tangent_.rows() + (plates ? 2 : 0)),
         sc_(chain.K() / chain.l()),
         drive_(drive) {
     if (drive_ && c_ < 2) throw std::logic_error("multibody: a driven point needs its two pin rows (held_spec)");
+    if (plates) plates_.emplace(chain, spec, *plates);
   }
   Eigen::Index size() const override { return n_ + c_; }
   Eigen::Index arc_size() const override { return n_; }
   bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
     const Vector q = x.z.head(n_), lambda = x.z.tail(c_);
-    const Chain::ConstraintKinematics ck = tangent_.constraints(q);
+    const Chain::ConstraintKinematics ck = constraints(q);
     const Vector phi = tangent_.loads().forces(q);
+    Vector forces = tangent_.internal_forces(q) + ck.G.transpose() * lambda - x.s * phi, rate = -phi;
+    Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
+    Eigen::Ref<Matrix> T = A.topLeftCorner(n_, n_);
+    tangent_.add_tangent(q, lambda, x.s, ck, T);
+    if (plates_) plates_->add(q, x.s, forces, &T, rate);  // the plates' penalty and its rate in s
     r.resize(n_ + c_);
-    r << tangent_.internal_forces(q) + ck.G.transpose() * lambda - x.s * phi, ck.g;
+    r << forces, ck.g;
     if (drive_) r.tail<2>() -= x.s * *drive_;  // the driven pin's target s v
     if (!r.allFinite()) return false;
-    Matrix A = Matrix::Zero(n_ + c_ + 1, n_ + c_ + 1);
-    tangent_.add_tangent(q, lambda, x.s, ck, A.topLeftCorner(n_, n_));
     A.block(0, n_, n_, c_) = sc_ * ck.G.transpose();
     A.block(n_, 0, c_, n_) = sc_ * ck.G;
-    A.col(n_ + c_).head(n_) = -phi;
+    A.col(n_ + c_).head(n_) = rate;
     if (drive_) A.col(n_ + c_).segment<2>(n_ + c_ - 2) = -sc_ * *drive_;
     A.row(n_ + c_).head(n_) = w.transpose();
     A(n_ + c_, n_ + c_) = ws;
@@ -178,17 +184,17 @@ class AngleStatics : public detail::StaticEquilibrium {
   }
   /// The tangent T at x (n x n) and the constraints there.
   Matrix tangent(const paths::State& x, Chain::ConstraintKinematics& ck) const {
-    ck = tangent_.constraints(x.z.head(n_));
+    ck = constraints(x.z.head(n_));
     return tangent_at(x, ck);
   }
   /// The inertia of T on the constraints' tangent space at x: O(n^3), once per accepted step.
   std::optional<int> unstable_directions(const paths::State& x) override {
-    const Chain::ConstraintKinematics ck = tangent_.constraints(x.z.head(n_));
+    const Chain::ConstraintKinematics ck = constraints(x.z.head(n_));
     return modal::unstable_directions(tangent_at(x, ck), ck.G);
   }
   /// Its least stable direction in the angles, multipliers zero: O(n^3).
   std::optional<paths::Vector> critical_direction(const paths::State& x) override {
-    const Chain::ConstraintKinematics ck = tangent_.constraints(x.z.head(n_));
+    const Chain::ConstraintKinematics ck = constraints(x.z.head(n_));
     paths::Vector d = paths::Vector::Zero(n_ + c_);
     d.head(n_) = modal::least_stable(tangent_at(x, ck), ck.G).direction;
     return d;
@@ -206,11 +212,35 @@ class AngleStatics : public detail::StaticEquilibrium {
     if (!drive_) return {0.0, 0.0};
     return {-z(n_ + c_ - 2), -z(n_ + c_ - 1)};
   }
+  std::optional<PlateState> plates(const paths::State& x) const override {
+    if (!plates_) return std::nullopt;
+    const Eigen::Matrix2Xd p = hinges(x.z);
+    return PlateState{plates_->reaction(p, x.s), plates_->contact_lengths(p, x.s), plates_->energy(p, x.s)};
+  }
 
  private:
+  /// The chain's rows, the further pins', then [plates]' two no-slide rows (plates.hpp).
+  Chain::ConstraintKinematics constraints(const Vector& q) const {
+    Chain::ConstraintKinematics ck = tangent_.constraints(q);
+    if (!plates_) return ck;
+    const Chain::ConstraintKinematics p = plates_->slide_rows(q);
+    const Eigen::Index c = ck.g.size();
+    ck.g.conservativeResize(c + 2);
+    ck.g.tail(2) = p.g;
+    ck.G.conservativeResize(c + 2, Eigen::NoChange);
+    ck.G.bottomRows(2) = p.G;
+    ck.hess.conservativeResize(c + 2, Eigen::NoChange);
+    ck.hess.bottomRows(2) = p.hess;
+    return ck;
+  }
   Matrix tangent_at(const paths::State& x, const Chain::ConstraintKinematics& ck) const {
     Matrix T = Matrix::Zero(n_, n_);
     tangent_.add_tangent(x.z.head(n_), x.z.tail(c_), x.s, ck, T);
+    if (plates_) {
+      Vector unused = Vector::Zero(n_), rate = Vector::Zero(n_);
+      Eigen::Ref<Matrix> Tr(T);
+      plates_->add(x.z.head(n_), x.s, unused, &Tr, rate);
+    }
     return T;
   }
 
@@ -218,6 +248,7 @@ class AngleStatics : public detail::StaticEquilibrium {
   const Eigen::Index n_, c_;
   const double sc_;
   const std::optional<Eigen::Vector2d> drive_;  ///< static.displacement.value, m
+  std::optional<detail::PlateContact> plates_;   ///< [plates]
   Eigen::PartialPivLU<Matrix> lu_;
 };
 
@@ -225,8 +256,9 @@ class AngleStatics : public detail::StaticEquilibrium {
 
 std::unique_ptr<detail::StaticEquilibrium> detail::angle_equilibrium(const Chain& chain, const ring::RingSpec& spec,
                                                                      const ring::Loads& loads, double depth,
-                                                                     std::optional<Eigen::Vector2d> drive) {
-  return std::make_unique<AngleStatics>(chain, spec, loads, depth, drive);
+                                                                     std::optional<Eigen::Vector2d> drive,
+                                                                     const ring::StaticOptions::Plates* plates) {
+  return std::make_unique<AngleStatics>(chain, spec, loads, depth, drive, plates);
 }
 
 namespace {
@@ -391,9 +423,11 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   const double depth = spec.section.depth();
   std::unique_ptr<detail::StaticEquilibrium> eq;
   if (backend(options, spec, statics) == Backend::banded)
-    eq = natural::static_equilibrium(ch, held, statics.loads, depth, drive);
+    eq = natural::static_equilibrium(ch, held, statics.loads, depth, drive,
+                                     statics.plates ? &*statics.plates : nullptr);
   else
-    eq = detail::angle_equilibrium(ch, held, statics.loads, depth, drive);
+    eq = detail::angle_equilibrium(ch, held, statics.loads, depth, drive,
+                                   statics.plates ? &*statics.plates : nullptr);
   paths::Continuation policy;
   policy.steps = statics.steps;
   policy.history = statics.history;
@@ -402,6 +436,9 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   // iterate yields the neighbours of the mechanism's hinges too, whose zero tangent then cuts
   // the increments by halving (1878 equilibria on scenes/crushed-ring.toml at n = 80); the
   // arc's predictor follows the mechanism's own motion (as the lumped chain's statics do).
+  // [plates] keep load steps, plastic too: the arc from rest stalled at approaches below ~1e-4 R
+  // (its halvings ran out) and crawled on the plastic plateau (0.009 R in its 2000 steps at
+  // n = 64), where load steps reach 5 collapse closings in 50 (test_plates.cpp).
   policy.from_start = statics.displacement.has_value() && spec.plastic.has_value();
   if (statics.path) {
     policy.branch_switch = true;
@@ -435,6 +472,10 @@ ring::StaticResult solve_static(const ring::RingSpec& spec, const ring::Multibod
   res.dissipated = eq->dissipated();
   res.plastic_curvature = eq->plastic_curvature();
   res.reaction = eq->reaction(path.state.z);
+  if (const auto p = eq->plates(path.state)) {
+    res.reaction = p->reaction;
+    res.contact_length = p->contact_length;
+  }
   res.node_x.assign(hp.row(0).begin(), hp.row(0).end());
   res.node_y.assign(hp.row(1).begin(), hp.row(1).end());
   return res;

@@ -35,6 +35,15 @@
 // continuation driver varies s as it varies a load factor (history legs, unloading, negative
 // s), the arc length measured on the same unknowns; the driven point moves monotonically with
 // s, so a falling reaction (a plastic mechanism, a snap) is no limit point of the path.
+//
+// ## Rigid plates ([plates]; plates.hpp)
+// No loads and no supports act; the free chain is crushed between the two plates of
+// ring::PlatePair, a penalty lumped at the hinges as the Winkler foundation is, its load column
+// dR/ds the penalty's rate, with two roller-like rows that keep the points of first contact in
+// place along the plates. The path is followed by load steps (the arc from rest stalled at
+// small approaches; statics.cpp), and both formulations take them: the O(n) path adds the
+// penalty by hinge to its banded KKT and the no-slide rows as one-row constraints (natural.hpp,
+// Natural::slides).
 #pragma once
 
 #include <array>
@@ -122,10 +131,26 @@ class StaticEquilibrium : public paths::Equilibrium {
     (void)z;
     return {0.0, 0.0};
   }
-  /// The path point of the equilibrium x: path_point at its hinges, with its reaction.
+  /// [plates] at the equilibrium x: the force of plate 0 on the ring (N, x and y), the contact
+  /// length on each plate (m) and the penalty's energy (J); plates.hpp.
+  struct PlateState {
+    std::array<double, 2> reaction{0.0, 0.0}, contact_length{0.0, 0.0};
+    double energy = 0.0;
+  };
+  /// nullopt when the path is not driven by plates.
+  virtual std::optional<PlateState> plates(const paths::State& x) const {
+    (void)x;
+    return std::nullopt;
+  }
+  /// The path point of the equilibrium x: path_point at its hinges, with its reaction (the
+  /// drive's, or plate 0's with the contact lengths).
   ring::PathPoint point(const paths::State& x) const {
     ring::PathPoint pt = path_point(x.s, hinges(x.z));
     pt.reaction = reaction(x.z);
+    if (const std::optional<PlateState> p = plates(x)) {
+      pt.reaction = p->reaction;
+      pt.contact_length = p->contact_length;
+    }
     return pt;
   }
   /// Commits the hinges' plastic states at `to` (bending.hpp), records it, checks contact.

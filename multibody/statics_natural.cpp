@@ -13,9 +13,21 @@
 #include "multibody/dynamics_model.hpp"
 #include "multibody/loading.hpp"
 #include "multibody/natural.hpp"
+#include "multibody/plates.hpp"
 
 namespace multibody::natural {
 namespace {
+
+/// The natural model with [plates]' two no-slide rows (plates.hpp) after the further pins'.
+Natural with_slides(Natural c, const Chain& chain, const detail::PlateContact* plates) {
+  if (!plates) return c;
+  for (int h : plates->slide_hinges()) {
+    c.slides.push_back(h);
+    c.slide_dir.push_back(plates->direction());
+    c.slide_at.push_back(chain.hinge_rest(h));
+  }
+  return c;
+}
 
 /// Unknowns z = (x, lambda): hinge positions, then the multipliers (links, pin, roller,
 /// further pins). The KKT matrix J, constraint rows and multipliers scaled by kappa = K / l^2
@@ -29,11 +41,12 @@ namespace {
 class PositionStatics : public detail::StaticEquilibrium {
  public:
   PositionStatics(const Chain& chain, const ring::RingSpec& spec, const ring::Loads& loads, double depth,
-                  std::optional<Eigen::Vector2d> drive)
+                  std::optional<Eigen::Vector2d> drive, const ring::StaticOptions::Plates* plates)
       : StaticEquilibrium(chain, spec, depth),
         terms_(chain, spec),
         loads_(chain, spec, loads, "static"),
-        c_(make_natural(chain, terms_.pinned_hinges())),
+        plates_(plates ? std::optional<detail::PlateContact>(std::in_place, chain, spec, *plates) : std::nullopt),
+        c_(with_slides(make_natural(chain, terms_.pinned_hinges()), chain, plates_ ? &*plates_ : nullptr)),
         N_(2 * c_.n),
         S_(c_.size()),
         kappa_(c_.K / (c_.l * c_.l)),
@@ -60,6 +73,15 @@ class PositionStatics : public detail::StaticEquilibrium {
     b_.setZero(S_);
     for (int k = 0; k <= c_.n; ++k) b_.segment<2>(2 * (k % c_.n)) += g.col(k);
     rx += s.s * b_.head(N_);
+    if (plates_) {  // the plates' penalty by hinge (plates.hpp), its rate in s into dR/ds
+      plates_->by_hinge(Eigen::Map<const Eigen::Matrix2Xd>(x.data(), 2, c_.n), s.s, pf_, pB_, pr_);
+      for (int k = 0; k < c_.n; ++k) {
+        rx.segment<2>(2 * k) += pf_[k];
+        b_.segment<2>(2 * k) += pr_[k];
+        const int dofs[2] = {2 * k, 2 * k + 1};
+        if (!pB_[k].isZero()) kkt_.add(dofs, Eigen::Matrix2d(pB_[k]));
+      }
+    }
     for (const detail::Loading::Block& b : blocks) {
       const int dofs[4] = {2 * (b.k % c_.n), 2 * (b.k % c_.n) + 1, 2 * (b.m % c_.n), 2 * (b.m % c_.n) + 1};
       for (int i = 0; i < 2; ++i)
@@ -108,6 +130,11 @@ class PositionStatics : public detail::StaticEquilibrium {
     if (!drive_) return {0.0, 0.0};
     return {-z(S_ - 2), -z(S_ - 1)};
   }
+  std::optional<PlateState> plates(const paths::State& x) const override {
+    if (!plates_) return std::nullopt;
+    const Eigen::Matrix2Xd p = hinges(x.z);
+    return PlateState{plates_->reaction(p, x.s), plates_->contact_lengths(p, x.s), plates_->energy(p, x.s)};
+  }
 
  private:
   /// The constraints at x and load factor s: the driven pin's rows from its target s v.
@@ -119,6 +146,9 @@ class PositionStatics : public detail::StaticEquilibrium {
 
   const detail::Attachments terms_;  ///< foundation, springs, clamp, further pins
   const detail::Loading loads_;      ///< point loads, pressure, gravity
+  const std::optional<detail::PlateContact> plates_;  ///< [plates]
+  std::vector<Eigen::Vector2d> pf_, pr_;            ///< its force and rate by hinge (scratch)
+  std::vector<Eigen::Matrix2d> pB_;                 ///< its Hessian by hinge (scratch)
   const Natural c_;
   const int N_, S_;
   const double kappa_;
@@ -133,8 +163,9 @@ class PositionStatics : public detail::StaticEquilibrium {
 
 std::unique_ptr<detail::StaticEquilibrium> static_equilibrium(const Chain& chain, const ring::RingSpec& spec,
                                                               const ring::Loads& loads, double depth,
-                                                              std::optional<Eigen::Vector2d> drive) {
-  return std::make_unique<PositionStatics>(chain, spec, loads, depth, drive);
+                                                              std::optional<Eigen::Vector2d> drive,
+                                                              const ring::StaticOptions::Plates* plates) {
+  return std::make_unique<PositionStatics>(chain, spec, loads, depth, drive, plates);
 }
 
 }  // namespace multibody::natural
