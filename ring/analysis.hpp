@@ -76,10 +76,12 @@ struct StaticOptions {
   /// `axis` + 180; each moves towards the centre by s travel / 2 (s the load factor, through
   /// the history), so that they approach each other by s travel and the ring's centre stays.
   /// See PlatePair for the contact law every solver uses. No loads act with them, and the
-  /// ring has no supports: the plates hold it along the axis, and the two points of first
-  /// contact keep their position along the plates (one constraint row each: the ring's
-  /// sliding and turning between frictionless plates, which the symmetric crushing leaves
-  /// unloaded; their multipliers stay ~0). Both points are nodes of every model.
+  /// ring has no supports: the plates hold it along the axis, the two points of first contact
+  /// keep their position along the plates (one constraint row each, e . u = 0 with e the
+  /// plates' direction: the ring's sliding and turning between frictionless plates), and
+  /// their midpoint stays on the plates' midline (d . (u_a + u_b) = 0: a ring that springs
+  /// back clear of both plates stays where it is). The symmetric crushing leaves the three
+  /// rows unloaded (their multipliers stay ~0). Both points are nodes of every model.
   struct Plates {
     double axis = 90.0;      ///< degrees: the plates' normal, and the first contact point
     double travel = 0.0;     ///< m, the plates' approach at load factor 1, in (0, 2 R)
@@ -107,7 +109,10 @@ struct StaticOptions {
 /// what the wall itself would be squeezed, F / (k l) over a contact length l, a few 1e-5 R
 /// at a crushing load (rigid plates are the limit k -> infinity). The tangent stiffness is k
 /// where in_contact(g) (g <= 1e-12 R, which holds the two touching points at rest, so that
-/// the first tangent is regular along the axis), else 0.
+/// the first tangent is regular along the axis), else 0. The point x is the centroid line's
+/// own point (on the circle at rest), not a chain's hinge (outside it by O(R / n^2)), and a
+/// solver with a stiff penalty computes g from the displacement, R (1 - cos(theta - axis)) -
+/// d_p . u - s travel / 2, since R - d_p . x keeps only ~1e-16 R of a sinking of 1e-10 R.
 struct PlatePair {
   double R = 1.0;
   double travel = 0.0;
