@@ -441,20 +441,28 @@ class Follower {
         len *= 0.5;
         continue;
       }
-      halvings = 0;
-      out_.iterations += it;
       if (state.s < 1.0 && next.s >= 1.0) {
         // The path crosses the full load: Newton at s = 1 from the interpolated point.
         const double w = (1.0 - state.s) / (next.s - state.s);
         State full{state.z + w * (next.z - state.z), 1.0};
         const int f = newton_at(full, nullptr);
         if (f >= 0) {
-          out_.iterations += f;
+          out_.iterations += it + f;
           ++out_.arc_steps;
           if (accept(state, full, limit_between(tangent.rate, ahead.rate))) reached(full);
           return;
         }
+        // Never step past the full load without meeting it (the path would run on beyond
+        // it): a shorter step lands nearer the crossing, where the interpolation is better.
+        if (++halvings > kMaxArcHalvings) {
+          stall(state.s);
+          return;
+        }
+        len *= 0.5;
+        continue;
       }
+      halvings = 0;
+      out_.iterations += it;
       ++out_.arc_steps;
       const Between along = [&](double f, State& x) {
         int iterations = 0;

@@ -148,6 +148,32 @@ TEST(Continuation, ContactEndsThePathAsAResult) {
   EXPECT_NE(m.find("touches itself"), std::string::npos) << m;
 }
 
+// A Newton at the full load that cannot start from the point interpolated across it (here:
+// the model refuses to linearize at s = 1 farther than 1e-7 of the load from its path, as a
+// stiff contact or a plastic plateau may) is retried from a shorter arc step, which lands
+// nearer the crossing, until it meets the full load; the path never runs on past s = 1.
+class FussyAtFullLoad : public Snap {
+ public:
+  using Snap::Snap;
+  int refused = 0;
+  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
+    if (x.s == 1.0 && std::abs(f(x.z(0)) - 1.0) > 1e-7) {
+      ++refused;
+      return false;
+    }
+    return Snap::linearize(x, w, ws, r);
+  }
+};
+TEST(Continuation, AFullLoadNewtonThatFailsShortensTheStepInsteadOfRunningPastIt) {
+  FussyAtFullLoad snap(1.0);
+  const paths::Trace t = paths::follow(snap, rest(), paths::Continuation{20});
+  ASSERT_EQ(t.end, paths::Trace::End::reached);
+  EXPECT_GT(snap.refused, 0);  // the interpolated point was refused at least once
+  EXPECT_EQ(t.end_load, 1.0);
+  EXPECT_NEAR(t.state.z(0), far_root(1.0), 1e-10);
+  for (const auto& x : snap.accepted) EXPECT_LE(x.s, 1.0) << x.z(0);
+}
+
 TEST(Continuation, ReportsAPathThatDoesNotComeBackWithinTheArcStepBound) {
   Snap snap(1.0);
   paths::Continuation options{20};
