@@ -375,6 +375,13 @@ paths::Trace follow_legs(ChainStatics& eq, const paths::State& rest, paths::Cont
       policy.from_start = false;
       t = paths::follow(eq, all.state, policy);
     }
+    // The driver ends a leg at its end only through a Newton at it from the step across it;
+    // when that misses, it follows the path on (the tube ran so from s = 1 to a self-contact at
+    // 1.83): a touch beyond the leg's end is that, not a result.
+    if (t.end == paths::Trace::End::contact && (b - a) * (t.end_load - b) > 0.0)
+      throw ring::NumericalError("lumped statics: the path crossed load factor " + std::to_string(b) +
+                                 " without converging there, and went on to " + std::to_string(t.end_load) +
+                                 " (" + t.contact + ")");
     t.steps += all.steps;
     t.arc_steps += all.arc_steps;
     t.iterations += all.iterations;
