@@ -158,7 +158,8 @@ void check_drive(const ring::RingSpec& spec, const ring::MultibodyOptions& optio
 /// [plates] (statics.hpp, plates.hpp): no loads, no drive and no supports act with them (the
 /// scene reader says so too; this holds for a library caller's options), the travel in
 /// (0, 2 R), a positive stiffness, both points of first contact hinges of the chain, a closed
-/// ring, and a history that only advances. Both formulations take them. O(supports).
+/// ring. Both formulations take them, and histories that withdraw the plates (the centre row,
+/// plates.hpp, holds the ring along the axis when it springs back clear of both). O(supports).
 void check_plates(const ring::RingSpec& spec, const ring::MultibodyOptions& options, const ring::StaticOptions& statics) {
   const ring::StaticOptions::Plates& p = *statics.plates;
   if (!statics.loads.points.empty() || statics.loads.pressure.any() || statics.loads.has_gravity())
@@ -186,20 +187,6 @@ void check_plates(const ring::RingSpec& spec, const ring::MultibodyOptions& opti
                              "the plates touch the ring at " + std::to_string(a) + " deg, which is not a hinge of the n = " +
                                  std::to_string(options.n) + " chain (valid: the anchor " + std::to_string(spec.anchor()) +
                                  " deg + 360 k / n)");
-  // Retreating plates: the free ring is held along the axis by the contact alone, and the first
-  // Newton iterate of a step that backs the plates off opens both gaps at once, leaving the ring
-  // free to slide along the axis (a singular tangent; measured: the path stalls at the first
-  // unloading step, n = 64, 5 collapse closings, history [1, 0.97]).
-  double previous = 0.0;
-  for (double h : statics.history) {
-    if (h < previous)
-      throw ring::InputError("", "plates",
-                             "the multibody chain's plates only advance: static.history must not decrease (got " +
-                                 std::to_string(h) + " after " + std::to_string(previous) +
-                                 "); backing them off opens both gaps at once and leaves the free ring unheld along "
-                                 "the axis within a Newton step");
-    previous = h;
-  }
 }
 
 }  // namespace

@@ -156,6 +156,9 @@ void constraints(const Natural& c, const Vec& x, Vec& g) {
     g.segment<2>(c.pins_row() + 2 * i) = hinge(x, c.pins[i]) - c.pinned_at[i];
   for (std::size_t i = 0; i < c.slides.size(); ++i)
     g(c.slides_row() + static_cast<int>(i)) = c.slide_dir[i].dot(hinge(x, c.slides[i]) - c.slide_at[i]);
+  for (std::size_t i = 0; i < c.centres.size(); ++i)
+    g(c.centres_row() + static_cast<int>(i)) =
+        c.centre_dir[i].dot(hinge(x, c.centres[i][0]) + hinge(x, c.centres[i][1]) - c.centre_at[i]);
 }
 
 /// Adds the constraint gradients G(x) to the KKT matrix whose multipliers start at
@@ -186,6 +189,9 @@ void add_constraint_jacobian(const Natural& c, const Vec& x, int offset, bool tr
     for (int a = 0; a < 2; ++a) put(c.pins_row() + 2 * static_cast<int>(i) + a, 2 * c.pins[i] + a, 1.0);
   for (std::size_t i = 0; i < c.slides.size(); ++i)
     for (int a = 0; a < 2; ++a) put(c.slides_row() + static_cast<int>(i), 2 * c.slides[i] + a, c.slide_dir[i](a));
+  for (std::size_t i = 0; i < c.centres.size(); ++i)
+    for (int h : c.centres[i])
+      for (int a = 0; a < 2; ++a) put(c.centres_row() + static_cast<int>(i), 2 * h + a, c.centre_dir[i](a));
 }
 
 void add_spring(const Natural& c, int k, const Vec6& g, const Mat6& J, Vec& r, BandedKkt& kkt) {
@@ -329,6 +335,8 @@ void kkt_pattern(const Natural& c, Visit visit) {
   for (std::size_t i = 0; i < c.pins.size(); ++i)
     for (int a = 0; a < 2; ++a) row(c.pins_row() + 2 * static_cast<int>(i) + a, c.pins[i]);
   for (std::size_t i = 0; i < c.slides.size(); ++i) row(c.slides_row() + static_cast<int>(i), c.slides[i]);
+  for (std::size_t i = 0; i < c.centres.size(); ++i)
+    for (int h : c.centres[i]) row(c.centres_row() + static_cast<int>(i), h);
 }
 
 }  // namespace
@@ -348,7 +356,7 @@ BandedKkt::BandedKkt(const Natural& c) : perm_(Eigen::VectorXi::Constant(c.size(
   const int band = next;
   for (int k : {c.n - 1, 0}) put_hinge(k);
   perm_(N + c.n - 1) = next++;
-  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller, further pins, slides
+  for (int row = c.n; row < c.rows(); ++row) perm_(N + row) = next++;  // pin, roller, further pins, slides, centres
   band_ = detail::BorderedBand(band, c.size() - band, [&](auto mark) {
     kkt_pattern(c, [&](int i, int j) { mark(perm_[i], perm_[j]); });
   });

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cassert>
 #include <memory>
 #include <optional>
@@ -43,10 +44,16 @@ struct Natural {
   /// dir . (x_h - at) = 0. [plates]' no-slide rows (plates.hpp).
   std::vector<int> slides;
   std::vector<Eigen::Vector2d> slide_dir, slide_at;
+  /// Pairs of hinges whose midpoint is held on a line (one row each, after the slides'):
+  /// dir . (x_a + x_b - at) = 0, `at` the sum of their rest positions. [plates]' centre row
+  /// (plates.hpp).
+  std::vector<std::array<int, 2>> centres;
+  std::vector<Eigen::Vector2d> centre_dir, centre_at;
   int roller_row() const { return n + (pinned ? 2 : 0); }
   int pins_row() const { return roller_row() + (roller >= 0 ? 1 : 0); }
   int slides_row() const { return pins_row() + 2 * static_cast<int>(pins.size()); }
-  int rows() const { return slides_row() + static_cast<int>(slides.size()); }
+  int centres_row() const { return slides_row() + static_cast<int>(slides.size()); }
+  int rows() const { return centres_row() + static_cast<int>(centres.size()); }
   int size() const { return 2 * n + rows(); }
   /// Radius of the hinges' circle, m (the scale of positions and their round-off).
   double radius() const;
@@ -88,7 +95,7 @@ double spring_energy(const Natural& c, const Vec& x);
 Vec mass_times(const Natural& c, const Vec& v);
 /// The same into `out` (resized; no allocation when it has the size).
 void mass_times(const Natural& c, const Vec& v, Vec& out);
-/// Constraint values (rows: links, pin x, pin y (if pinned), roller, further pins, slides). O(n).
+/// Constraint values (rows: links, pin x, pin y (if pinned), roller, further pins, slides, centres). O(n).
 Vec constraints(const Natural& c, const Vec& x);
 /// The same into `g` (resized; no allocation when it has the size).
 void constraints(const Natural& c, const Vec& x, Vec& g);

@@ -59,13 +59,24 @@ void PlateContact::add(const Vector& q, double s, Vector& grad, Eigen::Ref<Matri
 
 Chain::ConstraintKinematics PlateContact::slide_rows(const Vector& q) const {
   const int dofs = chain_.dofs();
-  Chain::ConstraintKinematics k{Vector(2), Matrix::Zero(2, dofs), Matrix::Zero(2, dofs)};
+  Chain::ConstraintKinematics k{Vector(3), Matrix::Zero(3, dofs), Matrix::Zero(3, dofs)};
   const int hinges[2] = {a_, b_};
+  const Eigen::Vector2d d = normal();
+  // d^2 (v . p_h) / dq_j^2 = -l v . e(phi_j) for the segments j < h before hinge h
+  auto curvature = [&](int r, int h, const Eigen::Vector2d& v) {
+    for (int j = 0; j < h; ++j) k.hess(r, j) += -chain_.l() * (v.x() * std::cos(q[j]) + v.y() * std::sin(q[j]));
+  };
+  k.g(2) = 0.0;
   for (int r = 0; r < 2; ++r) {
     const int h = hinges[r];
-    k.g(r) = e_.dot(chain_.hinge_position(q, h) - chain_.hinge_rest(h));
-    k.G.row(r) = e_.transpose() * chain_.hinge_jacobian(q, h);
-    for (int j = 0; j < h; ++j) k.hess(r, j) = -chain_.l() * (e_.x() * std::cos(q[j]) + e_.y() * std::sin(q[j]));
+    const Eigen::Vector2d u = chain_.hinge_position(q, h) - chain_.hinge_rest(h);
+    const Matrix J = chain_.hinge_jacobian(q, h);
+    k.g(r) = e_.dot(u);
+    k.G.row(r) = e_.transpose() * J;
+    curvature(r, h, e_);
+    k.g(2) += d.dot(u);  // the centre row
+    k.G.row(2) += d.transpose() * J;
+    curvature(2, h, d);
   }
   return k;
 }

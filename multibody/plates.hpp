@@ -24,7 +24,14 @@
 // chain's closure rows as a roller's (chain.hpp): G = e^T d p_h / dq, and the row's Hessian
 // diagonal in the angles, -l e . e(phi_j) for j < h. The free chain (no supports) carries the
 // base (x_0, y_0), so the plates (along d_0) and these rows (along e, and the turning) hold
-// every rigid motion.
+// every rigid motion while a plate touches.
+//
+// ## The centre row
+// The midpoint of a and b stays on the plates' midline: d . (u_a + u_b) = 0 (d = PlatePair::d),
+// one row after the no-slide rows, G = d^T (d p_a / dq + d p_b / dq), its Hessian diagonal
+// -l d . e(phi_j) summed over j < a and j < b. By the symmetry of the crushing its multiplier
+// stays ~0; it holds the ring along the axis when both gaps open (the plates withdrawn and the
+// ring sprung back clear of them), where the contact alone would leave the tangent singular.
 //
 // ## Results
 // The force of plate 0 on the ring, l sum_k k <-g_0(X_k)> (-d_0) (N, x and y), and
@@ -58,10 +65,12 @@ class PlateContact {
   /// The no-slide rows' hinges (at axis, at axis + 180) and the plates' direction e.
   std::array<int, 2> slide_hinges() const { return {a_, b_}; }
   const Eigen::Vector2d& direction() const { return e_; }
+  /// The plates' normal d = PlatePair::d (the centre row's direction).
+  Eigen::Vector2d normal() const { return {pair_.d[0], pair_.d[1]}; }
   /// Adds the penalty's gradient in the angles q at load factor s to `grad` (dofs), its Hessian to
   /// `*hess` (if not null; dofs x dofs) and its rate d grad / ds to `rate` (dofs). O(n), O(n^2).
   void add(const Vector& q, double s, Vector& grad, Eigen::Ref<Matrix>* hess, Vector& rate) const;
-  /// The two no-slide rows at q (file comment), with the rows' Hessians as
+  /// The two no-slide rows and the centre row at q (file comment), with the rows' Hessians as
   /// Chain::ConstraintKinematics'. O(n).
   Chain::ConstraintKinematics slide_rows(const Vector& q) const;
   /// The force of plate 0 on the ring (N, x and y) at the hinge positions p. O(n).

@@ -142,7 +142,7 @@ class AngleStatics : public detail::StaticEquilibrium {
       : StaticEquilibrium(chain, spec, depth),
         tangent_(chain, spec, loads, "static", &bending_),
         n_(tangent_.dofs()),
-        c_(tangent_.rows() + (plates ? 2 : 0)),
+        c_(tangent_.rows() + (plates ? 3 : 0)),
         sc_(chain.K() / chain.l()),
         drive_(drive) {
     if (drive_ && c_ < 2) throw std::logic_error("multibody: a driven point needs its two pin rows (held_spec)");
@@ -219,18 +219,20 @@ class AngleStatics : public detail::StaticEquilibrium {
   }
 
  private:
-  /// The chain's rows, the further pins', then [plates]' two no-slide rows (plates.hpp).
+  /// The chain's rows, the further pins', then [plates]' two no-slide rows and centre row
+  /// (plates.hpp).
   Chain::ConstraintKinematics constraints(const Vector& q) const {
     Chain::ConstraintKinematics ck = tangent_.constraints(q);
     if (!plates_) return ck;
     const Chain::ConstraintKinematics p = plates_->slide_rows(q);
     const Eigen::Index c = ck.g.size();
-    ck.g.conservativeResize(c + 2);
-    ck.g.tail(2) = p.g;
-    ck.G.conservativeResize(c + 2, Eigen::NoChange);
-    ck.G.bottomRows(2) = p.G;
-    ck.hess.conservativeResize(c + 2, Eigen::NoChange);
-    ck.hess.bottomRows(2) = p.hess;
+    const Eigen::Index m = p.g.size();
+    ck.g.conservativeResize(c + m);
+    ck.g.tail(m) = p.g;
+    ck.G.conservativeResize(c + m, Eigen::NoChange);
+    ck.G.bottomRows(m) = p.G;
+    ck.hess.conservativeResize(c + m, Eigen::NoChange);
+    ck.hess.bottomRows(m) = p.hess;
     return ck;
   }
   Matrix tangent_at(const paths::State& x, const Chain::ConstraintKinematics& ck) const {

@@ -18,7 +18,8 @@
 namespace multibody::natural {
 namespace {
 
-/// The natural model with [plates]' two no-slide rows (plates.hpp) after the further pins'.
+/// The natural model with [plates]' two no-slide rows and the centre row (plates.hpp) after the
+/// further pins'.
 Natural with_slides(Natural c, const Chain& chain, const detail::PlateContact* plates) {
   if (!plates) return c;
   for (int h : plates->slide_hinges()) {
@@ -26,6 +27,10 @@ Natural with_slides(Natural c, const Chain& chain, const detail::PlateContact* p
     c.slide_dir.push_back(plates->direction());
     c.slide_at.push_back(chain.hinge_rest(h));
   }
+  const auto [a, b] = plates->slide_hinges();
+  c.centres.push_back({a, b});
+  c.centre_dir.push_back(plates->normal());
+  c.centre_at.push_back(chain.hinge_rest(a) + chain.hinge_rest(b));
   return c;
 }
 
