@@ -326,9 +326,12 @@ class Follower {
       // is cut. (A step that moves nothing, under a zero load or a load the model carries
       // without deforming, as a uniform pressure on an inextensible ring, jumped nowhere:
       // a change of 1e-10 of the Newton basin is round-off.)
+      // An end that does not depend on the load (dz/ds = 0: a ring that springs back clear of
+      // the plates that drove it) has no limit point to have jumped over.
       const Vector change = trial.z - state.z;
       const bool moved = eq_.move(change) > 1e-10;
-      const bool jumped = it >= 0 && moved && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
+      const bool loaded = dzds.head(m_).squaredNorm() > 0.0;
+      const bool jumped = it >= 0 && moved && loaded && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
       if (it < 0 || jumped) {
         if (beyond) {
           // Beside the branch point the tangent is nearly singular and Newton may miss its

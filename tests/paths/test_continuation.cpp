@@ -174,6 +174,40 @@ TEST(Continuation, AFullLoadNewtonThatFailsShortensTheStepInsteadOfRunningPastIt
   for (const auto& x : snap.accepted) EXPECT_LE(x.s, 1.0) << x.z(0);
 }
 
+// A load that stops acting (u = min(s, 1/2): a ring sprung back clear of the plates that
+// drove it) leaves an end that does not depend on s (dz/ds = 0). That is no jump over a limit
+// point: load stepping goes on to the full load instead of halving its step to nothing.
+class Released : public paths::Equilibrium {
+ public:
+  Eigen::Index size() const override { return 1; }
+  bool linearize(const paths::State& x, const paths::Vector& w, double ws, paths::Vector& r) override {
+    const bool acting = x.s < 0.5;
+    r.resize(1);
+    r << x.z(0) - std::min(x.s, 0.5);
+    B_ << 1.0, acting ? -1.0 : 0.0, w(0), ws;
+    lu_.compute(B_);
+    return std::abs(lu_.determinant()) > 1e-300;
+  }
+  bool solve(paths::Vector& y) override {
+    y = lu_.solve(y);
+    return y.allFinite();
+  }
+  double move(const paths::Vector& dz) const override { return std::abs(dz(0)); }
+  bool converged(const paths::State&, const paths::Vector& dz, int) override { return std::abs(dz(0)) <= 1e-14; }
+  std::optional<paths::Touch> accept(const paths::State&, const paths::State&) override { return std::nullopt; }
+
+ private:
+  Eigen::Matrix2d B_;
+  Eigen::PartialPivLU<Eigen::Matrix2d> lu_;
+};
+TEST(Continuation, ALoadThatStopsActingIsNoJumpOverALimitPoint) {
+  Released released;
+  const paths::Trace t = paths::follow(released, {paths::Vector::Zero(1), 0.0}, paths::Continuation{8});
+  ASSERT_EQ(t.end, paths::Trace::End::reached);
+  EXPECT_FALSE(t.continuation);
+  EXPECT_DOUBLE_EQ(t.state.z(0), 0.5);
+}
+
 TEST(Continuation, ReportsAPathThatDoesNotComeBackWithinTheArcStepBound) {
   Snap snap(1.0);
   paths::Continuation options{20};
