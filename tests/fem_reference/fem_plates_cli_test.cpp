@@ -91,11 +91,11 @@ TEST(FemPlatesCli, ThePathCarriesTheContactLengths) {
 // crushed by the plates to half its diameter (travel 0.1 m), 40 steps, against DeRuntz & Hodge
 // (plates_load, plates_contact_length at c = D / 2: 14.43 kN, 0.1047 m). At the FE settings that
 // reach the full load: 32 cubic cells (0.9 s). The scene's own 40 cells of degree 5 stall at
-// load factor 0.207 (and 40 cubic at 0.61, 32 of degree 4 at 0.15, 48 cubic at 0.49): the
-// perfectly plastic fibre and hinge points flip between their elastic and their zero plastic
-// tangent within an arc corrector, whose Newton then cycles (corrections ~5e-9 m repeating
-// with period 4); with hardening 1e-2 or 1e-3 the same scene reaches the full load, and
-// widening the penalty's tangent band changes nothing (fem_reference/README.md, "Rigid plates").
+// load factor 0.207 (and 40 cubic at 0.61, 32 of degree 4 at 0.15, 48 cubic at 0.49): points
+// and fibres yield and unload within an arc corrector, their tangent jumping, and its Newton
+// cycles (corrections ~5e-9 m repeating with period 4); the resultant law with hardening 1e-2
+// or 1e-3 reaches the full load there, and widening the penalty's tangent band changes nothing
+// (fem_reference/README.md, "Rigid plates").
 TEST(FemPlatesCli, TheTubeIsCrushedToHalfItsDiameterAsDeRuntzAndHodge) {
   const double R = 0.1, b = 0.05, h = 0.01, sigma_y = 2.5e8, E = 2.1e11;
   const double Mp = sigma_y * b * h * h / 4.0, EI = E * b * h * h * h / 12.0;
