@@ -330,8 +330,8 @@ class Follower {
       // the plates that drove it) has no limit point to have jumped over.
       const Vector change = trial.z - state.z;
       const bool moved = eq_.move(change) > 1e-10;
-      const bool loaded = dzds.head(m_).squaredNorm() > 0.0;
-      const bool jumped = it >= 0 && moved && loaded && !(change.head(m_).dot(dzds.head(m_)) > 0.0);
+      const bool jumped = it >= 0 && moved && dzds.head(m_).squaredNorm() > 0.0 &&  // dz/ds only where Newton converged
+                          !(change.head(m_).dot(dzds.head(m_)) > 0.0);
       if (it < 0 || jumped) {
         if (beyond) {
           // Beside the branch point the tangent is nearly singular and Newton may miss its
