@@ -26,6 +26,7 @@
 
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
+#include "support/fem_options.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
 #include "support/fibre_ring.hpp"
@@ -34,12 +35,7 @@
 
 namespace {
 
-ring::FemOptions fem_options(int elements, int degree = 3) {
-  ring::FemOptions o;
-  o.elements = elements;
-  o.degree = degree;
-  return o;
-}
+using ringtest::fem_options;
 
 ringtest::PinchedPlasticRing oracle(const ring::RingSpec& s) {
   return {s.radius, s.EI(), s.plastic ? s.plastic->moment : 0.0};

@@ -18,6 +18,7 @@
 
 #include "fem_reference/checks.hpp"
 #include "fem_reference/nonlinear.hpp"
+#include "support/fem_options.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
 #include "support/fibre_ring.hpp"
@@ -27,12 +28,7 @@
 
 namespace {
 
-ring::FemOptions fem_options(int elements, int degree = 3) {
-  ring::FemOptions o;
-  o.elements = elements;
-  o.degree = degree;
-  return o;
-}
+using ringtest::fem_options;
 
 /// The pinch P (N) under `history`, generalized-alpha, recorded at the load points.
 ring::ResponseOptions pinch_response(double P, ring::LoadHistory history, double dt, double t_end,

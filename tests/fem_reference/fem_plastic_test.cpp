@@ -28,6 +28,7 @@
 #include "fem_reference/nonlinear.hpp"
 #include "ring/errors.hpp"
 #include "ring/section_law.hpp"
+#include "support/fem_options.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
 #include "support/fibre_ring.hpp"
@@ -43,12 +44,7 @@ ringtest::PinchedPlasticRing oracle(const ring::RingSpec& s, double Mp) {
 
 using ringtest::pinch;
 
-ring::FemOptions fem_options(int elements, int degree = 3) {
-  ring::FemOptions o;
-  o.elements = elements;
-  o.degree = degree;
-  return o;
-}
+using ringtest::fem_options;
 
 /// The closing of the load points (m): u_y(270) - u_y(90) of the result's record.
 double closing(const ring::StaticResult& r) { return r.displacements.at(1).uy - r.displacements.at(0).uy; }

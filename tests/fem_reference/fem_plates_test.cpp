@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "fem_reference/nonlinear.hpp"
+#include "support/fem_options.hpp"
 #include "support/close.hpp"
 #include "support/convergence.hpp"
 #include "support/fibre_ring.hpp"
@@ -28,12 +29,7 @@
 
 namespace {
 
-ring::FemOptions fem_options(int elements, int degree = 3) {
-  ring::FemOptions o;
-  o.elements = elements;
-  o.degree = degree;
-  return o;
-}
+using ringtest::fem_options;
 
 /// The paper's ring without supports, with the resultant law's Mp = mp EI / R (none: elastic).
 ring::RingSpec free_plastic_ring(std::optional<double> mp) {
