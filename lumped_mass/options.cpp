@@ -51,7 +51,7 @@ double memory_estimate(const ring::RingSpec& spec, const ring::LumpedOptions& o,
           ? n * (16.0 * (spec.plastic->law == ring::Plastic::Law::fibre ? ring::SectionLaw::kFibres : 1) +
                  (q.response ? 5700.0 : 0.0))
           : 0.0;
-  if (count == 0) return (frame ? 5600.0 : 5800.0) * n + plastic;
+  if (count == 0) return (frame ? 5600.0 : 5850.0) * n + plastic;
   // Modes under load are dense (lumped_mass/preload.hpp): measured 99 and 84 n^2 at
   // n = 400, 800 (the process's 8 MB aside); the frames' 3n unknowns 567 and 523 n^2.
   if (q.preload) return (frame ? 600.0 : 100.0) * n * n;
@@ -68,9 +68,9 @@ double memory_estimate(const ring::RingSpec& spec, const ring::LumpedOptions& o,
   // allocations (heaptrack: 35374 calls, a 215.68 MB heap peak), the same frequencies, more of
   // SparseLU's reserved workspace touched. Refitted to the measured peaks at n = 10^4 and 3 10^4.
   switch (o.variant) {
-    case ring::LumpedOptions::Variant::chain: return n * per_node(4500.0, 4100.0);
-    case ring::LumpedOptions::Variant::frame: return n * per_node(6900.0, 4250.0);
-    case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(9100.0, 7600.0);
+    case ring::LumpedOptions::Variant::chain: return n * per_node(4500.0, 4150.0);
+    case ring::LumpedOptions::Variant::frame: return n * per_node(6950.0, 4250.0);
+    case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(9150.0, 7600.0);
     // Measured 7.7, 7.5, 7.5 KB per node at n = 10^4, 3 10^4, 10^5 (count 23): the factors'
     // peak; the mixed system has 7n rows (4 strains per element) but a diagonal mass.
     case ring::LumpedOptions::Variant::timoshenko_frame: return n * per_node(8500.0, 7000.0);
