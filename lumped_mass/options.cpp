@@ -73,7 +73,7 @@ double memory_estimate(const ring::RingSpec& spec, const ring::LumpedOptions& o,
     case ring::LumpedOptions::Variant::frame_consistent: return n * per_node(9150.0, 7600.0);
     // Measured 7.7, 7.5, 7.5 KB per node at n = 10^4, 3 10^4, 10^5 (count 23): the factors'
     // peak; the mixed system has 7n rows (4 strains per element) but a diagonal mass.
-    case ring::LumpedOptions::Variant::timoshenko_frame: return n * per_node(8500.0, 7000.0);
+    case ring::LumpedOptions::Variant::timoshenko_frame: return n * per_node(8600.0, 7000.0);
   }
   return 0.0;
 }
