@@ -32,6 +32,7 @@
 #include "calculix/dat.hpp"
 #include "calculix/deck.hpp"
 #include "calculix/statics.hpp"
+#include "internal_energy.hpp"
 #include "ring/errors.hpp"
 #include "support/convergence.hpp"
 #include "support/fibre_ring.hpp"
@@ -183,20 +184,7 @@ TEST(CalculixDriven, FibrePlasticPinchWorkIsTheInternalEnergy) {
   o.section = ring::CalculixOptions::Section::as_given;
   const ring::StaticOptions st = ringtest::driven_pinch(5e-3, {}, 10);
   const calculix::Deck written = calculix::static_deck(spec, o, st);
-  std::string deck = written.text;
-  const auto end = deck.rfind("*END STEP");
-  ASSERT_NE(end, std::string::npos);
-  deck.insert(end, "*EL PRINT, ELSET=ERING, TOTALS=ONLY\nELSE\n");
-  const calculix::RunOutput out = calculix::run(deck, {o.timeout, o.threads});
-  const calculix::DatStatic dat = calculix::read_static_dat(out.dat, calculix::node_count(spec, o));
-  std::vector<double> energy;
-  std::istringstream in(out.dat);
-  for (std::string line; std::getline(in, line);)
-    if (line.find("total internal energy") != std::string::npos) {
-      double e = NAN;
-      in >> e;
-      energy.push_back(e);
-    }
+  const auto [dat, energy] = ccxtest::run_with_internal_energy(written.text, o, calculix::node_count(spec, o));
   ASSERT_EQ(energy.size(), dat.all.size());
   int node = 0;  // the driven node, 0-based
   while (std::abs(written.node_angles.at(node) - 90.0) > 1e-9) ++node;

@@ -22,6 +22,7 @@
 #include "calculix/dat.hpp"
 #include "calculix/deck.hpp"
 #include "calculix/statics.hpp"
+#include "internal_energy.hpp"
 #include "ring/errors.hpp"
 #include "support/convergence.hpp"
 #include "support/paper.hpp"
@@ -277,20 +278,9 @@ TEST(CalculixPlates, FibreTubeWorkOfThePlatesIsTheInternalEnergy) {
   const ring::RingSpec spec = fibre_tube(1e-2);
   const double travel = 0.1 * spec.radius;
   const ring::CalculixOptions o = as_given(20);
-  std::string deck = calculix::static_deck(spec, o, plates(spec, travel, 5)).text;
-  const auto end = deck.rfind("*END STEP");
-  ASSERT_NE(end, std::string::npos);
-  deck.insert(end, "*EL PRINT, ELSET=ERING, TOTALS=ONLY\nELSE\n");
-  const calculix::RunOutput out = calculix::run(deck, {o.timeout, o.threads});
-  const calculix::DatStatic dat = calculix::read_static_dat(out.dat, calculix::node_count(spec, o));
-  std::vector<double> energy;
-  std::istringstream in(out.dat);
-  for (std::string line; std::getline(in, line);)
-    if (line.find("total internal energy") != std::string::npos) {
-      double e = NAN;
-      in >> e;
-      energy.push_back(e);
-    }
+  const auto [dat, energy] =
+      ccxtest::run_with_internal_energy(calculix::static_deck(spec, o, plates(spec, travel, 5)).text, o,
+                                        calculix::node_count(spec, o));
   ASSERT_EQ(energy.size(), dat.all.size());
   double work = 0.0, s0 = 0.0, f0 = 0.0, f1 = 0.0, worst = 0.0;
   for (std::size_t i = 0; i < dat.all.size(); ++i) {

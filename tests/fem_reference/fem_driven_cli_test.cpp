@@ -9,6 +9,7 @@
 #include <string>
 
 #include "compare/cli.hpp"
+#include "support/json_text.hpp"
 #include "support/paper.hpp"
 #include "support/plastic_ring.hpp"
 
@@ -28,13 +29,7 @@ std::string driven_scene(double closing, const std::string& extra = "") {
          std::to_string(closing) + "] }\n";
 }
 
-/// The two numbers of the JSON array after `key`.
-std::array<double, 2> pair_after(const std::string& out, const std::string& key) {
-  const auto at = out.find(key);
-  if (at == std::string::npos) return {NAN, NAN};
-  const auto open = out.find('[', at), comma = out.find(',', open);
-  return {std::stod(out.substr(open + 1)), std::stod(out.substr(comma + 1))};
-}
+using ringtest::pair_after;
 
 }  // namespace
 
